@@ -1,0 +1,62 @@
+// Shared pieces of the orikin command-line tool: the command record, exit codes, argument
+// parsing and error reporting. Uses only the public <orikin/...> headers.
+#ifndef ORI_CLI_H
+#define ORI_CLI_H
+
+#include <orikin/orikin.h>
+
+#include <jansson.h>
+#include <stdbool.h>
+#include <stdio.h>
+
+// Exit codes of every command.
+enum cli_exit {
+    CLI_EXIT_OK = 0,       // done; checked and positive
+    CLI_EXIT_NEGATIVE = 1, // checked and negative (not foldable, invalid, collision)
+    CLI_EXIT_USAGE = 2,    // bad command line
+    CLI_EXIT_INPUT = 3,    // bad input file or value
+    CLI_EXIT_INTERNAL = 4, // internal failure
+};
+
+// A subcommand: cli/cmd_<id>.c defines `const cli_command cli_cmd_<id>`.
+typedef struct cli_command {
+    const char *name;     // as typed: "mv-count"
+    const char *summary;  // one line for `orikin -h`
+    const char *help;     // full help: synopsis, paragraph, options, example
+    int (*run)(int argc, char **argv); // argv[0] is the command name
+} cli_command;
+
+// True for -h / --help.
+bool cli_is_help(const char *arg);
+// Print a command's help to stdout; returns CLI_EXIT_OK.
+int cli_print_help(const cli_command *cmd);
+// Usage error to stderr ("orikin CMD: msg" + hint); returns CLI_EXIT_USAGE.
+int cli_usage(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+// Input error to stderr ("orikin CMD: FILE: where: msg"); returns CLI_EXIT_INPUT.
+int cli_input_error(const char *cmd, const char *file, const ori_error *error);
+// Input error with a free message ("orikin CMD: FILE: msg"); returns CLI_EXIT_INPUT.
+int cli_input_fail(const char *cmd, const char *file, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+// Number parsing: the whole string must be consumed and the value finite.
+bool cli_parse_double(const char *s, double *out);
+bool cli_parse_int(const char *s, int *out);
+// Exactly n comma-separated numbers ("x,y" or "x,y,dx,dy").
+bool cli_parse_doubles(const char *s, double *out, int n);
+// A comma-separated list of integers; returns the count (≤ cap) or -1 on a bad list.
+int cli_parse_int_list(const char *s, int *out, int cap);
+
+// The value after option argv[*i] (advancing *i); NULL (after a usage message) when missing.
+const char *cli_option_value(const char *cmd, int argc, char **argv, int *i);
+
+// Load a FOLD file and the pattern of a frame; on failure print the error and return
+// CLI_EXIT_INPUT (with *doc and *pattern NULL), else CLI_EXIT_OK.
+int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, ori_fold **doc,
+                     ori_pattern **pattern);
+
+// Print a jansson value as JSON (shortest exact numbers) on stdout and release it.
+void cli_print_json(json_t *value);
+// Flush stdout; returns CLI_EXIT_INTERNAL when that fails (full disk, closed pipe), else code.
+int cli_finish(int code);
+
+#endif

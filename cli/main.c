@@ -1,0 +1,80 @@
+// orikin: the command-line tool. Commands come from a sorted, generated table (one
+// cli/cmd_<name>.c each); help goes to stdout, usage errors to stderr with exit 2.
+#include <string.h>
+
+#include "cli.h"
+
+#define ORI_CLI_COMMAND(id) extern const cli_command cli_cmd_##id;
+#include "commands.inc"
+#undef ORI_CLI_COMMAND
+
+static const cli_command *const commands[] = {
+#define ORI_CLI_COMMAND(id) &cli_cmd_##id,
+#include "commands.inc"
+#undef ORI_CLI_COMMAND
+};
+static const int command_count = (int)(sizeof commands / sizeof commands[0]);
+
+static const cli_command *find_command(const char *name)
+{
+    for (int i = 0; i < command_count; ++i)
+        if (strcmp(commands[i]->name, name) == 0) return commands[i];
+    return NULL;
+}
+
+static void print_overview(FILE *out)
+{
+    fprintf(out,
+            "usage: orikin <command> [options]\n"
+            "\n"
+            "orikin designs, verifies and simulates folding structures: crease patterns as\n"
+            "closed-loop rigid multibody systems (faces = bodies, creases = revolute joints).\n"
+            "Files are FOLD (JSON); angles are degrees, positive = valley, negative = mountain.\n"
+            "\n"
+            "commands:\n");
+    for (int i = 0; i < command_count; ++i)
+        fprintf(out, "  %-10s %s\n", commands[i]->name, commands[i]->summary);
+    fprintf(out,
+            "\n"
+            "  help CMD   the help of one command (same as orikin CMD -h)\n"
+            "\n"
+            "exit codes: 0 ok, 1 checked and negative, 2 usage, 3 bad input, 4 internal\n"
+            "example: orikin check examples/patterns/open-corner.fold\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        print_overview(stderr);
+        return CLI_EXIT_USAGE;
+    }
+    const char *name = argv[1];
+    if (cli_is_help(name)) {
+        print_overview(stdout);
+        return cli_finish(CLI_EXIT_OK);
+    }
+    if (strcmp(name, "--version") == 0) {
+        printf("orikin %s\n", ori_version_string());
+        return cli_finish(CLI_EXIT_OK);
+    }
+    if (strcmp(name, "help") == 0) {
+        if (argc < 3) {
+            print_overview(stdout);
+            return cli_finish(CLI_EXIT_OK);
+        }
+        const cli_command *cmd = find_command(argv[2]);
+        if (!cmd) {
+            fprintf(stderr, "orikin: unknown command '%s'; try 'orikin -h'\n", argv[2]);
+            return CLI_EXIT_USAGE;
+        }
+        return cli_finish(cli_print_help(cmd));
+    }
+    const cli_command *cmd = find_command(name);
+    if (!cmd) {
+        fprintf(stderr, "orikin: unknown command '%s'; try 'orikin -h'\n", name);
+        return CLI_EXIT_USAGE;
+    }
+    for (int i = 2; i < argc; ++i)
+        if (cli_is_help(argv[i])) return cli_finish(cli_print_help(cmd));
+    return cli_finish(cmd->run(argc - 1, argv + 1));
+}

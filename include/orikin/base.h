@@ -1,0 +1,131 @@
+/// orikin base: export macro, status codes, error record, allocator and assert hooks,
+/// library-owned buffers.
+///
+/// Functions: ori_status_name, ori_status_message, ori_error_clear, ori_error_format,
+/// ori_set_allocator, ori_set_assert_hook, ori_set_oom_hook, ori_alloc_live_count,
+/// ori_alloc_live_bytes, ori_alloc_peak_bytes, ori_alloc_reset_peak, ori_buffer_free,
+/// ori_file_read_all, ori_file_write_atomic, ori_version_string.
+#ifndef ORIKIN_BASE_H
+#define ORIKIN_BASE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(_WIN32)
+#  define ORI_API __declspec(dllexport)
+#elif defined(__GNUC__)
+#  define ORI_API __attribute__((visibility("default")))
+#else
+#  define ORI_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// The index meaning "none" for vertices, edges, faces and nodes (never 0: 0 is a real index).
+#define ORI_NULL_INDEX (-1)
+
+/// Status table: X(NAME, "message"). ORI_OK is 0; every run-time failure has one entry.
+#define ORI_STATUS_TABLE(X)                                                          \
+    X(OK, "ok")                                                                      \
+    X(ERR_NOMEM, "out of memory")                                                    \
+    X(ERR_IO, "input/output error")                                                  \
+    X(ERR_PARSE, "malformed input")                                                  \
+    X(ERR_TYPE, "wrong type")                                                        \
+    X(ERR_RANGE, "index or value out of range")                                      \
+    X(ERR_DUPLICATE, "coincident vertices")                                          \
+    X(ERR_DEGENERATE, "degenerate geometry")                                         \
+    X(ERR_CROSSING, "edges cross without a shared vertex")                           \
+    X(ERR_TOPOLOGY, "inconsistent topology")                                         \
+    X(ERR_ARGUMENT, "invalid argument")                                              \
+    X(ERR_NOT_FOUND, "not found")                                                    \
+    X(ERR_LIMIT, "size limit exceeded")                                              \
+    X(ERR_NOT_CONVERGED, "solver did not converge")                                  \
+    X(ERR_UNSUPPORTED, "unsupported")                                                \
+    X(ERR_INTERNAL, "internal error")
+
+/// Status of a run-time operation. ORI_OK = 0; everything else is a failure.
+typedef enum ori_status {
+#define ORI__STATUS_ENUM(name, msg) ORI_##name,
+    ORI_STATUS_TABLE(ORI__STATUS_ENUM)
+#undef ORI__STATUS_ENUM
+        ORI_STATUS_COUNT
+} ori_status;
+
+/// Symbolic name of a status ("ERR_PARSE"); static string, never NULL.
+ORI_API const char *ori_status_name(ori_status status);
+/// Human message of a status ("malformed input"); static string, never NULL.
+ORI_API const char *ori_status_message(ori_status status);
+
+/// Where and why a run-time operation failed. line/column are 1-based positions in a text
+/// input (0 = unknown); element is the FOLD index of the offending vertex/edge/face
+/// (ORI_NULL_INDEX = none) and field names the array it indexes ("edges_vertices").
+typedef struct ori_error {
+    ori_status status;
+    int line;
+    int column;
+    int element;
+    char field[48];
+    char message[256];
+} ori_error;
+
+/// Reset an error record to "no error" (status ORI_OK, element ORI_NULL_INDEX).
+ORI_API void ori_error_clear(ori_error *error);
+
+/// Format an error as one line: "line 3, column 7: msg", "edges_vertices 12: msg" or "msg".
+/// Writes at most size bytes (always NUL-terminated when size > 0); returns buf.
+ORI_API char *ori_error_format(const ori_error *error, char *buf, size_t size);
+
+/// Allocation hooks: all library heap memory goes through these. free receives what alloc
+/// returned. user is passed back unchanged.
+typedef struct ori_allocator {
+    void *(*alloc)(size_t size, void *user);
+    void (*free)(void *ptr, void *user);
+    void *user;
+} ori_allocator;
+
+/// Install allocation hooks (NULL restores malloc/free). Call before creating any object.
+ORI_API void ori_set_allocator(const ori_allocator *allocator);
+
+/// Called when an ORI_ASSERT fails (programmer error). The default prints nothing and aborts.
+typedef void ori_assert_fn(const char *condition, const char *file, int line);
+/// Install the assert hook (NULL restores the default).
+ORI_API void ori_set_assert_hook(ori_assert_fn *fn);
+
+/// Called when an allocation fails; must not return (the default aborts).
+typedef void ori_oom_fn(size_t size);
+/// Install the out-of-memory hook (NULL restores the default).
+ORI_API void ori_set_oom_hook(ori_oom_fn *fn);
+
+/// Number of library allocations currently live (tests assert it returns to zero).
+ORI_API int64_t ori_alloc_live_count(void);
+/// Bytes currently allocated by the library.
+ORI_API int64_t ori_alloc_live_bytes(void);
+/// Largest value ori_alloc_live_bytes reached since start or the last reset.
+ORI_API int64_t ori_alloc_peak_bytes(void);
+/// Reset the peak to the current live bytes.
+ORI_API void ori_alloc_reset_peak(void);
+
+/// Free a buffer (string, array) that the library handed out. NULL is a no-op.
+ORI_API void ori_buffer_free(void *buffer);
+
+/// Read a whole file into a NUL-terminated buffer (free with ori_buffer_free). Files larger
+/// than max_bytes fail with ORI_ERR_LIMIT before anything is allocated.
+ORI_API ori_status ori_file_read_all(const char *path, size_t max_bytes, char **out_data,
+                                     size_t *out_size, ori_error *error);
+
+/// Write size bytes to path atomically: into a temporary file beside it, then rename. On
+/// failure nothing is left at path (an existing file there is untouched).
+ORI_API ori_status ori_file_write_atomic(const char *path, const void *data, size_t size,
+                                         ori_error *error);
+
+/// Library version, e.g. "0.1.0"; static string.
+ORI_API const char *ori_version_string(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

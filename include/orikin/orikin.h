@@ -1,0 +1,11 @@
+/// orikin: umbrella header. Include this, or only the headers of the modules you use.
+#ifndef ORIKIN_ORIKIN_H
+#define ORIKIN_ORIKIN_H
+
+#include "base.h"
+#include "fold.h"
+#include "math.h"
+#include "pattern.h"
+#include "tolerance.h"
+
+#endif

@@ -1,0 +1,49 @@
+// The crease pattern's storage, shared by library modules (io, flat, kinematics, axioms...).
+// cli/ never includes this: it uses <orikin/pattern.h>.
+#ifndef ORI_PATTERN_INTERNAL_H
+#define ORI_PATTERN_INTERNAL_H
+
+#include <orikin/pattern.h>
+
+#include "../core/core_internal.h"
+
+struct ori_pattern {
+    // Primary data (FOLD fields).
+    int vertex_count, vertex_cap;
+    ori_v3 *vertices;
+    int edge_count, edge_cap;
+    ori_edge *edges;
+    int face_count, face_cap;       // faces
+    int *face_offsets;              // face_count + 1 entries (face_offsets[0] = 0)
+    int face_vertex_count, face_vertex_cap;
+    int *face_vertices;             // concatenated cycles
+    char (*face_names)[ORI_NAME_MAX]; // face_cap entries or NULL; "" = unnamed
+    int tree_count, tree_cap;
+    ori_tree_node *tree;
+    bool folded_form;
+    bool has_fold_angles;
+
+    // Derived topology, valid while built is true.
+    bool built;
+    int *vert_edge_offsets; // vertex_count + 1
+    int *vert_edges;        // 2 × edge_count, cyclic CCW order per vertex
+    int *face_edges;        // parallel to face_vertices
+    int *edge_faces;        // 2 × edge_count: left, right of v[0]→v[1]
+    int *edge_hash;         // open addressing: edge index or -1; capacity edge_hash_cap
+    int edge_hash_cap;
+    double diagonal;
+};
+
+// Grow face storage (offsets, names, vertex cycles) to hold the given totals.
+void ori__pattern_reserve_faces(ori_pattern *p, int faces, int face_vertices);
+// Drop derived topology (called by every topology mutation).
+void ori__pattern_invalidate(ori_pattern *p);
+// Twice the signed area of a face in the xy-plane (> 0: counter-clockwise).
+double ori__pattern_face_area2(const ori_pattern *p, int face);
+// 2D position of a vertex (x, y).
+static inline ori_v2 ori__pattern_v2(const ori_pattern *p, int v)
+{
+    return ori_v2_make(p->vertices[v].x, p->vertices[v].y);
+}
+
+#endif

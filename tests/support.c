@@ -1,0 +1,105 @@
+#define _POSIX_C_SOURCE 200809L
+#include "support.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+const char *test_shared_path(const char *rel)
+{
+    static char buf[4096];
+    snprintf(buf, sizeof buf, "%s/%s", ORI_SHARED_PATTERNS, rel);
+    struct stat st;
+    return stat(buf, &st) == 0 ? buf : NULL;
+}
+
+const char *test_require_shared(const char *rel)
+{
+    const char *p = test_shared_path(rel);
+    if (!p) cr_skip("../shared/patterns/%s is absent", rel);
+    return p;
+}
+
+const char *test_repo_path(const char *rel)
+{
+    static char buf[4096];
+    snprintf(buf, sizeof buf, "%s/%s", ORI_SOURCE_DIR, rel);
+    return buf;
+}
+
+void test_leak_setup(void) { cr_assert_eq(ori_alloc_live_count(), 0); }
+
+void test_leak_check(void)
+{
+    cr_assert_eq(ori_alloc_live_count(), 0, "%lld library allocations leaked",
+                 (long long)ori_alloc_live_count());
+}
+
+ori_pattern *test_load_pattern(const char *path, int frame)
+{
+    ori_fold *doc = NULL;
+    ori_error err;
+    char msg[512];
+    ori_status st = ori_fold_load_file(path, &doc, &err);
+    cr_assert_eq(st, ORI_OK, "%s: %s", path, ori_error_format(&err, msg, sizeof msg));
+    ori_pattern *p = NULL;
+    st = ori_fold_get_pattern(doc, frame, NULL, &p, &err);
+    cr_assert_eq(st, ORI_OK, "%s frame %d: %s", path, frame, ori_error_format(&err, msg, sizeof msg));
+    ori_fold_destroy(doc);
+    return p;
+}
+
+int test_run_cli(const char *args, char **output)
+{
+    char *cmd = NULL;
+    size_t n = strlen(args) + strlen(ORI_CLI_PATH) + strlen(ORI_SOURCE_DIR) + 64;
+    cmd = malloc(n);
+    snprintf(cmd, n, "cd '%s' && '%s' %s 2>&1", ORI_SOURCE_DIR, ORI_CLI_PATH, args);
+    FILE *f = popen(cmd, "r");
+    free(cmd);
+    cr_assert_not_null(f);
+    size_t cap = 4096, len = 0;
+    char *buf = malloc(cap);
+    size_t got;
+    while ((got = fread(buf + len, 1, cap - len - 1, f)) > 0) {
+        len += got;
+        if (cap - len < 2) buf = realloc(buf, cap *= 2);
+    }
+    buf[len] = '\0';
+    int status = pclose(f);
+    if (output) *output = buf;
+    else free(buf);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+char *test_tmpdir(void)
+{
+    char *d = strdup("/tmp/orikin-test-XXXXXX");
+    cr_assert_not_null(mkdtemp(d));
+    return d;
+}
+
+void test_tmpdir_remove(char *dir)
+{
+    char cmd[4200];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    if (system(cmd) != 0) cr_log_warn("could not remove %s", dir);
+    free(dir);
+}
+
+char *test_read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    size_t got = fread(buf, 1, (size_t)n, f);
+    buf[got] = '\0';
+    fclose(f);
+    return buf;
+}

@@ -1,0 +1,34 @@
+// Helpers for the Criterion tests: shared reference patterns (skipped when ../shared is
+// absent), leak checks on the counted allocator, running the CLI, temp files.
+#ifndef ORI_TEST_SUPPORT_H
+#define ORI_TEST_SUPPORT_H
+
+#include <criterion/criterion.h>
+#include <orikin/orikin.h>
+
+// Path of ../shared/patterns/<rel> when it exists, else NULL.
+const char *test_shared_path(const char *rel);
+// Same, but skips the current test (cr_skip) when the file is absent (a user's clone).
+const char *test_require_shared(const char *rel);
+// Path of <repo>/<rel> (examples/, tests/data/ ...). Static buffer, valid until the next call.
+const char *test_repo_path(const char *rel);
+
+// Per-test leak check: use as .init = test_leak_setup, .fini = test_leak_check.
+void test_leak_setup(void);
+void test_leak_check(void);
+
+// Load a frame of a FOLD file (default build def); fails the test on error.
+ori_pattern *test_load_pattern(const char *path, int frame);
+
+// Run `orikin ARGS` (a shell-quoted argument string, run from the repository root); stdout and
+// stderr go to *output (malloc'd, may be NULL). Returns the exit code.
+int test_run_cli(const char *args, char **output);
+
+// A fresh temporary directory (malloc'd path); removed by test_tmpdir_remove.
+char *test_tmpdir(void);
+void test_tmpdir_remove(char *dir);
+
+// Read a whole file (malloc'd, NUL-terminated) or NULL.
+char *test_read_text(const char *path);
+
+#endif
