@@ -1,0 +1,56 @@
+// orikin_bench [NAME...]: run every benchmark scenario (or the named ones) and print figures.
+#define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "bench.h"
+
+#define ORI_BENCH_SCENARIO(id) extern const bench_scenario bench_##id;
+#include "scenarios.inc"
+#undef ORI_BENCH_SCENARIO
+
+static const bench_scenario *const scenarios[] = {
+#define ORI_BENCH_SCENARIO(id) &bench_##id,
+#include "scenarios.inc"
+#undef ORI_BENCH_SCENARIO
+    NULL,
+};
+
+double bench_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int64_t bench_peak_rss(void)
+{
+    FILE *f = fopen("/proc/self/status", "r");
+    if (!f) return 0;
+    char line[256];
+    long long kb = 0;
+    while (fgets(line, sizeof line, f))
+        if (sscanf(line, "VmHWM: %lld kB", &kb) == 1) break;
+    fclose(f);
+    return (int64_t)kb * 1024;
+}
+
+int main(int argc, char **argv)
+{
+    int failed = 0, ran = 0;
+    for (int i = 0; scenarios[i]; ++i) {
+        bool wanted = argc < 2;
+        for (int a = 1; a < argc; ++a) wanted |= strcmp(argv[a], scenarios[i]->name) == 0;
+        if (!wanted) continue;
+        printf("== %s: %s\n", scenarios[i]->name, scenarios[i]->description);
+        fflush(stdout);
+        if (scenarios[i]->run() != 0) {
+            printf("   FAILED\n");
+            failed++;
+        }
+        ran++;
+    }
+    if (ran == 0) printf("no scenario matched\n");
+    return failed ? 1 : 0;
+}
