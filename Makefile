@@ -33,7 +33,7 @@ bench: build
 
 fuzz:
 	@CC=clang cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=Debug -DORI_FUZZ=ON -DORI_TESTS=OFF >/dev/null
-	@cmake --build $(BUILD_FUZZ) -j $(JOBS)
+	@cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzzers
 
 fuzz-run: fuzz
 	@sh fuzz/run.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)

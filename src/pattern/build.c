@@ -487,6 +487,17 @@ static ori_status check_indices(const ori_pattern *p, ori_error *error)
     return ORI_OK;
 }
 
+static ori_status check_zero_length(const ori_pattern *p, double tol, ori_error *error)
+{
+    for (int e = 0; e < p->edge_count; ++e) {
+        ori_v3 a = p->vertices[p->edges[e].v[0]], b = p->vertices[p->edges[e].v[1]];
+        if (p->edges[e].v[0] == p->edges[e].v[1] || ori_v3_norm(ori_v3_sub(a, b)) <= tol)
+            return ori__fail_at(error, ORI_ERR_DEGENERATE, "edges_vertices", e,
+                                "zero-length edge (vertices %d and %d)", p->edges[e].v[0], p->edges[e].v[1]);
+    }
+    return ORI_OK;
+}
+
 ori_status ori_pattern_build(ori_pattern *p, const ori_build_def *def, ori_error *error)
 {
     ORI_ASSERT(p);
@@ -502,6 +513,10 @@ ori_status ori_pattern_build(ori_pattern *p, const ori_build_def *def, ori_error
     double diag = bbox_diagonal(p, NULL);
     double tol = ORI_TOL_LENGTH_REL * diag;
     bool flat = !p->folded_form;
+
+    // Zero-length edges are reported as such (before the coincident-vertex check, which would
+    // name their endpoints); with welding they show up after the merge as self-loops.
+    if (!def->weld && (st = check_zero_length(p, tol, error)) != ORI_OK) return st;
 
     if (flat && (def->check_planarity || def->weld) && p->vertex_count > 1) {
         int *twin = ori__alloc(sizeof(int) * (size_t)p->vertex_count);
@@ -521,12 +536,8 @@ ori_status ori_pattern_build(ori_pattern *p, const ori_build_def *def, ori_error
         ori__free(twin);
     }
 
-    for (int e = 0; e < p->edge_count; ++e) {
-        ori_v3 a = p->vertices[p->edges[e].v[0]], b = p->vertices[p->edges[e].v[1]];
-        if (p->edges[e].v[0] == p->edges[e].v[1] || ori_v3_norm(ori_v3_sub(a, b)) <= tol)
-            return ori__fail_at(error, ORI_ERR_DEGENERATE, "edges_vertices", e,
-                                "zero-length edge (vertices %d and %d)", p->edges[e].v[0], p->edges[e].v[1]);
-    }
+
+    if (def->weld && (st = check_zero_length(p, tol, error)) != ORI_OK) return st;
 
     // Edge hash, rejecting duplicates.
     p->edge_hash_cap = hash_capacity(p->edge_count);

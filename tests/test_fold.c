@@ -1,0 +1,413 @@
+// FOLD I/O and the pattern model: round trips of every shared pattern, frames, faces traced
+// from the planar graph, validation errors naming the FOLD index or the JSON position.
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <jansson.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support.h"
+
+TestSuite(fold, .init = test_leak_setup, .fini = test_leak_check);
+
+static ori_status load_frame(const char *path, int frame, ori_pattern **p, ori_error *err)
+{
+    ori_fold *doc = NULL;
+    ori_status st = ori_fold_load_file(path, &doc, err);
+    if (st != ORI_OK) return st;
+    st = ori_fold_get_pattern(doc, frame, NULL, p, err);
+    ori_fold_destroy(doc);
+    return st;
+}
+
+// Every field of a (parsed) JSON object a appears in b with a numerically equal value.
+static void assert_fields_preserved(json_t *a, json_t *b, const char *where)
+{
+    const char *key;
+    json_t *va;
+    json_object_foreach(a, key, va)
+    {
+        json_t *vb = json_object_get(b, key);
+        cr_assert_not_null(vb, "%s: field %s lost", where, key);
+        if (strcmp(key, "file_frames") == 0) {
+            cr_assert_eq(json_array_size(va), json_array_size(vb), "%s: frame count", where);
+            for (size_t i = 0; i < json_array_size(va); ++i)
+                assert_fields_preserved(json_array_get(va, i), json_array_get(vb, i), where);
+            continue;
+        }
+        cr_assert(json_equal(va, vb), "%s: field %s changed", where, key);
+    }
+}
+
+// Collect the shared .fold files (recursively one level).
+static int shared_fold_files(char paths[][1200], int cap)
+{
+    const char *root = test_shared_path("");
+    if (!root) return -1;
+    char base[512];
+    snprintf(base, sizeof base, "%s", root);
+    int n = 0;
+    DIR *d = opendir(base);
+    struct dirent *de;
+    while (d && (de = readdir(d))) {
+        if (de->d_name[0] == '.') continue;
+        char sub[1100];
+        snprintf(sub, sizeof sub, "%s/%s", base, de->d_name);
+        DIR *s = opendir(sub);
+        struct dirent *fe;
+        while (s && (fe = readdir(s))) {
+            size_t l = strlen(fe->d_name);
+            if (l > 5 && strcmp(fe->d_name + l - 5, ".fold") == 0 && n < cap)
+                snprintf(paths[n++], 1200, "%s/%s", sub, fe->d_name);
+        }
+        if (s) closedir(s);
+    }
+    if (d) closedir(d);
+    return n;
+}
+
+Test(fold, every_shared_pattern_loads_and_round_trips_field_for_field)
+{
+    static char paths[128][1200];
+    int n = shared_fold_files(paths, 128);
+    if (n < 0) cr_skip("../shared/patterns is absent");
+    cr_assert_geq(n, 20);
+    for (int i = 0; i < n; ++i) {
+        ori_fold *doc = NULL;
+        ori_error err;
+        char msg[512];
+        cr_assert_eq(ori_fold_load_file(paths[i], &doc, &err), ORI_OK, "%s: %s", paths[i],
+                     ori_error_format(&err, msg, sizeof msg));
+        int frames = ori_fold_frame_count(doc);
+        for (int f = 0; f < frames; ++f) {
+            ori_pattern *p = NULL;
+            cr_assert_eq(ori_fold_get_pattern(doc, f, NULL, &p, &err), ORI_OK, "%s frame %d: %s", paths[i],
+                         f, ori_error_format(&err, msg, sizeof msg));
+            cr_assert_eq(ori_fold_set_pattern(doc, f, p, &err), ORI_OK);
+            ori_pattern_destroy(p);
+        }
+        // The rewritten document equals the original, field for field (computed faces may be
+        // added where the file had none).
+        char *text = ori_fold_to_string(doc);
+        json_error_t je;
+        json_t *orig = json_load_file(paths[i], 0, &je);
+        json_t *again = json_loads(text, 0, &je);
+        cr_assert_not_null(again, "%s: output does not parse: %s", paths[i], je.text);
+        assert_fields_preserved(orig, again, paths[i]);
+        json_decref(orig);
+        json_decref(again);
+        ori_buffer_free(text);
+        ori_fold_destroy(doc);
+    }
+}
+
+Test(fold, rewritten_text_is_stable)
+{
+    // write → read → write gives the same bytes (shortest exact numbers, fixed layout)
+    const char *path = test_repo_path("tests/data/frames.fold");
+    ori_fold *doc = NULL, *again = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    char *t1 = ori_fold_to_string(doc);
+    cr_assert_eq(ori_fold_load_string(t1, strlen(t1), &again, &err), ORI_OK);
+    char *t2 = ori_fold_to_string(again);
+    cr_assert_str_eq(t1, t2);
+    cr_assert(strstr(t1, "\"custom:answer\": {\"value\":42,\"list\":[1,2.5,\"x\"]}"), "custom field kept:\n%s", t1);
+    ori_buffer_free(t1);
+    ori_buffer_free(t2);
+    ori_fold_destroy(doc);
+    ori_fold_destroy(again);
+}
+
+Test(fold, numbers_are_written_in_shortest_exact_form)
+{
+    ori_pattern_def def = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&def);
+    double xs[] = {0.1, 1.0 / 3.0, 0.7071067811865476, 1e-300, -0.0};
+    for (int i = 0; i < 5; ++i) ori_pattern_add_vertex(p, ori_v3_make(xs[i], 2.5 + i, 0));
+    ori_fold *doc = ori_fold_create();
+    ori_error err;
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, &err), ORI_OK);
+    char *t = ori_fold_to_string(doc);
+    cr_assert(strstr(t, "[0.1,2.5]"), "%s", t);
+    cr_assert(strstr(t, "[0.3333333333333333,3.5]"), "%s", t);
+    cr_assert(strstr(t, "[0.7071067811865476,4.5]"), "%s", t);
+    cr_assert(strstr(t, "[1e-300,5.5]"), "%s", t);
+    cr_assert(strstr(t, "[0,6.5]"), "%s", t); // −0 written as 0
+    ori_fold *again = NULL;
+    cr_assert_eq(ori_fold_load_string(t, strlen(t), &again, &err), ORI_OK);
+    ori_pattern *q = NULL;
+    ori_build_def bd = ori_default_build_def();
+    cr_assert_eq(ori_fold_get_pattern(again, 0, &bd, &q, &err), ORI_OK);
+    for (int i = 0; i < 4; ++i) cr_assert_eq(ori_pattern_vertex(q, i).x, xs[i]); // bit-exact
+    ori_buffer_free(t);
+    ori_pattern_destroy(p);
+    ori_pattern_destroy(q);
+    ori_fold_destroy(doc);
+    ori_fold_destroy(again);
+}
+
+Test(fold, frames_inherit_from_their_parent)
+{
+    const char *path = test_repo_path("tests/data/frames.fold");
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_frame_count(doc), 3);
+    cr_assert_not(ori_fold_frame_is_folded_form(doc, 0));
+    cr_assert(ori_fold_frame_is_folded_form(doc, 1));
+    ori_pattern *p1 = NULL, *p2 = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 1, NULL, &p1, &err), ORI_OK);
+    // frame 1 inherits edges and assignments from frame 0, overrides coords and angles
+    cr_assert_eq(ori_pattern_edge_count(p1), 5);
+    cr_assert_eq(ori_pattern_edge(p1, 4).assignment, ORI_ASSIGN_VALLEY);
+    cr_assert_float_eq(ori_pattern_edge(p1, 4).fold_angle_rad, ORI_PI / 2, 1e-15);
+    cr_assert_float_eq(ori_pattern_vertex(p1, 3).z, 1.0, 0.0);
+    cr_assert(ori_pattern_is_folded_form(p1));
+    // frame 2 does not inherit: its own four edges, assignments default to U
+    cr_assert_eq(ori_fold_get_pattern(doc, 2, NULL, &p2, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_edge_count(p2), 4);
+    cr_assert_eq(ori_pattern_edge(p2, 0).assignment, ORI_ASSIGN_UNASSIGNED);
+    cr_assert_float_eq(ori_pattern_vertex(p2, 2).x, 2.0, 0.0);
+    ori_pattern_destroy(p2);
+    cr_assert_eq(ori_fold_get_pattern(doc, 3, NULL, &p2, &err), ORI_ERR_RANGE);
+    cr_assert_null(p2);
+    ori_pattern_destroy(p1);
+    ori_fold_destroy(doc);
+}
+
+Test(fold, multi_frame_rabbit_ear_vertex_frames_resolve)
+{
+    const char *path = test_require_shared("rabbit-ear/fold_invalid-single-vertex-2d.fold");
+    const char expect[5] = {'V', 'M', 'M', 'M', 'V'}; // edge 7 across frames 0..4? see below
+    (void)expect;
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_frame_count(doc), 5);
+    // frame 0 (top level): edge 7 is V; frame 1 (file_frames[0]): edge 7 is M (breaks Maekawa)
+    ori_pattern *p0 = NULL, *p1 = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p0, &err), ORI_OK);
+    cr_assert_eq(ori_fold_get_pattern(doc, 1, NULL, &p1, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_edge(p0, 7).assignment, ORI_ASSIGN_VALLEY);
+    cr_assert_eq(ori_pattern_edge(p1, 7).assignment, ORI_ASSIGN_MOUNTAIN);
+    cr_assert_eq(ori_pattern_interior_vertex_count(p0), 1);
+    cr_assert(ori_pattern_vertex_is_interior(p0, 5));
+    ori_pattern_destroy(p0);
+    ori_pattern_destroy(p1);
+    ori_fold_destroy(doc);
+}
+
+Test(fold, faces_are_traced_when_the_file_has_none)
+{
+    const char *path = test_require_shared("flat-folder/original_kabuto.fold");
+    const char *ref = test_require_shared("flat-folder/instagram_002_traditional_Kabuto.fold");
+    char refpath[512];
+    snprintf(refpath, sizeof refpath, "%s", ref);
+    ori_pattern *a = test_load_pattern(path, 0);
+    ori_pattern *b = test_load_pattern(refpath, 0);
+    // The same kabuto: 19 vertices, 36 edges; the traced faces match the published 18.
+    cr_assert_eq(ori_pattern_vertex_count(a), 19);
+    cr_assert_eq(ori_pattern_face_count(a), ori_pattern_face_count(b));
+    // Euler characteristic of a disk: V − E + F = 1
+    cr_assert_eq(ori_pattern_vertex_count(a) - ori_pattern_edge_count(a) + ori_pattern_face_count(a), 1);
+    double area = 0;
+    for (int f = 0; f < ori_pattern_face_count(a); ++f) {
+        int fv[64];
+        int n = ori_pattern_face_vertices(a, f, fv, 64);
+        double s = 0;
+        for (int k = 0; k < n; ++k) {
+            ori_v3 u = ori_pattern_vertex(a, fv[k]), w = ori_pattern_vertex(a, fv[(k + 1) % n]);
+            s += u.x * w.y - u.y * w.x;
+        }
+        cr_assert_gt(s, 0.0, "traced face %d is not counter-clockwise", f);
+        area += s / 2;
+    }
+    double sheet = 0; // bounding box area of the square sheet
+    ori_v3 lo = ori_pattern_vertex(a, 0), hi = lo;
+    for (int v = 0; v < ori_pattern_vertex_count(a); ++v) {
+        ori_v3 x = ori_pattern_vertex(a, v);
+        lo.x = fmin(lo.x, x.x), lo.y = fmin(lo.y, x.y), hi.x = fmax(hi.x, x.x), hi.y = fmax(hi.y, x.y);
+    }
+    sheet = (hi.x - lo.x) * (hi.y - lo.y);
+    cr_assert_float_eq(area, sheet, 1e-12 * sheet);
+    ori_pattern_destroy(a);
+    ori_pattern_destroy(b);
+}
+
+Test(fold, vertex_edges_are_in_counter_clockwise_order_with_sectors)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    int centre = -1;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v)
+        if (ori_pattern_vertex_is_interior(p, v)) centre = v;
+    cr_assert_geq(centre, 0);
+    cr_assert_eq(ori_pattern_interior_vertex_count(p), 1);
+    int edges[8];
+    double sectors[8];
+    int n = ori_pattern_vertex_sectors(p, centre, edges, sectors, 8);
+    cr_assert_eq(n, 5);
+    double sum = 0;
+    int n45 = 0, n90 = 0;
+    for (int k = 0; k < n; ++k) {
+        sum += sectors[k];
+        if (fabs(sectors[k] - ORI_PI / 4) < 1e-15) n45++;
+        if (fabs(sectors[k] - ORI_PI / 2) < 1e-15) n90++;
+        // consecutive edges turn counter-clockwise by the sector angle
+        ori_edge e0 = ori_pattern_edge(p, edges[k]), e1 = ori_pattern_edge(p, edges[(k + 1) % n]);
+        ori_v3 c = ori_pattern_vertex(p, centre);
+        ori_v3 a = ori_v3_sub(ori_pattern_vertex(p, e0.v[0] == centre ? e0.v[1] : e0.v[0]), c);
+        ori_v3 b = ori_v3_sub(ori_pattern_vertex(p, e1.v[0] == centre ? e1.v[1] : e1.v[0]), c);
+        cr_assert_gt(a.x * b.y - a.y * b.x, 0.0);
+    }
+    cr_assert_eq(n45, 2);
+    cr_assert_eq(n90, 3);
+    cr_assert_float_eq(sum, 2 * ORI_PI, 1e-14);
+    // every crease has a face on each side, the boundary one face
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        int f[2];
+        ori_pattern_edge_faces(p, e, f);
+        bool boundary = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_BOUNDARY;
+        cr_assert_eq((f[0] >= 0) + (f[1] >= 0), boundary ? 1 : 2, "edge %d", e);
+    }
+    ori_pattern_destroy(p);
+}
+
+typedef struct bad_case {
+    const char *file;
+    ori_status status;
+    const char *text; // expected formatted error (substring)
+} bad_case;
+
+Test(fold, malformed_input_names_the_position_or_the_fold_index)
+{
+    const bad_case cases[] = {
+        {"bad-json.fold", ORI_ERR_PARSE, "line 4, column"},
+        {"bad-type.fold", ORI_ERR_TYPE, "vertices_coords 2: coordinate 0 is not a number"},
+        {"bad-index.fold", ORI_ERR_RANGE, "edges_vertices 2: vertex index 7 out of range (3 vertices)"},
+        {"zero-length.fold", ORI_ERR_DEGENERATE, "edges_vertices 3: zero-length edge"},
+        {"coincident.fold", ORI_ERR_DUPLICATE, "vertices_coords 4: vertex coincides with vertex 2"},
+        {"crossing.fold", ORI_ERR_CROSSING, "edges_vertices 4: edge 4 intersects edge 5"},
+        {"bad-face.fold", ORI_ERR_TOPOLOGY, "faces_vertices 1: side"},
+        {"bad-angle.fold", ORI_ERR_RANGE, "edges_foldAngle 4: fold angle 270 is outside [-180, 180] degrees"},
+        {"bad-assignment.fold", ORI_ERR_TYPE, "edges_assignment 4: expected one of"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        char rel[256];
+        snprintf(rel, sizeof rel, "tests/data/%s", cases[i].file);
+        ori_pattern *p = NULL;
+        ori_error err;
+        char msg[512];
+        ori_status st = load_frame(test_repo_path(rel), 0, &p, &err);
+        cr_assert_eq(st, cases[i].status, "%s: got %s (%s)", cases[i].file, ori_status_name(st),
+                     ori_error_format(&err, msg, sizeof msg));
+        cr_assert_null(p);
+        ori_error_format(&err, msg, sizeof msg);
+        cr_assert(strstr(msg, cases[i].text), "%s: message '%s' lacks '%s'", cases[i].file, msg, cases[i].text);
+        cr_assert_null(strchr(msg, '\n'), "one line");
+    }
+}
+
+Test(fold, weld_merges_coincident_vertices)
+{
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(test_repo_path("tests/data/coincident.fold"), &doc, &err), ORI_OK);
+    ori_build_def def = ori_default_build_def();
+    def.weld = true;
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, &def, &p, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_vertex_count(p), 4);
+    cr_assert_eq(ori_pattern_edge(p, 4).v[1], 2); // the diagonal now ends at vertex 2
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+}
+
+Test(fold, crossing_check_finds_a_t_junction_and_collinear_overlap)
+{
+    // A crease ending on the interior of another edge (no vertex there) and an overlap.
+    const char *t_junction = "{\"vertices_coords\": [[0,0],[2,0],[2,2],[0,2],[1,0],[1,1]],"
+                             "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[5,4]]}";
+    const char *overlap = "{\"vertices_coords\": [[0,0],[2,0],[1,0]],"
+                          "\"edges_vertices\": [[0,1],[0,2]]}";
+    const char *texts[] = {t_junction, overlap};
+    for (int i = 0; i < 2; ++i) {
+        ori_fold *doc = NULL;
+        ori_error err;
+        cr_assert_eq(ori_fold_load_string(texts[i], strlen(texts[i]), &doc, &err), ORI_OK);
+        ori_pattern *p = NULL;
+        cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_ERR_CROSSING, "case %d", i);
+        ori_fold_destroy(doc);
+    }
+}
+
+Test(fold, set_pattern_drops_stale_derived_fields_only_when_topology_changes)
+{
+    const char *text = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1]],"
+                       "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0]],"
+                       "\"faces_vertices\": [[0,1,2,3]], \"faces_edges\": [[0,1,2,3]]}";
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK);
+    ori_fold_set_pattern(doc, 0, p, &err);
+    char *kept = ori_fold_get_custom(doc, 0, "faces_edges");
+    cr_assert_not_null(kept);
+    ori_buffer_free(kept);
+    // add a diagonal: faces change, faces_edges is dropped
+    ori_pattern_add_edge(p, 0, 2, ORI_ASSIGN_VALLEY, 0);
+    ori_pattern_clear_faces(p);
+    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    ori_fold_set_pattern(doc, 0, p, &err);
+    cr_assert_null(ori_fold_get_custom(doc, 0, "faces_edges"));
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+}
+
+Test(fold, face_names_and_tree_survive_save_and_load)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    int root = ori_pattern_add_tree_node(p, "Obj1", ORI_NULL_INDEX);
+    cr_assert_eq(ori_pattern_add_tree_node(p, "Obj11", root), 1);
+    cr_assert_eq(ori_pattern_add_tree_node(p, "Obj12", 5), ORI_NULL_INDEX); // bad parent
+    cr_assert_eq(ori_pattern_set_face_name(p, 0, "Obj11"), ORI_OK);
+    ori_fold *doc = ori_fold_create();
+    ori_error err;
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, &err), ORI_OK);
+    char *t = ori_fold_to_string(doc);
+    ori_fold *again = NULL;
+    cr_assert_eq(ori_fold_load_string(t, strlen(t), &again, &err), ORI_OK);
+    ori_pattern *q = NULL;
+    cr_assert_eq(ori_fold_get_pattern(again, 0, NULL, &q, &err), ORI_OK);
+    cr_assert_str_eq(ori_pattern_face_name(q, 0), "Obj11");
+    cr_assert_null(ori_pattern_face_name(q, 1));
+    cr_assert_eq(ori_pattern_tree_node_count(q), 2);
+    cr_assert_str_eq(ori_pattern_tree_node(q, 1).name, "Obj11");
+    cr_assert_eq(ori_pattern_tree_node(q, 1).parent, 0);
+    cr_assert_eq(ori_pattern_find_face_by_name(q, "Obj11"), 0);
+    ori_buffer_free(t);
+    ori_pattern_destroy(p);
+    ori_pattern_destroy(q);
+    ori_fold_destroy(doc);
+    ori_fold_destroy(again);
+}
+
+Test(fold, atomic_save_leaves_nothing_on_failure)
+{
+    char *dir = test_tmpdir();
+    char path[512];
+    snprintf(path, sizeof path, "%s/missing-dir/out.fold", dir);
+    ori_fold *doc = ori_fold_create();
+    ori_error err;
+    cr_assert_eq(ori_fold_save_file(doc, path, &err), ORI_ERR_IO);
+    snprintf(path, sizeof path, "%s/out.fold", dir);
+    cr_assert_eq(ori_fold_save_file(doc, path, &err), ORI_OK);
+    char *text = test_read_text(path);
+    cr_assert(strstr(text, "\"file_creator\": \"orikin\""));
+    free(text);
+    ori_fold_destroy(doc);
+    test_tmpdir_remove(dir);
+}
