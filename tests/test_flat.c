@@ -610,6 +610,68 @@ Test(flat, flat_folder_traditional_models_are_locally_flat_foldable)
     }
 }
 
+Test(flat, other_flat_folder_patterns_are_locally_flat_foldable)
+{
+    const char *files[] = {"flat-folder/instagram_074_miuraoripa_Miura-ori.fold",
+                           "flat-folder/instagram_082_traditionaloripa_4_Birdbase.fold",
+                           "flat-folder/instagram_102_traditionaloripa_Pinwheel.fold",
+                           "flat-folder/instagram_006_ku_Thirds_Pinwheel.fold",
+                           "flat-folder/grids_001_brown_2x2_C1.fold", "flat-folder/grids_002_brown_2x2_D1.fold"};
+    for (int i = 0; i < 6; ++i) {
+        ori_pattern *p = test_load_pattern(test_require_shared(files[i]), 0);
+        ori_flat_report *rep = ori_flat_check_pattern(p, NULL);
+        cr_assert(ori_flat_report_flat_foldable(rep), "%s", files[i]);
+        cr_assert_gt(ori_flat_report_interior_count(rep), 0);
+        ori_flat_report_destroy(rep);
+        ori_pattern_destroy(p);
+    }
+}
+
+// The benchmark's Miura-ori (straight horizontal creases, vertical zigzags) with its assignment
+// is valid at every vertex; flipping one crease breaks exactly its two end vertices.
+Test(flat, generated_miura_ori_is_locally_flat_foldable)
+{
+    const int n = 12;
+    ori_pattern_def def = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&def);
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) ori_pattern_add_vertex(p, ori_v3_make(i + (j % 2) * 0.3, j, 0));
+    int flip = -1;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            int v = j * (n + 1) + i;
+            if (i < n) {
+                int zig = (j % 2 == 0) ? i + 1 : i;
+                ori_assignment a = (j == 0 || j == n) ? ORI_ASSIGN_BOUNDARY
+                                   : zig % 2 == 0     ? ORI_ASSIGN_MOUNTAIN
+                                                      : ORI_ASSIGN_VALLEY;
+                int e = ori_pattern_add_edge(p, v, v + 1, a, 0);
+                if (i == 5 && j == 6) flip = e;
+            }
+            if (j < n)
+                ori_pattern_add_edge(p, v, v + n + 1,
+                                     (i == 0 || i == n) ? ORI_ASSIGN_BOUNDARY
+                                     : i % 2 == 0       ? ORI_ASSIGN_MOUNTAIN
+                                                        : ORI_ASSIGN_VALLEY,
+                                     0);
+        }
+    cr_assert_eq(ori_pattern_build(p, NULL, NULL), ORI_OK);
+    ori_flat_report *rep = ori_flat_check_pattern(p, NULL);
+    cr_assert(ori_flat_report_flat_foldable(rep));
+    cr_assert_eq(ori_flat_report_interior_count(rep), (n - 1) * (n - 1));
+    ori_vertex_report r = ori_flat_report_vertex(rep, 0);
+    cr_assert_eq(r.mv_count.count, 6); // θ, 180−θ, 180−θ, θ: binom(3, 1) · 2
+    ori_flat_report_destroy(rep);
+    ori_edge e = ori_pattern_edge(p, flip);
+    ori_pattern_set_assignment(p, flip, e.assignment == ORI_ASSIGN_MOUNTAIN ? ORI_ASSIGN_VALLEY : ORI_ASSIGN_MOUNTAIN);
+    rep = ori_flat_check_pattern(p, NULL);
+    cr_assert_eq(ori_flat_report_failed_count(rep), 2);
+    cr_assert(has_violation(rep, e.v[0], ORI_FLAT_RULE_MAEKAWA));
+    cr_assert(has_violation(rep, e.v[1], ORI_FLAT_RULE_MAEKAWA));
+    ori_flat_report_destroy(rep);
+    ori_pattern_destroy(p);
+}
+
 Test(flat, tachi_not_foldable_fails_big_little_big)
 {
     ori_pattern *p = test_load_pattern(test_require_shared("flat-folder/unsatisfiable_008_tachioripa_not_foldable.fold"), 0);
