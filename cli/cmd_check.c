@@ -168,7 +168,7 @@ static int run(int argc, char **argv)
 
 const cli_command cli_cmd_check = {
     "check",
-    "local flat-foldability of every interior vertex (Kawasaki, Maekawa, BLB, MV count)",
+    "local flat-foldability of each interior vertex (Kawasaki, Maekawa, BLB, C)",
     "usage: orikin check FILE [--frame N] [--json] [--weld]\n"
     "\n"
     "Check every interior vertex of a FOLD crease pattern (or folded form) for local flat-\n"

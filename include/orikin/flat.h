@@ -32,8 +32,8 @@ extern "C" {
 /// An exact count. When overflow is true the true value exceeds UINT64_MAX and count is
 /// UINT64_MAX.
 typedef struct ori_mv_count {
-    uint64_t count;
-    bool overflow;
+    uint64_t count; ///< the exact count (UINT64_MAX when overflow)
+    bool overflow;  ///< the true count does not fit in 64 bits
 } ori_mv_count;
 
 /// Alternating sector sum α0 − α1 + α2 − … (radians); 0 for a Kawasaki vertex.
@@ -91,9 +91,9 @@ ORI_API const char *ori_flat_rule_name(ori_flat_rule rule);
 
 /// A yes/no answer that may be undetermined (Maekawa with U creases present).
 typedef enum ori_flat_truth {
-    ORI_FLAT_NO = 0,
-    ORI_FLAT_YES = 1,
-    ORI_FLAT_UNDETERMINED = 2,
+    ORI_FLAT_NO = 0,           ///< the rule fails
+    ORI_FLAT_YES = 1,          ///< the rule holds
+    ORI_FLAT_UNDETERMINED = 2, ///< cannot be decided yet (unassigned creases)
 } ori_flat_truth;
 
 /// The local flat-foldability of one vertex.
