@@ -75,6 +75,35 @@ int test_run_cli(const char *args, char **output)
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+int test_run_cli_split(const char *args, char **out, char **err)
+{
+    char errpath[] = "/tmp/orikin-stderr-XXXXXX";
+    int fd = mkstemp(errpath);
+    cr_assert_geq(fd, 0);
+    close(fd);
+    size_t n = strlen(args) + strlen(ORI_CLI_PATH) + strlen(ORI_SOURCE_DIR) + strlen(errpath) + 64;
+    char *cmd = malloc(n);
+    snprintf(cmd, n, "cd '%s' && '%s' %s 2>'%s'", ORI_SOURCE_DIR, ORI_CLI_PATH, args, errpath);
+    FILE *f = popen(cmd, "r");
+    free(cmd);
+    cr_assert_not_null(f);
+    size_t cap = 4096, len = 0, got;
+    char *buf = malloc(cap);
+    while ((got = fread(buf + len, 1, cap - len - 1, f)) > 0) {
+        len += got;
+        if (cap - len < 2) buf = realloc(buf, cap *= 2);
+    }
+    buf[len] = '\0';
+    int status = pclose(f);
+    if (out) *out = buf;
+    else free(buf);
+    char *e = test_read_text(errpath);
+    unlink(errpath);
+    if (err) *err = e ? e : strdup("");
+    else free(e);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 char *test_tmpdir(void)
 {
     char *d = strdup("/tmp/orikin-test-XXXXXX");

@@ -24,6 +24,9 @@ ori_pattern *test_load_pattern(const char *path, int frame);
 // stderr go to *output (malloc'd, may be NULL). Returns the exit code.
 int test_run_cli(const char *args, char **output);
 
+// Same, with stdout and stderr captured separately into *out and *err (malloc'd, may be NULL).
+int test_run_cli_split(const char *args, char **out, char **err);
+
 // A fresh temporary directory (malloc'd path); removed by test_tmpdir_remove.
 char *test_tmpdir(void);
 void test_tmpdir_remove(char *dir);

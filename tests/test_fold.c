@@ -282,9 +282,9 @@ typedef struct bad_case {
 Test(fold, malformed_input_names_the_position_or_the_fold_index)
 {
     const bad_case cases[] = {
-        {"bad-json.fold", ORI_ERR_PARSE, "line 4, column"},
-        {"bad-type.fold", ORI_ERR_TYPE, "vertices_coords 2: coordinate 0 is not a number"},
-        {"bad-index.fold", ORI_ERR_RANGE, "edges_vertices 2: vertex index 7 out of range (3 vertices)"},
+        {"fold-bad-json.fold", ORI_ERR_PARSE, "line 4, column"},
+        {"fold-bad-type.fold", ORI_ERR_TYPE, "vertices_coords 2: coordinate 0 is not a number"},
+        {"fold-bad-index.fold", ORI_ERR_RANGE, "edges_vertices 2: vertex index 7 out of range (3 vertices)"},
         {"zero-length.fold", ORI_ERR_DEGENERATE, "edges_vertices 3: zero-length edge"},
         {"coincident.fold", ORI_ERR_DUPLICATE, "vertices_coords 4: vertex coincides with vertex 2"},
         {"crossing.fold", ORI_ERR_CROSSING, "edges_vertices 4: edge 4 intersects edge 5"},

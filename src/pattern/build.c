@@ -80,6 +80,12 @@ static ori_status find_close_vertices(ori_pattern *p, double tol, int *twin)
     int *next = ori__alloc(sizeof(int) * (size_t)(n ? n : 1));
     int64_t *cell = ori__alloc(sizeof(int64_t) * 3 * (size_t)(n ? n : 1));
     for (int i = 0; i < cap; ++i) head[i] = -1;
+    // When every vertex lies in the same z layer of cells (a flat sheet), probes of the layers
+    // above and below can never match: skip them (9 probes per vertex instead of 27).
+    bool one_layer = true;
+    int64_t z_layer = n > 0 ? (int64_t)floor(p->vertices[0].z / h) : 0;
+    for (int i = 1; i < n && one_layer; ++i) one_layer = (int64_t)floor(p->vertices[i].z / h) == z_layer;
+    int dz_lo = one_layer ? 0 : -1, dz_hi = one_layer ? 0 : 1;
     ori_status st = ORI_OK;
     for (int i = 0; i < n && st == ORI_OK; ++i) {
         ori_v3 v = p->vertices[i];
@@ -88,7 +94,7 @@ static ori_status find_close_vertices(ori_pattern *p, double tol, int *twin)
         twin[i] = -1;
         for (int dx = -1; dx <= 1 && twin[i] < 0; ++dx)
             for (int dy = -1; dy <= 1 && twin[i] < 0; ++dy)
-                for (int dz = -1; dz <= 1 && twin[i] < 0; ++dz) {
+                for (int dz = dz_lo; dz <= dz_hi && twin[i] < 0; ++dz) {
                     int64_t k[3] = {c[0] + dx, c[1] + dy, c[2] + dz};
                     uint64_t hk = mix64((uint64_t)k[0] * 0x9E3779B97F4A7C15ULL ^
                                         mix64((uint64_t)k[1] + 0x632BE59BD9B4E019ULL) ^
@@ -245,10 +251,14 @@ static bool edges_conflict(const ori_pattern *p, int e, int f)
     const int *ev = p->edges[e].v, *fv = p->edges[f].v;
     ori_v2 a = ori__pattern_v2(p, ev[0]), b = ori__pattern_v2(p, ev[1]);
     ori_v2 c = ori__pattern_v2(p, fv[0]), d = ori__pattern_v2(p, fv[1]);
+    // Disjoint closed bounding boxes: no common point at all (exact comparisons). Most pairs
+    // that share a grid cell end here without an orientation test.
+    // (Plain comparisons: fmin/fmax are library calls here; coordinates are finite.)
+    if ((a.x > b.x ? a.x : b.x) < (c.x < d.x ? c.x : d.x) || (c.x > d.x ? c.x : d.x) < (a.x < b.x ? a.x : b.x) ||
+        (a.y > b.y ? a.y : b.y) < (c.y < d.y ? c.y : d.y) || (c.y > d.y ? c.y : d.y) < (a.y < b.y ? a.y : b.y))
+        return false;
     int shared = (ev[0] == fv[0] || ev[0] == fv[1]) + (ev[1] == fv[0] || ev[1] == fv[1]);
     if (shared == 2) return true; // duplicate edge
-    int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
-    int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
     if (shared == 1) {
         // Only a collinear overlap beyond the shared endpoint conflicts.
         int other_f = (fv[0] == ev[0] || fv[0] == ev[1]) ? fv[1] : fv[0];
@@ -260,6 +270,8 @@ static bool edges_conflict(const ori_pattern *p, int e, int f)
         // collinear: overlap when both lie on the same side of the shared endpoint
         return ori_v2_dot(ori_v2_sub(x, s), ori_v2_sub(y, s)) > 0.0;
     }
+    int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
+    int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
     if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0) {
         if (o1 == 0 && o2 == 0) return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a);
         return true;
@@ -271,20 +283,63 @@ static bool edges_conflict(const ori_pattern *p, int e, int f)
     return false;
 }
 
-typedef struct grid_entry {
-    int64_t cell;
-    int edge;
-} grid_entry;
+// Uniform grid over the bounding box of the sheet (about one cell per edge).
+typedef struct crossing_grid {
+    double minx, miny, cell;
+    int64_t nx, ny;
+} crossing_grid;
 
-static int compare_entries(const void *pa, const void *pb)
+// Enter edge e in the cells its segment passes through (column by column, padded by one cell
+// for rounding). Pass 1 (items == NULL) counts entries per cell into slot[cell + 1]; pass 2
+// writes e at items[slot[cell]++]. Edges are entered in increasing order, so every cell lists
+// its edges in increasing order (an edge may repeat, adjacently).
+static void grid_enter(const ori_pattern *p, int e, const crossing_grid *g, int *slot, int *items)
 {
-    const grid_entry *a = pa, *b = pb;
-    if (a->cell != b->cell) return (a->cell > b->cell) - (a->cell < b->cell);
-    return (a->edge > b->edge) - (a->edge < b->edge);
+    double minx = g->minx, miny = g->miny, cell = g->cell;
+    int64_t nx = g->nx, ny = g->ny;
+    ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+    if (a.x > b.x) {
+        ori_v2 t = a;
+        a = b;
+        b = t;
+    }
+    int64_t c0 = (int64_t)floor((a.x - minx) / cell), c1 = (int64_t)floor((b.x - minx) / cell);
+    if (c0 < 0) c0 = 0;
+    if (c1 >= nx) c1 = nx - 1;
+    for (int64_t cx = c0; cx <= c1; ++cx) {
+        // y-range of the segment within this column (padded by one cell for rounding)
+        double x0 = fmax(a.x, minx + (double)cx * cell), x1 = fmin(b.x, minx + (double)(cx + 1) * cell);
+        double y0, y1;
+        if (b.x > a.x) {
+            double t0 = (x0 - a.x) / (b.x - a.x), t1 = (x1 - a.x) / (b.x - a.x);
+            y0 = a.y + t0 * (b.y - a.y);
+            y1 = a.y + t1 * (b.y - a.y);
+        } else {
+            y0 = a.y;
+            y1 = b.y;
+        }
+        if (y0 > y1) {
+            double t = y0;
+            y0 = y1;
+            y1 = t;
+        }
+        int64_t r0 = (int64_t)floor((y0 - miny) / cell) - 1, r1 = (int64_t)floor((y1 - miny) / cell) + 1;
+        if (r0 < 0) r0 = 0;
+        if (r1 >= ny) r1 = ny - 1;
+        int64_t cx_lo = cx > 0 ? cx - 1 : cx;
+        // also enter the previous column's overlap band for points exactly on a column edge
+        for (int64_t ccx = cx_lo; ccx <= cx; ++ccx)
+            for (int64_t r = r0; r <= r1; ++r) {
+                if (ccx != cx && (x0 > minx + (double)cx * cell)) continue;
+                int64_t id = ccx * ny + r;
+                if (items) items[slot[id]++] = e;
+                else slot[id + 1]++;
+            }
+    }
 }
 
-// Uniform grid over the bounding box (about one cell per edge); each edge is entered in the
-// cells its segment passes through (column by column), then pairs within a cell are tested.
+// Each edge is entered in the cells its segment passes through, the entries are bucketed by
+// cell (counting sort, two passes), then pairs within a cell are tested.
 static ori_status check_crossings(ori_pattern *p, ori_error *error)
 {
     int m = p->edge_count;
@@ -305,68 +360,38 @@ static ori_status check_crossings(ori_pattern *p, ori_error *error)
         nx = (int64_t)(w / cell) + 1;
         ny = (int64_t)(h / cell) + 1;
     }
-    grid_entry *entries = NULL;
-    int count = 0, cap = 0;
-    ORI__RESERVE(entries, cap, 2 * m);
-    for (int e = 0; e < m; ++e) {
-        ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
-        if (a.x > b.x) {
-            ori_v2 t = a;
-            a = b;
-            b = t;
-        }
-        int64_t c0 = (int64_t)floor((a.x - minx) / cell), c1 = (int64_t)floor((b.x - minx) / cell);
-        if (c0 < 0) c0 = 0;
-        if (c1 >= nx) c1 = nx - 1;
-        for (int64_t cx = c0; cx <= c1; ++cx) {
-            // y-range of the segment within this column (padded by one cell for rounding)
-            double x0 = fmax(a.x, minx + (double)cx * cell), x1 = fmin(b.x, minx + (double)(cx + 1) * cell);
-            double y0, y1;
-            if (b.x > a.x) {
-                double t0 = (x0 - a.x) / (b.x - a.x), t1 = (x1 - a.x) / (b.x - a.x);
-                y0 = a.y + t0 * (b.y - a.y);
-                y1 = a.y + t1 * (b.y - a.y);
-            } else {
-                y0 = a.y;
-                y1 = b.y;
-            }
-            if (y0 > y1) {
-                double t = y0;
-                y0 = y1;
-                y1 = t;
-            }
-            int64_t r0 = (int64_t)floor((y0 - miny) / cell) - 1, r1 = (int64_t)floor((y1 - miny) / cell) + 1;
-            if (r0 < 0) r0 = 0;
-            if (r1 >= ny) r1 = ny - 1;
-            int64_t cx_lo = cx > 0 ? cx - 1 : cx;
-            // also enter the previous column's overlap band for points exactly on a column edge
-            for (int64_t ccx = cx_lo; ccx <= cx; ++ccx)
-                for (int64_t r = r0; r <= r1; ++r) {
-                    if (ccx != cx && (x0 > minx + (double)cx * cell)) continue;
-                    grid_entry ge = {ccx * ny + r, e};
-                    ORI__PUSH(entries, count, cap, ge);
-                }
-        }
+    crossing_grid g = {minx, miny, cell, nx, ny};
+    size_t cells = (size_t)(nx * ny);
+    int *start = ori__calloc(cells + 1, sizeof(int)); // start[c] … start[c+1]: cell c's entries
+    for (int e = 0; e < m; ++e) grid_enter(p, e, &g, start, NULL);
+    int64_t total = 0;
+    for (size_t c = 0; c < cells; ++c) {
+        total += start[c + 1];
+        if (total > INT32_MAX) ori__assert_fail("crossing grid: too many entries", __FILE__, __LINE__);
+        start[c + 1] = (int)total;
     }
-    qsort(entries, (size_t)count, sizeof *entries, compare_entries);
+    int *items = ori__alloc(sizeof(int) * (size_t)(total ? total : 1));
+    int *fill = ori__alloc(sizeof(int) * cells);
+    memcpy(fill, start, sizeof(int) * cells);
+    for (int e = 0; e < m; ++e) grid_enter(p, e, &g, fill, items);
+    ori__free(fill);
     ori_status st = ORI_OK;
     int bad_e = -1, bad_f = -1;
-    for (int i = 0; i < count && st == ORI_OK;) {
-        int j = i;
-        while (j < count && entries[j].cell == entries[i].cell) ++j;
+    for (size_t c = 0; c < cells && st == ORI_OK; ++c) {
+        int i = start[c], j = start[c + 1];
         for (int x = i; x < j && st == ORI_OK; ++x)
             for (int y = x + 1; y < j; ++y) {
-                if (entries[x].edge == entries[y].edge) continue;
-                if (edges_conflict(p, entries[x].edge, entries[y].edge)) {
-                    bad_e = entries[x].edge < entries[y].edge ? entries[x].edge : entries[y].edge;
-                    bad_f = entries[x].edge < entries[y].edge ? entries[y].edge : entries[x].edge;
+                if (items[x] == items[y]) continue;
+                if (edges_conflict(p, items[x], items[y])) {
+                    bad_e = items[x] < items[y] ? items[x] : items[y];
+                    bad_f = items[x] < items[y] ? items[y] : items[x];
                     st = ORI_ERR_CROSSING;
                     break;
                 }
             }
-        i = j;
     }
-    ori__free(entries);
+    ori__free(items);
+    ori__free(start);
     if (st != ORI_OK)
         return ori__fail_at(error, st, "edges_vertices", bad_e,
                             "edge %d intersects edge %d away from a shared vertex", bad_e, bad_f);

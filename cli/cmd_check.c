@@ -1,0 +1,195 @@
+// orikin check: local flat-foldability of every interior vertex of a FOLD pattern.
+#include <orikin/flat.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+// Degrees for output: values within ORI_TOL_PRINT_DEG of an integer are written as it.
+static double out_deg(double rad)
+{
+    double d = ori_rad_to_deg(rad);
+    double r = nearbyint(d);
+    if (fabs(d - r) <= ORI_TOL_PRINT_DEG) d = r;
+    return d == 0.0 ? 0.0 : d;
+}
+
+static json_t *count_json(ori_mv_count c)
+{
+    if (c.overflow || c.count > (uint64_t)INT64_MAX) return json_null();
+    return json_integer((json_int_t)c.count);
+}
+
+static const char *yes_no(bool b) { return b ? "yes" : "no"; }
+
+static void print_count(ori_mv_count c, int width)
+{
+    if (c.overflow) printf("%-*s", width, ">2^64");
+    else printf("%-*llu", width, (unsigned long long)c.count);
+}
+
+static json_t *vertex_json(const ori_pattern *p, const ori_flat_report *rep, int i, int *edges, double *sectors)
+{
+    ori_vertex_report r = ori_flat_report_vertex(rep, i);
+    int n = ori_flat_report_vertex_creases(rep, i, edges, sectors, r.degree);
+    json_t *o = json_object();
+    json_object_set_new(o, "vertex", json_integer(r.vertex));
+    json_object_set_new(o, "degree", json_integer(r.degree));
+    json_t *cr = json_array(), *sd = json_array();
+    char *letters = malloc((size_t)n + 1);
+    for (int k = 0; k < n; ++k) {
+        json_array_append_new(cr, json_integer(edges[k]));
+        json_array_append_new(sd, json_real(out_deg(sectors[k])));
+        letters[k] = ori_assignment_to_char(ori_pattern_edge(p, edges[k]).assignment);
+    }
+    letters[n] = '\0';
+    json_object_set_new(o, "creases", cr);
+    json_object_set_new(o, "assignment", json_string(letters));
+    free(letters);
+    json_object_set_new(o, "sectors_deg", sd);
+    json_object_set_new(o, "sector_sum_deg", json_real(out_deg(r.sector_sum_rad)));
+    json_object_set_new(o, "kawasaki", json_boolean(r.kawasaki));
+    json_object_set_new(o, "maekawa", r.maekawa == ORI_FLAT_UNDETERMINED ? json_null() : json_boolean(r.maekawa == ORI_FLAT_YES));
+    json_object_set_new(o, "big_little_big", json_boolean(r.big_little_big));
+    json_object_set_new(o, "mv_count", count_json(r.mv_count));
+    if (r.mv_count.overflow) json_object_set_new(o, "mv_count_overflow", json_true());
+    json_object_set_new(o, "assignment_valid", json_boolean(r.assignment_valid));
+    if (r.unassigned > 0) {
+        json_object_set_new(o, "unassigned", json_integer(r.unassigned));
+        json_object_set_new(o, "unassigned_completions", count_json(r.completions));
+    }
+    json_object_set_new(o, "cone", json_boolean(r.cone));
+    json_object_set_new(o, "flat_foldable", json_boolean(r.flat_foldable));
+    return o;
+}
+
+static int run(int argc, char **argv)
+{
+    const char *path = NULL;
+    int frame = 0;
+    bool json = false, weld = false;
+    for (int i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--json") == 0) json = true;
+        else if (strcmp(argv[i], "--weld") == 0) weld = true;
+        else if (strcmp(argv[i], "--frame") == 0) {
+            const char *v = cli_option_value("check", argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &frame) || frame < 0) return cli_usage("check", "--frame needs a frame number ≥ 0");
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') return cli_usage("check", "unknown option %s", argv[i]);
+        else if (!path) path = argv[i];
+        else return cli_usage("check", "one FILE only");
+    }
+    if (!path) return cli_usage("check", "missing FILE");
+    ori_fold *doc;
+    ori_pattern *p;
+    int rc = cli_load_pattern("check", path, frame, weld, &doc, &p);
+    if (rc != CLI_EXIT_OK) return rc;
+
+    ori_flat_report *rep = ori_flat_check_pattern(p, NULL);
+    int nv = ori_flat_report_vertex_count(rep);
+    int max_degree = 1;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        int d = ori_pattern_vertex_degree(p, v);
+        if (d > max_degree) max_degree = d;
+    }
+    int *edges = malloc(sizeof(int) * (size_t)max_degree);
+    double *sectors = malloc(sizeof(double) * (size_t)max_degree);
+    bool ok = ori_flat_report_flat_foldable(rep);
+    int nviol = ori_flat_report_violation_count(rep);
+
+    if (json) {
+        json_t *out = json_object();
+        json_object_set_new(out, "file", json_string(path));
+        json_object_set_new(out, "frame", json_integer(frame));
+        json_object_set_new(out, "locally_flat_foldable", json_boolean(ok));
+        json_object_set_new(out, "interior_vertices", json_integer(ori_flat_report_interior_count(rep)));
+        json_object_set_new(out, "failed_vertices", json_integer(ori_flat_report_failed_count(rep)));
+        json_t *vs = json_array();
+        for (int i = 0; i < nv; ++i) json_array_append_new(vs, vertex_json(p, rep, i, edges, sectors));
+        json_object_set_new(out, "vertices", vs);
+        json_t *viol = json_array();
+        for (int i = 0; i < nviol; ++i) {
+            ori_flat_violation x = ori_flat_report_violation(rep, i);
+            json_t *o = json_object();
+            json_object_set_new(o, "vertex", json_integer(x.vertex));
+            json_object_set_new(o, "rule", json_string(ori_flat_rule_name(x.rule)));
+            if (x.edge != ORI_NULL_INDEX) json_object_set_new(o, "edge", json_integer(x.edge));
+            json_object_set_new(o, "detail", json_string(x.detail));
+            json_array_append_new(viol, o);
+        }
+        json_object_set_new(out, "violations", viol);
+        cli_print_json(out);
+    } else {
+        printf("file     %s (frame %d, %s)\n", path, frame,
+               ori_pattern_is_folded_form(p) ? "folded form" : "crease pattern");
+        if (nv > 0) {
+            printf("%-7s %-6s %-4s %-4s %-4s %-8s %-6s %s\n", "vertex", "degree", "K", "M", "BLB", "C", "valid",
+                   "sectors (deg)");
+            for (int i = 0; i < nv; ++i) {
+                ori_vertex_report r = ori_flat_report_vertex(rep, i);
+                int n = ori_flat_report_vertex_creases(rep, i, edges, sectors, r.degree);
+                const char *m = r.maekawa == ORI_FLAT_UNDETERMINED ? "n/a" : yes_no(r.maekawa == ORI_FLAT_YES);
+                printf("%-7d %-6d %-4s %-4s %-4s ", r.vertex, r.degree, yes_no(r.kawasaki), m, yes_no(r.big_little_big));
+                print_count(r.mv_count, 8);
+                printf(" %-6s", r.flat_foldable ? "yes" : "NO");
+                for (int k = 0; k < n; ++k) printf(" %.6g", out_deg(sectors[k]));
+                printf("\n");
+            }
+        }
+        int per_rule[ORI_FLAT_RULE_COUNT] = {0};
+        for (int i = 0; i < nviol; ++i) {
+            ori_flat_violation x = ori_flat_report_violation(rep, i);
+            per_rule[x.rule]++;
+            printf("vertex %d: %s: %s\n", x.vertex, ori_flat_rule_name(x.rule), x.detail);
+        }
+        int interior = ori_flat_report_interior_count(rep), failed = ori_flat_report_failed_count(rep);
+        if (interior == 0) printf("verdict: no interior vertices; nothing to fold locally\n");
+        else if (ok) printf("verdict: locally flat-foldable (%d interior vert%s)\n", interior, interior == 1 ? "ex" : "ices");
+        else {
+            printf("verdict: NOT locally flat-foldable: %d of %d interior vert%s fail%s (", failed, interior,
+                   interior == 1 ? "ex" : "ices", failed == 1 && interior == 1 ? "s" : "");
+            const char *sep = "";
+            for (int r = 0; r < ORI_FLAT_RULE_COUNT; ++r)
+                if (per_rule[r]) {
+                    printf("%s%s %d", sep, ori_flat_rule_name((ori_flat_rule)r), per_rule[r]);
+                    sep = ", ";
+                }
+            printf(")\n");
+        }
+    }
+    free(edges);
+    free(sectors);
+    ori_flat_report_destroy(rep);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    return ok ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
+}
+
+const cli_command cli_cmd_check = {
+    "check",
+    "local flat-foldability of each interior vertex (Kawasaki, Maekawa, BLB, C)",
+    "usage: orikin check FILE [--frame N] [--json] [--weld]\n"
+    "\n"
+    "Check every interior vertex of a FOLD crease pattern (or folded form) for local flat-\n"
+    "foldability with its mountain-valley assignment: Kawasaki (alternating sector sum 0, even\n"
+    "degree), Maekawa (M - V = +-2), the generalised big-little-big rule, an exact test of the\n"
+    "assignment (crimp reduction), and Hull's count C of valid assignments. F and J edges are\n"
+    "ignored (their sectors merge); U creases count as free: a vertex passes when some choice\n"
+    "of M/V for them folds flat. A vertex whose sectors do not sum to 360 degrees is a cone.\n"
+    "Prints a table and every broken rule, then a verdict. Exit 0 when every interior vertex\n"
+    "is locally flat-foldable, 1 when not, 3 for an invalid file.\n"
+    "\n"
+    "options:\n"
+    "  --frame N   frame to check (0 = top level, k = file_frames[k-1]); default 0\n"
+    "  --json      print {\"file\", \"frame\", \"locally_flat_foldable\", \"interior_vertices\",\n"
+    "              \"failed_vertices\", \"vertices\": [{\"vertex\", \"degree\", \"creases\",\n"
+    "              \"assignment\", \"sectors_deg\", \"sector_sum_deg\", \"kawasaki\", \"maekawa\",\n"
+    "              \"big_little_big\", \"mv_count\", \"assignment_valid\", \"cone\",\n"
+    "              \"flat_foldable\"}], \"violations\": [{\"vertex\", \"rule\", \"edge\", \"detail\"}]}\n"
+    "              (see docs/verification.md)\n"
+    "  --weld      merge vertices closer than the length tolerance (renumbers vertices)\n"
+    "\n"
+    "example: orikin check examples/patterns/degree4-vertex.fold\n",
+    run,
+};
