@@ -3,6 +3,7 @@
 #define ORIKIN_ORIKIN_H
 
 #include "base.h"
+#include "flat.h"
 #include "fold.h"
 #include "math.h"
 #include "pattern.h"
