@@ -455,7 +455,7 @@ static bool plan(arr *A, ori_v2 a, ori_v2 b)
         event ev = {clamp01(va / (va - vb)), X, -1, e, 0};
         ORI__PUSH(A->ev, A->ev_count, A->ev_cap, ev);
     }
-    qsort(A->ev, (size_t)A->ev_count, sizeof *A->ev, compare_events);
+    if (A->ev_count > 1) qsort(A->ev, (size_t)A->ev_count, sizeof *A->ev, compare_events);
     for (int i = 0; i < A->ev_count; ++i)
         if (A->ev[i].vertex >= 0) A->mark[A->ev[i].vertex] = i;
 
@@ -833,7 +833,7 @@ static void commit(arr *A, ori_assignment asg, double angle)
     for (int k = 0; k < A->gr_count; ++k) A->mark[A->gr[k].vertex] = k;
 
     // Edge splits, each edge's split points ordered from its first vertex.
-    qsort(A->sr, (size_t)A->sr_count, sizeof *A->sr, compare_splits);
+    if (A->sr_count > 1) qsort(A->sr, (size_t)A->sr_count, sizeof *A->sr, compare_splits);
     A->es_count = A->split_vert_count = 0;
     for (int i = 0; i < A->sr_count;) {
         int e = A->sr[i].edge, j = i;
