@@ -1,6 +1,7 @@
 // orikin generate: standard tessellation crease patterns (Miura-ori, Yoshimura, waterbomb,
 // square twist, Kresling) written as FOLD.
 #include <math.h>
+#include <orikin/formats.h>
 #include <orikin/generate.h>
 #include <stdlib.h>
 #include <string.h>
@@ -133,38 +134,36 @@ static int run(int argc, char **argv)
         return st == ORI_ERR_LIMIT ? CLI_EXIT_USAGE : CLI_EXIT_INTERNAL;
     }
 
-    ori_fold *doc = ori_fold_create();
-    char title[160];
+    // Written directly (no JSON tree): a 1000 x 1000 Miura-ori costs its text, not gigabytes.
+    char title[160], title_json[200], params[512];
     snprintf(title, sizeof title, "%s, %d x %d", ori_tessellation_name(kind), def.rows,
              kind == ORI_TESS_KRESLING ? def.sides : def.cols);
-    ori_fold_set_string(doc, 0, "file_title", title);
-    ori_fold_set_custom(doc, 0, "frame_classes", "[\"creasePattern\"]", NULL);
-    st = ori_fold_set_pattern(doc, 0, p, &err);
-    char *json = classes_json(cls, ori_pattern_edge_count(p));
-    if (st == ORI_OK && json) st = ori_fold_set_custom(doc, 0, "orikin:edges_class", json, &err);
-    free(json);
-    char params[512];
+    snprintf(title_json, sizeof title_json, "\"%s\"", title);
     generator_json(&def, params, sizeof params);
-    if (st == ORI_OK) st = ori_fold_set_custom(doc, 0, "orikin:generator", params, &err);
+    char *classes = classes_json(cls, ori_pattern_edge_count(p));
+    ori_fold_field extra[] = {{"file_title", title_json},
+                              {"frame_classes", "[\"creasePattern\"]"},
+                              {"orikin:generator", params},
+                              {"orikin:edges_class", classes ? classes : "null"}};
+    int n_extra = (int)(sizeof extra / sizeof extra[0]);
     int rc = CLI_EXIT_OK;
-    if (st == ORI_OK && out) {
-        st = ori_fold_save_file(doc, out, &err);
+    if (!classes) {
+        fprintf(stderr, "orikin generate: out of memory\n");
+        rc = CLI_EXIT_INTERNAL;
+    } else if (out) {
+        st = ori_pattern_save_fold(p, extra, n_extra, out, &err);
         if (st != ORI_OK) rc = cli_input_error("generate", out, &err);
         else
             printf("%s: %s, %d vertices, %d edges, %d faces\n", out, title, ori_pattern_vertex_count(p),
                    ori_pattern_edge_count(p), ori_pattern_face_count(p));
-    } else if (st == ORI_OK) {
-        char *text = ori_fold_to_string(doc);
+    } else {
+        char *text = ori_pattern_to_fold_text(p, extra, n_extra, NULL);
         fputs(text, stdout);
         ori_buffer_free(text);
-    } else {
-        char buf[512];
-        fprintf(stderr, "orikin generate: %s\n", ori_error_format(&err, buf, sizeof buf));
-        rc = CLI_EXIT_INTERNAL;
     }
+    free(classes);
     ori_buffer_free(cls);
     ori_pattern_destroy(p);
-    ori_fold_destroy(doc);
     return rc;
 }
 

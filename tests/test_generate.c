@@ -2,6 +2,7 @@
 // local flat-foldability (Kawasaki, Maekawa, big-little-big) at every interior vertex for
 // several parameter sets, the geometry each generator promises, and parameter errors.
 #include <float.h>
+#include <stdio.h>
 
 #include <orikin/generate.h>
 
@@ -396,4 +397,35 @@ Test(generate, bistable_height_formula)
     // Hexagon, side 1 (R = 1), φ = 30°: h² = 4·cos 30°·cos 60° = √3.
     cr_assert_float_eq(ori_kresling_bistable_height(6, 1.0, deg(30.0)), sqrt(sqrt(3.0)), 1e-15);
     cr_assert_eq(ori_kresling_bistable_height(6, 1.0, deg(60.0)), 0.0);
+}
+
+// --- command line --------------------------------------------------------------------------
+
+Test(generate, cli_writes_a_valid_fold_with_edge_classes)
+{
+    char *dir = test_tmpdir();
+    char path[600], args[1024];
+    snprintf(path, sizeof path, "%s/twist.fold", dir);
+    snprintf(args, sizeof args, "generate square-twist --rows 2 --cols 3 --angle 30 -o '%s'", path);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "48 vertices, 82 edges, 35 faces"), "%s", out); // 4RC+4R+4C+4, 8RC+6R+6C+4, 4RC+2R+2C+1
+    free(out);
+    ori_fold *doc = NULL;
+    cr_assert_eq(ori_fold_load_file(path, &doc, NULL), ORI_OK);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, NULL), ORI_OK); // full validation
+    char *cls = ori_fold_get_custom(doc, 0, "orikin:edges_class");
+    cr_assert_not_null(cls);
+    int n = 0;
+    for (const char *c = cls; (c = strstr(c, "\"pleat\"")) != NULL; ++c) n++;
+    cr_assert_eq(n, 2 * 2 * 4 + 2 * 3 * 3); // two lines per pleat slot
+    char *gen = ori_fold_get_custom(doc, 0, "orikin:generator");
+    cr_assert_str_eq(gen, "{\"kind\":\"square-twist\",\"rows\":2,\"cols\":3,\"angle_deg\":30,\"width\":1,"
+                          "\"height\":1,\"twist_size\":0.5}");
+    ori_buffer_free(gen);
+    ori_buffer_free(cls);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    test_tmpdir_remove(dir);
 }
