@@ -1,5 +1,5 @@
 #!/bin/sh
-# Run every fuzz target for SECONDS each, seeded from the repository's FOLD examples.
+# Run every fuzz target for SECONDS each, seeded from the repository's FOLD examples and test drawings.
 set -eu
 BUILD=$1
 SECONDS_EACH=${2:-60}
@@ -8,6 +8,10 @@ rm -rf "$corpus"
 mkdir -p "$corpus/fold"
 cp examples/patterns/*.fold "$corpus/fold/" 2>/dev/null || true
 cp tests/data/*.fold "$corpus/fold/" 2>/dev/null || true
+for ext in svg opx cp; do
+    mkdir -p "$corpus/$ext"
+    cp tests/data/formats/*."$ext" "$corpus/$ext/" 2>/dev/null || true
+done
 for t in "$BUILD"/fuzz/fuzz_*; do
     [ -x "$t" ] || continue
     name=$(basename "$t" | sed 's/^fuzz_//')
