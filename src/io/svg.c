@@ -1,11 +1,13 @@
-// SVG crease patterns in the Origami Simulator convention, read with libxml2's tree API (no
-// network, no entity substitution, errors captured instead of printed). Geometry: line,
+// SVG crease patterns in the Origami Simulator convention, read with libxml2's streaming reader
+// (no network, no entity substitution, errors captured instead of printed; memory independent
+// of the document's size). Geometry: line,
 // polyline, polygon, rect and path (M L H V Z, absolute and relative, implicit repeats) under
 // nested groups whose transforms compose; style from presentation attributes, simple
 // <style> rules (tag, .class, tag.class) and style="" in CSS precedence; stroke colour gives the
 // assignment and opacity × stroke-opacity the fold angle.
 #include <libxml/parser.h>
 #include <libxml/tree.h>
+#include <libxml/xmlreader.h>
 #include <stdlib.h>
 
 #include "import_internal.h"
@@ -549,9 +551,7 @@ static ori_status read_transform(svg_ctx *c, const xmlNode *n, affine *m)
     return st;
 }
 
-// --- the tree walk --------------------------------------------------------------------------
-
-static ori_status walk(svg_ctx *c, const xmlNode *parent, affine m, svg_style style, int depth);
+// --- elements ------------------------------------------------------------------------------
 
 static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style *style)
 {
@@ -602,12 +602,23 @@ static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style 
     return st;
 }
 
-static ori_status element(svg_ctx *c, const xmlNode *n, affine m, svg_style style, int depth)
+// The state an element passes to its children.
+typedef struct frame {
+    affine m;
+    svg_style style;
+} frame;
+
+// One element, given its parent's state. *enter says whether its children are to be read (a
+// group), in which case *child holds the state they inherit.
+static ori_status element(svg_ctx *c, const xmlNode *n, const frame *parent, frame *child, bool *enter)
 {
     static const char *const skipped[] = {"defs", "symbol", "clipPath", "mask", "marker", "pattern",
                                           "metadata", "title", "desc", "style", "script", "linearGradient",
                                           "radialGradient", "filter"};
     static const char *const unsupported[] = {"use", "image", "text", "foreignObject", "switch"};
+    static const char *const shapes[] = {"line", "rect", "polyline", "polygon", "path", "circle", "ellipse"};
+    *enter = false;
+    if (!is_svg_element(n)) return ORI_OK; // other namespaces (sodipodi:namedview, …)
     for (size_t i = 0; i < sizeof skipped / sizeof skipped[0]; ++i)
         if (name_is(n, skipped[i])) return ORI_OK;
     for (size_t i = 0; i < sizeof unsupported / sizeof unsupported[0]; ++i)
@@ -615,48 +626,26 @@ static ori_status element(svg_ctx *c, const xmlNode *n, affine m, svg_style styl
             c->stats.unsupported_elements++;
             return ORI_OK;
         }
+    bool group = name_is(n, "g") || name_is(n, "a") || name_is(n, "svg");
+    bool is_shape = false;
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; ++i) is_shape |= name_is(n, shapes[i]);
+    if (!group && !is_shape) return ORI_OK; // unknown elements are ignored with their content
+    frame f = *parent;
     bool display_none;
-    element_style(c, n, &style, &display_none);
+    element_style(c, n, &f.style, &display_none);
     if (display_none) return ORI_OK;
-    ori_status st = read_transform(c, n, &m);
+    ori_status st = read_transform(c, n, &f.m);
     if (st != ORI_OK) return st;
-    if (name_is(n, "g") || name_is(n, "a")) return walk(c, n, m, style, depth + 1);
+    if (is_shape) return shape(c, n, f.m, &f.style);
     if (name_is(n, "svg")) { // nested viewport: its x, y offset (viewBox scaling is not applied)
         double x, y;
         if ((st = length_attr(c, n, "x", &x)) || (st = length_attr(c, n, "y", &y))) return st;
         affine off = {1, 0, 0, 1, x, y};
-        return walk(c, n, affine_mul(m, off), style, depth + 1);
+        f.m = affine_mul(f.m, off);
     }
-    static const char *const shapes[] = {"line", "rect", "polyline", "polygon", "path", "circle", "ellipse"};
-    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; ++i)
-        if (name_is(n, shapes[i])) return shape(c, n, m, &style);
-    return ORI_OK; // unknown elements are ignored
-}
-
-static ori_status walk(svg_ctx *c, const xmlNode *parent, affine m, svg_style style, int depth)
-{
-    if (depth > MAX_DEPTH) return fail(c, parent, ORI_ERR_LIMIT, "elements nested deeper than %d levels", MAX_DEPTH);
-    for (const xmlNode *n = parent->children; n; n = n->next) {
-        if (!is_svg_element(n)) continue;
-        ori_status st = element(c, n, m, style, depth);
-        if (st != ORI_OK) return st;
-    }
+    *child = f;
+    *enter = true;
     return ORI_OK;
-}
-
-static void collect_styles(svg_ctx *c, const xmlNode *parent, int depth)
-{
-    if (depth > MAX_DEPTH) return;
-    for (const xmlNode *n = parent->children; n; n = n->next) {
-        if (n->type != XML_ELEMENT_NODE) continue;
-        if (is_svg_element(n) && name_is(n, "style")) {
-            xmlChar *text = xmlNodeGetContent(n);
-            if (text) add_style_rules(c, (const char *)text);
-            xmlFree(text);
-        } else {
-            collect_styles(c, n, depth + 1);
-        }
-    }
 }
 
 // --- entry ----------------------------------------------------------------------------------
@@ -668,20 +657,35 @@ typedef struct xml_first_error {
     char message[200];
 } xml_first_error;
 
-static void record_first_error(void *user, xmlErrorPtr xe)
+static void keep_first_error(xml_first_error *first, const xmlError *xe)
 {
-    xmlParserCtxt *ctxt = user;
-    xml_first_error *first = ctxt ? ctxt->_private : NULL;
     if (!first || first->set || !xe || xe->level < XML_ERR_ERROR) return;
     first->set = true;
     first->line = xe->line;
     first->column = xe->int2;
-    trim_copy(first->message, sizeof first->message, xe->message ? xe->message : "not well-formed XML",
-              xe->message ? strlen(xe->message) : 19);
+    const char *m = xe->message ? xe->message : "not well-formed XML";
+    trim_copy(first->message, sizeof first->message, m, strlen(m));
 }
 
-// Parse XML text without network access or entity substitution; errors are returned (the
-// first one, with its line and column), never printed. *doc is NULL on failure.
+static void reader_error(void *user, xmlErrorPtr xe) { keep_first_error(user, xe); }
+
+static void ctxt_error(void *user, xmlErrorPtr xe)
+{
+    xmlParserCtxt *ctxt = user;
+    keep_first_error(ctxt ? ctxt->_private : NULL, xe);
+}
+
+static ori_status xml_error(const xml_first_error *first, ori_error *error)
+{
+    return ori__fail_pos(error, ORI_ERR_PARSE, first->line > 0 ? first->line : 1, first->column > 0 ? first->column : 0,
+                         "XML: %s", first->set ? first->message : "not well-formed XML");
+}
+
+// No network, no entity substitution or DTD loading, errors captured instead of printed.
+#define XML_OPTIONS (XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES)
+
+// Parse XML text into a tree (small documents: ORIPA files); the first error with its line
+// and column. *doc is NULL on failure.
 ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error);
 
 ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error)
@@ -693,22 +697,74 @@ ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDo
     xml_first_error first;
     memset(&first, 0, sizeof first);
     ctxt->_private = &first;
-    ctxt->sax->serror = record_first_error;
-    int options = XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES;
-    xmlDoc *d = xmlCtxtReadMemory(ctxt, text, (int)size, NULL, NULL, options);
+    ctxt->sax->serror = ctxt_error;
+    xmlDoc *d = xmlCtxtReadMemory(ctxt, text, (int)size, NULL, NULL, XML_OPTIONS);
     ori_status st = ORI_OK;
     if (!d || !ctxt->wellFormed) {
-        if (!first.set) { // fall back to what the context kept
-            const xmlError *xe = xmlCtxtGetLastError(ctxt);
-            if (xe) record_first_error(ctxt, (xmlErrorPtr)xe);
-        }
-        st = ori__fail_pos(error, ORI_ERR_PARSE, first.line > 0 ? first.line : 1, first.column > 0 ? first.column : 0,
-                           "XML: %s", first.set ? first.message : "not well-formed XML");
+        keep_first_error(&first, xmlCtxtGetLastError(ctxt)); // when no callback came
+        st = xml_error(&first, error);
         if (d) xmlFreeDoc(d);
         d = NULL;
     }
     xmlFreeParserCtxt(ctxt);
     *doc = d;
+    return st;
+}
+
+// One pass of the streaming reader over the document (the tree of a large drawing would take
+// gigabytes): with styles_only, collect the <style> rules; otherwise read the geometry, each
+// element seeing the state of its parent in frames[depth − 1].
+static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_only)
+{
+    xmlTextReaderPtr r = xmlReaderForMemory(text, (int)size, NULL, NULL, XML_OPTIONS);
+    if (!r) return ori__fail(c->error, ORI_ERR_NOMEM, "cannot create the XML reader");
+    xml_first_error first;
+    memset(&first, 0, sizeof first);
+    xmlTextReaderSetStructuredErrorHandler(r, reader_error, &first);
+    frame *frames = ori__alloc(sizeof(frame) * (MAX_DEPTH + 1));
+    int skip = -1; // depth of the element whose content is not read
+    ori_status st = ORI_OK;
+    int ret;
+    while (st == ORI_OK && (ret = xmlTextReaderRead(r)) == 1) {
+        int type = xmlTextReaderNodeType(r), depth = xmlTextReaderDepth(r);
+        if (type == XML_READER_TYPE_END_ELEMENT && depth == skip) skip = -1;
+        if (type != XML_READER_TYPE_ELEMENT || (skip >= 0 && depth > skip)) continue;
+        const xmlNode *n = xmlTextReaderCurrentNode(r);
+        bool empty = xmlTextReaderIsEmptyElement(r) == 1, enter = false;
+        if (!n) continue;
+        if (depth > MAX_DEPTH) {
+            st = fail(c, n, ORI_ERR_LIMIT, "elements nested deeper than %d levels", MAX_DEPTH);
+        } else if (depth == 0) {
+            if (!is_svg_element(n) || !name_is(n, "svg")) {
+                st = ori__fail_pos(c->error, ORI_ERR_PARSE, line_of(n) > 0 ? line_of(n) : 1, 0,
+                                   "the root element is <%s>, not <svg>", (const char *)n->name);
+            } else if (!styles_only) {
+                memset(&frames[0], 0, sizeof frames[0]);
+                frames[0].m = affine_identity();
+                frames[0].style.stroke_opacity = 1.0;
+                frames[0].style.opacity = 1.0;
+                bool display_none;
+                element_style(c, n, &frames[0].style, &display_none);
+                st = read_transform(c, n, &frames[0].m);
+                enter = !display_none;
+            } else {
+                enter = true;
+            }
+        } else if (styles_only) {
+            enter = true;
+            if (is_svg_element(n) && name_is(n, "style") && !empty) {
+                xmlChar *css = xmlTextReaderReadString(r);
+                if (css) add_style_rules(c, (const char *)css);
+                xmlFree(css);
+            }
+        } else {
+            st = element(c, n, &frames[depth - 1], &frames[depth], &enter);
+        }
+        if (!enter && !empty) skip = depth;
+    }
+    if (st == ORI_OK && ret < 0) st = xml_error(&first, c->error);
+    xmlFreeTextReader(r);
+    ori__free(frames);
     return st;
 }
 
@@ -720,32 +776,20 @@ ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **se
     *count = 0;
     ori__stats_clear(stats);
     ori_error_clear(error);
-    xmlDoc *doc;
-    ori_status st = ori__xml_parse(text, size, "SVG", &doc, error);
-    if (st != ORI_OK) return st;
-    const xmlNode *root = xmlDocGetRootElement(doc);
+    if (size > (size_t)INT32_MAX) return ori__fail(error, ORI_ERR_LIMIT, "the SVG file is too large");
     svg_ctx c;
     memset(&c, 0, sizeof c);
     c.error = error;
-    if (!root || !is_svg_element(root) || !name_is(root, "svg")) {
-        st = ori__fail_pos(error, ORI_ERR_PARSE, line_of(root) > 0 ? line_of(root) : 1, 0,
-                           "the root element is <%s>, not <svg>", root ? (const char *)root->name : "");
-    } else {
-        collect_styles(&c, root, 0);
-        svg_style style;
-        memset(&style, 0, sizeof style);
-        style.stroke_opacity = 1.0;
-        style.opacity = 1.0;
-        bool display_none;
-        element_style(&c, root, &style, &display_none);
-        affine m = affine_identity();
-        st = display_none ? ORI_OK : read_transform(&c, root, &m);
-        if (st == ORI_OK && !display_none) st = walk(&c, root, m, style, 0);
-    }
+    // <style> rules may come after the elements they style: a first pass collects them, only
+    // when the text has a <style> at all.
+    const char *needle = "<style";
+    bool has_style = false;
+    for (size_t i = 0; i + 6 <= size && !has_style; ++i) has_style = memcmp(text + i, needle, 6) == 0;
+    ori_status st = has_style ? stream(&c, text, size, true) : ORI_OK;
+    if (st == ORI_OK) st = stream(&c, text, size, false);
     for (int i = 0; i < c.text_count; ++i) ori__free(c.texts[i]);
     ori__free(c.texts);
     ori__free(c.rules);
-    xmlFreeDoc(doc);
     if (st != ORI_OK) {
         ori__free(c.segs.items);
         return st;
