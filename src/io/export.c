@@ -5,7 +5,6 @@
 
 #include "../pattern/pattern_internal.h"
 #include "import_internal.h"
-#include "io_internal.h"
 
 ori_svg_write_def ori_default_svg_write_def(void)
 {
@@ -15,31 +14,6 @@ ori_svg_write_def ori_default_svg_write_def(void)
     def.full_fold = false;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
-}
-
-typedef struct sbuf {
-    char *data;
-    size_t len, cap;
-} sbuf;
-
-static void put(sbuf *b, const char *s)
-{
-    size_t n = strlen(s);
-    if (b->len + n + 1 > b->cap) {
-        size_t cap = b->cap ? b->cap : 4096;
-        while (cap < b->len + n + 1) cap *= 2;
-        b->data = ori__realloc(b->data, cap);
-        b->cap = cap;
-    }
-    memcpy(b->data + b->len, s, n + 1);
-    b->len += n;
-}
-
-// Shortest decimal that reads back as exactly x (the FOLD writer's formatting).
-static const char *fmt(char *buf, size_t size, double x)
-{
-    ori__format_double(x, buf, size);
-    return buf;
 }
 
 static const char *stroke_of(ori_assignment a)
@@ -73,37 +47,42 @@ char *ori_svg_write(const ori_pattern *p, const ori_svg_write_def *def)
     double side = fmax(maxx - minx, maxy - miny);
     if (!(side > 0.0)) side = 1.0;
     double margin = def->margin_rel * side, width = def->stroke_width_rel * side;
-    char a[40], b[40], c[40], d[40], w[40];
-    char head[512];
-    snprintf(head, sizeof head,
-             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-             "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"%s %s %s %s\">\n",
-             fmt(a, sizeof a, minx - margin), fmt(b, sizeof b, miny - margin),
-             fmt(c, sizeof c, maxx - minx + 2 * margin), fmt(d, sizeof d, maxy - miny + 2 * margin));
-    sbuf s = {NULL, 0, 0};
-    put(&s, head);
-    snprintf(head, sizeof head, "<g fill=\"none\" stroke-width=\"%s\" stroke-linecap=\"round\">\n",
-             fmt(w, sizeof w, width));
-    put(&s, head);
+    ori__text t = {NULL, 0, 0};
+    ori__text_puts(&t, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"");
+    ori__text_real(&t, minx - margin);
+    ori__text_puts(&t, " ");
+    ori__text_real(&t, miny - margin);
+    ori__text_puts(&t, " ");
+    ori__text_real(&t, maxx - minx + 2 * margin);
+    ori__text_puts(&t, " ");
+    ori__text_real(&t, maxy - miny + 2 * margin);
+    ori__text_puts(&t, "\">\n<g fill=\"none\" stroke-width=\"");
+    ori__text_real(&t, width);
+    ori__text_puts(&t, "\" stroke-linecap=\"round\">\n");
+    static const char *const attr[4] = {"<line x1=\"", "\" y1=\"", "\" x2=\"", "\" y2=\""};
     for (int e = 0; e < p->edge_count; ++e) {
         const ori_edge *ed = &p->edges[e];
         const char *stroke = stroke_of(ed->assignment);
         if (!stroke) continue;
         ori_v3 u = p->vertices[ed->v[0]], v = p->vertices[ed->v[1]];
-        char line[320], op[64] = "";
+        double xy[4] = {u.x, -u.y, v.x, -v.y};
+        for (int k = 0; k < 4; ++k) {
+            ori__text_puts(&t, attr[k]);
+            ori__text_real(&t, xy[k]);
+        }
+        ori__text_printf(&t, "\" stroke=\"%s\"", stroke);
         if (ed->assignment == ORI_ASSIGN_MOUNTAIN || ed->assignment == ORI_ASSIGN_VALLEY) {
             double o = def->full_fold ? 1.0 : fmin(1.0, fabs(ed->fold_angle_rad) / ORI_PI);
             if (o != 1.0) {
-                char ob[40];
-                snprintf(op, sizeof op, " stroke-opacity=\"%s\"", fmt(ob, sizeof ob, o));
+                ori__text_puts(&t, " stroke-opacity=\"");
+                ori__text_real(&t, o);
+                ori__text_puts(&t, "\"");
             }
         }
-        snprintf(line, sizeof line, "<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\"%s/>\n",
-                 fmt(a, sizeof a, u.x), fmt(b, sizeof b, -u.y), fmt(c, sizeof c, v.x), fmt(d, sizeof d, -v.y), stroke, op);
-        put(&s, line);
+        ori__text_puts(&t, "/>\n");
     }
-    put(&s, "</g>\n</svg>\n");
-    return s.data;
+    ori__text_puts(&t, "</g>\n</svg>\n");
+    return t.data;
 }
 
 ori_status ori_export_file(const ori_pattern *p, ori_format format, const ori_svg_write_def *svg_def, const char *path,

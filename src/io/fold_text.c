@@ -7,48 +7,15 @@
 #include <stdio.h>
 
 #include "../pattern/pattern_internal.h"
+#include "import_internal.h"
 #include "io_internal.h"
 
-typedef struct tbuf {
-    char *data;
-    size_t len, cap;
-} tbuf;
-
-static void reserve(tbuf *b, size_t extra)
-{
-    if (b->len + extra + 1 <= b->cap) return;
-    size_t cap = b->cap ? b->cap : 4096;
-    while (cap < b->len + extra + 1) cap *= 2;
-    b->data = ori__realloc(b->data, cap);
-    b->cap = cap;
-}
-
-static void put(tbuf *b, const char *s, size_t n)
-{
-    reserve(b, n);
-    memcpy(b->data + b->len, s, n);
-    b->len += n;
-    b->data[b->len] = '\0';
-}
-
-static void puts_(tbuf *b, const char *s) { put(b, s, strlen(s)); }
-
-static void put_int(tbuf *b, int x)
-{
-    char num[16];
-    int n = snprintf(num, sizeof num, "%d", x);
-    put(b, num, (size_t)n);
-}
-
+static void puts_(ori__text *b, const char *s) { ori__text_puts(b, s); }
+static void put_int(ori__text *b, int x) { ori__text_printf(b, "%d", x); }
 // A real as jansson + json_write.c print it (−0 as 0, shortest exact digits).
-static void put_real(tbuf *b, double x)
-{
-    char num[40];
-    ori__format_double(x == 0.0 ? 0.0 : x, num, sizeof num);
-    puts_(b, num);
-}
+static void put_real(ori__text *b, double x) { ori__text_real(b, x); }
 
-static void put_string(tbuf *b, const char *s)
+static void put_string(ori__text *b, const char *s)
 {
     puts_(b, "\"");
     for (const unsigned char *c = (const unsigned char *)s; *c; ++c) {
@@ -66,14 +33,14 @@ static void put_string(tbuf *b, const char *s)
                 snprintf(esc, sizeof esc, "\\u%04x", *c);
                 puts_(b, esc);
             } else {
-                put(b, (const char *)c, 1);
+                ori__text_put(b, (const char *)c, 1);
             }
         }
     }
     puts_(b, "\"");
 }
 
-static void key(tbuf *b, const char *k, bool *first)
+static void key(ori__text *b, const char *k, bool *first)
 {
     puts_(b, *first ? "  " : ",\n  ");
     *first = false;
@@ -82,10 +49,10 @@ static void key(tbuf *b, const char *k, bool *first)
 }
 
 // Arrays of arrays: "[\n    item,\n    item\n  ]", or "[]" when empty.
-static void rows_open(tbuf *b, int n) { puts_(b, n ? "[\n    " : "[]"); }
-static void rows_next(tbuf *b, int row, int n) { puts_(b, row + 1 < n ? ",\n    " : "\n  ]"); }
+static void rows_open(ori__text *b, int n) { puts_(b, n ? "[\n    " : "[]"); }
+static void rows_next(ori__text *b, int row, int n) { puts_(b, row + 1 < n ? ",\n    " : "\n  ]"); }
 
-static void put_coords(tbuf *b, const ori_pattern *p, int v, bool three)
+static void put_coords(ori__text *b, const ori_pattern *p, int v, bool three)
 {
     puts_(b, "[");
     put_real(b, p->vertices[v].x);
@@ -98,7 +65,7 @@ static void put_coords(tbuf *b, const ori_pattern *p, int v, bool three)
     puts_(b, "]");
 }
 
-static void put_face(tbuf *b, const ori_pattern *p, int f)
+static void put_face(ori__text *b, const ori_pattern *p, int f)
 {
     puts_(b, "[");
     for (int k = p->face_offsets[f]; k < p->face_offsets[f + 1]; ++k) {
@@ -119,12 +86,12 @@ static bool any_face_name(const ori_pattern *p)
 char *ori_pattern_to_fold_text(const ori_pattern *p, const ori_fold_field *extra, int extra_count, size_t *size)
 {
     ORI_ASSERT(p && extra_count >= 0 && (extra || extra_count == 0));
-    tbuf b = {NULL, 0, 0};
+    ori__text b = {NULL, 0, 0};
     // Generous sizes (17-digit coordinates, 7-digit indices) so that one allocation is enough.
     size_t guess = 512 + 52 * (size_t)p->vertex_count + 36 * (size_t)p->edge_count +
                    8 * ((size_t)p->face_vertex_count + (size_t)p->face_count);
     for (int i = 0; i < extra_count; ++i) guess += strlen(extra[i].key) + strlen(extra[i].json) + 8;
-    reserve(&b, guess);
+    ori__text_reserve(&b, guess);
     bool first = true;
     puts_(&b, "{\n");
     key(&b, "file_spec", &first);

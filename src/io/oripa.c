@@ -9,9 +9,6 @@
 
 #include "../pattern/pattern_internal.h"
 #include "import_internal.h"
-#include "io_internal.h"
-
-ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error);
 
 // Type code → assignment; false for codes that are skipped (*skip) or invalid.
 static bool oripa_type(double type, ori_assignment *asg, bool *skip)
@@ -228,90 +225,63 @@ static int oripa_code(ori_assignment a, bool opx)
     }
 }
 
-typedef struct obuf {
-    char *data;
-    size_t len, cap;
-} obuf;
-
-static void out(obuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void out(obuf *b, const char *fmt, ...)
-{
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int n = vsnprintf(b->data ? b->data + b->len : NULL, b->data ? b->cap - b->len : 0, fmt, ap);
-        va_end(ap);
-        if (n >= 0 && b->data && (size_t)n < b->cap - b->len) {
-            b->len += (size_t)n;
-            return;
-        }
-        size_t cap = b->cap ? 2 * b->cap : 4096;
-        while (cap < b->len + (size_t)n + 1) cap *= 2;
-        b->data = ori__realloc(b->data, cap);
-        b->cap = cap;
-    }
-}
-
-// Shortest exact decimal of a coordinate (the caller negates y back to ORIPA's y-down frame).
-static void num(char *buf, size_t size, double x) { ori__format_double(x, buf, size); }
-
 char *ori_cp_write(const ori_pattern *p)
 {
     ORI_ASSERT(p);
-    obuf b = {NULL, 0, 0};
-    out(&b, "%s", "");
+    ori__text t = {NULL, 0, 0};
+    ori__text_reserve(&t, 0);
     for (int e = 0; e < p->edge_count; ++e) {
         int code = oripa_code(p->edges[e].assignment, false);
         if (code < 0) continue;
         ori_v3 u = p->vertices[p->edges[e].v[0]], w = p->vertices[p->edges[e].v[1]];
-        char x0[32], y0[32], x1[32], y1[32];
-        num(x0, sizeof x0, u.x);
-        num(y0, sizeof y0, -u.y);
-        num(x1, sizeof x1, w.x);
-        num(y1, sizeof y1, -w.y);
-        out(&b, "%d %s %s %s %s\n", code, x0, y0, x1, y1);
+        double v[4] = {u.x, -u.y, w.x, -w.y}; // back to ORIPA's y-down frame
+        ori__text_printf(&t, "%d", code);
+        for (int k = 0; k < 4; ++k) {
+            ori__text_puts(&t, " ");
+            ori__text_real(&t, v[k]);
+        }
+        ori__text_puts(&t, "\n");
     }
-    return b.data;
+    return t.data;
 }
 
 char *ori_opx_write(const ori_pattern *p)
 {
     ORI_ASSERT(p);
-    obuf b = {NULL, 0, 0};
+    ori__text t = {NULL, 0, 0};
     int n = 0;
     for (int e = 0; e < p->edge_count; ++e) n += oripa_code(p->edges[e].assignment, true) >= 0;
-    out(&b, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-            "<java version=\"1.5.0_02\" class=\"java.beans.XMLDecoder\">\n"
-            " <object class=\"oripa.DataSet\">\n"
-            "  <void property=\"lines\">\n"
-            "   <array class=\"oripa.OriLineProxy\" length=\"%d\">\n", n);
+    ori__text_printf(&t,
+                     "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                     "<java version=\"1.5.0_02\" class=\"java.beans.XMLDecoder\">\n"
+                     " <object class=\"oripa.DataSet\">\n"
+                     "  <void property=\"lines\">\n"
+                     "   <array class=\"oripa.OriLineProxy\" length=\"%d\">\n",
+                     n);
+    static const char *const names[4] = {"x0", "x1", "y0", "y1"};
     int k = 0;
     for (int e = 0; e < p->edge_count; ++e) {
         int code = oripa_code(p->edges[e].assignment, true);
         if (code < 0) continue;
         ori_v3 u = p->vertices[p->edges[e].v[0]], w = p->vertices[p->edges[e].v[1]];
-        char v[4][32];
-        num(v[0], sizeof v[0], u.x);
-        num(v[1], sizeof v[1], w.x);
-        num(v[2], sizeof v[2], -u.y);
-        num(v[3], sizeof v[3], -w.y);
-        out(&b,
-            "    <void index=\"%d\">\n"
-            "     <object class=\"oripa.OriLineProxy\">\n"
-            "      <void property=\"type\">\n       <int>%d</int>\n      </void>\n"
-            "      <void property=\"x0\">\n       <double>%s</double>\n      </void>\n"
-            "      <void property=\"x1\">\n       <double>%s</double>\n      </void>\n"
-            "      <void property=\"y0\">\n       <double>%s</double>\n      </void>\n"
-            "      <void property=\"y1\">\n       <double>%s</double>\n      </void>\n"
-            "     </object>\n"
-            "    </void>\n",
-            k++, code, v[0], v[1], v[2], v[3]);
+        double v[4] = {u.x, w.x, -u.y, -w.y};
+        ori__text_printf(&t,
+                         "    <void index=\"%d\">\n"
+                         "     <object class=\"oripa.OriLineProxy\">\n"
+                         "      <void property=\"type\">\n       <int>%d</int>\n      </void>\n",
+                         k++, code);
+        for (int i = 0; i < 4; ++i) {
+            ori__text_printf(&t, "      <void property=\"%s\">\n       <double>", names[i]);
+            ori__text_real(&t, v[i]);
+            ori__text_puts(&t, "</double>\n      </void>\n");
+        }
+        ori__text_puts(&t, "     </object>\n    </void>\n");
     }
-    out(&b, "   </array>\n"
-            "  </void>\n"
-            "  <void property=\"mainVersion\">\n   <int>1</int>\n  </void>\n"
-            "  <void property=\"subVersion\">\n   <int>1</int>\n  </void>\n"
-            " </object>\n"
-            "</java>\n");
-    return b.data;
+    ori__text_puts(&t, "   </array>\n"
+                       "  </void>\n"
+                       "  <void property=\"mainVersion\">\n   <int>1</int>\n  </void>\n"
+                       "  <void property=\"subVersion\">\n   <int>1</int>\n  </void>\n"
+                       " </object>\n"
+                       "</java>\n");
+    return t.data;
 }

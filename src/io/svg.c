@@ -526,19 +526,18 @@ static ori_status read_transform(svg_ctx *c, const xmlNode *n, affine *m)
         char fn[16];
         trim_copy(fn, sizeof fn, name, len < 15 ? len : 15);
         affine u = affine_identity();
-        const double rad = ORI_PI / 180.0;
         if (strcmp(fn, "matrix") == 0 && k == 6) u = (affine){arg[0], arg[1], arg[2], arg[3], arg[4], arg[5]};
         else if (strcmp(fn, "translate") == 0 && (k == 1 || k == 2)) u.e = arg[0], u.f = k == 2 ? arg[1] : 0.0;
         else if (strcmp(fn, "scale") == 0 && (k == 1 || k == 2)) u.a = arg[0], u.d = k == 2 ? arg[1] : arg[0];
         else if (strcmp(fn, "rotate") == 0 && (k == 1 || k == 3)) {
-            double cs = cos(arg[0] * rad), sn = sin(arg[0] * rad);
+            double cs = cos(ori_deg_to_rad(arg[0])), sn = sin(ori_deg_to_rad(arg[0]));
             u = (affine){cs, sn, -sn, cs, 0, 0};
             if (k == 3) { // rotate about (cx, cy): translate(c) rotate translate(−c)
                 affine to = {1, 0, 0, 1, arg[1], arg[2]}, back = {1, 0, 0, 1, -arg[1], -arg[2]};
                 u = affine_mul(to, affine_mul(u, back));
             }
-        } else if (strcmp(fn, "skewX") == 0 && k == 1) u.c = tan(arg[0] * rad);
-        else if (strcmp(fn, "skewY") == 0 && k == 1) u.b = tan(arg[0] * rad);
+        } else if (strcmp(fn, "skewX") == 0 && k == 1) u.c = tan(ori_deg_to_rad(arg[0]));
+        else if (strcmp(fn, "skewY") == 0 && k == 1) u.b = tan(ori_deg_to_rad(arg[0]));
         else {
             st = fail(c, n, ORI_ERR_PARSE, "transform: unknown or malformed '%s' (%s)", fn,
                       k == 0 ? "no arguments" : "wrong number of arguments");
@@ -684,10 +683,7 @@ static ori_status xml_error(const xml_first_error *first, ori_error *error)
 // No network, no entity substitution or DTD loading, errors captured instead of printed.
 #define XML_OPTIONS (XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES)
 
-// Parse XML text into a tree (small documents: ORIPA files); the first error with its line
-// and column. *doc is NULL on failure.
-ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error);
-
+// The tree parser for small documents (ORIPA files).
 ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error)
 {
     *doc = NULL;
