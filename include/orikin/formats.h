@@ -117,8 +117,8 @@ ORI_API ori_status ori_export_file(const ori_pattern *pattern, ori_format format
 /// An extra top-level field for ori_pattern_to_fold_text: its key and its value as JSON text,
 /// written verbatim (the caller guarantees valid JSON, e.g. from its own serialiser).
 typedef struct ori_fold_field {
-    const char *key;
-    const char *json;
+    const char *key;  ///< field name, e.g. "orikin:edges_class"
+    const char *json; ///< its value as JSON text (non-empty, valid JSON)
 } ori_fold_field;
 
 /// A pattern as the text of a new FOLD document, written directly (no JSON tree: time and

@@ -75,9 +75,9 @@ ORI_API ori_generate_def ori_default_generate_def(ori_tessellation kind);
 
 /// Vertex, edge and face counts of a generated pattern.
 typedef struct ori_pattern_counts {
-    int64_t vertices;
-    int64_t edges;
-    int64_t faces;
+    int64_t vertices; ///< vertices_coords entries
+    int64_t edges;    ///< edges_vertices entries
+    int64_t faces;    ///< faces_vertices entries
 } ori_pattern_counts;
 
 /// Check the parameters and give the counts the generator will produce (closed formulas,
