@@ -553,6 +553,15 @@ Test(formats, crossing_and_overlapping_segments_are_planarised)
     cr_assert_null(p);
     cr_assert(strstr(err.message, "(0.5, 1.5)"), "%s", err.message);
     cr_assert_eq(ori_segments_to_pattern(s, 0, NULL, &p, &err), ORI_ERR_NOT_FOUND);
+    // A separate sheet inside the (connected) hole is another piece of paper: allowed.
+    ori_segment t[sizeof s / sizeof s[0] + 4];
+    memcpy(t, s, sizeof s);
+    ori_segment piece[4] = {{{0.6, 1.6}, {0.9, 1.6}, ORI_ASSIGN_BOUNDARY, 0}, {{0.9, 1.6}, {0.9, 1.9}, ORI_ASSIGN_BOUNDARY, 0},
+                            {{0.9, 1.9}, {0.6, 1.9}, ORI_ASSIGN_BOUNDARY, 0}, {{0.6, 1.9}, {0.6, 1.6}, ORI_ASSIGN_BOUNDARY, 0}};
+    memcpy(t + n, piece, sizeof piece);
+    cr_assert_eq(ori_segments_to_pattern(t, n + 4, NULL, &p, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(ori_pattern_face_count(p), 5);
+    ori_pattern_destroy(p);
 }
 
 Test(formats, near_misses_within_the_weld_tolerance_join)

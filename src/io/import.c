@@ -334,8 +334,9 @@ ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori
             st = ori_pattern_build(p, &bdef, error);
         }
     }
-    if (st == ORI_OK) st = check_islands(p, error);
     if (st == ORI_OK && def->remove_holes && remove_holes(p) > 0) st = ori_pattern_build(p, &bdef, error);
+    // After the holes are gone: a separate piece inside a (connected) hole is fine.
+    if (st == ORI_OK) st = check_islands(p, error);
     if (st != ORI_OK) {
         ori_pattern_destroy(p);
         return st;
