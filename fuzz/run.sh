@@ -15,7 +15,7 @@ for t in "$BUILD"/fuzz/fuzz_*; do
     mkdir -p "$dir"
     # seeds: fuzz/seeds/<name>/* plus files with the target's extension from examples and tests
     [ -d "fuzz/seeds/$name" ] && cp fuzz/seeds/"$name"/* "$dir"/ 2>/dev/null || true
-    for f in examples/patterns/*."$name" tests/data/*."$name"; do
+    for f in examples/patterns/*."$name" tests/data/*."$name" tests/data/formats/*."$name"; do
         [ -e "$f" ] && cp "$f" "$dir"/
     done
     echo "fuzz: $name for ${SECONDS_EACH}s"

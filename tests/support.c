@@ -132,3 +132,53 @@ char *test_read_text(const char *path)
     fclose(f);
     return buf;
 }
+
+bool test_vertex_flat_foldable(const ori_pattern *p, int v, char *why, size_t why_size)
+{
+    enum { CAP = 64 };
+    int edges[CAP];
+    double sec[CAP];
+    int n = ori_pattern_vertex_sectors(p, v, edges, sec, CAP);
+    if (n > CAP || n < 2) {
+        snprintf(why, why_size, "vertex %d: degree %d not checkable", v, n);
+        return false;
+    }
+    double alt = 0.0;
+    int m = 0, val = 0;
+    for (int i = 0; i < n; ++i) {
+        alt += (i % 2 ? -1.0 : 1.0) * sec[i];
+        ori_assignment a = ori_pattern_edge(p, edges[i]).assignment;
+        if (a == ORI_ASSIGN_MOUNTAIN) m++;
+        else if (a == ORI_ASSIGN_VALLEY) val++;
+        else {
+            snprintf(why, why_size, "vertex %d: edge %d is %s", v, edges[i], ori_assignment_name(a));
+            return false;
+        }
+    }
+    if (n % 2 || fabs(alt) > ORI_TOL_KAWASAKI_RAD) {
+        snprintf(why, why_size, "vertex %d: Kawasaki fails (degree %d, alternating sum %.3g)", v, n, alt);
+        return false;
+    }
+    if (abs(m - val) != 2) {
+        snprintf(why, why_size, "vertex %d: Maekawa fails (%d M, %d V)", v, m, val);
+        return false;
+    }
+    // Runs of equal sectors that are strict local minima.
+    for (int i = 0; i < n; ++i) {
+        double a = sec[i];
+        if (fabs(sec[(i + n - 1) % n] - a) <= ORI_TOL_ANGLE_EQUAL_RAD) continue; // not a run start
+        int k = 1;
+        while (k < n && fabs(sec[(i + k) % n] - a) <= ORI_TOL_ANGLE_EQUAL_RAD) k++;
+        if (k == n) break; // all equal: Maekawa is all there is
+        if (!(sec[(i + n - 1) % n] > a && sec[(i + k) % n] > a)) continue;
+        int d = 0;
+        for (int j = 0; j <= k; ++j) // creases i … i+k bound sectors i … i+k−1
+            d += ori_pattern_edge(p, edges[(i + j) % n]).assignment == ORI_ASSIGN_MOUNTAIN ? 1 : -1;
+        if (abs(d) != (k + 1) % 2) {
+            snprintf(why, why_size, "vertex %d: big-little-big fails on %d equal sector(s) from edge %d", v, k,
+                     edges[i]);
+            return false;
+        }
+    }
+    return true;
+}

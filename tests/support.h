@@ -35,3 +35,10 @@ void test_tmpdir_remove(char *dir);
 char *test_read_text(const char *path);
 
 #endif
+
+// Local flat-foldability of an interior vertex of a built flat pattern, checked independently
+// of src/flat: Kawasaki (|alternating sector sum| ≤ ORI_TOL_KAWASAKI_RAD), Maekawa over the M/V
+// creases (|M − V| = 2, every crease M or V) and the generalised big-little-big rule (a run of
+// k equal sectors smaller than both neighbours has |M − V| = (k + 1) mod 2 over its k + 1
+// creases). Returns true when all hold; otherwise writes the first failure into why.
+bool test_vertex_flat_foldable(const ori_pattern *p, int vertex, char *why, size_t why_size);

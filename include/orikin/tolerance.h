@@ -52,4 +52,12 @@
 /// radian↔degree round-off (90.00000000000001) does not show in files. Degrees.
 #define ORI_TOL_PRINT_DEG 1e-10
 
+/// Import (SVG, .opx, .cp): end points, crossings and T-junctions closer than this × the
+/// drawing's bounding-box diagonal are the same point. Drawings are saved with 3–4 decimals and
+/// relative path commands accumulate the rounding: the Origami Simulator examples miss by up to
+/// 3e-5 of their size. 5e-5 welds that, and stays far below the feature size of a pattern a
+/// thousand cells across (a vertex is about 1e-3 of the diagonal from any edge not its own).
+/// Unitless (relative length); orikin convert --tolerance overrides it.
+#define ORI_TOL_IMPORT_WELD_REL 5e-5
+
 #endif

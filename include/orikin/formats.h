@@ -1,0 +1,139 @@
+/// orikin formats: crease patterns in other tools' formats. Import SVG (Origami Simulator colour
+/// convention), ORIPA .opx and .cp into a list of segments and planarise them into a pattern;
+/// export a pattern as SVG, .cp or .opx; write a pattern as a new FOLD document directly (no
+/// JSON tree, for big patterns). docs/formats.md has the conventions and limitations.
+///
+/// Functions: ori_format_from_path, ori_format_name, ori_default_import_def, ori_svg_read_segments,
+/// ori_opx_read_segments, ori_cp_read_segments, ori_read_segments, ori_segments_to_pattern,
+/// ori_import_file, ori_default_svg_write_def, ori_svg_write, ori_cp_write, ori_opx_write,
+/// ori_export_file, ori_pattern_to_fold_text, ori_pattern_save_fold.
+///
+/// Coordinates: SVG, .opx and .cp are drawn with y growing downwards; every importer maps
+/// (x, y) to (x, −y) (exact) so that the FOLD pattern (y up) looks as the drawing did and
+/// counter-clockwise stays counter-clockwise; every exporter maps back.
+#ifndef ORIKIN_FORMATS_H
+#define ORIKIN_FORMATS_H
+
+#include "arrangement.h"
+#include "base.h"
+#include "pattern.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Largest input file the importers accept (bytes); larger files fail with ORI_ERR_LIMIT.
+#define ORI_IMPORT_MAX_BYTES ((size_t)1 << 28)
+
+/// File formats known by extension.
+typedef enum ori_format {
+    ORI_FORMAT_UNKNOWN = 0, ///< none of the below
+    ORI_FORMAT_FOLD,        ///< ".fold": FOLD JSON
+    ORI_FORMAT_SVG,         ///< ".svg": Origami Simulator colour convention
+    ORI_FORMAT_OPX,         ///< ".opx": ORIPA XML
+    ORI_FORMAT_CP,          ///< ".cp": ORIPA text, "type x1 y1 x2 y2" per line
+} ori_format;
+
+/// The format of a path by its extension (case-insensitive); ORI_FORMAT_UNKNOWN otherwise.
+ORI_API ori_format ori_format_from_path(const char *path);
+/// Lower-case name of a format ("svg"); static string.
+ORI_API const char *ori_format_name(ori_format format);
+
+/// Import parameters; get them from ori_default_import_def().
+typedef struct ori_import_def {
+    double weld_rel;       ///< end points (and points on segments) closer than weld_rel × the drawing's diagonal are one point; > 0, default ORI_TOL_IMPORT_WELD_REL
+    bool merge_collinear;  ///< remove vertices joining just two collinear edges of the same assignment and angle (drawing artefacts); default true
+    bool remove_holes;     ///< drop faces bounded only by B/C edges that have paper on their other side (holes); default true
+    int internal_value;    ///< set by ori_default_import_def; do not change
+} ori_import_def;
+
+/// Defaults: weld ORI_TOL_IMPORT_WELD_REL, merge collinear, remove holes.
+ORI_API ori_import_def ori_default_import_def(void);
+
+/// What a reader found besides its segments (for warnings).
+typedef struct ori_import_stats {
+    int segments;            ///< segments returned
+    int ignored_elements;    ///< SVG elements with a stroke that is no crease colour; ORIPA aux/cut-model lines
+    char ignored_colour[32]; ///< SVG: the first such stroke, as written ("" when none)
+    int unsupported_elements;///< SVG elements skipped because orikin does not read them (use, image, text…)
+} ori_import_stats;
+
+/// Read an SVG document (text of size bytes) into segments: stroke colour → assignment, stroke
+/// opacity → fold angle (opacity 1 = ±π, mountain negative). Segments are in FOLD coordinates
+/// (y flipped). *segments is library-owned (ori_buffer_free); stats may be NULL. Fails with
+/// ORI_ERR_PARSE (XML syntax, bad path/points/number/transform: line of the element) or
+/// ORI_ERR_UNSUPPORTED (curves and arcs in a crease-coloured element, with its line).
+ORI_API ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
+                                         ori_import_stats *stats, ori_error *error);
+/// Read ORIPA .opx (XML) into segments (type 1 → B, 2 → M, 3 → V at ±π; aux and cut-model lines
+/// skipped; missing coordinates are 0). Same ownership and errors as ori_svg_read_segments.
+ORI_API ori_status ori_opx_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
+                                         ori_import_stats *stats, ori_error *error);
+/// Read ORIPA .cp text ("type x1 y1 x2 y2" per line; type 0 and 4 are auxiliary and skipped).
+/// Fails with ORI_ERR_PARSE naming the line for anything else.
+ORI_API ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
+                                        ori_import_stats *stats, ori_error *error);
+/// Read a file's segments with the reader of its format (SVG, OPX or CP).
+ORI_API ori_status ori_read_segments(const char *path, ori_format format, ori_segment **segments, int *count,
+                                     ori_import_stats *stats, ori_error *error);
+
+/// Planarise segments into a new flat pattern: overlapping and crossing segments are split and
+/// merged (ori_pattern_from_segments) with the weld tolerance of def (NULL = defaults), then
+/// collinear pass-through vertices are merged and holes removed as def says, and the pattern is
+/// built with faces. *out is NULL on failure; destroy with ori_pattern_destroy.
+ORI_API ori_status ori_segments_to_pattern(const ori_segment *segments, int count, const ori_import_def *def,
+                                           ori_pattern **out, ori_error *error);
+/// Read and planarise a file (format by extension unless format is given); def may be NULL.
+ORI_API ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def,
+                                   ori_pattern **out, ori_import_stats *stats, ori_error *error);
+
+/// SVG export parameters; get them from ori_default_svg_write_def().
+typedef struct ori_svg_write_def {
+    double stroke_width_rel; ///< stroke width as a fraction of the larger side of the drawing; default 1/300
+    double margin_rel;       ///< blank margin around the drawing, fraction of the larger side; default 0.05
+    bool full_fold;          ///< write every M and V at opacity 1 (fold flat) whatever its angle; default false
+    int internal_value;      ///< set by ori_default_svg_write_def; do not change
+} ori_svg_write_def;
+
+/// Defaults: stroke width 1/300 of the drawing, 5 % margin, opacity from the fold angles.
+ORI_API ori_svg_write_def ori_default_svg_write_def(void);
+
+/// The pattern (flat, x and y) as an SVG document that Origami Simulator opens: one <line> per
+/// edge in FOLD index order (J edges left out), coloured by assignment, stroke-opacity =
+/// |fold angle| / π for M and V (omitted when 1; 0 for an unfolded crease, which then does not
+/// show), y flipped back, a viewBox around the drawing. def may be NULL. Free with ori_buffer_free.
+ORI_API char *ori_svg_write(const ori_pattern *pattern, const ori_svg_write_def *def);
+/// The pattern as ORIPA .cp text: B → 1, M → 2, V → 3, C → 1, F and U → 4 (auxiliary); J edges
+/// are left out. y flipped back. Free with ori_buffer_free.
+ORI_API char *ori_cp_write(const ori_pattern *pattern);
+/// The pattern as ORIPA .opx XML with the same type mapping as ori_cp_write (F and U → 0, aux).
+/// Free with ori_buffer_free.
+ORI_API char *ori_opx_write(const ori_pattern *pattern);
+/// Write a flat pattern as SVG (with svg_def, may be NULL), CP or OPX to path atomically (format
+/// by extension unless given). Fails with ORI_ERR_UNSUPPORTED for a folded form.
+ORI_API ori_status ori_export_file(const ori_pattern *pattern, ori_format format, const ori_svg_write_def *svg_def,
+                                   const char *path, ori_error *error);
+
+/// An extra top-level field for ori_pattern_to_fold_text: its key and its value as JSON text,
+/// written verbatim (the caller guarantees valid JSON, e.g. from its own serialiser).
+typedef struct ori_fold_field {
+    const char *key;  ///< field name, e.g. "orikin:edges_class"
+    const char *json; ///< its value as JSON text (non-empty, valid JSON)
+} ori_fold_field;
+
+/// A pattern as the text of a new FOLD document, written directly (no JSON tree: time and
+/// memory linear in the output): file_spec, file_creator, file_classes, then the extra fields
+/// in order, then the pattern's fields. Byte for byte what ori_fold_create, ori_fold_set_custom
+/// of the extras and ori_fold_set_pattern followed by ori_fold_to_string give. Free with
+/// ori_buffer_free; *size (may be NULL) receives the length.
+ORI_API char *ori_pattern_to_fold_text(const ori_pattern *pattern, const ori_fold_field *extra, int extra_count,
+                                       size_t *size);
+/// ori_pattern_to_fold_text written to path atomically.
+ORI_API ori_status ori_pattern_save_fold(const ori_pattern *pattern, const ori_fold_field *extra, int extra_count,
+                                         const char *path, ori_error *error);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,287 @@
+// ORIPA crease patterns: .opx (XML written by java.beans.XMLEncoder: every
+// <object class="oripa.OriLineProxy"> holds <void property="type|x0|y0|x1|y1"> with an <int> or
+// <double>; absent properties keep the bean default 0) and .cp (one "type x1 y1 x2 y2" per line).
+// Types: 0 aux, 1 cut/boundary → B, 2 → M, 3 → V; 4 and 9 (cut-model line, by ORIPA version;
+// auxiliary in several .cp writers) are skipped. ORIPA draws y downwards: y is flipped.
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <stdio.h>
+
+#include "../pattern/pattern_internal.h"
+#include "import_internal.h"
+
+// Type code → assignment; false for codes that are skipped (*skip) or invalid.
+static bool oripa_type(double type, ori_assignment *asg, bool *skip)
+{
+    *skip = type == 0.0 || type == 4.0 || type == 9.0;
+    if (type == 1.0) *asg = ORI_ASSIGN_BOUNDARY;
+    else if (type == 2.0) *asg = ORI_ASSIGN_MOUNTAIN;
+    else if (type == 3.0) *asg = ORI_ASSIGN_VALLEY;
+    else return false;
+    return true;
+}
+
+static double flat_angle(ori_assignment a)
+{
+    return a == ORI_ASSIGN_MOUNTAIN ? -ORI_PI : a == ORI_ASSIGN_VALLEY ? ORI_PI : 0.0;
+}
+
+// --- .opx ------------------------------------------------------------------------------------
+
+static bool attr_is(const xmlNode *n, const char *name, const char *value)
+{
+    xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
+    bool eq = v && strcmp((const char *)v, value) == 0;
+    xmlFree(v);
+    return eq;
+}
+
+static const xmlNode *first_element(const xmlNode *n)
+{
+    for (const xmlNode *c = n ? n->children : NULL; c; c = c->next)
+        if (c->type == XML_ELEMENT_NODE) return c;
+    return NULL;
+}
+
+typedef struct opx_ctx {
+    ori__seg_list segs;
+    ori_import_stats stats;
+    ori_error *error;
+} opx_ctx;
+
+static ori_status opx_line(opx_ctx *c, const xmlNode *obj)
+{
+    static const char *const names[5] = {"type", "x0", "y0", "x1", "y1"};
+    double v[5] = {0, 0, 0, 0, 0};
+    for (const xmlNode *p = obj->children; p; p = p->next) {
+        if (p->type != XML_ELEMENT_NODE || strcmp((const char *)p->name, "void") != 0) continue;
+        xmlChar *prop = xmlGetProp(p, (const xmlChar *)"property");
+        int k = -1;
+        for (int i = 0; prop && i < 5; ++i)
+            if (strcmp((const char *)prop, names[i]) == 0) k = i;
+        xmlFree(prop);
+        if (k < 0) continue; // other bean properties (selected, …)
+        const xmlNode *val = first_element(p);
+        xmlChar *text = val ? xmlNodeGetContent(val) : NULL;
+        const char *s = text ? (const char *)text : "";
+        while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') ++s;
+        size_t n = ori__scan_number(s, &v[k]);
+        const char *rest = s + n;
+        while (*rest == ' ' || *rest == '\t' || *rest == '\n' || *rest == '\r') ++rest;
+        bool ok = n > 0 && *rest == '\0';
+        xmlFree(text);
+        if (!ok)
+            return ori__fail_pos(c->error, ORI_ERR_PARSE, (int)xmlGetLineNo(val ? val : p), 0,
+                                 "line property %s: expected %s", names[k], k == 0 ? "an integer type" : "a number");
+    }
+    ori_assignment asg;
+    bool skip;
+    if (!oripa_type(v[0], &asg, &skip)) {
+        if (skip) {
+            c->stats.ignored_elements++;
+            return ORI_OK;
+        }
+        return ori__fail_pos(c->error, ORI_ERR_PARSE, (int)xmlGetLineNo(obj), 0,
+                             "line type %g is not 0 (aux), 1 (cut), 2 (mountain), 3 (valley), 4 or 9", v[0]);
+    }
+    ori__seg_push(&c->segs, v[1], v[2], v[3], v[4], asg, flat_angle(asg));
+    return ORI_OK;
+}
+
+static ori_status opx_walk(opx_ctx *c, const xmlNode *parent, int depth)
+{
+    if (depth > 256) return ori__fail(c->error, ORI_ERR_LIMIT, "elements nested deeper than 256 levels");
+    for (const xmlNode *n = parent->children; n; n = n->next) {
+        if (n->type != XML_ELEMENT_NODE) continue;
+        ori_status st = (strcmp((const char *)n->name, "object") == 0 && attr_is(n, "class", "oripa.OriLineProxy"))
+                            ? opx_line(c, n)
+                            : opx_walk(c, n, depth + 1);
+        if (st != ORI_OK) return st;
+    }
+    return ORI_OK;
+}
+
+ori_status ori_opx_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
+                                 ori_import_stats *stats, ori_error *error)
+{
+    ORI_ASSERT(text && segments && count);
+    *segments = NULL;
+    *count = 0;
+    ori__stats_clear(stats);
+    ori_error_clear(error);
+    xmlDoc *doc;
+    ori_status st = ori__xml_parse(text, size, "OPX", &doc, error);
+    if (st != ORI_OK) return st;
+    const xmlNode *root = xmlDocGetRootElement(doc);
+    opx_ctx c;
+    memset(&c, 0, sizeof c);
+    c.error = error;
+    if (!root || strcmp((const char *)root->name, "java") != 0)
+        st = ori__fail_pos(error, ORI_ERR_PARSE, root ? (int)xmlGetLineNo(root) : 1, 0,
+                           "not an ORIPA file: the root element is <%s>, not <java>", root ? (const char *)root->name : "");
+    else
+        st = opx_walk(&c, root, 0);
+    xmlFreeDoc(doc);
+    if (st != ORI_OK) {
+        ori__free(c.segs.items);
+        return st;
+    }
+    c.stats.segments = c.segs.count;
+    if (stats) *stats = c.stats;
+    *segments = c.segs.items;
+    *count = c.segs.count;
+    return ORI_OK;
+}
+
+// --- .cp -------------------------------------------------------------------------------------
+
+ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
+                                ori_import_stats *stats, ori_error *error)
+{
+    ORI_ASSERT(text && segments && count);
+    *segments = NULL;
+    *count = 0;
+    ori__stats_clear(stats);
+    ori_error_clear(error);
+    ori__seg_list segs = {NULL, 0, 0};
+    ori_import_stats s;
+    memset(&s, 0, sizeof s);
+    const char *p = text, *end = text + size;
+    int line = 0;
+    while (p < end) {
+        line++;
+        const char *eol = memchr(p, '\n', (size_t)(end - p));
+        if (!eol) eol = end;
+        char buf[512];
+        size_t n = (size_t)(eol - p);
+        if (n >= sizeof buf) {
+            ori__free(segs.items);
+            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "line longer than %zu characters", sizeof buf - 1);
+        }
+        memcpy(buf, p, n);
+        buf[n] = '\0';
+        p = eol < end ? eol + 1 : end;
+        if (memchr(buf, '\0', n)) {
+            ori__free(segs.items);
+            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "NUL byte (not a text file)");
+        }
+        double v[5];
+        int k = 0;
+        const char *q = buf;
+        bool ok = true;
+        for (;;) {
+            while (*q == ' ' || *q == '\t' || *q == '\r') ++q;
+            if (!*q) break;
+            if (k == 5) {
+                ok = false;
+                break;
+            }
+            size_t m = ori__scan_number(q, &v[k]);
+            if (!m || (q[m] && q[m] != ' ' && q[m] != '\t' && q[m] != '\r')) {
+                ok = false;
+                break;
+            }
+            q += m;
+            k++;
+        }
+        if (ok && k == 0) continue; // blank line
+        if (!ok || k != 5) {
+            ori__free(segs.items);
+            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "expected \"type x1 y1 x2 y2\" (an integer and four numbers)");
+        }
+        ori_assignment asg;
+        bool skip;
+        if (!oripa_type(v[0], &asg, &skip)) {
+            if (skip) {
+                s.ignored_elements++;
+                continue;
+            }
+            ori__free(segs.items);
+            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0,
+                                 "line type %g is not 0 (aux), 1 (cut), 2 (mountain), 3 (valley) or 4 (aux)", v[0]);
+        }
+        ori__seg_push(&segs, v[1], v[2], v[3], v[4], asg, flat_angle(asg));
+    }
+    s.segments = segs.count;
+    if (stats) *stats = s;
+    *segments = segs.items;
+    *count = segs.count;
+    return ORI_OK;
+}
+
+// --- writers ---------------------------------------------------------------------------------
+
+// ORIPA type of an assignment; -1 for edges that are left out (J).
+static int oripa_code(ori_assignment a, bool opx)
+{
+    switch (a) {
+    case ORI_ASSIGN_BOUNDARY:
+    case ORI_ASSIGN_CUT: return 1;
+    case ORI_ASSIGN_MOUNTAIN: return 2;
+    case ORI_ASSIGN_VALLEY: return 3;
+    case ORI_ASSIGN_FLAT:
+    case ORI_ASSIGN_UNASSIGNED: return opx ? 0 : 4;
+    default: return -1;
+    }
+}
+
+char *ori_cp_write(const ori_pattern *p)
+{
+    ORI_ASSERT(p);
+    ori__text t = {NULL, 0, 0};
+    ori__text_reserve(&t, 0);
+    for (int e = 0; e < p->edge_count; ++e) {
+        int code = oripa_code(p->edges[e].assignment, false);
+        if (code < 0) continue;
+        ori_v3 u = p->vertices[p->edges[e].v[0]], w = p->vertices[p->edges[e].v[1]];
+        double v[4] = {u.x, -u.y, w.x, -w.y}; // back to ORIPA's y-down frame
+        ori__text_printf(&t, "%d", code);
+        for (int k = 0; k < 4; ++k) {
+            ori__text_puts(&t, " ");
+            ori__text_real(&t, v[k]);
+        }
+        ori__text_puts(&t, "\n");
+    }
+    return t.data;
+}
+
+char *ori_opx_write(const ori_pattern *p)
+{
+    ORI_ASSERT(p);
+    ori__text t = {NULL, 0, 0};
+    int n = 0;
+    for (int e = 0; e < p->edge_count; ++e) n += oripa_code(p->edges[e].assignment, true) >= 0;
+    ori__text_printf(&t,
+                     "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                     "<java version=\"1.5.0_02\" class=\"java.beans.XMLDecoder\">\n"
+                     " <object class=\"oripa.DataSet\">\n"
+                     "  <void property=\"lines\">\n"
+                     "   <array class=\"oripa.OriLineProxy\" length=\"%d\">\n",
+                     n);
+    static const char *const names[4] = {"x0", "x1", "y0", "y1"};
+    int k = 0;
+    for (int e = 0; e < p->edge_count; ++e) {
+        int code = oripa_code(p->edges[e].assignment, true);
+        if (code < 0) continue;
+        ori_v3 u = p->vertices[p->edges[e].v[0]], w = p->vertices[p->edges[e].v[1]];
+        double v[4] = {u.x, w.x, -u.y, -w.y};
+        ori__text_printf(&t,
+                         "    <void index=\"%d\">\n"
+                         "     <object class=\"oripa.OriLineProxy\">\n"
+                         "      <void property=\"type\">\n       <int>%d</int>\n      </void>\n",
+                         k++, code);
+        for (int i = 0; i < 4; ++i) {
+            ori__text_printf(&t, "      <void property=\"%s\">\n       <double>", names[i]);
+            ori__text_real(&t, v[i]);
+            ori__text_puts(&t, "</double>\n      </void>\n");
+        }
+        ori__text_puts(&t, "     </object>\n    </void>\n");
+    }
+    ori__text_puts(&t, "   </array>\n"
+                       "  </void>\n"
+                       "  <void property=\"mainVersion\">\n   <int>1</int>\n  </void>\n"
+                       "  <void property=\"subVersion\">\n   <int>1</int>\n  </void>\n"
+                       " </object>\n"
+                       "</java>\n");
+    return t.data;
+}

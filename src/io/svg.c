@@ -1,0 +1,798 @@
+// SVG crease patterns in the Origami Simulator convention, read with libxml2's streaming reader
+// (no network, no entity substitution, errors captured instead of printed; memory independent
+// of the document's size). Geometry: line,
+// polyline, polygon, rect and path (M L H V Z, absolute and relative, implicit repeats) under
+// nested groups whose transforms compose; style from presentation attributes, simple
+// <style> rules (tag, .class, tag.class) and style="" in CSS precedence; stroke colour gives the
+// assignment and opacity × stroke-opacity the fold angle.
+#include <libxml/parser.h>
+#include <libxml/tree.h>
+#include <libxml/xmlreader.h>
+#include <stdlib.h>
+
+#include "import_internal.h"
+
+#define SVG_NS "http://www.w3.org/2000/svg"
+#define MAX_DEPTH 256 // nesting beyond this is refused (stack safety)
+
+typedef struct affine {
+    double a, b, c, d, e, f; // x' = a x + c y + e, y' = b x + d y + f
+} affine;
+
+static affine affine_identity(void) { return (affine){1, 0, 0, 1, 0, 0}; }
+
+static affine affine_mul(affine m, affine n) // m ∘ n: first n, then m
+{
+    affine r;
+    r.a = m.a * n.a + m.c * n.b;
+    r.b = m.b * n.a + m.d * n.b;
+    r.c = m.a * n.c + m.c * n.d;
+    r.d = m.b * n.c + m.d * n.d;
+    r.e = m.a * n.e + m.c * n.f + m.e;
+    r.f = m.b * n.e + m.d * n.f + m.f;
+    return r;
+}
+
+// Inherited style state. stroke holds the raw value ("" = none set anywhere).
+typedef struct svg_style {
+    char stroke[64];
+    char color[64];
+    double stroke_opacity; // inherited
+    double opacity;        // product of the element's and its ancestors' opacity
+    bool hidden;           // visibility: hidden / collapse (inherited, children may override)
+} svg_style;
+
+// One <style> rule for a tag, a class or both; decls points into the rule text copy.
+typedef struct css_rule {
+    char tag[32];
+    char cls[64];
+    char *decls;
+} css_rule;
+
+typedef struct svg_ctx {
+    ori__seg_list segs;
+    ori_import_stats stats;
+    css_rule *rules;
+    int rule_count, rule_cap;
+    char **texts; // owned copies of <style> contents
+    int text_count, text_cap;
+    ori_error *error;
+} svg_ctx;
+
+// --- small string helpers -------------------------------------------------------------------
+
+static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
+
+static const char *skip_space(const char *s)
+{
+    while (is_space(*s)) ++s;
+    return s;
+}
+
+static const char *skip_sep(const char *s) // whitespace and at most one comma
+{
+    s = skip_space(s);
+    if (*s == ',') s = skip_space(s + 1);
+    return s;
+}
+
+static void trim_copy(char *dst, size_t size, const char *s, size_t n)
+{
+    while (n > 0 && is_space(*s)) ++s, --n;
+    while (n > 0 && is_space(s[n - 1])) --n;
+    if (n >= size) n = size - 1;
+    memcpy(dst, s, n);
+    dst[n] = '\0';
+}
+
+static char lower(char c) { return (c >= 'A' && c <= 'Z') ? (char)(c - 'A' + 'a') : c; }
+
+static bool ieq(const char *a, const char *b)
+{
+    for (; *a && *b; ++a, ++b)
+        if (lower(*a) != lower(*b)) return false;
+    return *a == *b;
+}
+
+static int line_of(const xmlNode *n) { return n ? (int)xmlGetLineNo(n) : 0; }
+
+// An error at element n: "line L: <name>: message".
+static ori_status fail(svg_ctx *c, const xmlNode *n, ori_status st, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+static ori_status fail(svg_ctx *c, const xmlNode *n, ori_status st, const char *fmt, ...)
+{
+    char msg[200];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    const char *name = n ? (const char *)n->name : "";
+    int line = line_of(n);
+    if (line > 0) return ori__fail_pos(c->error, st, line, 0, "<%s>: %s", name, msg);
+    return ori__fail(c->error, st, "<%s>: %s", name, msg);
+}
+
+// --- numbers, lengths, colours --------------------------------------------------------------
+
+// A length attribute: a number with an optional absolute unit (px by default), in user units
+// (96 px per inch). Percentages and font-relative units are refused.
+static bool parse_length(const char *s, double *out)
+{
+    s = skip_space(s);
+    double v;
+    size_t n = ori__scan_number(s, &v);
+    if (!n) return false;
+    s = skip_space(s + n);
+    double k = 1.0;
+    if (*s == '\0' || strncmp(s, "px", 2) == 0) k = 1.0, s += *s ? 2 : 0;
+    else if (strncmp(s, "mm", 2) == 0) k = 96.0 / 25.4, s += 2;
+    else if (strncmp(s, "cm", 2) == 0) k = 96.0 / 2.54, s += 2;
+    else if (strncmp(s, "in", 2) == 0) k = 96.0, s += 2;
+    else if (strncmp(s, "pt", 2) == 0) k = 96.0 / 72.0, s += 2;
+    else if (strncmp(s, "pc", 2) == 0) k = 16.0, s += 2;
+    else return false;
+    if (*skip_space(s) != '\0') return false;
+    *out = v * k;
+    return true;
+}
+
+// opacity values: a number or a percentage, clamped to [0, 1].
+static bool parse_opacity(const char *s, double *out)
+{
+    s = skip_space(s);
+    double v;
+    size_t n = ori__scan_number(s, &v);
+    if (!n) return false;
+    s = skip_space(s + n);
+    if (*s == '%') v /= 100.0, s = skip_space(s + 1);
+    if (*s != '\0') return false;
+    *out = v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
+    return true;
+}
+
+static int hexval(char c)
+{
+    if (c >= '0' && c <= '9') return c - '0';
+    c = lower(c);
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;
+}
+
+// Assignment of a stroke colour (Origami Simulator): black B, red M, blue V, lime/"green" C,
+// yellow F, magenta U. Returns false for any other colour; *none for no stroke at all.
+static bool colour_assignment(const char *raw, const char *current, ori_assignment *out, bool *none)
+{
+    char s[64];
+    trim_copy(s, sizeof s, raw, strlen(raw));
+    for (char *p = s; *p; ++p) *p = lower(*p);
+    *none = s[0] == '\0' || strcmp(s, "none") == 0 || strcmp(s, "transparent") == 0;
+    if (*none) return false;
+    if (strcmp(s, "currentcolor") == 0) {
+        if (!current || !current[0]) return false;
+        return colour_assignment(current, NULL, out, none);
+    }
+    static const struct {
+        const char *name;
+        unsigned rgb;
+    } named[] = {{"black", 0x000000}, {"red", 0xff0000},     {"blue", 0x0000ff},    {"lime", 0x00ff00},
+                 {"green", 0x00ff00}, {"yellow", 0xffff00},  {"magenta", 0xff00ff}, {"fuchsia", 0xff00ff}};
+    long rgb = -1;
+    size_t n = strlen(s);
+    if (s[0] == '#' && (n == 4 || n == 7)) {
+        unsigned v = 0;
+        bool ok = true;
+        for (size_t i = 1; i < n && ok; ++i) ok = hexval(s[i]) >= 0;
+        if (ok && n == 7)
+            for (size_t i = 1; i < 7; ++i) v = v * 16 + (unsigned)hexval(s[i]);
+        if (ok && n == 4)
+            for (size_t i = 1; i < 4; ++i) v = v * 256 + (unsigned)hexval(s[i]) * 17;
+        if (ok) rgb = (long)v;
+    } else if (strncmp(s, "rgb(", 4) == 0) {
+        const char *p = s + 4;
+        unsigned v = 0;
+        bool ok = true;
+        for (int k = 0; k < 3 && ok; ++k) {
+            double x;
+            p = skip_space(p);
+            size_t m = ori__scan_number(p, &x);
+            ok = m > 0;
+            p = skip_space(p + m);
+            if (ok && *p == '%') x = x * 255.0 / 100.0, p = skip_space(p + 1);
+            ok = ok && x >= 0.0 && x <= 255.0 && x == floor(x);
+            v = v * 256 + (unsigned)(ok ? x : 0);
+            if (k < 2) {
+                if (*p != ',') ok = false;
+                else p++;
+            }
+        }
+        if (ok && *skip_space(p) == ')') rgb = (long)v;
+    } else {
+        for (size_t i = 0; i < sizeof named / sizeof named[0]; ++i)
+            if (strcmp(s, named[i].name) == 0) rgb = (long)named[i].rgb;
+    }
+    switch (rgb) {
+    case 0x000000: *out = ORI_ASSIGN_BOUNDARY; return true;
+    case 0xff0000: *out = ORI_ASSIGN_MOUNTAIN; return true;
+    case 0x0000ff: *out = ORI_ASSIGN_VALLEY; return true;
+    case 0x00ff00: *out = ORI_ASSIGN_CUT; return true;
+    case 0xffff00: *out = ORI_ASSIGN_FLAT; return true;
+    case 0xff00ff: *out = ORI_ASSIGN_UNASSIGNED; return true;
+    default: return false;
+    }
+}
+
+// --- style ----------------------------------------------------------------------------------
+
+// One CSS property. opacity is not inherited: it sets the element's own opacity (*own),
+// which multiplies the inherited product once the cascade is done.
+static void apply_property(svg_style *st, double *own, bool *display_none, const char *name, const char *value)
+{
+    char v[64];
+    trim_copy(v, sizeof v, value, strlen(value));
+    char *bang = strstr(v, "!important");
+    if (bang) trim_copy(v, sizeof v, v, (size_t)(bang - v));
+    double x;
+    if (ieq(name, "stroke")) ori__strlcpy(st->stroke, v, sizeof st->stroke);
+    else if (ieq(name, "color")) ori__strlcpy(st->color, v, sizeof st->color);
+    else if (ieq(name, "stroke-opacity") && parse_opacity(v, &x)) st->stroke_opacity = x;
+    else if (ieq(name, "opacity") && parse_opacity(v, &x)) *own = x;
+    else if (ieq(name, "display")) *display_none = ieq(v, "none");
+    else if (ieq(name, "visibility")) st->hidden = ieq(v, "hidden") || ieq(v, "collapse");
+}
+
+// "a: b; c: d" declarations.
+static void apply_declarations(svg_style *st, double *own, bool *display_none, const char *decls)
+{
+    const char *p = decls;
+    while (*p) {
+        const char *end = strchr(p, ';');
+        size_t n = end ? (size_t)(end - p) : strlen(p);
+        const char *colon = memchr(p, ':', n);
+        if (colon) {
+            char name[48], value[96];
+            trim_copy(name, sizeof name, p, (size_t)(colon - p));
+            trim_copy(value, sizeof value, colon + 1, n - (size_t)(colon - p) - 1);
+            apply_property(st, own, display_none, name, value);
+        }
+        p += n;
+        if (*p == ';') ++p;
+    }
+}
+
+static bool has_class(const char *list, const char *cls)
+{
+    size_t n = strlen(cls);
+    for (const char *p = list; *p;) {
+        p = skip_space(p);
+        const char *e = p;
+        while (*e && !is_space(*e)) ++e;
+        if ((size_t)(e - p) == n && strncmp(p, cls, n) == 0) return true;
+        p = e;
+    }
+    return false;
+}
+
+// Presentation attributes, then matching <style> rules (tags before classes, file order), then
+// style="": the CSS cascade for the properties orikin reads. st holds the inherited state on
+// entry and the element's computed state on return (opacity multiplied in).
+static void element_style(svg_ctx *c, const xmlNode *n, svg_style *st, bool *display_none)
+{
+    static const char *const props[] = {"stroke", "color", "stroke-opacity", "opacity", "display", "visibility"};
+    *display_none = false;
+    double own = 1.0;
+    for (size_t i = 0; i < sizeof props / sizeof props[0]; ++i) {
+        xmlChar *v = xmlGetProp(n, (const xmlChar *)props[i]);
+        if (v) apply_property(st, &own, display_none, props[i], (const char *)v);
+        xmlFree(v);
+    }
+    xmlChar *cls = xmlGetProp(n, (const xmlChar *)"class");
+    for (int pass = 0; pass < 2; ++pass)
+        for (int r = 0; r < c->rule_count; ++r) {
+            const css_rule *rule = &c->rules[r];
+            bool has_cls = rule->cls[0] != '\0';
+            if (has_cls != (pass == 1)) continue;
+            if (rule->tag[0] && strcmp(rule->tag, (const char *)n->name) != 0) continue;
+            if (has_cls && (!cls || !has_class((const char *)cls, rule->cls))) continue;
+            apply_declarations(st, &own, display_none, rule->decls);
+        }
+    xmlFree(cls);
+    xmlChar *style = xmlGetProp(n, (const xmlChar *)"style");
+    if (style) apply_declarations(st, &own, display_none, (const char *)style);
+    xmlFree(style);
+    st->opacity *= own;
+}
+
+// Collect "selectors { declarations }" rules from a <style> text; selectors that are not a
+// plain tag, .class or tag.class (and @-rules) are skipped.
+static void add_style_rules(svg_ctx *c, const char *text)
+{
+    char *copy = ori__strdup(text);
+    ORI__PUSH(c->texts, c->text_count, c->text_cap, copy);
+    // strip comments
+    for (char *p = copy; (p = strstr(p, "/*")) != NULL;) {
+        char *e = strstr(p + 2, "*/");
+        char *stop = e ? e + 2 : p + strlen(p);
+        memset(p, ' ', (size_t)(stop - p));
+        p = stop;
+    }
+    char *p = copy;
+    while (*p) {
+        char *open = strchr(p, '{');
+        if (!open) break;
+        if (*skip_space(p) == '@') { // skip an @-rule block, nested braces included
+            int depth = 0;
+            char *q = open;
+            for (; *q; ++q) {
+                if (*q == '{') depth++;
+                else if (*q == '}' && --depth == 0) break;
+            }
+            p = *q ? q + 1 : q;
+            continue;
+        }
+        char *close = strchr(open, '}');
+        if (!close) break;
+        *open = '\0';
+        *close = '\0';
+        char *decls = open + 1;
+        for (char *sel = p; sel && *sel;) {
+            char *comma = strchr(sel, ',');
+            if (comma) *comma = '\0';
+            char one[96];
+            trim_copy(one, sizeof one, sel, strlen(sel));
+            css_rule rule;
+            memset(&rule, 0, sizeof rule);
+            rule.decls = decls;
+            char *dot = strchr(one, '.');
+            bool simple = one[0] != '\0' && strpbrk(one, " >+~#:[*") == NULL && (!dot || !strchr(dot + 1, '.'));
+            if (simple) {
+                if (dot) {
+                    *dot = '\0';
+                    ori__strlcpy(rule.cls, dot + 1, sizeof rule.cls);
+                }
+                ori__strlcpy(rule.tag, one, sizeof rule.tag);
+                if (rule.tag[0] || rule.cls[0]) ORI__PUSH(c->rules, c->rule_count, c->rule_cap, rule);
+            }
+            sel = comma ? comma + 1 : NULL;
+        }
+        p = close + 1;
+    }
+}
+
+// --- geometry -------------------------------------------------------------------------------
+
+static bool is_svg_element(const xmlNode *n)
+{
+    return n->type == XML_ELEMENT_NODE && (!n->ns || !n->ns->href || strcmp((const char *)n->ns->href, SVG_NS) == 0);
+}
+
+static bool name_is(const xmlNode *n, const char *name) { return strcmp((const char *)n->name, name) == 0; }
+
+typedef struct emit {
+    svg_ctx *c;
+    affine m;
+    ori_assignment asg;
+    double angle;
+} emit;
+
+static void emit_segment(emit *e, double x0, double y0, double x1, double y1)
+{
+    affine m = e->m;
+    ori__seg_push(&e->c->segs, m.a * x0 + m.c * y0 + m.e, m.b * x0 + m.d * y0 + m.f, m.a * x1 + m.c * y1 + m.e,
+                  m.b * x1 + m.d * y1 + m.f, e->asg, e->angle);
+}
+
+static ori_status length_attr(svg_ctx *c, const xmlNode *n, const char *name, double *out)
+{
+    *out = 0.0; // SVG: a missing coordinate is 0
+    xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
+    if (!v) return ORI_OK;
+    bool ok = parse_length((const char *)v, out);
+    ori_status st = ok ? ORI_OK : fail(c, n, ORI_ERR_PARSE, "attribute %s=\"%s\" is not a length", name, (const char *)v);
+    xmlFree(v);
+    return st;
+}
+
+// points="x,y x,y …" (polyline, polygon).
+static ori_status read_points(emit *e, const xmlNode *n, bool closed)
+{
+    xmlChar *v = xmlGetProp(n, (const xmlChar *)"points");
+    if (!v) return ORI_OK;
+    const char *p = skip_space((const char *)v);
+    double first[2] = {0, 0}, prev[2] = {0, 0};
+    int k = 0;
+    ori_status st = ORI_OK;
+    while (*p) {
+        double xy[2];
+        for (int i = 0; i < 2; ++i) {
+            size_t m = ori__scan_number(p, &xy[i]);
+            if (!m) {
+                st = fail(e->c, n, ORI_ERR_PARSE, "points: expected a number at \"%.20s\"", p);
+                break;
+            }
+            p = skip_sep(p + m);
+        }
+        if (st != ORI_OK) break;
+        if (k == 0) memcpy(first, xy, sizeof xy);
+        else emit_segment(e, prev[0], prev[1], xy[0], xy[1]);
+        memcpy(prev, xy, sizeof xy);
+        k++;
+    }
+    if (st == ORI_OK && closed && k > 2) emit_segment(e, prev[0], prev[1], first[0], first[1]);
+    xmlFree(v);
+    return st;
+}
+
+// Path data with straight commands only.
+static ori_status read_path(emit *e, const xmlNode *n)
+{
+    xmlChar *v = xmlGetProp(n, (const xmlChar *)"d");
+    if (!v) return ORI_OK;
+    const char *base = (const char *)v, *p = skip_space(base);
+    double cx = 0, cy = 0, sx = 0, sy = 0;
+    char cmd = 0;
+    ori_status st = ORI_OK;
+    while (*p && st == ORI_OK) {
+        if ((*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z')) {
+            cmd = *p++;
+            p = skip_space(p);
+            if (cmd == 'Z' || cmd == 'z') {
+                emit_segment(e, cx, cy, sx, sy);
+                cx = sx, cy = sy;
+                cmd = 0; // a number right after Z is an error
+                p = skip_sep(p);
+                continue;
+            }
+            if (!strchr("MmLlHhVv", cmd)) {
+                st = fail(e->c, n, ORI_ERR_UNSUPPORTED,
+                          "path command '%c' draws a curve or arc; crease lines must be straight (M L H V Z)", cmd);
+                break;
+            }
+        } else if (!cmd) {
+            st = fail(e->c, n, ORI_ERR_PARSE, "path data: expected a command at \"%.20s\"", p);
+            break;
+        }
+        int need = (cmd == 'H' || cmd == 'h' || cmd == 'V' || cmd == 'v') ? 1 : 2;
+        double a[2] = {0, 0};
+        for (int i = 0; i < need; ++i) {
+            size_t m = ori__scan_number(p, &a[i]);
+            if (!m) {
+                st = fail(e->c, n, ORI_ERR_PARSE, "path data: expected a number after '%c' at \"%.20s\"", cmd,
+                          *p ? p : "end of data");
+                break;
+            }
+            p = skip_sep(p + m);
+        }
+        if (st != ORI_OK) break;
+        bool rel = cmd >= 'a' && cmd <= 'z';
+        double nx = cx, ny = cy;
+        switch (cmd) {
+        case 'M': case 'm':
+            nx = rel ? cx + a[0] : a[0];
+            ny = rel ? cy + a[1] : a[1];
+            sx = nx, sy = ny;
+            cmd = rel ? 'l' : 'L'; // further pairs are implicit line-tos
+            break;
+        case 'L': case 'l':
+            nx = rel ? cx + a[0] : a[0];
+            ny = rel ? cy + a[1] : a[1];
+            emit_segment(e, cx, cy, nx, ny);
+            break;
+        case 'H': case 'h':
+            nx = rel ? cx + a[0] : a[0];
+            emit_segment(e, cx, cy, nx, ny);
+            break;
+        default: // V, v
+            ny = rel ? cy + a[0] : a[0];
+            emit_segment(e, cx, cy, nx, ny);
+            break;
+        }
+        cx = nx, cy = ny;
+    }
+    xmlFree(v);
+    return st;
+}
+
+// transform="matrix(…) translate(…) scale(…) rotate(…) skewX(…) skewY(…)", composed left to right.
+static ori_status read_transform(svg_ctx *c, const xmlNode *n, affine *m)
+{
+    xmlChar *v = xmlGetProp(n, (const xmlChar *)"transform");
+    if (!v) return ORI_OK;
+    const char *p = skip_space((const char *)v);
+    affine t = affine_identity();
+    ori_status st = ORI_OK;
+    while (*p && st == ORI_OK) {
+        const char *name = p;
+        while ((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z')) ++p;
+        size_t len = (size_t)(p - name);
+        p = skip_space(p);
+        double arg[6];
+        int k = 0;
+        if (*p != '(' || len == 0) {
+            st = fail(c, n, ORI_ERR_PARSE, "transform: expected name(…) at \"%.20s\"", name);
+            break;
+        }
+        p = skip_space(p + 1);
+        while (*p && *p != ')' && k < 6) {
+            size_t used = ori__scan_number(p, &arg[k]);
+            if (!used) break;
+            k++;
+            p = skip_sep(p + used);
+        }
+        if (*p != ')') {
+            st = fail(c, n, ORI_ERR_PARSE, "transform: bad arguments at \"%.20s\"", name);
+            break;
+        }
+        p = skip_sep(p + 1);
+        char fn[16];
+        trim_copy(fn, sizeof fn, name, len < 15 ? len : 15);
+        affine u = affine_identity();
+        if (strcmp(fn, "matrix") == 0 && k == 6) u = (affine){arg[0], arg[1], arg[2], arg[3], arg[4], arg[5]};
+        else if (strcmp(fn, "translate") == 0 && (k == 1 || k == 2)) u.e = arg[0], u.f = k == 2 ? arg[1] : 0.0;
+        else if (strcmp(fn, "scale") == 0 && (k == 1 || k == 2)) u.a = arg[0], u.d = k == 2 ? arg[1] : arg[0];
+        else if (strcmp(fn, "rotate") == 0 && (k == 1 || k == 3)) {
+            double cs = cos(ori_deg_to_rad(arg[0])), sn = sin(ori_deg_to_rad(arg[0]));
+            u = (affine){cs, sn, -sn, cs, 0, 0};
+            if (k == 3) { // rotate about (cx, cy): translate(c) rotate translate(−c)
+                affine to = {1, 0, 0, 1, arg[1], arg[2]}, back = {1, 0, 0, 1, -arg[1], -arg[2]};
+                u = affine_mul(to, affine_mul(u, back));
+            }
+        } else if (strcmp(fn, "skewX") == 0 && k == 1) u.c = tan(ori_deg_to_rad(arg[0]));
+        else if (strcmp(fn, "skewY") == 0 && k == 1) u.b = tan(ori_deg_to_rad(arg[0]));
+        else {
+            st = fail(c, n, ORI_ERR_PARSE, "transform: unknown or malformed '%s' (%s)", fn,
+                      k == 0 ? "no arguments" : "wrong number of arguments");
+            break;
+        }
+        t = affine_mul(t, u);
+    }
+    xmlFree(v);
+    if (st == ORI_OK) *m = affine_mul(*m, t);
+    return st;
+}
+
+// --- elements ------------------------------------------------------------------------------
+
+static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style *style)
+{
+    if (style->hidden) return ORI_OK;
+    ori_assignment asg;
+    bool none;
+    if (!colour_assignment(style->stroke, style->color, &asg, &none)) {
+        if (!none) {
+            if (c->stats.ignored_elements++ == 0) ori__strlcpy(c->stats.ignored_colour, style->stroke, sizeof c->stats.ignored_colour);
+        }
+        return ORI_OK;
+    }
+    if (name_is(n, "circle") || name_is(n, "ellipse"))
+        return fail(c, n, ORI_ERR_UNSUPPORTED, "a %s cannot be a crease: crease lines must be straight",
+                    (const char *)n->name);
+    double opacity = style->opacity * style->stroke_opacity;
+    double angle = 0.0;
+    if (asg == ORI_ASSIGN_MOUNTAIN) angle = -opacity * ORI_PI;
+    else if (asg == ORI_ASSIGN_VALLEY) angle = opacity * ORI_PI;
+    emit e = {c, m, asg, angle};
+    ori_status st = ORI_OK;
+    if (name_is(n, "line")) {
+        double x1, y1, x2, y2;
+        if ((st = length_attr(c, n, "x1", &x1)) || (st = length_attr(c, n, "y1", &y1)) ||
+            (st = length_attr(c, n, "x2", &x2)) || (st = length_attr(c, n, "y2", &y2)))
+            return st;
+        emit_segment(&e, x1, y1, x2, y2);
+    } else if (name_is(n, "rect")) {
+        double x, y, w, h, rx, ry;
+        if ((st = length_attr(c, n, "x", &x)) || (st = length_attr(c, n, "y", &y)) ||
+            (st = length_attr(c, n, "width", &w)) || (st = length_attr(c, n, "height", &h)) ||
+            (st = length_attr(c, n, "rx", &rx)) || (st = length_attr(c, n, "ry", &ry)))
+            return st;
+        if (w < 0.0 || h < 0.0) return fail(c, n, ORI_ERR_PARSE, "negative width or height");
+        if (rx > 0.0 || ry > 0.0)
+            return fail(c, n, ORI_ERR_UNSUPPORTED, "rounded corners (rx, ry) are arcs; crease lines must be straight");
+        if (w > 0.0 && h > 0.0) {
+            emit_segment(&e, x, y, x + w, y);
+            emit_segment(&e, x + w, y, x + w, y + h);
+            emit_segment(&e, x + w, y + h, x, y + h);
+            emit_segment(&e, x, y + h, x, y);
+        }
+    } else if (name_is(n, "polyline") || name_is(n, "polygon")) {
+        st = read_points(&e, n, name_is(n, "polygon"));
+    } else {
+        st = read_path(&e, n);
+    }
+    return st;
+}
+
+// The state an element passes to its children.
+typedef struct frame {
+    affine m;
+    svg_style style;
+} frame;
+
+// One element, given its parent's state. *enter says whether its children are to be read (a
+// group), in which case *child holds the state they inherit.
+static ori_status element(svg_ctx *c, const xmlNode *n, const frame *parent, frame *child, bool *enter)
+{
+    static const char *const skipped[] = {"defs", "symbol", "clipPath", "mask", "marker", "pattern",
+                                          "metadata", "title", "desc", "style", "script", "linearGradient",
+                                          "radialGradient", "filter"};
+    static const char *const unsupported[] = {"use", "image", "text", "foreignObject", "switch"};
+    static const char *const shapes[] = {"line", "rect", "polyline", "polygon", "path", "circle", "ellipse"};
+    *enter = false;
+    if (!is_svg_element(n)) return ORI_OK; // other namespaces (sodipodi:namedview, …)
+    for (size_t i = 0; i < sizeof skipped / sizeof skipped[0]; ++i)
+        if (name_is(n, skipped[i])) return ORI_OK;
+    for (size_t i = 0; i < sizeof unsupported / sizeof unsupported[0]; ++i)
+        if (name_is(n, unsupported[i])) {
+            c->stats.unsupported_elements++;
+            return ORI_OK;
+        }
+    bool group = name_is(n, "g") || name_is(n, "a") || name_is(n, "svg");
+    bool is_shape = false;
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; ++i) is_shape |= name_is(n, shapes[i]);
+    if (!group && !is_shape) return ORI_OK; // unknown elements are ignored with their content
+    frame f = *parent;
+    bool display_none;
+    element_style(c, n, &f.style, &display_none);
+    if (display_none) return ORI_OK;
+    ori_status st = read_transform(c, n, &f.m);
+    if (st != ORI_OK) return st;
+    if (is_shape) return shape(c, n, f.m, &f.style);
+    if (name_is(n, "svg")) { // nested viewport: its x, y offset (viewBox scaling is not applied)
+        double x, y;
+        if ((st = length_attr(c, n, "x", &x)) || (st = length_attr(c, n, "y", &y))) return st;
+        affine off = {1, 0, 0, 1, x, y};
+        f.m = affine_mul(f.m, off);
+    }
+    *child = f;
+    *enter = true;
+    return ORI_OK;
+}
+
+// --- entry ----------------------------------------------------------------------------------
+
+// The first XML error (libxml2 keeps only the last one, which is usually a consequence).
+typedef struct xml_first_error {
+    bool set;
+    int line, column;
+    char message[200];
+} xml_first_error;
+
+static void keep_first_error(xml_first_error *first, const xmlError *xe)
+{
+    if (!first || first->set || !xe || xe->level < XML_ERR_ERROR) return;
+    first->set = true;
+    first->line = xe->line;
+    first->column = xe->int2;
+    const char *m = xe->message ? xe->message : "not well-formed XML";
+    trim_copy(first->message, sizeof first->message, m, strlen(m));
+}
+
+static void reader_error(void *user, xmlErrorPtr xe) { keep_first_error(user, xe); }
+
+static void ctxt_error(void *user, xmlErrorPtr xe)
+{
+    xmlParserCtxt *ctxt = user;
+    keep_first_error(ctxt ? ctxt->_private : NULL, xe);
+}
+
+static ori_status xml_error(const xml_first_error *first, ori_error *error)
+{
+    return ori__fail_pos(error, ORI_ERR_PARSE, first->line > 0 ? first->line : 1, first->column > 0 ? first->column : 0,
+                         "XML: %s", first->set ? first->message : "not well-formed XML");
+}
+
+// No network, no entity substitution or DTD loading, errors captured instead of printed.
+#define XML_OPTIONS (XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES)
+
+// The tree parser for small documents (ORIPA files).
+ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error)
+{
+    *doc = NULL;
+    if (size > (size_t)INT32_MAX) return ori__fail(error, ORI_ERR_LIMIT, "the %s file is too large", what);
+    xmlParserCtxt *ctxt = xmlNewParserCtxt();
+    if (!ctxt) return ori__fail(error, ORI_ERR_NOMEM, "cannot create the XML parser");
+    xml_first_error first;
+    memset(&first, 0, sizeof first);
+    ctxt->_private = &first;
+    ctxt->sax->serror = ctxt_error;
+    xmlDoc *d = xmlCtxtReadMemory(ctxt, text, (int)size, NULL, NULL, XML_OPTIONS);
+    ori_status st = ORI_OK;
+    if (!d || !ctxt->wellFormed) {
+        keep_first_error(&first, xmlCtxtGetLastError(ctxt)); // when no callback came
+        st = xml_error(&first, error);
+        if (d) xmlFreeDoc(d);
+        d = NULL;
+    }
+    xmlFreeParserCtxt(ctxt);
+    *doc = d;
+    return st;
+}
+
+// One pass of the streaming reader over the document (the tree of a large drawing would take
+// gigabytes): with styles_only, collect the <style> rules; otherwise read the geometry, each
+// element seeing the state of its parent in frames[depth − 1].
+static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_only)
+{
+    xmlTextReaderPtr r = xmlReaderForMemory(text, (int)size, NULL, NULL, XML_OPTIONS);
+    if (!r) return ori__fail(c->error, ORI_ERR_NOMEM, "cannot create the XML reader");
+    xml_first_error first;
+    memset(&first, 0, sizeof first);
+    xmlTextReaderSetStructuredErrorHandler(r, reader_error, &first);
+    frame *frames = ori__alloc(sizeof(frame) * (MAX_DEPTH + 1));
+    int skip = -1; // depth of the element whose content is not read
+    ori_status st = ORI_OK;
+    int ret;
+    while (st == ORI_OK && (ret = xmlTextReaderRead(r)) == 1) {
+        int type = xmlTextReaderNodeType(r), depth = xmlTextReaderDepth(r);
+        if (type == XML_READER_TYPE_END_ELEMENT && depth == skip) skip = -1;
+        if (type != XML_READER_TYPE_ELEMENT || (skip >= 0 && depth > skip)) continue;
+        const xmlNode *n = xmlTextReaderCurrentNode(r);
+        bool empty = xmlTextReaderIsEmptyElement(r) == 1, enter = false;
+        if (!n) continue;
+        if (depth > MAX_DEPTH) {
+            st = fail(c, n, ORI_ERR_LIMIT, "elements nested deeper than %d levels", MAX_DEPTH);
+        } else if (depth == 0) {
+            if (!is_svg_element(n) || !name_is(n, "svg")) {
+                st = ori__fail_pos(c->error, ORI_ERR_PARSE, line_of(n) > 0 ? line_of(n) : 1, 0,
+                                   "the root element is <%s>, not <svg>", (const char *)n->name);
+            } else if (!styles_only) {
+                memset(&frames[0], 0, sizeof frames[0]);
+                frames[0].m = affine_identity();
+                frames[0].style.stroke_opacity = 1.0;
+                frames[0].style.opacity = 1.0;
+                bool display_none;
+                element_style(c, n, &frames[0].style, &display_none);
+                st = read_transform(c, n, &frames[0].m);
+                enter = !display_none;
+            } else {
+                enter = true;
+            }
+        } else if (styles_only) {
+            enter = true;
+            if (is_svg_element(n) && name_is(n, "style") && !empty) {
+                xmlChar *css = xmlTextReaderReadString(r);
+                if (css) add_style_rules(c, (const char *)css);
+                xmlFree(css);
+            }
+        } else {
+            st = element(c, n, &frames[depth - 1], &frames[depth], &enter);
+        }
+        if (!enter && !empty) skip = depth;
+    }
+    if (st == ORI_OK && ret < 0) st = xml_error(&first, c->error);
+    xmlFreeTextReader(r);
+    ori__free(frames);
+    return st;
+}
+
+ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
+                                 ori_import_stats *stats, ori_error *error)
+{
+    ORI_ASSERT(text && segments && count);
+    *segments = NULL;
+    *count = 0;
+    ori__stats_clear(stats);
+    ori_error_clear(error);
+    if (size > (size_t)INT32_MAX) return ori__fail(error, ORI_ERR_LIMIT, "the SVG file is too large");
+    svg_ctx c;
+    memset(&c, 0, sizeof c);
+    c.error = error;
+    // <style> rules may come after the elements they style: a first pass collects them, only
+    // when the text has a <style> at all.
+    const char *needle = "<style";
+    bool has_style = false;
+    for (size_t i = 0; i + 6 <= size && !has_style; ++i) has_style = memcmp(text + i, needle, 6) == 0;
+    ori_status st = has_style ? stream(&c, text, size, true) : ORI_OK;
+    if (st == ORI_OK) st = stream(&c, text, size, false);
+    for (int i = 0; i < c.text_count; ++i) ori__free(c.texts[i]);
+    ori__free(c.texts);
+    ori__free(c.rules);
+    if (st != ORI_OK) {
+        ori__free(c.segs.items);
+        return st;
+    }
+    c.stats.segments = c.segs.count;
+    if (stats) *stats = c.stats;
+    *segments = c.segs.items;
+    *count = c.segs.count;
+    return ORI_OK;
+}

@@ -1,0 +1,458 @@
+// Arrangement: segment insertion into a flat pattern (splits, snapping, overlaps, face splits
+// and names), bulk planarisation, and invariants after thousands of random creases.
+#include <orikin/arrangement.h>
+#include <stdlib.h>
+
+#include "pattern/pattern_internal.h"
+#include "support.h"
+
+TestSuite(arrangement, .init = test_leak_setup, .fini = test_leak_check);
+
+// A w × h sheet: vertices 0..3 counter-clockwise from (0,0), boundary edges 0..3, face Obj1.
+static ori_pattern *sheet(double w, double h)
+{
+    ori_pattern_def def = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&def);
+    ori_pattern_add_vertex(p, ori_v3_make(0, 0, 0));
+    ori_pattern_add_vertex(p, ori_v3_make(w, 0, 0));
+    ori_pattern_add_vertex(p, ori_v3_make(w, h, 0));
+    ori_pattern_add_vertex(p, ori_v3_make(0, h, 0));
+    for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, i, (i + 1) % 4, ORI_ASSIGN_BOUNDARY, 0.0);
+    int f[4] = {0, 1, 2, 3};
+    ori_pattern_add_face(p, f, 4);
+    ori_pattern_set_face_name(p, 0, "Obj1");
+    ori_pattern_add_tree_node(p, "Obj1", ORI_NULL_INDEX);
+    return p;
+}
+
+static void insert_ok(ori_pattern *p, double ax, double ay, double bx, double by, ori_assignment a,
+                      ori_insert_result *r)
+{
+    ori_error err;
+    char msg[300];
+    ori_status st = ori_pattern_insert_segment(p, ori_v2_make(ax, ay), ori_v2_make(bx, by), a, 0.0, NULL, r, &err);
+    cr_assert_eq(st, ORI_OK, "insert: %s", ori_error_format(&err, msg, sizeof msg));
+}
+
+static void build_ok(ori_pattern *p)
+{
+    ori_error err;
+    char msg[300];
+    ori_build_def def = ori_default_build_def();
+    ori_status st = ori_pattern_build(p, &def, &err);
+    cr_assert_eq(st, ORI_OK, "build: %s", ori_error_format(&err, msg, sizeof msg));
+}
+
+static double face_area(const ori_pattern *p, int f) { return 0.5 * ori__pattern_face_area2(p, f); }
+
+static bool segments_cross(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 d)
+{
+    int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
+    int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
+    return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+// The invariants of a valid authored sheet: planar build, Euler V − E + F = 1 (connected, F
+// inner faces), every face counter-clockwise and simple, areas summing to the sheet's.
+static void check_invariants(ori_pattern *p, double sheet_area)
+{
+    build_ok(p);
+    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p), F = ori_pattern_face_count(p);
+    cr_assert_eq(V - E + F, 1, "Euler: V %d E %d F %d", V, E, F);
+    double total = 0.0;
+    int buf[4096];
+    for (int f = 0; f < F; ++f) {
+        double a = face_area(p, f);
+        cr_assert_gt(a, 0.0, "face %d not counter-clockwise (area %g)", f, a);
+        total += a;
+        int n = ori_pattern_face_vertices(p, f, buf, 4096);
+        cr_assert_leq(n, 4096);
+        for (int i = 0; i < n; ++i)
+            for (int j = i + 1; j < n; ++j) {
+                cr_assert_neq(buf[i], buf[j], "face %d repeats vertex %d", f, buf[i]);
+                if (j == i + 1 || (i == 0 && j == n - 1)) continue;
+                ori_v2 a0 = ori__pattern_v2(p, buf[i]), a1 = ori__pattern_v2(p, buf[(i + 1) % n]);
+                ori_v2 b0 = ori__pattern_v2(p, buf[j]), b1 = ori__pattern_v2(p, buf[(j + 1) % n]);
+                cr_assert(!segments_cross(a0, a1, b0, b1), "face %d sides %d and %d cross", f, i, j);
+            }
+    }
+    cr_assert_float_eq(total, sheet_area, 1e-9 * sheet_area);
+}
+
+static double edge_length(const ori_pattern *p, int e)
+{
+    ori_edge ed = ori_pattern_edge(p, e);
+    return ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, ed.v[1]), ori__pattern_v2(p, ed.v[0])));
+}
+
+// Sum of the lengths of the edges lying along segment ab.
+static double covered_length(const ori_pattern *p, ori_v2 a, ori_v2 b)
+{
+    int n = ori_pattern_edges_on_segment(p, a, b, NULL, 0);
+    int *es = malloc(sizeof(int) * (size_t)(n + 1));
+    ori_pattern_edges_on_segment(p, a, b, es, n);
+    double s = 0.0;
+    for (int i = 0; i < n; ++i) s += edge_length(p, es[i]);
+    free(es);
+    return s;
+}
+
+Test(arrangement, diagonal_splits_face_and_names_parts)
+{
+    ori_pattern *p = sheet(2, 2);
+    ori_insert_result r;
+    insert_ok(p, 0, 0, 2, 2, ORI_ASSIGN_VALLEY, &r);
+    cr_assert_eq(r.vertices_added, 0);
+    cr_assert_eq(r.edges_added, 1);
+    cr_assert_eq(r.faces_split, 1);
+    cr_assert_eq(r.segment_edges, 1);
+    cr_assert_eq(ori_pattern_vertex_count(p), 4);
+    cr_assert_eq(ori_pattern_edge_count(p), 5);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    ori_edge e = ori_pattern_edge(p, 4);
+    cr_assert_eq(e.v[0], 0);
+    cr_assert_eq(e.v[1], 2);
+    cr_assert_eq(e.assignment, ORI_ASSIGN_VALLEY);
+    // Left of (0,0)→(2,2) is the upper-left triangle: Obj11 keeps face index 0.
+    cr_assert_str_eq(ori_pattern_face_name(p, 0), "Obj11");
+    cr_assert_str_eq(ori_pattern_face_name(p, 1), "Obj12");
+    int fv[8];
+    cr_assert_eq(ori_pattern_face_vertices(p, 0, fv, 8), 3);
+    bool has3 = fv[0] == 3 || fv[1] == 3 || fv[2] == 3;
+    cr_assert(has3, "Obj11 must contain the upper-left corner");
+    cr_assert_eq(ori_pattern_tree_node_count(p), 3);
+    cr_assert_eq(ori_pattern_tree_node(p, 1).parent, 0);
+    cr_assert_str_eq(ori_pattern_tree_node(p, 2).name, "Obj12");
+    check_invariants(p, 4.0);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, crossing_creases_split_edges_and_keep_indices)
+{
+    ori_pattern *p = sheet(2, 2);
+    ori_insert_result r;
+    insert_ok(p, 0, 1, 2, 1, ORI_ASSIGN_MOUNTAIN, &r); // T-junctions on edges 3 and 1
+    cr_assert_eq(r.vertices_added, 2);
+    cr_assert_eq(r.edges_split, 2);
+    cr_assert_eq(r.edges_added, 3);
+    // Split edges keep their index for the part at their first vertex.
+    cr_assert_eq(ori_pattern_edge(p, 1).v[0], 1);
+    cr_assert_float_eq(ori_pattern_vertex(p, ori_pattern_edge(p, 1).v[1]).y, 1.0, 1e-15);
+    insert_ok(p, 1, 0, 1, 2, ORI_ASSIGN_VALLEY, &r); // crosses the mountain at (1,1)
+    cr_assert_eq(r.vertices_added, 3);
+    cr_assert_eq(r.edges_split, 3);
+    cr_assert_eq(r.segment_edges, 2);
+    cr_assert_eq(r.faces_split, 2);
+    cr_assert_eq(ori_pattern_face_count(p), 4);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 2);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY), 2);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY), 8);
+    // The split mountain's lengths add up to the original.
+    cr_assert_float_eq(covered_length(p, ori_v2_make(0, 1), ori_v2_make(2, 1)), 2.0, 1e-15);
+    cr_assert_float_eq(covered_length(p, ori_v2_make(0, 0), ori_v2_make(2, 0)), 2.0, 1e-15);
+    check_invariants(p, 4.0);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, snapping_to_existing_vertex_creates_no_vertex)
+{
+    ori_pattern *p = sheet(1, 1);
+    ori_insert_result r;
+    insert_ok(p, 0, 0.5, 1, 0.5, ORI_ASSIGN_VALLEY, &r);
+    int v = ori_pattern_vertex_count(p);
+    // Through (0.5, 0.5)? no vertex there yet: a crossing vertex is created.
+    insert_ok(p, 0.5, 0, 0.5, 1, ORI_ASSIGN_VALLEY, &r);
+    cr_assert_eq(ori_pattern_vertex_count(p), v + 3);
+    v = ori_pattern_vertex_count(p);
+    // A diagonal passing 1e-12 from the centre vertex and ending 1e-12 off the corners.
+    insert_ok(p, 1e-12, -1e-12, 1 - 1e-12, 1 + 1e-12, ORI_ASSIGN_MOUNTAIN, &r);
+    cr_assert_eq(r.vertices_added, 0);
+    cr_assert_eq(ori_pattern_vertex_count(p), v);
+    cr_assert_eq(r.segment_edges, 2, "split at the centre vertex");
+    cr_assert_eq(r.faces_split, 2);
+    check_invariants(p, 1.0);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, collinear_overlap_keeps_boundary_and_reassigns_creases)
+{
+    ori_pattern *p = sheet(2, 2);
+    ori_insert_result r;
+    // Along the bottom boundary, beyond both corners' tolerance? No: exactly along it.
+    insert_ok(p, 0, 0, 2, 0, ORI_ASSIGN_VALLEY, &r);
+    cr_assert_eq(r.edges_added, 0);
+    cr_assert_eq(r.edges_overlapped, 1);
+    cr_assert_eq(ori_pattern_edge(p, 0).assignment, ORI_ASSIGN_BOUNDARY);
+    // A crease, then a longer collinear one over it: the crease takes the new assignment.
+    insert_ok(p, 0, 1, 2, 1, ORI_ASSIGN_VALLEY, &r);
+    int e_count = ori_pattern_edge_count(p);
+    insert_ok(p, 0.5, 1, 1.5, 1, ORI_ASSIGN_MOUNTAIN, &r); // inside the valley: splits it twice
+    cr_assert_eq(r.vertices_added, 2);
+    cr_assert_eq(r.edges_overlapped, 1);
+    cr_assert_eq(r.edges_added, 2);
+    cr_assert_eq(ori_pattern_edge_count(p), e_count + 2);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 1);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY), 2);
+    cr_assert_float_eq(covered_length(p, ori_v2_make(0, 1), ori_v2_make(2, 1)), 2.0, 1e-15);
+    check_invariants(p, 4.0);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, overlap_rules)
+{
+    ori_pattern *p = sheet(1, 1);
+    ori_insert_def def = ori_default_insert_def();
+    def.overlap = ORI_OVERLAP_REPLACE;
+    ori_error err;
+    cr_assert_eq(ori_pattern_insert_segment(p, ori_v2_make(1, 0), ori_v2_make(0, 0), ORI_ASSIGN_CUT, 0.0, &def, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_edge(p, 0).assignment, ORI_ASSIGN_CUT);
+    def.overlap = ORI_OVERLAP_KEEP_EXISTING;
+    cr_assert_eq(ori_pattern_insert_segment(p, ori_v2_make(0, 0), ori_v2_make(1, 0), ORI_ASSIGN_VALLEY, 0.0, &def, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_edge(p, 0).assignment, ORI_ASSIGN_CUT);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, degenerate_and_bad_input_leave_pattern_unchanged)
+{
+    ori_pattern *p = sheet(1, 1);
+    ori_error err;
+    ori_insert_result r;
+    ori_status st = ori_pattern_insert_segment(p, ori_v2_make(0, 0), ori_v2_make(1e-12, 0), ORI_ASSIGN_VALLEY, 0.0, NULL, &r, &err);
+    cr_assert_eq(st, ORI_ERR_DEGENERATE);
+    cr_assert(strstr(err.message, "shorter than the length tolerance") != NULL);
+    st = ori_pattern_insert_segment(p, ori_v2_make(NAN, 0), ori_v2_make(1, 0), ORI_ASSIGN_VALLEY, 0.0, NULL, &r, &err);
+    cr_assert_eq(st, ORI_ERR_RANGE);
+    cr_assert_eq(ori_pattern_vertex_count(p), 4);
+    cr_assert_eq(ori_pattern_edge_count(p), 4);
+    cr_assert_eq(ori_pattern_face_count(p), 1);
+    ori_pattern_set_folded_form(p, true);
+    st = ori_pattern_insert_segment(p, ori_v2_make(0, 0), ori_v2_make(1, 1), ORI_ASSIGN_VALLEY, 0.0, NULL, &r, &err);
+    cr_assert_eq(st, ORI_ERR_UNSUPPORTED);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, free_and_dangling_segments)
+{
+    ori_pattern *p = sheet(2, 2);
+    ori_insert_result r;
+    insert_ok(p, 0, 1, 1, 1, ORI_ASSIGN_VALLEY, &r); // from the boundary to the middle: a slit
+    cr_assert_eq(r.vertices_added, 2);
+    cr_assert_eq(r.faces_split, 0);
+    cr_assert_eq(ori_pattern_face_size(p, 0), 7); // 5 corners + the slit (u, w, u)
+    build_ok(p);
+    insert_ok(p, 1, 1, 2, 1, ORI_ASSIGN_VALLEY, &r); // completes the cut across the sheet
+    cr_assert_eq(r.faces_split, 1);
+    check_invariants(p, 4.0);
+    ori_pattern_destroy(p);
+}
+
+static double rnd(unsigned *s)
+{
+    *s = *s * 1664525u + 1013904223u;
+    return (double)(*s >> 8) / 16777216.0;
+}
+
+// A point on the boundary of the unit square chosen by t in [0, 4).
+static ori_v2 on_boundary(double t)
+{
+    if (t < 1) return ori_v2_make(t, 0);
+    if (t < 2) return ori_v2_make(1, t - 1);
+    if (t < 3) return ori_v2_make(3 - t, 1);
+    return ori_v2_make(0, 4 - t);
+}
+
+Test(arrangement, random_chords_keep_invariants)
+{
+    ori_pattern *p = sheet(1, 1);
+    unsigned s = 12345;
+    ori_v2 chords[120][2];
+    for (int i = 0; i < 120; ++i) {
+        ori_v2 a, b;
+        int kind = i % 4;
+        if (kind == 0) { // through existing vertices: pick two vertices
+            int n = ori_pattern_vertex_count(p);
+            a = ori__pattern_v2(p, (int)(rnd(&s) * n) % n);
+            b = ori__pattern_v2(p, (int)(rnd(&s) * n) % n);
+            if (a.x == b.x && a.y == b.y) b = on_boundary(4 * rnd(&s));
+            // extend the chord to the boundary? keep it between the two points
+        } else if (kind == 1) { // axis-parallel at lattice positions (many collinear overlaps)
+            double c = floor(rnd(&s) * 8) / 8;
+            if (rnd(&s) < 0.5) a = ori_v2_make(0, c), b = ori_v2_make(1, c);
+            else a = ori_v2_make(c, 0), b = ori_v2_make(c, 1);
+        } else {
+            a = on_boundary(4 * rnd(&s));
+            b = on_boundary(4 * rnd(&s));
+        }
+        chords[i][0] = a;
+        chords[i][1] = b;
+        ori_error err;
+        ori_status st = ori_pattern_insert_segment(p, a, b, rnd(&s) < 0.5 ? ORI_ASSIGN_MOUNTAIN : ORI_ASSIGN_VALLEY,
+                                                   0.0, NULL, NULL, &err);
+        cr_assert(st == ORI_OK || st == ORI_ERR_DEGENERATE);
+        if (i % 20 == 19) check_invariants(p, 1.0);
+    }
+    check_invariants(p, 1.0);
+    // Every chord is covered exactly by edges along it (its pieces sum to its length).
+    for (int i = 0; i < 120; ++i) {
+        double len = ori_v2_norm(ori_v2_sub(chords[i][1], chords[i][0]));
+        if (len == 0.0) continue;
+        cr_assert_float_eq(covered_length(p, chords[i][0], chords[i][1]), len, 1e-12, "chord %d", i);
+    }
+    // The boundary is still B along the whole perimeter.
+    double perim = 0.0;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e)
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_BOUNDARY) perim += edge_length(p, e);
+    cr_assert_float_eq(perim, 4.0, 1e-12);
+    ori_pattern_destroy(p);
+}
+
+// Distance along the ray x + t·d (t > 0) to the k-th edge it crosses (sorted), or the last one.
+static double ray_hit(const ori_pattern *p, ori_v2 x, ori_v2 d, int k)
+{
+    double hits[64];
+    int n = 0;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        ori_v2 u = ori__pattern_v2(p, ed.v[0]), w = ori__pattern_v2(p, ed.v[1]);
+        ori_v2 r = ori_v2_sub(w, u);
+        double den = ori_v2_cross(d, r);
+        if (den == 0.0) continue;
+        ori_v2 q = ori_v2_sub(u, x);
+        double t = ori_v2_cross(q, r) / den, s = ori_v2_cross(q, d) / den;
+        if (t <= 1e-9 || s < 0.0 || s > 1.0) continue;
+        // keep the 64 nearest
+        if (n < 64) hits[n++] = t;
+        else {
+            int far = 0;
+            for (int i = 1; i < 64; ++i) if (hits[i] > hits[far]) far = i;
+            if (t < hits[far]) hits[far] = t;
+        }
+    }
+    for (int i = 1; i < n; ++i)
+        for (int j = i; j > 0 && hits[j] < hits[j - 1]; --j) {
+            double t = hits[j];
+            hits[j] = hits[j - 1];
+            hits[j - 1] = t;
+        }
+    if (n == 0) return 0.0;
+    return hits[k < n ? k : n - 1];
+}
+
+Test(arrangement, thousands_of_random_creases)
+{
+    ori_pattern *p = sheet(1, 1);
+    unsigned s = 777;
+    for (int i = 0; i < 2000; ++i) {
+        ori_v2 a, d;
+        double ang = 2 * ORI_PI * rnd(&s);
+        int kind = i % 5;
+        if (kind == 4) { // lattice lines: collinear overlaps and exact crossings at vertices
+            double c = floor(rnd(&s) * 16) / 16;
+            a = rnd(&s) < 0.5 ? ori_v2_make(0, c) : ori_v2_make(c, 0);
+            d = a.x == 0 ? ori_v2_make(1, 0) : ori_v2_make(0, 1);
+        } else {
+            if (kind == 3) { // from an existing vertex, in a random direction
+                int n = ori_pattern_vertex_count(p);
+                a = ori__pattern_v2(p, (int)(rnd(&s) * n) % n);
+            } else {
+                a = ori_v2_make(0.02 + 0.96 * rnd(&s), 0.02 + 0.96 * rnd(&s));
+            }
+            d = ori_v2_make(cos(ang), sin(ang));
+        }
+        // Extend both ways to the 1st..3rd edge crossed: a crease ending on edges, crossing
+        // up to four others (or passing through vertices).
+        double t1 = ray_hit(p, a, d, (int)(rnd(&s) * 3));
+        double t0 = ray_hit(p, a, ori_v2_scale(d, -1), (int)(rnd(&s) * 3));
+        if (kind == 4) t0 = 0.0, t1 = 1.0;
+        ori_v2 x0 = ori_v2_sub(a, ori_v2_scale(d, t0)), x1 = ori_v2_add(a, ori_v2_scale(d, t1));
+        ori_error err;
+        char msg[300];
+        ori_status st = ori_pattern_insert_segment(p, x0, x1, (ori_assignment)(1 + i % 4), 0.0, NULL, NULL, &err);
+        cr_assert(st == ORI_OK || st == ORI_ERR_DEGENERATE, "segment %d: %s", i, ori_error_format(&err, msg, sizeof msg));
+        if (i % 500 == 499) check_invariants(p, 1.0);
+    }
+    check_invariants(p, 1.0);
+    cr_assert_gt(ori_pattern_face_count(p), 2000);
+    // Faces from the arrangement equal faces traced from the planar graph.
+    ori_pattern *q = ori_pattern_clone(p);
+    ori_pattern_clear_faces(q);
+    build_ok(q);
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, bulk_planarises_crossing_and_overlapping_segments)
+{
+    enum { N = 3000 };
+    ori_segment *segs = malloc(sizeof *segs * N);
+    unsigned s = 99;
+    for (int i = 0; i < N; ++i) {
+        if (i % 3 == 0) { // lattice segments: duplicates and collinear overlaps
+            double x = floor(rnd(&s) * 20), y = floor(rnd(&s) * 20), l = 1 + floor(rnd(&s) * 4);
+            segs[i].a = ori_v2_make(x, y);
+            segs[i].b = rnd(&s) < 0.5 ? ori_v2_make(x + l, y) : ori_v2_make(x, y + l);
+        } else {
+            segs[i].a = ori_v2_make(20 * rnd(&s), 20 * rnd(&s));
+            double ang = 2 * ORI_PI * rnd(&s), l = 0.3 + 2 * rnd(&s);
+            segs[i].b = ori_v2_make(segs[i].a.x + l * cos(ang), segs[i].a.y + l * sin(ang));
+        }
+        segs[i].assignment = (ori_assignment)(1 + i % 2);
+        segs[i].fold_angle_rad = 0.0;
+    }
+    ori_pattern *p = NULL;
+    ori_insert_result r;
+    ori_error err;
+    char msg[300];
+    ori_status st = ori_pattern_from_segments(segs, N, NULL, &p, &r, &err);
+    cr_assert_eq(st, ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    cr_assert_gt(r.edges_split, 1000);
+    cr_assert_gt(r.edges_overlapped, 10);
+    cr_assert_gt(ori_pattern_face_count(p), 100);
+    for (int i = 0; i < N; i += 7) {
+        double len = ori_v2_norm(ori_v2_sub(segs[i].b, segs[i].a));
+        cr_assert_float_eq(covered_length(p, segs[i].a, segs[i].b), len, 1e-9, "segment %d", i);
+    }
+    ori_pattern_destroy(p);
+    free(segs);
+}
+
+Test(arrangement, bulk_rejects_non_finite_with_index)
+{
+    ori_segment segs[2] = {{{0, 0}, {1, 1}, ORI_ASSIGN_VALLEY, 0.0}, {{0, 1}, {INFINITY, 0}, ORI_ASSIGN_VALLEY, 0.0}};
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_pattern_from_segments(segs, 2, NULL, &p, NULL, &err), ORI_ERR_RANGE);
+    cr_assert_null(p);
+    cr_assert_eq(err.element, 1);
+    cr_assert_str_eq(err.field, "segments");
+}
+
+Test(arrangement, bulk_skips_degenerate_segments)
+{
+    ori_segment segs[3] = {{{0, 0}, {1, 0}, ORI_ASSIGN_BOUNDARY, 0.0},
+                           {{0.5, 0.5}, {0.5, 0.5}, ORI_ASSIGN_VALLEY, 0.0},
+                           {{0, 0}, {0, 1}, ORI_ASSIGN_BOUNDARY, 0.0}};
+    ori_pattern *p = NULL;
+    ori_insert_result r;
+    ori_error err;
+    cr_assert_eq(ori_pattern_from_segments(segs, 3, NULL, &p, &r, &err), ORI_OK);
+    cr_assert_eq(r.segments_skipped, 1);
+    cr_assert_eq(ori_pattern_edge_count(p), 2);
+    cr_assert_eq(ori_pattern_vertex_count(p), 3);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, find_edge_at_point)
+{
+    ori_pattern *p = sheet(2, 2);
+    insert_ok(p, 0, 1, 2, 1, ORI_ASSIGN_MOUNTAIN, NULL);
+    insert_ok(p, 1, 0, 1, 2, ORI_ASSIGN_VALLEY, NULL);
+    int e = ori_pattern_find_edge_at(p, ori_v2_make(0.5, 1));
+    cr_assert_neq(e, ORI_NULL_INDEX);
+    ori_edge ed = ori_pattern_edge(p, e);
+    cr_assert_eq(ed.assignment, ORI_ASSIGN_MOUNTAIN);
+    cr_assert_float_eq(fmin(ori_pattern_vertex(p, ed.v[0]).x, ori_pattern_vertex(p, ed.v[1]).x), 0.0, 0.0);
+    cr_assert_eq(ori_pattern_find_edge_at(p, ori_v2_make(0.5, 0.7)), ORI_NULL_INDEX);
+    ori_pattern_destroy(p);
+}

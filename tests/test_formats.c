@@ -1,0 +1,672 @@
+// Import and export of other tools' formats: SVG (Origami Simulator convention), ORIPA .opx and
+// .cp; the direct FOLD text writer. Every shared SVG/OPX/CP pattern imports into a valid FOLD
+// whose per-assignment edge lengths equal the drawing's; flat-foldable ones pass Kawasaki and
+// Maekawa; exports round-trip; malformed input fails with the line and writes nothing.
+#include <orikin/formats.h>
+#include <orikin/generate.h>
+#include <stdio.h>
+#include <sys/stat.h>
+
+#include "pattern/pattern_internal.h"
+#include "support.h"
+
+TestSuite(formats, .init = test_leak_setup, .fini = test_leak_check);
+
+static char msg[512];
+
+static ori_pattern *import_ok(const char *path, ori_import_stats *stats)
+{
+    ori_pattern *p = NULL;
+    ori_error err;
+    ori_status st = ori_import_file(path, ORI_FORMAT_UNKNOWN, NULL, &p, stats, &err);
+    cr_assert_eq(st, ORI_OK, "%s: %s", path, ori_error_format(&err, msg, sizeof msg));
+    return p;
+}
+
+static double edge_length(const ori_pattern *p, int e)
+{
+    ori_edge ed = ori_pattern_edge(p, e);
+    ori_v3 u = ori_pattern_vertex(p, ed.v[0]), w = ori_pattern_vertex(p, ed.v[1]);
+    return hypot(w.x - u.x, w.y - u.y);
+}
+
+// Write as FOLD text, read it back with full validation (planarity, faces), compare.
+static void reload_check(const ori_pattern *p, const char *what)
+{
+    size_t n;
+    char *text = ori_pattern_to_fold_text(p, NULL, 0, &n);
+    cr_assert_eq(strlen(text), n);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(text, n, &doc, &err), ORI_OK, "%s", what);
+    ori_pattern *q = NULL;
+    ori_status st = ori_fold_get_pattern(doc, 0, NULL, &q, &err);
+    cr_assert_eq(st, ORI_OK, "%s: %s", what, ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(ori_pattern_vertex_count(q), ori_pattern_vertex_count(p));
+    cr_assert_eq(ori_pattern_edge_count(q), ori_pattern_edge_count(p));
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge a = ori_pattern_edge(p, e), b = ori_pattern_edge(q, e);
+        cr_assert_eq(a.assignment, b.assignment);
+        cr_assert_float_eq(a.fold_angle_rad, b.fold_angle_rad, 1e-14);
+    }
+    ori_pattern_destroy(q);
+    ori_fold_destroy(doc);
+    ori_buffer_free(text);
+}
+
+// Kawasaki within tol (radians) and, when asked, Maekawa at every interior vertex; returns the
+// number of interior vertices.
+static int check_flat(const ori_pattern *p, double tol, bool maekawa, const char *what)
+{
+    int interior = 0;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        if (!ori_pattern_vertex_is_interior(p, v)) continue;
+        interior++;
+        int ed[64];
+        double sec[64];
+        int n = ori_pattern_vertex_sectors(p, v, ed, sec, 64);
+        cr_assert_eq(n % 2, 0, "%s: vertex %d has odd degree %d", what, v, n);
+        double alt = 0.0;
+        int m = 0, val = 0;
+        for (int i = 0; i < n; ++i) {
+            alt += (i % 2 ? -1.0 : 1.0) * sec[i];
+            ori_assignment a = ori_pattern_edge(p, ed[i]).assignment;
+            m += a == ORI_ASSIGN_MOUNTAIN;
+            val += a == ORI_ASSIGN_VALLEY;
+        }
+        cr_assert_leq(fabs(alt), tol, "%s: Kawasaki at vertex %d: %.3g rad", what, v, alt);
+        if (maekawa) cr_assert_eq(abs(m - val), 2, "%s: Maekawa at vertex %d: %d M, %d V", what, v, m, val);
+    }
+    return interior;
+}
+
+// --- every shared drawing --------------------------------------------------------------------
+
+typedef struct shared_case {
+    const char *rel;
+    double kawasaki_tol; // < 0: not flat-foldable as drawn (not checked)
+    bool maekawa;        // the assignment as drawn is a flat fold's
+} shared_case;
+
+// SVG tessellations are drawn with 3-decimal coordinates: their angles are only that precise,
+// 3e-4 rad covers them (observed ≤ 2.6e-4). The bases and ORIPA files are exact. Origami
+// Simulator's bird and waterbomb bases draw the degree-8 centre half-folded (4 M, 4 V at 90°):
+// Kawasaki holds there, Maekawa (a flat fold's count) does not.
+static const shared_case shared_cases[] = {
+    {"origamisimulator/Bases_birdBase.svg", ORI_TOL_KAWASAKI_RAD, false},
+    {"origamisimulator/Bases_boatBase.svg", 3e-4, true},
+    {"origamisimulator/Bases_frogBase.svg", -1, false},
+    {"origamisimulator/Bases_pinwheelBase.svg", 3e-4, true},
+    {"origamisimulator/Bases_squareBase.svg", ORI_TOL_KAWASAKI_RAD, true},
+    {"origamisimulator/Bases_waterbombBase.svg", ORI_TOL_KAWASAKI_RAD, false},
+    {"origamisimulator/Curved_huffmanTower.svg", -1, false},
+    {"origamisimulator/Origami_flappingBird.svg", -1, false},
+    {"origamisimulator/Origami_hypar.svg", -1, false},
+    {"origamisimulator/Origami_singlesquaretwist.svg", 3e-4, true},
+    {"origamisimulator/Origami_squaretwistManyAngles.svg", 3e-4, true},
+    {"origamisimulator/Origami_traditionalCrane.svg", -1, false},
+    {"origamisimulator/SimpleFolds_brochurefold.svg", ORI_TOL_KAWASAKI_RAD, true},
+    {"origamisimulator/SimpleFolds_mapfold.svg", ORI_TOL_KAWASAKI_RAD, true},
+    {"origamisimulator/SimpleFolds_russianTriangle.svg", ORI_TOL_KAWASAKI_RAD, true},
+    {"origamisimulator/SimpleFolds_simpleVertex.svg", ORI_TOL_KAWASAKI_RAD, true},
+    {"origamisimulator/Tessellations_huffmanExtrudedBoxes.svg", -1, false},
+    {"origamisimulator/Tessellations_huffmanWaterbomb.svg", -1, false},
+    {"origamisimulator/Tessellations_langOvalTessellation.svg", -1, false},
+    {"origamisimulator/Tessellations_miura-ori.svg", 3e-4, true},
+    {"origamisimulator/Tessellations_miura_sharpangle.svg", 3e-4, true},
+    {"origamisimulator/Tessellations_reschTriTessellation.svg", -1, false},
+    {"origamisimulator/Tessellations_waterbomb.svg", 3e-4, true},
+    {"oripa/crane_base_mitani.opx", ORI_TOL_KAWASAKI_RAD, true},
+    {"oripa/waterbomb_base_collapse.opx", -1, false},
+    {"rabbit-ear/opx_bird-base.opx", ORI_TOL_KAWASAKI_RAD, true},
+    {"rabbit-ear/opx_one-crease.opx", ORI_TOL_KAWASAKI_RAD, true},
+    {"rabbit-ear/cp_bird-base.cp", ORI_TOL_KAWASAKI_RAD, true},
+    {"rabbit-ear/cp_square-fish.cp", ORI_TOL_KAWASAKI_RAD, true},
+    {"rabbit-ear/cp_windmill.cp", ORI_TOL_KAWASAKI_RAD, true},
+};
+
+Test(formats, every_shared_drawing_imports_with_matching_lengths)
+{
+    test_require_shared("origamisimulator/Bases_birdBase.svg");
+    for (size_t i = 0; i < sizeof shared_cases / sizeof shared_cases[0]; ++i) {
+        const char *path = test_require_shared(shared_cases[i].rel);
+        ori_segment *segs;
+        int n;
+        ori_error err;
+        cr_assert_eq(ori_read_segments(path, ORI_FORMAT_UNKNOWN, &segs, &n, NULL, &err), ORI_OK, "%s: %s",
+                     shared_cases[i].rel, ori_error_format(&err, msg, sizeof msg));
+        double src[ORI_ASSIGN_COUNT] = {0}, dst[ORI_ASSIGN_COUNT] = {0};
+        for (int k = 0; k < n; ++k) src[segs[k].assignment] += ori_v2_norm(ori_v2_sub(segs[k].b, segs[k].a));
+        ori_pattern *p = NULL;
+        cr_assert_eq(ori_segments_to_pattern(segs, n, NULL, &p, &err), ORI_OK, "%s: %s", shared_cases[i].rel,
+                     ori_error_format(&err, msg, sizeof msg));
+        for (int e = 0; e < ori_pattern_edge_count(p); ++e) dst[ori_pattern_edge(p, e).assignment] += edge_length(p, e);
+        // Splits keep lengths; welding moves each end point by at most the weld distance.
+        double diag = ori_pattern_diagonal(p);
+        double slack = 2.0 * n * ORI_TOL_IMPORT_WELD_REL * diag;
+        for (int a = 0; a < ORI_ASSIGN_COUNT; ++a)
+            cr_assert_float_eq(dst[a], src[a], slack, "%s: %s length %.9g, drawn %.9g", shared_cases[i].rel,
+                               ori_assignment_name((ori_assignment)a), dst[a], src[a]);
+        cr_assert_gt(ori_pattern_face_count(p), 0);
+        for (int f = 0; f < ori_pattern_face_count(p); ++f) cr_assert_gt(ori__pattern_face_area2(p, f), 0.0);
+        reload_check(p, shared_cases[i].rel);
+        if (shared_cases[i].kawasaki_tol >= 0.0)
+            check_flat(p, shared_cases[i].kawasaki_tol, shared_cases[i].maekawa, shared_cases[i].rel);
+        ori_pattern_destroy(p);
+        ori_buffer_free(segs);
+    }
+}
+
+Test(formats, simple_drawings_have_the_expected_edges)
+{
+    static const struct {
+        const char *rel;
+        int b, m, v, faces, interior;
+    } want[] = {
+        {"origamisimulator/Bases_squareBase.svg", 8, 4, 2, 6, 1},
+        {"origamisimulator/Bases_waterbombBase.svg", 8, 4, 4, 8, 1},
+        {"origamisimulator/Bases_birdBase.svg", 8, 12, 8, 16, 5},
+        {"origamisimulator/SimpleFolds_simpleVertex.svg", 8, 3, 1, 4, 1},
+        {"rabbit-ear/cp_bird-base.cp", 4, 12, 4, 12, 5}, // 8 half sides drawn, merged to 4
+        {"rabbit-ear/opx_bird-base.opx", 4, 12, 4, 12, 5},
+        {"rabbit-ear/opx_one-crease.opx", 4, 1, 0, 2, 0},
+    };
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; ++i) {
+        ori_import_stats stats;
+        ori_pattern *p = import_ok(test_require_shared(want[i].rel), &stats);
+        cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY), want[i].b, "%s", want[i].rel);
+        cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), want[i].m, "%s", want[i].rel);
+        cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY), want[i].v, "%s", want[i].rel);
+        cr_assert_eq(ori_pattern_face_count(p), want[i].faces, "%s", want[i].rel);
+        cr_assert_eq(ori_pattern_interior_vertex_count(p), want[i].interior, "%s", want[i].rel);
+        cr_assert_eq(ori_pattern_edge_count(p), want[i].b + want[i].m + want[i].v);
+        ori_pattern_destroy(p);
+    }
+}
+
+Test(formats, exact_bases_satisfy_big_little_big)
+{
+    static const char *const rel[] = {"origamisimulator/Bases_squareBase.svg",
+                                      "origamisimulator/SimpleFolds_simpleVertex.svg",
+                                      "origamisimulator/SimpleFolds_mapfold.svg", "rabbit-ear/cp_bird-base.cp",
+                                      "rabbit-ear/opx_bird-base.opx", "oripa/crane_base_mitani.opx",
+                                      "rabbit-ear/cp_windmill.cp"};
+    char why[256];
+    for (size_t i = 0; i < sizeof rel / sizeof rel[0]; ++i) {
+        ori_pattern *p = import_ok(test_require_shared(rel[i]), NULL);
+        for (int v = 0; v < ori_pattern_vertex_count(p); ++v)
+            if (ori_pattern_vertex_is_interior(p, v))
+                cr_assert(test_vertex_flat_foldable(p, v, why, sizeof why), "%s: %s", rel[i], why);
+        ori_pattern_destroy(p);
+    }
+}
+
+Test(formats, svg_opacity_is_the_fold_angle)
+{
+    // birdBase: the two diagonals are blue at opacity 0.5 → valley 90°; red lines fold −180°.
+    ori_pattern *p = import_ok(test_require_shared("origamisimulator/Bases_birdBase.svg"), NULL);
+    int half = 0;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        if (ed.assignment == ORI_ASSIGN_MOUNTAIN) cr_assert_float_eq(ed.fold_angle_rad, -ORI_PI, 1e-15);
+        if (ed.assignment == ORI_ASSIGN_BOUNDARY) cr_assert_eq(ed.fold_angle_rad, 0.0);
+        if (ed.assignment == ORI_ASSIGN_VALLEY && fabs(ed.fold_angle_rad - ORI_PI / 2) < 1e-15) half++;
+    }
+    cr_assert_eq(half, 4); // two diagonals through the centre, each split once
+    cr_assert(ori_pattern_has_fold_angles(p));
+    ori_pattern_destroy(p);
+}
+
+// --- SVG features --------------------------------------------------------------------------
+
+static ori_segment *read_svg_file(const char *rel, int *n, ori_import_stats *stats)
+{
+    char *text = test_read_text(test_repo_path(rel));
+    cr_assert_not_null(text, "%s", rel);
+    ori_segment *segs = NULL;
+    ori_error err;
+    ori_status st = ori_svg_read_segments(text, strlen(text), &segs, n, stats, &err);
+    free(text);
+    cr_assert_eq(st, ORI_OK, "%s: %s", rel, ori_error_format(&err, msg, sizeof msg));
+    return segs;
+}
+
+static void assert_seg(const ori_segment *s, double ax, double ay, double bx, double by, ori_assignment a,
+                       double angle)
+{
+    cr_assert_float_eq(s->a.x, ax, 1e-12);
+    cr_assert_float_eq(s->a.y, ay, 1e-12);
+    cr_assert_float_eq(s->b.x, bx, 1e-12);
+    cr_assert_float_eq(s->b.y, by, 1e-12);
+    cr_assert_eq(s->assignment, a);
+    cr_assert_float_eq(s->fold_angle_rad, angle, 1e-15);
+}
+
+Test(formats, svg_transforms_compose_and_y_flips)
+{
+    int n;
+    ori_segment *s = read_svg_file("tests/data/formats/transforms.svg", &n, NULL);
+    cr_assert_eq(n, 4);
+    assert_seg(&s[0], 12, -22, 14, -22, ORI_ASSIGN_MOUNTAIN, -ORI_PI);      // matrix ∘ translate
+    assert_seg(&s[1], 3, -3, 3, -6, ORI_ASSIGN_VALLEY, ORI_PI);             // scale ∘ rotate about (1, 1)
+    assert_seg(&s[2], 1, -1, 2, -1, ORI_ASSIGN_FLAT, 0.0);                   // skewX(45)
+    assert_seg(&s[3], 0, -5, 4, -5, ORI_ASSIGN_VALLEY, 0.25 * ORI_PI);       // opacity 0.5 × 0.5, inherited stroke
+    ori_buffer_free(s);
+}
+
+Test(formats, svg_styles_paths_and_ignored_elements)
+{
+    int n;
+    ori_import_stats stats;
+    ori_segment *s = read_svg_file("tests/data/formats/vertex.svg", &n, &stats);
+    cr_assert_eq(n, 8); // 4 sides, 2 + 1 mountains, 1 valley
+    cr_assert_eq(stats.segments, 8);
+    cr_assert_eq(stats.ignored_elements, 1);
+    cr_assert_str_eq(stats.ignored_colour, "#123456");
+    cr_assert_eq(stats.unsupported_elements, 1); // <text>
+    assert_seg(&s[3], 50, -250, 50, -50, ORI_ASSIGN_BOUNDARY, 0.0); // z closes the relative square
+    assert_seg(&s[5], 150, -150, 250, -150, ORI_ASSIGN_MOUNTAIN, -ORI_PI); // implicit repeated l
+    assert_seg(&s[7], 150, -150, 150, -250, ORI_ASSIGN_VALLEY, 0.5 * ORI_PI); // class rule, stroke-opacity
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_segments_to_pattern(s, n, NULL, &p, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_edge_count(p), 12);
+    cr_assert_eq(ori_pattern_face_count(p), 4);
+    cr_assert_eq(check_flat(p, ORI_TOL_KAWASAKI_RAD, true, "vertex.svg"), 1);
+    ori_pattern_destroy(p);
+    ori_buffer_free(s);
+}
+
+static ori_status svg_status(const char *svg, ori_error *err)
+{
+    ori_segment *s = NULL;
+    int n = -1;
+    ori_status st = ori_svg_read_segments(svg, strlen(svg), &s, &n, NULL, err);
+    if (st == ORI_OK) ori_buffer_free(s);
+    else {
+        cr_assert_null(s);
+        cr_assert_eq(n, 0);
+    }
+    return st;
+}
+
+Test(formats, svg_errors_name_the_line)
+{
+    ori_error err;
+    cr_assert_eq(svg_status("<svg xmlns='http://www.w3.org/2000/svg'>\n<line x1='0' y1='0' x2='1' y2='1'>\n</svg>", &err),
+                 ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 3);
+    cr_assert(strstr(err.message, "XML"), "%s", err.message);
+    cr_assert_eq(svg_status("<svg>\n<path stroke='red' d='M0 0 L10'/></svg>", &err), ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 2);
+    cr_assert(strstr(err.message, "path data"), "%s", err.message);
+    cr_assert_eq(svg_status("<svg>\n\n<path stroke='#00f' d='M0 0 Q 1 1 2 0'/></svg>", &err), ORI_ERR_UNSUPPORTED);
+    cr_assert_eq(err.line, 3);
+    cr_assert(strstr(err.message, "'Q'"), "%s", err.message);
+    cr_assert_eq(svg_status("<svg><path stroke='#00f' d='M0 0 a 1 1 0 0 1 2 0'/></svg>", &err), ORI_ERR_UNSUPPORTED);
+    cr_assert_eq(svg_status("<svg><circle stroke='#f00' r='3'/></svg>", &err), ORI_ERR_UNSUPPORTED);
+    cr_assert_eq(svg_status("<svg><rect stroke='#000' width='3' height='3' rx='1'/></svg>", &err), ORI_ERR_UNSUPPORTED);
+    cr_assert_eq(svg_status("<svg><line stroke='#000' x1='3%' x2='1'/></svg>", &err), ORI_ERR_PARSE);
+    cr_assert_eq(svg_status("<svg><g transform='rotate(1 2)'><line stroke='#000' x2='1'/></g></svg>", &err),
+                 ORI_ERR_PARSE);
+    cr_assert(strstr(err.message, "rotate"), "%s", err.message);
+    cr_assert_eq(svg_status("<svg><polyline stroke='#000' points='0,0 1,x'/></svg>", &err), ORI_ERR_PARSE);
+    cr_assert_eq(svg_status("<svg><path stroke='#000' d='M0 0 L1 1 Z 3 4'/></svg>", &err), ORI_ERR_PARSE);
+    cr_assert(strstr(err.message, "expected a command"), "%s", err.message);
+    cr_assert_eq(svg_status("<svg><path stroke='#000' d='0 0 L1 1'/></svg>", &err), ORI_ERR_PARSE);
+    cr_assert_eq(svg_status("<html><line/></html>", &err), ORI_ERR_PARSE);
+    cr_assert(strstr(err.message, "<svg>"), "%s", err.message);
+    cr_assert_eq(svg_status("", &err), ORI_ERR_PARSE);
+    // Curves in a non-crease colour, unknown elements and namespaces are ignored.
+    cr_assert_eq(svg_status("<svg><path stroke='#abc' d='M0 0 C 1 1 2 2 3 3'/><foo:bar xmlns:foo='x'/><blink/></svg>", &err),
+                 ORI_OK);
+}
+
+Test(formats, svg_colours_in_every_notation)
+{
+    static const struct {
+        const char *stroke;
+        ori_assignment a;
+    } c[] = {{"#FF0000", ORI_ASSIGN_MOUNTAIN},       {"#f00", ORI_ASSIGN_MOUNTAIN},  {"red", ORI_ASSIGN_MOUNTAIN},
+             {"rgb(255, 0, 0)", ORI_ASSIGN_MOUNTAIN}, {"rgb(0%,0%,100%)", ORI_ASSIGN_VALLEY},
+             {"Blue", ORI_ASSIGN_VALLEY},            {"#00ff00", ORI_ASSIGN_CUT},    {"lime", ORI_ASSIGN_CUT},
+             {"green", ORI_ASSIGN_CUT},              {"#ff0", ORI_ASSIGN_FLAT},      {"yellow", ORI_ASSIGN_FLAT},
+             {"#ff00ff", ORI_ASSIGN_UNASSIGNED},     {"fuchsia", ORI_ASSIGN_UNASSIGNED},
+             {"black", ORI_ASSIGN_BOUNDARY},         {"#000000 !important", ORI_ASSIGN_BOUNDARY}};
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; ++i) {
+        char svg[256];
+        snprintf(svg, sizeof svg, "<svg><line style='stroke: %s' x2='1'/></svg>", c[i].stroke);
+        ori_segment *s;
+        int n;
+        cr_assert_eq(ori_svg_read_segments(svg, strlen(svg), &s, &n, NULL, NULL), ORI_OK);
+        cr_assert_eq(n, 1, "%s", c[i].stroke);
+        cr_assert_eq(s[0].assignment, c[i].a, "%s", c[i].stroke);
+        ori_buffer_free(s);
+    }
+    // currentColor follows color; #fe0000 is not red.
+    const char *svg = "<svg color='#00f'><line stroke='currentColor' x2='1'/><line stroke='#fe0000' x2='2'/></svg>";
+    ori_segment *s;
+    int n;
+    ori_import_stats stats;
+    cr_assert_eq(ori_svg_read_segments(svg, strlen(svg), &s, &n, &stats, NULL), ORI_OK);
+    cr_assert_eq(n, 1);
+    cr_assert_eq(s[0].assignment, ORI_ASSIGN_VALLEY);
+    cr_assert_eq(stats.ignored_elements, 1);
+    ori_buffer_free(s);
+}
+
+Test(formats, svg_entities_are_not_expanded_and_nothing_is_fetched)
+{
+    const char *svg = "<?xml version='1.0'?>\n<!DOCTYPE svg [<!ENTITY e SYSTEM 'file:///etc/passwd'>]>\n"
+                      "<svg><line stroke='#f00' x2='1'/><text>&e;</text></svg>";
+    ori_segment *s;
+    int n;
+    ori_error err;
+    cr_assert_eq(ori_svg_read_segments(svg, strlen(svg), &s, &n, NULL, &err), ORI_OK, "%s",
+                 ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(n, 1);
+    ori_buffer_free(s);
+}
+
+// --- ORIPA ---------------------------------------------------------------------------------
+
+Test(formats, opx_structure_and_defaults)
+{
+    // one-crease.opx: a mountain diagonal (200,-200)–(-200,200) in ORIPA's y-down frame.
+    ori_segment *s;
+    int n;
+    ori_import_stats stats;
+    ori_error err;
+    cr_assert_eq(ori_read_segments(test_require_shared("rabbit-ear/opx_one-crease.opx"), ORI_FORMAT_UNKNOWN, &s, &n,
+                                   &stats, &err),
+                 ORI_OK);
+    cr_assert_eq(n, 5);
+    assert_seg(&s[0], 200, 200, -200, -200, ORI_ASSIGN_MOUNTAIN, -ORI_PI);
+    ori_buffer_free(s);
+    // Missing properties are 0; type 7 is refused with the line of its object.
+    char *text = test_read_text(test_repo_path("tests/data/formats/bad_type.opx"));
+    cr_assert_eq(ori_opx_read_segments(text, strlen(text), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 7);
+    cr_assert(strstr(err.message, "type 7"), "%s", err.message);
+    free(text);
+    const char *aux = "<java><object class='oripa.OriLineProxy'><void property='x1'><double>5</double></void>"
+                      "<void property='type'><int>3</int></void></object>"
+                      "<object class='oripa.OriLineProxy'/></java>";
+    cr_assert_eq(ori_opx_read_segments(aux, strlen(aux), &s, &n, &stats, &err), ORI_OK);
+    cr_assert_eq(n, 1); // the second line is type 0 (aux) by default
+    cr_assert_eq(stats.ignored_elements, 1);
+    assert_seg(&s[0], 0, 0, 5, 0, ORI_ASSIGN_VALLEY, ORI_PI);
+    ori_buffer_free(s);
+    const char *bad = "<java>\n<object class='oripa.OriLineProxy'><void property='x0'><double>1e</double></void></object></java>";
+    cr_assert_eq(ori_opx_read_segments(bad, strlen(bad), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 2);
+    cr_assert_eq(ori_opx_read_segments("<svg/>", 6, &s, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert(strstr(err.message, "not an ORIPA file"));
+}
+
+Test(formats, cp_lines_and_errors)
+{
+    ori_segment *s;
+    int n;
+    ori_error err;
+    const char *ok = "1 0 0 10 0\r\n\n  2\t0 0   10 10  \n4 0 0 1 1\n3 1e1 0 0 1.5E1\n";
+    cr_assert_eq(ori_cp_read_segments(ok, strlen(ok), &s, &n, NULL, &err), ORI_OK);
+    cr_assert_eq(n, 3);
+    assert_seg(&s[2], 10, 0, 0, -15, ORI_ASSIGN_VALLEY, ORI_PI);
+    ori_buffer_free(s);
+    static const struct {
+        const char *text;
+        int line;
+    } bad[] = {{"1 0 0 10 0\n2 0 0 10\n", 2},          {"1 0 0 10 0 7\n", 1}, {"\n\nx 0 0 1 1\n", 3},
+               {"7 0 0 1 1\n", 1},                      {"2 0 0 1 1e999\n", 1}, {"2 0 0 nan 1\n", 1},
+               {"2 0x10 0 1 1\n", 1},                   {"1.5 0 0 1 1\n", 1}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        cr_assert_eq(ori_cp_read_segments(bad[i].text, strlen(bad[i].text), &s, &n, NULL, &err), ORI_ERR_PARSE, "%zu", i);
+        cr_assert_eq(err.line, bad[i].line, "case %zu: line %d", i, err.line);
+    }
+}
+
+// --- export and round trips ------------------------------------------------------------------
+
+// Every edge of p has an edge of q with the same end points, assignment and fold angle.
+static void assert_same_edges(const ori_pattern *p, const ori_pattern *q, double angle_tol)
+{
+    cr_assert_eq(ori_pattern_edge_count(q), ori_pattern_edge_count(p));
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge a = ori_pattern_edge(p, e);
+        ori_v3 a0 = ori_pattern_vertex(p, a.v[0]), a1 = ori_pattern_vertex(p, a.v[1]);
+        bool found = false;
+        for (int f = 0; f < ori_pattern_edge_count(q) && !found; ++f) {
+            ori_edge b = ori_pattern_edge(q, f);
+            ori_v3 b0 = ori_pattern_vertex(q, b.v[0]), b1 = ori_pattern_vertex(q, b.v[1]);
+            bool same = (a0.x == b0.x && a0.y == b0.y && a1.x == b1.x && a1.y == b1.y) ||
+                        (a0.x == b1.x && a0.y == b1.y && a1.x == b0.x && a1.y == b0.y);
+            if (!same) continue;
+            found = true;
+            cr_assert_eq(b.assignment, a.assignment, "edge %d", e);
+            cr_assert_float_eq(b.fold_angle_rad, a.fold_angle_rad, angle_tol, "edge %d", e);
+        }
+        cr_assert(found, "edge %d (%g, %g)–(%g, %g) missing", e, a0.x, a0.y, a1.x, a1.y);
+    }
+}
+
+static ori_pattern *reimport(const char *text, ori_format f)
+{
+    ori_segment *s;
+    int n;
+    ori_error err;
+    ori_status st = f == ORI_FORMAT_SVG ? ori_svg_read_segments(text, strlen(text), &s, &n, NULL, &err)
+                    : f == ORI_FORMAT_CP ? ori_cp_read_segments(text, strlen(text), &s, &n, NULL, &err)
+                                         : ori_opx_read_segments(text, strlen(text), &s, &n, NULL, &err);
+    cr_assert_eq(st, ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    ori_pattern *q = NULL;
+    st = ori_segments_to_pattern(s, n, NULL, &q, &err);
+    cr_assert_eq(st, ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    ori_buffer_free(s);
+    return q;
+}
+
+Test(formats, svg_export_round_trips_edges_assignments_and_angles)
+{
+    ori_generate_def def = ori_default_generate_def(ORI_TESS_SQUARE_TWIST);
+    def.rows = 2;
+    def.cols = 3;
+    def.angle_rad = ori_deg_to_rad(30.0);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_generate(&def, &p, NULL, NULL), ORI_OK);
+    // give the creases varied fold angles (sign by assignment)
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        double mag = ORI_PI * (0.1 + 0.9 * (e % 7) / 6.0);
+        if (ed.assignment == ORI_ASSIGN_MOUNTAIN) ori_pattern_set_fold_angle(p, e, -mag);
+        if (ed.assignment == ORI_ASSIGN_VALLEY) ori_pattern_set_fold_angle(p, e, mag);
+    }
+    char *svg = ori_svg_write(p, NULL);
+    cr_assert(strstr(svg, "viewBox=\""));
+    cr_assert(strstr(svg, "stroke=\"#ff0000\""));
+    ori_pattern *q = reimport(svg, ORI_FORMAT_SVG);
+    assert_same_edges(p, q, 1e-15);
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
+    ori_pattern_destroy(q);
+    ori_buffer_free(svg);
+    // full_fold: every M/V back at ±π
+    ori_svg_write_def sdef = ori_default_svg_write_def();
+    sdef.full_fold = true;
+    svg = ori_svg_write(p, &sdef);
+    cr_assert_null(strstr(svg, "stroke-opacity"));
+    ori_buffer_free(svg);
+    ori_pattern_destroy(p);
+}
+
+Test(formats, cp_and_opx_export_round_trip)
+{
+    ori_pattern *p = import_ok(test_require_shared("rabbit-ear/cp_bird-base.cp"), NULL);
+    char *cp = ori_cp_write(p);
+    ori_pattern *q = reimport(cp, ORI_FORMAT_CP);
+    assert_same_edges(p, q, 0.0);
+    ori_pattern_destroy(q);
+    char *opx = ori_opx_write(p);
+    q = reimport(opx, ORI_FORMAT_OPX);
+    assert_same_edges(p, q, 0.0);
+    ori_pattern_destroy(q);
+    ori_buffer_free(cp);
+    ori_buffer_free(opx);
+    ori_pattern_destroy(p);
+}
+
+// --- planarisation ---------------------------------------------------------------------------
+
+Test(formats, crossing_and_overlapping_segments_are_planarised)
+{
+    // Square with two crossing diagonals drawn in pieces that overlap, and a hole that a crease
+    // joins to the left side.
+    ori_segment s[] = {
+        {{0, 0}, {4, 0}, ORI_ASSIGN_BOUNDARY, 0},        {{4, 0}, {4, 4}, ORI_ASSIGN_BOUNDARY, 0},
+        {{4, 4}, {0, 4}, ORI_ASSIGN_BOUNDARY, 0},        {{0, 4}, {0, 0}, ORI_ASSIGN_BOUNDARY, 0},
+        {{0, 0}, {3, 3}, ORI_ASSIGN_VALLEY, ORI_PI},     {{2, 2}, {4, 4}, ORI_ASSIGN_VALLEY, ORI_PI},
+        {{0, 4}, {4, 0}, ORI_ASSIGN_MOUNTAIN, -ORI_PI},
+        {{0.5, 1.5}, {1, 1.5}, ORI_ASSIGN_BOUNDARY, 0}, {{1, 1.5}, {1, 2}, ORI_ASSIGN_BOUNDARY, 0},
+        {{1, 2}, {0.5, 2}, ORI_ASSIGN_BOUNDARY, 0},     {{0.5, 2}, {0.5, 1.5}, ORI_ASSIGN_BOUNDARY, 0},
+        {{0, 1.5}, {0.5, 1.5}, ORI_ASSIGN_VALLEY, ORI_PI},
+    };
+    int n = (int)(sizeof s / sizeof s[0]);
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_segments_to_pattern(s, n, NULL, &p, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY), 3); // overlap merged, split at the centre
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 2);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY), 9); // left side split by the crease
+    cr_assert_eq(ori_pattern_face_count(p), 4);                            // the hole is not a face
+    double area = 0.0;
+    for (int f = 0; f < ori_pattern_face_count(p); ++f) area += 0.5 * ori__pattern_face_area2(p, f);
+    cr_assert_float_eq(area, 16.0 - 0.25, 1e-12); // and is cut out of the face around it
+    cr_assert_eq(ori_pattern_interior_vertex_count(p), 1);
+    ori_pattern_destroy(p);
+    ori_import_def def = ori_default_import_def();
+    def.remove_holes = false;
+    cr_assert_eq(ori_segments_to_pattern(s, n, &def, &p, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_face_count(p), 5);
+    ori_pattern_destroy(p);
+    // Without the joining crease the hole floats inside a face: refused, with its place.
+    cr_assert_eq(ori_segments_to_pattern(s, n - 1, NULL, &p, &err), ORI_ERR_TOPOLOGY);
+    cr_assert_null(p);
+    cr_assert(strstr(err.message, "(0.5, 1.5)"), "%s", err.message);
+    cr_assert_eq(ori_segments_to_pattern(s, 0, NULL, &p, &err), ORI_ERR_NOT_FOUND);
+    // A separate sheet inside the (connected) hole is another piece of paper: allowed.
+    ori_segment t[sizeof s / sizeof s[0] + 4];
+    memcpy(t, s, sizeof s);
+    ori_segment piece[4] = {{{0.6, 1.6}, {0.9, 1.6}, ORI_ASSIGN_BOUNDARY, 0}, {{0.9, 1.6}, {0.9, 1.9}, ORI_ASSIGN_BOUNDARY, 0},
+                            {{0.9, 1.9}, {0.6, 1.9}, ORI_ASSIGN_BOUNDARY, 0}, {{0.6, 1.9}, {0.6, 1.6}, ORI_ASSIGN_BOUNDARY, 0}};
+    memcpy(t + n, piece, sizeof piece);
+    cr_assert_eq(ori_segments_to_pattern(t, n + 4, NULL, &p, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(ori_pattern_face_count(p), 5);
+    ori_pattern_destroy(p);
+}
+
+Test(formats, near_misses_within_the_weld_tolerance_join)
+{
+    // A crease whose end stops 1e-6 short of the boundary, and one whose end is 1e-6 off a vertex.
+    ori_segment s[] = {
+        {{0, 0}, {1, 0}, ORI_ASSIGN_BOUNDARY, 0},     {{1, 0}, {1, 1}, ORI_ASSIGN_BOUNDARY, 0},
+        {{1, 1}, {0, 1}, ORI_ASSIGN_BOUNDARY, 0},     {{0, 1}, {0, 0}, ORI_ASSIGN_BOUNDARY, 0},
+        {{0.5, 1e-6}, {0.5, 1}, ORI_ASSIGN_VALLEY, 0}, {{1e-6, 1 + 1e-6}, {0.5, 0.5}, ORI_ASSIGN_MOUNTAIN, 0},
+    };
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_segments_to_pattern(s, 6, NULL, &p, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(ori_pattern_vertex_count(p), 7); // 4 corners, 2 side midpoints, the T-junction
+    cr_assert_eq(ori_pattern_face_count(p), 3);
+    ori_pattern_destroy(p);
+}
+
+// --- the FOLD text writer --------------------------------------------------------------------
+
+static void assert_text_equals_jansson_path(const ori_pattern *p)
+{
+    ori_fold_field extra[] = {{"file_title", "\"t\""}, {"orikin:x", "[\"a\",\"b\"]"}};
+    size_t n;
+    char *direct = ori_pattern_to_fold_text(p, extra, 2, &n);
+    ori_fold *doc = ori_fold_create();
+    cr_assert_eq(ori_fold_set_custom(doc, 0, "file_title", "\"t\"", NULL), ORI_OK);
+    cr_assert_eq(ori_fold_set_custom(doc, 0, "orikin:x", "[\"a\",\"b\"]", NULL), ORI_OK);
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, NULL), ORI_OK);
+    char *tree = ori_fold_to_string(doc);
+    cr_assert_str_eq(direct, tree);
+    ori_buffer_free(tree);
+    ori_buffer_free(direct);
+    ori_fold_destroy(doc);
+}
+
+Test(formats, fold_text_writer_matches_the_json_tree_writer)
+{
+    for (int k = 0; k < ORI_TESS_COUNT; ++k) {
+        ori_generate_def def = ori_default_generate_def((ori_tessellation)k);
+        def.rows = 3;
+        def.cols = 2;
+        ori_pattern *p = NULL;
+        cr_assert_eq(ori_generate(&def, &p, NULL, NULL), ORI_OK);
+        ori_pattern_set_fold_angle(p, 0, ori_deg_to_rad(-37.5));
+        assert_text_equals_jansson_path(p);
+        ori_pattern_destroy(p);
+    }
+    // names, tree, 3D coordinates, no fold angles, an empty pattern
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    assert_text_equals_jansson_path(p);
+    cr_assert_eq(ori_pattern_add_tree_node(p, "Obj\"1\\", ORI_NULL_INDEX), ori_pattern_tree_node_count(p) - 1);
+    ori_pattern_set_vertex(p, 0, ori_v3_make(0.1, 0.2, 0.3));
+    ori_pattern_set_has_fold_angles(p, false);
+    assert_text_equals_jansson_path(p);
+    ori_pattern_destroy(p);
+    ori_pattern_def pdef = ori_default_pattern_def();
+    p = ori_pattern_create(&pdef);
+    assert_text_equals_jansson_path(p);
+    ori_pattern_destroy(p);
+}
+
+// --- command line ----------------------------------------------------------------------------
+
+static bool exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+Test(formats, cli_convert_writes_nothing_on_bad_input)
+{
+    char *dir = test_tmpdir();
+    static const char *const bad[] = {"bad_xml.svg", "bad_path.svg", "curve.svg", "bad_line.cp", "empty.cp",
+                                      "bad_type.opx", "no_creases.svg"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        char args[2048], out[600];
+        snprintf(out, sizeof out, "%s/out%zu.fold", dir, i);
+        snprintf(args, sizeof args, "convert tests/data/formats/%s '%s'", bad[i], out);
+        char *output = NULL;
+        int rc = test_run_cli(args, &output);
+        cr_assert_eq(rc, 3, "%s: exit %d: %s", bad[i], rc, output);
+        cr_assert(strstr(output, bad[i]), "%s", output);
+        cr_assert_not(exists(out), "%s was written", out);
+        free(output);
+    }
+    char args[4096], out[600];
+    snprintf(out, sizeof out, "%s/vertex.fold", dir);
+    snprintf(args, sizeof args, "convert tests/data/formats/vertex.svg '%s'", out);
+    char *output = NULL;
+    cr_assert_eq(test_run_cli(args, &output), 0, "%s", output);
+    cr_assert(strstr(output, "warning: 1 element(s) ignored"), "%s", output);
+    free(output);
+    ori_pattern *p = test_load_pattern(out, 0);
+    cr_assert_eq(ori_pattern_edge_count(p), 12);
+    ori_pattern_destroy(p);
+    // FOLD → SVG → FOLD through the CLI
+    char svg[600], back[600];
+    snprintf(svg, sizeof svg, "%s/vertex.svg", dir);
+    snprintf(back, sizeof back, "%s/back.fold", dir);
+    snprintf(args, sizeof args, "convert '%s' '%s' && %s convert '%s' '%s'", out, svg, ORI_CLI_PATH, svg, back);
+    cr_assert_eq(test_run_cli(args, NULL), 0);
+    p = test_load_pattern(back, 0);
+    cr_assert_eq(ori_pattern_edge_count(p), 12);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 3);
+    ori_pattern_destroy(p);
+    test_tmpdir_remove(dir);
+}
