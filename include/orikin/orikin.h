@@ -2,9 +2,12 @@
 #ifndef ORIKIN_ORIKIN_H
 #define ORIKIN_ORIKIN_H
 
+#include "arrangement.h"
 #include "base.h"
 #include "flat.h"
 #include "fold.h"
+#include "formats.h"
+#include "generate.h"
 #include "math.h"
 #include "pattern.h"
 #include "tolerance.h"
