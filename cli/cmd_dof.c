@@ -74,7 +74,7 @@ static int run(int argc, char **argv)
         printf("file               %s (angles from frame %d)\n", path, frame);
         printf("bodies, joints     %d faces, %d creases, %d loops\n", ori_mechanism_face_count(k.mech),
                ori_mechanism_joint_count(k.mech), ori_mechanism_loop_count(k.mech));
-        printf("Grubler-Kutzbach   %d\n", r.grubler);
+        printf("Grübler-Kutzbach   %d\n", r.grubler);
         printf("Jacobian           %d equations x %d unknowns, rank %d (%s)\n", r.equations, r.unknowns, r.rank,
                r.dense ? "dense SVD" : "sparse CHOLMOD");
         printf("dof at this state  %d\n", r.dof);

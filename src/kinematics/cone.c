@@ -41,7 +41,8 @@ typedef struct choice {
     int joint_first, count; // local movable joints (cjoint[])
     int dir_first;          // two directions, count entries each (cdir[])
     int preferred;          // 0 or 1
-    int score[2];           // assignment violations of each line (best orientation)
+    int score[2];           // assignment score of each line (best orientation; see line_score)
+    bool full[2];           // the line folds every assigned crease of the loop, each as assigned
 } choice;
 
 typedef struct cone_sys {
@@ -118,14 +119,15 @@ static int assigned_sign(const ori_mechanism *m, int joint)
 // creases flat — folding along one straight line through a Miura vertex — ranks below the one
 // folding them all).
 #define SCORE_K 100000
-static int line_score(const cone_sys *c, const int *joints, const double *dir, int k, int *orient)
+static int line_score(const cone_sys *c, const int *joints, const double *dir, int k, int *orient, bool *full)
 {
     double big = 0.0;
     for (int i = 0; i < k; ++i) big = fmax(big, fabs(dir[i]));
     double thr = ORI_TOL_CONE_REL * big;
     int best = INT32_MAX / 2, best_o = 1;
+    *full = false;
     for (int o = 1; o >= -1; o -= 2) {
-        int bad = 0, good = 0;
+        int bad = 0, good = 0, assigned = 0;
         bool feasible = true;
         for (int i = 0; i < k; ++i) {
             double x = o * dir[i];
@@ -134,6 +136,7 @@ static int line_score(const cone_sys *c, const int *joints, const double *dir, i
                 continue;
             }
             int s = assigned_sign(c->m, joints[i]);
+            assigned += s != 0;
             if (s == 0 || !(fabs(x) > thr)) continue;
             if (x * s < 0.0) bad++;
             else good++;
@@ -143,6 +146,7 @@ static int line_score(const cone_sys *c, const int *joints, const double *dir, i
             best = score;
             best_o = o;
         }
+        if (feasible && bad == 0 && good == assigned) *full = true;
     }
     *orient = best_o;
     return best;
@@ -305,9 +309,10 @@ static void build(cone_sys *c, const double *th)
                 for (int s = 0; s < 2; ++s)
                     for (int i = 0; i < k; ++i) ORI__PUSH(c->cdir, c->ncdir, c->cdir_cap, dirs[nlines == 2 ? s : 0][i]);
                 int o;
-                ch.score[0] = line_score(c, lj, dirs[0], k, &o);
-                ch.score[1] = nlines == 2 ? line_score(c, lj, dirs[1], k, &o) : INT32_MAX / 2;
-                ch.preferred = ch.score[1] < ch.score[0] ? 1 : 0;
+                ch.full[1] = false;
+                ch.score[0] = line_score(c, lj, dirs[0], k, &o, &ch.full[0]);
+                ch.score[1] = nlines == 2 ? line_score(c, lj, dirs[1], k, &o, &ch.full[1]) : INT32_MAX / 2;
+                ch.preferred = ch.full[1] != ch.full[0] ? (ch.full[1] ? 1 : 0) : ch.score[1] < ch.score[0] ? 1 : 0;
                 ORI__PUSH(c->choices, c->nchoices, c->choices_cap, ch);
                 continue;
             }
@@ -645,16 +650,14 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
     double *xbest = ori__calloc((size_t)ncols + 1, sizeof(double));
     kin_cone_result result = KIN_CONE_NONE;
     int best_score = INT32_MAX;
-    // Which lines each branching loop admits under the assignment (no violation at the loop).
+    // Loops that can fold as assigned on their own: a line folding every assigned crease of
+    // the loop in its direction.
     bool all_local = true;
-    for (int h = 0; h < k; ++h) {
-        const choice *ch = &c.choices[h];
-        bool ok0 = ch->score[0] <= 0, ok1 = ch->score[1] <= 0;
-        if (!ok0 && !ok1) all_local = false;
-    }
+    for (int h = 0; h < k; ++h)
+        if (!c.choices[h].full[0] && !c.choices[h].full[1]) all_local = false;
     // Phase A: combinations of locally admitted lines (the preferred one first). Phase B (only
-    // when some loop admits no line, or when probing): every combination, for the least
-    // violating motion. Large (sparse) systems try the preferred combination only.
+    // when some loop cannot fold as assigned): every combination, for the least violating
+    // motion. Large (sparse) systems try the preferred combination only.
     int flip = k < ORI_KIN_CONE_ENUMERATE_MAX ? k : ORI_KIN_CONE_ENUMERATE_MAX;
     if (ncols > ORI_MOTION_DENSE_MAX_UNKNOWNS) flip = 0;
     long combos = 1L << flip;
@@ -669,7 +672,12 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
                 int line = ch->preferred ^ (flipped ? 1 : 0);
                 bool exists = ch->score[line] < INT32_MAX / 2;
                 if (!exists) skip = true;
-                if (phase == 0 && !probe && ch->score[line] > 0 && (ch->score[0] <= 0 || ch->score[1] <= 0)) skip = true;
+                // Phase A keeps, per loop, the lines that fold it as assigned (or, lacking one,
+                // the lines without violations).
+                bool anyfull = ch->full[0] || ch->full[1];
+                bool anyok = ch->score[0] <= 0 || ch->score[1] <= 0;
+                if (phase == 0 && !probe && ((anyfull && !ch->full[line]) || (!anyfull && anyok && ch->score[line] > 0)))
+                    skip = true;
                 pick[h] = line;
             }
             if (skip) continue;
