@@ -742,3 +742,76 @@ Test(kinematics, cli_square_twist_is_not_rigidly_foldable)
     cr_assert(strstr(out, "\"rigidly_foldable\":false"), "%s", out);
     free(out);
 }
+
+// --- holes -------------------------------------------------------------------------------
+
+// A 3×3 square with a 1×1 hole: four creases from the hole's corners, either to the outer
+// corners (diagonals: all axes meet at the centre, a spherical loop) or pinwheel-wise.
+static ori_pattern *ring(bool diagonal)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    ori_error err;
+    if (diagonal) {
+        double pts[][2] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+        for (int i = 0; i < 8; ++i) ori_pattern_add_vertex(p, ori_v3_make(pts[i][0], pts[i][1], 0));
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, i, (i + 1) % 4, ORI_ASSIGN_BOUNDARY, 0);
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, 4 + i, 4 + (i + 1) % 4, ORI_ASSIGN_BOUNDARY, 0);
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, i, 4 + i, i % 2 ? ORI_ASSIGN_MOUNTAIN : ORI_ASSIGN_VALLEY, 0);
+        for (int i = 0; i < 4; ++i) {
+            int f[4] = {i, (i + 1) % 4, 4 + (i + 1) % 4, 4 + i};
+            ori_pattern_add_face(p, f, 4);
+        }
+    } else {
+        double pts[][2] = {{0, 0}, {1, 0}, {3, 0}, {3, 1}, {3, 3}, {2, 3}, {0, 3}, {0, 2}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+        for (int i = 0; i < 12; ++i) ori_pattern_add_vertex(p, ori_v3_make(pts[i][0], pts[i][1], 0));
+        for (int i = 0; i < 8; ++i) ori_pattern_add_edge(p, i, (i + 1) % 8, ORI_ASSIGN_BOUNDARY, 0);
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, 8 + i, 8 + (i + 1) % 4, ORI_ASSIGN_BOUNDARY, 0);
+        int outer[4] = {1, 3, 5, 7};
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, 8 + i, outer[i], ORI_ASSIGN_VALLEY, 0);
+        int f0[] = {1, 2, 3, 9, 8}, f1[] = {3, 4, 5, 10, 9}, f2[] = {5, 6, 7, 11, 10}, f3[] = {7, 0, 1, 8, 11};
+        ori_pattern_add_face(p, f0, 5);
+        ori_pattern_add_face(p, f1, 5);
+        ori_pattern_add_face(p, f2, 5);
+        ori_pattern_add_face(p, f3, 5);
+    }
+    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+Test(kinematics, a_ring_around_a_hole_folds_along_its_diagonal)
+{
+    ori_pattern *p = ring(true);
+    ori_mechanism *m = mech_of(p);
+    cr_assert_eq(ori_mechanism_loop(m, 0).rows, 6);
+    int e0 = ori_pattern_find_edge(p, 0, 4), e2 = ori_pattern_find_edge(p, 2, 6);
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = e0;
+    d.to_rad = 120 * DEG;
+    d.step_rad = 30 * DEG;
+    ori_motion *mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
+    for (int k = 0; k < ori_motion_frame_count(mo); ++k) {
+        const double *a = ori_motion_frame_angles(mo, k);
+        cr_assert_float_eq(a[e2], a[e0], 1e-9); // the opposite crease continues the line
+    }
+    check_frames(m, p, mo);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+Test(kinematics, a_pinwheel_ring_around_a_hole_is_rigid)
+{
+    ori_pattern *p = ring(false);
+    ori_mechanism *m = mech_of(p);
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = 12;
+    d.to_rad = 60 * DEG;
+    d.step_rad = 30 * DEG;
+    ori_motion *mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_NOT_RIGIDLY_FOLDABLE, "%s", ori_motion_reason(mo));
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

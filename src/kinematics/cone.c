@@ -631,6 +631,40 @@ static int score_of(const cone_sys *c, const double *x, int *violations)
     return bad * SCORE_K - good;
 }
 
+bool ori__kin_loops_deficient(const ori_mechanism *m, const double *th, const int *col_of_joint, int drive_joint)
+{
+    double *blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
+    ori__kin_eval(m, th, NULL, blocks, NULL);
+    bool deficient = false;
+    for (int l = 0; l < m->loop_count && !deficient; ++l) {
+        const kin_loop *L = &m->loops[l];
+        int k = 0;
+        for (int q = 0; q < L->col_count; ++q) {
+            int j = m->loop_cols[L->col_first + q];
+            k += j == drive_joint || col_of_joint[j] >= 0;
+        }
+        if (k == 0) continue; // a rigid loop: nothing moves
+        if (k < L->rows) {
+            deficient = true;
+            break;
+        }
+        double *a = ori__alloc(sizeof(double) * (size_t)(L->rows * k));
+        int c = 0;
+        for (int q = 0; q < L->col_count; ++q) {
+            int j = m->loop_cols[L->col_first + q];
+            if (j != drive_joint && col_of_joint[j] < 0) continue;
+            for (int r = 0; r < L->rows; ++r) a[r + L->rows * c] = blocks[6 * (L->col_first + q) + r];
+            c++;
+        }
+        double smax, scut;
+        int rank = ori__dense_rank(a, L->rows, k, ORI_TOL_RANK_REL, &smax, &scut);
+        ori__free(a);
+        if (rank >= 0 && rank < L->rows) deficient = true;
+    }
+    ori__free(blocks);
+    return deficient;
+}
+
 kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                               int drive_joint, double sign, bool probe, double *v, int *extra_dof)
 {

@@ -242,17 +242,30 @@ ori_status ori_mechanism_dof(const ori_mechanism *m, const ori_dof_def *def, ori
     out->grubler = m->grubler;
     out->generic_dof = -1;
     if (st == ORI_OK && def->probe_generic && out->dof > 0 && m->rows > 0) {
-        double *th2 = ori__alloc(sizeof(double) * (size_t)(J + 1));
-        if (ori__kin_probe_generic(m, th, col, n, th2)) {
+        // Step along a motion and measure there; a single step may leave some vertices flat
+        // (still singular), so step again from the new state while the nullity drops.
+        double *cur = ori__alloc(sizeof(double) * (size_t)(J + 1));
+        double *next = ori__alloc(sizeof(double) * (size_t)(J + 1));
+        memcpy(cur, th, sizeof(double) * (size_t)J);
+        int best = -1;
+        for (int round = 0; round < ORI_KIN_PROBE_ROUNDS && st == ORI_OK; ++round) {
+            if (!ori__kin_probe_generic(m, cur, col, n, next)) break;
             ori_dof_result near;
-            st = ori__kin_nullity(m, th2, col, n, &near, error);
-            if (st == ORI_OK) out->generic_dof = near.dof;
-        } else {
+            st = ori__kin_nullity(m, next, col, n, &near, error);
+            if (st != ORI_OK || (best >= 0 && near.dof >= best)) break;
+            best = near.dof;
+            memcpy(cur, next, sizeof(double) * (size_t)J);
+            if (best == 0) break;
+        }
+        if (best < 0) {
             out->generic_dof = 0;
             out->rigid = true;
+        } else {
+            out->generic_dof = best;
         }
-        ori__free(th2);
-        if (st == ORI_OK && out->generic_dof >= 0) out->singular = out->dof > out->generic_dof;
+        ori__free(cur);
+        ori__free(next);
+        if (st == ORI_OK) out->singular = out->dof > out->generic_dof;
     } else if (st == ORI_OK && out->dof == 0) {
         out->generic_dof = 0;
     }

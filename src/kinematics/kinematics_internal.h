@@ -134,6 +134,10 @@ typedef struct kin_solver kin_solver;
 // Sparse corrector: a chord step (old factor) whose residual ratio exceeds this renews the
 // factor (Newton) for the next iteration.
 #define ORI_KIN_CHORD_RATE 0.2
+// The corrector gives up when a Newton iteration multiplies the residual by more than
+// ORI_KIN_GROWTH_STEP, or the residual exceeds ORI_KIN_GROWTH_TOTAL × its starting value.
+#define ORI_KIN_GROWTH_STEP 4.0
+#define ORI_KIN_GROWTH_TOTAL 1e2
 // When an old factor failed, the corrector factors afresh at each call, retrying an old one
 // every this many calls.
 #define ORI_KIN_STALE_RETRY 8
@@ -153,6 +157,9 @@ bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, 
 // Tangent dθ/d(drive) of the constrained curve at th (joint space, drive component 1). False
 // when the linear solve fails.
 bool ori__kin_tangent(kin_solver *s, const double *th, double *t);
+// Relative defect max|J t| / max|J_drive| of a tangent t at th: 0 for a true tangent, large
+// when the drive cannot move at first order (the least-squares "tangent" is no tangent).
+double ori__kin_tangent_defect(kin_solver *s, const double *th, const double *t);
 // Statistics of the solver.
 int ori__kin_solver_factorizations(const kin_solver *s);
 bool ori__kin_solver_sparse(const kin_solver *s);
@@ -169,6 +176,9 @@ int ori__kin_solver_nullity(kin_solver *s, const double *th);
 bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                             double *th_out);
 
+// Successive probe steps of the generic DOF (each from the state the previous one reached).
+#define ORI_KIN_PROBE_ROUNDS 4
+
 // --- cone analysis at singular starts --------------------------------------------------
 
 // Line choices enumerated at most over this many branching loops (2^n combinations).
@@ -182,6 +192,10 @@ typedef enum kin_cone_result {
     KIN_CONE_INCOMPATIBLE, // each vertex can fold as assigned, but not all of them together
     KIN_CONE_UNDERDETERMINED, // tangents form a family of dimension > 1 (more DOF than the drive)
 } kin_cone_result;
+
+// True when some loop's equations restricted to the moving creases (free and driven) are rank
+// deficient at th: first order cannot satisfy them all (a flat vertex, most hole loops).
+bool ori__kin_loops_deficient(const ori_mechanism *m, const double *th, const int *col_of_joint, int drive_joint);
 
 // Tangent cone of the constrained system at a singular start th (joint space): a direction v
 // with v[drive] = sign, fixed joints 0, satisfying the first-order and the second-order loop

@@ -21,14 +21,25 @@
 #define ORI_KIN_MAX_STEP_RAD 0.1
 // First step out of a singular start (radians).
 #define ORI_KIN_SINGULAR_STEP_RAD 0.0175
+// A motion from a singular start that stops before the drive has moved this far (radians)
+// counts as no motion (not rigidly foldable) rather than a blocked one.
+#define ORI_KIN_ESCAPE_RAD 0.5 * ORI_KIN_SINGULAR_STEP_RAD
 // Substep of the closed-form solver's branch tracking (radians).
 #define ORI_KIN_TRACK_STEP_RAD 0.0175
 // Steps are halved down to this before the motion counts as blocked (radians).
 #define ORI_KIN_MIN_STEP_RAD 1e-7
 // Corrector iteration budget per step.
 #define ORI_KIN_NEWTON_MAX 25
-// Probe step for the generic DOF (radians).
+// Probe step for the generic DOF (radians), halved down to the minimum when the corrector fails.
 #define ORI_KIN_PROBE_STEP_RAD 0.02
+#define ORI_KIN_PROBE_MIN_STEP_RAD 1e-4
+// A corrected step is rejected (as a jump to another branch) when the corrector moved the
+// prediction by more than this fraction of the predicted change, plus a slack (radians) for
+// tiny steps.
+#define ORI_KIN_MAX_CORRECTION 0.5
+#define ORI_KIN_CORRECTION_SLACK_RAD 1e-7
+// An output value closer than this fraction of a step to the target merges into it.
+#define ORI_KIN_GRID_MERGE 1e-3
 
 struct ori_motion {
     const ori_mechanism *m;
@@ -196,10 +207,19 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
     bool have_prev = false;
     leg_result result = LEG_OK;
     bool singular_first = false;
+    // A regular start has a unique first-order motion of the drive and loops whose equations
+    // are independent there. Otherwise (rank-deficient, the drive cannot move at first order,
+    // or some loop has equations that first order cannot satisfy — a flat vertex, a hole loop)
+    // the second-order analysis decides.
     int nul = ori__kin_solver_nullity(c->solver, c->th);
+    if (nul == 0 && ori__kin_tangent(c->solver, c->th, t) &&
+        ori__kin_tangent_defect(c->solver, c->th, t) > ORI_TOL_CONE_REL)
+        nul = 1;
+    if (nul == 0 && ori__kin_loops_deficient(m, c->th, c->col, c->jd)) nul = 1;
     if (nul > 0) {
         int extra = 0;
         kin_cone_result cr = ori__kin_cone(m, c->th, c->col, c->ncols, c->jd, sg, false, t, &extra);
+
         if (cr == KIN_CONE_NONE || cr == KIN_CONE_INCOMPATIBLE) {
             c->incompatible = cr == KIN_CONE_INCOMPATIBLE;
             result = LEG_NONE;
@@ -245,7 +265,9 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
             }
         } else {
             if (!(singular_first && first) && !ori__kin_tangent(c->solver, c->th, t)) {
-                result = LEG_BLOCKED;
+                bool at_start = singular_first && fabs(s - s_start) < ORI_KIN_ESCAPE_RAD;
+                result = first || at_start ? LEG_NONE : LEG_BLOCKED;
+                c->blocked_at = s;
                 break;
             }
             for (int j = 0; j < J; ++j) {
@@ -265,7 +287,7 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
         c->mo->stats.newton_iterations += its;
         double move = 0.0;
         for (int j = 0; j < J; ++j) move = fmax(move, fabs(trial[j] - pred[j]));
-        bool accept = ok && move <= 0.5 * hh * tn + 1e2 * ORI_TOL_FOLD_SIGN_RAD;
+        bool accept = ok && move <= ORI_KIN_MAX_CORRECTION * hh * tn + ORI_KIN_CORRECTION_SLACK_RAD;
         for (int j = 0; j < J && accept; ++j)
             if (!(fabs(trial[j]) <= ORI_PI + ORI_TOL_FOLD_SIGN_RAD) && c->col[j] >= 0) accept = false;
         if (!accept) {
@@ -275,7 +297,10 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
             memcpy(hist, c->th, sizeof(double) * (size_t)J);
             hs[0] = s;
             if (h < ORI_KIN_MIN_STEP_RAD) {
-                result = first ? LEG_NONE : LEG_BLOCKED;
+                // Stuck right at a singular start: the second-order tangent was spurious (the
+                // motion does not exist beyond second order), so there is no motion at all.
+                bool at_start = singular_first && fabs(s - s_start) < ORI_KIN_ESCAPE_RAD;
+                result = first || at_start ? LEG_NONE : LEG_BLOCKED;
                 c->blocked_at = s;
                 break;
             }
@@ -318,7 +343,7 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
             if (target == s1) break;
             k_out++;
             target = s_start + sg * step_out * k_out; // the grid from + k·step, no drift
-            if ((target - s1) * sg >= 0.0 || fabs(target - s1) < 1e-3 * step_out) target = s1;
+            if ((target - s1) * sg >= 0.0 || fabs(target - s1) < ORI_KIN_GRID_MERGE * step_out) target = s1;
         }
     }
 done:
@@ -410,7 +435,7 @@ static leg_result analytic_leg(ctx *c, double s1, double step_out, bool rec)
             if (target == s1) break;
             k_out++;
             target = s_start + sg * step_out * k_out;
-            if ((target - s1) * sg >= 0.0 || fabs(target - s1) < 1e-3 * step_out) target = s1;
+            if ((target - s1) * sg >= 0.0 || fabs(target - s1) < ORI_KIN_GRID_MERGE * step_out) target = s1;
         }
     }
     return LEG_OK;
@@ -683,8 +708,8 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
                      "but their fold-angle relations contradict each other around a closed loop of faces");
         else
             snprintf(mo->reason, sizeof mo->reason,
-                     "no rigid motion moves crease %d from the start state: the loop conditions (to second order "
-                     "at the vertices) admit no motion of it in this direction",
+                     "no rigid motion moves crease %d from the start state: the loop-closure conditions (to "
+                     "second order) admit no motion of it in this direction",
                      def->driven_edge);
         mo->nframes = 0;
     } else if (lr == LEG_UNDER) {
@@ -787,7 +812,7 @@ bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int 
             if (cr != KIN_CONE_FOUND && cr != KIN_CONE_VIOLATING) continue;
             kin_solver_opts opts = {ORI_LINEAR_AUTO, true};
             kin_solver *s = ori__kin_solver_create(m, col, n, jd, &opts);
-            for (double h = ORI_KIN_PROBE_STEP_RAD; h > 1e-4 && !found; h *= 0.5) {
+            for (double h = ORI_KIN_PROBE_STEP_RAD; h > ORI_KIN_PROBE_MIN_STEP_RAD && !found; h *= 0.5) {
                 for (int j = 0; j < J; ++j) th_out[j] = th[j] + h * v[j];
                 int its;
                 double res;

@@ -27,6 +27,7 @@ struct kin_solver {
     double *th_eval; // the state of the last evaluation
     bool eval_valid;
     double eval_r;
+    bool jac_valid; // blocks, jd (and the dense matrix) are of the last evaluated state
     // dense
     double *a, *rhs, *sv;
     // sparse: symmetric JᵀJ in a fixed pattern
@@ -200,16 +201,29 @@ bool ori__kin_solver_sparse(const kin_solver *s) { return s->sparse; }
 
 // --- evaluation ----------------------------------------------------------------------------
 
-// Evaluate residual and Jacobian blocks at th (skipped when th is the last evaluated state);
-// the dense path scatters J_F into its matrix. Returns the max-norm of P − I.
-static double evaluate(kin_solver *s, const double *th)
+// Residual at th (cached for the last evaluated state). The Jacobian is computed on demand
+// (jacobian()): a converged corrector needs no Jacobian at its last state.
+static double residual_at(kin_solver *s, const double *th)
 {
     const ori_mechanism *m = s->m;
     if (s->eval_valid && memcmp(s->th_eval, th, sizeof(double) * (size_t)m->joint_count) == 0) return s->eval_r;
-    double r = ori__kin_eval(m, th, s->res, s->blocks, s->rot);
+    double r = ori__kin_eval(m, th, s->res, NULL, s->rot);
     memcpy(s->th_eval, th, sizeof(double) * (size_t)m->joint_count);
     s->eval_valid = true;
+    s->jac_valid = false;
     s->eval_r = r;
+    return r;
+}
+
+// Residual and Jacobian blocks at th; the dense path scatters J_F into its matrix. Returns the
+// max-norm of P − I.
+static double evaluate(kin_solver *s, const double *th)
+{
+    const ori_mechanism *m = s->m;
+    double r = residual_at(s, th);
+    if (s->jac_valid) return r;
+    ori__kin_eval(m, th, s->res, s->blocks, s->rot);
+    s->jac_valid = true;
     s->factor_current = false;
     for (int k = 0; k < s->rows; ++k) s->jd[k] = 0.0;
     if (!s->sparse)
@@ -332,7 +346,9 @@ bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, 
     // Retry an old factor now and then: conditioning improves away from the flat state.
     if (s->sparse && !s->stale_ok && s->calls % ORI_KIN_STALE_RETRY != 0) s->refactor = true;
     for (;; ++it) {
-        r = evaluate(s, th);
+        // The first state of a call almost always needs a Newton step: evaluate everything at
+        // once. Later states are checked first and differentiated only if not converged.
+        r = it == 0 ? evaluate(s, th) : residual_at(s, th);
         if (it == 0) r0 = r;
         if (r <= ORI_TOL_NEWTON) {
             converged = true;
@@ -352,13 +368,14 @@ bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, 
             if (r > ORI_KIN_CHORD_RATE * prev) s->refactor = true;
             if (r > prev) {
                 for (int k = 0; k < s->ncols; ++k) th[free_joint[k]] -= step[k];
-                r = evaluate(s, th);
+                r = residual_at(s, th);
             }
-        } else if (it > 0 && (r > 4.0 * prev || r > 1e2 * r0)) {
+        } else if (it > 0 && (r > ORI_KIN_GROWTH_STEP * prev || r > ORI_KIN_GROWTH_TOTAL * r0)) {
             break; // a Newton step must not grow the residual
         }
         if (it >= max_iter || s->ncols == 0) break;
         prev = r;
+        evaluate(s, th);
         for (int k = 0; k < s->rows; ++k) neg[k] = -s->res[k];
         bool ok = s->sparse ? sparse_step(s, neg, step, false) : dense_solve(s, neg, step);
         step_fresh = !s->sparse || s->fresh;
@@ -393,6 +410,26 @@ bool ori__kin_tangent(kin_solver *s, const double *th, double *t)
     ori__free(neg);
     ori__free(x);
     return ok;
+}
+
+double ori__kin_tangent_defect(kin_solver *s, const double *th, const double *t)
+{
+    const ori_mechanism *m = s->m;
+    evaluate(s, th);
+    double worst = 0.0, scale = 0.0;
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        for (int q = 0; q < L->rows; ++q) {
+            double acc = 0.0;
+            for (int c = 0; c < L->col_count; ++c) {
+                int j = m->loop_cols[L->col_first + c];
+                acc += s->blocks[6 * (L->col_first + c) + q] * t[j];
+            }
+            worst = fmax(worst, fabs(acc));
+            scale = fmax(scale, fabs(s->jd[L->row0 + q]));
+        }
+    }
+    return scale > 0.0 ? worst / scale : worst;
 }
 
 int ori__kin_solver_nullity(kin_solver *s, const double *th)
