@@ -11,14 +11,14 @@
 /// ori_mechanism_bone_count, ori_mechanism_bone, ori_mechanism_spanning_tree,
 /// ori_mechanism_face_poses, ori_mechanism_vertex_positions, ori_mechanism_residual,
 /// ori_mechanism_face_pose_from_coords, ori_default_dof_def, ori_mechanism_dof,
-/// ori_default_motion_def, ori_motion_solve, ori_motion_destroy, ori_motion_verdict,
+/// ori_default_motion_def, ori_motion_solve, ori_motion_destroy, ori_motion_verdict_of,
 /// ori_motion_verdict_name, ori_motion_reason, ori_motion_violation_count,
 /// ori_motion_violation, ori_motion_frame_count, ori_motion_frame_drive,
 /// ori_motion_frame_angles, ori_motion_frame_residual, ori_motion_frame_face_poses,
 /// ori_motion_frame_vertices, ori_motion_frame_end_effector, ori_motion_fixed_face,
-/// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats, ori_motion_dof,
-/// ori_default_fit_def, ori_fit_solve, ori_fit_destroy, ori_fit_crease_count, ori_fit_crease,
-/// ori_fit_coefficients, ori_fit_eval.
+/// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats_of, ori_motion_dof,
+/// ori_default_fit_def, ori_fit_solve, ori_fit_destroy, ori_fit_crease_count,
+/// ori_fit_crease_of, ori_fit_sample_count, ori_fit_coefficients, ori_fit_eval.
 ///
 /// Frames and signs. The reference configuration is the flat sheet in z = 0 with faces
 /// counter-clockwise seen from +z. Joint angles are FOLD fold angles in radians (positive =
@@ -97,6 +97,7 @@ ORI_API ori_status ori_mechanism_create(const ori_mechanism_def *def, ori_mechan
 /// Destroy a mechanism; NULL is a no-op.
 ORI_API void ori_mechanism_destroy(ori_mechanism *mechanism);
 
+/// Number of vertices and edges (those of the pattern).
 ORI_API int ori_mechanism_vertex_count(const ori_mechanism *mechanism);
 ORI_API int ori_mechanism_edge_count(const ori_mechanism *mechanism);
 /// Number of faces = number of rigid bodies.
@@ -285,12 +286,14 @@ typedef struct ori_motion ori_motion;
 
 /// Solve a fold. Run-time errors (bad face/edge index in element, locked driven crease, angle
 /// out of range, step ≤ 0, start state not closing) return a status; a solved fold returns
-/// ORI_OK with a verdict (a domain answer, possibly negative). Destroy with ori_motion_destroy.
+/// ORI_OK with a verdict (a domain answer, possibly negative). The motion refers to the
+/// mechanism (poses, vertices): destroy it first. Destroy with ori_motion_destroy.
 ORI_API ori_status ori_motion_solve(const ori_mechanism *mechanism, const ori_motion_def *def,
                                     ori_motion **out, ori_error *error);
 /// Destroy a motion; NULL is a no-op.
 ORI_API void ori_motion_destroy(ori_motion *motion);
 
+/// The verdict of a solved fold.
 ORI_API ori_motion_verdict ori_motion_verdict_of(const ori_motion *motion);
 /// "valid", "invalid assignment", "not rigidly foldable", "underdetermined", "blocked".
 ORI_API const char *ori_motion_verdict_name(ori_motion_verdict verdict);
@@ -298,6 +301,7 @@ ORI_API const char *ori_motion_verdict_name(ori_motion_verdict verdict);
 ORI_API const char *ori_motion_reason(const ori_motion *motion);
 /// Creases that fold against their assignment (invalid motions), worst first by edge index.
 ORI_API int ori_motion_violation_count(const ori_motion *motion);
+/// A violation by value (index < ori_motion_violation_count).
 ORI_API ori_fold_violation ori_motion_violation(const ori_motion *motion, int index);
 
 /// Output frames: the start (from) state, one per step, the last at to_rad. May be fewer when
@@ -317,10 +321,12 @@ ORI_API void ori_motion_frame_vertices(const ori_motion *motion, int frame, ori_
 /// motion has no split.
 ORI_API bool ori_motion_frame_end_effector(const ori_motion *motion, int frame, ori_v3 *in_a,
                                            ori_v3 *in_b);
+/// The fixed face of the fold and its world pose (as given in the def).
 ORI_API int ori_motion_fixed_face(const ori_motion *motion);
 ORI_API ori_rigid ori_motion_fixed_pose(const ori_motion *motion);
 /// The Frame A / Frame B / surrounding split of a single-vertex fold; false when there is none.
 ORI_API bool ori_motion_split(const ori_motion *motion, ori_vertex_split *out);
+/// Solver statistics.
 ORI_API ori_motion_stats ori_motion_stats_of(const ori_motion *motion);
 /// DOF of the free mechanism (no locks, no drive) at the last frame (dense or sparse rank);
 /// −1 when there is no frame.
@@ -355,8 +361,11 @@ typedef struct ori_fit ori_fit;
 /// fold must be valid: otherwise ORI_ERR_ARGUMENT with the verdict's reason in the message.
 ORI_API ori_status ori_fit_solve(const ori_mechanism *mechanism, const ori_fit_def *def,
                                  ori_fit **out, ori_error *error);
+/// Destroy a fit; NULL is a no-op.
 ORI_API void ori_fit_destroy(ori_fit *fit);
+/// Number of fitted (constrained) creases.
 ORI_API int ori_fit_crease_count(const ori_fit *fit);
+/// A fitted crease by value.
 ORI_API ori_fit_crease ori_fit_crease_of(const ori_fit *fit, int index);
 /// Samples used for the fit.
 ORI_API int ori_fit_sample_count(const ori_fit *fit);
