@@ -69,7 +69,6 @@ static int run(int argc, char **argv)
         json_object_set_new(out, "sigma_cut", json_real(r.sigma_cut));
         json_object_set_new(out, "loops", json_integer(ori_mechanism_loop_count(k.mech)));
         cli_print_json(out);
-        printf("\n");
     } else {
         printf("file               %s (angles from frame %d)\n", path, frame);
         printf("bodies, joints     %d faces, %d creases, %d loops\n", ori_mechanism_face_count(k.mech),

@@ -69,7 +69,6 @@ static int run(int argc, char **argv)
         }
         json_object_set_new(out, "creases", arr);
         cli_print_json(out);
-        printf("\n");
     } else {
         printf("%s: transfer functions of crease %d, %g to %g deg, degree %d, %d samples (step %g deg)\n", a.path,
                a.drive, from, a.to_deg, d, ori_fit_sample_count(fit), a.step_deg);

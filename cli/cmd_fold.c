@@ -70,7 +70,7 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     }
     json_t *off = json_array();
     for (int i = 0; i < ori_motion_violation_count(mo); ++i) {
-        ori_fold_violation fv = ori_motion_violation(mo, i);
+        ori_crease_violation fv = ori_motion_violation(mo, i);
         char as[2] = {ori_assignment_to_char(fv.assignment), '\0'};
         json_array_append_new(off, json_pack("{s:i,s:s,s:f,s:f}", "edge", fv.edge, "assignment", as, "angle_deg",
                                              cli_deg(fv.angle_rad), "at_drive_deg", cli_deg(fv.drive_rad)));
@@ -96,7 +96,6 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
                                   "newton_iterations", st.newton_iterations, "factorizations", st.factorizations,
                                   "max_residual", st.max_residual));
     cli_print_json(out);
-    printf("\n");
 }
 
 static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo)

@@ -276,7 +276,7 @@ Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
         cr_assert(strstr(why, want), "%s", why);
         cr_assert_eq(ori_motion_violation_count(mo), 3);
         for (int i = 0; i < 3; ++i) {
-            ori_fold_violation v = ori_motion_violation(mo, i);
+            ori_crease_violation v = ori_motion_violation(mo, i);
             double want_deg = v.edge == c.up ? -60.0 : v.edge == c.right ? -asin(1 / sqrt(3.0)) / DEG : asin(1 / sqrt(3.0)) / DEG;
             cr_assert(v.edge == c.up || v.edge == c.right || v.edge == c.left);
             cr_assert_float_eq(v.angle_rad / DEG, want_deg, 1e-9);

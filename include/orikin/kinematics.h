@@ -243,12 +243,12 @@ typedef enum ori_motion_verdict {
 } ori_motion_verdict;
 
 /// A crease folding against its assignment: the worst angle it reaches and where.
-typedef struct ori_fold_violation {
+typedef struct ori_crease_violation {
     int edge;
     ori_assignment assignment;
     double angle_rad; ///< the angle of largest magnitude with the wrong sign
     double drive_rad; ///< driven-crease angle at which it occurs
-} ori_fold_violation;
+} ori_crease_violation;
 
 /// The thesis' split of a single-vertex fold (ch. 4.6, 9.4): Frame A = [driven crease, the
 /// end-effector crease] (forward chain), Frame B = the inverse chain from the ground to the
@@ -302,7 +302,7 @@ ORI_API const char *ori_motion_reason(const ori_motion *motion);
 /// Creases that fold against their assignment (invalid motions), worst first by edge index.
 ORI_API int ori_motion_violation_count(const ori_motion *motion);
 /// A violation by value (index < ori_motion_violation_count).
-ORI_API ori_fold_violation ori_motion_violation(const ori_motion *motion, int index);
+ORI_API ori_crease_violation ori_motion_violation(const ori_motion *motion, int index);
 
 /// Output frames: the start (from) state, one per step, the last at to_rad. May be fewer when
 /// the verdict is BLOCKED, and 0 for NOT_RIGIDLY_FOLDABLE and UNDERDETERMINED.

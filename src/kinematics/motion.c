@@ -49,7 +49,7 @@ struct ori_motion {
     int driven_edge;
     ori_motion_verdict verdict;
     char reason[1024];
-    ori_fold_violation *viol;
+    ori_crease_violation *viol;
     int nviol;
     int nframes, frame_cap;
     double *drive;
@@ -687,11 +687,11 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
     for (int j = 0; j < J; ++j)
         if (c.worst[j] != 0.0) mo->nviol++;
     if (mo->nviol) {
-        mo->viol = ori__alloc(sizeof(ori_fold_violation) * (size_t)mo->nviol);
+        mo->viol = ori__alloc(sizeof(ori_crease_violation) * (size_t)mo->nviol);
         int k = 0;
         for (int j = 0; j < J; ++j)
             if (c.worst[j] != 0.0) {
-                ori_fold_violation v;
+                ori_crease_violation v;
                 v.edge = m->joints[j].edge;
                 v.assignment = m->joints[j].assignment;
                 v.angle_rad = c.worst[j];
@@ -725,7 +725,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
             snprintf(mo->reason, sizeof mo->reason, "the driven crease %d is assigned %s but is driven to %g°",
                      def->driven_edge, ori_assignment_name(m->joints[jd].assignment), deg(s_to));
         for (int k = 0; k < mo->nviol; ++k) {
-            const ori_fold_violation *v = &mo->viol[k];
+            const ori_crease_violation *v = &mo->viol[k];
             char buf[200];
             snprintf(buf, sizeof buf, "%screase %d (assigned %s) would fold to %.10g°", mo->reason[0] ? "; " : "",
                      v->edge, ori_assignment_name(v->assignment), deg(v->angle_rad));
@@ -850,7 +850,7 @@ const char *ori_motion_reason(const ori_motion *mo)
 
 int ori_motion_violation_count(const ori_motion *mo) { ORI_ASSERT(mo); return mo->nviol; }
 
-ori_fold_violation ori_motion_violation(const ori_motion *mo, int i)
+ori_crease_violation ori_motion_violation(const ori_motion *mo, int i)
 {
     ORI_ASSERT(mo && i >= 0 && i < mo->nviol);
     return mo->viol[i];
