@@ -85,6 +85,13 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
         for (int e = 0; e < E; ++e) json_array_append_new(angs, json_real(cli_deg(ang[e])));
         json_object_set_new(fr, "fold_angles_deg", angs);
         json_object_set_new(fr, "residual", json_real(ori_motion_frame_residual(mo, f)));
+        double *alt = malloc(sizeof(double) * (size_t)(E + 1));
+        if (ori_motion_frame_other_branch(mo, f, alt)) {
+            json_t *oth = json_array();
+            for (int e = 0; e < E; ++e) json_array_append_new(oth, json_real(cli_deg(alt[e])));
+            json_object_set_new(fr, "other_branch_deg", oth);
+        }
+        free(alt);
         ori_v3 ea, eb;
         if (ori_motion_frame_end_effector(mo, f, &ea, &eb))
             json_object_set_new(fr, "end_effector", json_pack("{s:o,s:o}", "frame_a", v3_json(ea), "frame_b", v3_json(eb)));
@@ -243,7 +250,8 @@ const cli_command cli_cmd_fold = {
     "  --linear L      numeric solver's linear algebra: auto (default), dense or sparse\n"
     "  --json          print {valid, verdict, reason, rigidly_foldable, dof, grubler, solver,\n"
     "                  frame_a, frame_b, surrounding, split, offending_edges, frames:\n"
-    "                  [{drive_deg, fold_angles_deg, residual, end_effector}], stats}\n"
+    "                  [{drive_deg, fold_angles_deg, residual, other_branch_deg, end_effector}],\n"
+    "                  stats}\n"
     "  -o OUT.fold     write FILE with every step appended as a folded-form frame (only when\n"
     "                  the fold is valid)\n"
     "\n"

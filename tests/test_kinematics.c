@@ -177,6 +177,18 @@ Test(kinematics, open_corner_first_fold_closed_form)
     ori_motion *mo = solve(c.m, &d);
     cr_assert(ori_motion_stats_of(mo).analytic);
     check_first_fold_at_90(&c, mo);
+    // Every branch: the spherical 4R's other solution at Θ1 = 90° has up = −60° and right,
+    // left = ∓(180° − asin(1/√3)) (the thesis' second pair (−60°, −35.5°) in its own angle
+    // convention for Θ4); it folds the valleys up and right as mountains: rejected.
+    double other[13];
+    cr_assert_not(ori_motion_frame_other_branch(mo, 0, other));
+    cr_assert(ori_motion_frame_other_branch(mo, ori_motion_frame_count(mo) - 1, other));
+    double t4 = 180.0 - asin(1.0 / sqrt(3.0)) / DEG;
+    cr_assert_float_eq(other[c.up] / DEG, -60.0, 1e-9);
+    cr_assert_float_eq(other[c.right] / DEG, -t4, 1e-9);
+    cr_assert_float_eq(other[c.left] / DEG, t4, 1e-9);
+    cr_assert_float_eq(other[c.diag] / DEG, 90.0, 1e-12);
+    cr_assert_leq(ori_mechanism_residual(c.m, other), ORI_TOL_RESIDUAL);
     check_frames(c.m, c.p, mo);
     cr_assert_eq(ori_motion_dof(mo), 2);
     ori_motion_destroy(mo);

@@ -15,7 +15,7 @@
 /// ori_motion_verdict_name, ori_motion_reason, ori_motion_violation_count,
 /// ori_motion_violation, ori_motion_frame_count, ori_motion_frame_drive,
 /// ori_motion_frame_angles, ori_motion_frame_residual, ori_motion_frame_face_poses,
-/// ori_motion_frame_vertices, ori_motion_frame_end_effector, ori_motion_fixed_face,
+/// ori_motion_frame_vertices, ori_motion_frame_other_branch, ori_motion_frame_end_effector, ori_motion_fixed_face,
 /// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats_of, ori_motion_dof,
 /// ori_default_fit_def, ori_fit_solve, ori_fit_destroy, ori_fit_crease_count,
 /// ori_fit_crease_of, ori_fit_sample_count, ori_fit_coefficients, ori_fit_eval.
@@ -317,6 +317,10 @@ ORI_API double ori_motion_frame_residual(const ori_motion *motion, int frame);
 ORI_API void ori_motion_frame_face_poses(const ori_motion *motion, int frame, ori_rigid *poses);
 /// World vertex positions of a frame (vertex_count entries).
 ORI_API void ori_motion_frame_vertices(const ori_motion *motion, int frame, ori_v3 *positions);
+/// Closed-form folds return every branch: the fold angles (edge_count entries) of the spherical
+/// 4R's other solution at the frame's drive value. False when there is none (a double root,
+/// the start frame, or the numeric solver).
+ORI_API bool ori_motion_frame_other_branch(const ori_motion *motion, int frame, double *angles_rad);
 /// End effector of a single-vertex fold in Frame A and Frame B coordinates; false when the
 /// motion has no split.
 ORI_API bool ori_motion_frame_end_effector(const ori_motion *motion, int frame, ori_v3 *in_a,

@@ -55,6 +55,8 @@ struct ori_motion {
     double *drive;
     double *angles; // nframes × edge_count
     double *residual;
+    double *alt;    // nframes × edge_count: the other closed-form branch, when has_alt[k]
+    bool *has_alt;
     bool has_split;
     ori_vertex_split split;
     ori_v3 *ee_a, *ee_b;
@@ -88,6 +90,8 @@ void ori_motion_destroy(ori_motion *mo)
     ori__free(mo->drive);
     ori__free(mo->angles);
     ori__free(mo->residual);
+    ori__free(mo->alt);
+    ori__free(mo->has_alt);
     ori__free(mo->ee_a);
     ori__free(mo->ee_b);
     ori__free(mo);
@@ -115,6 +119,8 @@ typedef struct ctx {
     double blocked_at;
     double last_residual; // residual of the last accepted state (numeric), or -1
     bool incompatible;    // NONE because the vertices' assigned branches contradict each other
+    bool has_alt;         // closed form: the other branch at the current drive value
+    double alt[3];
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -147,11 +153,22 @@ static void record(ctx *c)
         mo->drive = ori__realloc(mo->drive, sizeof(double) * (size_t)cap);
         mo->residual = ori__realloc(mo->residual, sizeof(double) * (size_t)cap);
         mo->angles = ori__realloc(mo->angles, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
+        mo->alt = ori__realloc(mo->alt, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
+        mo->has_alt = ori__realloc(mo->has_alt, sizeof(bool) * (size_t)cap);
         mo->frame_cap = cap;
     }
     int k = mo->nframes++;
     mo->drive[k] = c->th[c->jd];
     ori__kin_joints_to_edges(m, c->th, mo->angles + (size_t)k * (size_t)(m->edge_count + 1));
+    mo->has_alt[k] = c->analytic && c->has_alt;
+    if (mo->has_alt[k]) {
+        double *th = ori__alloc(sizeof(double) * (size_t)(m->joint_count + 1));
+        memcpy(th, c->th, sizeof(double) * (size_t)m->joint_count);
+        const kin_loop *L = &m->loops[c->sp.loop];
+        for (int i = 0; i < 3; ++i) th[m->entries[L->first + c->sp.free_entry[i]].joint] = c->alt[i];
+        ori__kin_joints_to_edges(m, th, mo->alt + (size_t)k * (size_t)(m->edge_count + 1));
+        ori__free(th);
+    }
     // The corrector measured the accepted state's residual; the closed form is measured here.
     double r = c->last_residual >= 0.0 ? c->last_residual : ori__kin_residual(m, c->th);
     c->last_residual = -1.0;
@@ -421,6 +438,9 @@ static leg_result analytic_leg(ctx *c, double s1, double step_out, bool rec)
             continue;
         }
         int k = choose_candidate(c, cand, nc, pred, hh);
+        c->has_alt = nc == 2;
+        if (nc == 2)
+            for (int i = 0; i < 3; ++i) c->alt[i] = cand[1 - k][i];
         for (int i = 0; i < 3; ++i) prev[i] = c->th[fj[i]];
         prev_s = s;
         have_prev = true;
@@ -886,6 +906,14 @@ void ori_motion_frame_vertices(const ori_motion *mo, int k, ori_v3 *positions)
 {
     ORI_ASSERT(mo && k >= 0 && k < mo->nframes && positions);
     ori_mechanism_vertex_positions(mo->m, ori_motion_frame_angles(mo, k), mo->fixed_face, mo->fixed_pose, positions);
+}
+
+bool ori_motion_frame_other_branch(const ori_motion *mo, int k, double *angles_rad)
+{
+    ORI_ASSERT(mo && k >= 0 && k < mo->nframes);
+    if (!mo->has_alt || !mo->has_alt[k]) return false;
+    if (angles_rad) memcpy(angles_rad, mo->alt + (size_t)k * (size_t)(mo->edge_count + 1), sizeof(double) * (size_t)mo->edge_count);
+    return true;
 }
 
 bool ori_motion_frame_end_effector(const ori_motion *mo, int k, ori_v3 *in_a, ori_v3 *in_b)
