@@ -153,7 +153,7 @@ static void record(ctx *c)
         mo->drive = ori__realloc(mo->drive, sizeof(double) * (size_t)cap);
         mo->residual = ori__realloc(mo->residual, sizeof(double) * (size_t)cap);
         mo->angles = ori__realloc(mo->angles, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
-        mo->alt = ori__realloc(mo->alt, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
+        if (c->analytic) mo->alt = ori__realloc(mo->alt, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
         mo->has_alt = ori__realloc(mo->has_alt, sizeof(bool) * (size_t)cap);
         mo->frame_cap = cap;
     }
