@@ -44,6 +44,33 @@
 /// (it is not counted as folding against its assignment). Radians.
 #define ORI_TOL_FOLD_SIGN_RAD 1e-9
 
+/// Start states read from files (rounded fold angles) whose loops close within this are
+/// projected onto the exact loop-closure manifold before solving; beyond it they are rejected.
+/// Unitless (max-norm of P − I, translations relative to the diagonal).
+#define ORI_TOL_START_RESIDUAL 1e-6
+
+/// Sparse rank decisions (DOF of large patterns, singular-start test of the sparse solver): a
+/// singular value below this × the largest counts as zero. Coarser than ORI_TOL_RANK_REL because
+/// the sparse methods work with JᵀJ, whose condition is the square of J's. Unitless.
+#define ORI_TOL_RANK_REL_SPARSE 1e-7
+
+/// Branch analysis at singular states (second-order cone): a coefficient of a quadratic form
+/// below this × its largest coefficient is zero, and the tangent equations hold when their
+/// residual is below this × |v|². Unitless.
+#define ORI_TOL_CONE_REL 1e-9
+
+/// Closed-form spherical 4R: a projection of unit axes shorter than this is degenerate (the
+/// angle it would define is indeterminate and the predicted value stands in). Unitless.
+#define ORI_TOL_AXIS_DEGENERATE 1e-12
+
+/// Closed-form spherical 4R: |C/√(A²+B²)| up to 1 + this is a double root (clamped to ±1),
+/// beyond it the drive value is unreachable. Unitless.
+#define ORI_TOL_BRANCH_MERGE 1e-9
+
+/// A face whose vertices a rigid motion of the flat face misses by more than this × the
+/// diagonal is not rigidly placed (pose of the fixed face from folded coordinates). Unitless.
+#define ORI_TOL_POSE_FIT_REL 1e-6
+
 /// Geometric constructions (axioms): a discriminant or denominator below this × the square
 /// of the input scale counts as zero (parallel lines, tangency). Unitless.
 #define ORI_TOL_CONSTRUCTION_REL 1e-12

@@ -1,0 +1,117 @@
+// Miura-ori scenario: an R×C Miura-ori folded by its middle zigzag crease from 5° to 175° in
+// 100 output steps (numeric continuation, sparse CHOLMOD corrector above
+// ORI_MOTION_DENSE_MAX_UNKNOWNS creases). The 5° start state is reached first from the flat
+// sheet (second-order branch analysis at the singular flat state) and reported separately.
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "bench.h"
+#include <orikin/kinematics.h>
+
+// Vertex (i, j) at (i·w + (j odd ? d : 0), j·h): straight creases along x, zigzag creases along
+// y. Zigzag lines alternate M/V with i; straight creases alternate along their line.
+static ori_pattern *miura(int rows, int cols, double w, double d, double h)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    for (int j = 0; j <= rows; ++j)
+        for (int i = 0; i <= cols; ++i) ori_pattern_add_vertex(p, ori_v3_make(i * w + ((j & 1) ? d : 0.0), j * h, 0.0));
+#define VID(i, j) ((j) * (cols + 1) + (i))
+    for (int j = 0; j <= rows; ++j)
+        for (int i = 0; i < cols; ++i)
+            ori_pattern_add_edge(p, VID(i, j), VID(i + 1, j),
+                                 (j == 0 || j == rows) ? ORI_ASSIGN_BOUNDARY
+                                 : ((i + j) & 1)       ? ORI_ASSIGN_VALLEY
+                                                       : ORI_ASSIGN_MOUNTAIN,
+                                 0.0);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i <= cols; ++i)
+            ori_pattern_add_edge(p, VID(i, j), VID(i, j + 1),
+                                 (i == 0 || i == cols) ? ORI_ASSIGN_BOUNDARY
+                                 : (i & 1)             ? ORI_ASSIGN_MOUNTAIN
+                                                       : ORI_ASSIGN_VALLEY,
+                                 0.0);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < cols; ++i) {
+            int f[4] = {VID(i, j), VID(i + 1, j), VID(i + 1, j + 1), VID(i, j + 1)};
+            ori_pattern_add_face(p, f, 4);
+        }
+    ori_error err;
+    if (ori_pattern_build(p, NULL, &err) != ORI_OK) {
+        ori_pattern_destroy(p);
+        return NULL;
+    }
+    return p;
+#undef VID
+}
+
+// CPU time of this process (seconds): steadier than wall time on a shared machine.
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int one(int n)
+{
+    ori_pattern *p = miura(n, n, 1.0, 0.5, 1.0);
+    if (!p) return 1;
+    ori_mechanism_def md = ori_default_mechanism_def();
+    md.pattern = p;
+    ori_mechanism *m = NULL;
+    ori_error err;
+    if (ori_mechanism_create(&md, &m, &err) != ORI_OK) return 1;
+    int i = n / 2, j = n / 2;
+    int drive = ori_pattern_find_edge(p, j * (n + 1) + i, (j + 1) * (n + 1) + i);
+    double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    // Setup: flat → 5°.
+    ori_alloc_reset_peak();
+    double t0 = bench_now();
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = drive;
+    d.to_rad = sg * ori_deg_to_rad(5.0);
+    d.step_rad = ori_deg_to_rad(5.0);
+    ori_motion *start = NULL;
+    if (ori_motion_solve(m, &d, &start, &err) != ORI_OK || ori_motion_verdict_of(start) != ORI_MOTION_VALID) return 1;
+    double t1 = bench_now();
+    // The measured fold: 5° → 175° in 100 output steps.
+    d.start_angles_rad = ori_motion_frame_angles(start, ori_motion_frame_count(start) - 1);
+    d.to_rad = sg * ori_deg_to_rad(175.0);
+    d.step_rad = ori_deg_to_rad(170.0 / 100.0);
+    ori_alloc_reset_peak();
+    int64_t base = ori_alloc_live_bytes();
+    double t2 = bench_now(), c2 = cpu_now();
+    ori_motion *mo = NULL;
+    if (ori_motion_solve(m, &d, &mo, &err) != ORI_OK) return 1;
+    double t3 = bench_now(), c3 = cpu_now();
+
+    ori_motion_stats st = ori_motion_stats_of(mo);
+    printf("   %3dx%-3d %5d creases: flat->5deg %.3f s; 5->175deg %.3f s wall (%.3f s CPU), %d frames, %d steps "
+           "(%d rejected), %d Newton its, %d factorizations, max residual %.1e, dof %d, %s; heap peak %.1f MB, "
+           "RSS peak %.1f MB\n",
+           n, n, ori_mechanism_joint_count(m), t1 - t0, t3 - t2, c3 - c2, ori_motion_frame_count(mo), st.steps,
+           st.rejected_steps, st.newton_iterations, st.factorizations, st.max_residual, ori_motion_dof(mo),
+           ori_motion_verdict_name(ori_motion_verdict_of(mo)), (double)(ori_alloc_peak_bytes() - base) / 1e6,
+           (double)bench_peak_rss() / 1e6);
+    fflush(stdout);
+    int bad = ori_motion_verdict_of(mo) != ORI_MOTION_VALID;
+    ori_motion_destroy(mo);
+    ori_motion_destroy(start);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    return bad;
+}
+
+static int run(void)
+{
+    int sizes[3] = {10, 32, 100};
+    int bad = 0;
+    for (int k = 0; k < 3; ++k) bad |= one(sizes[k]);
+    return bad;
+}
+
+const bench_scenario bench_miura = {"miura", "Miura-ori RxC folded 5 to 175 deg in 100 output steps", run};

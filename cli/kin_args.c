@@ -1,0 +1,203 @@
+// Shared pieces of the kinematics commands: loading, the fold options, degrees.
+#include "kin_args.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+double cli_deg(double rad)
+{
+    double d = ori_rad_to_deg(rad);
+    double r = nearbyint(d);
+    return fabs(d - r) <= ORI_TOL_PRINT_DEG ? r + 0.0 : d;
+}
+
+void cli_kin_free(cli_kin *k)
+{
+    ori_mechanism_destroy(k->mech);
+    ori_pattern_destroy(k->flat);
+    ori_fold_destroy(k->doc);
+    free(k->angles);
+    free(k->coords);
+    memset(k, 0, sizeof *k);
+}
+
+int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k)
+{
+    memset(k, 0, sizeof *k);
+    k->frame = frame;
+    int rc = cli_load_pattern(cmd, path, 0, false, &k->doc, &k->flat);
+    if (rc != CLI_EXIT_OK) return rc;
+    if (ori_pattern_is_folded_form(k->flat) || ori_pattern_is_3d(k->flat)) {
+        cli_kin_free(k);
+        return cli_input_fail(cmd, path, "frame 0 is a folded form: the kinematics needs the flat crease pattern there");
+    }
+    ori_error err;
+    ori_mechanism_def md = ori_default_mechanism_def();
+    md.pattern = k->flat;
+    if (ori_mechanism_create(&md, &k->mech, &err) != ORI_OK) {
+        cli_kin_free(k);
+        return cli_input_error(cmd, path, &err);
+    }
+    int ne = ori_pattern_edge_count(k->flat), nv = ori_pattern_vertex_count(k->flat);
+    k->angles = calloc((size_t)ne + 1, sizeof(double));
+    k->coords = calloc((size_t)nv + 1, sizeof(ori_v3));
+    ori_pattern *state = k->flat;
+    ori_pattern *other = NULL;
+    if (frame != 0) {
+        int frames = ori_fold_frame_count(k->doc);
+        if (frame < 0 || frame >= frames) {
+            cli_kin_free(k);
+            return cli_input_fail(cmd, path, "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
+        }
+        ori_build_def bd = ori_default_build_def();
+        bd.check_planarity = false;
+        if (ori_fold_get_pattern(k->doc, frame, &bd, &other, &err) != ORI_OK) {
+            char buf[512];
+            ori_error_format(&err, buf, sizeof buf);
+            cli_kin_free(k);
+            return cli_input_fail(cmd, path, "frame %d: %s", frame, buf);
+        }
+        if (ori_pattern_edge_count(other) != ne || ori_pattern_vertex_count(other) != nv) {
+            ori_pattern_destroy(other);
+            cli_kin_free(k);
+            return cli_input_fail(cmd, path, "frame %d has %s from frame 0: not a state of the same pattern", frame,
+                                  "different vertices or edges");
+        }
+        state = other;
+    }
+    for (int e = 0; e < ne; ++e) k->angles[e] = ori_pattern_edge(state, e).fold_angle_rad;
+    for (int v = 0; v < nv; ++v) k->coords[v] = ori_pattern_vertex(state, v);
+    k->folded = ori_pattern_is_3d(state);
+    ori_pattern_destroy(other);
+    return CLI_EXIT_OK;
+}
+
+int cli_kin_fixed_pose(const char *cmd, const char *path, const cli_kin *k, int face, ori_rigid *pose)
+{
+    *pose = ori_rigid_identity();
+    if (!k->folded) return CLI_EXIT_OK;
+    ori_error err;
+    if (ori_mechanism_face_pose_from_coords(k->mech, face, k->coords, pose, &err) != ORI_OK)
+        return cli_input_error(cmd, path, &err);
+    return CLI_EXIT_OK;
+}
+
+static int parse_angle(const char *cmd, const char *opt, const char *v, double *out)
+{
+    if (!cli_parse_double(v, out)) return cli_usage(cmd, "%s needs an angle in degrees, got '%s'", opt, v);
+    return CLI_EXIT_OK;
+}
+
+int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->step_deg = 10.0;
+    a->solver = ORI_SOLVER_AUTO;
+    a->linear = ORI_LINEAR_AUTO;
+    a->degree = 4;
+    a->refine = 10;
+    for (int i = 1; i < argc; ++i) {
+        const char *o = argv[i];
+        const char *v = NULL;
+        int rc;
+        if (strcmp(o, "--json") == 0) {
+            a->json = true;
+            continue;
+        }
+        bool takes = strcmp(o, "--fix") == 0 || strcmp(o, "--drive") == 0 || strcmp(o, "--to") == 0 ||
+                     strcmp(o, "--from") == 0 || strcmp(o, "--step") == 0 || strcmp(o, "--lock") == 0 ||
+                     strcmp(o, "--frame") == 0 || strcmp(o, "--solver") == 0 || strcmp(o, "--linear") == 0 ||
+                     (!fit && strcmp(o, "-o") == 0) || (fit && (strcmp(o, "--degree") == 0 || strcmp(o, "--refine") == 0));
+        if (takes) {
+            v = cli_option_value(cmd, argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+        }
+        if (strcmp(o, "--fix") == 0) {
+            if (!cli_parse_int(v, &a->fix)) return cli_usage(cmd, "--fix needs a face index, got '%s'", v);
+            a->has_fix = true;
+        } else if (strcmp(o, "--drive") == 0) {
+            if (!cli_parse_int(v, &a->drive)) return cli_usage(cmd, "--drive needs an edge index, got '%s'", v);
+            a->has_drive = true;
+        } else if (strcmp(o, "--to") == 0) {
+            if ((rc = parse_angle(cmd, o, v, &a->to_deg)) != CLI_EXIT_OK) return rc;
+            a->has_to = true;
+        } else if (strcmp(o, "--from") == 0) {
+            if ((rc = parse_angle(cmd, o, v, &a->from_deg)) != CLI_EXIT_OK) return rc;
+            a->has_from = true;
+        } else if (strcmp(o, "--step") == 0) {
+            if ((rc = parse_angle(cmd, o, v, &a->step_deg)) != CLI_EXIT_OK) return rc;
+        } else if (strcmp(o, "--lock") == 0) {
+            a->lock_count = cli_parse_int_list(v, a->locks, 256);
+            if (a->lock_count < 0) return cli_usage(cmd, "--lock needs comma-separated edge indices, got '%s'", v);
+        } else if (strcmp(o, "--frame") == 0) {
+            if (!cli_parse_int(v, &a->frame) || a->frame < 0) return cli_usage(cmd, "--frame needs a frame number >= 0");
+        } else if (strcmp(o, "-o") == 0) {
+            a->out = v;
+        } else if (strcmp(o, "--solver") == 0) {
+            if (strcmp(v, "auto") == 0) a->solver = ORI_SOLVER_AUTO;
+            else if (strcmp(v, "analytic") == 0) a->solver = ORI_SOLVER_ANALYTIC;
+            else if (strcmp(v, "numeric") == 0) a->solver = ORI_SOLVER_NUMERIC;
+            else return cli_usage(cmd, "--solver is auto, analytic or numeric, got '%s'", v);
+        } else if (strcmp(o, "--linear") == 0) {
+            if (strcmp(v, "auto") == 0) a->linear = ORI_LINEAR_AUTO;
+            else if (strcmp(v, "dense") == 0) a->linear = ORI_LINEAR_DENSE;
+            else if (strcmp(v, "sparse") == 0) a->linear = ORI_LINEAR_SPARSE;
+            else return cli_usage(cmd, "--linear is auto, dense or sparse, got '%s'", v);
+        } else if (strcmp(o, "--degree") == 0) {
+            if (!cli_parse_int(v, &a->degree)) return cli_usage(cmd, "--degree needs an integer, got '%s'", v);
+        } else if (strcmp(o, "--refine") == 0) {
+            if (!cli_parse_int(v, &a->refine)) return cli_usage(cmd, "--refine needs an integer, got '%s'", v);
+        } else if (o[0] == '-' && o[1] != '\0') {
+            return cli_usage(cmd, "unknown option %s", o);
+        } else if (!a->path) {
+            a->path = o;
+        } else {
+            return cli_usage(cmd, "one FILE only");
+        }
+    }
+    if (!a->path) return cli_usage(cmd, "missing FILE");
+    if (!a->has_fix) return cli_usage(cmd, "missing --fix FACE");
+    if (!a->has_drive) return cli_usage(cmd, "missing --drive EDGE");
+    if (!a->has_to) return cli_usage(cmd, "missing --to DEG");
+    return CLI_EXIT_OK;
+}
+
+int cli_fold_def(const char *cmd, const cli_fold_args *a, const cli_kin *k, ori_motion_def *def)
+{
+    const ori_mechanism *m = k->mech;
+    int faces = ori_mechanism_face_count(m), edges = ori_mechanism_edge_count(m);
+    if (a->fix < 0 || a->fix >= faces)
+        return cli_input_fail(cmd, a->path, "faces_vertices %d: no face %d (the pattern has faces 0 to %d)", a->fix,
+                              a->fix, faces - 1);
+    if (a->drive < 0 || a->drive >= edges)
+        return cli_input_fail(cmd, a->path, "edges_vertices %d: no edge %d (the pattern has edges 0 to %d)", a->drive,
+                              a->drive, edges - 1);
+    for (int i = 0; i < a->lock_count; ++i)
+        if (a->locks[i] < 0 || a->locks[i] >= edges)
+            return cli_input_fail(cmd, a->path, "edges_vertices %d: no edge %d to lock (the pattern has edges 0 to %d)",
+                                  a->locks[i], a->locks[i], edges - 1);
+    if (!(fabs(a->to_deg) <= 180.0))
+        return cli_input_fail(cmd, a->path, "edges_foldAngle %d: --to %g is outside [-180, 180] degrees", a->drive,
+                              a->to_deg);
+    if (a->has_from && !(fabs(a->from_deg) <= 180.0))
+        return cli_input_fail(cmd, a->path, "edges_foldAngle %d: --from %g is outside [-180, 180] degrees", a->drive,
+                              a->from_deg);
+    if (!(a->step_deg > 0.0))
+        return cli_input_fail(cmd, a->path, "--step must be a positive angle in degrees, got %g", a->step_deg);
+    *def = ori_default_motion_def();
+    def->fixed_face = a->fix;
+    int rc = cli_kin_fixed_pose(cmd, a->path, k, a->fix, &def->fixed_pose);
+    if (rc != CLI_EXIT_OK) return rc;
+    def->start_angles_rad = k->angles;
+    def->driven_edge = a->drive;
+    def->has_from = a->has_from;
+    def->from_rad = ori_deg_to_rad(a->from_deg);
+    def->to_rad = ori_deg_to_rad(a->to_deg);
+    def->step_rad = ori_deg_to_rad(a->step_deg);
+    def->locked_edges = a->locks;
+    def->locked_count = a->lock_count;
+    def->solver = a->solver;
+    def->linear = a->linear;
+    return CLI_EXIT_OK;
+}

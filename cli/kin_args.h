@@ -1,0 +1,59 @@
+// Shared pieces of the kinematics commands (fold, fit, dof): loading the flat crease pattern
+// of frame 0 and the start state of a frame, parsing the fold specification, degrees.
+#ifndef ORI_CLI_KIN_ARGS_H
+#define ORI_CLI_KIN_ARGS_H
+
+#include <orikin/kinematics.h>
+
+#include "cli.h"
+
+// A loaded mechanism and a start state.
+typedef struct cli_kin {
+    ori_fold *doc;
+    ori_pattern *flat;       // frame 0 (the crease pattern)
+    ori_mechanism *mech;
+    double *angles;          // start fold angles per edge (radians), from the chosen frame
+    ori_v3 *coords;          // the chosen frame's vertex coordinates (3D for folded frames)
+    bool folded;             // the chosen frame has 3D coordinates
+    int frame;
+} cli_kin;
+
+// Load FILE: frame 0 must be a flat crease pattern (the mechanism), `frame` supplies the fold
+// angles (edges_foldAngle) and, when it is 3D, the vertex coordinates. Prints the error and
+// returns CLI_EXIT_INPUT on failure (with *k released), else CLI_EXIT_OK.
+int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k);
+void cli_kin_free(cli_kin *k);
+
+// World pose of the fixed face in the start frame: identity for a flat frame, the rigid fit of
+// its 3D vertices otherwise. Prints the error and returns CLI_EXIT_INPUT on failure.
+int cli_kin_fixed_pose(const char *cmd, const char *path, const cli_kin *k, int face, ori_rigid *pose);
+
+// The fold specification shared by fold and fit.
+typedef struct cli_fold_args {
+    const char *path;
+    int fix, drive;
+    bool has_fix, has_drive, has_to, has_from;
+    double to_deg, from_deg, step_deg;
+    int locks[256];
+    int lock_count;
+    int frame;
+    bool json;
+    const char *out;
+    ori_solver solver;
+    ori_linear linear;
+    int degree, refine;   // fit only
+} cli_fold_args;
+
+// Parse the fold options (fit adds --degree and --refine). Returns CLI_EXIT_OK, or the
+// usage exit code after printing the message.
+int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_args *a);
+
+// Check the specification against the mechanism and fill a motion def (angles from k, pose
+// from the fixed face). Prints a one-line input error naming the index and returns
+// CLI_EXIT_INPUT for bad indices/angles; else CLI_EXIT_OK.
+int cli_fold_def(const char *cmd, const cli_fold_args *a, const cli_kin *k, ori_motion_def *def);
+
+// Degrees of an angle with radian↔degree round-off removed (ORI_TOL_PRINT_DEG).
+double cli_deg(double rad);
+
+#endif

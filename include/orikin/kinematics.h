@@ -1,0 +1,386 @@
+/// orikin kinematics: the substituted mechanical system of a crease pattern (faces → rigid
+/// bodies, creases → revolute joints), poses by product of exponentials, loop closure,
+/// degrees of freedom, fold motions (analytic single-vertex inverse kinematics and numeric
+/// continuation) with branch selection by the MV assignment, and transfer-function fitting.
+///
+/// Functions: ori_default_mechanism_def, ori_mechanism_create, ori_mechanism_destroy,
+/// ori_mechanism_vertex_count, ori_mechanism_edge_count, ori_mechanism_face_count,
+/// ori_mechanism_joint_count, ori_mechanism_joint, ori_mechanism_edge_joint,
+/// ori_mechanism_loop_count, ori_mechanism_loop, ori_mechanism_loop_edges,
+/// ori_mechanism_loop_faces, ori_mechanism_vertex_faces, ori_mechanism_grubler,
+/// ori_mechanism_bone_count, ori_mechanism_bone, ori_mechanism_spanning_tree,
+/// ori_mechanism_face_poses, ori_mechanism_vertex_positions, ori_mechanism_residual,
+/// ori_mechanism_face_pose_from_coords, ori_default_dof_def, ori_mechanism_dof,
+/// ori_default_motion_def, ori_motion_solve, ori_motion_destroy, ori_motion_verdict_of,
+/// ori_motion_verdict_name, ori_motion_reason, ori_motion_violation_count,
+/// ori_motion_violation, ori_motion_frame_count, ori_motion_frame_drive,
+/// ori_motion_frame_angles, ori_motion_frame_residual, ori_motion_frame_face_poses,
+/// ori_motion_frame_vertices, ori_motion_frame_other_branch, ori_motion_frame_end_effector, ori_motion_fixed_face,
+/// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats_of, ori_motion_dof,
+/// ori_default_fit_def, ori_fit_solve, ori_fit_destroy, ori_fit_crease_count,
+/// ori_fit_crease_of, ori_fit_sample_count, ori_fit_coefficients, ori_fit_eval.
+///
+/// Frames and signs. The reference configuration is the flat sheet in z = 0 with faces
+/// counter-clockwise seen from +z. Joint angles are FOLD fold angles in radians (positive =
+/// valley, negative = mountain). A joint's axis ω runs along its edge from v[0] to v[1]
+/// through q = v[0]; face_left lies on the left of ω, and e^{ξθ} (ξ = (−ω×q, ω)) is the motion
+/// of face_left relative to face_right: θ > 0 lifts it to +z (valley), seen from either side.
+/// State vectors hold one angle per FOLD edge (edge_count entries, boundary edges ignored).
+/// Face poses map flat-sheet coordinates to world coordinates.
+#ifndef ORIKIN_KINEMATICS_H
+#define ORIKIN_KINEMATICS_H
+
+#include "base.h"
+#include "math.h"
+#include "pattern.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+// --- mechanism --------------------------------------------------------------------------
+
+/// How a crease joins its two faces.
+typedef enum ori_joint_kind {
+    ORI_JOINT_REVOLUTE = 0, ///< M, V or U crease: a revolute joint (one degree of freedom)
+    ORI_JOINT_FLAT,         ///< F crease: a revolute joint locked at 0
+    ORI_JOINT_RIGID,        ///< J edge: the two faces are one rigid body (angle 0)
+} ori_joint_kind;
+
+/// A joint: the crease of FOLD edge `edge` between face_left and face_right (flat frame).
+typedef struct ori_joint {
+    int edge;                  ///< FOLD edge index
+    int face_left;             ///< face on the left of omega (moves by e^{ξθ} relative to face_right)
+    int face_right;            ///< face on the right of omega
+    ori_v3 q;                  ///< point on the axis: the edge's vertex v[0], flat frame
+    ori_v3 omega;              ///< unit axis direction from v[0] to v[1], flat frame
+    ori_joint_kind kind;       ///< revolute, flat-locked or rigid
+    ori_assignment assignment; ///< the edge's FOLD assignment
+} ori_joint;
+
+/// A loop-closure constraint: the faces around an interior vertex (3 rotation equations), or
+/// around a hole or internal slit of the sheet (6 equations: rotation and translation).
+typedef struct ori_loop {
+    int vertex;     ///< interior vertex, or ORI_NULL_INDEX for a hole loop
+    int crease_count; ///< number of joints crossed by the loop
+    int rows;       ///< equations contributed: 3 (vertex) or 6 (hole)
+} ori_loop;
+
+/// A bone of the thesis' bone structure: the segment from a face's area centroid to the
+/// midpoint of one of its joint creases (flat frame). For display.
+typedef struct ori_bone {
+    int face;
+    int edge;
+    ori_v3 from; ///< face centroid
+    ori_v3 to;   ///< crease midpoint
+} ori_bone;
+
+/// Creation parameters; get them from ori_default_mechanism_def().
+typedef struct ori_mechanism_def {
+    const ori_pattern *pattern; ///< built flat crease pattern (z = 0); copied, not kept
+    int internal_value;         ///< set by ori_default_mechanism_def; do not change
+} ori_mechanism_def;
+
+/// Defaults: no pattern (set one).
+ORI_API ori_mechanism_def ori_default_mechanism_def(void);
+
+/// Opaque substituted mechanical system of a crease pattern.
+typedef struct ori_mechanism ori_mechanism;
+
+/// Build the mechanism of a built flat crease pattern: faces → bodies, creases → joints, one
+/// loop per interior vertex, one 6-equation loop per hole or internal slit. Fails with
+/// ORI_ERR_ARGUMENT for a 3D or folded-form pattern, ORI_ERR_TOPOLOGY (element = a face) when
+/// the faces are not all connected through creases. *out is NULL on failure; destroy the
+/// mechanism with ori_mechanism_destroy.
+ORI_API ori_status ori_mechanism_create(const ori_mechanism_def *def, ori_mechanism **out,
+                                        ori_error *error);
+/// Destroy a mechanism; NULL is a no-op.
+ORI_API void ori_mechanism_destroy(ori_mechanism *mechanism);
+
+/// Number of vertices and edges (those of the pattern).
+ORI_API int ori_mechanism_vertex_count(const ori_mechanism *mechanism);
+ORI_API int ori_mechanism_edge_count(const ori_mechanism *mechanism);
+/// Number of faces = number of rigid bodies.
+ORI_API int ori_mechanism_face_count(const ori_mechanism *mechanism);
+/// Number of joints (creases with a face on each side: M, V, U, F and J edges).
+ORI_API int ori_mechanism_joint_count(const ori_mechanism *mechanism);
+/// A joint by value.
+ORI_API ori_joint ori_mechanism_joint(const ori_mechanism *mechanism, int joint);
+/// Joint of a FOLD edge, or ORI_NULL_INDEX for boundary, cut and dangling edges.
+ORI_API int ori_mechanism_edge_joint(const ori_mechanism *mechanism, int edge);
+/// Number of loop-closure constraints (interior vertices, then holes).
+ORI_API int ori_mechanism_loop_count(const ori_mechanism *mechanism);
+/// A loop by value.
+ORI_API ori_loop ori_mechanism_loop(const ori_mechanism *mechanism, int loop);
+/// The loop's creases (FOLD edges) in order: counter-clockwise around a vertex, starting
+/// after face F0; crease i lies between faces F(i−1) and F(i). Returns the count.
+ORI_API int ori_mechanism_loop_edges(const ori_mechanism *mechanism, int loop, int *out, int cap);
+/// The loop's faces F0, F1, … (same count as its creases). Returns the count.
+ORI_API int ori_mechanism_loop_faces(const ori_mechanism *mechanism, int loop, int *out, int cap);
+/// Faces around a vertex in counter-clockwise order (the face after each edge of
+/// ori_pattern_vertex_edges; ORI_NULL_INDEX outside the sheet). Returns the vertex degree.
+ORI_API int ori_mechanism_vertex_faces(const ori_mechanism *mechanism, int vertex, int *out, int cap);
+/// Grübler–Kutzbach mobility M = 6(n_B − 1) − Σ(6 − f_i), revolute creases f = 1, F and J
+/// edges f = 0. Wrong for overconstrained mechanisms (the open corner gives −1).
+ORI_API int ori_mechanism_grubler(const ori_mechanism *mechanism);
+/// Number of bones (one per face and joint crease of that face).
+ORI_API int ori_mechanism_bone_count(const ori_mechanism *mechanism);
+/// A bone by value.
+ORI_API ori_bone ori_mechanism_bone(const ori_mechanism *mechanism, int bone);
+/// Breadth-first spanning tree of the face graph rooted at root_face: parent_face[f] and
+/// parent_edge[f] (the crease to the parent) per face, ORI_NULL_INDEX for the root. Either
+/// output may be NULL; each holds face_count entries.
+ORI_API void ori_mechanism_spanning_tree(const ori_mechanism *mechanism, int root_face,
+                                         int *parent_face, int *parent_edge);
+
+/// Pose of every face for fold angles angles_rad (edge_count entries): the product of
+/// exponentials along the spanning tree from fixed_face, g_f = G·e^{ξ1θ1}···e^{ξkθk}, with G =
+/// fixed_pose the world pose of the fixed face. poses holds face_count entries.
+ORI_API void ori_mechanism_face_poses(const ori_mechanism *mechanism, const double *angles_rad,
+                                      int fixed_face, ori_rigid fixed_pose, ori_rigid *poses);
+/// World position of every vertex (vertex_count entries) for fold angles angles_rad; each
+/// vertex takes the pose of its face nearest to fixed_face in the spanning tree.
+ORI_API void ori_mechanism_vertex_positions(const ori_mechanism *mechanism, const double *angles_rad,
+                                            int fixed_face, ori_rigid fixed_pose, ori_v3 *positions);
+/// Loop-closure residual of fold angles: max over loops of the max-norm of P − I, P the loop
+/// product (translations of hole loops divided by the pattern diagonal). Unitless.
+ORI_API double ori_mechanism_residual(const ori_mechanism *mechanism, const double *angles_rad);
+/// The rigid pose mapping a face's flat vertices onto world coordinates coords (vertex_count
+/// entries, e.g. the 3D vertices_coords of a folded frame): least-squares fit (Kabsch).
+/// Fails with ORI_ERR_DEGENERATE when the face's vertices are not rigidly placed (the fit
+/// error exceeds ORI_TOL_POSE_FIT_REL × the diagonal).
+ORI_API ori_status ori_mechanism_face_pose_from_coords(const ori_mechanism *mechanism, int face,
+                                                       const ori_v3 *coords, ori_rigid *out,
+                                                       ori_error *error);
+
+// --- degrees of freedom -----------------------------------------------------------------
+
+/// Parameters of a DOF analysis; get them from ori_default_dof_def().
+typedef struct ori_dof_def {
+    const double *angles_rad; ///< state (edge_count entries), NULL = flat
+    const int *locked_edges;  ///< creases held fixed (removed from the unknowns), may be NULL
+    int locked_count;
+    bool probe_generic;       ///< at a singular state, also find the nullity at a nearby regular state
+    int internal_value;       ///< set by ori_default_dof_def; do not change
+} ori_dof_def;
+
+/// Defaults: flat state, nothing locked, generic probe on.
+ORI_API ori_dof_def ori_default_dof_def(void);
+
+/// Degrees of freedom of the mechanism at a state.
+typedef struct ori_dof_result {
+    int grubler;       ///< Grübler–Kutzbach count (ignores locks)
+    int unknowns;      ///< revolute creases not locked (Jacobian columns)
+    int equations;     ///< loop-closure equations (Jacobian rows)
+    int rank;          ///< numerical rank of the loop-closure Jacobian at the state
+    int dof;           ///< unknowns − rank: infinitesimal DOF at the state
+    int generic_dof;   ///< DOF at a nearby regular state on the motion; −1 when not probed
+    bool singular;     ///< dof > generic_dof: the state inflates the nullity (e.g. the flat state)
+    bool rigid;        ///< the probe found no motion at all from this state (generic_dof = 0)
+    bool dense;        ///< dense SVD (true) or sparse CHOLMOD inverse iteration (false)
+    double sigma_max;  ///< largest singular value of the Jacobian
+    double sigma_cut;  ///< smallest singular value counted in the rank (0 when rank is 0)
+} ori_dof_result;
+
+/// Rank and nullity of the loop-closure Jacobian (one column per unlocked revolute crease,
+/// 3 rows per vertex loop, 6 per hole loop) at a state; rank tolerance ORI_TOL_RANK_REL
+/// relative to the largest singular value (dense, up to ORI_DOF_DENSE_MAX_ENTRIES entries)
+/// or ORI_TOL_RANK_REL_SPARSE (sparse). Fails on NaN angles or when the state does not close
+/// (residual above ORI_TOL_START_RESIDUAL).
+ORI_API ori_status ori_mechanism_dof(const ori_mechanism *mechanism, const ori_dof_def *def,
+                                     ori_dof_result *out, ori_error *error);
+
+/// Dense SVD is used while rows × columns ≤ this; larger Jacobians use the sparse method.
+#define ORI_DOF_DENSE_MAX_ENTRIES 4000000
+
+// --- fold motions ----------------------------------------------------------------------
+
+/// Which solver computes a motion.
+typedef enum ori_solver {
+    ORI_SOLVER_AUTO = 0, ///< analytic when the motion is a single spherical 4R loop, else numeric
+    ORI_SOLVER_ANALYTIC, ///< closed-form spherical 4R; ORI_ERR_UNSUPPORTED when not applicable
+    ORI_SOLVER_NUMERIC,  ///< predictor–corrector continuation
+} ori_solver;
+
+/// Linear algebra of the numeric solver.
+typedef enum ori_linear {
+    ORI_LINEAR_AUTO = 0, ///< dense below ORI_MOTION_DENSE_MAX_UNKNOWNS free creases, else sparse
+    ORI_LINEAR_DENSE,    ///< LAPACK SVD least squares
+    ORI_LINEAR_SPARSE,   ///< CHOLMOD Cholesky of JᵀJ (+λI)
+} ori_linear;
+
+/// The numeric solver switches to sparse linear algebra above this many free creases.
+#define ORI_MOTION_DENSE_MAX_UNKNOWNS 64
+
+/// A fold: fix a face, lock creases, drive one crease from its current angle (or from_rad) to
+/// to_rad, output a state every step_rad. Get it from ori_default_motion_def().
+typedef struct ori_motion_def {
+    int fixed_face;                 ///< face held in place (FOLD index)
+    ori_rigid fixed_pose;           ///< world pose of the fixed face (identity: where the flat sheet has it)
+    const double *start_angles_rad; ///< start state, edge_count fold angles (NULL = flat); copied
+    int driven_edge;                ///< the driven (twist) crease
+    bool has_from;                  ///< start the output at from_rad (reached silently first)
+    double from_rad;                ///< used when has_from
+    double to_rad;                  ///< target angle of the driven crease, |to| ≤ π
+    double step_rad;                ///< output spacing (> 0); the last step lands on to_rad
+    const int *locked_edges;        ///< creases held at their start angle (copied), may be NULL
+    int locked_count;
+    ori_solver solver;
+    ori_linear linear;
+    int internal_value;             ///< set by ori_default_motion_def; do not change
+} ori_motion_def;
+
+/// Defaults: face 0 at identity, flat start, no drive (set one), step 1°, auto solver.
+ORI_API ori_motion_def ori_default_motion_def(void);
+
+/// The answer of a fold.
+typedef enum ori_motion_verdict {
+    ORI_MOTION_VALID = 0,              ///< the motion exists and respects every assignment
+    ORI_MOTION_INVALID_ASSIGNMENT,     ///< every motion folds some crease against its assignment
+    ORI_MOTION_NOT_RIGIDLY_FOLDABLE,   ///< no rigid motion moves the driven crease from the start
+    ORI_MOTION_UNDERDETERMINED,        ///< the fold leaves more than one degree of freedom
+    ORI_MOTION_BLOCKED,                ///< the motion stops (limit or singularity) before the target
+} ori_motion_verdict;
+
+/// A crease folding against its assignment: the worst angle it reaches and where.
+typedef struct ori_crease_violation {
+    int edge;
+    ori_assignment assignment;
+    double angle_rad; ///< the angle of largest magnitude with the wrong sign
+    double drive_rad; ///< driven-crease angle at which it occurs
+} ori_crease_violation;
+
+/// The thesis' split of a single-vertex fold (ch. 4.6, 9.4): Frame A = [driven crease, the
+/// end-effector crease] (forward chain), Frame B = the inverse chain from the ground to the
+/// end-effector crease, surrounding = locked creases. Frames are translations of the world
+/// frame: origin A = far end of the driven crease, origin B = far end of Frame B's first crease,
+/// end effector = far end of the end-effector crease. q and ω at the start state, relative to
+/// the frame origin (ω oriented so that the next body of the chain lies on its left).
+typedef struct ori_vertex_split {
+    int vertex;
+    int frame_a[2];
+    int frame_b_count;
+    int frame_b[16];
+    int surrounding_count;
+    int surrounding[16];
+    int end_effector_vertex;   ///< vertex index of the end effector point
+    ori_v3 origin_a, origin_b; ///< world coordinates of the frame origins
+    ori_v3 d;                  ///< origin_b − origin_a
+    ori_v3 q_a[2], omega_a[2]; ///< Frame A chain creases
+    ori_v3 q_b[16], omega_b[16]; ///< Frame B chain creases
+} ori_vertex_split;
+
+/// Work done by the solver.
+typedef struct ori_motion_stats {
+    bool analytic;            ///< closed-form single-vertex solver used
+    bool sparse;              ///< CHOLMOD (true) or dense LAPACK (false) for the numeric solver
+    int steps;                ///< accepted continuation steps
+    int rejected_steps;       ///< steps halved after a failed correction
+    int newton_iterations;    ///< corrector iterations in total
+    int factorizations;       ///< sparse numeric factorizations
+    double max_residual;      ///< largest residual over the output frames
+} ori_motion_stats;
+
+/// Opaque result of a fold.
+typedef struct ori_motion ori_motion;
+
+/// Solve a fold. Run-time errors (bad face/edge index in element, locked driven crease, angle
+/// out of range, step ≤ 0, start state not closing) return a status; a solved fold returns
+/// ORI_OK with a verdict (a domain answer, possibly negative). The motion refers to the
+/// mechanism (poses, vertices): destroy it first. Destroy with ori_motion_destroy.
+ORI_API ori_status ori_motion_solve(const ori_mechanism *mechanism, const ori_motion_def *def,
+                                    ori_motion **out, ori_error *error);
+/// Destroy a motion; NULL is a no-op.
+ORI_API void ori_motion_destroy(ori_motion *motion);
+
+/// The verdict of a solved fold.
+ORI_API ori_motion_verdict ori_motion_verdict_of(const ori_motion *motion);
+/// "valid", "invalid assignment", "not rigidly foldable", "underdetermined", "blocked".
+ORI_API const char *ori_motion_verdict_name(ori_motion_verdict verdict);
+/// Why the fold is not valid (one line naming creases by FOLD index), or NULL when valid.
+ORI_API const char *ori_motion_reason(const ori_motion *motion);
+/// Creases that fold against their assignment (invalid motions), worst first by edge index.
+ORI_API int ori_motion_violation_count(const ori_motion *motion);
+/// A violation by value (index < ori_motion_violation_count).
+ORI_API ori_crease_violation ori_motion_violation(const ori_motion *motion, int index);
+
+/// Output frames: the start (from) state, one per step, the last at to_rad. May be fewer when
+/// the verdict is BLOCKED, and 0 for NOT_RIGIDLY_FOLDABLE and UNDERDETERMINED.
+ORI_API int ori_motion_frame_count(const ori_motion *motion);
+/// Driven-crease angle of a frame (radians).
+ORI_API double ori_motion_frame_drive(const ori_motion *motion, int frame);
+/// Fold angles of a frame (edge_count entries, radians; 0 on boundary edges). Owned by the motion.
+ORI_API const double *ori_motion_frame_angles(const ori_motion *motion, int frame);
+/// Loop-closure residual of a frame (ori_mechanism_residual).
+ORI_API double ori_motion_frame_residual(const ori_motion *motion, int frame);
+/// Face poses of a frame (face_count entries), the fixed face at the motion's fixed pose.
+ORI_API void ori_motion_frame_face_poses(const ori_motion *motion, int frame, ori_rigid *poses);
+/// World vertex positions of a frame (vertex_count entries).
+ORI_API void ori_motion_frame_vertices(const ori_motion *motion, int frame, ori_v3 *positions);
+/// Closed-form folds return every branch: the fold angles (edge_count entries) of the spherical
+/// 4R's other solution at the frame's drive value. False when there is none (a double root,
+/// the start frame, or the numeric solver).
+ORI_API bool ori_motion_frame_other_branch(const ori_motion *motion, int frame, double *angles_rad);
+/// End effector of a single-vertex fold in Frame A and Frame B coordinates; false when the
+/// motion has no split.
+ORI_API bool ori_motion_frame_end_effector(const ori_motion *motion, int frame, ori_v3 *in_a,
+                                           ori_v3 *in_b);
+/// The fixed face of the fold and its world pose (as given in the def).
+ORI_API int ori_motion_fixed_face(const ori_motion *motion);
+ORI_API ori_rigid ori_motion_fixed_pose(const ori_motion *motion);
+/// The Frame A / Frame B / surrounding split of a single-vertex fold; false when there is none.
+ORI_API bool ori_motion_split(const ori_motion *motion, ori_vertex_split *out);
+/// Solver statistics.
+ORI_API ori_motion_stats ori_motion_stats_of(const ori_motion *motion);
+/// DOF of the free mechanism (no locks, no drive) at the last frame (dense or sparse rank);
+/// −1 when there is no frame.
+ORI_API int ori_motion_dof(const ori_motion *motion);
+
+// --- transfer functions --------------------------------------------------------------
+
+/// Parameters of a transfer-function fit: the fold (motion.step_rad = sampling step) and the
+/// polynomial degree. Get them from ori_default_fit_def().
+typedef struct ori_fit_def {
+    ori_motion_def motion; ///< the fold to sample (has_from/from_rad, to_rad, step_rad)
+    int degree;            ///< polynomial degree, 0 … 12
+    int refine;            ///< error grid: step_rad / refine (≥ 1)
+    int internal_value;    ///< set by ori_default_fit_def; do not change
+} ori_fit_def;
+
+/// Defaults: degree 4 (as the thesis), refine 10.
+ORI_API ori_fit_def ori_default_fit_def(void);
+
+/// One fitted crease.
+typedef struct ori_fit_crease {
+    int edge;             ///< the constrained crease
+    double max_error_rad; ///< max |fit − exact| on the refined grid (radians)
+} ori_fit_crease;
+
+/// Opaque set of transfer functions.
+typedef struct ori_fit ori_fit;
+
+/// Sample the fold at its step, fit every constrained crease (one whose angle changes) by a
+/// polynomial in the driven angle (least squares by QR in a scaled variable, then converted
+/// to monomials), and measure the error against exact solutions on the refined grid. The
+/// fold must be valid: otherwise ORI_ERR_ARGUMENT with the verdict's reason in the message.
+ORI_API ori_status ori_fit_solve(const ori_mechanism *mechanism, const ori_fit_def *def,
+                                 ori_fit **out, ori_error *error);
+/// Destroy a fit; NULL is a no-op.
+ORI_API void ori_fit_destroy(ori_fit *fit);
+/// Number of fitted (constrained) creases.
+ORI_API int ori_fit_crease_count(const ori_fit *fit);
+/// A fitted crease by value.
+ORI_API ori_fit_crease ori_fit_crease_of(const ori_fit *fit, int index);
+/// Samples used for the fit.
+ORI_API int ori_fit_sample_count(const ori_fit *fit);
+/// Monomial coefficients c0 … c_degree of crease index: θ(x) = Σ c_k x^k, x the driven angle
+/// (radians in, radians out). Returns degree + 1.
+ORI_API int ori_fit_coefficients(const ori_fit *fit, int index, double *out, int cap);
+/// Evaluate the fitted angle (radians) of crease index at driven angle drive_rad.
+ORI_API double ori_fit_eval(const ori_fit *fit, int index, double drive_rad);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,512 @@
+// The corrector of the numeric continuation: Gauss–Newton on the stacked loop residuals with
+// the driven and locked creases eliminated (they are constants, not unknowns). Each iteration
+// solves J_F δ = −r in least squares:
+//   dense   LAPACK dgelsd (SVD, minimum norm: robust at rank-deficient states), small systems;
+//   sparse  CHOLMOD on the normal matrix JᵀJ, accumulated loop by loop (each loop couples only
+//           its own creases) into a fixed upper-triangular pattern analysed once (AMD).
+// The sparse factor is reused by later iterations and steps (chord / simplified Newton) while
+// the residual contracts faster than ORI_KIN_CHORD_RATE per iteration, and renewed otherwise.
+// Tangents solve the same normal equations with the drive column as right-hand side; they use
+// a factor renewed at the current state when the last one is older, because the predictor's
+// accuracy rests on them.
+#include <lapacke.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "kinematics_internal.h"
+
+struct kin_solver {
+    const ori_mechanism *m;
+    int *col;       // per joint: free column, KIN_FIXED or KIN_DRIVE
+    int ncols, drive, rows;
+    bool sparse, min_norm;
+    double *res;    // rows
+    double *blocks; // 6 × loop_col_total
+    double *jd;     // drive column (rows)
+    ori_m3 *rot;    // per-joint rotation scratch of the evaluation
+    double *th_eval; // the state of the last evaluation
+    bool eval_valid;
+    double eval_r;
+    bool jac_valid; // blocks, jd (and the dense matrix) are of the last evaluated state
+    // dense
+    double *a, *rhs, *sv;
+    // sparse: symmetric JᵀJ in a fixed pattern
+    kin_sls *sls;
+    int *pair_pos;  // per loop: for local free columns a ≤ b, the position in the values
+    int *pair_first; // per loop: first index into pair_pos
+    int *loop_free; // per loop: local free loop-columns (indices into the loop's columns), sorted by matrix column
+    int *loop_free_first;
+    double *g;
+    bool have_factor;   // a factor exists
+    bool factor_current; // the factor is of the Jacobian at the last evaluated state
+    bool refactor;      // renew before the next solve
+    bool fresh;         // the last solve renewed the factor
+    bool stale_ok;      // the last call converged with the previous call's factor
+    int calls;          // corrector calls so far
+    int factor_call;    // corrector call in which the factor was made
+};
+
+// --- construction -------------------------------------------------------------------------
+
+static int cmp_i64(const void *a, const void *b)
+{
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+static void build_sparse(kin_solver *s)
+{
+    const ori_mechanism *m = s->m;
+    int nl = m->loop_count;
+    s->loop_free_first = ori__alloc(sizeof(int) * ((size_t)nl + 1));
+    s->pair_first = ori__alloc(sizeof(int) * ((size_t)nl + 1));
+    int nf = 0, np = 0;
+    for (int l = 0; l < nl; ++l) {
+        const kin_loop *L = &m->loops[l];
+        int k = 0;
+        for (int c = 0; c < L->col_count; ++c) k += s->col[m->loop_cols[L->col_first + c]] >= 0;
+        s->loop_free_first[l] = nf;
+        s->pair_first[l] = np;
+        nf += k;
+        np += k * (k + 1) / 2;
+    }
+    s->loop_free_first[nl] = nf;
+    s->pair_first[nl] = np;
+    s->loop_free = ori__alloc(sizeof(int) * ((size_t)nf + 1));
+    s->pair_pos = ori__alloc(sizeof(int) * ((size_t)np + 1));
+    // Local free columns sorted by matrix column.
+    for (int l = 0; l < nl; ++l) {
+        const kin_loop *L = &m->loops[l];
+        int *lf = s->loop_free + s->loop_free_first[l];
+        int k = 0;
+        for (int c = 0; c < L->col_count; ++c) {
+            int fc = s->col[m->loop_cols[L->col_first + c]];
+            if (fc < 0) continue;
+            int t = k++;
+            while (t > 0 && s->col[m->loop_cols[L->col_first + lf[t - 1]]] > fc) {
+                lf[t] = lf[t - 1];
+                t--;
+            }
+            lf[t] = c;
+        }
+    }
+    // Upper-triangle pattern: (row a, column b) with a ≤ b for every pair of a loop's columns,
+    // plus the diagonal of every column (λI and isolated columns).
+    int64_t *keys = ori__alloc(sizeof(int64_t) * ((size_t)np + (size_t)s->ncols + 1));
+    int nk = 0;
+    for (int l = 0; l < nl; ++l) {
+        const kin_loop *L = &m->loops[l];
+        const int *lf = s->loop_free + s->loop_free_first[l];
+        int k = s->loop_free_first[l + 1] - s->loop_free_first[l];
+        for (int b = 0; b < k; ++b)
+            for (int a = 0; a <= b; ++a) {
+                int ra = s->col[m->loop_cols[L->col_first + lf[a]]], cb = s->col[m->loop_cols[L->col_first + lf[b]]];
+                keys[nk++] = (int64_t)cb * s->ncols + ra;
+            }
+    }
+    for (int c = 0; c < s->ncols; ++c) keys[nk++] = (int64_t)c * s->ncols + c;
+    // Sort (column-major order = CSC) and deduplicate.
+    int64_t *sorted = keys;
+    qsort(sorted, (size_t)nk, sizeof(int64_t), cmp_i64);
+    int nu = 0;
+    for (int i = 0; i < nk; ++i)
+        if (nu == 0 || sorted[nu - 1] != sorted[i]) sorted[nu++] = sorted[i];
+    int *colptr = ori__calloc((size_t)s->ncols + 1, sizeof(int));
+    int *rowind = ori__alloc(sizeof(int) * ((size_t)nu + 1));
+    for (int i = 0; i < nu; ++i) {
+        int cb = (int)(sorted[i] / s->ncols), ra = (int)(sorted[i] % s->ncols);
+        colptr[cb + 1]++;
+        rowind[i] = ra;
+    }
+    for (int c = 0; c < s->ncols; ++c) colptr[c + 1] += colptr[c];
+    // Positions of every loop pair by binary search in its column.
+    for (int l = 0; l < nl; ++l) {
+        const kin_loop *L = &m->loops[l];
+        const int *lf = s->loop_free + s->loop_free_first[l];
+        int k = s->loop_free_first[l + 1] - s->loop_free_first[l];
+        int q = s->pair_first[l];
+        for (int b = 0; b < k; ++b)
+            for (int a = 0; a <= b; ++a) {
+                int ra = s->col[m->loop_cols[L->col_first + lf[a]]], cb = s->col[m->loop_cols[L->col_first + lf[b]]];
+                int lo = colptr[cb], hi = colptr[cb + 1] - 1;
+                while (lo < hi) {
+                    int mid = (lo + hi) / 2;
+                    if (rowind[mid] < ra) lo = mid + 1;
+                    else hi = mid;
+                }
+                s->pair_pos[q++] = lo;
+            }
+    }
+    s->sls = ori__sls_create_sym(s->ncols, colptr, rowind);
+    ori__free(keys);
+    ori__free(colptr);
+    ori__free(rowind);
+}
+
+kin_solver *ori__kin_solver_create(const ori_mechanism *m, const int *col_of_joint, int ncols, int drive_joint,
+                                   const kin_solver_opts *opts)
+{
+    kin_solver *s = ori__calloc(1, sizeof *s);
+    s->m = m;
+    s->ncols = ncols;
+    s->drive = drive_joint;
+    s->rows = m->rows;
+    s->min_norm = opts && opts->min_norm;
+    ori_linear lin = opts ? opts->linear : ORI_LINEAR_AUTO;
+    s->sparse = lin == ORI_LINEAR_SPARSE || (lin == ORI_LINEAR_AUTO && ncols > ORI_MOTION_DENSE_MAX_UNKNOWNS);
+    if (s->rows == 0 || ncols == 0) s->sparse = false;
+    s->col = ori__alloc(sizeof(int) * (size_t)(m->joint_count + 1));
+    for (int j = 0; j < m->joint_count; ++j) s->col[j] = col_of_joint[j];
+    s->res = ori__calloc((size_t)s->rows + 1, sizeof(double));
+    s->blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
+    s->jd = ori__calloc((size_t)s->rows + 1, sizeof(double));
+    s->rot = ori__alloc(sizeof(ori_m3) * (size_t)(m->joint_count + 1));
+    s->th_eval = ori__calloc((size_t)m->joint_count + 1, sizeof(double));
+    s->g = ori__alloc(sizeof(double) * ((size_t)ncols + 1));
+    if (!s->sparse) {
+        size_t big = (size_t)(s->rows > ncols ? s->rows : ncols) + 1;
+        s->a = ori__alloc(sizeof(double) * ((size_t)s->rows * (size_t)ncols + 1));
+        s->rhs = ori__alloc(sizeof(double) * big);
+        s->sv = ori__alloc(sizeof(double) * big);
+        return s;
+    }
+    build_sparse(s);
+    s->refactor = true;
+    return s;
+}
+
+void ori__kin_solver_destroy(kin_solver *s)
+{
+    if (!s) return;
+    ori__sls_destroy(s->sls);
+    ori__free(s->col);
+    ori__free(s->res);
+    ori__free(s->blocks);
+    ori__free(s->jd);
+    ori__free(s->rot);
+    ori__free(s->th_eval);
+    ori__free(s->a);
+    ori__free(s->rhs);
+    ori__free(s->sv);
+    ori__free(s->pair_pos);
+    ori__free(s->pair_first);
+    ori__free(s->loop_free);
+    ori__free(s->loop_free_first);
+    ori__free(s->g);
+    ori__free(s);
+}
+
+int ori__kin_solver_factorizations(const kin_solver *s) { return s->sls ? ori__sls_factorizations(s->sls) : 0; }
+bool ori__kin_solver_sparse(const kin_solver *s) { return s->sparse; }
+
+// --- evaluation ----------------------------------------------------------------------------
+
+// Residual at th (cached for the last evaluated state). The Jacobian is computed on demand
+// (jacobian()): a converged corrector needs no Jacobian at its last state.
+static double residual_at(kin_solver *s, const double *th)
+{
+    const ori_mechanism *m = s->m;
+    if (s->eval_valid && memcmp(s->th_eval, th, sizeof(double) * (size_t)m->joint_count) == 0) return s->eval_r;
+    double r = ori__kin_eval(m, th, s->res, NULL, s->rot);
+    memcpy(s->th_eval, th, sizeof(double) * (size_t)m->joint_count);
+    s->eval_valid = true;
+    s->jac_valid = false;
+    s->eval_r = r;
+    return r;
+}
+
+// Residual and Jacobian blocks at th; the dense path scatters J_F into its matrix. Returns the
+// max-norm of P − I.
+static double evaluate(kin_solver *s, const double *th)
+{
+    const ori_mechanism *m = s->m;
+    double r = residual_at(s, th);
+    if (s->jac_valid) return r;
+    ori__kin_eval(m, th, s->res, s->blocks, s->rot);
+    s->jac_valid = true;
+    s->factor_current = false;
+    for (int k = 0; k < s->rows; ++k) s->jd[k] = 0.0;
+    if (!s->sparse)
+        for (size_t k = 0; k < (size_t)s->rows * (size_t)s->ncols; ++k) s->a[k] = 0.0;
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        for (int c = 0; c < L->col_count; ++c) {
+            int j = m->loop_cols[L->col_first + c];
+            const double *b = s->blocks + 6 * (L->col_first + c);
+            int fc = s->col[j];
+            if (j == s->drive) {
+                for (int q = 0; q < L->rows; ++q) s->jd[L->row0 + q] = b[q];
+            } else if (fc >= 0 && !s->sparse) {
+                for (int q = 0; q < L->rows; ++q) s->a[(size_t)(L->row0 + q) + (size_t)s->rows * (size_t)fc] = b[q];
+            }
+        }
+    }
+    return r;
+}
+
+// Jᵀ y loop by loop (sparse path).
+static void jt_mult(const kin_solver *s, const double *y, double *out)
+{
+    const ori_mechanism *m = s->m;
+    for (int k = 0; k < s->ncols; ++k) out[k] = 0.0;
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        const int *lf = s->loop_free + s->loop_free_first[l];
+        int k = s->loop_free_first[l + 1] - s->loop_free_first[l];
+        for (int a = 0; a < k; ++a) {
+            const double *b = s->blocks + 6 * (L->col_first + lf[a]);
+            double acc = 0.0;
+            for (int q = 0; q < L->rows; ++q) acc += b[q] * y[L->row0 + q];
+            out[s->col[m->loop_cols[L->col_first + lf[a]]]] += acc;
+        }
+    }
+}
+
+// Assemble JᵀJ at the last evaluation and factor it (+λI when not positive definite).
+static bool refactor_now(kin_solver *s)
+{
+    const ori_mechanism *m = s->m;
+    double *v = ori__sls_values(s->sls);
+    ori__sls_clear_values(s->sls);
+    double tr = 0.0;
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        const int *lf = s->loop_free + s->loop_free_first[l];
+        int k = s->loop_free_first[l + 1] - s->loop_free_first[l];
+        int q = s->pair_first[l];
+        for (int b = 0; b < k; ++b) {
+            const double *bb = s->blocks + 6 * (L->col_first + lf[b]);
+            for (int a = 0; a <= b; ++a) {
+                const double *ba = s->blocks + 6 * (L->col_first + lf[a]);
+                double acc = 0.0;
+                for (int r = 0; r < L->rows; ++r) acc += ba[r] * bb[r];
+                v[s->pair_pos[q++]] += acc;
+                if (a == b) tr += acc;
+            }
+        }
+    }
+    bool ok = ori__sls_factor(s->sls, 0.0);
+    if (!ok) ok = ori__sls_factor(s->sls, ORI_TOL_RANK_REL * (s->ncols > 0 ? tr / s->ncols : 1.0));
+    s->have_factor = ok;
+    s->factor_current = ok;
+    s->refactor = false;
+    s->factor_call = s->calls;
+    return ok;
+}
+
+// Dense least squares: minimise |A x − b| (A = the current J_F, copied), minimum norm.
+static bool dense_solve(kin_solver *s, const double *b, double *x)
+{
+    int rows = s->rows, n = s->ncols;
+    int ld = rows > n ? rows : n;
+    double *a = ori__alloc(sizeof(double) * ((size_t)rows * (size_t)n + 1));
+    for (size_t k = 0; k < (size_t)rows * (size_t)n; ++k) a[k] = s->a[k];
+    for (int k = 0; k < ld; ++k) s->rhs[k] = k < rows ? b[k] : 0.0;
+    int rank = 0;
+    lapack_int info = LAPACKE_dgelsd(LAPACK_COL_MAJOR, rows, n, 1, a, rows > 0 ? rows : 1, s->rhs, ld > 0 ? ld : 1,
+                                     s->sv, ORI_TOL_RANK_REL, &rank);
+    ori__free(a);
+    if (info != 0) return false;
+    for (int k = 0; k < n; ++k) {
+        if (!isfinite(s->rhs[k])) return false;
+        x[k] = s->rhs[k];
+    }
+    return true;
+}
+
+// Sparse least-squares step (JᵀJ) x = Jᵀ b: right-hand side from the current Jacobian, factor
+// from the last factorization unless a renewal is due (or `current` demands one at this state).
+static bool sparse_step(kin_solver *s, const double *b, double *x, bool current)
+{
+    s->fresh = false;
+    if (s->refactor || !s->have_factor || (current && !s->factor_current)) {
+        if (!refactor_now(s)) return false;
+        s->fresh = true;
+    }
+    jt_mult(s, b, s->g);
+    return ori__sls_solve(s->sls, s->g, x);
+}
+
+// --- corrector, tangent, rank ------------------------------------------------------------
+
+bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, double *residual)
+{
+    const ori_mechanism *m = s->m;
+    double r0 = 0.0, prev = INFINITY;
+    bool converged = false;
+    int it = 0;
+    double *step = ori__alloc(sizeof(double) * ((size_t)s->ncols + 1));
+    double *neg = ori__alloc(sizeof(double) * ((size_t)s->rows + 1));
+    int *free_joint = ori__alloc(sizeof(int) * ((size_t)s->ncols + 1));
+    for (int j = 0; j < m->joint_count; ++j)
+        if (s->col[j] >= 0) free_joint[s->col[j]] = j;
+    double r = INFINITY;
+    bool step_fresh = true;
+    s->calls++;
+    // Retry an old factor now and then: conditioning improves away from the flat state.
+    if (s->sparse && !s->stale_ok && s->calls % ORI_KIN_STALE_RETRY != 0) s->refactor = true;
+    for (;; ++it) {
+        // The first state of a call almost always needs a Newton step: evaluate everything at
+        // once. Later states are checked first and differentiated only if not converged.
+        r = it == 0 ? evaluate(s, th) : residual_at(s, th);
+        if (it == 0) r0 = r;
+        if (r <= ORI_TOL_NEWTON) {
+            converged = true;
+            break;
+        }
+        if (it > 0 && r <= ORI_TOL_RESIDUAL && r > 0.5 * prev) {
+            converged = true; // round-off floor reached
+            break;
+        }
+        if (!isfinite(r)) break;
+        if (it > 0 && !step_fresh) {
+            // A chord step (old factor) that contracted too slowly: renew the factor. A chord
+            // iteration costs a fraction of a factorization, so above ORI_KIN_CHORD_RATE the
+            // remaining chord steps would cost more than one Newton step. One that made things
+            // worse is undone.
+            if (it == 1) s->stale_ok = r <= ORI_KIN_CHORD_RATE * prev;
+            if (r > ORI_KIN_CHORD_RATE * prev) s->refactor = true;
+            if (r > prev) {
+                for (int k = 0; k < s->ncols; ++k) th[free_joint[k]] -= step[k];
+                r = residual_at(s, th);
+            }
+        } else if (it > 0 && (r > ORI_KIN_GROWTH_STEP * prev || r > ORI_KIN_GROWTH_TOTAL * r0)) {
+            break; // a Newton step must not grow the residual
+        }
+        if (it >= max_iter || s->ncols == 0) break;
+        prev = r;
+        evaluate(s, th);
+        for (int k = 0; k < s->rows; ++k) neg[k] = -s->res[k];
+        bool ok = s->sparse ? sparse_step(s, neg, step, false) : dense_solve(s, neg, step);
+        step_fresh = !s->sparse || s->fresh;
+        if (!ok) break;
+        for (int k = 0; k < s->ncols; ++k) th[free_joint[k]] += step[k];
+    }
+    if (s->sparse && !converged) s->refactor = true;
+    ori__free(step);
+    ori__free(neg);
+    ori__free(free_joint);
+    *iterations = it;
+    *residual = r;
+    return converged || r <= ORI_TOL_RESIDUAL;
+}
+
+bool ori__kin_tangent(kin_solver *s, const double *th, double *t)
+{
+    const ori_mechanism *m = s->m;
+    evaluate(s, th);
+    double *neg = ori__alloc(sizeof(double) * ((size_t)s->rows + 1));
+    double *x = ori__alloc(sizeof(double) * ((size_t)s->ncols + 1));
+    for (int k = 0; k < s->rows; ++k) neg[k] = -s->jd[k];
+    // Near a flat state the normal matrix is badly conditioned and a factor of even a very
+    // close state gives a visibly different tangent: always factor at th itself.
+    bool ok = s->ncols == 0 || (s->sparse ? sparse_step(s, neg, x, true) : dense_solve(s, neg, x));
+    if (ok) {
+        for (int j = 0; j < m->joint_count; ++j) {
+            int c = s->col[j];
+            t[j] = j == s->drive ? 1.0 : c >= 0 ? x[c] : 0.0;
+        }
+    }
+    ori__free(neg);
+    ori__free(x);
+    return ok;
+}
+
+double ori__kin_tangent_defect(kin_solver *s, const double *th, const double *t)
+{
+    const ori_mechanism *m = s->m;
+    evaluate(s, th);
+    double worst = 0.0, scale = 0.0;
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        for (int q = 0; q < L->rows; ++q) {
+            double acc = 0.0;
+            for (int c = 0; c < L->col_count; ++c) {
+                int j = m->loop_cols[L->col_first + c];
+                acc += s->blocks[6 * (L->col_first + c) + q] * t[j];
+            }
+            worst = fmax(worst, fabs(acc));
+            scale = fmax(scale, fabs(s->jd[L->row0 + q]));
+        }
+    }
+    return scale > 0.0 ? worst / scale : worst;
+}
+
+int ori__kin_solver_nullity(kin_solver *s, const double *th)
+{
+    evaluate(s, th);
+    if (s->ncols == 0) return 0;
+    if (!s->sparse) {
+        double *a = ori__alloc(sizeof(double) * ((size_t)s->rows * (size_t)s->ncols + 1));
+        for (size_t k = 0; k < (size_t)s->rows * (size_t)s->ncols; ++k) a[k] = s->a[k];
+        double smax, scut;
+        int rank = ori__dense_rank(a, s->rows, s->ncols, ORI_TOL_RANK_REL, &smax, &scut);
+        ori__free(a);
+        return rank < 0 ? 0 : s->ncols - rank;
+    }
+    // Sparse: JᵀJ not positive definite, or its Cholesky diagonal ratio (≈ σ_min/σ_max of J)
+    // below ORI_TOL_RANK_REL_SPARSE, counts as rank deficient.
+    bool ok = ori__sls_factor(s->sls, 0.0);
+    if (ok) {
+        s->have_factor = true;
+        s->factor_current = true;
+        s->refactor = false;
+    }
+    if (!ok) {
+        refactor_now(s); // keep a usable (damped) factor
+        return 1;
+    }
+    return ori__sls_rcond(s->sls) < ORI_TOL_RANK_REL_SPARSE ? 1 : 0;
+}
+
+// --- Jacobian as a least-squares object (DOF) --------------------------------------------
+
+kin_sls *ori__kin_jacobian_sls(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th)
+{
+    double *blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
+    ori__kin_eval(m, th, NULL, blocks, NULL);
+    int *colptr = ori__alloc(sizeof(int) * ((size_t)m->rows + 1));
+    int nnz = 0;
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        int k = 0;
+        for (int c = 0; c < L->col_count; ++c) k += col_of_joint[m->loop_cols[L->col_first + c]] >= 0;
+        nnz += k * L->rows;
+    }
+    int *rowind = ori__alloc(sizeof(int) * ((size_t)nnz + 1));
+    double *vals = ori__alloc(sizeof(double) * ((size_t)nnz + 1));
+    int *order = ori__alloc(sizeof(int) * ((size_t)m->entry_count + 1));
+    int pos = 0;
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        int k = 0;
+        for (int c = 0; c < L->col_count; ++c) {
+            int fc = col_of_joint[m->loop_cols[L->col_first + c]];
+            if (fc < 0) continue;
+            int t = k++;
+            while (t > 0 && col_of_joint[m->loop_cols[L->col_first + order[t - 1]]] > fc) {
+                order[t] = order[t - 1];
+                t--;
+            }
+            order[t] = c;
+        }
+        for (int r = 0; r < L->rows; ++r) {
+            colptr[L->row0 + r] = pos;
+            for (int t = 0; t < k; ++t) {
+                rowind[pos] = col_of_joint[m->loop_cols[L->col_first + order[t]]];
+                vals[pos] = blocks[6 * (L->col_first + order[t]) + r];
+                pos++;
+            }
+        }
+    }
+    colptr[m->rows] = pos;
+    kin_sls *s = ori__sls_create(ncols, m->rows, colptr, rowind);
+    double *v = ori__sls_values(s);
+    for (int k = 0; k < pos; ++k) v[k] = vals[k];
+    ori__free(blocks);
+    ori__free(colptr);
+    ori__free(rowind);
+    ori__free(vals);
+    ori__free(order);
+    return s;
+}

@@ -1,0 +1,166 @@
+// Sparse least squares through CHOLMOD: the matrix is given as Jᵀ (n unknowns × m equations,
+// compressed columns = one column per equation, so the pattern is the loop structure), and
+// CHOLMOD factors JᵀJ + λI = (Jᵀ)(Jᵀ)ᵀ + λI directly from it (stype 0); or the caller assembles
+// the symmetric JᵀJ itself (upper triangle, stype 1), which the corrector does because the
+// normal matrix of a loop-closure Jacobian is cheap to accumulate loop by loop. The
+// fill-reducing ordering (AMD) is analysed once per pattern; numeric factorizations reuse it.
+//
+// CHOLMOD's memory goes through the library's counted allocator (SuiteSparse_config is a
+// global of SuiteSparse 5: every solve sets the same functions again), and it never prints
+// (Common->print = 0).
+#include <cholmod.h>
+
+#include "kinematics_internal.h"
+
+struct kin_sls {
+    cholmod_common cm;
+    cholmod_sparse *at; // n × m, packed, sorted
+    cholmod_factor *L;
+    cholmod_dense *b, *x, *y, *e;
+    int n, m;
+    bool factored;
+    int factorizations;
+};
+
+static void *ss_malloc(size_t n) { return ori__alloc(n ? n : 1); }
+static void *ss_calloc(size_t n, size_t s) { return ori__calloc(n ? n : 1, s ? s : 1); }
+static void *ss_realloc(void *p, size_t n) { return ori__realloc(p, n ? n : 1); }
+static void ss_free(void *p) { ori__free(p); }
+
+static void route_memory(void)
+{
+    SuiteSparse_config.malloc_func = ss_malloc;
+    SuiteSparse_config.calloc_func = ss_calloc;
+    SuiteSparse_config.realloc_func = ss_realloc;
+    SuiteSparse_config.free_func = ss_free;
+}
+
+static kin_sls *start(void)
+{
+    route_memory();
+    kin_sls *s = ori__calloc(1, sizeof *s);
+    cholmod_start(&s->cm);
+    s->cm.print = 0;
+    s->cm.error_handler = NULL;
+    s->cm.quick_return_if_not_posdef = 1;
+    // Simplicial LDLᵀ: no BLAS and no OpenMP threads. On loop-closure Jacobians of sheet-like
+    // patterns (planar graphs, nested-dissection fill) it is faster than the supernodal method
+    // single-threaded, and OpenMP workers spinning on a shared machine slow everything else.
+    s->cm.supernodal = CHOLMOD_SIMPLICIAL;
+    return s;
+}
+
+static kin_sls *create(int n, int m, const int *colptr, const int *rowind, int stype)
+{
+    kin_sls *s = start();
+    s->n = n;
+    s->m = m;
+    int nnz = colptr[m];
+    s->at = cholmod_allocate_sparse((size_t)n, (size_t)m, (size_t)(nnz > 0 ? nnz : 1), 1, 1, stype, CHOLMOD_REAL, &s->cm);
+    int *p = s->at->p, *i = s->at->i;
+    for (int k = 0; k <= m; ++k) p[k] = colptr[k];
+    for (int k = 0; k < nnz; ++k) i[k] = rowind[k];
+    double *x = s->at->x;
+    for (int k = 0; k < nnz; ++k) x[k] = 0.0;
+    s->L = cholmod_analyze(s->at, &s->cm);
+    s->b = cholmod_zeros((size_t)n, 1, CHOLMOD_REAL, &s->cm);
+    return s;
+}
+
+kin_sls *ori__sls_create(int n, int m, const int *colptr, const int *rowind)
+{
+    return create(n, m, colptr, rowind, 0);
+}
+
+kin_sls *ori__sls_create_sym(int n, const int *colptr, const int *rowind)
+{
+    return create(n, n, colptr, rowind, 1);
+}
+
+void ori__sls_destroy(kin_sls *s)
+{
+    if (!s) return;
+    route_memory();
+    cholmod_free_factor(&s->L, &s->cm);
+    cholmod_free_sparse(&s->at, &s->cm);
+    cholmod_free_dense(&s->b, &s->cm);
+    cholmod_free_dense(&s->x, &s->cm);
+    cholmod_free_dense(&s->y, &s->cm);
+    cholmod_free_dense(&s->e, &s->cm);
+    cholmod_finish(&s->cm);
+    ori__free(s);
+}
+
+double *ori__sls_values(kin_sls *s) { return s->at->x; }
+
+void ori__sls_clear_values(kin_sls *s)
+{
+    const int *p = s->at->p;
+    double *x = s->at->x;
+    for (int k = 0; k < p[s->m]; ++k) x[k] = 0.0;
+}
+
+bool ori__sls_factor(kin_sls *s, double lambda)
+{
+    route_memory();
+    if (!s->L) return false;
+    double beta[2] = {lambda, 0.0};
+    s->factorizations++;
+    int ok = cholmod_factorize_p(s->at, beta, NULL, 0, s->L, &s->cm);
+    s->factored = ok && s->cm.status == CHOLMOD_OK && s->L->minor == s->L->n;
+    return s->factored;
+}
+
+bool ori__sls_solve(kin_sls *s, const double *rhs, double *out)
+{
+    if (!s->factored) return false;
+    route_memory();
+    double *b = s->b->x;
+    for (int k = 0; k < s->n; ++k) b[k] = rhs[k];
+    if (!cholmod_solve2(CHOLMOD_A, s->L, s->b, NULL, &s->x, NULL, &s->y, &s->e, &s->cm)) return false;
+    const double *x = s->x->x;
+    for (int k = 0; k < s->n; ++k) {
+        if (!isfinite(x[k])) return false;
+        out[k] = x[k];
+    }
+    return true;
+}
+
+void ori__sls_mult_t(const kin_sls *s, const double *y, double *out)
+{
+    const int *p = s->at->p, *i = s->at->i;
+    const double *x = s->at->x;
+    for (int k = 0; k < s->n; ++k) out[k] = 0.0;
+    for (int c = 0; c < s->m; ++c) {
+        double yc = y[c];
+        if (yc == 0.0) continue;
+        for (int k = p[c]; k < p[c + 1]; ++k) out[i[k]] += x[k] * yc;
+    }
+}
+
+void ori__sls_mult(const kin_sls *s, const double *v, double *out)
+{
+    const int *p = s->at->p, *i = s->at->i;
+    const double *x = s->at->x;
+    for (int c = 0; c < s->m; ++c) {
+        double acc = 0.0;
+        for (int k = p[c]; k < p[c + 1]; ++k) acc += x[k] * v[i[k]];
+        out[c] = acc;
+    }
+}
+
+double ori__sls_rcond(kin_sls *s)
+{
+    if (!s->factored) return 0.0;
+    route_memory();
+    return cholmod_rcond(s->L, &s->cm);
+}
+
+int ori__sls_factorizations(const kin_sls *s) { return s->factorizations; }
+
+size_t ori__sls_factor_nnz(const kin_sls *s)
+{
+    if (!s->L) return 0;
+    if (s->L->is_super) return s->L->xsize;
+    return s->L->nzmax;
+}

@@ -1,0 +1,829 @@
+// Kinematics: fold motions (closed-form spherical 4R and numeric continuation), the thesis'
+// open corner (first and second fold, Frame A / Frame B, the mirrored branch), Miura-ori
+// against closed forms, the square twist, verdicts, transfer functions, bad input.
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "kinematics/kinematics_internal.h"
+#include "support.h"
+
+TestSuite(kinematics, .init = test_leak_setup, .fini = test_leak_check);
+
+#define DEG (ORI_PI / 180.0)
+
+// --- helpers ---------------------------------------------------------------------------
+
+static int edge_at(const ori_pattern *p, double x0, double y0, double x1, double y1)
+{
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge E = ori_pattern_edge(p, e);
+        ori_v3 a = ori_pattern_vertex(p, E.v[0]), b = ori_pattern_vertex(p, E.v[1]);
+        if ((a.x == x0 && a.y == y0 && b.x == x1 && b.y == y1) || (a.x == x1 && a.y == y1 && b.x == x0 && b.y == y0))
+            return e;
+    }
+    cr_assert_fail("no edge (%g,%g)-(%g,%g)", x0, y0, x1, y1);
+    return -1;
+}
+
+static int vertex_at(const ori_pattern *p, double x, double y)
+{
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v)
+        if (ori_pattern_vertex(p, v).x == x && ori_pattern_vertex(p, v).y == y) return v;
+    cr_assert_fail("no vertex (%g,%g)", x, y);
+    return -1;
+}
+
+static int face_at(const ori_pattern *p, double x, double y)
+{
+    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
+        int v[64];
+        int n = ori_pattern_face_vertices(p, f, v, 64);
+        bool inside = true;
+        for (int k = 0; k < n; ++k) {
+            ori_v3 a = ori_pattern_vertex(p, v[k]), b = ori_pattern_vertex(p, v[(k + 1) % n]);
+            if (ori_orient2d(ori_v2_make(a.x, a.y), ori_v2_make(b.x, b.y), ori_v2_make(x, y)) <= 0.0) inside = false;
+        }
+        if (inside) return f;
+    }
+    cr_assert_fail("no face at (%g,%g)", x, y);
+    return -1;
+}
+
+static ori_mechanism *mech_of(const ori_pattern *p)
+{
+    ori_mechanism_def md = ori_default_mechanism_def();
+    md.pattern = p;
+    ori_mechanism *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_mechanism_create(&md, &m, &err), ORI_OK, "%s", err.message);
+    return m;
+}
+
+static ori_motion *solve(const ori_mechanism *m, const ori_motion_def *d)
+{
+    ori_motion *mo = NULL;
+    ori_error err;
+    ori_status st = ori_motion_solve(m, d, &mo, &err);
+    cr_assert_eq(st, ORI_OK, "%s", err.message);
+    return mo;
+}
+
+// The open corner and its creases, found by coordinates (the file's edge order may change).
+typedef struct corner {
+    ori_pattern *p;
+    ori_mechanism *m;
+    int diag, down, right, up, left;
+    int T2, T1, LR, UR, UL;
+} corner;
+
+static corner corner_load(void)
+{
+    corner c;
+    c.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    c.m = mech_of(c.p);
+    c.diag = edge_at(c.p, 1, 1, 0, 0);
+    c.down = edge_at(c.p, 1, 1, 1, 0);
+    c.right = edge_at(c.p, 1, 1, 2, 1);
+    c.up = edge_at(c.p, 1, 1, 1, 2);
+    c.left = edge_at(c.p, 1, 1, 0, 1);
+    c.T2 = face_at(c.p, 0.7, 0.3);
+    c.T1 = face_at(c.p, 0.3, 0.7);
+    c.LR = face_at(c.p, 1.5, 0.5);
+    c.UR = face_at(c.p, 1.5, 1.5);
+    c.UL = face_at(c.p, 0.5, 1.5);
+    return c;
+}
+
+static void corner_free(corner *c)
+{
+    ori_mechanism_destroy(c->m);
+    ori_pattern_destroy(c->p);
+}
+
+static ori_motion_def first_fold(const corner *c, ori_solver solver, double to_deg)
+{
+    static int lock;
+    lock = c->down;
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = c->T2;
+    d.driven_edge = c->diag;
+    d.to_rad = to_deg * DEG;
+    d.step_rad = 10 * DEG;
+    d.locked_edges = &lock;
+    d.locked_count = 1;
+    d.solver = solver;
+    return d;
+}
+
+// Every frame closes, keeps edge lengths and keeps the fixed face where its pose puts it.
+static void check_frames(const ori_mechanism *m, const ori_pattern *p, const ori_motion *mo)
+{
+    int V = ori_pattern_vertex_count(p), F = ori_motion_frame_count(mo);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)V);
+    int fixed = ori_motion_fixed_face(mo);
+    ori_rigid G = ori_motion_fixed_pose(mo);
+    double diag = ori_pattern_diagonal(p);
+    for (int k = 0; k < F; ++k) {
+        cr_assert_leq(ori_motion_frame_residual(mo, k), ORI_TOL_RESIDUAL);
+        cr_assert_leq(ori_mechanism_residual(m, ori_motion_frame_angles(mo, k)), ORI_TOL_RESIDUAL);
+        ori_motion_frame_vertices(mo, k, pos);
+        for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+            ori_edge E = ori_pattern_edge(p, e);
+            double l0 = ori_v3_norm(ori_v3_sub(ori_pattern_vertex(p, E.v[0]), ori_pattern_vertex(p, E.v[1])));
+            double l1 = ori_v3_norm(ori_v3_sub(pos[E.v[0]], pos[E.v[1]]));
+            cr_assert_float_eq(l1, l0, 1e-12 * l0, "frame %d edge %d", k, e);
+        }
+        int vs[64];
+        int n = ori_pattern_face_vertices(p, fixed, vs, 64);
+        for (int i = 0; i < n; ++i) {
+            ori_v3 want = ori_rigid_apply(G, ori_pattern_vertex(p, vs[i]));
+            cr_assert_float_eq(pos[vs[i]].x, want.x, 1e-12 * diag);
+            cr_assert_float_eq(pos[vs[i]].y, want.y, 1e-12 * diag);
+            cr_assert_float_eq(pos[vs[i]].z, want.z, 1e-12 * diag);
+        }
+    }
+    free(pos);
+}
+
+// --- the open corner, first fold -------------------------------------------------------------
+
+static void check_first_fold_at_90(const corner *c, const ori_motion *mo)
+{
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
+    int F = ori_motion_frame_count(mo);
+    cr_assert_eq(F, 10); // 0, 10, …, 90
+    cr_assert_eq(ori_motion_frame_drive(mo, F - 1), 90 * DEG);
+    const double *a = ori_motion_frame_angles(mo, F - 1);
+    double t4 = asin(1.0 / sqrt(3.0)); // 35.2643896827546°
+    cr_assert_float_eq(a[c->right] / DEG, t4 / DEG, 1e-9);
+    cr_assert_float_eq(a[c->up] / DEG, 60.0, 1e-9);
+    cr_assert_float_eq(a[c->left] / DEG, -t4 / DEG, 1e-9);
+    cr_assert_eq(a[c->down], 0.0);
+    ori_v3 ea, eb;
+    cr_assert(ori_motion_frame_end_effector(mo, F - 1, &ea, &eb));
+    cr_assert_float_eq(ea.x, 0.5, 1e-12);
+    cr_assert_float_eq(ea.y, 0.5, 1e-12);
+    cr_assert_float_eq(ea.z, 1.0 / sqrt(2.0), 1e-12);
+    cr_assert_float_eq(eb.x, -1.5, 1e-12);
+    cr_assert_float_eq(eb.y, -0.5, 1e-12);
+    cr_assert_float_eq(eb.z, 1.0 / sqrt(2.0), 1e-12);
+}
+
+Test(kinematics, open_corner_first_fold_closed_form)
+{
+    corner c = corner_load();
+    ori_motion_def d = first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
+    ori_motion *mo = solve(c.m, &d);
+    cr_assert(ori_motion_stats_of(mo).analytic);
+    check_first_fold_at_90(&c, mo);
+    // Every branch: the spherical 4R's other solution at Θ1 = 90° has up = −60° and right,
+    // left = ∓(180° − asin(1/√3)) (the thesis' second pair (−60°, −35.5°) in its own angle
+    // convention for Θ4); it folds the valleys up and right as mountains: rejected.
+    double other[13];
+    cr_assert_not(ori_motion_frame_other_branch(mo, 0, other));
+    cr_assert(ori_motion_frame_other_branch(mo, ori_motion_frame_count(mo) - 1, other));
+    double t4 = 180.0 - asin(1.0 / sqrt(3.0)) / DEG;
+    cr_assert_float_eq(other[c.up] / DEG, -60.0, 1e-9);
+    cr_assert_float_eq(other[c.right] / DEG, -t4, 1e-9);
+    cr_assert_float_eq(other[c.left] / DEG, t4, 1e-9);
+    cr_assert_float_eq(other[c.diag] / DEG, 90.0, 1e-12);
+    cr_assert_leq(ori_mechanism_residual(c.m, other), ORI_TOL_RESIDUAL);
+    check_frames(c.m, c.p, mo);
+    cr_assert_eq(ori_motion_dof(mo), 2);
+    ori_motion_destroy(mo);
+    corner_free(&c);
+}
+
+Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
+{
+    corner c = corner_load();
+    ori_motion_def da = first_fold(&c, ORI_SOLVER_ANALYTIC, 180);
+    ori_motion_def dn = first_fold(&c, ORI_SOLVER_NUMERIC, 180);
+    ori_motion *ma = solve(c.m, &da), *mn = solve(c.m, &dn);
+    cr_assert_not(ori_motion_stats_of(mn).analytic);
+    cr_assert_eq(ori_motion_verdict_of(mn), ORI_MOTION_VALID);
+    cr_assert_eq(ori_motion_frame_count(ma), ori_motion_frame_count(mn));
+    for (int k = 0; k < ori_motion_frame_count(ma); ++k) {
+        const double *x = ori_motion_frame_angles(ma, k), *y = ori_motion_frame_angles(mn, k);
+        for (int e = 0; e < ori_pattern_edge_count(c.p); ++e) cr_assert_float_eq(x[e] / DEG, y[e] / DEG, 1e-9);
+        ori_v3 a1, b1, a2, b2;
+        ori_motion_frame_end_effector(ma, k, &a1, &b1);
+        ori_motion_frame_end_effector(mn, k, &a2, &b2);
+        cr_assert_float_eq(a1.z, a2.z, 1e-12);
+        cr_assert_float_eq(b1.x, b2.x, 1e-12);
+    }
+    // At Θ1 = 180°: right 90, up 90, left −90.
+    const double *last = ori_motion_frame_angles(mn, ori_motion_frame_count(mn) - 1);
+    cr_assert_float_eq(last[c.right] / DEG, 90.0, 1e-9);
+    cr_assert_float_eq(last[c.up] / DEG, 90.0, 1e-9);
+    cr_assert_float_eq(last[c.left] / DEG, -90.0, 1e-9);
+    check_frames(c.m, c.p, mn);
+    ori_motion_destroy(ma);
+    ori_motion_destroy(mn);
+    // The 90° reference values from the numeric path as well.
+    ori_motion_def d90 = first_fold(&c, ORI_SOLVER_NUMERIC, 90);
+    ori_motion *m90 = solve(c.m, &d90);
+    check_first_fold_at_90(&c, m90);
+    ori_motion_destroy(m90);
+    corner_free(&c);
+}
+
+Test(kinematics, open_corner_frame_a_frame_b_split)
+{
+    corner c = corner_load();
+    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion *mo = solve(c.m, &d);
+    ori_vertex_split s;
+    cr_assert(ori_motion_split(mo, &s));
+    cr_assert_eq(s.vertex, vertex_at(c.p, 1, 1));
+    cr_assert_eq(s.frame_a[0], c.diag);
+    cr_assert_eq(s.frame_a[1], c.left);
+    cr_assert_eq(s.frame_b_count, 3);
+    cr_assert_eq(s.frame_b[0], c.right);
+    cr_assert_eq(s.frame_b[1], c.up);
+    cr_assert_eq(s.frame_b[2], c.left);
+    cr_assert_eq(s.surrounding_count, 1);
+    cr_assert_eq(s.surrounding[0], c.down);
+    cr_assert_eq(s.end_effector_vertex, vertex_at(c.p, 0, 1));
+    cr_assert_float_eq(s.d.x, 2.0, 1e-15);
+    cr_assert_float_eq(s.d.y, 1.0, 1e-15);
+    cr_assert_float_eq(s.d.z, 0.0, 1e-15);
+    // Thesis Fig. 5-3: Frame A q1 = 0, ω1 = (1,1,0)/√2, q2 = (0,1,0), ω2 = (1,0,0); Frame B
+    // q4 = 0, ω4 = (1,0,0), q3 = (−1,1,0), ω3 = (0,1,0).
+    cr_assert_float_eq(ori_v3_norm(s.q_a[0]), 0.0, 1e-15);
+    cr_assert_float_eq(s.omega_a[0].x, 1.0 / sqrt(2.0), 1e-15);
+    cr_assert_float_eq(s.omega_a[0].y, 1.0 / sqrt(2.0), 1e-15);
+    cr_assert_float_eq(s.q_a[1].y, 1.0, 1e-15);
+    cr_assert_float_eq(s.omega_a[1].x, 1.0, 1e-15);
+    cr_assert_float_eq(ori_v3_norm(s.q_b[0]), 0.0, 1e-15);
+    cr_assert_float_eq(s.omega_b[0].x, 1.0, 1e-15);
+    cr_assert_float_eq(s.q_b[1].x, -1.0, 1e-15);
+    cr_assert_float_eq(s.q_b[1].y, 1.0, 1e-15);
+    cr_assert_float_eq(s.omega_b[1].y, 1.0, 1e-15);
+    // Frame 0: the end effector (0,1) in both frames.
+    ori_v3 ea, eb;
+    cr_assert(ori_motion_frame_end_effector(mo, 0, &ea, &eb));
+    cr_assert_float_eq(ea.y, 1.0, 1e-15);
+    cr_assert_float_eq(eb.x, -2.0, 1e-15);
+    ori_motion_destroy(mo);
+    corner_free(&c);
+}
+
+Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
+{
+    corner c = corner_load();
+    // The thesis' invalid structure: the first axis negatively oriented (diagonal mountain),
+    // driven in its own direction to −90°.
+    ori_pattern_set_assignment(c.p, c.diag, ORI_ASSIGN_MOUNTAIN);
+    ori_mechanism_destroy(c.m);
+    c.m = mech_of(c.p);
+    for (int s = ORI_SOLVER_ANALYTIC; s <= ORI_SOLVER_NUMERIC; ++s) {
+        ori_motion_def d = first_fold(&c, (ori_solver)s, -90);
+        ori_motion *mo = solve(c.m, &d);
+        cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
+        const char *why = ori_motion_reason(mo);
+        char want[96];
+        snprintf(want, sizeof want, "crease %d (assigned valley) would fold to -60°", c.up);
+        cr_assert(strstr(why, want), "%s", why);
+        cr_assert_eq(ori_motion_violation_count(mo), 3);
+        for (int i = 0; i < 3; ++i) {
+            ori_crease_violation v = ori_motion_violation(mo, i);
+            double want_deg = v.edge == c.up ? -60.0 : v.edge == c.right ? -asin(1 / sqrt(3.0)) / DEG : asin(1 / sqrt(3.0)) / DEG;
+            cr_assert(v.edge == c.up || v.edge == c.right || v.edge == c.left);
+            cr_assert_float_eq(v.angle_rad / DEG, want_deg, 1e-9);
+            cr_assert_float_eq(v.drive_rad / DEG, -90.0, 1e-12);
+        }
+        cr_assert_eq(ori_motion_frame_count(mo), 10); // the motion itself exists
+        ori_motion_destroy(mo);
+    }
+    corner_free(&c);
+}
+
+Test(kinematics, driving_a_crease_against_its_own_assignment_is_invalid)
+{
+    corner c = corner_load();
+    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, -30);
+    ori_motion *mo = solve(c.m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
+    char want[96];
+    snprintf(want, sizeof want, "the driven crease %d is assigned valley but is driven to -30°", c.diag);
+    cr_assert(strstr(ori_motion_reason(mo), want), "%s", ori_motion_reason(mo));
+    ori_motion_destroy(mo);
+    corner_free(&c);
+}
+
+Test(kinematics, open_corner_without_a_lock_is_underdetermined)
+{
+    corner c = corner_load();
+    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.locked_count = 0;
+    ori_motion *mo = solve(c.m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_UNDERDETERMINED);
+    cr_assert(strstr(ori_motion_reason(mo), "lock 1 more crease"), "%s", ori_motion_reason(mo));
+    cr_assert_eq(ori_motion_frame_count(mo), 0);
+    ori_motion_destroy(mo);
+    corner_free(&c);
+}
+
+// --- the second fold: the corner cube -----------------------------------------------------
+
+static void second_fold(ori_solver solver)
+{
+    corner c = corner_load();
+    ori_motion_def d1 = first_fold(&c, solver, 180);
+    ori_motion *m1 = solve(c.m, &d1);
+    cr_assert_eq(ori_motion_verdict_of(m1), ORI_MOTION_VALID);
+    const double *state = ori_motion_frame_angles(m1, ori_motion_frame_count(m1) - 1);
+    ori_motion_def d2 = ori_default_motion_def();
+    d2.fixed_face = c.T2;
+    d2.start_angles_rad = state;
+    d2.driven_edge = c.down;
+    d2.to_rad = 90 * DEG;
+    d2.step_rad = 15 * DEG;
+    d2.locked_edges = &c.diag;
+    d2.locked_count = 1;
+    d2.solver = solver;
+    ori_motion *m2 = solve(c.m, &d2);
+    cr_assert_eq(ori_motion_verdict_of(m2), ORI_MOTION_VALID, "%s", ori_motion_reason(m2));
+    for (int k = 0; k < ori_motion_frame_count(m2); ++k) {
+        const double *a = ori_motion_frame_angles(m2, k);
+        double t = ori_motion_frame_drive(m2, k);
+        cr_assert_float_eq(a[c.diag] / DEG, 180.0, 1e-12);
+        cr_assert_float_eq(a[c.right] / DEG, 90.0, 1e-9);
+        cr_assert_float_eq(a[c.up] / DEG, 90.0, 1e-9);
+        cr_assert_float_eq(a[c.left] / DEG, -90.0 - t / DEG, 1e-9);
+    }
+    // The corner cube: LR, UR, UL mutually perpendicular; the flap T1 flat against UL.
+    ori_rigid g[5];
+    ori_motion_frame_face_poses(m2, ori_motion_frame_count(m2) - 1, g);
+    ori_v3 z = ori_v3_make(0, 0, 1);
+    ori_v3 n_lr = ori_m3_apply(g[c.LR].r, z), n_ur = ori_m3_apply(g[c.UR].r, z), n_ul = ori_m3_apply(g[c.UL].r, z);
+    cr_assert_float_eq(ori_v3_dot(n_lr, n_ur), 0.0, 1e-9);
+    cr_assert_float_eq(ori_v3_dot(n_ur, n_ul), 0.0, 1e-9);
+    cr_assert_float_eq(ori_v3_dot(n_ul, n_lr), 0.0, 1e-9);
+    cr_assert_float_eq(ori_v3_dot(ori_m3_apply(g[c.T1].r, z), n_ul), -1.0, 1e-9);
+    // Four valleys and one mountain.
+    const double *a = ori_motion_frame_angles(m2, ori_motion_frame_count(m2) - 1);
+    cr_assert_gt(a[c.diag], 0.0);
+    cr_assert_gt(a[c.down], 0.0);
+    cr_assert_gt(a[c.right], 0.0);
+    cr_assert_gt(a[c.up], 0.0);
+    cr_assert_lt(a[c.left], 0.0);
+    check_frames(c.m, c.p, m2);
+    ori_motion_destroy(m1);
+    ori_motion_destroy(m2);
+    corner_free(&c);
+}
+
+Test(kinematics, open_corner_second_fold_reaches_the_corner_cube_closed_form) { second_fold(ORI_SOLVER_ANALYTIC); }
+Test(kinematics, open_corner_second_fold_reaches_the_corner_cube_numeric) { second_fold(ORI_SOLVER_NUMERIC); }
+
+Test(kinematics, a_fold_from_any_state_keeps_the_fixed_face_in_its_world_pose)
+{
+    // What a fold sequence does: after the first fold, fix another face (LR) where the first
+    // fold left it, and fold again. The result is the same shape as with T2 fixed, moved by
+    // the rigid motion that maps one onto the other; LR does not move.
+    corner c = corner_load();
+    ori_motion_def d1 = first_fold(&c, ORI_SOLVER_AUTO, 120);
+    ori_motion *m1 = solve(c.m, &d1);
+    int last = ori_motion_frame_count(m1) - 1;
+    ori_rigid g[5];
+    ori_motion_frame_face_poses(m1, last, g);
+    ori_motion_def d2 = ori_default_motion_def();
+    d2.fixed_face = c.LR;
+    d2.fixed_pose = g[c.LR];
+    d2.start_angles_rad = ori_motion_frame_angles(m1, last);
+    d2.driven_edge = c.diag;
+    d2.to_rad = 150 * DEG;
+    d2.step_rad = 10 * DEG;
+    d2.locked_edges = &c.down;
+    d2.locked_count = 1;
+    for (int s = ORI_SOLVER_ANALYTIC; s <= ORI_SOLVER_NUMERIC; ++s) {
+        d2.solver = (ori_solver)s;
+        ori_motion *m2 = solve(c.m, &d2);
+        cr_assert_eq(ori_motion_verdict_of(m2), ORI_MOTION_VALID);
+        cr_assert_eq(ori_motion_frame_count(m2), 4);
+        check_frames(c.m, c.p, m2);
+        // Frame 0 of the second fold is the last state of the first, in the same place.
+        ori_v3 p1[9], p2[9];
+        ori_motion_frame_vertices(m1, last, p1);
+        ori_motion_frame_vertices(m2, 0, p2);
+        for (int v = 0; v < 9; ++v) cr_assert_float_eq(ori_v3_norm(ori_v3_sub(p1[v], p2[v])), 0.0, 1e-12);
+        ori_motion_destroy(m2);
+    }
+    ori_motion_destroy(m1);
+    corner_free(&c);
+}
+
+Test(kinematics, from_reaches_the_start_silently)
+{
+    corner c = corner_load();
+    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.has_from = true;
+    d.from_rad = 30 * DEG;
+    d.step_rad = 20 * DEG;
+    ori_motion *mo = solve(c.m, &d);
+    cr_assert_eq(ori_motion_frame_count(mo), 4); // 30, 50, 70, 90
+    cr_assert_eq(ori_motion_frame_drive(mo, 0), 30 * DEG);
+    cr_assert_float_eq(ori_motion_frame_angles(mo, 0)[c.right] / DEG, 10.728583121609052, 1e-9);
+    cr_assert_eq(ori_motion_frame_drive(mo, ori_motion_frame_count(mo) - 1), 90 * DEG);
+    ori_motion_destroy(mo);
+    corner_free(&c);
+}
+
+// --- Miura-ori ------------------------------------------------------------------------------
+
+// R×C Miura-ori, vertex (i, j) at (i·w + (j odd ? d : 0), j·h): straight creases along x, zigzag
+// creases joining rows. Zigzag lines are all-M or all-V, alternating with i; straight
+// creases alternate along their line. Parallelogram angle γ between a straight crease and a
+// zigzag crease: cos γ = d / √(d² + h²).
+static ori_pattern *miura(int rows, int cols, double w, double d, double h)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    for (int j = 0; j <= rows; ++j)
+        for (int i = 0; i <= cols; ++i) ori_pattern_add_vertex(p, ori_v3_make(i * w + ((j & 1) ? d : 0.0), j * h, 0.0));
+#define VID(i, j) ((j) * (cols + 1) + (i))
+    for (int j = 0; j <= rows; ++j)
+        for (int i = 0; i < cols; ++i)
+            ori_pattern_add_edge(p, VID(i, j), VID(i + 1, j),
+                                 (j == 0 || j == rows) ? ORI_ASSIGN_BOUNDARY
+                                 : ((i + j) & 1)       ? ORI_ASSIGN_VALLEY
+                                                       : ORI_ASSIGN_MOUNTAIN,
+                                 0.0);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i <= cols; ++i)
+            ori_pattern_add_edge(p, VID(i, j), VID(i, j + 1),
+                                 (i == 0 || i == cols) ? ORI_ASSIGN_BOUNDARY
+                                 : (i & 1)             ? ORI_ASSIGN_MOUNTAIN
+                                                       : ORI_ASSIGN_VALLEY,
+                                 0.0);
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < cols; ++i) {
+            int f[4] = {VID(i, j), VID(i + 1, j), VID(i + 1, j + 1), VID(i, j + 1)};
+            ori_pattern_add_face(p, f, 4);
+        }
+#undef VID
+    ori_error err;
+    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK);
+    return p;
+}
+
+static void miura_case(int n, ori_linear linear)
+{
+    const double w = 1.0, d = 0.4, h = 0.9;
+    ori_pattern *p = miura(n, n, w, d, h);
+    ori_mechanism *m = mech_of(p);
+    int i0 = n / 2, j0 = n / 2;
+#define VID(i, j) ((j) * (n + 1) + (i))
+    int drive = ori_pattern_find_edge(p, VID(i0, j0), VID(i0, j0 + 1));
+    double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    ori_motion_def md = ori_default_motion_def();
+    md.driven_edge = drive;
+    md.to_rad = sg * 170 * DEG;
+    md.step_rad = 17 * DEG;
+    md.linear = linear;
+    ori_motion *mo = solve(m, &md);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%dx%d: %s", n, n, ori_motion_reason(mo));
+    cr_assert_eq(ori_motion_frame_count(mo), 11);
+    cr_assert_eq(ori_motion_dof(mo), 1, "%dx%d", n, n); // 1 DOF away from the flat state
+    check_frames(m, p, mo);
+    double b = sqrt(d * d + h * h), cg = d / b, gamma = acos(cg);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)ori_pattern_vertex_count(p));
+    for (int k = 1; k < ori_motion_frame_count(mo); ++k) {
+        const double *a = ori_motion_frame_angles(mo, k);
+        ori_motion_frame_vertices(mo, k, pos);
+        for (int j = 1; j < n; ++j)
+            for (int i = 1; i < n; ++i) {
+                int v = VID(i, j);
+                int zu = ori_pattern_find_edge(p, v, VID(i, j + 1)), zd = ori_pattern_find_edge(p, v, VID(i, j - 1));
+                int sl = ori_pattern_find_edge(p, v, VID(i - 1, j)), sr = ori_pattern_find_edge(p, v, VID(i + 1, j));
+                // The zigzag pair folds equally; each straight crease: |tan(ρs/2)| = cos γ |tan(ρz/2)|.
+                cr_assert_float_eq(a[zu], a[zd], 1e-9);
+                double tz = fabs(tan(0.5 * a[zu]));
+                cr_assert_float_eq(fabs(tan(0.5 * a[sl])), cg * tz, 1e-9 * (1 + tz));
+                cr_assert_float_eq(fabs(tan(0.5 * a[sr])), cg * tz, 1e-9 * (1 + tz));
+                // Schenk & Guest 2013: facets at θ = |ρz|/2 to the plane of the zigzag creases;
+                // straight edge a = w, zigzag edge b, angle γ between them.
+                double th = 0.5 * fabs(a[zu]);
+                ori_v3 u1 = ori_v3_sub(pos[VID(i, j + 1)], pos[v]), u2 = ori_v3_sub(pos[VID(i, j - 1)], pos[v]);
+                ori_v3 nrm = ori_v3_normalize(ori_v3_cross(u1, u2));
+                ori_v3 s = ori_v3_sub(pos[VID(i + 1, j)], pos[v]);
+                double H = fabs(ori_v3_dot(s, nrm));
+                ori_v3 sh = ori_v3_sub(s, ori_v3_scale(nrm, ori_v3_dot(s, nrm)));
+                double L = ori_v3_norm(sh);
+                ori_v3 yh = ori_v3_normalize(sh), xh = ori_v3_cross(nrm, yh);
+                double V = fabs(ori_v3_dot(u1, yh)), S = fabs(ori_v3_dot(u1, xh));
+                double root = sqrt(1.0 + pow(cos(th) * tan(gamma), 2));
+                cr_assert_float_eq(H, w * sin(th) * sin(gamma), 1e-9);
+                cr_assert_float_eq(L, w * sqrt(1.0 - pow(sin(th) * sin(gamma), 2)), 1e-9);
+                cr_assert_float_eq(S, b * cos(th) * tan(gamma) / root, 1e-9);
+                cr_assert_float_eq(V, b / root, 1e-9);
+            }
+    }
+#undef VID
+    free(pos);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+Test(kinematics, miura_2x2) { miura_case(2, ORI_LINEAR_AUTO); }
+Test(kinematics, miura_3x3) { miura_case(3, ORI_LINEAR_AUTO); }
+Test(kinematics, miura_4x4) { miura_case(4, ORI_LINEAR_AUTO); }
+Test(kinematics, miura_5x5_sparse) { miura_case(5, ORI_LINEAR_SPARSE); }
+Test(kinematics, miura_6x6) { miura_case(6, ORI_LINEAR_AUTO); }
+Test(kinematics, miura_6x6_sparse) { miura_case(6, ORI_LINEAR_SPARSE); }
+
+Test(kinematics, miura_with_a_flipped_crease_is_invalid_and_names_it)
+{
+    ori_pattern *p = miura(4, 4, 1.0, 0.4, 0.9);
+    // Flip one straight crease of the second row.
+    int e = ori_pattern_find_edge(p, 1 * 5 + 1, 1 * 5 + 2);
+    ori_assignment a = ori_pattern_edge(p, e).assignment;
+    ori_pattern_set_assignment(p, e, a == ORI_ASSIGN_VALLEY ? ORI_ASSIGN_MOUNTAIN : ORI_ASSIGN_VALLEY);
+    ori_mechanism *m = mech_of(p);
+    int drive = ori_pattern_find_edge(p, 2 * 5 + 2, 3 * 5 + 2);
+    double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    ori_motion_def md = ori_default_motion_def();
+    md.driven_edge = drive;
+    md.to_rad = sg * 60 * DEG;
+    md.step_rad = 30 * DEG;
+    ori_motion *mo = solve(m, &md);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s: %s",
+                 ori_motion_verdict_name(ori_motion_verdict_of(mo)), ori_motion_reason(mo));
+    char want[32];
+    snprintf(want, sizeof want, "crease %d ", e);
+    cr_assert(strstr(ori_motion_reason(mo), want), "%s", ori_motion_reason(mo));
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// --- the square twist -----------------------------------------------------------------------
+
+Test(kinematics, single_square_twist_is_not_rigidly_foldable)
+{
+    const char *path = test_require_shared("rabbit-ear/fold_square-twist.fold");
+    ori_pattern *p = test_load_pattern(path, 0);
+    ori_mechanism *m = mech_of(p);
+    cr_assert_eq(ori_mechanism_loop_count(m), 4);
+    // Whichever assigned crease is driven (in its direction) there is no rigid motion.
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_assignment a = ori_pattern_edge(p, e).assignment;
+        if (a != ORI_ASSIGN_MOUNTAIN && a != ORI_ASSIGN_VALLEY) continue;
+        ori_motion_def md = ori_default_motion_def();
+        md.driven_edge = e;
+        md.to_rad = (a == ORI_ASSIGN_VALLEY ? 1 : -1) * 90 * DEG;
+        md.step_rad = 10 * DEG;
+        ori_motion *mo = solve(m, &md);
+        cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_NOT_RIGIDLY_FOLDABLE, "drive %d: %s", e,
+                     ori_motion_reason(mo));
+        cr_assert_eq(ori_motion_frame_count(mo), 0);
+        cr_assert(strstr(ori_motion_reason(mo), "contradict each other"));
+        ori_motion_destroy(mo);
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// --- transfer functions ------------------------------------------------------------------
+
+Test(kinematics, transfer_functions_of_the_first_fold)
+{
+    corner c = corner_load();
+    ori_fit_def fd = ori_default_fit_def();
+    fd.motion = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    fd.degree = 4;
+    ori_fit *fit = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fit_solve(c.m, &fd, &fit, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fit_sample_count(fit), 10);
+    cr_assert_eq(ori_fit_crease_count(fit), 3); // right, up, left
+    ori_motion_def exact = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    exact.step_rad = 1 * DEG;
+    ori_motion *mo = solve(c.m, &exact);
+    for (int i = 0; i < 3; ++i) {
+        ori_fit_crease fc = ori_fit_crease_of(fit, i);
+        cr_assert(fc.edge == c.right || fc.edge == c.up || fc.edge == c.left);
+        // Measured: 0.00018° (right, left) and 0.0010° (up).
+        cr_assert_lt(fc.max_error_rad / DEG, 0.002);
+        double coef[5];
+        cr_assert_eq(ori_fit_coefficients(fit, i, coef, 5), 5);
+        for (int k = 0; k < ori_motion_frame_count(mo); ++k) {
+            double x = ori_motion_frame_drive(mo, k);
+            double poly = coef[0] + x * (coef[1] + x * (coef[2] + x * (coef[3] + x * coef[4])));
+            cr_assert_float_eq(poly, ori_fit_eval(fit, i, x), 1e-12);
+            cr_assert_leq(fabs(poly - ori_motion_frame_angles(mo, k)[fc.edge]), fc.max_error_rad * (1 + 1e-9) + 1e-12);
+        }
+    }
+    ori_motion_destroy(mo);
+    ori_fit_destroy(fit);
+    // An invalid fold cannot be fitted.
+    fd.motion.to_rad = -90 * DEG;
+    cr_assert_eq(ori_fit_solve(c.m, &fd, &fit, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "the fold is invalid assignment"), "%s", err.message);
+    corner_free(&c);
+}
+
+// --- bad input ---------------------------------------------------------------------------------
+
+Test(kinematics, bad_fold_specifications_are_errors_naming_the_index)
+{
+    corner c = corner_load();
+    ori_motion *mo = NULL;
+    ori_error err;
+    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.fixed_face = 7;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
+    cr_assert_eq(err.element, 7);
+    cr_assert_null(mo);
+    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.driven_edge = 0; // a boundary edge
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_ARGUMENT);
+    cr_assert_eq(err.element, 0);
+    cr_assert(strstr(err.message, "not a crease"));
+    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.driven_edge = 99;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
+    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.locked_edges = &c.diag;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "both driven and locked"));
+    d = first_fold(&c, ORI_SOLVER_AUTO, 190);
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
+    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.step_rad = 0.0;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
+    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.has_from = true;
+    d.from_rad = -200 * DEG;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
+    // Start angles that do not close the loop.
+    double bad[13] = {0};
+    bad[c.right] = 0.3;
+    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d.start_angles_rad = bad;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "do not close"));
+    // The closed form needs four moving creases at one vertex.
+    d = first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
+    d.locked_count = 0;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_UNSUPPORTED);
+    // A flat (F) crease cannot be driven.
+    ori_pattern_set_assignment(c.p, c.diag, ORI_ASSIGN_FLAT);
+    ori_mechanism *m2 = mech_of(c.p);
+    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    cr_assert_eq(ori_motion_solve(m2, &d, &mo, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "cannot be driven"));
+    ori_mechanism_destroy(m2);
+    corner_free(&c);
+}
+
+Test(kinematics, slightly_rounded_start_states_are_projected)
+{
+    corner c = corner_load();
+    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion *m1 = solve(c.m, &d);
+    double st[13];
+    memcpy(st, ori_motion_frame_angles(m1, 5), sizeof st);
+    for (int e = 0; e < 13; ++e) st[e] = nearbyint(st[e] / DEG * 1e6) / 1e6 * DEG; // 6 decimals
+    cr_assert_gt(ori_mechanism_residual(c.m, st), ORI_TOL_RESIDUAL);
+    ori_motion_def d2 = first_fold(&c, ORI_SOLVER_NUMERIC, 90);
+    d2.start_angles_rad = st;
+    ori_motion *m2 = solve(c.m, &d2);
+    cr_assert_eq(ori_motion_verdict_of(m2), ORI_MOTION_VALID);
+    check_frames(c.m, c.p, m2);
+    ori_motion_destroy(m1);
+    ori_motion_destroy(m2);
+    corner_free(&c);
+}
+
+// --- the command line: FOLD output and chaining -----------------------------------------
+
+Test(kinematics, cli_writes_folded_frames_and_the_second_fold_starts_from_them)
+{
+    char *dir = test_tmpdir();
+    char args[2200], *out = NULL;
+    snprintf(args, sizeof args,
+             "fold tests/data/kin-open-corner.fold --fix 0 --drive 8 --lock 9 --to 180 --step 30 -o '%s/first.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    char path[1024];
+    snprintf(path, sizeof path, "%s/first.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_frame_count(doc), 8); // frame 0 + 7 steps (0, 30, …, 180)
+    cr_assert(ori_fold_frame_is_folded_form(doc, 7));
+    ori_pattern *last = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 7, NULL, &last, &err), ORI_OK, "%s", err.message);
+    cr_assert(ori_pattern_is_3d(last));
+    cr_assert_float_eq(ori_pattern_edge(last, 8).fold_angle_rad, ORI_PI, 1e-12);
+    cr_assert_float_eq(ori_pattern_edge(last, 12).fold_angle_rad, -ORI_PI / 2, 1e-12);
+    ori_pattern_destroy(last);
+    ori_fold_destroy(doc);
+    // The second fold from the last frame: the corner cube.
+    snprintf(args, sizeof args, "fold '%s' --frame 7 --fix 0 --drive 9 --lock 8 --to 90 --step 45 --json", path);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "\"fold_angles_deg\":[0,0,0,0,0,0,0,0,180,90,90,90,-180]"), "%s", out);
+    free(out);
+    // An invalid fold writes nothing.
+    snprintf(args, sizeof args,
+             "fold tests/data/kin-open-corner-wrong-axis.fold --fix 0 --drive 8 --lock 9 --to -90 -o '%s/bad.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/bad.fold", dir);
+    cr_assert_null(test_read_text(path));
+    // Bad input writes nothing either.
+    snprintf(args, sizeof args, "fold tests/data/kin-open-corner.fold --fix 0 --drive 3 --to 90 -o '%s/bad.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    free(out);
+    cr_assert_null(test_read_text(path));
+    test_tmpdir_remove(dir);
+}
+
+Test(kinematics, cli_square_twist_is_not_rigidly_foldable)
+{
+    const char *path = test_require_shared("rabbit-ear/fold_square-twist.fold");
+    char args[2200], *out = NULL;
+    snprintf(args, sizeof args, "fold '%s' --fix 6 --drive 6 --to -60 --json", path);
+    cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+    cr_assert(strstr(out, "\"verdict\":\"not rigidly foldable\""), "%s", out);
+    cr_assert(strstr(out, "\"rigidly_foldable\":false"), "%s", out);
+    free(out);
+}
+
+// --- holes -------------------------------------------------------------------------------
+
+// A 3×3 square with a 1×1 hole: four creases from the hole's corners, either to the outer
+// corners (diagonals: all axes meet at the centre, a spherical loop) or pinwheel-wise.
+static ori_pattern *ring(bool diagonal)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    ori_error err;
+    if (diagonal) {
+        double pts[][2] = {{0, 0}, {3, 0}, {3, 3}, {0, 3}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+        for (int i = 0; i < 8; ++i) ori_pattern_add_vertex(p, ori_v3_make(pts[i][0], pts[i][1], 0));
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, i, (i + 1) % 4, ORI_ASSIGN_BOUNDARY, 0);
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, 4 + i, 4 + (i + 1) % 4, ORI_ASSIGN_BOUNDARY, 0);
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, i, 4 + i, i % 2 ? ORI_ASSIGN_MOUNTAIN : ORI_ASSIGN_VALLEY, 0);
+        for (int i = 0; i < 4; ++i) {
+            int f[4] = {i, (i + 1) % 4, 4 + (i + 1) % 4, 4 + i};
+            ori_pattern_add_face(p, f, 4);
+        }
+    } else {
+        double pts[][2] = {{0, 0}, {1, 0}, {3, 0}, {3, 1}, {3, 3}, {2, 3}, {0, 3}, {0, 2}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+        for (int i = 0; i < 12; ++i) ori_pattern_add_vertex(p, ori_v3_make(pts[i][0], pts[i][1], 0));
+        for (int i = 0; i < 8; ++i) ori_pattern_add_edge(p, i, (i + 1) % 8, ORI_ASSIGN_BOUNDARY, 0);
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, 8 + i, 8 + (i + 1) % 4, ORI_ASSIGN_BOUNDARY, 0);
+        int outer[4] = {1, 3, 5, 7};
+        for (int i = 0; i < 4; ++i) ori_pattern_add_edge(p, 8 + i, outer[i], ORI_ASSIGN_VALLEY, 0);
+        int f0[] = {1, 2, 3, 9, 8}, f1[] = {3, 4, 5, 10, 9}, f2[] = {5, 6, 7, 11, 10}, f3[] = {7, 0, 1, 8, 11};
+        ori_pattern_add_face(p, f0, 5);
+        ori_pattern_add_face(p, f1, 5);
+        ori_pattern_add_face(p, f2, 5);
+        ori_pattern_add_face(p, f3, 5);
+    }
+    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+Test(kinematics, a_ring_around_a_hole_folds_along_its_diagonal)
+{
+    ori_pattern *p = ring(true);
+    ori_mechanism *m = mech_of(p);
+    cr_assert_eq(ori_mechanism_loop(m, 0).rows, 6);
+    int e0 = ori_pattern_find_edge(p, 0, 4), e2 = ori_pattern_find_edge(p, 2, 6);
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = e0;
+    d.to_rad = 120 * DEG;
+    d.step_rad = 30 * DEG;
+    ori_motion *mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
+    for (int k = 0; k < ori_motion_frame_count(mo); ++k) {
+        const double *a = ori_motion_frame_angles(mo, k);
+        cr_assert_float_eq(a[e2], a[e0], 1e-9); // the opposite crease continues the line
+    }
+    check_frames(m, p, mo);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+Test(kinematics, a_pinwheel_ring_around_a_hole_is_rigid)
+{
+    ori_pattern *p = ring(false);
+    ori_mechanism *m = mech_of(p);
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = 12;
+    d.to_rad = 60 * DEG;
+    d.step_rad = 30 * DEG;
+    ori_motion *mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_NOT_RIGIDLY_FOLDABLE, "%s", ori_motion_reason(mo));
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
