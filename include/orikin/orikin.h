@@ -8,6 +8,7 @@
 #include "fold.h"
 #include "formats.h"
 #include "generate.h"
+#include "kinematics.h"
 #include "math.h"
 #include "pattern.h"
 #include "tolerance.h"
