@@ -167,17 +167,10 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
     for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
-        ori_pattern *p = ori_pattern_clone(k->flat);
         ori_motion_frame_vertices(mo, f, pos);
-        for (int v = 0; v < V; ++v) ori_pattern_set_vertex(p, v, pos[v]);
-        const double *ang = ori_motion_frame_angles(mo, f);
-        for (int e = 0; e < E; ++e) ori_pattern_set_fold_angle(p, e, ang[e]);
-        ori_pattern_set_folded_form(p, true);
-        ori_pattern_set_has_fold_angles(p, true);
         char title[128];
         snprintf(title, sizeof title, "fold crease %d: %g deg", a->drive, cli_deg(ori_motion_frame_drive(mo, f)));
-        ori_fold_append_frame(k->doc, p, "foldedForm", title, 0);
-        ori_pattern_destroy(p);
+        ori_fold_append_state(k->doc, 0, V, pos, E, ori_motion_frame_angles(mo, f), title);
     }
     free(pos);
     ori_error err;

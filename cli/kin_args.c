@@ -33,6 +33,12 @@ int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k)
         return cli_input_fail(cmd, path, "frame 0 is a folded form: the kinematics needs the flat crease pattern there");
     }
     ori_error err;
+    // Frame 0 as loaded, with the faces the mechanism uses (traced when the file had none), so
+    // that folded frames written later inherit faces_vertices and stay readable.
+    if (ori_fold_set_pattern(k->doc, 0, k->flat, &err) != ORI_OK) {
+        cli_kin_free(k);
+        return cli_input_error(cmd, path, &err);
+    }
     ori_mechanism_def md = ori_default_mechanism_def();
     md.pattern = k->flat;
     if (ori_mechanism_create(&md, &k->mech, &err) != ORI_OK) {

@@ -182,3 +182,49 @@ bool test_vertex_flat_foldable(const ori_pattern *p, int v, char *why, size_t wh
     }
     return true;
 }
+
+int test_edge_at(const ori_pattern *p, double x0, double y0, double x1, double y1)
+{
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge E = ori_pattern_edge(p, e);
+        ori_v3 a = ori_pattern_vertex(p, E.v[0]), b = ori_pattern_vertex(p, E.v[1]);
+        if ((a.x == x0 && a.y == y0 && b.x == x1 && b.y == y1) || (a.x == x1 && a.y == y1 && b.x == x0 && b.y == y0))
+            return e;
+    }
+    cr_assert_fail("no edge (%g,%g)-(%g,%g)", x0, y0, x1, y1);
+    return -1;
+}
+
+int test_vertex_at(const ori_pattern *p, double x, double y)
+{
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v)
+        if (ori_pattern_vertex(p, v).x == x && ori_pattern_vertex(p, v).y == y) return v;
+    cr_assert_fail("no vertex (%g,%g)", x, y);
+    return -1;
+}
+
+int test_face_at(const ori_pattern *p, double x, double y)
+{
+    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
+        int v[64];
+        int n = ori_pattern_face_vertices(p, f, v, 64);
+        bool inside = true;
+        for (int k = 0; k < n; ++k) {
+            ori_v3 a = ori_pattern_vertex(p, v[k]), b = ori_pattern_vertex(p, v[(k + 1) % n]);
+            if (ori_orient2d(ori_v2_make(a.x, a.y), ori_v2_make(b.x, b.y), ori_v2_make(x, y)) <= 0.0) inside = false;
+        }
+        if (inside) return f;
+    }
+    cr_assert_fail("no face at (%g,%g)", x, y);
+    return -1;
+}
+
+ori_mechanism *test_mechanism_of(const ori_pattern *p)
+{
+    ori_mechanism_def md = ori_default_mechanism_def();
+    md.pattern = p;
+    ori_mechanism *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_mechanism_create(&md, &m, &err), ORI_OK, "%s", err.message);
+    return m;
+}

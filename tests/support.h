@@ -34,6 +34,14 @@ void test_tmpdir_remove(char *dir);
 // Read a whole file (malloc'd, NUL-terminated) or NULL.
 char *test_read_text(const char *path);
 
+// Locate elements of a flat pattern by exact coordinates (fails the test when absent): the
+// edge joining (x0,y0)-(x1,y1), the vertex at (x,y), the face containing (x,y) strictly.
+int test_edge_at(const ori_pattern *p, double x0, double y0, double x1, double y1);
+int test_vertex_at(const ori_pattern *p, double x, double y);
+int test_face_at(const ori_pattern *p, double x, double y);
+// The mechanism of a built flat pattern (fails the test on error).
+ori_mechanism *test_mechanism_of(const ori_pattern *p);
+
 #endif
 
 // Local flat-foldability of an interior vertex of a built flat pattern, checked independently

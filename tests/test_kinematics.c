@@ -14,51 +14,9 @@ TestSuite(kinematics, .init = test_leak_setup, .fini = test_leak_check);
 
 // --- helpers ---------------------------------------------------------------------------
 
-static int edge_at(const ori_pattern *p, double x0, double y0, double x1, double y1)
-{
-    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
-        ori_edge E = ori_pattern_edge(p, e);
-        ori_v3 a = ori_pattern_vertex(p, E.v[0]), b = ori_pattern_vertex(p, E.v[1]);
-        if ((a.x == x0 && a.y == y0 && b.x == x1 && b.y == y1) || (a.x == x1 && a.y == y1 && b.x == x0 && b.y == y0))
-            return e;
-    }
-    cr_assert_fail("no edge (%g,%g)-(%g,%g)", x0, y0, x1, y1);
-    return -1;
-}
 
-static int vertex_at(const ori_pattern *p, double x, double y)
-{
-    for (int v = 0; v < ori_pattern_vertex_count(p); ++v)
-        if (ori_pattern_vertex(p, v).x == x && ori_pattern_vertex(p, v).y == y) return v;
-    cr_assert_fail("no vertex (%g,%g)", x, y);
-    return -1;
-}
 
-static int face_at(const ori_pattern *p, double x, double y)
-{
-    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
-        int v[64];
-        int n = ori_pattern_face_vertices(p, f, v, 64);
-        bool inside = true;
-        for (int k = 0; k < n; ++k) {
-            ori_v3 a = ori_pattern_vertex(p, v[k]), b = ori_pattern_vertex(p, v[(k + 1) % n]);
-            if (ori_orient2d(ori_v2_make(a.x, a.y), ori_v2_make(b.x, b.y), ori_v2_make(x, y)) <= 0.0) inside = false;
-        }
-        if (inside) return f;
-    }
-    cr_assert_fail("no face at (%g,%g)", x, y);
-    return -1;
-}
 
-static ori_mechanism *mech_of(const ori_pattern *p)
-{
-    ori_mechanism_def md = ori_default_mechanism_def();
-    md.pattern = p;
-    ori_mechanism *m = NULL;
-    ori_error err;
-    cr_assert_eq(ori_mechanism_create(&md, &m, &err), ORI_OK, "%s", err.message);
-    return m;
-}
 
 static ori_motion *solve(const ori_mechanism *m, const ori_motion_def *d)
 {
@@ -81,17 +39,17 @@ static corner corner_load(void)
 {
     corner c;
     c.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
-    c.m = mech_of(c.p);
-    c.diag = edge_at(c.p, 1, 1, 0, 0);
-    c.down = edge_at(c.p, 1, 1, 1, 0);
-    c.right = edge_at(c.p, 1, 1, 2, 1);
-    c.up = edge_at(c.p, 1, 1, 1, 2);
-    c.left = edge_at(c.p, 1, 1, 0, 1);
-    c.T2 = face_at(c.p, 0.7, 0.3);
-    c.T1 = face_at(c.p, 0.3, 0.7);
-    c.LR = face_at(c.p, 1.5, 0.5);
-    c.UR = face_at(c.p, 1.5, 1.5);
-    c.UL = face_at(c.p, 0.5, 1.5);
+    c.m = test_mechanism_of(c.p);
+    c.diag = test_edge_at(c.p, 1, 1, 0, 0);
+    c.down = test_edge_at(c.p, 1, 1, 1, 0);
+    c.right = test_edge_at(c.p, 1, 1, 2, 1);
+    c.up = test_edge_at(c.p, 1, 1, 1, 2);
+    c.left = test_edge_at(c.p, 1, 1, 0, 1);
+    c.T2 = test_face_at(c.p, 0.7, 0.3);
+    c.T1 = test_face_at(c.p, 0.3, 0.7);
+    c.LR = test_face_at(c.p, 1.5, 0.5);
+    c.UR = test_face_at(c.p, 1.5, 1.5);
+    c.UL = test_face_at(c.p, 0.5, 1.5);
     return c;
 }
 
@@ -236,7 +194,7 @@ Test(kinematics, open_corner_frame_a_frame_b_split)
     ori_motion *mo = solve(c.m, &d);
     ori_vertex_split s;
     cr_assert(ori_motion_split(mo, &s));
-    cr_assert_eq(s.vertex, vertex_at(c.p, 1, 1));
+    cr_assert_eq(s.vertex, test_vertex_at(c.p, 1, 1));
     cr_assert_eq(s.frame_a[0], c.diag);
     cr_assert_eq(s.frame_a[1], c.left);
     cr_assert_eq(s.frame_b_count, 3);
@@ -245,7 +203,7 @@ Test(kinematics, open_corner_frame_a_frame_b_split)
     cr_assert_eq(s.frame_b[2], c.left);
     cr_assert_eq(s.surrounding_count, 1);
     cr_assert_eq(s.surrounding[0], c.down);
-    cr_assert_eq(s.end_effector_vertex, vertex_at(c.p, 0, 1));
+    cr_assert_eq(s.end_effector_vertex, test_vertex_at(c.p, 0, 1));
     cr_assert_float_eq(s.d.x, 2.0, 1e-15);
     cr_assert_float_eq(s.d.y, 1.0, 1e-15);
     cr_assert_float_eq(s.d.z, 0.0, 1e-15);
@@ -277,7 +235,7 @@ Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
     // driven in its own direction to −90°.
     ori_pattern_set_assignment(c.p, c.diag, ORI_ASSIGN_MOUNTAIN);
     ori_mechanism_destroy(c.m);
-    c.m = mech_of(c.p);
+    c.m = test_mechanism_of(c.p);
     for (int s = ORI_SOLVER_ANALYTIC; s <= ORI_SOLVER_NUMERIC; ++s) {
         ori_motion_def d = first_fold(&c, (ori_solver)s, -90);
         ori_motion *mo = solve(c.m, &d);
@@ -474,7 +432,7 @@ static void miura_case(int n, ori_linear linear)
 {
     const double w = 1.0, d = 0.4, h = 0.9;
     ori_pattern *p = miura(n, n, w, d, h);
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     int i0 = n / 2, j0 = n / 2;
 #define VID(i, j) ((j) * (n + 1) + (i))
     int drive = ori_pattern_find_edge(p, VID(i0, j0), VID(i0, j0 + 1));
@@ -543,7 +501,7 @@ Test(kinematics, miura_with_a_flipped_crease_is_invalid_and_names_it)
     int e = ori_pattern_find_edge(p, 1 * 5 + 1, 1 * 5 + 2);
     ori_assignment a = ori_pattern_edge(p, e).assignment;
     ori_pattern_set_assignment(p, e, a == ORI_ASSIGN_VALLEY ? ORI_ASSIGN_MOUNTAIN : ORI_ASSIGN_VALLEY);
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     int drive = ori_pattern_find_edge(p, 2 * 5 + 2, 3 * 5 + 2);
     double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
     ori_motion_def md = ori_default_motion_def();
@@ -567,7 +525,7 @@ Test(kinematics, single_square_twist_is_not_rigidly_foldable)
 {
     const char *path = test_require_shared("rabbit-ear/fold_square-twist.fold");
     ori_pattern *p = test_load_pattern(path, 0);
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     cr_assert_eq(ori_mechanism_loop_count(m), 4);
     // Whichever assigned crease is driven (in its direction) there is no rigid motion.
     for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
@@ -673,7 +631,7 @@ Test(kinematics, bad_fold_specifications_are_errors_naming_the_index)
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_UNSUPPORTED);
     // A flat (F) crease cannot be driven.
     ori_pattern_set_assignment(c.p, c.diag, ORI_ASSIGN_FLAT);
-    ori_mechanism *m2 = mech_of(c.p);
+    ori_mechanism *m2 = test_mechanism_of(c.p);
     d = first_fold(&c, ORI_SOLVER_AUTO, 90);
     cr_assert_eq(ori_motion_solve(m2, &d, &mo, &err), ORI_ERR_ARGUMENT);
     cr_assert(strstr(err.message, "cannot be driven"));
@@ -794,7 +752,7 @@ static ori_pattern *ring(bool diagonal)
 Test(kinematics, a_ring_around_a_hole_folds_along_its_diagonal)
 {
     ori_pattern *p = ring(true);
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     cr_assert_eq(ori_mechanism_loop(m, 0).rows, 6);
     int e0 = ori_pattern_find_edge(p, 0, 4), e2 = ori_pattern_find_edge(p, 2, 6);
     ori_motion_def d = ori_default_motion_def();
@@ -816,7 +774,7 @@ Test(kinematics, a_ring_around_a_hole_folds_along_its_diagonal)
 Test(kinematics, a_pinwheel_ring_around_a_hole_is_rigid)
 {
     ori_pattern *p = ring(false);
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     ori_motion_def d = ori_default_motion_def();
     d.driven_edge = 12;
     d.to_rad = 60 * DEG;

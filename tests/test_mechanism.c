@@ -14,45 +14,9 @@ TestSuite(mechanism, .init = test_leak_setup, .fini = test_leak_check);
 static ori_pattern *open_corner(void) { return test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0); }
 
 // Edge joining the points (x0, y0) and (x1, y1) of a flat pattern (either order).
-static int edge_at(const ori_pattern *p, double x0, double y0, double x1, double y1)
-{
-    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
-        ori_edge E = ori_pattern_edge(p, e);
-        ori_v3 a = ori_pattern_vertex(p, E.v[0]), b = ori_pattern_vertex(p, E.v[1]);
-        if ((a.x == x0 && a.y == y0 && b.x == x1 && b.y == y1) || (a.x == x1 && a.y == y1 && b.x == x0 && b.y == y0))
-            return e;
-    }
-    cr_assert_fail("no edge (%g,%g)-(%g,%g)", x0, y0, x1, y1);
-    return -1;
-}
 
 // Face containing the point (x, y) strictly inside (convex faces).
-static int face_at(const ori_pattern *p, double x, double y)
-{
-    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
-        int v[64];
-        int n = ori_pattern_face_vertices(p, f, v, 64);
-        bool inside = true;
-        for (int k = 0; k < n; ++k) {
-            ori_v3 a = ori_pattern_vertex(p, v[k]), b = ori_pattern_vertex(p, v[(k + 1) % n]);
-            if (ori_orient2d(ori_v2_make(a.x, a.y), ori_v2_make(b.x, b.y), ori_v2_make(x, y)) <= 0.0) inside = false;
-        }
-        if (inside) return f;
-    }
-    cr_assert_fail("no face at (%g,%g)", x, y);
-    return -1;
-}
 
-static ori_mechanism *mech_of(const ori_pattern *p)
-{
-    ori_mechanism_def md = ori_default_mechanism_def();
-    md.pattern = p;
-    ori_mechanism *m = NULL;
-    ori_error err;
-    ori_status st = ori_mechanism_create(&md, &m, &err);
-    cr_assert_eq(st, ORI_OK, "%s", err.message);
-    return m;
-}
 
 // --- twists and POE ---------------------------------------------------------------------
 
@@ -103,7 +67,7 @@ Test(mechanism, rotation_vector_log_map_inverts_rodrigues)
 Test(mechanism, open_corner_bodies_joints_and_loop)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     cr_assert_eq(ori_mechanism_face_count(m), 5);
     cr_assert_eq(ori_mechanism_joint_count(m), 5);
     cr_assert_eq(ori_mechanism_loop_count(m), 1);
@@ -114,8 +78,8 @@ Test(mechanism, open_corner_bodies_joints_and_loop)
     cr_assert_eq(ori_pattern_vertex(p, L.vertex).y, 1.0);
     // Boundary edges are not joints; the diagonal's axis runs from v[0] to v[1], face_left on
     // its left.
-    cr_assert_eq(ori_mechanism_edge_joint(m, edge_at(p, 0, 0, 1, 0)), ORI_NULL_INDEX);
-    int diag = edge_at(p, 1, 1, 0, 0);
+    cr_assert_eq(ori_mechanism_edge_joint(m, test_edge_at(p, 0, 0, 1, 0)), ORI_NULL_INDEX);
+    int diag = test_edge_at(p, 1, 1, 0, 0);
     ori_joint J = ori_mechanism_joint(m, ori_mechanism_edge_joint(m, diag));
     ori_edge E = ori_pattern_edge(p, diag);
     ori_v3 a = ori_pattern_vertex(p, E.v[0]), b = ori_pattern_vertex(p, E.v[1]);
@@ -154,7 +118,7 @@ Test(mechanism, open_corner_bodies_joints_and_loop)
 Test(mechanism, grubler_count_of_the_open_corner_is_minus_one)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     cr_assert_eq(ori_mechanism_grubler(m), -1); // 6(5 − 1) − 5·5, thesis eq. (1.3)
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
@@ -163,9 +127,9 @@ Test(mechanism, grubler_count_of_the_open_corner_is_minus_one)
 Test(mechanism, bones_join_face_centroids_to_crease_midpoints)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     cr_assert_eq(ori_mechanism_bone_count(m), 10); // 5 creases × 2 faces
-    int T2 = face_at(p, 0.7, 0.3), diag = edge_at(p, 1, 1, 0, 0);
+    int T2 = test_face_at(p, 0.7, 0.3), diag = test_edge_at(p, 1, 1, 0, 0);
     bool found = false;
     for (int i = 0; i < ori_mechanism_bone_count(m); ++i) {
         ori_bone b = ori_mechanism_bone(m, i);
@@ -184,8 +148,8 @@ Test(mechanism, bones_join_face_centroids_to_crease_midpoints)
 Test(mechanism, spanning_tree_and_poses_by_product_of_exponentials)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
-    int T2 = face_at(p, 0.7, 0.3), T1 = face_at(p, 0.3, 0.7), diag = edge_at(p, 1, 1, 0, 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    int T2 = test_face_at(p, 0.7, 0.3), T1 = test_face_at(p, 0.3, 0.7), diag = test_edge_at(p, 1, 1, 0, 0);
     int parent_face[5], parent_edge[5];
     ori_mechanism_spanning_tree(m, T2, parent_face, parent_edge);
     cr_assert_eq(parent_face[T2], ORI_NULL_INDEX);
@@ -225,15 +189,15 @@ Test(mechanism, spanning_tree_and_poses_by_product_of_exponentials)
 Test(mechanism, residual_of_a_non_closing_state_and_of_a_closing_one)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     double ang[13] = {0};
     cr_assert_eq(ori_mechanism_residual(m, ang), 0.0);
-    ang[edge_at(p, 1, 1, 0, 0)] = 0.5; // one crease alone does not close the loop
+    ang[test_edge_at(p, 1, 1, 0, 0)] = 0.5; // one crease alone does not close the loop
     cr_assert_gt(ori_mechanism_residual(m, ang), 0.1);
     // The straight line left–right folds as one crease: right = left = θ closes.
     double b[13] = {0};
-    b[edge_at(p, 1, 1, 2, 1)] = 0.8;
-    b[edge_at(p, 1, 1, 0, 1)] = 0.8;
+    b[test_edge_at(p, 1, 1, 2, 1)] = 0.8;
+    b[test_edge_at(p, 1, 1, 0, 1)] = 0.8;
     cr_assert_leq(ori_mechanism_residual(m, b), 1e-15);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
@@ -242,7 +206,7 @@ Test(mechanism, residual_of_a_non_closing_state_and_of_a_closing_one)
 Test(mechanism, pose_from_coordinates_recovers_a_rigid_motion)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     ori_rigid G;
     G.r = ori_m3_rotation(ori_v3_normalize(ori_v3_make(1, 2, 2)), 1.1);
     G.t = ori_v3_make(-3, 4, 0.5);
@@ -250,14 +214,14 @@ Test(mechanism, pose_from_coordinates_recovers_a_rigid_motion)
     for (int v = 0; v < 9; ++v) coords[v] = ori_rigid_apply(G, ori_pattern_vertex(p, v));
     ori_rigid H;
     ori_error err;
-    int f = face_at(p, 1.5, 0.5);
+    int f = test_face_at(p, 1.5, 0.5);
     cr_assert_eq(ori_mechanism_face_pose_from_coords(m, f, coords, &H, &err), ORI_OK);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) cr_assert_float_eq(H.r.m[i][j], G.r.m[i][j], 1e-14);
     cr_assert_float_eq(H.t.x, G.t.x, 1e-14);
     // A face that is not rigidly placed is rejected.
     coords[0].z += 0.3;
-    cr_assert_eq(ori_mechanism_face_pose_from_coords(m, face_at(p, 0.7, 0.3), coords, &H, &err), ORI_ERR_DEGENERATE);
+    cr_assert_eq(ori_mechanism_face_pose_from_coords(m, test_face_at(p, 0.7, 0.3), coords, &H, &err), ORI_ERR_DEGENERATE);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
@@ -308,7 +272,7 @@ static ori_pattern *pinwheel_frame(void)
 Test(mechanism, a_hole_adds_a_six_equation_loop)
 {
     ori_pattern *p = pinwheel_frame();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     cr_assert_eq(ori_mechanism_joint_count(m), 4);
     cr_assert_eq(ori_mechanism_loop_count(m), 1);
     ori_loop L = ori_mechanism_loop(m, 0);
@@ -340,7 +304,7 @@ Test(mechanism, a_hole_adds_a_six_equation_loop)
 Test(mechanism, jacobian_dof_of_the_open_corner_flat_is_singular_and_two_nearby)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     ori_dof_def dd = ori_default_dof_def();
     ori_dof_result r;
     ori_error err;
@@ -360,14 +324,14 @@ Test(mechanism, jacobian_dof_of_the_open_corner_flat_is_singular_and_two_nearby)
 Test(mechanism, jacobian_dof_of_the_open_corner_away_from_flat_is_two)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     // A closed folded state: right = up-left line folded as one (left–right line) plus nothing
     // else is special; use the first fold at Θ1 = 90° (from the closed form).
     double ang[13] = {0};
-    ang[edge_at(p, 1, 1, 0, 0)] = ORI_PI / 2;
-    ang[edge_at(p, 1, 1, 2, 1)] = asin(1.0 / sqrt(3.0));
-    ang[edge_at(p, 1, 1, 1, 2)] = ORI_PI / 3;
-    ang[edge_at(p, 1, 1, 0, 1)] = -asin(1.0 / sqrt(3.0));
+    ang[test_edge_at(p, 1, 1, 0, 0)] = ORI_PI / 2;
+    ang[test_edge_at(p, 1, 1, 2, 1)] = asin(1.0 / sqrt(3.0));
+    ang[test_edge_at(p, 1, 1, 1, 2)] = ORI_PI / 3;
+    ang[test_edge_at(p, 1, 1, 0, 1)] = -asin(1.0 / sqrt(3.0));
     cr_assert_leq(ori_mechanism_residual(m, ang), 1e-15);
     ori_dof_def dd = ori_default_dof_def();
     dd.angles_rad = ang;
@@ -379,7 +343,7 @@ Test(mechanism, jacobian_dof_of_the_open_corner_away_from_flat_is_two)
     cr_assert_eq(r.generic_dof, 2);
     cr_assert_not(r.singular);
     // Locking the down crease leaves the 4R: one DOF.
-    int lock = edge_at(p, 1, 1, 1, 0);
+    int lock = test_edge_at(p, 1, 1, 1, 0);
     dd.locked_edges = &lock;
     dd.locked_count = 1;
     cr_assert_eq(ori_mechanism_dof(m, &dd, &r, &err), ORI_OK);
@@ -391,9 +355,9 @@ Test(mechanism, jacobian_dof_of_the_open_corner_away_from_flat_is_two)
 Test(mechanism, dof_rejects_angles_that_do_not_close)
 {
     ori_pattern *p = open_corner();
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     double ang[13] = {0};
-    ang[edge_at(p, 1, 1, 0, 0)] = 0.5;
+    ang[test_edge_at(p, 1, 1, 0, 0)] = 0.5;
     ori_dof_def dd = ori_default_dof_def();
     dd.angles_rad = ang;
     ori_dof_result r;
@@ -442,7 +406,7 @@ Test(mechanism, sparse_dof_agrees_with_dense_svd)
     // A folded 6×6 Miura state from the numeric solver, then the sparse nullity (forced by a
     // direct call) against the dense SVD.
     ori_pattern *p = miura(6, 6, 1.0, 0.4, 1.0);
-    ori_mechanism *m = mech_of(p);
+    ori_mechanism *m = test_mechanism_of(p);
     int drive = ori_pattern_find_edge(p, 3 * 7 + 3, 4 * 7 + 3);
     double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
     ori_motion_def d = ori_default_motion_def();

@@ -4,7 +4,7 @@
 ///
 /// Functions: ori_fold_load_file, ori_fold_load_string, ori_fold_create, ori_fold_destroy,
 /// ori_fold_frame_count, ori_fold_frame_is_folded_form, ori_fold_get_pattern,
-/// ori_fold_set_pattern, ori_fold_append_frame, ori_fold_get_custom, ori_fold_set_custom,
+/// ori_fold_set_pattern, ori_fold_append_frame, ori_fold_append_state, ori_fold_get_custom, ori_fold_set_custom,
 /// ori_fold_set_string, ori_fold_to_string, ori_json_normalize, ori_fold_save_file.
 ///
 /// Frame numbers follow FOLD: frame 0 is the top level, frame k ≥ 1 is file_frames[k − 1].
@@ -58,6 +58,13 @@ ORI_API ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_patt
 /// frame number.
 ORI_API int ori_fold_append_frame(ori_fold *doc, const ori_pattern *pattern,
                                   const char *frame_class, const char *title, int parent);
+
+/// Append a folded state of the parent frame's pattern: a "foldedForm" frame inheriting from
+/// parent with 3D vertices_coords = positions (vertex_count entries) and edges_foldAngle =
+/// angles_rad (edge_count entries, written in degrees), and an optional title. Returns the
+/// new frame number.
+ORI_API int ori_fold_append_state(ori_fold *doc, int parent, int vertex_count, const ori_v3 *positions,
+                                  int edge_count, const double *angles_rad, const char *title);
 
 /// A field of a frame as JSON text (e.g. key "orikin:sequence"), or NULL when absent. Free
 /// with ori_buffer_free.

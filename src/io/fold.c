@@ -339,32 +339,41 @@ ori_status ori_fold_get_pattern(const ori_fold *doc, int frame, const ori_build_
 
 // --- writing a pattern ---------------------------------------------------------------------
 
-static json_t *coords_json(const ori_pattern *p, bool three)
+static json_t *coords_json(const ori_v3 *vertices, int count, bool three)
 {
     json_t *arr = json_array();
-    for (int i = 0; i < p->vertex_count; ++i) {
+    for (int i = 0; i < count; ++i) {
         json_t *c = json_array();
-        json_array_append_new(c, ori__json_number(p->vertices[i].x));
-        json_array_append_new(c, ori__json_number(p->vertices[i].y));
-        if (three) json_array_append_new(c, ori__json_number(p->vertices[i].z));
+        json_array_append_new(c, ori__json_number(vertices[i].x));
+        json_array_append_new(c, ori__json_number(vertices[i].y));
+        if (three) json_array_append_new(c, ori__json_number(vertices[i].z));
         json_array_append_new(arr, c);
     }
     return arr;
 }
 
 // Fold angles in degrees; an unchanged angle keeps the file's own number.
-static json_t *fold_angles_json(const ori_pattern *p, json_t *old)
+static json_t *fold_angles_json(const double *angles_rad, int count, json_t *old)
 {
     json_t *arr = json_array();
-    bool same_size = json_is_array(old) && json_array_size(old) == (size_t)p->edge_count;
-    for (int e = 0; e < p->edge_count; ++e) {
-        double rad = p->edges[e].fold_angle_rad;
+    bool same_size = json_is_array(old) && json_array_size(old) == (size_t)count;
+    for (int e = 0; e < count; ++e) {
+        double rad = angles_rad[e];
         json_t *o = same_size ? json_array_get(old, (size_t)e) : NULL;
         if (o && json_is_number(o) && ori_deg_to_rad(json_number_value(o)) == rad)
             json_array_append(arr, o);
         else
             json_array_append_new(arr, ori__json_number(ori__clean_degrees(ori_rad_to_deg(rad))));
     }
+    return arr;
+}
+
+static json_t *pattern_angles_json(const ori_pattern *p, json_t *old)
+{
+    double *a = ori__alloc(sizeof(double) * (size_t)(p->edge_count ? p->edge_count : 1));
+    for (int e = 0; e < p->edge_count; ++e) a[e] = p->edges[e].fold_angle_rad;
+    json_t *arr = fold_angles_json(a, p->edge_count, old);
+    ori__free(a);
     return arr;
 }
 
@@ -408,11 +417,11 @@ static bool any_face_name(const ori_pattern *p)
 
 static void write_pattern_fields(json_t *obj, const ori_pattern *p, json_t *old_angles, bool three)
 {
-    json_object_set_new(obj, "vertices_coords", coords_json(p, three));
+    json_object_set_new(obj, "vertices_coords", coords_json(p->vertices, p->vertex_count, three));
     json_object_set_new(obj, "edges_vertices", edges_json(p));
     json_object_set_new(obj, "edges_assignment", assignments_json(p));
     if (p->has_fold_angles)
-        json_object_set_new(obj, "edges_foldAngle", fold_angles_json(p, old_angles));
+        json_object_set_new(obj, "edges_foldAngle", pattern_angles_json(p, old_angles));
     else
         json_object_del(obj, "edges_foldAngle");
     if (p->face_count > 0) json_object_set_new(obj, "faces_vertices", faces_json(p));
@@ -467,11 +476,8 @@ ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, 
     return ORI_OK;
 }
 
-int ori_fold_append_frame(ori_fold *doc, const ori_pattern *p, const char *frame_class,
-                          const char *title, int parent)
+static json_t *new_frame(ori_fold *doc, const char *frame_class, const char *title)
 {
-    ORI_ASSERT(doc && p);
-    ORI_ASSERT(parent == ORI_NULL_INDEX || (parent >= 0 && parent < ori_fold_frame_count(doc)));
     json_t *frames = json_object_get(doc->root, "file_frames");
     if (!frames) {
         frames = json_array();
@@ -484,16 +490,44 @@ int ori_fold_append_frame(ori_fold *doc, const ori_pattern *p, const char *frame
         json_array_append_new(classes, json_string(frame_class));
         json_object_set_new(obj, "frame_classes", classes);
     }
+    json_array_append_new(frames, obj);
+    return obj;
+}
+
+static void set_state_fields(json_t *obj, int parent, int vertex_count, const ori_v3 *positions,
+                             int edge_count, const double *angles_rad)
+{
+    json_object_set_new(obj, "frame_parent", json_integer(parent));
+    json_object_set_new(obj, "frame_inherit", json_true());
+    json_object_set_new(obj, "vertices_coords", coords_json(positions, vertex_count, true));
+    json_object_set_new(obj, "edges_foldAngle", fold_angles_json(angles_rad, edge_count, NULL));
+}
+
+int ori_fold_append_frame(ori_fold *doc, const ori_pattern *p, const char *frame_class,
+                          const char *title, int parent)
+{
+    ORI_ASSERT(doc && p);
+    ORI_ASSERT(parent == ORI_NULL_INDEX || (parent >= 0 && parent < ori_fold_frame_count(doc)));
+    json_t *obj = new_frame(doc, frame_class, title);
     if (parent == ORI_NULL_INDEX) {
         write_pattern_fields(obj, p, NULL, ori_pattern_is_3d(p));
     } else {
-        json_object_set_new(obj, "frame_parent", json_integer(parent));
-        json_object_set_new(obj, "frame_inherit", json_true());
-        json_object_set_new(obj, "vertices_coords", coords_json(p, true));
-        json_object_set_new(obj, "edges_foldAngle", fold_angles_json(p, NULL));
+        double *a = ori__alloc(sizeof(double) * (size_t)(p->edge_count ? p->edge_count : 1));
+        for (int e = 0; e < p->edge_count; ++e) a[e] = p->edges[e].fold_angle_rad;
+        set_state_fields(obj, parent, p->vertex_count, p->vertices, p->edge_count, a);
+        ori__free(a);
     }
-    json_array_append_new(frames, obj);
-    return (int)json_array_size(frames);
+    return ori_fold_frame_count(doc) - 1;
+}
+
+int ori_fold_append_state(ori_fold *doc, int parent, int vertex_count, const ori_v3 *positions,
+                          int edge_count, const double *angles_rad, const char *title)
+{
+    ORI_ASSERT(doc && positions && angles_rad && vertex_count >= 0 && edge_count >= 0);
+    ORI_ASSERT(parent >= 0 && parent < ori_fold_frame_count(doc));
+    json_t *obj = new_frame(doc, "foldedForm", title);
+    set_state_fields(obj, parent, vertex_count, positions, edge_count, angles_rad);
+    return ori_fold_frame_count(doc) - 1;
 }
 
 // --- custom fields -------------------------------------------------------------------------

@@ -1,0 +1,495 @@
+// Fold sequences (the folding manager): parsing SEQ.json, running the folds one after the other
+// from the geometry the previous one left, the motion record, and exact restoration of any
+// instant by continuation from the recorded state before it.
+#include <orikin/sequence.h>
+
+#include <jansson.h>
+
+#include "../core/core_internal.h"
+
+struct ori_sequence {
+    char *pattern;
+    int frame;
+    int fold_count;
+    ori_sequence_fold *folds;
+};
+
+// Per fold of a run: where its fixed face is, its drive range, its first recorded frame.
+typedef struct record_fold {
+    ori_rigid fixed_pose;
+    double from_rad, to_rad;
+    int first_frame;
+} record_fold;
+
+struct ori_record {
+    const ori_mechanism *mechanism;
+    ori_sequence_fold *folds;
+    record_fold *run;
+    int fold_count, completed, failed;
+    ori_motion_verdict verdict;
+    char *reason;
+    int vertex_count, edge_count;
+    int frame_count, frame_cap;
+    double *times, *drives, *residuals;
+    int *frame_folds;
+    double *angles;    // frame_count × edge_count
+    ori_v3 *positions; // frame_count × vertex_count
+};
+
+// --- parsing -----------------------------------------------------------------------------
+
+static const char *const fold_keys[] = {"fix", "drive", "to", "from", "step", "lock", "name"};
+static const char *const top_keys[] = {"pattern", "frame", "folds", "title", "description"};
+
+static bool known_key(const char *key, const char *const *keys, size_t n)
+{
+    for (size_t i = 0; i < n; ++i)
+        if (strcmp(key, keys[i]) == 0) return true;
+    return false;
+}
+
+static ori_status fold_fail(ori_error *error, int fold, const char *fmt, const char *what)
+{
+    return ori__fail_at(error, ORI_ERR_TYPE, "folds", fold, fmt, what);
+}
+
+static ori_status read_index_field(json_t *obj, const char *key, int fold, bool required, int *out,
+                                   ori_error *error)
+{
+    json_t *v = json_object_get(obj, key);
+    if (!v) return required ? fold_fail(error, fold, "missing \"%s\"", key) : ORI_OK;
+    if (!json_is_integer(v) || json_integer_value(v) < 0 || json_integer_value(v) > INT32_MAX)
+        return fold_fail(error, fold, "\"%s\" must be a FOLD index (an integer ≥ 0)", key);
+    *out = (int)json_integer_value(v);
+    return ORI_OK;
+}
+
+static ori_status read_angle_field(json_t *obj, const char *key, int fold, bool *present, double *out_rad,
+                                   ori_error *error)
+{
+    json_t *v = json_object_get(obj, key);
+    *present = v != NULL;
+    if (!v) return ORI_OK;
+    if (!json_is_number(v)) return fold_fail(error, fold, "\"%s\" must be a number of degrees", key);
+    double deg = json_number_value(v);
+    if (!(deg >= -180.0 && deg <= 180.0))
+        return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold, "\"%s\" = %g is outside [-180, 180] degrees", key, deg);
+    *out_rad = ori_deg_to_rad(deg);
+    return ORI_OK;
+}
+
+static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, ori_error *error)
+{
+    memset(f, 0, sizeof *f);
+    if (!json_is_object(obj)) return fold_fail(error, i, "%s", "a fold must be an object");
+    const char *key;
+    json_t *val;
+    json_object_foreach(obj, key, val)
+    {
+        if (!known_key(key, fold_keys, sizeof fold_keys / sizeof fold_keys[0]))
+            return fold_fail(error, i, "unknown field \"%s\" (fix, drive, to, from, step, lock, name)", key);
+    }
+    ori_status st;
+    if ((st = read_index_field(obj, "fix", i, true, &f->fixed_face, error)) != ORI_OK) return st;
+    if ((st = read_index_field(obj, "drive", i, true, &f->driven_edge, error)) != ORI_OK) return st;
+    bool has_to, has_step;
+    if ((st = read_angle_field(obj, "to", i, &has_to, &f->to_rad, error)) != ORI_OK) return st;
+    if (!has_to) return fold_fail(error, i, "missing \"%s\"", "to");
+    if ((st = read_angle_field(obj, "from", i, &f->has_from, &f->from_rad, error)) != ORI_OK) return st;
+    json_t *step = json_object_get(obj, "step");
+    has_step = step != NULL;
+    f->step_rad = ori_deg_to_rad(10.0);
+    if (has_step) {
+        if (!json_is_number(step) || !(json_number_value(step) > 0.0) || json_number_value(step) > 360.0)
+            return ori__fail_at(error, ORI_ERR_RANGE, "folds", i, "\"step\" must be a number of degrees in (0, 360]");
+        f->step_rad = ori_deg_to_rad(json_number_value(step));
+    }
+    json_t *lock = json_object_get(obj, "lock");
+    if (lock) {
+        if (!json_is_array(lock)) return fold_fail(error, i, "%s", "\"lock\" must be an array of FOLD edge indices");
+        if (json_array_size(lock) > ORI_SEQUENCE_MAX_LOCKS)
+            return ori__fail_at(error, ORI_ERR_LIMIT, "folds", i, "more than %d locked creases", ORI_SEQUENCE_MAX_LOCKS);
+        size_t k;
+        json_t *e;
+        json_array_foreach(lock, k, e)
+        {
+            if (!json_is_integer(e) || json_integer_value(e) < 0 || json_integer_value(e) > INT32_MAX)
+                return fold_fail(error, i, "%s", "\"lock\" must be an array of FOLD edge indices");
+            f->locked[f->locked_count++] = (int)json_integer_value(e);
+        }
+    }
+    json_t *name = json_object_get(obj, "name");
+    if (name) {
+        if (!json_is_string(name) || strlen(json_string_value(name)) >= ORI_NAME_MAX)
+            return fold_fail(error, i, "\"%s\" must be a string of at most 63 characters", "name");
+        ori__strlcpy(f->name, json_string_value(name), sizeof f->name);
+    }
+    return ORI_OK;
+}
+
+ori_status ori_sequence_parse(const char *text, size_t size, ori_sequence **out, ori_error *error)
+{
+    ORI_ASSERT(text && out);
+    *out = NULL;
+    ori_error_clear(error);
+    json_error_t je;
+    json_t *root = json_loadb(text, size, JSON_REJECT_DUPLICATES, &je);
+    if (!root)
+        return ori__fail_pos(error, ORI_ERR_PARSE, je.line > 0 ? je.line : 1, je.column > 0 ? je.column : 1, "%s", je.text);
+    ori_status st = ORI_OK;
+    ori_sequence *s = ori__calloc(1, sizeof *s);
+    const char *key;
+    json_t *val;
+    if (!json_is_object(root)) {
+        st = ori__fail(error, ORI_ERR_TYPE, "a sequence must be a JSON object {\"pattern\", \"folds\"}");
+        goto done;
+    }
+    json_object_foreach(root, key, val)
+    {
+        if (!known_key(key, top_keys, sizeof top_keys / sizeof top_keys[0])) {
+            st = ori__fail_at(error, ORI_ERR_TYPE, key, ORI_NULL_INDEX,
+                              "unknown field (pattern, frame, folds, title, description)");
+            goto done;
+        }
+    }
+    json_t *pattern = json_object_get(root, "pattern");
+    if (!json_is_string(pattern) || json_string_length(pattern) == 0) {
+        st = ori__fail_at(error, ORI_ERR_TYPE, "pattern", ORI_NULL_INDEX, "must name the FOLD file of the crease pattern");
+        goto done;
+    }
+    s->pattern = ori__strdup(json_string_value(pattern));
+    json_t *frame = json_object_get(root, "frame");
+    if (frame && (!json_is_integer(frame) || json_integer_value(frame) < 0 || json_integer_value(frame) > INT32_MAX)) {
+        st = ori__fail_at(error, ORI_ERR_TYPE, "frame", ORI_NULL_INDEX, "must be a frame number ≥ 0");
+        goto done;
+    }
+    s->frame = frame ? (int)json_integer_value(frame) : 0;
+    json_t *folds = json_object_get(root, "folds");
+    if (!json_is_array(folds) || json_array_size(folds) == 0 || json_array_size(folds) > 100000) {
+        st = ori__fail_at(error, ORI_ERR_TYPE, "folds", ORI_NULL_INDEX, "must be a non-empty array of folds");
+        goto done;
+    }
+    s->fold_count = (int)json_array_size(folds);
+    s->folds = ori__calloc((size_t)s->fold_count, sizeof *s->folds);
+    for (int i = 0; i < s->fold_count && st == ORI_OK; ++i)
+        st = parse_fold(json_array_get(folds, (size_t)i), i, &s->folds[i], error);
+done:
+    json_decref(root);
+    if (st != ORI_OK) {
+        ori_sequence_destroy(s);
+        return st;
+    }
+    *out = s;
+    return ORI_OK;
+}
+
+ori_status ori_sequence_load_file(const char *path, ori_sequence **out, ori_error *error)
+{
+    ORI_ASSERT(path && out);
+    *out = NULL;
+    char *data;
+    size_t size;
+    ori_status st = ori_file_read_all(path, (size_t)64 << 20, &data, &size, error);
+    if (st != ORI_OK) return st;
+    st = ori_sequence_parse(data, size, out, error);
+    ori__free(data);
+    return st;
+}
+
+void ori_sequence_destroy(ori_sequence *s)
+{
+    if (!s) return;
+    ori__free(s->pattern);
+    ori__free(s->folds);
+    ori__free(s);
+}
+
+const char *ori_sequence_pattern_path(const ori_sequence *s) { ORI_ASSERT(s); return s->pattern; }
+int ori_sequence_frame(const ori_sequence *s) { ORI_ASSERT(s); return s->frame; }
+int ori_sequence_fold_count(const ori_sequence *s) { ORI_ASSERT(s); return s->fold_count; }
+
+ori_sequence_fold ori_sequence_fold_at(const ori_sequence *s, int fold)
+{
+    ORI_ASSERT(s && fold >= 0 && fold < s->fold_count);
+    return s->folds[fold];
+}
+
+static json_t *degrees(double rad)
+{
+    double d = ori_rad_to_deg(rad), r = round(d);
+    if (fabs(d - r) <= ORI_TOL_PRINT_DEG) d = r;
+    return json_real(d == 0.0 ? 0.0 : d);
+}
+
+char *ori_sequence_to_json(const ori_sequence *s)
+{
+    ORI_ASSERT(s);
+    json_t *root = json_object();
+    json_object_set_new(root, "pattern", json_string(s->pattern));
+    json_object_set_new(root, "frame", json_integer(s->frame));
+    json_t *folds = json_array();
+    for (int i = 0; i < s->fold_count; ++i) {
+        const ori_sequence_fold *f = &s->folds[i];
+        json_t *o = json_object();
+        if (f->name[0]) json_object_set_new(o, "name", json_string(f->name));
+        json_object_set_new(o, "fix", json_integer(f->fixed_face));
+        json_object_set_new(o, "drive", json_integer(f->driven_edge));
+        if (f->has_from) json_object_set_new(o, "from", degrees(f->from_rad));
+        json_object_set_new(o, "to", degrees(f->to_rad));
+        json_object_set_new(o, "step", degrees(f->step_rad));
+        json_t *lock = json_array();
+        for (int k = 0; k < f->locked_count; ++k) json_array_append_new(lock, json_integer(f->locked[k]));
+        json_object_set_new(o, "lock", lock);
+        json_array_append_new(folds, o);
+    }
+    json_object_set_new(root, "folds", folds);
+    char *raw = json_dumps(root, JSON_COMPACT | JSON_REAL_PRECISION(17));
+    json_decref(root);
+    char *text = ori__strdup(raw);
+    free(raw);
+    return text;
+}
+
+// --- running -------------------------------------------------------------------------------
+
+static void record_state(ori_record *r, double t, int fold, double drive, const double *angles,
+                         const ori_v3 *positions, double residual)
+{
+    int n = r->frame_count;
+    if (n == r->frame_cap) {
+        int cap = r->frame_cap ? 2 * r->frame_cap : 16;
+        r->times = ori__realloc(r->times, sizeof(double) * (size_t)cap);
+        r->drives = ori__realloc(r->drives, sizeof(double) * (size_t)cap);
+        r->residuals = ori__realloc(r->residuals, sizeof(double) * (size_t)cap);
+        r->frame_folds = ori__realloc(r->frame_folds, sizeof(int) * (size_t)cap);
+        r->angles = ori__realloc(r->angles, sizeof(double) * (size_t)cap * (size_t)(r->edge_count ? r->edge_count : 1));
+        r->positions = ori__realloc(r->positions, sizeof(ori_v3) * (size_t)cap * (size_t)(r->vertex_count ? r->vertex_count : 1));
+        r->frame_cap = cap;
+    }
+    r->times[n] = t;
+    r->frame_folds[n] = fold;
+    r->drives[n] = drive;
+    r->residuals[n] = residual;
+    memcpy(r->angles + (size_t)n * (size_t)r->edge_count, angles, sizeof(double) * (size_t)r->edge_count);
+    memcpy(r->positions + (size_t)n * (size_t)r->vertex_count, positions, sizeof(ori_v3) * (size_t)r->vertex_count);
+    r->frame_count = n + 1;
+}
+
+static ori_motion_def fold_def(const ori_sequence_fold *f, const double *start, ori_rigid pose)
+{
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = f->fixed_face;
+    d.fixed_pose = pose;
+    d.start_angles_rad = start;
+    d.driven_edge = f->driven_edge;
+    d.has_from = f->has_from;
+    d.from_rad = f->from_rad;
+    d.to_rad = f->to_rad;
+    d.step_rad = f->step_rad;
+    d.locked_edges = f->locked;
+    d.locked_count = f->locked_count;
+    return d;
+}
+
+// Sequence time of drive angle x in a fold ranging from → to.
+static double fold_time(int fold, double from, double to, double x)
+{
+    double span = to - from;
+    double s = span != 0.0 ? (x - from) / span : 1.0;
+    if (s < 0.0) s = 0.0;
+    if (s > 1.0) s = 1.0;
+    return (double)fold + s;
+}
+
+ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const double *start,
+                            ori_rigid fixed_pose, ori_record **out, ori_error *error)
+{
+    ORI_ASSERT(s && m && out);
+    *out = NULL;
+    ori_error_clear(error);
+    ori_record *r = ori__calloc(1, sizeof *r);
+    r->mechanism = m;
+    r->fold_count = s->fold_count;
+    r->folds = ori__alloc(sizeof(ori_sequence_fold) * (size_t)s->fold_count);
+    memcpy(r->folds, s->folds, sizeof(ori_sequence_fold) * (size_t)s->fold_count);
+    r->run = ori__calloc((size_t)s->fold_count, sizeof(record_fold));
+    r->failed = ORI_NULL_INDEX;
+    r->verdict = ORI_MOTION_VALID;
+    r->vertex_count = ori_mechanism_vertex_count(m);
+    r->edge_count = ori_mechanism_edge_count(m);
+    int F = ori_mechanism_face_count(m);
+
+    double *angles = ori__calloc((size_t)(r->edge_count ? r->edge_count : 1), sizeof(double));
+    if (start) memcpy(angles, start, sizeof(double) * (size_t)r->edge_count);
+    ori_rigid *poses = ori__alloc(sizeof(ori_rigid) * (size_t)(F ? F : 1));
+    ori_v3 *pos = ori__alloc(sizeof(ori_v3) * (size_t)(r->vertex_count ? r->vertex_count : 1));
+    ori_rigid pose = fixed_pose;
+    ori_status st = ORI_OK;
+
+    for (int i = 0; i < s->fold_count; ++i) {
+        const ori_sequence_fold *f = &s->folds[i];
+        if (i > 0) {
+            // the new fixed face stays where the previous fold left it
+            if (f->fixed_face < 0 || f->fixed_face >= F) {
+                st = ori__fail_at(error, ORI_ERR_RANGE, "folds", i, "fix: face %d does not exist (%d faces)", f->fixed_face, F);
+                break;
+            }
+            pose = poses[f->fixed_face];
+        }
+        ori_motion_def d = fold_def(f, angles, pose);
+        ori_motion *mo = NULL;
+        ori_error e;
+        st = ori_motion_solve(m, &d, &mo, &e);
+        if (st != ORI_OK) {
+            char msg[256];
+            ori_error_format(&e, msg, sizeof msg);
+            ori__fail_at(error, st, "folds", i, "%s", msg);
+            break;
+        }
+        ori_motion_verdict v = ori_motion_verdict_of(mo);
+        if (v != ORI_MOTION_VALID) {
+            r->verdict = v;
+            r->failed = i;
+            const char *why = ori_motion_reason(mo);
+            r->reason = ori__strdup(why ? why : ori_motion_verdict_name(v));
+            ori_motion_destroy(mo);
+            break;
+        }
+        int nf = ori_motion_frame_count(mo);
+        record_fold *rf = &r->run[i];
+        rf->fixed_pose = pose;
+        rf->from_rad = ori_motion_frame_drive(mo, 0);
+        rf->to_rad = ori_motion_frame_drive(mo, nf - 1);
+        rf->first_frame = r->frame_count;
+        for (int k = 0; k < nf; ++k) {
+            // the first state of a fold repeats the last of the previous one (unless "from" jumps)
+            if (k == 0 && i > 0 && !f->has_from) continue;
+            double drive = ori_motion_frame_drive(mo, k);
+            ori_motion_frame_vertices(mo, k, pos);
+            record_state(r, fold_time(i, rf->from_rad, rf->to_rad, drive), i, drive,
+                         ori_motion_frame_angles(mo, k), pos, ori_motion_frame_residual(mo, k));
+        }
+        if (i > 0 && !f->has_from) rf->first_frame -= 1; // fold i starts at the previous end state
+        memcpy(angles, ori_motion_frame_angles(mo, nf - 1), sizeof(double) * (size_t)r->edge_count);
+        ori_motion_frame_face_poses(mo, nf - 1, poses);
+        ori_motion_destroy(mo);
+        r->completed = i + 1;
+    }
+    ori__free(angles);
+    ori__free(poses);
+    ori__free(pos);
+    if (st != ORI_OK) {
+        ori_record_destroy(r);
+        return st;
+    }
+    *out = r;
+    return ORI_OK;
+}
+
+void ori_record_destroy(ori_record *r)
+{
+    if (!r) return;
+    ori__free(r->folds);
+    ori__free(r->run);
+    ori__free(r->reason);
+    ori__free(r->times);
+    ori__free(r->drives);
+    ori__free(r->residuals);
+    ori__free(r->frame_folds);
+    ori__free(r->angles);
+    ori__free(r->positions);
+    ori__free(r);
+}
+
+int ori_record_fold_count(const ori_record *r) { ORI_ASSERT(r); return r->fold_count; }
+int ori_record_completed_folds(const ori_record *r) { ORI_ASSERT(r); return r->completed; }
+ori_motion_verdict ori_record_verdict(const ori_record *r) { ORI_ASSERT(r); return r->verdict; }
+const char *ori_record_reason(const ori_record *r) { ORI_ASSERT(r); return r->reason; }
+int ori_record_failed_fold(const ori_record *r) { ORI_ASSERT(r); return r->failed; }
+int ori_record_frame_count(const ori_record *r) { ORI_ASSERT(r); return r->frame_count; }
+double ori_record_duration(const ori_record *r) { ORI_ASSERT(r); return (double)r->completed; }
+
+double ori_record_frame_time(const ori_record *r, int i)
+{
+    ORI_ASSERT(r && i >= 0 && i < r->frame_count);
+    return r->times[i];
+}
+
+int ori_record_frame_fold(const ori_record *r, int i)
+{
+    ORI_ASSERT(r && i >= 0 && i < r->frame_count);
+    return r->frame_folds[i];
+}
+
+double ori_record_frame_drive(const ori_record *r, int i)
+{
+    ORI_ASSERT(r && i >= 0 && i < r->frame_count);
+    return r->drives[i];
+}
+
+const double *ori_record_frame_angles(const ori_record *r, int i)
+{
+    ORI_ASSERT(r && i >= 0 && i < r->frame_count);
+    return r->angles + (size_t)i * (size_t)r->edge_count;
+}
+
+double ori_record_frame_residual(const ori_record *r, int i)
+{
+    ORI_ASSERT(r && i >= 0 && i < r->frame_count);
+    return r->residuals[i];
+}
+
+const ori_v3 *ori_record_frame_vertices(const ori_record *r, int i)
+{
+    ORI_ASSERT(r && i >= 0 && i < r->frame_count);
+    return r->positions + (size_t)i * (size_t)r->vertex_count;
+}
+
+ori_status ori_record_at(const ori_record *r, double t, double *angles, ori_v3 *positions, double *drive_out,
+                         int *fold_out, double *residual_out, ori_error *error)
+{
+    ORI_ASSERT(r && angles);
+    ori_error_clear(error);
+    if (r->completed == 0 || !(t >= 0.0 && t <= (double)r->completed))
+        return ori__fail(error, ORI_ERR_RANGE, "time %g is outside [0, %d]", t, r->completed);
+    // fold j holds t ∈ [j, j + 1]; an integer t ≥ 1 is the end of fold t − 1
+    int j = (int)floor(t);
+    if (j > 0 && (double)j == t) j -= 1;
+    if (j >= r->completed) j = r->completed - 1;
+    const record_fold *rf = &r->run[j];
+    double s = t - (double)j;
+    double target = rf->from_rad + s * (rf->to_rad - rf->from_rad);
+    // the recorded state of fold j at or before t
+    int base = rf->first_frame;
+    int last = j + 1 < r->completed ? r->run[j + 1].first_frame : r->frame_count - 1;
+    for (int k = base; k <= last && k < r->frame_count; ++k)
+        if (r->times[k] <= t && (r->frame_folds[k] == j || k == rf->first_frame)) base = k;
+    const double *start = ori_record_frame_angles(r, base);
+    double start_drive = start[r->folds[j].driven_edge];
+    if (drive_out) *drive_out = target;
+    if (fold_out) *fold_out = j;
+    if (start_drive == target || r->times[base] == t) {
+        memcpy(angles, start, sizeof(double) * (size_t)r->edge_count);
+        if (positions) memcpy(positions, ori_record_frame_vertices(r, base), sizeof(ori_v3) * (size_t)r->vertex_count);
+        if (residual_out) *residual_out = r->residuals[base];
+        return ORI_OK;
+    }
+    ori_sequence_fold f = r->folds[j];
+    f.has_from = false;
+    f.to_rad = target;
+    f.step_rad = fabs(target - start_drive);
+    ori_motion_def d = fold_def(&f, start, rf->fixed_pose);
+    ori_motion *mo = NULL;
+    ori_status st = ori_motion_solve(r->mechanism, &d, &mo, error);
+    if (st != ORI_OK) return st;
+    int nf = ori_motion_frame_count(mo);
+    if (ori_motion_verdict_of(mo) != ORI_MOTION_VALID || nf == 0) {
+        ori_motion_destroy(mo);
+        return ori__fail(error, ORI_ERR_NOT_CONVERGED, "the motion of fold %d could not be restored at time %g", j + 1, t);
+    }
+    memcpy(angles, ori_motion_frame_angles(mo, nf - 1), sizeof(double) * (size_t)r->edge_count);
+    if (positions) ori_motion_frame_vertices(mo, nf - 1, positions);
+    if (residual_out) *residual_out = ori_motion_frame_residual(mo, nf - 1);
+    ori_motion_destroy(mo);
+    return ORI_OK;
+}

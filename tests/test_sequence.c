@@ -1,0 +1,378 @@
+// Fold sequences (the folding manager): parsing with clear errors, the open corner's two folds
+// as a recorded motion, exact restoration of any instant, invalid sequences, the CLI.
+#define _POSIX_C_SOURCE 200809L
+#include <jansson.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <orikin/sequence.h>
+
+#include "support.h"
+
+TestSuite(sequence, .init = test_leak_setup, .fini = test_leak_check);
+
+#define DEG (ORI_PI / 180.0)
+
+typedef struct corner {
+    ori_pattern *p;
+    ori_mechanism *m;
+    int diag, down, right, up, left;
+    int t2, lr, ur, ul;
+} corner;
+
+static corner corner_load(void)
+{
+    corner c;
+    c.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    c.m = test_mechanism_of(c.p);
+    c.diag = test_edge_at(c.p, 1, 1, 0, 0);
+    c.down = test_edge_at(c.p, 1, 1, 1, 0);
+    c.right = test_edge_at(c.p, 1, 1, 2, 1);
+    c.up = test_edge_at(c.p, 1, 1, 1, 2);
+    c.left = test_edge_at(c.p, 1, 1, 0, 1);
+    c.t2 = test_face_at(c.p, 0.7, 0.3);
+    c.lr = test_face_at(c.p, 1.5, 0.5);
+    c.ur = test_face_at(c.p, 1.5, 1.5);
+    c.ul = test_face_at(c.p, 0.5, 1.5);
+    return c;
+}
+
+static void corner_free(corner *c)
+{
+    ori_mechanism_destroy(c->m);
+    ori_pattern_destroy(c->p);
+}
+
+static char *corner_sequence_json(const corner *c, double to1, double to2, int fix2)
+{
+    char *buf = malloc(1024);
+    snprintf(buf, 1024,
+             "{\"pattern\": \"patterns/open-corner.fold\", \"folds\": ["
+             "{\"name\": \"first\", \"fix\": %d, \"lock\": [%d], \"drive\": %d, \"to\": %g, \"step\": 10},"
+             "{\"fix\": %d, \"lock\": [%d], \"drive\": %d, \"to\": %g, \"step\": 15}]}",
+             c->t2, c->down, c->diag, to1, fix2, c->diag, c->down, to2);
+    return buf;
+}
+
+static ori_sequence *parse_ok(const char *json)
+{
+    ori_sequence *s = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_parse(json, strlen(json), &s, &err), ORI_OK, "%s", err.message);
+    return s;
+}
+
+static ori_v3 face_normal(const ori_pattern *p, int face, const ori_v3 *pos)
+{
+    int v[8];
+    ori_pattern_face_vertices(p, face, v, 8);
+    return ori_v3_normalize(ori_v3_cross(ori_v3_sub(pos[v[1]], pos[v[0]]), ori_v3_sub(pos[v[2]], pos[v[0]])));
+}
+
+Test(sequence, parse_reads_folds_in_degrees_and_writes_them_back)
+{
+    const char *json = "{\"pattern\": \"a.fold\", \"frame\": 2, \"folds\": [{\"fix\": 1, \"drive\": 8, \"to\": 90,"
+                       " \"lock\": [9, 3], \"from\": -10, \"name\": \"one\"}, {\"fix\": 0, \"drive\": 2, \"to\": -45, \"step\": 5}]}";
+    ori_sequence *s = parse_ok(json);
+    cr_assert_str_eq(ori_sequence_pattern_path(s), "a.fold");
+    cr_assert_eq(ori_sequence_frame(s), 2);
+    cr_assert_eq(ori_sequence_fold_count(s), 2);
+    ori_sequence_fold f = ori_sequence_fold_at(s, 0);
+    cr_assert_eq(f.fixed_face, 1);
+    cr_assert_eq(f.driven_edge, 8);
+    cr_assert_float_eq(f.to_rad, ORI_PI / 2, 1e-15);
+    cr_assert(f.has_from);
+    cr_assert_float_eq(f.from_rad, -10 * DEG, 1e-15);
+    cr_assert_float_eq(f.step_rad, 10 * DEG, 1e-15); // default step
+    cr_assert_eq(f.locked_count, 2);
+    cr_assert_eq(f.locked[1], 3);
+    cr_assert_str_eq(f.name, "one");
+    f = ori_sequence_fold_at(s, 1);
+    cr_assert_float_eq(f.step_rad, 5 * DEG, 1e-15);
+    cr_assert_not(f.has_from);
+    // round trip through the JSON form
+    char *text = ori_sequence_to_json(s);
+    ori_sequence *t = parse_ok(text);
+    cr_assert_float_eq(ori_sequence_fold_at(t, 1).to_rad, -45 * DEG, 1e-15);
+    cr_assert_eq(ori_sequence_fold_at(t, 0).locked[0], 9);
+    ori_buffer_free(text);
+    ori_sequence_destroy(t);
+    ori_sequence_destroy(s);
+}
+
+Test(sequence, parse_errors_name_the_position_or_the_fold)
+{
+    const struct {
+        const char *json;
+        ori_status status;
+        const char *text;
+    } cases[] = {
+        {"{\"pattern\": \"a.fold\",\n \"folds\": [}", ORI_ERR_PARSE, "line 2, column"},
+        {"[1, 2]", ORI_ERR_TYPE, "a sequence must be a JSON object"},
+        {"{\"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 9}]}", ORI_ERR_TYPE, "pattern: must name the FOLD file"},
+        {"{\"pattern\": \"a\", \"folds\": []}", ORI_ERR_TYPE, "folds: must be a non-empty array"},
+        {"{\"pattern\": \"a\", \"folds\": [{\"fix\": 0, \"drive\": 1}]}", ORI_ERR_TYPE, "folds 0: missing \"to\""},
+        {"{\"pattern\": \"a\", \"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 9}, {\"fix\": -1, \"drive\": 1, \"to\": 9}]}",
+         ORI_ERR_TYPE, "folds 1: \"fix\" must be a FOLD index"},
+        {"{\"pattern\": \"a\", \"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 270}]}", ORI_ERR_RANGE,
+         "folds 0: \"to\" = 270 is outside [-180, 180] degrees"},
+        {"{\"pattern\": \"a\", \"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 9, \"step\": 0}]}", ORI_ERR_RANGE,
+         "folds 0: \"step\" must be a number of degrees in (0, 360]"},
+        {"{\"pattern\": \"a\", \"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 9, \"lcok\": [2]}]}", ORI_ERR_TYPE,
+         "folds 0: unknown field \"lcok\""},
+        {"{\"pattern\": \"a\", \"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 9, \"lock\": [\"x\"]}]}", ORI_ERR_TYPE,
+         "folds 0: \"lock\" must be an array of FOLD edge indices"},
+        {"{\"pattern\": \"a\", \"speed\": 3, \"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 9}]}", ORI_ERR_TYPE,
+         "speed: unknown field"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        ori_sequence *s = NULL;
+        ori_error err;
+        char msg[512];
+        ori_status st = ori_sequence_parse(cases[i].json, strlen(cases[i].json), &s, &err);
+        ori_error_format(&err, msg, sizeof msg);
+        cr_assert_eq(st, cases[i].status, "case %zu: %s", i, msg);
+        cr_assert_null(s);
+        cr_assert(strstr(msg, cases[i].text), "case %zu: '%s' lacks '%s'", i, msg, cases[i].text);
+    }
+}
+
+Test(sequence, open_corner_two_folds_reach_the_corner_cube)
+{
+    corner c = corner_load();
+    char *json = corner_sequence_json(&c, 180, 90, c.t2);
+    ori_sequence *s = parse_ok(json);
+    ori_record *r = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
+    cr_assert_eq(ori_record_completed_folds(r), 2);
+    cr_assert_float_eq(ori_record_duration(r), 2.0, 0.0);
+    // fold 1: 0..180 by 10 → 19 states; fold 2: 15..90 by 15 → 6 more (its start is not repeated)
+    cr_assert_eq(ori_record_frame_count(r), 25);
+    int V = ori_pattern_vertex_count(c.p);
+    for (int f = 0; f < ori_record_frame_count(r); ++f) {
+        cr_assert_leq(ori_record_frame_residual(r, f), 1e-10);
+        if (f > 0) cr_assert_gt(ori_record_frame_time(r, f), ori_record_frame_time(r, f - 1));
+        // edge lengths are preserved in every recorded state
+        const ori_v3 *pos = ori_record_frame_vertices(r, f);
+        for (int e = 0; e < ori_pattern_edge_count(c.p); ++e) {
+            ori_edge E = ori_pattern_edge(c.p, e);
+            double l0 = ori_v3_norm(ori_v3_sub(ori_pattern_vertex(c.p, E.v[0]), ori_pattern_vertex(c.p, E.v[1])));
+            double l1 = ori_v3_norm(ori_v3_sub(pos[E.v[0]], pos[E.v[1]]));
+            cr_assert_float_eq(l1, l0, 1e-12 * l0);
+        }
+    }
+    cr_assert_float_eq(ori_record_frame_time(r, 9), 0.5, 1e-15); // diag at 90°
+    const double *a90 = ori_record_frame_angles(r, 9);
+    cr_assert_float_eq(a90[c.up] / DEG, 60.0, 1e-9);
+    cr_assert_float_eq(a90[c.right] / DEG, asin(1 / sqrt(3.0)) / DEG, 1e-9);
+    cr_assert_float_eq(a90[c.left] / DEG, -asin(1 / sqrt(3.0)) / DEG, 1e-9);
+    // the end: diag 180, down 90, right 90, up 90, left −180 (four valleys, one mountain)
+    int last = ori_record_frame_count(r) - 1;
+    const double *end = ori_record_frame_angles(r, last);
+    cr_assert_float_eq(end[c.diag], ORI_PI, 1e-12);
+    cr_assert_float_eq(end[c.down], ORI_PI / 2, 1e-12);
+    cr_assert_float_eq(end[c.right], ORI_PI / 2, 1e-9);
+    cr_assert_float_eq(end[c.up], ORI_PI / 2, 1e-9);
+    cr_assert_float_eq(end[c.left], -ORI_PI, 1e-9);
+    const ori_v3 *pos = ori_record_frame_vertices(r, last);
+    ori_v3 n1 = face_normal(c.p, c.lr, pos), n2 = face_normal(c.p, c.ur, pos), n3 = face_normal(c.p, c.ul, pos);
+    cr_assert_float_eq(ori_v3_dot(n1, n2), 0.0, 1e-9);
+    cr_assert_float_eq(ori_v3_dot(n2, n3), 0.0, 1e-9);
+    cr_assert_float_eq(ori_v3_dot(n1, n3), 0.0, 1e-9);
+    // the fixed face never moved
+    int tv = test_vertex_at(c.p, 1, 0);
+    cr_assert_float_eq(pos[tv].x, 1.0, 1e-15);
+    cr_assert_float_eq(pos[tv].z, 0.0, 1e-15);
+    (void)V;
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    free(json);
+    corner_free(&c);
+}
+
+Test(sequence, any_instant_is_restored_exactly)
+{
+    corner c = corner_load();
+    char *json = corner_sequence_json(&c, 180, 90, c.t2);
+    ori_sequence *s = parse_ok(json);
+    ori_record *r = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    int E = ori_pattern_edge_count(c.p), V = ori_pattern_vertex_count(c.p);
+    double *ang = malloc(sizeof(double) * (size_t)E);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)V);
+    double drive, res;
+    int fold;
+    // a recorded instant comes back as recorded
+    cr_assert_eq(ori_record_at(r, 0.5, ang, pos, &drive, &fold, &res, &err), ORI_OK);
+    cr_assert_eq(fold, 0);
+    cr_assert_float_eq(drive, ORI_PI / 2, 1e-15);
+    for (int e = 0; e < E; ++e) cr_assert_float_eq(ang[e], ori_record_frame_angles(r, 9)[e], 1e-15);
+    // between recorded states: diag at 45° (t = 0.25) solved exactly, as a direct fold gives it
+    cr_assert_eq(ori_record_at(r, 0.25, ang, pos, &drive, &fold, &res, &err), ORI_OK, "%s", err.message);
+    cr_assert_float_eq(drive, ORI_PI / 4, 1e-15);
+    cr_assert_leq(res, 1e-10);
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = c.t2;
+    d.driven_edge = c.diag;
+    d.to_rad = ORI_PI / 4;
+    d.step_rad = ORI_PI / 4;
+    d.locked_edges = &c.down;
+    d.locked_count = 1;
+    ori_motion *mo = NULL;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_OK);
+    const double *direct = ori_motion_frame_angles(mo, ori_motion_frame_count(mo) - 1);
+    for (int e = 0; e < E; ++e) cr_assert_float_eq(ang[e], direct[e], 1e-11, "edge %d", e);
+    ori_motion_destroy(mo);
+    // halfway through fold 2: down at 45°, left at −135° (fold 2 is a rotation of the flap)
+    cr_assert_eq(ori_record_at(r, 1.5, ang, pos, &drive, &fold, &res, &err), ORI_OK);
+    cr_assert_eq(fold, 1);
+    cr_assert_float_eq(ang[c.down] / DEG, 45.0, 1e-9);
+    cr_assert_float_eq(ang[c.left] / DEG, -135.0, 1e-9);
+    cr_assert_float_eq(ang[c.diag] / DEG, 180.0, 1e-9);
+    cr_assert_leq(res, 1e-10);
+    // t = 1 is the end of fold 1; t = 2 the end
+    cr_assert_eq(ori_record_at(r, 1.0, ang, NULL, &drive, &fold, NULL, &err), ORI_OK);
+    cr_assert_eq(fold, 0);
+    cr_assert_float_eq(ang[c.diag], ORI_PI, 1e-12);
+    cr_assert_float_eq(ang[c.down], 0.0, 1e-12);
+    cr_assert_eq(ori_record_at(r, 2.0, ang, NULL, NULL, NULL, NULL, &err), ORI_OK);
+    cr_assert_float_eq(ang[c.down], ORI_PI / 2, 1e-12);
+    cr_assert_eq(ori_record_at(r, 2.5, ang, NULL, NULL, NULL, NULL, &err), ORI_ERR_RANGE);
+    cr_assert_eq(ori_record_at(r, -0.1, ang, NULL, NULL, NULL, NULL, &err), ORI_ERR_RANGE);
+    free(ang);
+    free(pos);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    free(json);
+    corner_free(&c);
+}
+
+Test(sequence, a_new_fixed_face_stays_where_the_previous_fold_left_it)
+{
+    corner c = corner_load();
+    // fold 2 holds the lower-right square instead of the triangle
+    char *json = corner_sequence_json(&c, 180, 90, c.lr);
+    ori_sequence *s = parse_ok(json);
+    ori_record *r = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
+    int end1 = 18; // t = 1
+    cr_assert_float_eq(ori_record_frame_time(r, end1), 1.0, 0.0);
+    int lrv[8];
+    int n = ori_pattern_face_vertices(c.p, c.lr, lrv, 8);
+    const ori_v3 *a = ori_record_frame_vertices(r, end1);
+    for (int f = end1 + 1; f < ori_record_frame_count(r); ++f) {
+        const ori_v3 *b = ori_record_frame_vertices(r, f);
+        for (int k = 0; k < n; ++k) {
+            cr_assert_float_eq(b[lrv[k]].x, a[lrv[k]].x, 1e-12);
+            cr_assert_float_eq(b[lrv[k]].y, a[lrv[k]].y, 1e-12);
+            cr_assert_float_eq(b[lrv[k]].z, a[lrv[k]].z, 1e-12);
+        }
+    }
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    free(json);
+    corner_free(&c);
+}
+
+Test(sequence, a_fold_against_the_assignment_stops_the_sequence)
+{
+    corner c = corner_load();
+    // the second fold turns the down crease (a valley) towards a mountain
+    char *json = corner_sequence_json(&c, 180, -90, c.t2);
+    ori_sequence *s = parse_ok(json);
+    ori_record *r = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_INVALID_ASSIGNMENT);
+    cr_assert_eq(ori_record_failed_fold(r), 1);
+    cr_assert_eq(ori_record_completed_folds(r), 1);
+    cr_assert_not_null(ori_record_reason(r));
+    char want[32];
+    snprintf(want, sizeof want, "%d", c.down);
+    cr_assert(strstr(ori_record_reason(r), want), "reason '%s' names crease %d", ori_record_reason(r), c.down);
+    cr_assert_eq(ori_record_frame_count(r), 19); // fold 1 only
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    free(json);
+    corner_free(&c);
+}
+
+Test(sequence, bad_indices_are_run_time_errors_naming_the_fold)
+{
+    corner c = corner_load();
+    const char *json = "{\"pattern\": \"x\", \"folds\": [{\"fix\": 0, \"drive\": 8, \"to\": 10}, {\"fix\": 99, \"drive\": 8, \"to\": 20}]}";
+    ori_sequence *s = parse_ok(json);
+    ori_record *r = NULL;
+    ori_error err;
+    char msg[256];
+    // fold 0 drives crease 8 with nothing locked: 2 DOF → underdetermined (a domain answer)
+    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_UNDERDETERMINED);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    const char *bad = "{\"pattern\": \"x\", \"folds\": [{\"fix\": 1, \"drive\": 99, \"to\": 10}]}";
+    s = parse_ok(bad);
+    cr_assert_neq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    cr_assert_null(r);
+    ori_error_format(&err, msg, sizeof msg);
+    cr_assert(strstr(msg, "folds 0:"), "%s", msg);
+    ori_sequence_destroy(s);
+    corner_free(&c);
+}
+
+Test(sequence, cli_writes_every_state_and_restores_an_instant)
+{
+    char *dir = test_tmpdir();
+    char args[1024], *out = NULL;
+    snprintf(args, sizeof args, "sequence examples/open-corner.seq.json -o %s/oc.fold", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "verdict: valid: 2 of 2 folds completed"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "%s/oc.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(args, &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_frame_count(doc), 1 + 28); // 19 states of fold 1 + 9 of fold 2
+    char *seq = ori_fold_get_custom(doc, 0, "orikin:sequence");
+    cr_assert_not_null(seq);
+    ori_buffer_free(seq);
+    char *t = ori_fold_get_custom(doc, 28, "orikin:time");
+    cr_assert_str_eq(t, "2");
+    ori_buffer_free(t);
+    ori_pattern *last = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 28, NULL, &last, &err), ORI_OK);
+    cr_assert(ori_pattern_is_folded_form(last));
+    cr_assert(ori_pattern_is_3d(last));
+    ori_pattern_destroy(last);
+    ori_fold_destroy(doc);
+    // --at with JSON
+    cr_assert_eq(test_run_cli("sequence examples/open-corner.seq.json --at 1.5 --json", &out), 0);
+    json_error_t je;
+    json_t *o = json_loads(out, 0, &je);
+    cr_assert_not_null(o, "%s", out);
+    cr_assert_float_eq(json_number_value(json_object_get(o, "drive_deg")), 45.0, 1e-9);
+    cr_assert_eq(json_integer_value(json_object_get(o, "fold")), 2);
+    cr_assert_leq(json_number_value(json_object_get(o, "residual")), 1e-10);
+    json_decref(o);
+    free(out);
+    // out of range and bad files
+    cr_assert_eq(test_run_cli("sequence examples/open-corner.seq.json --at 7", &out), 2);
+    free(out);
+    snprintf(args, sizeof args, "%s/bad.json", dir);
+    FILE *f = fopen(args, "w");
+    fputs("{\"pattern\": \"nowhere.fold\", \"folds\": [{\"fix\": 0, \"drive\": 1, \"to\": 10}]}", f);
+    fclose(f);
+    snprintf(args, sizeof args, "sequence %s/bad.json -o %s/never.fold", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 3);
+    cr_assert(strstr(out, "nowhere.fold: cannot open"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "%s/never.fold", dir);
+    cr_assert_null(fopen(args, "r"), "nothing written on bad input");
+    test_tmpdir_remove(dir);
+}
