@@ -75,6 +75,10 @@
 /// of the input scale counts as zero (parallel lines, tangency). Unitless.
 #define ORI_TOL_CONSTRUCTION_REL 1e-12
 
+/// Spatial grids (crossing checks, planarisation) never get thinner than this × the diagonal
+/// in x or y, so that a sheet of collinear points still has a finite cell size. Unitless.
+#define ORI_GRID_MIN_EXTENT_REL 1e-6
+
 /// Output only: a degree value within this of an integer is written as that integer, so that
 /// radian↔degree round-off (90.00000000000001) does not show in files. Degrees.
 #define ORI_TOL_PRINT_DEG 1e-10
@@ -86,5 +90,36 @@
 /// thousand cells across (a vertex is about 1e-3 of the diagonal from any edge not its own).
 /// Unitless (relative length); orikin convert --tolerance overrides it.
 #define ORI_TOL_IMPORT_WELD_REL 5e-5
+
+// --- continuation solver parameters (src/kinematics) -------------------------------------
+
+/// Largest internal continuation step (radians): the predictor stays accurate and branch jumps
+/// are caught. Output steps larger than this are subdivided.
+#define ORI_KIN_MAX_STEP_RAD 0.1
+/// First step out of a singular start (radians).
+#define ORI_KIN_SINGULAR_STEP_RAD 0.0175
+/// A motion from a singular start that stops before the drive has moved this far (radians)
+/// counts as no motion (not rigidly foldable) rather than a blocked one.
+#define ORI_KIN_ESCAPE_RAD (0.5 * ORI_KIN_SINGULAR_STEP_RAD)
+/// Substep of the closed-form solver's branch tracking (radians).
+#define ORI_KIN_TRACK_STEP_RAD 0.0175
+/// Steps are halved down to this before the motion counts as blocked (radians).
+#define ORI_KIN_MIN_STEP_RAD 1e-7
+/// Corrector iteration budget per step.
+#define ORI_KIN_NEWTON_MAX 25
+/// Probe step for the generic DOF (radians), halved down to the minimum when the corrector fails.
+#define ORI_KIN_PROBE_STEP_RAD 0.02
+#define ORI_KIN_PROBE_MIN_STEP_RAD 1e-4
+/// A corrected step is rejected (as a jump to another branch) when the corrector moved the
+/// prediction by more than this fraction of the predicted change, plus a slack (radians) for
+/// tiny steps.
+#define ORI_KIN_MAX_CORRECTION 0.5
+#define ORI_KIN_CORRECTION_SLACK_RAD 1e-7
+/// An output value closer than this fraction of a step to the target merges into it.
+#define ORI_KIN_GRID_MERGE 1e-3
+
+/// sin φ below which the two-term series of φ/sin φ is exact in double precision (the next term,
+/// 3 sin⁴φ/40, is below 1e-17).
+#define ORI_KIN_ROTVEC_SERIES_MAX 1e-4
 
 #endif

@@ -579,9 +579,6 @@ void ori_mechanism_vertex_positions(const ori_mechanism *m, const double *angles
 
 // --- loop evaluation ---------------------------------------------------------------------
 
-// sin φ below which the two-term series of φ/sin φ is exact in double precision (the next term,
-// 3 sin⁴φ/40, is below 1e-17).
-#define ROTVEC_SERIES_MAX 1e-4
 
 ori_v3 ori__kin_rotvec(ori_m3 r)
 {
@@ -590,8 +587,8 @@ ori_v3 ori__kin_rotvec(ori_m3 r)
     double c = 0.5 * (r.m[0][0] + r.m[1][1] + r.m[2][2] - 1.0);
     double sn = ori_v3_norm(s);
     // Near the identity (every converged loop): φ/sin φ = 1 + sin²φ/6 + O(sin⁴φ), exact in double
-    // precision below ROTVEC_SERIES_MAX, without the atan2.
-    if (c > 0.0 && sn < ROTVEC_SERIES_MAX) return ori_v3_scale(s, 1.0 + sn * sn / 6.0);
+    // precision below ORI_KIN_ROTVEC_SERIES_MAX, without the atan2.
+    if (c > 0.0 && sn < ORI_KIN_ROTVEC_SERIES_MAX) return ori_v3_scale(s, 1.0 + sn * sn / 6.0);
     double phi = atan2(sn, c);
     if (sn > 0.0 && isfinite(sn)) {
         // phi/sin(phi) is bounded away from phi = π; there use the diagonal for the axis.

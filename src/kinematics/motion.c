@@ -16,31 +16,6 @@
 
 #include "kinematics_internal.h"
 
-// Largest internal continuation step (radians): the predictor stays accurate and branch jumps
-// are caught. Output steps larger than this are subdivided.
-#define ORI_KIN_MAX_STEP_RAD 0.1
-// First step out of a singular start (radians).
-#define ORI_KIN_SINGULAR_STEP_RAD 0.0175
-// A motion from a singular start that stops before the drive has moved this far (radians)
-// counts as no motion (not rigidly foldable) rather than a blocked one.
-#define ORI_KIN_ESCAPE_RAD 0.5 * ORI_KIN_SINGULAR_STEP_RAD
-// Substep of the closed-form solver's branch tracking (radians).
-#define ORI_KIN_TRACK_STEP_RAD 0.0175
-// Steps are halved down to this before the motion counts as blocked (radians).
-#define ORI_KIN_MIN_STEP_RAD 1e-7
-// Corrector iteration budget per step.
-#define ORI_KIN_NEWTON_MAX 25
-// Probe step for the generic DOF (radians), halved down to the minimum when the corrector fails.
-#define ORI_KIN_PROBE_STEP_RAD 0.02
-#define ORI_KIN_PROBE_MIN_STEP_RAD 1e-4
-// A corrected step is rejected (as a jump to another branch) when the corrector moved the
-// prediction by more than this fraction of the predicted change, plus a slack (radians) for
-// tiny steps.
-#define ORI_KIN_MAX_CORRECTION 0.5
-#define ORI_KIN_CORRECTION_SLACK_RAD 1e-7
-// An output value closer than this fraction of a step to the target merges into it.
-#define ORI_KIN_GRID_MERGE 1e-3
-
 struct ori_motion {
     const ori_mechanism *m;
     int edge_count;

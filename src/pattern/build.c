@@ -351,7 +351,7 @@ static ori_status check_crossings(ori_pattern *p, ori_error *error)
         maxx = fmax(maxx, p->vertices[i].x);
         maxy = fmax(maxy, p->vertices[i].y);
     }
-    double w = fmax(maxx - minx, diag * 1e-6), h = fmax(maxy - miny, diag * 1e-6);
+    double w = fmax(maxx - minx, diag * ORI_GRID_MIN_EXTENT_REL), h = fmax(maxy - miny, diag * ORI_GRID_MIN_EXTENT_REL);
     double cell = sqrt(w * h / (double)m);
     if (!(cell > 0.0)) cell = diag;
     int64_t nx = (int64_t)(w / cell) + 1, ny = (int64_t)(h / cell) + 1;
