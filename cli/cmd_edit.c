@@ -123,6 +123,12 @@ static int run(int argc, char **argv)
         ori_error err;
         ori_status st = ORI_OK;
         ori_edge before = ori_pattern_edge(p, e);
+        // How the log names the edge: as given, with its current index when that differs.
+        char label[96];
+        int given_id;
+        if (o->edge[0] == '@') snprintf(label, sizeof label, "edge %d (%s)", e, o->edge);
+        else if (cli_parse_int(o->edge, &given_id) && given_id != e) snprintf(label, sizeof label, "edge %d (now %d)", given_id, e);
+        else snprintf(label, sizeof label, "edge %d", e);
         char f0[ORI_NAME_MAX + 16], f1[ORI_NAME_MAX + 16], fm[ORI_NAME_MAX + 16];
         int faces[2];
         ori_pattern_edge_faces(p, e, faces);
@@ -132,13 +138,13 @@ static int run(int argc, char **argv)
         case OP_ASSIGN:
             st = ori_pattern_assign_crease(p, e, o->asg, &err);
             if (st == ORI_OK)
-                fprintf(logf, "edge %d: %c -> %c\n", e, ori_assignment_to_char(before.assignment),
+                fprintf(logf, "%s: %c -> %c\n", label, ori_assignment_to_char(before.assignment),
                         ori_assignment_to_char(o->asg));
             break;
         case OP_FLIP:
             st = ori_pattern_flip_crease(p, e, &err);
             if (st == ORI_OK)
-                fprintf(logf, "edge %d: %c -> %c (flipped)\n", e, ori_assignment_to_char(before.assignment),
+                fprintf(logf, "%s: %c -> %c (flipped)\n", label, ori_assignment_to_char(before.assignment),
                         ori_assignment_to_char(ori_pattern_edge(p, e).assignment));
             break;
         case OP_REMOVE: {
@@ -149,7 +155,7 @@ static int run(int argc, char **argv)
             apply_removal(map, n_orig, &r);
             int kept = r.kept_face == ORI_NULL_INDEX ? ORI_NULL_INDEX
                                                      : r.kept_face - (r.removed_face != ORI_NULL_INDEX && r.removed_face < r.kept_face);
-            fprintf(logf, "removed edge %d", e);
+            fprintf(logf, "removed %s", label);
             if (r.removed_face != ORI_NULL_INDEX)
                 fprintf(logf, ": %s + %s -> %s%s", f0, f1, face_desc(p, kept, fm, sizeof fm),
                         r.name_restored ? " (name restored)" : "");
@@ -165,7 +171,7 @@ static int run(int argc, char **argv)
             if (st != ORI_OK) break;
             topology = true;
             apply_removal(map, n_orig, &r);
-            fprintf(logf, "moved edge %d to (%g, %g)-(%g, %g): now edges %d to %d\n", e, o->seg[0], o->seg[1], o->seg[2],
+            fprintf(logf, "moved %s to (%g, %g)-(%g, %g): now edges %d to %d\n", label, o->seg[0], o->seg[1], o->seg[2],
                     o->seg[3], a.first_edge, ori_pattern_edge_count(p) - 1);
             break;
         }
