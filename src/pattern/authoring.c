@@ -209,7 +209,22 @@ static int clip_crease(const ori_pattern *p, const ori_crease *c, int face, inte
     interval *iv = NULL;
     int n = 0, cap = 0;
     int f0 = face == ORI_NULL_INDEX ? 0 : face, f1 = face == ORI_NULL_INDEX ? p->face_count : face + 1;
-    for (int f = f0; f < f1; ++f) clip_face(p, f, c->a, c->b, tol_t, &iv, &n, &cap);
+    ori_v2 nrm = ori_v2_scale(ori_v2_perp(d), 1.0 / len);
+    for (int f = f0; f < f1; ++f) {
+        if (face == ORI_NULL_INDEX) {
+            // Quick rejection: every corner of the face clearly on one side of the line (the
+            // margin, far above rounding, keeps the exact test in charge of close calls).
+            const int *fv = p->face_vertices + p->face_offsets[f];
+            int m = p->face_offsets[f + 1] - p->face_offsets[f], pos = 0, neg = 0;
+            for (int i = 0; i < m; ++i) {
+                double h = ori_v2_dot(ori_v2_sub(ori__pattern_v2(p, fv[i]), c->a), nrm);
+                pos += h > tol;
+                neg += h < -tol;
+            }
+            if (pos == m || neg == m) continue;
+        }
+        clip_face(p, f, c->a, c->b, tol_t, &iv, &n, &cap);
+    }
     if (n > 1) qsort(iv, (size_t)n, sizeof *iv, compare_interval);
     int m = 0;
     for (int i = 0; i < n; ++i) {
