@@ -247,8 +247,6 @@ static bool edges_conflict(const ori_pattern *p, int e, int f)
     ori_v2 c = ori__pattern_v2(p, fv[0]), d = ori__pattern_v2(p, fv[1]);
     int shared = (ev[0] == fv[0] || ev[0] == fv[1]) + (ev[1] == fv[0] || ev[1] == fv[1]);
     if (shared == 2) return true; // duplicate edge
-    int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
-    int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
     if (shared == 1) {
         // Only a collinear overlap beyond the shared endpoint conflicts.
         int other_f = (fv[0] == ev[0] || fv[0] == ev[1]) ? fv[1] : fv[0];
@@ -260,6 +258,10 @@ static bool edges_conflict(const ori_pattern *p, int e, int f)
         // collinear: overlap when both lie on the same side of the shared endpoint
         return ori_v2_dot(ori_v2_sub(x, s), ori_v2_sub(y, s)) > 0.0;
     }
+    // (Computed only here: with a shared end point two of them are exactly zero, which sends
+    // every call through the slow exact path of ori_orient2d.)
+    int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
+    int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
     if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0) {
         if (o1 == 0 && o2 == 0) return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a);
         return true;
