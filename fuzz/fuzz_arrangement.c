@@ -45,6 +45,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         free(fv);
     }
     if (!(area > 256.0 - 1e-6 && area < 256.0 + 1e-6)) abort();
+    // and be the faces of the planar graph: tracing them from scratch finds as many.
+    ori_pattern *q = ori_pattern_clone(p);
+    ori_pattern_clear_faces(q);
+    if (ori_pattern_build(q, NULL, &err) != ORI_OK) abort();
+    if (ori_pattern_face_count(q) != ori_pattern_face_count(p)) abort();
+    ori_pattern_destroy(q);
     ori_pattern_destroy(p);
     return 0;
 }

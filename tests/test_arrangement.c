@@ -247,6 +247,26 @@ Test(arrangement, free_and_dangling_segments)
     ori_pattern_destroy(p);
 }
 
+Test(arrangement, floating_segment_in_a_face_is_refused)
+{
+    ori_pattern *p = sheet(2, 2);
+    ori_error err;
+    ori_status st = ori_pattern_insert_segment(p, ori_v2_make(0.5, 0.5), ori_v2_make(1.5, 1.0), ORI_ASSIGN_VALLEY,
+                                               0.0, NULL, NULL, &err);
+    cr_assert_eq(st, ORI_ERR_UNSUPPORTED);
+    cr_assert(strstr(err.message, "would float inside a face") != NULL, "%s", err.message);
+    cr_assert_eq(ori_pattern_edge_count(p), 4);
+    cr_assert_eq(ori_pattern_vertex_count(p), 4);
+    // Hanging from the boundary is a slit; continuing from its free end is fine too.
+    insert_ok(p, 1, 0, 1, 0.5, ORI_ASSIGN_VALLEY, NULL);
+    insert_ok(p, 1, 0.5, 1.5, 1.0, ORI_ASSIGN_VALLEY, NULL);
+    build_ok(p);
+    // Without faces anything goes (faces are traced later).
+    ori_pattern_clear_faces(p);
+    insert_ok(p, 0.2, 1.5, 0.4, 1.5, ORI_ASSIGN_VALLEY, NULL);
+    ori_pattern_destroy(p);
+}
+
 static double rnd(unsigned *s)
 {
     *s = *s * 1664525u + 1013904223u;
