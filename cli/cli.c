@@ -167,3 +167,41 @@ int cli_finish(int code)
     }
     return code;
 }
+
+int cli_write_pattern(const char *cmd, ori_fold *doc, const ori_pattern *p, const char *out)
+{
+    ori_error err;
+    if (ori_fold_set_pattern(doc, 0, p, &err) != ORI_OK) return cli_input_error(cmd, out ? out : "-", &err);
+    if (!out) {
+        char *text = ori_fold_to_string(doc);
+        fputs(text, stdout);
+        ori_buffer_free(text);
+        return CLI_EXIT_OK;
+    }
+    if (ori_fold_save_file(doc, out, &err) != ORI_OK) {
+        char buf[512];
+        ori_error_format(&err, buf, sizeof buf);
+        fprintf(stderr, "orikin %s: %s: %s\n", cmd, out, buf);
+        return CLI_EXIT_INPUT;
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_find_face(const char *cmd, const char *file, const ori_pattern *p, const char *spec, int *face)
+{
+    int idx;
+    if (cli_parse_int(spec, &idx)) {
+        if (idx < 0 || idx >= ori_pattern_face_count(p))
+            return cli_input_fail(cmd, file, "face %d does not exist (faces 0 to %d)", idx, ori_pattern_face_count(p) - 1);
+        *face = idx;
+        return CLI_EXIT_OK;
+    }
+    idx = ori_pattern_find_face_by_name(p, spec);
+    if (idx == ORI_NULL_INDEX) {
+        if (ori_pattern_find_tree_node(p, spec) != ORI_NULL_INDEX)
+            return cli_input_fail(cmd, file, "%s is not a folding element any more (it was split; see orikin tree)", spec);
+        return cli_input_fail(cmd, file, "no face named %s (see orikin tree %s)", spec, file);
+    }
+    *face = idx;
+    return CLI_EXIT_OK;
+}

@@ -54,6 +54,13 @@ const char *cli_option_value(const char *cmd, int argc, char **argv, int *i);
 int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, ori_fold **doc,
                      ori_pattern **pattern);
 
+// Write the pattern into frame 0 of doc and save the document to out atomically, or print the
+// FOLD text on stdout when out is NULL. Prints the error and returns its exit code on failure.
+int cli_write_pattern(const char *cmd, ori_fold *doc, const ori_pattern *pattern, const char *out);
+// A face given by name ("Obj12") or FOLD index ("3"); prints an input error naming the file
+// and returns CLI_EXIT_INPUT when there is none, else CLI_EXIT_OK with *face set.
+int cli_find_face(const char *cmd, const char *file, const ori_pattern *pattern, const char *spec, int *face);
+
 // Print a jansson value as JSON (shortest exact numbers) on stdout and release it.
 void cli_print_json(json_t *value);
 // Flush stdout; returns CLI_EXIT_INTERNAL when that fails (full disk, closed pipe), else code.

@@ -107,6 +107,6 @@ const cli_command cli_cmd_fit = {
     "  --json        print {degree, drive, from_deg, to_deg, step_deg, samples, creases:\n"
     "                [{edge, coefficients, max_error_deg}]}\n"
     "\n"
-    "example: orikin fit examples/patterns/open-corner.fold --fix 0 --drive 8 --lock 9 --to 90 --step 10\n",
+    "example: orikin fit examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --step 10\n",
     run,
 };

@@ -248,6 +248,6 @@ const cli_command cli_cmd_fold = {
     "  -o OUT.fold     write FILE with every step appended as a folded-form frame (only when\n"
     "                  the fold is valid)\n"
     "\n"
-    "example: orikin fold examples/patterns/open-corner.fold --fix 0 --drive 8 --lock 9 --to 90\n",
+    "example: orikin fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90\n",
     run,
 };

@@ -1,6 +1,7 @@
 // Arrangement: segment insertion into a flat pattern (splits, snapping, overlaps, face splits
 // and names), bulk planarisation, and invariants after thousands of random creases.
 #include <orikin/arrangement.h>
+#include <orikin/authoring.h>
 #include <stdlib.h>
 
 #include "pattern/pattern_internal.h"
@@ -246,6 +247,26 @@ Test(arrangement, free_and_dangling_segments)
     ori_pattern_destroy(p);
 }
 
+Test(arrangement, floating_segment_in_a_face_is_refused)
+{
+    ori_pattern *p = sheet(2, 2);
+    ori_error err;
+    ori_status st = ori_pattern_insert_segment(p, ori_v2_make(0.5, 0.5), ori_v2_make(1.5, 1.0), ORI_ASSIGN_VALLEY,
+                                               0.0, NULL, NULL, &err);
+    cr_assert_eq(st, ORI_ERR_UNSUPPORTED);
+    cr_assert(strstr(err.message, "would float inside a face") != NULL, "%s", err.message);
+    cr_assert_eq(ori_pattern_edge_count(p), 4);
+    cr_assert_eq(ori_pattern_vertex_count(p), 4);
+    // Hanging from the boundary is a slit; continuing from its free end is fine too.
+    insert_ok(p, 1, 0, 1, 0.5, ORI_ASSIGN_VALLEY, NULL);
+    insert_ok(p, 1, 0.5, 1.5, 1.0, ORI_ASSIGN_VALLEY, NULL);
+    build_ok(p);
+    // Without faces anything goes (faces are traced later).
+    ori_pattern_clear_faces(p);
+    insert_ok(p, 0.2, 1.5, 0.4, 1.5, ORI_ASSIGN_VALLEY, NULL);
+    ori_pattern_destroy(p);
+}
+
 static double rnd(unsigned *s)
 {
     *s = *s * 1664525u + 1013904223u;
@@ -455,4 +476,58 @@ Test(arrangement, find_edge_at_point)
     cr_assert_float_eq(fmin(ori_pattern_vertex(p, ed.v[0]).x, ori_pattern_vertex(p, ed.v[1]).x), 0.0, 0.0);
     cr_assert_eq(ori_pattern_find_edge_at(p, ori_v2_make(0.5, 0.7)), ORI_NULL_INDEX);
     ori_pattern_destroy(p);
+}
+
+// Creases across real crease patterns (other projects' files, read in place): the result
+// builds with the planarity check and its faces still tile the sheet.
+static double total_area(const ori_pattern *p)
+{
+    double a = 0.0;
+    for (int f = 0; f < ori_pattern_face_count(p); ++f) a += fabs(face_area(p, f));
+    return a;
+}
+
+static void crease_real_pattern(const char *rel)
+{
+    ori_pattern *p = test_load_pattern(test_require_shared(rel), 0);
+    double area = total_area(p);
+    double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 x = ori_pattern_vertex(p, v);
+        lo_x = fmin(lo_x, x.x), lo_y = fmin(lo_y, x.y), hi_x = fmax(hi_x, x.x), hi_y = fmax(hi_y, x.y);
+    }
+    unsigned s = 4242;
+    int applied = 0;
+    for (int i = 0; i < 40; ++i) {
+        // Lines through two random points, a third of them through existing vertices.
+        ori_v2 a = ori_v2_make(lo_x + (hi_x - lo_x) * rnd(&s), lo_y + (hi_y - lo_y) * rnd(&s));
+        ori_v2 b = ori_v2_make(lo_x + (hi_x - lo_x) * rnd(&s), lo_y + (hi_y - lo_y) * rnd(&s));
+        if (i % 3 == 0) {
+            int n = ori_pattern_vertex_count(p);
+            a = ori__pattern_v2(p, (int)(rnd(&s) * n) % n);
+        }
+        ori_crease c = {a, b, true, ORI_ASSIGN_UNASSIGNED, 0.0};
+        ori_error err;
+        char msg[300];
+        ori_status st = ori_pattern_apply_crease(p, &c, ORI_NULL_INDEX, NULL, &err);
+        cr_assert(st == ORI_OK || st == ORI_ERR_NOT_FOUND || st == ORI_ERR_DEGENERATE, "%s line %d: %s", rel, i,
+                  ori_error_format(&err, msg, sizeof msg));
+        applied += st == ORI_OK;
+    }
+    cr_assert_gt(applied, 30);
+    build_ok(p);
+    cr_assert_float_eq(total_area(p), area, 1e-9 * area);
+    ori_pattern *q = ori_pattern_clone(p);
+    ori_pattern_clear_faces(q);
+    build_ok(q);
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p), "%s: traced faces", rel);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(p);
+}
+
+Test(arrangement, creases_across_real_patterns)
+{
+    crease_real_pattern("flat-folder/instagram_004_traditional_Crane.fold");
+    crease_real_pattern("flat-folder/instagram_074_miuraoripa_Miura-ori.fold");
+    crease_real_pattern("flat-folder/instagram_082_traditionaloripa_4_Birdbase.fold");
 }

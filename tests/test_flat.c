@@ -836,7 +836,7 @@ Test(flat, example_patterns)
     p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
     r = check_only_vertex(p, &interior);
     cr_assert_eq(interior, 1);
-    cr_assert_eq(r.vertex, 8);
+    cr_assert_eq(r.vertex, test_vertex_at(p, 1, 1));
     cr_assert_eq(r.degree, 5);
     cr_assert(!r.kawasaki);
     cr_assert(!r.cone);

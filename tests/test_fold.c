@@ -369,7 +369,8 @@ Test(fold, set_pattern_drops_stale_derived_fields_only_when_topology_changes)
 
 Test(fold, face_names_and_tree_survive_save_and_load)
 {
-    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/degree6-vertex.fold"), 0);
+    cr_assert_eq(ori_pattern_tree_node_count(p), 0);
     int root = ori_pattern_add_tree_node(p, "Obj1", ORI_NULL_INDEX);
     cr_assert_eq(ori_pattern_add_tree_node(p, "Obj11", root), 1);
     cr_assert_eq(ori_pattern_add_tree_node(p, "Obj12", 5), ORI_NULL_INDEX); // bad parent

@@ -57,7 +57,7 @@ typedef struct ori_insert_result {
     int edges_overlapped; ///< existing edges (or parts) the segment runs along
     int faces_split;      ///< face splits performed
     int segment_edges;    ///< edges that now cover the segment (new pieces + overlapped edges)
-    int segments_skipped; ///< bulk insertion: segments shorter than the tolerance (ignored)
+    int segments_skipped; ///< bulk insertion: segments shorter than the tolerance, or floating inside a face (ignored)
 } ori_insert_result;
 
 /// One segment for bulk insertion: end points, assignment and fold angle (radians, FOLD sign).
@@ -71,7 +71,10 @@ typedef struct ori_segment {
 /// with assignment asg and fold angle fold_angle_rad. def may be NULL (defaults); out may be
 /// NULL. The pattern need not be built and is left unbuilt (call ori_pattern_build). Fails,
 /// leaving the pattern unchanged, with ORI_ERR_RANGE for non-finite points, ORI_ERR_DEGENERATE
-/// when the snapped end points coincide, ORI_ERR_UNSUPPORTED on a folded form.
+/// when the snapped end points coincide, ORI_ERR_UNSUPPORTED on a folded form or when the
+/// pattern has faces and a piece would float inside one (touching neither its boundary nor
+/// a crease: a face is one cycle and cannot have a hole; a free end hanging from the boundary,
+/// a slit, is fine).
 ORI_API ori_status ori_pattern_insert_segment(ori_pattern *pattern, ori_v2 a, ori_v2 b, ori_assignment asg,
                                               double fold_angle_rad, const ori_insert_def *def,
                                               ori_insert_result *out, ori_error *error);
@@ -79,8 +82,9 @@ ORI_API ori_status ori_pattern_insert_segment(ori_pattern *pattern, ori_v2 a, or
 /// Insert count segments in order (a uniform grid keeps each insertion local, so tens of
 /// thousands of segments planarise in near-linear time when the pattern has no faces yet).
 /// With an automatic scale the scale is the diagonal of the pattern and all segments together,
-/// fixed for the whole call. Segments shorter than the tolerance are skipped and counted; a
-/// non-finite coordinate fails (field "segments", element = segment index) before any change.
+/// fixed for the whole call. Segments shorter than the tolerance (or, into a pattern with faces,
+/// floating inside a face) are skipped and counted; a non-finite coordinate fails (field
+/// "segments", element = segment index) before any change.
 ORI_API ori_status ori_pattern_insert_segments(ori_pattern *pattern, const ori_segment *segments, int count,
                                                const ori_insert_def *def, ori_insert_result *out,
                                                ori_error *error);

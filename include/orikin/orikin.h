@@ -3,7 +3,10 @@
 #define ORIKIN_ORIKIN_H
 
 #include "arrangement.h"
+#include "authoring.h"
+#include "axioms.h"
 #include "base.h"
+#include "collection.h"
 #include "flat.h"
 #include "fold.h"
 #include "formats.h"
@@ -11,6 +14,7 @@
 #include "kinematics.h"
 #include "math.h"
 #include "pattern.h"
+#include "sequence.h"
 #include "tolerance.h"
 
 #endif

@@ -79,6 +79,13 @@
 /// in x or y, so that a sheet of collinear points still has a finite cell size. Unitless.
 #define ORI_GRID_MIN_EXTENT_REL 1e-6
 
+/// Axiom 6: a root of the cubic is kept only when the fold it gives maps p2 to within this ×
+/// the input scale of l2 (rejects roots the closed form or a dropped leading term got wrong).
+/// Two roots closer than sqrt(ORI_TOL_CONSTRUCTION_REL) (in units of the input scale) are one
+/// double root (tangency), since a double root is only accurate to the square root of the
+/// equation's precision. Unitless.
+#define ORI_TOL_CONSTRUCTION_CHECK_REL 1e-6
+
 /// Output only: a degree value within this of an integer is written as that integer, so that
 /// radian↔degree round-off (90.00000000000001) does not show in files. Degrees.
 #define ORI_TOL_PRINT_DEG 1e-10

@@ -401,15 +401,20 @@ static void reset_marks(arr *A)
         if (A->gr[i].vertex >= 0 && A->gr[i].vertex < A->mark_cap) A->mark[A->gr[i].vertex] = -1;
 }
 
-// Phase 1. Returns false (nothing planned) when the snapped end points coincide.
-static bool plan(arr *A, ori_v2 a, ori_v2 b)
+typedef enum plan_outcome { PLAN_OK, PLAN_DEGENERATE, PLAN_FLOATING } plan_outcome;
+
+static bool floating_pieces(arr *A);
+
+// Phase 1 (no mutation): PLAN_DEGENERATE when the snapped end points coincide, PLAN_FLOATING
+// when a piece would float inside a face (see floating_pieces).
+static plan_outcome plan(arr *A, ori_v2 a, ori_v2 b)
 {
     ori_pattern *p = A->p;
     A->ev_count = A->gr_count = A->sr_count = A->overlap_count = A->near_count = 0;
     event ea, eb;
     ori_v2 sa = snap_endpoint(A, a, 0.0, &ea);
     ori_v2 sb = snap_endpoint(A, b, 1.0, &eb);
-    if ((ea.vertex >= 0 && ea.vertex == eb.vertex) || dist2(sa, sb) <= A->tol2) return false;
+    if ((ea.vertex >= 0 && ea.vertex == eb.vertex) || dist2(sa, sb) <= A->tol2) return PLAN_DEGENERATE;
     ORI__PUSH(A->ev, A->ev_count, A->ev_cap, ea);
     ORI__PUSH(A->ev, A->ev_count, A->ev_cap, eb);
     if (ea.vertex >= 0) A->mark[ea.vertex] = 0;
@@ -517,7 +522,7 @@ static bool plan(arr *A, ori_v2 a, ori_v2 b)
             ORI__PUSH(A->sr, A->sr_count, A->sr_cap, r);
         }
     }
-    return true;
+    return A->faces && floating_pieces(A) ? PLAN_FLOATING : PLAN_OK;
 }
 
 // --- faces ----------------------------------------------------------------------------------
@@ -752,6 +757,36 @@ static void cut_faces(arr *A, int gu, int gw)
         }
 }
 
+// A face is one cycle, so it cannot hold a hole: every piece must touch the faces' boundary
+// (a vertex of a face cycle, or a point on a side), except that a free end of the segment may
+// hang from such a point as a slit. True when some piece would float (both ends detached, or
+// one end on an existing vertex that belongs to no face).
+static bool floating_pieces(arr *A)
+{
+    ensure_vertex_arrays(A);
+    if (++A->fstamp == INT32_MAX) {
+        A->fstamp = 1;
+        memset(A->fmark, 0, sizeof(int) * (size_t)A->fmark_cap);
+    }
+    for (int f = 0; f < A->fl_count; ++f)
+        for (int i = 0; i < A->fl[f].n; ++i) A->fmark[A->fl[f].v[i]] = A->fstamp;
+    const ori_pattern *p = A->p;
+    // per group: 1 attached, 0 a free new end point, −1 detached existing vertex
+    int prev = 0;
+    for (int k = 0; k < A->gr_count; ++k) {
+        const group *g = &A->gr[k];
+        int state = g->vertex >= 0 ? (A->fmark[g->vertex] == A->fstamp ? 1 : -1) : 0;
+        for (int j = g->first; j < g->first + g->count && state != 1; ++j) {
+            int e = A->ev[j].edge;
+            if (e >= 0 && A->fmark[p->edges[e].v[0]] == A->fstamp && A->fmark[p->edges[e].v[1]] == A->fstamp) state = 1;
+        }
+        if (k > 0 && (state != 1 && prev != 1)) return true;
+        if (state == -1) return true;
+        prev = state;
+    }
+    return false;
+}
+
 // --- commit ---------------------------------------------------------------------------------
 
 static uint64_t pair_key(int a, int b)
@@ -934,14 +969,14 @@ static void arr_free(arr *A)
     faces_free(A);
 }
 
-// Insert one segment (already validated finite). Returns false when it degenerates.
-static bool insert_one(arr *A, ori_v2 a, ori_v2 b, ori_assignment asg, double angle)
+// Insert one segment (already validated finite).
+static plan_outcome insert_one(arr *A, ori_v2 a, ori_v2 b, ori_assignment asg, double angle)
 {
     ensure_vertex_arrays(A);
-    bool ok = plan(A, a, b);
-    if (ok) commit(A, asg, angle);
+    plan_outcome r = plan(A, a, b);
+    if (r == PLAN_OK) commit(A, asg, angle);
     reset_marks(A);
-    return ok;
+    return r;
 }
 
 static void bbox_with(const ori_pattern *p, double *lo_x, double *lo_y, double *hi_x, double *hi_y)
@@ -1003,14 +1038,18 @@ ori_status ori_pattern_insert_segment(ori_pattern *p, ori_v2 a, ori_v2 b, ori_as
     A.tol = ORI_TOL_LENGTH_REL * scale;
     A.tol2 = A.tol * A.tol;
     faces_load(&A);
-    bool ok = insert_one(&A, a, b, asg, angle);
-    if (ok) faces_store(&A);
+    plan_outcome r = insert_one(&A, a, b, asg, angle);
+    if (r == PLAN_OK) faces_store(&A);
     if (out) *out = A.res;
     arr_free(&A);
-    if (!ok)
+    if (r == PLAN_DEGENERATE)
         return ori__fail(error, ORI_ERR_DEGENERATE,
                          "segment (%g, %g)-(%g, %g) is shorter than the length tolerance after snapping",
                          a.x, a.y, b.x, b.y);
+    if (r == PLAN_FLOATING)
+        return ori__fail(error, ORI_ERR_UNSUPPORTED,
+                         "segment (%g, %g)-(%g, %g) would float inside a face without touching its boundary "
+                         "(a face cannot have a hole)", a.x, a.y, b.x, b.y);
     return ORI_OK;
 }
 
@@ -1056,7 +1095,7 @@ ori_status ori_pattern_insert_segments(ori_pattern *p, const ori_segment *segs, 
     faces_load(&A);
     int skipped = 0;
     for (int i = 0; i < count; ++i)
-        if (!insert_one(&A, segs[i].a, segs[i].b, segs[i].assignment, segs[i].fold_angle_rad)) skipped++;
+        if (insert_one(&A, segs[i].a, segs[i].b, segs[i].assignment, segs[i].fold_angle_rad) != PLAN_OK) skipped++;
     faces_store(&A);
     A.res.segments_skipped = skipped;
     if (out) *out = A.res;

@@ -270,6 +270,8 @@ static bool edges_conflict(const ori_pattern *p, int e, int f)
         // collinear: overlap when both lie on the same side of the shared endpoint
         return ori_v2_dot(ori_v2_sub(x, s), ori_v2_sub(y, s)) > 0.0;
     }
+    // (Computed only here: with a shared end point two of them are exactly zero, which sends
+    // every call through the slow exact path of ori_orient2d.)
     int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
     int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
     if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0) {

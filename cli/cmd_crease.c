@@ -1,0 +1,148 @@
+// orikin crease: a crease from an axiom (or a line) applied to a face or to the whole sheet.
+#include <string.h>
+
+#include <orikin/authoring.h>
+
+#include "axiom_args.h"
+
+static int run(int argc, char **argv)
+{
+    const char *path = NULL, *face_spec = NULL, *out = NULL;
+    ori_axiom_input in;
+    memset(&in, 0, sizeof in);
+    int given = 0, solution = 0;
+    bool all = false, have_axiom = false, have_line = false, have_solution = false;
+    double line[4] = {0, 0, 0, 0};
+    ori_assignment asg = ORI_ASSIGN_UNASSIGNED;
+    for (int i = 1; i < argc; ++i) {
+        int r = axiom_parse_option("crease", argc, argv, &i, &in, &given);
+        if (r < 0) return -r;
+        if (r == 1) continue;
+        const char *v;
+        if (strcmp(argv[i], "--axiom") == 0) {
+            if (!(v = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &in.axiom) || in.axiom < 1 || in.axiom > 7)
+                return cli_usage("crease", "--axiom takes a number from 1 to 7");
+            have_axiom = true;
+        } else if (strcmp(argv[i], "--line") == 0) {
+            if (!(v = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (!cli_parse_doubles(v, line, 4)) return cli_usage("crease", "--line needs x1,y1,x2,y2");
+            have_line = true;
+        } else if (strcmp(argv[i], "--solution") == 0) {
+            if (!(v = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &solution)) return cli_usage("crease", "--solution takes a number (1, 2, 3)");
+            have_solution = true;
+        } else if (strcmp(argv[i], "--face") == 0) {
+            if (!(face_spec = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
+        } else if (strcmp(argv[i], "--all") == 0) {
+            all = true;
+        } else if (strcmp(argv[i], "--assign") == 0) {
+            if (!(v = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (strlen(v) != 1 || !ori_assignment_from_char(v[0], &asg) ||
+                !(ori_assignment_is_fold(asg) || asg == ORI_ASSIGN_FLAT))
+                return cli_usage("crease", "--assign takes M, V, F or U");
+        } else if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
+            if (!(out = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            return cli_usage("crease", "unknown option %s", argv[i]);
+        } else if (!path) {
+            path = argv[i];
+        } else {
+            return cli_usage("crease", "one FILE only");
+        }
+    }
+    if (!path) return cli_usage("crease", "missing FILE");
+    if (have_axiom == have_line) return cli_usage("crease", "give either --axiom N (with its inputs) or --line x1,y1,x2,y2");
+    if (have_line && (given || have_solution)) return cli_usage("crease", "--line takes no other axiom inputs");
+    if (have_axiom) {
+        int rc = axiom_check_inputs("crease", &in, given);
+        if (rc != CLI_EXIT_OK) return rc;
+    }
+    if (all == (face_spec != NULL)) return cli_usage("crease", "give either --face NAME or --all");
+
+    ori_crease c;
+    c.infinite = true;
+    c.assignment = asg;
+    c.fold_angle_rad = 0.0;
+    char what[64];
+    if (have_line) {
+        c.a = ori_v2_make(line[0], line[1]);
+        c.b = ori_v2_make(line[2], line[3]);
+        snprintf(what, sizeof what, "the line");
+    } else {
+        ori_line_set s = ori_axiom_solve(&in);
+        if (s.count == 0)
+            return cli_input_fail("crease", path, "axiom %d (%s) has no solution for these inputs", in.axiom,
+                                  axiom_summary(in.axiom));
+        if (!have_solution && s.count > 1) {
+            fprintf(stderr, "orikin crease: %s: axiom %d has %d solutions here; choose one with --solution 1..%d:\n", path,
+                    in.axiom, s.count, s.count);
+            for (int k = 0; k < s.count; ++k)
+                fprintf(stderr, "  %d  point (%.17g, %.17g)  dir (%.17g, %.17g)\n", k + 1, s.lines[k].point.x,
+                        s.lines[k].point.y, s.lines[k].dir.x, s.lines[k].dir.y);
+            return CLI_EXIT_INPUT;
+        }
+        if (!have_solution) solution = 1;
+        if (solution < 1 || solution > s.count)
+            return cli_input_fail("crease", path, "solution %d does not exist (axiom %d has %d solution%s here)", solution,
+                                  in.axiom, s.count, s.count == 1 ? "" : "s");
+        ori_line l = s.lines[solution - 1];
+        c.a = l.point;
+        c.b = ori_v2_add(l.point, l.dir);
+        snprintf(what, sizeof what, "axiom %d solution %d", in.axiom, solution);
+    }
+    ori_fold *doc;
+    ori_pattern *p;
+    int rc = cli_load_pattern("crease", path, 0, false, &doc, &p);
+    if (rc != CLI_EXIT_OK) return rc;
+    int face = ORI_NULL_INDEX;
+    if (face_spec) rc = cli_find_face("crease", path, p, face_spec, &face);
+    if (rc == CLI_EXIT_OK) {
+        char target[ORI_NAME_MAX + 16];
+        if (face == ORI_NULL_INDEX) snprintf(target, sizeof target, "the sheet");
+        else if (ori_pattern_face_name(p, face)) snprintf(target, sizeof target, "%s", ori_pattern_face_name(p, face));
+        else snprintf(target, sizeof target, "face %d", face);
+        ori_apply_result r;
+        ori_error err;
+        ori_status st = ori_pattern_apply_crease(p, &c, face, &r, &err);
+        if (st != ORI_OK) rc = cli_input_error("crease", path, &err);
+        else rc = cli_write_pattern("crease", doc, p, out);
+        if (rc == CLI_EXIT_OK && out)
+            printf("%s applied to %s: %d piece%s, %d face%s split, new edges %d to %d\n", what, target, r.segments,
+                   r.segments == 1 ? "" : "s", r.faces_split, r.faces_split == 1 ? "" : "s", r.first_edge,
+                   ori_pattern_edge_count(p) - 1);
+    }
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    return rc;
+}
+
+const cli_command cli_cmd_crease = {
+    "crease",
+    "apply a crease from an axiom (or a line) to a face or the whole sheet",
+    "usage: orikin crease FILE (--axiom N [--p1 x,y] [--p2 x,y] [--l1 x,y,dx,dy] [--l2 …]\n"
+    "                            [--solution K] | --line x1,y1,x2,y2)\n"
+    "                      (--face NAME | --all) [--assign M|V|F|U] [-o OUT]\n"
+    "\n"
+    "Construct a fold line with Huzita-Hatori axiom N (see orikin axiom -h for the inputs) or\n"
+    "through two points (--line, axiom 1 keeping your direction), clip it to the target face\n"
+    "or to every face it crosses (--all), and insert it: each face it crosses splits in two\n"
+    "like a perforation, ObjK into ObjK1 (left of the line's direction) and ObjK2. When the\n"
+    "axiom has several solutions choose one with --solution K (1-based, in the order orikin\n"
+    "axiom prints). New creases are unassigned (U) unless --assign says otherwise. Without -o\n"
+    "the FOLD text goes to stdout; with -o a summary is printed.\n"
+    "\n"
+    "options:\n"
+    "  --axiom N             axiom 1-7 with its inputs --p1, --p2, --l1, --l2\n"
+    "  --solution K          which solution (needed when there are several)\n"
+    "  --line x1,y1,x2,y2    the line through two points instead of an axiom\n"
+    "  --face NAME           the target face: its name (Obj12) or FOLD face index\n"
+    "  --all                 every face the line crosses\n"
+    "  --assign M|V|F|U      the new crease's assignment (default U)\n"
+    "  -o, --output OUT      write the FOLD file here (atomically)\n"
+    "\n"
+    "exit codes: 0 written, 2 bad command line, 3 bad file, no solution, K out of range,\n"
+    "unknown face, line misses the face (nothing written)\n"
+    "example: orikin crease sheet.fold --axiom 2 --p1 0,0 --p2 2,2 --face Obj1 --assign V -o d.fold\n",
+    run,
+};
