@@ -617,67 +617,122 @@ static double m3_dev_identity(ori_m3 r)
     return d;
 }
 
+// Vertex loop (3 rows): P = R_1 R_2 ··· R_n with R_i = R(a_i, θ_i), accumulated in a plain
+// row-major 3 × 3 array (no struct copies: this is the inner loop of every corrector
+// iteration). Each joint's rotation is taken from rot (the joint's own axis ω; an entry with
+// a_i = −ω uses its transpose, R(−ω, θ) = R(ω, θ)ᵀ) or computed when rot is NULL. The
+// Jacobian column of crossing i is the spatial axis P_{i−1} a_i, accumulated into cols.
+static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *res, double *cols,
+                               const ori_m3 *rot)
+{
+    double buf[2][9] = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    double *p = buf[0], *q = buf[1];
+    for (int i = 0; i < L->count; ++i) {
+        const kin_entry *en = &m->entries[L->first + i];
+        if (cols) {
+            const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
+            double *c = cols + 6 * (L->col_first + en->col);
+            c[0] += p[0] * ax + p[1] * ay + p[2] * az;
+            c[1] += p[3] * ax + p[4] * ay + p[5] * az;
+            c[2] += p[6] * ax + p[7] * ay + p[8] * az;
+        }
+        ori_m3 rl;
+        const double *r;
+        if (rot) {
+            r = &rot[en->joint].m[0][0];
+        } else {
+            rl = ori_m3_rotation(en->axis, th[en->joint]);
+            r = &rl.m[0][0];
+        }
+        // q = p · r, or p · rᵀ for a crossing against the joint's axis (element (i, k) of rᵀ is
+        // r[k][i]).
+        if (rot && en->sign < 0) {
+            for (int row = 0; row < 9; row += 3) {
+                const double p0 = p[row], p1 = p[row + 1], p2 = p[row + 2];
+                q[row + 0] = p0 * r[0] + p1 * r[1] + p2 * r[2];
+                q[row + 1] = p0 * r[3] + p1 * r[4] + p2 * r[5];
+                q[row + 2] = p0 * r[6] + p1 * r[7] + p2 * r[8];
+            }
+        } else {
+            for (int row = 0; row < 9; row += 3) {
+                const double p0 = p[row], p1 = p[row + 1], p2 = p[row + 2];
+                q[row + 0] = p0 * r[0] + p1 * r[3] + p2 * r[6];
+                q[row + 1] = p0 * r[1] + p1 * r[4] + p2 * r[7];
+                q[row + 2] = p0 * r[2] + p1 * r[5] + p2 * r[8];
+            }
+        }
+        double *t = p;
+        p = q;
+        q = t;
+    }
+    // Max-norm of P − I; a NaN anywhere makes it NaN.
+    double d[9] = {p[0] - 1.0, p[1], p[2], p[3], p[4] - 1.0, p[5], p[6], p[7], p[8] - 1.0};
+    double dev = 0.0, sum = 0.0;
+    for (int k = 0; k < 9; ++k) {
+        double x = fabs(d[k]);
+        dev = x > dev ? x : dev;
+        sum += x;
+    }
+    if (isnan(sum)) dev = NAN;
+    if (res) {
+        ori_m3 P;
+        memcpy(&P.m[0][0], p, sizeof P.m);
+        ori_v3 rv = ori__kin_rotvec(P);
+        res[L->row0 + 0] = rv.x;
+        res[L->row0 + 1] = rv.y;
+        res[L->row0 + 2] = rv.z;
+    }
+    return dev;
+}
+
+// Hole loop (6 rows): rigid motions, translation rows divided by the diagonal.
+static double eval_hole_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *res, double *cols)
+{
+    double inv_diag = 1.0 / m->diagonal;
+    ori_rigid P = ori_rigid_identity();
+    for (int i = 0; i < L->count; ++i) {
+        const kin_entry *en = &m->entries[L->first + i];
+        if (cols) {
+            // Spatial twist of this crossing at the current state: Ad(P) ξ.
+            ori_v3 w = ori_m3_apply(P.r, en->axis);
+            double *c = cols + 6 * (L->col_first + en->col);
+            ori_v3 q = ori_rigid_apply(P, en->point);
+            ori_v3 v = ori_v3_scale(ori_v3_cross(q, w), inv_diag); // −ω×q = q×ω
+            c[0] += v.x;
+            c[1] += v.y;
+            c[2] += v.z;
+            c[3] += w.x;
+            c[4] += w.y;
+            c[5] += w.z;
+        }
+        ori_twist xi = ori_twist_from_axis(en->point, en->axis);
+        P = ori_rigid_compose(P, ori_twist_exp(xi, th[en->joint]));
+    }
+    double dev = m3_dev_identity(P.r);
+    ori_v3 t = ori_v3_scale(P.t, inv_diag);
+    double dt = fmax(fabs(t.x), fmax(fabs(t.y), fabs(t.z)));
+    if (dt > dev || isnan(dt)) dev = dt;
+    if (res) {
+        ori_v3 rv = ori__kin_rotvec(P.r);
+        res[L->row0 + 0] = t.x;
+        res[L->row0 + 1] = t.y;
+        res[L->row0 + 2] = t.z;
+        res[L->row0 + 3] = rv.x;
+        res[L->row0 + 4] = rv.y;
+        res[L->row0 + 5] = rv.z;
+    }
+    return dev;
+}
+
 double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, ori_m3 *rot)
 {
     double worst = 0.0;
-    double inv_diag = 1.0 / m->diagonal;
     if (rot)
         for (int j = 0; j < m->joint_count; ++j) rot[j] = ori_m3_rotation(m->joints[j].omega, th[j]);
-    if (cols)
-        for (int k = 0; k < 6 * m->loop_col_total; ++k) cols[k] = 0.0;
+    if (cols) memset(cols, 0, sizeof(double) * 6 * (size_t)m->loop_col_total);
     for (int l = 0; l < m->loop_count; ++l) {
         const kin_loop *L = &m->loops[l];
-        ori_rigid P = ori_rigid_identity();
-        for (int i = 0; i < L->count; ++i) {
-            const kin_entry *en = &m->entries[L->first + i];
-            if (cols) {
-                // Spatial axis of this crossing at the current state: Ad(P) ξ.
-                ori_v3 w = ori_m3_apply(P.r, en->axis);
-                double *c = cols + 6 * (L->col_first + en->col);
-                if (L->rows == 3) {
-                    c[0] += w.x;
-                    c[1] += w.y;
-                    c[2] += w.z;
-                } else {
-                    ori_v3 q = ori_rigid_apply(P, en->point);
-                    ori_v3 v = ori_v3_scale(ori_v3_cross(q, w), inv_diag); // −ω×q = q×ω
-                    c[0] += v.x;
-                    c[1] += v.y;
-                    c[2] += v.z;
-                    c[3] += w.x;
-                    c[4] += w.y;
-                    c[5] += w.z;
-                }
-            }
-            double t = th[en->joint];
-            if (L->rows == 3) {
-                ori_m3 R = rot ? (en->sign > 0 ? rot[en->joint] : ori_m3_transpose(rot[en->joint]))
-                               : ori_m3_rotation(en->axis, t);
-                P.r = ori_m3_mul(P.r, R);
-            } else {
-                ori_twist xi = ori_twist_from_axis(en->point, en->axis);
-                P = ori_rigid_compose(P, ori_twist_exp(xi, t));
-            }
-        }
-        double dev = m3_dev_identity(P.r);
-        ori_v3 rv = ori__kin_rotvec(P.r);
-        if (L->rows == 6) {
-            ori_v3 t = ori_v3_scale(P.t, inv_diag);
-            double dt = fmax(fabs(t.x), fmax(fabs(t.y), fabs(t.z)));
-            if (dt > dev || isnan(dt)) dev = dt;
-            if (res) {
-                res[L->row0 + 0] = t.x;
-                res[L->row0 + 1] = t.y;
-                res[L->row0 + 2] = t.z;
-                res[L->row0 + 3] = rv.x;
-                res[L->row0 + 4] = rv.y;
-                res[L->row0 + 5] = rv.z;
-            }
-        } else if (res) {
-            res[L->row0 + 0] = rv.x;
-            res[L->row0 + 1] = rv.y;
-            res[L->row0 + 2] = rv.z;
-        }
+        double dev = L->rows == 3 ? eval_vertex_loop(m, L, th, res, cols, rot) : eval_hole_loop(m, L, th, res, cols);
         if (dev > worst || isnan(dev)) worst = dev;
     }
     return isnan(worst) ? INFINITY : worst;
