@@ -129,4 +129,9 @@
 /// 3 sin⁴φ/40, is below 1e-17).
 #define ORI_KIN_ROTVEC_SERIES_MAX 1e-4
 
+/// Sweep corrector: a loop's block of undetermined columns counts as singular when a diagonal
+/// entry of its QR factor is below this × its largest column norm (unitless; the columns are
+/// unit axes for vertex loops). The sparse least-squares corrector then takes over.
+#define ORI_KIN_SWEEP_PIVOT_REL 1e-6
+
 #endif

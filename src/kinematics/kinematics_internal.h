@@ -141,6 +141,9 @@ typedef struct kin_solver kin_solver;
 // When an old factor failed, the corrector factors afresh at each call, retrying an old one
 // every this many calls.
 #define ORI_KIN_STALE_RETRY 8
+// After the sweep corrector failed (a singular block, or a step that did not reduce the
+// residual), the sparse corrector is used for this many calls before the sweep is tried again.
+#define ORI_KIN_SWEEP_RETRY 8
 
 typedef struct kin_solver_opts {
     ori_linear linear;
@@ -163,6 +166,9 @@ double ori__kin_tangent_defect(kin_solver *s, const double *th, const double *t)
 // Statistics of the solver.
 int ori__kin_solver_factorizations(const kin_solver *s);
 bool ori__kin_solver_sparse(const kin_solver *s);
+// The sweep ordering exists (and is used first by the corrector and the tangent).
+bool ori__kin_solver_sweep(const kin_solver *s);
+int ori__kin_solver_sweep_iterations(const kin_solver *s);
 // The loop-closure Jacobian restricted to the columns col_of_joint ≥ 0, at th, as a sparse
 // least-squares object in Jᵀ form (for products J x, Jᵀ y and factorizations of JᵀJ + λI).
 kin_sls *ori__kin_jacobian_sls(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th);
