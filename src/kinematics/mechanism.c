@@ -625,10 +625,36 @@ static double m3_dev_identity(ori_m3 r)
 static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *res, double *cols,
                                const ori_m3 *rot)
 {
-    double buf[2][9] = {{1, 0, 0, 0, 1, 0, 0, 0, 1}};
+    double buf[2][9];
     double *p = buf[0], *q = buf[1];
     for (int i = 0; i < L->count; ++i) {
         const kin_entry *en = &m->entries[L->first + i];
+        ori_m3 rl;
+        const double *r;
+        bool tr = false;
+        if (rot) {
+            r = &rot[en->joint].m[0][0];
+            tr = en->sign < 0;
+        } else {
+            rl = ori_m3_rotation(en->axis, th[en->joint]);
+            r = &rl.m[0][0];
+        }
+        if (i == 0) {
+            // P_1 = R_1; the spatial axis of the first crossing is its own.
+            if (cols) {
+                double *c = cols + 6 * (L->col_first + en->col);
+                c[0] += en->axis.x;
+                c[1] += en->axis.y;
+                c[2] += en->axis.z;
+            }
+            if (tr) {
+                for (int row = 0; row < 3; ++row)
+                    for (int k = 0; k < 3; ++k) p[3 * row + k] = r[3 * k + row];
+            } else {
+                memcpy(p, r, sizeof buf[0]);
+            }
+            continue;
+        }
         if (cols) {
             const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
             double *c = cols + 6 * (L->col_first + en->col);
@@ -636,17 +662,9 @@ static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const 
             c[1] += p[3] * ax + p[4] * ay + p[5] * az;
             c[2] += p[6] * ax + p[7] * ay + p[8] * az;
         }
-        ori_m3 rl;
-        const double *r;
-        if (rot) {
-            r = &rot[en->joint].m[0][0];
-        } else {
-            rl = ori_m3_rotation(en->axis, th[en->joint]);
-            r = &rl.m[0][0];
-        }
         // q = p · r, or p · rᵀ for a crossing against the joint's axis (element (i, k) of rᵀ is
         // r[k][i]).
-        if (rot && en->sign < 0) {
+        if (tr) {
             for (int row = 0; row < 9; row += 3) {
                 const double p0 = p[row], p1 = p[row + 1], p2 = p[row + 2];
                 q[row + 0] = p0 * r[0] + p1 * r[1] + p2 * r[2];
@@ -664,6 +682,10 @@ static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const 
         double *t = p;
         p = q;
         q = t;
+    }
+    if (L->count == 0) {
+        static const double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        memcpy(p, id, sizeof id);
     }
     // Max-norm of P − I; a NaN anywhere makes it NaN.
     double d[9] = {p[0] - 1.0, p[1], p[2], p[3], p[4] - 1.0, p[5], p[6], p[7], p[8] - 1.0};

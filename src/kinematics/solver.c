@@ -530,6 +530,53 @@ static bool small_lsq(double *a, int rows, int k, double *b, double *x)
     return true;
 }
 
+static inline void cross3(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// The same least squares for a vertex loop's block (3 rows, k ≤ 3 columns of the blocks array,
+// stride 6) in closed form with cross products: k = 3, x = (b·(a2×a3), b·(a3×a1), b·(a1×a2))/det;
+// k = 2, the components of b's projection on the plane n = a1×a2, x = ((b×a2)·n, (a1×b)·n)/|n|²;
+// k = 1, x = a·b/a·a. The rank test is Householder's: with R11 = |a1|, R22 = |a1×a2|/|a1| and
+// R33 = det/|a1×a2|, each must exceed ORI_KIN_SWEEP_PIVOT_REL × the largest column norm.
+static bool vertex_lsq(const double *const a[3], int k, const double *b, double *x)
+{
+    double n1 = dot3(a[0], a[0]);
+    double cmax2 = n1;
+    for (int t = 1; t < k; ++t) cmax2 = fmax(cmax2, dot3(a[t], a[t]));
+    double tol2 = ORI_KIN_SWEEP_PIVOT_REL * ORI_KIN_SWEEP_PIVOT_REL * cmax2;
+    if (!(n1 > tol2)) return false;
+    if (k == 1) {
+        x[0] = dot3(a[0], b) / n1;
+        return true;
+    }
+    double n[3];
+    cross3(a[0], a[1], n);
+    double nn = dot3(n, n);
+    if (!(nn > tol2 * n1)) return false; // R22² = |a1×a2|²/|a1|²
+    if (k == 2) {
+        double u[3], v[3];
+        cross3(b, a[1], u);
+        cross3(a[0], b, v);
+        x[0] = dot3(u, n) / nn;
+        x[1] = dot3(v, n) / nn;
+        return true;
+    }
+    double det = dot3(n, a[2]);
+    if (!(det * det > tol2 * nn)) return false; // R33² = det²/|a1×a2|²
+    double c23[3], c31[3];
+    cross3(a[1], a[2], c23);
+    cross3(a[2], a[0], c31);
+    x[0] = dot3(b, c23) / det;
+    x[1] = dot3(b, c31) / det;
+    x[2] = dot3(b, n) / det;
+    return true;
+}
+
 // x = M b along the sweep, with the Jacobian blocks of the last evaluation. False when a
 // loop's block is rank deficient (then the sparse factorization takes over).
 static bool sweep_solve(kin_solver *s, const double *b, double *x)
@@ -539,7 +586,7 @@ static bool sweep_solve(kin_solver *s, const double *b, double *x)
         const kin_loop *L = &m->loops[s->sweep_loop[k]];
         const int *cols = m->loop_cols + L->col_first;
         const double *blk = s->blocks + 6 * L->col_first;
-        double rhs[6], a[36], y[6];
+        double rhs[6], y[6];
         for (int q = 0; q < L->rows; ++q) rhs[q] = b[L->row0 + q];
         for (int t = s->sweep_kfirst[k]; t < s->sweep_kfirst[k + 1]; ++t) {
             int c = s->sweep_known[t];
@@ -548,9 +595,17 @@ static bool sweep_solve(kin_solver *s, const double *b, double *x)
         }
         int n = s->sweep_first[k + 1] - s->sweep_first[k];
         const int *nw = s->sweep_new + s->sweep_first[k];
-        for (int t = 0; t < n; ++t)
-            for (int q = 0; q < L->rows; ++q) a[q + L->rows * t] = blk[6 * nw[t] + q];
-        if (!small_lsq(a, L->rows, n, rhs, y)) return false;
+        bool ok;
+        if (L->rows == 3) {
+            const double *a[3] = {blk + 6 * nw[0], n > 1 ? blk + 6 * nw[1] : NULL, n > 2 ? blk + 6 * nw[2] : NULL};
+            ok = vertex_lsq(a, n, rhs, y);
+        } else {
+            double a[36];
+            for (int t = 0; t < n; ++t)
+                for (int q = 0; q < L->rows; ++q) a[q + L->rows * t] = blk[6 * nw[t] + q];
+            ok = small_lsq(a, L->rows, n, rhs, y);
+        }
+        if (!ok) return false;
         for (int t = 0; t < n; ++t) {
             if (!isfinite(y[t])) return false;
             x[s->col[cols[nw[t]]]] = y[t];
