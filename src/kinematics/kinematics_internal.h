@@ -182,6 +182,10 @@ int ori__kin_solver_nullity(kin_solver *s, const double *th);
 bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                             double *th_out);
 
+// Rayleigh–Ritz blocks of the sparse nullity up to this size use Jacobi rotations, larger ones
+// LAPACK's dsyev.
+#define ORI_KIN_JACOBI_MAX 32
+
 // Successive probe steps of the generic DOF (each from the state the previous one reached).
 #define ORI_KIN_PROBE_ROUNDS 4
 
