@@ -182,6 +182,9 @@ int ori__kin_solver_nullity(kin_solver *s, const double *th);
 bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                             double *th_out);
 
+// Output frames reserved up front at most (more grow the arrays by doubling).
+#define ORI_KIN_RESERVE_FRAMES 4096
+
 // Rayleigh–Ritz blocks of the sparse nullity up to this size use Jacobi rotations, larger ones
 // LAPACK's dsyev.
 #define ORI_KIN_JACOBI_MAX 32

@@ -119,19 +119,25 @@ static void check_signs(ctx *c)
     }
 }
 
+// Room for cap frames (a fold's frame count is known up front: no copies of growing arrays).
+static void reserve_frames(ctx *c, int cap)
+{
+    ori_motion *mo = c->mo;
+    const ori_mechanism *m = c->m;
+    if (cap <= mo->frame_cap) return;
+    mo->drive = ori__realloc(mo->drive, sizeof(double) * (size_t)cap);
+    mo->residual = ori__realloc(mo->residual, sizeof(double) * (size_t)cap);
+    mo->angles = ori__realloc(mo->angles, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
+    if (c->analytic) mo->alt = ori__realloc(mo->alt, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
+    mo->has_alt = ori__realloc(mo->has_alt, sizeof(bool) * (size_t)cap);
+    mo->frame_cap = cap;
+}
+
 static void record(ctx *c)
 {
     ori_motion *mo = c->mo;
     const ori_mechanism *m = c->m;
-    if (mo->nframes == mo->frame_cap) {
-        int cap = mo->frame_cap ? 2 * mo->frame_cap : 16;
-        mo->drive = ori__realloc(mo->drive, sizeof(double) * (size_t)cap);
-        mo->residual = ori__realloc(mo->residual, sizeof(double) * (size_t)cap);
-        mo->angles = ori__realloc(mo->angles, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
-        if (c->analytic) mo->alt = ori__realloc(mo->alt, sizeof(double) * (size_t)cap * (size_t)(m->edge_count + 1));
-        mo->has_alt = ori__realloc(mo->has_alt, sizeof(bool) * (size_t)cap);
-        mo->frame_cap = cap;
-    }
+    if (mo->nframes == mo->frame_cap) reserve_frames(c, mo->frame_cap ? 2 * mo->frame_cap : 16);
     int k = mo->nframes++;
     mo->drive[k] = c->th[c->jd];
     ori__kin_joints_to_edges(m, c->th, mo->angles + (size_t)k * (size_t)(m->edge_count + 1));
@@ -683,6 +689,9 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
     leg_result lr = LEG_OK;
     if (def->has_from && def->from_rad != c.th[jd]) lr = run_leg(&c, def->from_rad, fabs(def->from_rad - c.th[jd]), false);
     if (lr == LEG_OK) {
+        // Frames: the start, one per step, the target (capped: a tiny step grows the arrays).
+        double span = fabs(def->to_rad - c.th[jd]) / def->step_rad;
+        reserve_frames(&c, span < ORI_KIN_RESERVE_FRAMES ? (int)span + 3 : ORI_KIN_RESERVE_FRAMES);
         record(&c);
         lr = run_leg(&c, def->to_rad, def->step_rad, true);
     }
