@@ -368,44 +368,13 @@ Test(mechanism, dof_rejects_angles_that_do_not_close)
     ori_pattern_destroy(p);
 }
 
-// Miura-ori R×C, vertex (i, j) at (i·w + (j odd ? d : 0), j·h).
-static ori_pattern *miura(int rows, int cols, double w, double d, double h)
-{
-    ori_pattern_def pd = ori_default_pattern_def();
-    ori_pattern *p = ori_pattern_create(&pd);
-    for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i <= cols; ++i) ori_pattern_add_vertex(p, ori_v3_make(i * w + ((j & 1) ? d : 0.0), j * h, 0.0));
-#define VID(i, j) ((j) * (cols + 1) + (i))
-    for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i < cols; ++i)
-            ori_pattern_add_edge(p, VID(i, j), VID(i + 1, j),
-                                 (j == 0 || j == rows) ? ORI_ASSIGN_BOUNDARY
-                                 : ((i + j) & 1)       ? ORI_ASSIGN_VALLEY
-                                                       : ORI_ASSIGN_MOUNTAIN,
-                                 0.0);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i <= cols; ++i)
-            ori_pattern_add_edge(p, VID(i, j), VID(i, j + 1),
-                                 (i == 0 || i == cols) ? ORI_ASSIGN_BOUNDARY
-                                 : (i & 1)             ? ORI_ASSIGN_MOUNTAIN
-                                                       : ORI_ASSIGN_VALLEY,
-                                 0.0);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < cols; ++i) {
-            int f[4] = {VID(i, j), VID(i + 1, j), VID(i + 1, j + 1), VID(i, j + 1)};
-            ori_pattern_add_face(p, f, 4);
-        }
-#undef VID
-    ori_error err;
-    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK);
-    return p;
-}
-
 Test(mechanism, sparse_dof_agrees_with_dense_svd)
 {
     // A folded 6×6 Miura state from the numeric solver, then the sparse nullity (forced by a
     // direct call) against the dense SVD.
-    ori_pattern *p = miura(6, 6, 1.0, 0.4, 1.0);
+    // Generator parameters (test_miura): straight edge 1, vertex rows 1 apart shifted by 0.4 on
+    // odd rows: zig-zag edge √(0.4² + 1), cell angle atan2(1, 0.4).
+    ori_pattern *p = test_miura(6, 6, 1.0, sqrt(0.4 * 0.4 + 1.0), atan2(1.0, 0.4), NULL);
     ori_mechanism *m = test_mechanism_of(p);
     int drive = ori_pattern_find_edge(p, 3 * 7 + 3, 4 * 7 + 3);
     double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
