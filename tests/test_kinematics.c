@@ -772,3 +772,201 @@ Test(kinematics, a_pinwheel_ring_around_a_hole_is_rigid)
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
+
+Test(kinematics, a_ring_around_a_hole_folds_with_the_sweep)
+{
+    // The hole loop (6 rows) determines its three free creases from the drive by least squares.
+    ori_pattern *p = ring(true);
+    ori_mechanism *m = test_mechanism_of(p);
+    int e0 = ori_pattern_find_edge(p, 0, 4), e2 = ori_pattern_find_edge(p, 2, 6);
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = e0;
+    d.to_rad = 120 * DEG;
+    d.step_rad = 30 * DEG;
+    d.linear = ORI_LINEAR_SWEEP;
+    ori_motion *mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
+    ori_motion_stats st = ori_motion_stats_of(mo);
+    cr_assert(st.sweep);
+    cr_assert_gt(st.sweep_iterations, 0);
+    for (int k = 0; k < ori_motion_frame_count(mo); ++k) {
+        const double *a = ori_motion_frame_angles(mo, k);
+        cr_assert_float_eq(a[e2], a[e0], 1e-9);
+    }
+    check_frames(m, p, mo);
+    ori_motion_destroy(mo);
+    d.driven_edge = 12;
+    d.to_rad = 60 * DEG;
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    // The pinwheel ring stays rigid whichever linear algebra corrects.
+    p = ring(false);
+    m = test_mechanism_of(p);
+    mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_NOT_RIGIDLY_FOLDABLE, "%s", ori_motion_reason(mo));
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// --- the sweep corrector ----------------------------------------------------------------------
+
+// The middle zig-zag crease of an n × n generated Miura-ori and its valley/mountain sign.
+static int miura_drive(const ori_pattern *p, int n, double *sign)
+{
+    int e = ori_pattern_find_edge(p, (n / 2) * (n + 1) + n / 2, (n / 2 + 1) * (n + 1) + n / 2);
+    *sign = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    return e;
+}
+
+Test(kinematics, sweep_and_cholmod_agree_on_a_large_miura_sheet)
+{
+    // 12 × 12 cells, 263 free creases: the default (sweep) and CHOLMOD alone, from 5° to 150°.
+    const int n = 12;
+    ori_pattern *p = test_miura(n, n, MIURA_A, MIURA_B, MIURA_GAMMA, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    double sg;
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = miura_drive(p, n, &sg);
+    d.to_rad = sg * 5 * DEG;
+    d.step_rad = 5 * DEG;
+    ori_motion *start = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(start), ORI_MOTION_VALID);
+    d.start_angles_rad = ori_motion_frame_angles(start, ori_motion_frame_count(start) - 1);
+    d.to_rad = sg * 150 * DEG;
+    d.step_rad = 5 * DEG;
+    ori_motion *sw = solve(m, &d);
+    d.linear = ORI_LINEAR_SPARSE;
+    ori_motion *ch = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(sw), ORI_MOTION_VALID, "%s", ori_motion_reason(sw));
+    cr_assert_eq(ori_motion_verdict_of(ch), ORI_MOTION_VALID, "%s", ori_motion_reason(ch));
+    cr_assert_eq(ori_motion_frame_count(sw), 30);
+    cr_assert_eq(ori_motion_frame_count(ch), 30);
+    int E = ori_pattern_edge_count(p);
+    for (int k = 0; k < 30; ++k) {
+        cr_assert_eq(ori_motion_frame_drive(sw, k), ori_motion_frame_drive(ch, k));
+        const double *a = ori_motion_frame_angles(sw, k), *b = ori_motion_frame_angles(ch, k);
+        for (int e = 0; e < E; ++e) cr_assert_float_eq(a[e], b[e], 1e-10, "frame %d edge %d", k, e);
+    }
+    check_frames(m, p, sw);
+    ori_motion_stats s1 = ori_motion_stats_of(sw), s2 = ori_motion_stats_of(ch);
+    // Every corrector iteration by the sweep: the only factorization is the rank test of the
+    // start state. CHOLMOD alone factors at least once per step.
+    cr_assert(s1.sweep && s1.sparse);
+    cr_assert_eq(s1.sweep_iterations, s1.newton_iterations);
+    cr_assert_eq(s1.factorizations, 1);
+    cr_assert(!s2.sweep && s2.sparse);
+    cr_assert_eq(s2.sweep_iterations, 0);
+    cr_assert_geq(s2.factorizations, s2.steps);
+    cr_assert_eq(ori_motion_dof(sw), 1);
+    ori_motion_destroy(sw);
+    ori_motion_destroy(ch);
+    ori_motion_destroy(start);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// Free columns of every revolute joint but the drive (the motion's unknowns).
+static int free_columns(const ori_mechanism *m, int drive_joint, int *col)
+{
+    int n = 0;
+    for (int j = 0; j < m->joint_count; ++j)
+        col[j] = j == drive_joint ? KIN_DRIVE : m->joints[j].kind == ORI_JOINT_REVOLUTE ? n++ : KIN_FIXED;
+    return n;
+}
+
+Test(kinematics, sweep_exists_for_degree_four_vertices_from_any_drive_but_not_for_degree_six)
+{
+    kin_solver_opts opts = {ORI_LINEAR_SWEEP, false};
+    ori_pattern *p = test_miura(4, 4, MIURA_A, MIURA_B, MIURA_GAMMA, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    int *col = malloc(sizeof(int) * (size_t)m->joint_count);
+    for (int jd = 0; jd < m->joint_count; ++jd) {
+        int n = free_columns(m, jd, col);
+        kin_solver *s = ori__kin_solver_create(m, col, n, jd, &opts);
+        cr_assert(ori__kin_solver_sweep(s), "drive joint %d", jd);
+        ori__kin_solver_destroy(s);
+    }
+    free(col);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    // Yoshimura: degree-6 vertices, five or six undetermined creases for three equations.
+    ori_generate_def g = ori_default_generate_def(ORI_TESS_YOSHIMURA);
+    g.rows = g.cols = 3;
+    ori_error err;
+    cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
+    m = test_mechanism_of(p);
+    col = malloc(sizeof(int) * (size_t)m->joint_count);
+    int n = free_columns(m, 0, col);
+    kin_solver *s = ori__kin_solver_create(m, col, n, 0, &opts);
+    cr_assert_not(ori__kin_solver_sweep(s));
+    ori__kin_solver_destroy(s);
+    free(col);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+Test(kinematics, sweep_hands_a_singular_state_to_cholmod)
+{
+    // Next to the flat sheet every vertex block is (nearly) rank 2: the sweep refuses it and the
+    // least-squares corrector closes the loops.
+    ori_pattern *p = test_miura(4, 4, MIURA_A, MIURA_B, MIURA_GAMMA, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    double sg;
+    int drive = miura_drive(p, 4, &sg);
+    int jd = ori_mechanism_edge_joint(m, drive);
+    int *col = malloc(sizeof(int) * (size_t)m->joint_count);
+    double *th = calloc((size_t)m->joint_count, sizeof(double));
+    int n = free_columns(m, jd, col);
+    for (int j = 0; j < m->joint_count; ++j)
+        if (col[j] >= 0) th[j] = 1e-9 * (j % 3 - 1);
+    cr_assert_gt(ori__kin_residual(m, th), ORI_TOL_NEWTON);
+    kin_solver_opts opts = {ORI_LINEAR_SWEEP, false};
+    kin_solver *s = ori__kin_solver_create(m, col, n, jd, &opts);
+    cr_assert(ori__kin_solver_sweep(s));
+    int its;
+    double res;
+    cr_assert(ori__kin_correct(s, th, ORI_KIN_NEWTON_MAX, &its, &res));
+    cr_assert_leq(res, ORI_TOL_RESIDUAL);
+    cr_assert_leq(ori__kin_residual(m, th), ORI_TOL_RESIDUAL);
+    cr_assert_eq(ori__kin_solver_sweep_iterations(s), 0);
+    cr_assert_geq(ori__kin_solver_factorizations(s), 1);
+    ori__kin_solver_destroy(s);
+    free(th);
+    free(col);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+Test(kinematics, rank_test_factors_the_normal_matrix_of_the_state_itself)
+{
+    // A folded Miura state is regular for the drive, the flat sheet is not, whatever was
+    // factored before (a new solver's first test used to see an all-zero matrix).
+    ori_pattern *p = test_miura(6, 6, MIURA_A, MIURA_B, MIURA_GAMMA, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    double sg;
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = miura_drive(p, 6, &sg);
+    d.to_rad = sg * 60 * DEG;
+    d.step_rad = 60 * DEG;
+    ori_motion *mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID);
+    int jd = ori_mechanism_edge_joint(m, d.driven_edge);
+    int *col = malloc(sizeof(int) * (size_t)m->joint_count);
+    double *th = malloc(sizeof(double) * (size_t)m->joint_count);
+    double *flat = calloc((size_t)m->joint_count, sizeof(double));
+    ori__kin_edges_to_joints(m, ori_motion_frame_angles(mo, ori_motion_frame_count(mo) - 1), th);
+    int n = free_columns(m, jd, col);
+    kin_solver_opts opts = {ORI_LINEAR_SPARSE, false};
+    kin_solver *s = ori__kin_solver_create(m, col, n, jd, &opts);
+    cr_assert_eq(ori__kin_solver_nullity(s, th), 0);
+    cr_assert_gt(ori__kin_solver_nullity(s, flat), 0);
+    cr_assert_eq(ori__kin_solver_nullity(s, th), 0);
+    ori__kin_solver_destroy(s);
+    free(flat);
+    free(th);
+    free(col);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
