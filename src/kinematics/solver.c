@@ -714,24 +714,33 @@ bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, 
     return converged || r <= ORI_TOL_RESIDUAL;
 }
 
+// Joint-space tangent from the free columns' solution x (drive 1, fixed joints 0).
+static void tangent_from(const kin_solver *s, const double *x, double *t)
+{
+    for (int j = 0; j < s->m->joint_count; ++j) {
+        int c = s->col[j];
+        t[j] = j == s->drive ? 1.0 : c >= 0 ? x[c] : 0.0;
+    }
+}
+
 bool ori__kin_tangent(kin_solver *s, const double *th, double *t)
 {
-    const ori_mechanism *m = s->m;
     evaluate(s, th);
     double *neg = ori__alloc(sizeof(double) * ((size_t)s->rows + 1));
     double *x = ori__alloc(sizeof(double) * ((size_t)s->ncols + 1));
     for (int k = 0; k < s->rows; ++k) neg[k] = -s->jd[k];
-    // The sweep solves J_F t_F = −J_drive exactly when it is consistent (a regular state).
-    // Otherwise, near a flat state the normal matrix is badly conditioned and a factor of even
-    // a very close state gives a visibly different tangent: always factor at th itself.
-    bool ok = s->ncols == 0 || (s->sweep && sweep_solve(s, neg, x)) ||
-              (s->sparse ? sparse_step(s, neg, x, true) : dense_solve(s, neg, x));
-    if (ok) {
-        for (int j = 0; j < m->joint_count; ++j) {
-            int c = s->col[j];
-            t[j] = j == s->drive ? 1.0 : c >= 0 ? x[c] : 0.0;
-        }
+    // The sweep solves J_F t_F = −J_drive exactly when that system is consistent (a regular
+    // state); it is kept when every loop, checked ones included, agrees to ORI_TOL_CONE_REL
+    // (the defect the start test applies). Otherwise least squares, and near a flat state the
+    // normal matrix is badly conditioned and a factor of even a very close state gives a
+    // visibly different tangent: always factor at th itself.
+    bool ok = s->ncols == 0;
+    if (!ok && s->sweep && sweep_solve(s, neg, x)) {
+        tangent_from(s, x, t);
+        ok = ori__kin_tangent_defect(s, th, t) <= ORI_TOL_CONE_REL;
     }
+    if (!ok) ok = s->sparse ? sparse_step(s, neg, x, true) : dense_solve(s, neg, x);
+    if (ok) tangent_from(s, x, t);
     ori__free(neg);
     ori__free(x);
     return ok;
