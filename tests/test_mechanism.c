@@ -467,7 +467,7 @@ static void check_jacobian(const ori_mechanism *m, const double *th)
     double *rp = malloc(sizeof(double) * (size_t)m->rows), *rm = malloc(sizeof(double) * (size_t)m->rows);
     double *blocks = calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
     double *blocks2 = calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
-    ori_m3 *rot = malloc(sizeof(ori_m3) * (size_t)J);
+    double *rot = malloc(sizeof(double) * 2 * (size_t)J);
     double *t = malloc(sizeof(double) * (size_t)J);
     double r1 = ori__kin_eval(m, th, res, blocks, rot);
     double r2 = ori__kin_eval(m, th, res2, blocks2, NULL);

@@ -72,9 +72,9 @@ ori_v3 ori__kin_rotvec(ori_m3 r);
 // cols is not NULL, the Jacobian block of each loop column (loop_col_total blocks of 6 values:
 // 3 rotation rows for vertex loops, or 6 rows; accumulated over recurring joints). Returns the
 // residual max-norm of P − I (translations divided by the diagonal).
-// rot (optional, joint_count entries) is scratch for the joints' rotations: each is then
-// computed once instead of once per loop.
-double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, ori_m3 *rot);
+// half (optional, 2 × joint_count doubles) is scratch for the joints' half-angle cosines and
+// sines: each is then computed once instead of once per loop.
+double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, double *half);
 
 // Residual only (max-norm of P − I), joint angles.
 double ori__kin_residual(const ori_mechanism *m, const double *th);

@@ -617,92 +617,77 @@ static double m3_dev_identity(ori_m3 r)
     return d;
 }
 
-// Vertex loop (3 rows): P = R_1 R_2 ··· R_n with R_i = R(a_i, θ_i), accumulated in a plain
-// row-major 3 × 3 array (no struct copies: this is the inner loop of every corrector
-// iteration). Each joint's rotation is taken from rot (the joint's own axis ω; an entry with
-// a_i = −ω uses its transpose, R(−ω, θ) = R(ω, θ)ᵀ) or computed when rot is NULL. The
-// Jacobian column of crossing i is the spatial axis P_{i−1} a_i, accumulated into cols.
+// Vertex loop (3 rows): P = R_1 R_2 ··· R_n with R_i = R(a_i, θ_i), accumulated as a unit
+// quaternion (w, v): crossing i multiplies it by (cos(θ_i/2), sin(θ_i/2) a_i), half the work of
+// 3 × 3 products. The half-angle sines and cosines come from half (per joint, computed once
+// per evaluation) or are computed here when half is NULL. The Jacobian column of crossing i is
+// the spatial axis P_{i−1} a_i (the quaternion rotation v' = a + w t + v × t, t = 2 v × a),
+// accumulated into cols. The residual is log P = φ k from the quaternion (φ = 2 atan2(|v|, w),
+// w ≥ 0), and the returned max-norm of P − I is taken from P − I = 2w[v]× + 2[v]×², which has no
+// cancellation against the identity.
 static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *res, double *cols,
-                               const ori_m3 *rot)
+                               const double *half)
 {
-    double buf[2][9];
-    double *p = buf[0], *q = buf[1];
+    double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
     for (int i = 0; i < L->count; ++i) {
         const kin_entry *en = &m->entries[L->first + i];
-        ori_m3 rl;
-        const double *r;
-        bool tr = false;
-        if (rot) {
-            r = &rot[en->joint].m[0][0];
-            tr = en->sign < 0;
-        } else {
-            rl = ori_m3_rotation(en->axis, th[en->joint]);
-            r = &rl.m[0][0];
-        }
-        if (i == 0) {
-            // P_1 = R_1; the spatial axis of the first crossing is its own.
-            if (cols) {
-                double *c = cols + 6 * (L->col_first + en->col);
-                c[0] += en->axis.x;
-                c[1] += en->axis.y;
-                c[2] += en->axis.z;
-            }
-            if (tr) {
-                for (int row = 0; row < 3; ++row)
-                    for (int k = 0; k < 3; ++k) p[3 * row + k] = r[3 * k + row];
-            } else {
-                memcpy(p, r, sizeof buf[0]);
-            }
-            continue;
-        }
+        const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
         if (cols) {
-            const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
             double *c = cols + 6 * (L->col_first + en->col);
-            c[0] += p[0] * ax + p[1] * ay + p[2] * az;
-            c[1] += p[3] * ax + p[4] * ay + p[5] * az;
-            c[2] += p[6] * ax + p[7] * ay + p[8] * az;
-        }
-        // q = p · r, or p · rᵀ for a crossing against the joint's axis (element (i, k) of rᵀ is
-        // r[k][i]).
-        if (tr) {
-            for (int row = 0; row < 9; row += 3) {
-                const double p0 = p[row], p1 = p[row + 1], p2 = p[row + 2];
-                q[row + 0] = p0 * r[0] + p1 * r[1] + p2 * r[2];
-                q[row + 1] = p0 * r[3] + p1 * r[4] + p2 * r[5];
-                q[row + 2] = p0 * r[6] + p1 * r[7] + p2 * r[8];
+            if (i == 0) {
+                c[0] += ax;
+                c[1] += ay;
+                c[2] += az;
+            } else {
+                double tx = 2.0 * (y * az - z * ay), ty = 2.0 * (z * ax - x * az), tz = 2.0 * (x * ay - y * ax);
+                c[0] += ax + w * tx + (y * tz - z * ty);
+                c[1] += ay + w * ty + (z * tx - x * tz);
+                c[2] += az + w * tz + (x * ty - y * tx);
             }
+        }
+        double hc, hs;
+        if (half) {
+            hc = half[2 * en->joint];
+            hs = half[2 * en->joint + 1];
         } else {
-            for (int row = 0; row < 9; row += 3) {
-                const double p0 = p[row], p1 = p[row + 1], p2 = p[row + 2];
-                q[row + 0] = p0 * r[0] + p1 * r[3] + p2 * r[6];
-                q[row + 1] = p0 * r[1] + p1 * r[4] + p2 * r[7];
-                q[row + 2] = p0 * r[2] + p1 * r[5] + p2 * r[8];
-            }
+            double t = 0.5 * th[en->joint];
+            hc = cos(t);
+            hs = sin(t);
         }
-        double *t = p;
-        p = q;
-        q = t;
+        // (w, v)(hc, hs a) = (w hc − hs v·a, hc v + hs (w a + v × a))
+        double va = x * ax + y * ay + z * az;
+        double nx = hc * x + hs * (w * ax + (y * az - z * ay));
+        double ny = hc * y + hs * (w * ay + (z * ax - x * az));
+        double nz = hc * z + hs * (w * az + (x * ay - y * ax));
+        w = hc * w - hs * va;
+        x = nx;
+        y = ny;
+        z = nz;
     }
-    if (L->count == 0) {
-        static const double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-        memcpy(p, id, sizeof id);
+    if (w < 0.0) { // the same rotation, angle in [0, π]
+        w = -w;
+        x = -x;
+        y = -y;
+        z = -z;
     }
-    // Max-norm of P − I; a NaN anywhere makes it NaN.
-    double d[9] = {p[0] - 1.0, p[1], p[2], p[3], p[4] - 1.0, p[5], p[6], p[7], p[8] - 1.0};
+    double d[9] = {-2.0 * (y * y + z * z), 2.0 * (x * y - w * z),  2.0 * (x * z + w * y),
+                   2.0 * (x * y + w * z),  -2.0 * (x * x + z * z), 2.0 * (y * z - w * x),
+                   2.0 * (x * z - w * y),  2.0 * (y * z + w * x),  -2.0 * (x * x + y * y)};
     double dev = 0.0, sum = 0.0;
     for (int k = 0; k < 9; ++k) {
-        double x = fabs(d[k]);
-        dev = x > dev ? x : dev;
-        sum += x;
+        double a = fabs(d[k]);
+        dev = a > dev ? a : dev;
+        sum += a;
     }
-    if (isnan(sum)) dev = NAN;
+    if (isnan(sum) || isnan(w)) dev = NAN;
     if (res) {
-        ori_m3 P;
-        memcpy(&P.m[0][0], p, sizeof P.m);
-        ori_v3 rv = ori__kin_rotvec(P);
-        res[L->row0 + 0] = rv.x;
-        res[L->row0 + 1] = rv.y;
-        res[L->row0 + 2] = rv.z;
+        // |v| = sin(φ/2): φ/|v| = 2 (1 + |v|²/6 + 3|v|⁴/40 + …), the series exact in double
+        // precision below ORI_KIN_ROTVEC_SERIES_MAX.
+        double n = sqrt(x * x + y * y + z * z);
+        double f = n < ORI_KIN_ROTVEC_SERIES_MAX ? 2.0 * (1.0 + n * n / 6.0) : 2.0 * atan2(n, w) / n;
+        res[L->row0 + 0] = f * x;
+        res[L->row0 + 1] = f * y;
+        res[L->row0 + 2] = f * z;
     }
     return dev;
 }
@@ -746,15 +731,19 @@ static double eval_hole_loop(const ori_mechanism *m, const kin_loop *L, const do
     return dev;
 }
 
-double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, ori_m3 *rot)
+double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, double *half)
 {
     double worst = 0.0;
-    if (rot)
-        for (int j = 0; j < m->joint_count; ++j) rot[j] = ori_m3_rotation(m->joints[j].omega, th[j]);
+    if (half)
+        for (int j = 0; j < m->joint_count; ++j) {
+            double t = 0.5 * th[j];
+            half[2 * j] = cos(t);
+            half[2 * j + 1] = sin(t);
+        }
     if (cols) memset(cols, 0, sizeof(double) * 6 * (size_t)m->loop_col_total);
     for (int l = 0; l < m->loop_count; ++l) {
         const kin_loop *L = &m->loops[l];
-        double dev = L->rows == 3 ? eval_vertex_loop(m, L, th, res, cols, rot) : eval_hole_loop(m, L, th, res, cols);
+        double dev = L->rows == 3 ? eval_vertex_loop(m, L, th, res, cols, half) : eval_hole_loop(m, L, th, res, cols);
         if (dev > worst || isnan(dev)) worst = dev;
     }
     return isnan(worst) ? INFINITY : worst;

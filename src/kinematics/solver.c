@@ -23,7 +23,7 @@ struct kin_solver {
     double *res;    // rows
     double *blocks; // 6 × loop_col_total
     double *jd;     // drive column (rows)
-    ori_m3 *rot;    // per-joint rotation scratch of the evaluation
+    double *half;   // per-joint half-angle cosine and sine, scratch of the evaluation
     double *th_eval; // the state of the last evaluation
     bool eval_valid;
     double eval_r;
@@ -281,7 +281,7 @@ kin_solver *ori__kin_solver_create(const ori_mechanism *m, const int *col_of_joi
     s->res = ori__calloc((size_t)s->rows + 1, sizeof(double));
     s->blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
     s->jd = ori__calloc((size_t)s->rows + 1, sizeof(double));
-    s->rot = ori__alloc(sizeof(ori_m3) * (size_t)(m->joint_count + 1));
+    s->half = ori__alloc(sizeof(double) * 2 * (size_t)(m->joint_count + 1));
     s->th_eval = ori__calloc((size_t)m->joint_count + 1, sizeof(double));
     s->g = ori__alloc(sizeof(double) * ((size_t)ncols + 1));
     s->step = ori__alloc(sizeof(double) * ((size_t)ncols + 1));
@@ -311,7 +311,7 @@ void ori__kin_solver_destroy(kin_solver *s)
     ori__free(s->res);
     ori__free(s->blocks);
     ori__free(s->jd);
-    ori__free(s->rot);
+    ori__free(s->half);
     ori__free(s->th_eval);
     ori__free(s->a);
     ori__free(s->rhs);
@@ -346,7 +346,7 @@ static double residual_at(kin_solver *s, const double *th)
 {
     const ori_mechanism *m = s->m;
     if (s->eval_valid && memcmp(s->th_eval, th, sizeof(double) * (size_t)m->joint_count) == 0) return s->eval_r;
-    double r = ori__kin_eval(m, th, s->res, NULL, s->rot);
+    double r = ori__kin_eval(m, th, s->res, NULL, s->half);
     memcpy(s->th_eval, th, sizeof(double) * (size_t)m->joint_count);
     s->eval_valid = true;
     s->jac_valid = false;
@@ -361,7 +361,7 @@ static double evaluate(kin_solver *s, const double *th)
     const ori_mechanism *m = s->m;
     bool same = s->eval_valid && memcmp(s->th_eval, th, sizeof(double) * (size_t)m->joint_count) == 0;
     if (same && s->jac_valid) return s->eval_r;
-    double r = ori__kin_eval(m, th, s->res, s->blocks, s->rot);
+    double r = ori__kin_eval(m, th, s->res, s->blocks, s->half);
     memcpy(s->th_eval, th, sizeof(double) * (size_t)m->joint_count);
     s->eval_valid = true;
     s->eval_r = r;
