@@ -1,14 +1,18 @@
-// The corrector of the numeric continuation: Gauss–Newton on the stacked loop residuals with
-// the driven and locked creases eliminated (they are constants, not unknowns). Each iteration
-// solves J_F δ = −r in least squares:
+// The corrector of the numeric continuation: Newton on the stacked loop residuals with the
+// driven and locked creases eliminated (they are constants, not unknowns). Each iteration
+// solves J_F δ = −r:
+//   sweep   block forward substitution along the loops (build_sweep): each loop determines the
+//           creases no earlier loop did, from its own equations; one pass over the loops, no
+//           factorization. Used first for large patterns whenever the ordering exists;
 //   dense   LAPACK dgelsd (SVD, minimum norm: robust at rank-deficient states), small systems;
 //   sparse  CHOLMOD on the normal matrix JᵀJ, accumulated loop by loop (each loop couples only
-//           its own creases) into a fixed upper-triangular pattern analysed once (AMD).
+//           its own creases) into a fixed upper-triangular pattern analysed once (AMD); where
+//           the sweep does not exist or fails (a singular block, a step that does not help).
 // The sparse factor is reused by later iterations and steps (chord / simplified Newton) while
 // the residual contracts faster than ORI_KIN_CHORD_RATE per iteration, and renewed otherwise.
-// Tangents solve the same normal equations with the drive column as right-hand side; they use
-// a factor renewed at the current state when the last one is older, because the predictor's
-// accuracy rests on them.
+// Tangents solve the same system with the drive column as right-hand side: by the sweep when
+// every loop agrees with its solution, else by least squares with a factor renewed at the
+// current state, because the predictor's accuracy rests on them.
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
