@@ -144,6 +144,8 @@ typedef struct kin_solver kin_solver;
 // After the sweep corrector failed (a singular block, or a step that did not reduce the
 // residual), the sparse corrector is used for this many calls before the sweep is tried again.
 #define ORI_KIN_SWEEP_RETRY 8
+// A sweep iteration must multiply the residual by at most this, else least squares takes over.
+#define ORI_KIN_SWEEP_RATE 0.5
 
 typedef struct kin_solver_opts {
     ori_linear linear;

@@ -619,8 +619,10 @@ static bool sweep_solve(kin_solver *s, const double *b, double *x)
 }
 
 // Corrector by the sweep: θ ← θ − M r(θ) until every loop closes to ORI_TOL_NEWTON. False,
-// with th at the best state met, when a step does not reduce the residual, a block is
-// singular, or the budget runs out.
+// with th at the best state met, when a step does not reduce the residual at least by
+// ORI_KIN_SWEEP_RATE (Newton near the solution does far better: a round-off floor above
+// ORI_TOL_NEWTON, or a linear crawl, goes to least squares), a block is singular, or the budget
+// runs out.
 static bool sweep_correct(kin_solver *s, double *th, int max_iter, int *iterations, double *residual)
 {
     const ori_mechanism *m = s->m;
@@ -635,7 +637,7 @@ static bool sweep_correct(kin_solver *s, double *th, int max_iter, int *iteratio
             *residual = r;
             break;
         }
-        if (!(r < prev) || it >= max_iter) break;
+        if (!(r <= ORI_KIN_SWEEP_RATE * prev) || it >= max_iter) break;
         if (r < best) {
             best = r;
             memcpy(s->best, th, sizeof(double) * (size_t)m->joint_count);
