@@ -9,43 +9,23 @@
 #include <time.h>
 
 #include "bench.h"
+#include <orikin/generate.h>
 #include <orikin/kinematics.h>
 
-// Vertex (i, j) at (i·w + (j odd ? d : 0), j·h): straight creases along x, zigzag creases along
-// y. Zigzag lines alternate M/V with i; straight creases alternate along their line.
-static ori_pattern *miura(int rows, int cols, double w, double d, double h)
+// The Miura-ori from the library's generator: straight edge 1, vertex rows 1 apart and shifted
+// by 0.5 on odd rows (zig-zag edge √1.25, cell angle atan2(1, 0.5) ≈ 63.4°). Vertex (i, j) is
+// j(C+1) + i; zig-zag column i is M for odd i.
+static ori_pattern *miura(int rows, int cols)
 {
-    ori_pattern_def pd = ori_default_pattern_def();
-    ori_pattern *p = ori_pattern_create(&pd);
-    for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i <= cols; ++i) ori_pattern_add_vertex(p, ori_v3_make(i * w + ((j & 1) ? d : 0.0), j * h, 0.0));
-#define VID(i, j) ((j) * (cols + 1) + (i))
-    for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i < cols; ++i)
-            ori_pattern_add_edge(p, VID(i, j), VID(i + 1, j),
-                                 (j == 0 || j == rows) ? ORI_ASSIGN_BOUNDARY
-                                 : ((i + j) & 1)       ? ORI_ASSIGN_VALLEY
-                                                       : ORI_ASSIGN_MOUNTAIN,
-                                 0.0);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i <= cols; ++i)
-            ori_pattern_add_edge(p, VID(i, j), VID(i, j + 1),
-                                 (i == 0 || i == cols) ? ORI_ASSIGN_BOUNDARY
-                                 : (i & 1)             ? ORI_ASSIGN_MOUNTAIN
-                                                       : ORI_ASSIGN_VALLEY,
-                                 0.0);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < cols; ++i) {
-            int f[4] = {VID(i, j), VID(i + 1, j), VID(i + 1, j + 1), VID(i, j + 1)};
-            ori_pattern_add_face(p, f, 4);
-        }
+    ori_generate_def g = ori_default_generate_def(ORI_TESS_MIURA);
+    g.rows = rows;
+    g.cols = cols;
+    g.width = 1.0;
+    g.height = sqrt(1.25);
+    g.angle_rad = atan2(1.0, 0.5);
+    ori_pattern *p = NULL;
     ori_error err;
-    if (ori_pattern_build(p, NULL, &err) != ORI_OK) {
-        ori_pattern_destroy(p);
-        return NULL;
-    }
-    return p;
-#undef VID
+    return ori_generate(&g, &p, NULL, &err) == ORI_OK ? p : NULL;
 }
 
 // CPU time of this process (seconds): steadier than wall time on a shared machine.
@@ -58,7 +38,7 @@ static double cpu_now(void)
 
 static int one(int n)
 {
-    ori_pattern *p = miura(n, n, 1.0, 0.5, 1.0);
+    ori_pattern *p = miura(n, n);
     if (!p) return 1;
     ori_mechanism_def md = ori_default_mechanism_def();
     md.pattern = p;
@@ -91,10 +71,10 @@ static int one(int n)
 
     ori_motion_stats st = ori_motion_stats_of(mo);
     printf("   %3dx%-3d %5d creases: flat->5deg %.3f s; 5->175deg %.3f s wall (%.3f s CPU), %d frames, %d steps "
-           "(%d rejected), %d Newton its, %d factorizations, max residual %.1e, dof %d, %s; heap peak %.1f MB, "
+           "(%d rejected), %d Newton its (%d by the sweep), %d factorizations, max residual %.1e, dof %d, %s; heap peak %.1f MB, "
            "RSS peak %.1f MB\n",
            n, n, ori_mechanism_joint_count(m), t1 - t0, t3 - t2, c3 - c2, ori_motion_frame_count(mo), st.steps,
-           st.rejected_steps, st.newton_iterations, st.factorizations, st.max_residual, ori_motion_dof(mo),
+           st.rejected_steps, st.newton_iterations, st.sweep_iterations, st.factorizations, st.max_residual, ori_motion_dof(mo),
            ori_motion_verdict_name(ori_motion_verdict_of(mo)), (double)(ori_alloc_peak_bytes() - base) / 1e6,
            (double)bench_peak_rss() / 1e6);
     fflush(stdout);

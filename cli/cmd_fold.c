@@ -20,7 +20,7 @@ static json_t *edges_json(const int *e, int n)
 
 static const char *solver_name(ori_motion_stats st)
 {
-    return st.analytic ? "analytic" : st.sparse ? "numeric-sparse" : "numeric-dense";
+    return st.analytic ? "analytic" : st.sweep ? "numeric-sweep" : st.sparse ? "numeric-sparse" : "numeric-dense";
 }
 
 static json_t *chain_json(const int *edges, const ori_v3 *q, const ori_v3 *w, int n)
@@ -99,9 +99,9 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     }
     json_object_set_new(out, "frames", frames);
     json_object_set_new(out, "stats",
-                        json_pack("{s:i,s:i,s:i,s:i,s:f}", "steps", st.steps, "rejected_steps", st.rejected_steps,
-                                  "newton_iterations", st.newton_iterations, "factorizations", st.factorizations,
-                                  "max_residual", st.max_residual));
+                        json_pack("{s:i,s:i,s:i,s:i,s:i,s:f}", "steps", st.steps, "rejected_steps", st.rejected_steps,
+                                  "newton_iterations", st.newton_iterations, "sweep_iterations", st.sweep_iterations,
+                                  "factorizations", st.factorizations, "max_residual", st.max_residual));
     cli_print_json(out);
 }
 
@@ -115,7 +115,10 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
         printf(", locked");
         for (int i = 0; i < a->lock_count; ++i) printf("%s%d", i ? "," : " ", a->locks[i]);
     }
-    printf("\nsolver: %s\n", st.analytic ? "closed-form spherical 4R" : st.sparse ? "continuation, sparse (CHOLMOD)" : "continuation, dense (LAPACK)");
+    printf("\nsolver: %s\n", st.analytic ? "closed-form spherical 4R"
+                              : st.sweep ? "continuation, sweep (block substitution along the loops; CHOLMOD fallback)"
+                              : st.sparse ? "continuation, sparse (CHOLMOD)"
+                                          : "continuation, dense (LAPACK)");
     ori_vertex_split sp;
     if (ori_motion_split(mo, &sp)) {
         printf("vertex %d: Frame A", sp.vertex);
@@ -240,7 +243,7 @@ const cli_command cli_cmd_fold = {
     "  --lock E1,...   creases held at their current angle\n"
     "  --frame N       start from the fold angles (and 3D pose) of frame N; default 0\n"
     "  --solver S      auto (default), analytic (single vertex only) or numeric\n"
-    "  --linear L      numeric solver's linear algebra: auto (default), dense or sparse\n"
+    "  --linear L      numeric solver's linear algebra: auto (default), dense, sparse or sweep\n"
     "  --json          print {valid, verdict, reason, rigidly_foldable, dof, grubler, solver,\n"
     "                  frame_a, frame_b, surrounding, split, offending_edges, frames:\n"
     "                  [{drive_deg, fold_angles_deg, residual, other_branch_deg, end_effector}],\n"

@@ -149,7 +149,8 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
             if (strcmp(v, "auto") == 0) a->linear = ORI_LINEAR_AUTO;
             else if (strcmp(v, "dense") == 0) a->linear = ORI_LINEAR_DENSE;
             else if (strcmp(v, "sparse") == 0) a->linear = ORI_LINEAR_SPARSE;
-            else return cli_usage(cmd, "--linear is auto, dense or sparse, got '%s'", v);
+            else if (strcmp(v, "sweep") == 0) a->linear = ORI_LINEAR_SWEEP;
+            else return cli_usage(cmd, "--linear is auto, dense, sparse or sweep, got '%s'", v);
         } else if (strcmp(o, "--degree") == 0) {
             if (!cli_parse_int(v, &a->degree)) return cli_usage(cmd, "--degree needs an integer, got '%s'", v);
         } else if (strcmp(o, "--refine") == 0) {

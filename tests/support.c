@@ -228,3 +228,17 @@ ori_mechanism *test_mechanism_of(const ori_pattern *p)
     cr_assert_eq(ori_mechanism_create(&md, &m, &err), ORI_OK, "%s", err.message);
     return m;
 }
+
+ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad, ori_edge_class **classes)
+{
+    ori_generate_def g = ori_default_generate_def(ORI_TESS_MIURA);
+    g.rows = rows;
+    g.cols = cols;
+    g.width = a;
+    g.height = b;
+    g.angle_rad = gamma_rad;
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_generate(&g, &p, classes, &err), ORI_OK, "%s", err.message);
+    return p;
+}

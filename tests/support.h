@@ -50,3 +50,10 @@ ori_mechanism *test_mechanism_of(const ori_pattern *p);
 // k equal sectors smaller than both neighbours has |M − V| = (k + 1) mod 2 over its k + 1
 // creases). Returns true when all hold; otherwise writes the first failure into why.
 bool test_vertex_flat_foldable(const ori_pattern *p, int vertex, char *why, size_t why_size);
+
+// R × C Miura-ori from the library's generator (ori_generate, ORI_TESS_MIURA; docs/generators.md):
+// straight edge a (along x), zig-zag edge b, acute cell angle gamma_rad between them. Vertex (i, j)
+// has index j(C+1) + i at (i·a + [j odd]·b cos γ, j·b sin γ); zig-zag column i is M for odd i.
+// classes (may be NULL) receives one ori_edge_class per edge (free with ori_buffer_free).
+// Fails the test on error.
+ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad, ori_edge_class **classes);

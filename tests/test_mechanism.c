@@ -3,6 +3,7 @@
 // Jacobian DOF (dense and sparse), pose from coordinates.
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
 #include "kinematics/kinematics_internal.h"
 #include "support.h"
@@ -368,44 +369,13 @@ Test(mechanism, dof_rejects_angles_that_do_not_close)
     ori_pattern_destroy(p);
 }
 
-// Miura-ori R×C, vertex (i, j) at (i·w + (j odd ? d : 0), j·h).
-static ori_pattern *miura(int rows, int cols, double w, double d, double h)
-{
-    ori_pattern_def pd = ori_default_pattern_def();
-    ori_pattern *p = ori_pattern_create(&pd);
-    for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i <= cols; ++i) ori_pattern_add_vertex(p, ori_v3_make(i * w + ((j & 1) ? d : 0.0), j * h, 0.0));
-#define VID(i, j) ((j) * (cols + 1) + (i))
-    for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i < cols; ++i)
-            ori_pattern_add_edge(p, VID(i, j), VID(i + 1, j),
-                                 (j == 0 || j == rows) ? ORI_ASSIGN_BOUNDARY
-                                 : ((i + j) & 1)       ? ORI_ASSIGN_VALLEY
-                                                       : ORI_ASSIGN_MOUNTAIN,
-                                 0.0);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i <= cols; ++i)
-            ori_pattern_add_edge(p, VID(i, j), VID(i, j + 1),
-                                 (i == 0 || i == cols) ? ORI_ASSIGN_BOUNDARY
-                                 : (i & 1)             ? ORI_ASSIGN_MOUNTAIN
-                                                       : ORI_ASSIGN_VALLEY,
-                                 0.0);
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < cols; ++i) {
-            int f[4] = {VID(i, j), VID(i + 1, j), VID(i + 1, j + 1), VID(i, j + 1)};
-            ori_pattern_add_face(p, f, 4);
-        }
-#undef VID
-    ori_error err;
-    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK);
-    return p;
-}
-
 Test(mechanism, sparse_dof_agrees_with_dense_svd)
 {
     // A folded 6×6 Miura state from the numeric solver, then the sparse nullity (forced by a
     // direct call) against the dense SVD.
-    ori_pattern *p = miura(6, 6, 1.0, 0.4, 1.0);
+    // Generator parameters (test_miura): straight edge 1, vertex rows 1 apart shifted by 0.4 on
+    // odd rows: zig-zag edge √(0.4² + 1), cell angle atan2(1, 0.4).
+    ori_pattern *p = test_miura(6, 6, 1.0, sqrt(0.4 * 0.4 + 1.0), atan2(1.0, 0.4), NULL);
     ori_mechanism *m = test_mechanism_of(p);
     int drive = ori_pattern_find_edge(p, 3 * 7 + 3, 4 * 7 + 3);
     double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
@@ -482,5 +452,82 @@ Test(mechanism, disconnected_sheet_is_rejected_naming_a_face)
     cr_assert_eq(ori_mechanism_create(&md, &m, &err), ORI_ERR_TOPOLOGY);
     cr_assert_eq(err.element, 1);
     cr_assert(strstr(err.message, "not connected"));
+    ori_pattern_destroy(p);
+}
+
+// --- loop evaluation --------------------------------------------------------------------------
+
+// At a closing state the Jacobian columns are the derivatives of the residual (rotation vector
+// of P, translation / diagonal): central differences agree to O(h²). The rotation cache of the
+// solver gives the same numbers as rotations computed per crossing.
+static void check_jacobian(const ori_mechanism *m, const double *th)
+{
+    int J = m->joint_count;
+    double *res = malloc(sizeof(double) * (size_t)m->rows), *res2 = malloc(sizeof(double) * (size_t)m->rows);
+    double *rp = malloc(sizeof(double) * (size_t)m->rows), *rm = malloc(sizeof(double) * (size_t)m->rows);
+    double *blocks = calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
+    double *blocks2 = calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
+    double *rot = malloc(sizeof(double) * 2 * (size_t)J);
+    double *t = malloc(sizeof(double) * (size_t)J);
+    double r1 = ori__kin_eval(m, th, res, blocks, rot);
+    double r2 = ori__kin_eval(m, th, res2, blocks2, NULL);
+    cr_assert_leq(r1, ORI_TOL_RESIDUAL);
+    cr_assert_float_eq(r1, r2, 1e-15);
+    for (int k = 0; k < m->rows; ++k) cr_assert_float_eq(res[k], res2[k], 1e-15);
+    for (int k = 0; k < 6 * m->loop_col_total; ++k) cr_assert_float_eq(blocks[k], blocks2[k], 1e-15);
+    const double h = 1e-6;
+    for (int j = 0; j < J; ++j) {
+        memcpy(t, th, sizeof(double) * (size_t)J);
+        t[j] = th[j] + h;
+        ori__kin_eval(m, t, rp, NULL, rot);
+        t[j] = th[j] - h;
+        ori__kin_eval(m, t, rm, NULL, rot);
+        for (int l = 0; l < m->loop_count; ++l) {
+            const kin_loop *L = &m->loops[l];
+            for (int r = 0; r < L->rows; ++r) {
+                double want = 0.0;
+                for (int c = 0; c < L->col_count; ++c)
+                    if (m->loop_cols[L->col_first + c] == j) want = blocks[6 * (L->col_first + c) + r];
+                double fd = (rp[L->row0 + r] - rm[L->row0 + r]) / (2 * h);
+                cr_assert_float_eq(fd, want, 1e-8, "joint %d loop %d row %d", j, l, r);
+            }
+        }
+    }
+    free(res);
+    free(res2);
+    free(rp);
+    free(rm);
+    free(blocks);
+    free(blocks2);
+    free(rot);
+    free(t);
+}
+
+Test(mechanism, loop_jacobian_is_the_derivative_of_the_residual)
+{
+    // A folded Miura-ori (vertex loops), and the flat ring around a hole (a 6-row loop).
+    ori_pattern *p = test_miura(3, 4, 1.0, 1.1, 1.2, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    int drive = ori_pattern_find_edge(p, 1 * 5 + 2, 2 * 5 + 2);
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = drive;
+    d.to_rad = (ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0) * 1.2;
+    d.step_rad = 1.2;
+    ori_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID);
+    double *th = malloc(sizeof(double) * (size_t)m->joint_count);
+    ori__kin_edges_to_joints(m, ori_motion_frame_angles(mo, ori_motion_frame_count(mo) - 1), th);
+    check_jacobian(m, th);
+    free(th);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    p = pinwheel_frame();
+    m = test_mechanism_of(p);
+    double flat[4] = {0};
+    check_jacobian(m, flat);
+    ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }

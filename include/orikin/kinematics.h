@@ -204,9 +204,10 @@ typedef enum ori_solver {
 
 /// Linear algebra of the numeric solver.
 typedef enum ori_linear {
-    ORI_LINEAR_AUTO = 0, ///< dense below ORI_MOTION_DENSE_MAX_UNKNOWNS free creases, else sparse
+    ORI_LINEAR_AUTO = 0, ///< dense up to ORI_MOTION_DENSE_MAX_UNKNOWNS free creases, else sweep
     ORI_LINEAR_DENSE,    ///< LAPACK SVD least squares
-    ORI_LINEAR_SPARSE,   ///< CHOLMOD Cholesky of JᵀJ (+λI)
+    ORI_LINEAR_SPARSE,   ///< CHOLMOD Cholesky of JᵀJ (+λI) only
+    ORI_LINEAR_SWEEP,    ///< block substitution loop by loop (docs/kinematics.md §6.1), CHOLMOD where it fails
 } ori_linear;
 
 /// The numeric solver switches to sparse linear algebra above this many free creases.
@@ -273,11 +274,13 @@ typedef struct ori_vertex_split {
 /// Work done by the solver.
 typedef struct ori_motion_stats {
     bool analytic;            ///< closed-form single-vertex solver used
-    bool sparse;              ///< CHOLMOD (true) or dense LAPACK (false) for the numeric solver
+    bool sparse;              ///< sparse linear algebra (sweep and/or CHOLMOD) or dense LAPACK for the numeric solver
+    bool sweep;               ///< the sweep (block substitution along the loops) was available
     int steps;                ///< accepted continuation steps
     int rejected_steps;       ///< steps halved after a failed correction
     int newton_iterations;    ///< corrector iterations in total
     int factorizations;       ///< sparse numeric factorizations
+    int sweep_iterations;     ///< corrector iterations done by the sweep (the rest by factorizations)
     double max_residual;      ///< largest residual over the output frames
 } ori_motion_stats;
 

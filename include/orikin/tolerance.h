@@ -126,7 +126,13 @@
 #define ORI_KIN_GRID_MERGE 1e-3
 
 /// sin φ below which the two-term series of φ/sin φ is exact in double precision (the next term,
-/// 3 sin⁴φ/40, is below 1e-17).
+/// 3 sin⁴φ/40, is below 1e-17); likewise for φ/sin(φ/2) = 2(1 + sin²(φ/2)/6 + …) of a loop's
+/// quaternion.
 #define ORI_KIN_ROTVEC_SERIES_MAX 1e-4
+
+/// Sweep corrector: a loop's block of undetermined columns counts as singular when a diagonal
+/// entry of its QR factor is below this × its largest column norm (unitless; the columns are
+/// unit axes for vertex loops). The sparse least-squares corrector then takes over.
+#define ORI_KIN_SWEEP_PIVOT_REL 1e-6
 
 #endif

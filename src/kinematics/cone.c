@@ -631,6 +631,30 @@ static int score_of(const cone_sys *c, const double *x, int *violations)
     return bad * SCORE_K - good;
 }
 
+// A 3 × k matrix (column-major) whose rank is 3 for the SVD test with ORI_TOL_RANK_REL, proved
+// without the SVD: for any three columns B, σ_3(A) ≥ σ_3(B) (adding columns adds to AAᵀ) and
+// σ_3(B) = |det B| / (σ_1(B) σ_2(B)) ≥ 2|det B| / ‖B‖_F², while σ_1(A) ≤ ‖A‖_F. A margin of 2
+// covers the rounding of these few products. False means "not proved" (the SVD decides).
+static bool surely_full_rank3(const double *a, int k)
+{
+    if (k < 3 || k > 8) return false;
+    double fa = 0.0;
+    for (int i = 0; i < 3 * k; ++i) fa += a[i] * a[i];
+    fa = sqrt(fa);
+    for (int p = 0; p < k; ++p)
+        for (int q = p + 1; q < k; ++q)
+            for (int r = q + 1; r < k; ++r) {
+                const double *x = a + 3 * p, *y = a + 3 * q, *z = a + 3 * r;
+                double det = x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0]) +
+                             x[2] * (y[0] * z[1] - y[1] * z[0]);
+                double fb = 0.0;
+                for (int i = 0; i < 3; ++i) fb += x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+                // 2|det B|/‖B‖_F² > 2 · ORI_TOL_RANK_REL · ‖A‖_F
+                if (fabs(det) > ORI_TOL_RANK_REL * fa * fb) return true;
+            }
+    return false;
+}
+
 bool ori__kin_loops_deficient(const ori_mechanism *m, const double *th, const int *col_of_joint, int drive_joint)
 {
     double *blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
@@ -655,6 +679,10 @@ bool ori__kin_loops_deficient(const ori_mechanism *m, const double *th, const in
             if (j != drive_joint && col_of_joint[j] < 0) continue;
             for (int r = 0; r < L->rows; ++r) a[r + L->rows * c] = blocks[6 * (L->col_first + q) + r];
             c++;
+        }
+        if (L->rows == 3 && surely_full_rank3(a, k)) {
+            ori__free(a);
+            continue;
         }
         double smax, scut;
         int rank = ori__dense_rank(a, L->rows, k, ORI_TOL_RANK_REL, &smax, &scut);

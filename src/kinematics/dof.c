@@ -2,6 +2,7 @@
 // overconstrained mechanisms, where the Grübler–Kutzbach count fails), dense by SVD or sparse
 // by inverse subspace iteration with a CHOLMOD factor; and, at singular states such as the
 // flat sheet, the nullity at a nearby regular state on the motion.
+#include <float.h>
 #include <lapacke.h>
 #include <math.h>
 
@@ -54,6 +55,50 @@ static void orthonormalize(double *x, int n, int b)
         if (nr > 0.0)
             for (int k = 0; k < n; ++k) xi[k] /= nr;
     }
+}
+
+// Eigenvalues of a small symmetric matrix (column-major b × b, destroyed) by cyclic Jacobi
+// rotations (Golub & Van Loan 8.5), to full relative accuracy of the matrix' norm. For the
+// Rayleigh–Ritz blocks of the sparse nullity: LAPACK's dsyev goes through OpenBLAS' dsymv,
+// which wakes its worker threads even for a 4 × 4 matrix, and they then spin on the CPU for a
+// while. False when the sweeps do not converge (never seen; dsyev would be the fallback).
+static bool jacobi_eigenvalues(double *a, int b, double *w)
+{
+#define A(i, j) a[(i) + (size_t)b * (j)]
+    bool converged = false;
+    for (int sweep = 0; sweep < 64 && !converged; ++sweep) {
+        double off = 0.0, diag = 0.0;
+        for (int j = 0; j < b; ++j) {
+            diag += A(j, j) * A(j, j);
+            for (int i = 0; i < j; ++i) off += 2.0 * A(i, j) * A(i, j);
+        }
+        if (off <= DBL_EPSILON * DBL_EPSILON * (diag + off)) {
+            converged = true;
+            break;
+        }
+        for (int p = 0; p < b; ++p)
+            for (int q = p + 1; q < b; ++q) {
+                double apq = A(p, q);
+                if (apq == 0.0) continue;
+                // Rotation zeroing A(p, q): t = tan φ, the smaller root of t² + 2τt − 1 = 0.
+                double tau = (A(q, q) - A(p, p)) / (2.0 * apq);
+                double t = (tau >= 0.0 ? 1.0 : -1.0) / (fabs(tau) + sqrt(1.0 + tau * tau));
+                double c = 1.0 / sqrt(1.0 + t * t), s = t * c;
+                for (int k = 0; k < b; ++k) { // columns p, q
+                    double akp = A(k, p), akq = A(k, q);
+                    A(k, p) = c * akp - s * akq;
+                    A(k, q) = s * akp + c * akq;
+                }
+                for (int k = 0; k < b; ++k) { // rows p, q
+                    double apk = A(p, k), aqk = A(q, k);
+                    A(p, k) = c * apk - s * aqk;
+                    A(q, k) = s * apk + c * aqk;
+                }
+            }
+    }
+    for (int i = 0; i < b; ++i) w[i] = A(i, i);
+#undef A
+    return converged;
 }
 
 // Sparse nullity: σ_max by power iteration on JᵀJ; then subspace iteration with
@@ -118,7 +163,8 @@ static int sparse_nullity(kin_sls *sls, int n, int m, double *sigma_max, double 
                 G[i + (size_t)b * j] = d;
             }
         double *w = ori__alloc(sizeof(double) * (size_t)b);
-        lapack_int info = LAPACKE_dsyev(LAPACK_COL_MAJOR, 'N', 'U', b, G, b, w);
+        lapack_int info = b <= ORI_KIN_JACOBI_MAX ? (jacobi_eigenvalues(G, b, w) ? 0 : 1)
+                                                  : LAPACKE_dsyev(LAPACK_COL_MAJOR, 'N', 'U', b, G, b, w);
         null_count = 0;
         double cut = 0.0;
         for (int i = 0; i < b && info == 0; ++i) {

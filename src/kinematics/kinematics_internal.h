@@ -72,9 +72,9 @@ ori_v3 ori__kin_rotvec(ori_m3 r);
 // cols is not NULL, the Jacobian block of each loop column (loop_col_total blocks of 6 values:
 // 3 rotation rows for vertex loops, or 6 rows; accumulated over recurring joints). Returns the
 // residual max-norm of P − I (translations divided by the diagonal).
-// rot (optional, joint_count entries) is scratch for the joints' rotations: each is then
-// computed once instead of once per loop.
-double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, ori_m3 *rot);
+// half (optional, 2 × joint_count doubles) is scratch for the joints' half-angle cosines and
+// sines: each is then computed once instead of once per loop.
+double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, double *half);
 
 // Residual only (max-norm of P − I), joint angles.
 double ori__kin_residual(const ori_mechanism *m, const double *th);
@@ -141,6 +141,11 @@ typedef struct kin_solver kin_solver;
 // When an old factor failed, the corrector factors afresh at each call, retrying an old one
 // every this many calls.
 #define ORI_KIN_STALE_RETRY 8
+// After the sweep corrector failed (a singular block, or a step that did not reduce the
+// residual), the sparse corrector is used for this many calls before the sweep is tried again.
+#define ORI_KIN_SWEEP_RETRY 8
+// A sweep iteration must multiply the residual by at most this, else least squares takes over.
+#define ORI_KIN_SWEEP_RATE 0.5
 
 typedef struct kin_solver_opts {
     ori_linear linear;
@@ -163,6 +168,9 @@ double ori__kin_tangent_defect(kin_solver *s, const double *th, const double *t)
 // Statistics of the solver.
 int ori__kin_solver_factorizations(const kin_solver *s);
 bool ori__kin_solver_sparse(const kin_solver *s);
+// The sweep ordering exists (and is used first by the corrector and the tangent).
+bool ori__kin_solver_sweep(const kin_solver *s);
+int ori__kin_solver_sweep_iterations(const kin_solver *s);
 // The loop-closure Jacobian restricted to the columns col_of_joint ≥ 0, at th, as a sparse
 // least-squares object in Jᵀ form (for products J x, Jᵀ y and factorizations of JᵀJ + λI).
 kin_sls *ori__kin_jacobian_sls(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th);
@@ -175,6 +183,13 @@ int ori__kin_solver_nullity(kin_solver *s, const double *th);
 // when no motion is found (the state is rigid).
 bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                             double *th_out);
+
+// Output frames reserved up front at most (more grow the arrays by doubling).
+#define ORI_KIN_RESERVE_FRAMES 4096
+
+// Rayleigh–Ritz blocks of the sparse nullity up to this size use Jacobi rotations, larger ones
+// LAPACK's dsyev.
+#define ORI_KIN_JACOBI_MAX 32
 
 // Successive probe steps of the generic DOF (each from the state the previous one reached).
 #define ORI_KIN_PROBE_ROUNDS 4

@@ -617,67 +617,133 @@ static double m3_dev_identity(ori_m3 r)
     return d;
 }
 
-double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, ori_m3 *rot)
+// Vertex loop (3 rows): P = R_1 R_2 ··· R_n with R_i = R(a_i, θ_i), accumulated as a unit
+// quaternion (w, v): crossing i multiplies it by (cos(θ_i/2), sin(θ_i/2) a_i), half the work of
+// 3 × 3 products. The half-angle sines and cosines come from half (per joint, computed once
+// per evaluation) or are computed here when half is NULL. The Jacobian column of crossing i is
+// the spatial axis P_{i−1} a_i (the quaternion rotation v' = a + w t + v × t, t = 2 v × a),
+// accumulated into cols. The residual is log P = φ k from the quaternion (φ = 2 atan2(|v|, w),
+// w ≥ 0), and the returned max-norm of P − I is taken from P − I = 2w[v]× + 2[v]×², which has no
+// cancellation against the identity.
+static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *res, double *cols,
+                               const double *half)
+{
+    double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
+    for (int i = 0; i < L->count; ++i) {
+        const kin_entry *en = &m->entries[L->first + i];
+        const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
+        if (cols) {
+            double *c = cols + 6 * (L->col_first + en->col);
+            if (i == 0) {
+                c[0] += ax;
+                c[1] += ay;
+                c[2] += az;
+            } else {
+                double tx = 2.0 * (y * az - z * ay), ty = 2.0 * (z * ax - x * az), tz = 2.0 * (x * ay - y * ax);
+                c[0] += ax + w * tx + (y * tz - z * ty);
+                c[1] += ay + w * ty + (z * tx - x * tz);
+                c[2] += az + w * tz + (x * ty - y * tx);
+            }
+        }
+        double hc, hs;
+        if (half) {
+            hc = half[2 * en->joint];
+            hs = half[2 * en->joint + 1];
+        } else {
+            double t = 0.5 * th[en->joint];
+            hc = cos(t);
+            hs = sin(t);
+        }
+        // (w, v)(hc, hs a) = (w hc − hs v·a, hc v + hs (w a + v × a))
+        double va = x * ax + y * ay + z * az;
+        double nx = hc * x + hs * (w * ax + (y * az - z * ay));
+        double ny = hc * y + hs * (w * ay + (z * ax - x * az));
+        double nz = hc * z + hs * (w * az + (x * ay - y * ax));
+        w = hc * w - hs * va;
+        x = nx;
+        y = ny;
+        z = nz;
+    }
+    if (w < 0.0) { // the same rotation, angle in [0, π]
+        w = -w;
+        x = -x;
+        y = -y;
+        z = -z;
+    }
+    double d[9] = {-2.0 * (y * y + z * z), 2.0 * (x * y - w * z),  2.0 * (x * z + w * y),
+                   2.0 * (x * y + w * z),  -2.0 * (x * x + z * z), 2.0 * (y * z - w * x),
+                   2.0 * (x * z - w * y),  2.0 * (y * z + w * x),  -2.0 * (x * x + y * y)};
+    double dev = 0.0, sum = 0.0;
+    for (int k = 0; k < 9; ++k) {
+        double a = fabs(d[k]);
+        dev = a > dev ? a : dev;
+        sum += a;
+    }
+    if (isnan(sum) || isnan(w)) dev = NAN;
+    if (res) {
+        // |v| = sin(φ/2): φ/|v| = 2 (1 + |v|²/6 + 3|v|⁴/40 + …), the series exact in double
+        // precision below ORI_KIN_ROTVEC_SERIES_MAX.
+        double n = sqrt(x * x + y * y + z * z);
+        double f = n < ORI_KIN_ROTVEC_SERIES_MAX ? 2.0 * (1.0 + n * n / 6.0) : 2.0 * atan2(n, w) / n;
+        res[L->row0 + 0] = f * x;
+        res[L->row0 + 1] = f * y;
+        res[L->row0 + 2] = f * z;
+    }
+    return dev;
+}
+
+// Hole loop (6 rows): rigid motions, translation rows divided by the diagonal.
+static double eval_hole_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *res, double *cols)
+{
+    double inv_diag = 1.0 / m->diagonal;
+    ori_rigid P = ori_rigid_identity();
+    for (int i = 0; i < L->count; ++i) {
+        const kin_entry *en = &m->entries[L->first + i];
+        if (cols) {
+            // Spatial twist of this crossing at the current state: Ad(P) ξ.
+            ori_v3 w = ori_m3_apply(P.r, en->axis);
+            double *c = cols + 6 * (L->col_first + en->col);
+            ori_v3 q = ori_rigid_apply(P, en->point);
+            ori_v3 v = ori_v3_scale(ori_v3_cross(q, w), inv_diag); // −ω×q = q×ω
+            c[0] += v.x;
+            c[1] += v.y;
+            c[2] += v.z;
+            c[3] += w.x;
+            c[4] += w.y;
+            c[5] += w.z;
+        }
+        ori_twist xi = ori_twist_from_axis(en->point, en->axis);
+        P = ori_rigid_compose(P, ori_twist_exp(xi, th[en->joint]));
+    }
+    double dev = m3_dev_identity(P.r);
+    ori_v3 t = ori_v3_scale(P.t, inv_diag);
+    double dt = fmax(fabs(t.x), fmax(fabs(t.y), fabs(t.z)));
+    if (dt > dev || isnan(dt)) dev = dt;
+    if (res) {
+        ori_v3 rv = ori__kin_rotvec(P.r);
+        res[L->row0 + 0] = t.x;
+        res[L->row0 + 1] = t.y;
+        res[L->row0 + 2] = t.z;
+        res[L->row0 + 3] = rv.x;
+        res[L->row0 + 4] = rv.y;
+        res[L->row0 + 5] = rv.z;
+    }
+    return dev;
+}
+
+double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, double *cols, double *half)
 {
     double worst = 0.0;
-    double inv_diag = 1.0 / m->diagonal;
-    if (rot)
-        for (int j = 0; j < m->joint_count; ++j) rot[j] = ori_m3_rotation(m->joints[j].omega, th[j]);
-    if (cols)
-        for (int k = 0; k < 6 * m->loop_col_total; ++k) cols[k] = 0.0;
+    if (half)
+        for (int j = 0; j < m->joint_count; ++j) {
+            double t = 0.5 * th[j];
+            half[2 * j] = cos(t);
+            half[2 * j + 1] = sin(t);
+        }
+    if (cols) memset(cols, 0, sizeof(double) * 6 * (size_t)m->loop_col_total);
     for (int l = 0; l < m->loop_count; ++l) {
         const kin_loop *L = &m->loops[l];
-        ori_rigid P = ori_rigid_identity();
-        for (int i = 0; i < L->count; ++i) {
-            const kin_entry *en = &m->entries[L->first + i];
-            if (cols) {
-                // Spatial axis of this crossing at the current state: Ad(P) ξ.
-                ori_v3 w = ori_m3_apply(P.r, en->axis);
-                double *c = cols + 6 * (L->col_first + en->col);
-                if (L->rows == 3) {
-                    c[0] += w.x;
-                    c[1] += w.y;
-                    c[2] += w.z;
-                } else {
-                    ori_v3 q = ori_rigid_apply(P, en->point);
-                    ori_v3 v = ori_v3_scale(ori_v3_cross(q, w), inv_diag); // −ω×q = q×ω
-                    c[0] += v.x;
-                    c[1] += v.y;
-                    c[2] += v.z;
-                    c[3] += w.x;
-                    c[4] += w.y;
-                    c[5] += w.z;
-                }
-            }
-            double t = th[en->joint];
-            if (L->rows == 3) {
-                ori_m3 R = rot ? (en->sign > 0 ? rot[en->joint] : ori_m3_transpose(rot[en->joint]))
-                               : ori_m3_rotation(en->axis, t);
-                P.r = ori_m3_mul(P.r, R);
-            } else {
-                ori_twist xi = ori_twist_from_axis(en->point, en->axis);
-                P = ori_rigid_compose(P, ori_twist_exp(xi, t));
-            }
-        }
-        double dev = m3_dev_identity(P.r);
-        ori_v3 rv = ori__kin_rotvec(P.r);
-        if (L->rows == 6) {
-            ori_v3 t = ori_v3_scale(P.t, inv_diag);
-            double dt = fmax(fabs(t.x), fmax(fabs(t.y), fabs(t.z)));
-            if (dt > dev || isnan(dt)) dev = dt;
-            if (res) {
-                res[L->row0 + 0] = t.x;
-                res[L->row0 + 1] = t.y;
-                res[L->row0 + 2] = t.z;
-                res[L->row0 + 3] = rv.x;
-                res[L->row0 + 4] = rv.y;
-                res[L->row0 + 5] = rv.z;
-            }
-        } else if (res) {
-            res[L->row0 + 0] = rv.x;
-            res[L->row0 + 1] = rv.y;
-            res[L->row0 + 2] = rv.z;
-        }
+        double dev = L->rows == 3 ? eval_vertex_loop(m, L, th, res, cols, half) : eval_hole_loop(m, L, th, res, cols);
         if (dev > worst || isnan(dev)) worst = dev;
     }
     return isnan(worst) ? INFINITY : worst;

@@ -1,14 +1,18 @@
-// The corrector of the numeric continuation: Gauss–Newton on the stacked loop residuals with
-// the driven and locked creases eliminated (they are constants, not unknowns). Each iteration
-// solves J_F δ = −r in least squares:
+// The corrector of the numeric continuation: Newton on the stacked loop residuals with the
+// driven and locked creases eliminated (they are constants, not unknowns). Each iteration
+// solves J_F δ = −r:
+//   sweep   block forward substitution along the loops (build_sweep): each loop determines the
+//           creases no earlier loop did, from its own equations; one pass over the loops, no
+//           factorization. Used first for large patterns whenever the ordering exists;
 //   dense   LAPACK dgelsd (SVD, minimum norm: robust at rank-deficient states), small systems;
 //   sparse  CHOLMOD on the normal matrix JᵀJ, accumulated loop by loop (each loop couples only
-//           its own creases) into a fixed upper-triangular pattern analysed once (AMD).
+//           its own creases) into a fixed upper-triangular pattern analysed once (AMD); where
+//           the sweep does not exist or fails (a singular block, a step that does not help).
 // The sparse factor is reused by later iterations and steps (chord / simplified Newton) while
 // the residual contracts faster than ORI_KIN_CHORD_RATE per iteration, and renewed otherwise.
-// Tangents solve the same normal equations with the drive column as right-hand side; they use
-// a factor renewed at the current state when the last one is older, because the predictor's
-// accuracy rests on them.
+// Tangents solve the same system with the drive column as right-hand side: by the sweep when
+// every loop agrees with its solution, else by least squares with a factor renewed at the
+// current state, because the predictor's accuracy rests on them.
 #include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
@@ -23,7 +27,7 @@ struct kin_solver {
     double *res;    // rows
     double *blocks; // 6 × loop_col_total
     double *jd;     // drive column (rows)
-    ori_m3 *rot;    // per-joint rotation scratch of the evaluation
+    double *half;   // per-joint half-angle cosine and sine, scratch of the evaluation
     double *th_eval; // the state of the last evaluation
     bool eval_valid;
     double eval_r;
@@ -38,12 +42,26 @@ struct kin_solver {
     int *loop_free_first;
     double *g;
     bool have_factor;   // a factor exists
+    bool factor_damped; // it is of JᵀJ + λI, λ > 0 (JᵀJ was not numerically positive definite)
     bool factor_current; // the factor is of the Jacobian at the last evaluated state
     bool refactor;      // renew before the next solve
     bool fresh;         // the last solve renewed the factor
     bool stale_ok;      // the last call converged with the previous call's factor
     int calls;          // corrector calls so far
     int factor_call;    // corrector call in which the factor was made
+    // sweep: loops in propagation order, each determining its still undetermined columns
+    bool sweep;          // an ordering exists that determines every free column
+    int sweep_count;
+    int *sweep_loop;     // sweep_count loops
+    int *sweep_first;    // sweep_count + 1 offsets into sweep_new
+    int *sweep_new;      // loop-local column indices (into the loop's columns) the loop determines
+    int *sweep_kfirst;   // sweep_count + 1 offsets into sweep_known
+    int *sweep_known;    // loop-local indices of free columns determined by earlier loops
+    int sweep_retry_at;  // after a failed sweep, the corrector call that tries it again
+    int sweep_iterations; // corrector iterations done by the sweep
+    // corrector scratch
+    double *step, *neg, *best;
+    int *free_joint;     // free column → joint
 };
 
 // --- construction -------------------------------------------------------------------------
@@ -143,6 +161,111 @@ static void build_sparse(kin_solver *s)
     ori__free(rowind);
 }
 
+// The sweep (block forward substitution). Starting at the loops of the driven crease and going
+// breadth first, a loop whose undetermined free columns are no more than its rows determines
+// them all from its own equations, given the columns determined before (least squares on the
+// loop's block: a degree-4 vertex with one known crease determines the other three; one with
+// two known the remaining two). When every free column is determined this way, the loops in
+// that order give a block lower-triangular left inverse M of J_F (M J_F = I when every block
+// has full column rank), and θ ← θ − M r(θ) converges quadratically like Gauss–Newton, at the
+// cost of one pass over the loops instead of a sparse factorization. The loops that determine
+// nothing are still checked: the corrector stops only when every loop closes.
+static void build_sweep(kin_solver *s)
+{
+    const ori_mechanism *m = s->m;
+    int nl = m->loop_count, nc = s->ncols;
+    int *cl_first = ori__calloc((size_t)nc + 2, sizeof(int));
+    for (int l = 0; l < nl; ++l) {
+        const kin_loop *L = &m->loops[l];
+        for (int c = 0; c < L->col_count; ++c) {
+            int fc = s->col[m->loop_cols[L->col_first + c]];
+            if (fc >= 0) cl_first[fc + 2]++;
+        }
+    }
+    for (int k = 0; k < nc; ++k) cl_first[k + 2] += cl_first[k + 1];
+    int *cl = ori__alloc(sizeof(int) * ((size_t)cl_first[nc + 1] + 1));
+    int *unknown = ori__alloc(sizeof(int) * ((size_t)nl + 1));
+    for (int l = 0; l < nl; ++l) {
+        const kin_loop *L = &m->loops[l];
+        unknown[l] = 0;
+        for (int c = 0; c < L->col_count; ++c) {
+            int fc = s->col[m->loop_cols[L->col_first + c]];
+            if (fc >= 0) {
+                cl[cl_first[fc + 1]++] = l;
+                unknown[l]++;
+            }
+        }
+    }
+    // cl_first[k] .. cl_first[k + 1]: the loops of column k.
+    bool *known = ori__calloc((size_t)nc + 1, sizeof(bool));
+    bool *queued = ori__calloc((size_t)nl + 1, sizeof(bool));
+    int *queue = ori__alloc(sizeof(int) * ((size_t)nl + 1));
+    s->sweep_loop = ori__alloc(sizeof(int) * ((size_t)nl + 1));
+    s->sweep_first = ori__alloc(sizeof(int) * ((size_t)nl + 2));
+    s->sweep_kfirst = ori__alloc(sizeof(int) * ((size_t)nl + 2));
+    s->sweep_new = ori__alloc(sizeof(int) * ((size_t)nc + 1));
+    s->sweep_known = ori__alloc(sizeof(int) * ((size_t)m->loop_col_total + 1));
+    int head = 0, tail = 0, determined = 0, nk = 0;
+    s->sweep_count = 0;
+    s->sweep_first[0] = 0;
+    s->sweep_kfirst[0] = 0;
+    for (int l = 0; l < nl; ++l) {
+        const kin_loop *L = &m->loops[l];
+        for (int c = 0; c < L->col_count; ++c)
+            if (m->loop_cols[L->col_first + c] == s->drive && unknown[l] <= L->rows && !queued[l]) {
+                queued[l] = true;
+                queue[tail++] = l;
+            }
+    }
+    for (;;) {
+        while (head < tail) {
+            int l = queue[head++];
+            const kin_loop *L = &m->loops[l];
+            if (unknown[l] == 0) continue; // every column already determined: a check loop
+            int k = s->sweep_count++;
+            s->sweep_loop[k] = l;
+            int nn = s->sweep_first[k];
+            for (int c = 0; c < L->col_count; ++c) {
+                int fc = s->col[m->loop_cols[L->col_first + c]];
+                if (fc < 0) continue;
+                if (known[fc]) {
+                    s->sweep_known[nk++] = c;
+                    continue;
+                }
+                s->sweep_new[nn++] = c;
+                known[fc] = true;
+                determined++;
+                for (int q = cl_first[fc]; q < cl_first[fc + 1]; ++q) {
+                    int l2 = cl[q];
+                    unknown[l2]--;
+                    if (!queued[l2] && unknown[l2] <= m->loops[l2].rows) {
+                        queued[l2] = true;
+                        queue[tail++] = l2;
+                    }
+                }
+            }
+            s->sweep_first[k + 1] = nn;
+            s->sweep_kfirst[k + 1] = nk;
+        }
+        if (determined == nc) break;
+        // Columns out of reach of the drive (e.g. behind locked creases): start again at the
+        // first loop that can determine its columns on its own.
+        int seed = -1;
+        for (int l = 0; l < nl && seed < 0; ++l)
+            if (!queued[l] && unknown[l] > 0 && unknown[l] <= m->loops[l].rows) seed = l;
+        if (seed < 0) break;
+        queued[seed] = true;
+        queue[tail++] = seed;
+    }
+    s->sweep = determined == nc && nc > 0;
+    ori__free(cl_first);
+    ori__free(cl);
+    ori__free(unknown);
+    ori__free(known);
+    ori__free(queued);
+    ori__free(queue);
+}
+
 kin_solver *ori__kin_solver_create(const ori_mechanism *m, const int *col_of_joint, int ncols, int drive_joint,
                                    const kin_solver_opts *opts)
 {
@@ -153,16 +276,24 @@ kin_solver *ori__kin_solver_create(const ori_mechanism *m, const int *col_of_joi
     s->rows = m->rows;
     s->min_norm = opts && opts->min_norm;
     ori_linear lin = opts ? opts->linear : ORI_LINEAR_AUTO;
-    s->sparse = lin == ORI_LINEAR_SPARSE || (lin == ORI_LINEAR_AUTO && ncols > ORI_MOTION_DENSE_MAX_UNKNOWNS);
+    bool large = ncols > ORI_MOTION_DENSE_MAX_UNKNOWNS;
+    s->sparse = lin == ORI_LINEAR_SPARSE || lin == ORI_LINEAR_SWEEP || (lin == ORI_LINEAR_AUTO && large);
     if (s->rows == 0 || ncols == 0) s->sparse = false;
+    bool want_sweep = s->sparse && !s->min_norm && (lin == ORI_LINEAR_SWEEP || (lin == ORI_LINEAR_AUTO && large));
     s->col = ori__alloc(sizeof(int) * (size_t)(m->joint_count + 1));
     for (int j = 0; j < m->joint_count; ++j) s->col[j] = col_of_joint[j];
     s->res = ori__calloc((size_t)s->rows + 1, sizeof(double));
     s->blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
     s->jd = ori__calloc((size_t)s->rows + 1, sizeof(double));
-    s->rot = ori__alloc(sizeof(ori_m3) * (size_t)(m->joint_count + 1));
+    s->half = ori__alloc(sizeof(double) * 2 * (size_t)(m->joint_count + 1));
     s->th_eval = ori__calloc((size_t)m->joint_count + 1, sizeof(double));
     s->g = ori__alloc(sizeof(double) * ((size_t)ncols + 1));
+    s->step = ori__alloc(sizeof(double) * ((size_t)ncols + 1));
+    s->neg = ori__alloc(sizeof(double) * ((size_t)s->rows + 1));
+    s->best = ori__alloc(sizeof(double) * ((size_t)m->joint_count + 1));
+    s->free_joint = ori__alloc(sizeof(int) * ((size_t)ncols + 1));
+    for (int j = 0; j < m->joint_count; ++j)
+        if (s->col[j] >= 0) s->free_joint[s->col[j]] = j;
     if (!s->sparse) {
         size_t big = (size_t)(s->rows > ncols ? s->rows : ncols) + 1;
         s->a = ori__alloc(sizeof(double) * ((size_t)s->rows * (size_t)ncols + 1));
@@ -171,6 +302,7 @@ kin_solver *ori__kin_solver_create(const ori_mechanism *m, const int *col_of_joi
         return s;
     }
     build_sparse(s);
+    if (want_sweep) build_sweep(s);
     s->refactor = true;
     return s;
 }
@@ -183,7 +315,7 @@ void ori__kin_solver_destroy(kin_solver *s)
     ori__free(s->res);
     ori__free(s->blocks);
     ori__free(s->jd);
-    ori__free(s->rot);
+    ori__free(s->half);
     ori__free(s->th_eval);
     ori__free(s->a);
     ori__free(s->rhs);
@@ -193,10 +325,21 @@ void ori__kin_solver_destroy(kin_solver *s)
     ori__free(s->loop_free);
     ori__free(s->loop_free_first);
     ori__free(s->g);
+    ori__free(s->step);
+    ori__free(s->neg);
+    ori__free(s->best);
+    ori__free(s->free_joint);
+    ori__free(s->sweep_loop);
+    ori__free(s->sweep_first);
+    ori__free(s->sweep_new);
+    ori__free(s->sweep_kfirst);
+    ori__free(s->sweep_known);
     ori__free(s);
 }
 
 int ori__kin_solver_factorizations(const kin_solver *s) { return s->sls ? ori__sls_factorizations(s->sls) : 0; }
+bool ori__kin_solver_sweep(const kin_solver *s) { return s->sweep; }
+int ori__kin_solver_sweep_iterations(const kin_solver *s) { return s->sweep_iterations; }
 bool ori__kin_solver_sparse(const kin_solver *s) { return s->sparse; }
 
 // --- evaluation ----------------------------------------------------------------------------
@@ -207,7 +350,7 @@ static double residual_at(kin_solver *s, const double *th)
 {
     const ori_mechanism *m = s->m;
     if (s->eval_valid && memcmp(s->th_eval, th, sizeof(double) * (size_t)m->joint_count) == 0) return s->eval_r;
-    double r = ori__kin_eval(m, th, s->res, NULL, s->rot);
+    double r = ori__kin_eval(m, th, s->res, NULL, s->half);
     memcpy(s->th_eval, th, sizeof(double) * (size_t)m->joint_count);
     s->eval_valid = true;
     s->jac_valid = false;
@@ -220,9 +363,12 @@ static double residual_at(kin_solver *s, const double *th)
 static double evaluate(kin_solver *s, const double *th)
 {
     const ori_mechanism *m = s->m;
-    double r = residual_at(s, th);
-    if (s->jac_valid) return r;
-    ori__kin_eval(m, th, s->res, s->blocks, s->rot);
+    bool same = s->eval_valid && memcmp(s->th_eval, th, sizeof(double) * (size_t)m->joint_count) == 0;
+    if (same && s->jac_valid) return s->eval_r;
+    double r = ori__kin_eval(m, th, s->res, s->blocks, s->half);
+    memcpy(s->th_eval, th, sizeof(double) * (size_t)m->joint_count);
+    s->eval_valid = true;
+    s->eval_r = r;
     s->jac_valid = true;
     s->factor_current = false;
     for (int k = 0; k < s->rows; ++k) s->jd[k] = 0.0;
@@ -263,7 +409,8 @@ static void jt_mult(const kin_solver *s, const double *y, double *out)
 }
 
 // Assemble JᵀJ at the last evaluation and factor it (+λI when not positive definite).
-static bool refactor_now(kin_solver *s)
+// JᵀJ of the last evaluation into the fixed pattern; returns its trace.
+static double assemble_normal(kin_solver *s)
 {
     const ori_mechanism *m = s->m;
     double *v = ori__sls_values(s->sls);
@@ -285,14 +432,25 @@ static bool refactor_now(kin_solver *s)
             }
         }
     }
+    return tr;
+}
+
+// Factor JᵀJ (assembled) + λI, λ = 0 or, when that is not numerically positive definite, the
+// Levenberg–Marquardt damping ORI_TOL_RANK_REL × mean diagonal.
+static bool factor_assembled(kin_solver *s, double trace)
+{
     bool ok = ori__sls_factor(s->sls, 0.0);
-    if (!ok) ok = ori__sls_factor(s->sls, ORI_TOL_RANK_REL * (s->ncols > 0 ? tr / s->ncols : 1.0));
+    s->factor_damped = !ok;
+    if (!ok) ok = ori__sls_factor(s->sls, ORI_TOL_RANK_REL * (s->ncols > 0 ? trace / s->ncols : 1.0));
     s->have_factor = ok;
     s->factor_current = ok;
     s->refactor = false;
     s->factor_call = s->calls;
     return ok;
 }
+
+// Assemble JᵀJ at the last evaluation and factor it (+λI when not positive definite).
+static bool refactor_now(kin_solver *s) { return factor_assembled(s, assemble_normal(s)); }
 
 // Dense least squares: minimise |A x − b| (A = the current J_F, copied), minimum norm.
 static bool dense_solve(kin_solver *s, const double *b, double *x)
@@ -329,20 +487,194 @@ static bool sparse_step(kin_solver *s, const double *b, double *x, bool current)
 
 // --- corrector, tangent, rank ------------------------------------------------------------
 
-bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, double *residual)
+// Least squares min |A x − b| for one loop's block (rows ≤ 6, k ≤ rows unknowns; A column-major
+// with leading dimension rows, destroyed; b destroyed) by Householder QR. False when the block
+// is (nearly) rank deficient: a diagonal entry of R below ORI_KIN_SWEEP_PIVOT_REL × the largest
+// column norm.
+static bool small_lsq(double *a, int rows, int k, double *b, double *x)
+{
+    double cmax = 0.0;
+    for (int j = 0; j < k; ++j) {
+        double nr = 0.0;
+        for (int i = 0; i < rows; ++i) nr += a[i + rows * j] * a[i + rows * j];
+        cmax = fmax(cmax, sqrt(nr));
+    }
+    if (!(cmax > 0.0)) return false;
+    double diag[6];
+    for (int j = 0; j < k; ++j) {
+        double *aj = a + rows * j;
+        double nr = 0.0;
+        for (int i = j; i < rows; ++i) nr += aj[i] * aj[i];
+        nr = sqrt(nr);
+        if (!(nr > ORI_KIN_SWEEP_PIVOT_REL * cmax)) return false;
+        double alpha = aj[j] > 0.0 ? -nr : nr;
+        // v = a_j(j:) − α e_j, H = I − 2 v vᵀ / vᵀv, vᵀv = 2 nr (nr + |a_jj|).
+        double v[6];
+        for (int i = j; i < rows; ++i) v[i] = aj[i];
+        v[j] -= alpha;
+        double vv = 2.0 * nr * (nr + fabs(aj[j]));
+        for (int c = j + 1; c < k; ++c) {
+            double *ac = a + rows * c;
+            double d = 0.0;
+            for (int i = j; i < rows; ++i) d += v[i] * ac[i];
+            d = 2.0 * d / vv;
+            for (int i = j; i < rows; ++i) ac[i] -= d * v[i];
+        }
+        double d = 0.0;
+        for (int i = j; i < rows; ++i) d += v[i] * b[i];
+        d = 2.0 * d / vv;
+        for (int i = j; i < rows; ++i) b[i] -= d * v[i];
+        diag[j] = alpha;
+    }
+    for (int j = k - 1; j >= 0; --j) {
+        double acc = b[j];
+        for (int c = j + 1; c < k; ++c) acc -= a[j + rows * c] * x[c];
+        x[j] = acc / diag[j];
+    }
+    return true;
+}
+
+static inline void cross3(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// The same least squares for a vertex loop's block (3 rows, k ≤ 3 columns of the blocks array,
+// stride 6) in closed form with cross products: k = 3, x = (b·(a2×a3), b·(a3×a1), b·(a1×a2))/det;
+// k = 2, the components of b's projection on the plane n = a1×a2, x = ((b×a2)·n, (a1×b)·n)/|n|²;
+// k = 1, x = a·b/a·a. The rank test is Householder's: with R11 = |a1|, R22 = |a1×a2|/|a1| and
+// R33 = det/|a1×a2|, each must exceed ORI_KIN_SWEEP_PIVOT_REL × the largest column norm.
+static bool vertex_lsq(const double *const a[3], int k, const double *b, double *x)
+{
+    double n1 = dot3(a[0], a[0]);
+    double cmax2 = n1;
+    for (int t = 1; t < k; ++t) cmax2 = fmax(cmax2, dot3(a[t], a[t]));
+    double tol2 = ORI_KIN_SWEEP_PIVOT_REL * ORI_KIN_SWEEP_PIVOT_REL * cmax2;
+    if (!(n1 > tol2)) return false;
+    if (k == 1) {
+        x[0] = dot3(a[0], b) / n1;
+        return true;
+    }
+    double n[3];
+    cross3(a[0], a[1], n);
+    double nn = dot3(n, n);
+    if (!(nn > tol2 * n1)) return false; // R22² = |a1×a2|²/|a1|²
+    if (k == 2) {
+        double u[3], v[3];
+        cross3(b, a[1], u);
+        cross3(a[0], b, v);
+        x[0] = dot3(u, n) / nn;
+        x[1] = dot3(v, n) / nn;
+        return true;
+    }
+    double det = dot3(n, a[2]);
+    if (!(det * det > tol2 * nn)) return false; // R33² = det²/|a1×a2|²
+    double c23[3], c31[3];
+    cross3(a[1], a[2], c23);
+    cross3(a[2], a[0], c31);
+    x[0] = dot3(b, c23) / det;
+    x[1] = dot3(b, c31) / det;
+    x[2] = dot3(b, n) / det;
+    return true;
+}
+
+// x = M b along the sweep, with the Jacobian blocks of the last evaluation. False when a
+// loop's block is rank deficient (then the sparse factorization takes over).
+static bool sweep_solve(kin_solver *s, const double *b, double *x)
 {
     const ori_mechanism *m = s->m;
+    for (int k = 0; k < s->sweep_count; ++k) {
+        const kin_loop *L = &m->loops[s->sweep_loop[k]];
+        const int *cols = m->loop_cols + L->col_first;
+        const double *blk = s->blocks + 6 * L->col_first;
+        double rhs[6], y[6];
+        for (int q = 0; q < L->rows; ++q) rhs[q] = b[L->row0 + q];
+        for (int t = s->sweep_kfirst[k]; t < s->sweep_kfirst[k + 1]; ++t) {
+            int c = s->sweep_known[t];
+            double xc = x[s->col[cols[c]]];
+            for (int q = 0; q < L->rows; ++q) rhs[q] -= blk[6 * c + q] * xc;
+        }
+        int n = s->sweep_first[k + 1] - s->sweep_first[k];
+        const int *nw = s->sweep_new + s->sweep_first[k];
+        bool ok;
+        if (L->rows == 3) {
+            const double *a[3] = {blk + 6 * nw[0], n > 1 ? blk + 6 * nw[1] : NULL, n > 2 ? blk + 6 * nw[2] : NULL};
+            ok = vertex_lsq(a, n, rhs, y);
+        } else {
+            double a[36];
+            for (int t = 0; t < n; ++t)
+                for (int q = 0; q < L->rows; ++q) a[q + L->rows * t] = blk[6 * nw[t] + q];
+            ok = small_lsq(a, L->rows, n, rhs, y);
+        }
+        if (!ok) return false;
+        for (int t = 0; t < n; ++t) {
+            if (!isfinite(y[t])) return false;
+            x[s->col[cols[nw[t]]]] = y[t];
+        }
+    }
+    return true;
+}
+
+// Corrector by the sweep: θ ← θ − M r(θ) until every loop closes to ORI_TOL_NEWTON. False,
+// with th at the best state met, when a step does not reduce the residual at least by
+// ORI_KIN_SWEEP_RATE (Newton near the solution does far better: a round-off floor above
+// ORI_TOL_NEWTON, or a linear crawl, goes to least squares), a block is singular, or the budget
+// runs out.
+static bool sweep_correct(kin_solver *s, double *th, int max_iter, int *iterations, double *residual)
+{
+    const ori_mechanism *m = s->m;
+    double prev = INFINITY, best = INFINITY;
+    int it = 0;
+    bool ok = false;
+    for (;; ++it) {
+        // The first state almost always needs a step: residual and Jacobian in one pass.
+        double r = it == 0 ? evaluate(s, th) : residual_at(s, th);
+        if (r <= ORI_TOL_NEWTON) {
+            ok = true;
+            *residual = r;
+            break;
+        }
+        if (!(r <= ORI_KIN_SWEEP_RATE * prev) || it >= max_iter) break;
+        if (r < best) {
+            best = r;
+            memcpy(s->best, th, sizeof(double) * (size_t)m->joint_count);
+        }
+        prev = r;
+        evaluate(s, th);
+        for (int k = 0; k < s->rows; ++k) s->neg[k] = -s->res[k];
+        if (!sweep_solve(s, s->neg, s->step)) break;
+        for (int k = 0; k < s->ncols; ++k) th[s->free_joint[k]] += s->step[k];
+    }
+    *iterations = it;
+    if (!ok && best < INFINITY) memcpy(th, s->best, sizeof(double) * (size_t)m->joint_count);
+    return ok;
+}
+
+bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, double *residual)
+{
     double r0 = 0.0, prev = INFINITY;
     bool converged = false;
-    int it = 0;
-    double *step = ori__alloc(sizeof(double) * ((size_t)s->ncols + 1));
-    double *neg = ori__alloc(sizeof(double) * ((size_t)s->rows + 1));
-    int *free_joint = ori__alloc(sizeof(int) * ((size_t)s->ncols + 1));
-    for (int j = 0; j < m->joint_count; ++j)
-        if (s->col[j] >= 0) free_joint[s->col[j]] = j;
+    int it = 0, it_sweep = 0;
+    double *step = s->step, *neg = s->neg;
+    const int *free_joint = s->free_joint;
     double r = INFINITY;
     bool step_fresh = true;
     s->calls++;
+    if (s->sweep && s->calls >= s->sweep_retry_at) {
+        bool ok = sweep_correct(s, th, max_iter, &it_sweep, &r);
+        s->sweep_iterations += it_sweep;
+        if (ok) {
+            *iterations = it_sweep;
+            *residual = r;
+            return true;
+        }
+        // Unstable or singular here: the least-squares corrector goes on from the best state
+        // the sweep reached, and the sweep rests for a few calls.
+        s->sweep_retry_at = s->calls + ORI_KIN_SWEEP_RETRY;
+    }
     // Retry an old factor now and then: conditioning improves away from the flat state.
     if (s->sparse && !s->stale_ok && s->calls % ORI_KIN_STALE_RETRY != 0) s->refactor = true;
     for (;; ++it) {
@@ -383,30 +715,38 @@ bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, 
         for (int k = 0; k < s->ncols; ++k) th[free_joint[k]] += step[k];
     }
     if (s->sparse && !converged) s->refactor = true;
-    ori__free(step);
-    ori__free(neg);
-    ori__free(free_joint);
-    *iterations = it;
+    *iterations = it + it_sweep;
     *residual = r;
     return converged || r <= ORI_TOL_RESIDUAL;
 }
 
+// Joint-space tangent from the free columns' solution x (drive 1, fixed joints 0).
+static void tangent_from(const kin_solver *s, const double *x, double *t)
+{
+    for (int j = 0; j < s->m->joint_count; ++j) {
+        int c = s->col[j];
+        t[j] = j == s->drive ? 1.0 : c >= 0 ? x[c] : 0.0;
+    }
+}
+
 bool ori__kin_tangent(kin_solver *s, const double *th, double *t)
 {
-    const ori_mechanism *m = s->m;
     evaluate(s, th);
     double *neg = ori__alloc(sizeof(double) * ((size_t)s->rows + 1));
     double *x = ori__alloc(sizeof(double) * ((size_t)s->ncols + 1));
     for (int k = 0; k < s->rows; ++k) neg[k] = -s->jd[k];
-    // Near a flat state the normal matrix is badly conditioned and a factor of even a very
-    // close state gives a visibly different tangent: always factor at th itself.
-    bool ok = s->ncols == 0 || (s->sparse ? sparse_step(s, neg, x, true) : dense_solve(s, neg, x));
-    if (ok) {
-        for (int j = 0; j < m->joint_count; ++j) {
-            int c = s->col[j];
-            t[j] = j == s->drive ? 1.0 : c >= 0 ? x[c] : 0.0;
-        }
+    // The sweep solves J_F t_F = −J_drive exactly when that system is consistent (a regular
+    // state); it is kept when every loop, checked ones included, agrees to ORI_TOL_CONE_REL
+    // (the defect the start test applies). Otherwise least squares, and near a flat state the
+    // normal matrix is badly conditioned and a factor of even a very close state gives a
+    // visibly different tangent: always factor at th itself.
+    bool ok = s->ncols == 0;
+    if (!ok && s->sweep && sweep_solve(s, neg, x)) {
+        tangent_from(s, x, t);
+        ok = ori__kin_tangent_defect(s, th, t) <= ORI_TOL_CONE_REL;
     }
+    if (!ok) ok = s->sparse ? sparse_step(s, neg, x, true) : dense_solve(s, neg, x);
+    if (ok) tangent_from(s, x, t);
     ori__free(neg);
     ori__free(x);
     return ok;
@@ -444,18 +784,10 @@ int ori__kin_solver_nullity(kin_solver *s, const double *th)
         ori__free(a);
         return rank < 0 ? 0 : s->ncols - rank;
     }
-    // Sparse: JᵀJ not positive definite, or its Cholesky diagonal ratio (≈ σ_min/σ_max of J)
-    // below ORI_TOL_RANK_REL_SPARSE, counts as rank deficient.
-    bool ok = ori__sls_factor(s->sls, 0.0);
-    if (ok) {
-        s->have_factor = true;
-        s->factor_current = true;
-        s->refactor = false;
-    }
-    if (!ok) {
-        refactor_now(s); // keep a usable (damped) factor
-        return 1;
-    }
+    // Sparse: JᵀJ at th not positive definite, or its Cholesky diagonal ratio (≈ σ_min/σ_max
+    // of J) below ORI_TOL_RANK_REL_SPARSE, counts as rank deficient.
+    if (!factor_assembled(s, assemble_normal(s))) return 1;
+    if (s->factor_damped) return 1;
     return ori__sls_rcond(s->sls) < ORI_TOL_RANK_REL_SPARSE ? 1 : 0;
 }
 
