@@ -40,7 +40,7 @@ static void assert_fields_preserved(json_t *a, json_t *b, const char *where)
 }
 
 // Collect the shared .fold files (recursively one level).
-static int shared_fold_files(char paths[][1200], int cap)
+static int shared_fold_files(char paths[][1400], int cap)
 {
     const char *root = test_shared_path("");
     if (!root) return -1;
@@ -58,7 +58,7 @@ static int shared_fold_files(char paths[][1200], int cap)
         while (s && (fe = readdir(s))) {
             size_t l = strlen(fe->d_name);
             if (l > 5 && strcmp(fe->d_name + l - 5, ".fold") == 0 && n < cap)
-                snprintf(paths[n++], 1200, "%s/%s", sub, fe->d_name);
+                snprintf(paths[n++], 1400, "%s/%s", sub, fe->d_name);
         }
         if (s) closedir(s);
     }
@@ -68,7 +68,7 @@ static int shared_fold_files(char paths[][1200], int cap)
 
 Test(fold, every_shared_pattern_loads_and_round_trips_field_for_field)
 {
-    static char paths[128][1200];
+    static char paths[128][1400];
     int n = shared_fold_files(paths, 128);
     if (n < 0) cr_skip("../shared/patterns is absent");
     cr_assert_geq(n, 20);
