@@ -718,7 +718,13 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
             }
         // Sort by edge index (joints are in edge order already).
     }
-    if (lr == LEG_NONE) {
+    if (drive_wrong && (lr == LEG_NONE || lr == LEG_UNDER)) {
+        // Driving a crease against its own assignment is invalid whatever the motion would be.
+        mo->verdict = ORI_MOTION_INVALID_ASSIGNMENT;
+        snprintf(mo->reason, sizeof mo->reason, "the driven crease %d is assigned %s but is driven to %g°",
+                 def->driven_edge, ori_assignment_name(m->joints[jd].assignment), deg(s_to));
+        mo->nframes = 0;
+    } else if (lr == LEG_NONE) {
         mo->verdict = ORI_MOTION_NOT_RIGIDLY_FOLDABLE;
         if (c.incompatible)
             snprintf(mo->reason, sizeof mo->reason,
