@@ -31,6 +31,39 @@ static json_t *chain_json(const int *edges, const ori_v3 *q, const ori_v3 *w, in
     return a;
 }
 
+// Rigid folding is exact: a crease pattern drawn with rounded coordinates usually misses
+// Kawasaki by a little at many vertices, and such a sheet is rigid even though its exact
+// version folds. When a fold is not rigidly foldable, say so if that is the likely cause.
+#define HINT_NEAR_KAWASAKI_RAD 1e-3
+
+static int near_kawasaki_misses(const ori_pattern *p, double *worst)
+{
+    int n = 0;
+    *worst = 0.0;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        if (!ori_pattern_vertex_is_interior(p, v)) continue;
+        ori_vertex_report r;
+        ori_flat_check_vertex(p, v, &r);
+        if (r.degree % 2 || r.kawasaki || fabs(r.kawasaki_rad) > HINT_NEAR_KAWASAKI_RAD) continue;
+        n++;
+        *worst = fmax(*worst, fabs(r.kawasaki_rad));
+    }
+    return n;
+}
+
+static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, size_t size)
+{
+    if (ori_motion_verdict_of(mo) != ORI_MOTION_NOT_RIGIDLY_FOLDABLE) return NULL;
+    double worst;
+    int n = near_kawasaki_misses(k->flat, &worst);
+    if (n == 0) return NULL;
+    snprintf(buf, size,
+             "%d interior vertices miss Kawasaki by up to %.2g rad (rounded coordinates?): rigid folding is "
+             "exact, and such a sheet is rigid even where its exact design folds; orikin check lists them",
+             n, worst);
+    return buf;
+}
+
 static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo)
 {
     const ori_mechanism *m = k->mech;
@@ -43,6 +76,9 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     json_object_set_new(out, "verdict", json_string(ori_motion_verdict_name(v)));
     const char *why = ori_motion_reason(mo);
     json_object_set_new(out, "reason", why ? json_string(why) : json_null());
+    char hint[512];
+    const char *h = rounding_hint(k, mo, hint, sizeof hint);
+    json_object_set_new(out, "hint", h ? json_string(h) : json_null());
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
     json_object_set_new(out, "dof", json_integer(ori_motion_dof(mo)));
     json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
@@ -160,6 +196,8 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
     printf("verdict: %s", ori_motion_verdict_name(v));
     if (ori_motion_reason(mo)) printf(": %s", ori_motion_reason(mo));
     printf("\n");
+    char hint[512];
+    if (rounding_hint(k, mo, hint, sizeof hint)) printf("note: %s\n", hint);
     if (F > 0) printf("dof at the last frame %d (Grübler-Kutzbach count %d)\n", ori_motion_dof(mo), ori_mechanism_grubler(m));
 }
 

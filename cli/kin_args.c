@@ -72,7 +72,11 @@ int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k)
         }
         state = other;
     }
-    for (int e = 0; e < ne; ++e) k->angles[e] = ori_pattern_edge(state, e).fold_angle_rad;
+    // A flat crease-pattern frame is the flat state whatever its edges_foldAngle says: there the
+    // angles are targets (Origami Simulator, FOLD creasePattern files), not the geometry. A folded
+    // frame (3D, or foldedForm) gives the start angles.
+    bool folded_state = ori_pattern_is_folded_form(state) || ori_pattern_is_3d(state);
+    for (int e = 0; e < ne; ++e) k->angles[e] = folded_state ? ori_pattern_edge(state, e).fold_angle_rad : 0.0;
     for (int v = 0; v < nv; ++v) k->coords[v] = ori_pattern_vertex(state, v);
     k->folded = ori_pattern_is_3d(state);
     ori_pattern_destroy(other);
