@@ -14,7 +14,8 @@ typedef struct bench_scenario {
 
 // Monotonic wall clock in seconds.
 double bench_now(void);
-// Peak resident set size of this process in bytes (from /proc/self/status VmHWM), 0 if unknown.
+// Peak resident set size in bytes since the scenario started (VmHWM, reset before each
+// scenario), 0 if unknown.
 int64_t bench_peak_rss(void);
 
 #endif

@@ -36,6 +36,16 @@ int64_t bench_peak_rss(void)
     return (int64_t)kb * 1024;
 }
 
+// Reset the process's peak resident set size (Linux: "5" to /proc/self/clear_refs), so that
+// each scenario reports its own peak.
+static void reset_peak_rss(void)
+{
+    FILE *f = fopen("/proc/self/clear_refs", "w");
+    if (!f) return;
+    fputs("5", f);
+    fclose(f);
+}
+
 int main(int argc, char **argv)
 {
     int failed = 0, ran = 0;
@@ -45,6 +55,8 @@ int main(int argc, char **argv)
         if (!wanted) continue;
         printf("== %s: %s\n", scenarios[i]->name, scenarios[i]->description);
         fflush(stdout);
+        reset_peak_rss();
+        ori_alloc_reset_peak();
         if (scenarios[i]->run() != 0) {
             printf("   FAILED\n");
             failed++;
