@@ -1,0 +1,49 @@
+// Exact segment predicates shared by the pattern build (planarity check) and the arrangement
+// (consistency of an insertion before it is committed).
+#ifndef ORI_GEOMETRY_INTERNAL_H
+#define ORI_GEOMETRY_INTERNAL_H
+
+#include <orikin/math.h>
+
+// c, collinear with ab (the caller checked), lies in the closed bounding box of ab. (Out of
+// line: it is off the hot path of ori__segments_conflict.)
+bool ori__in_segment_box(ori_v2 a, ori_v2 b, ori_v2 c);
+
+// Segments sx and sy share the end point s: whether they overlap (collinear, same side of s).
+bool ori__overlap_beyond(ori_v2 s, ori_v2 x, ori_v2 y);
+
+// Whether the segments ab (end vertices ev[0], ev[1]) and cd (fv[0], fv[1]) have a common point
+// other than a shared end vertex: a crossing, a touch, a collinear overlap, or the same two
+// vertices. Exact (orientation signs on the given coordinates). Inline: the pattern build's
+// planarity check calls it for every pair of edges sharing a grid cell.
+static inline bool ori__segments_conflict(ori_v2 a, ori_v2 b, const int ev[2], ori_v2 c, ori_v2 d, const int fv[2])
+{
+    // Disjoint closed bounding boxes: no common point at all (exact comparisons). Most pairs
+    // that share a grid cell end here without an orientation test.
+    if ((a.x > b.x ? a.x : b.x) < (c.x < d.x ? c.x : d.x) || (c.x > d.x ? c.x : d.x) < (a.x < b.x ? a.x : b.x) ||
+        (a.y > b.y ? a.y : b.y) < (c.y < d.y ? c.y : d.y) || (c.y > d.y ? c.y : d.y) < (a.y < b.y ? a.y : b.y))
+        return false;
+    int shared = (ev[0] == fv[0] || ev[0] == fv[1]) + (ev[1] == fv[0] || ev[1] == fv[1]);
+    if (shared == 2) return true; // the same two vertices
+    if (shared == 1) {
+        // Only a collinear overlap beyond the shared end point conflicts.
+        bool a_shared = ev[0] == fv[0] || ev[0] == fv[1], c_shared = fv[0] == ev[0] || fv[0] == ev[1];
+        return a_shared ? ori__overlap_beyond(a, b, c_shared ? d : c) : ori__overlap_beyond(b, a, c_shared ? d : c);
+    }
+    // (Computed only here: with a shared end point two of them are exactly zero, which sends
+    // every call through the slow exact path of ori_orient2d.)
+    int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
+    int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
+    if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0) {
+        if (o1 == 0 && o2 == 0)
+            return ori__in_segment_box(a, b, c) || ori__in_segment_box(a, b, d) || ori__in_segment_box(c, d, a);
+        return true;
+    }
+    if (o1 == 0 && ori__in_segment_box(a, b, c)) return true;
+    if (o2 == 0 && ori__in_segment_box(a, b, d)) return true;
+    if (o3 == 0 && ori__in_segment_box(c, d, a)) return true;
+    if (o4 == 0 && ori__in_segment_box(c, d, b)) return true;
+    return false;
+}
+
+#endif
