@@ -12,6 +12,12 @@ bool ori__in_segment_box(ori_v2 a, ori_v2 b, ori_v2 c);
 // Segments sx and sy share the end point s: whether they overlap (collinear, same side of s).
 bool ori__overlap_beyond(ori_v2 s, ori_v2 x, ori_v2 y);
 
+// Whether direction u→x points into the corner at u of a region that lies left of the path
+// prev → u → next (the sector counter-clockwise from next to prev), decided exactly. Convex,
+// reflex and straight corners are told apart by orientation signs; a zero-angle corner (a slit
+// tip, prev = next's direction) holds every direction but the slit's own.
+bool ori__corner_contains(ori_v2 u, ori_v2 next, ori_v2 prev, ori_v2 x);
+
 // Whether the segments ab (end vertices ev[0], ev[1]) and cd (fv[0], fv[1]) have a common point
 // other than a shared end vertex: a crossing, a touch, a collinear overlap, or the same two
 // vertices. Exact (orientation signs on the given coordinates). Inline: the pattern build's

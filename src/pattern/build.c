@@ -341,8 +341,28 @@ static ori_status check_crossings(ori_pattern *p, ori_error *error)
 
 // --- faces -------------------------------------------------------------------------------
 
+// A traced cycle is the outer boundary of its part of the graph exactly when the region left of
+// it holds the points just left of the cycle's lowest-leftmost vertex (the region of a face lies
+// within its boundary's hull, right of that vertex). Decided by orientation signs, so that a
+// tree, whose single cycle has zero area, is never taken for a face.
+static bool is_outer_boundary(const ori_pattern *p, const int *cycle, int n)
+{
+    int m = 0;
+    for (int i = 1; i < n; ++i) {
+        ori_v3 a = p->vertices[cycle[i]], b = p->vertices[cycle[m]];
+        if (a.x < b.x || (a.x == b.x && a.y < b.y)) m = i;
+    }
+    ori_v2 u = ori__pattern_v2(p, cycle[m]);
+    ori_v2 left = ori_v2_make(u.x - fmax(1.0, fabs(u.x)), u.y); // (exact: a point left of u)
+    for (int i = 0; i < n; ++i)
+        if (cycle[i] == cycle[m] &&
+            ori__corner_contains(u, ori__pattern_v2(p, cycle[(i + 1) % n]), ori__pattern_v2(p, cycle[(i + n - 1) % n]), left))
+            return true;
+    return false;
+}
+
 // Trace faces of the planar graph: the face left of half-edge u→v continues with the edge just
-// clockwise of (v→u) around v. Cycles of positive area are faces; the others are outer boundaries.
+// clockwise of (v→u) around v. Every cycle is a face but the outer boundaries.
 static void trace_faces(ori_pattern *p)
 {
     int m = p->edge_count;
@@ -361,14 +381,11 @@ static void trace_faces(ori_pattern *p)
         if (used[h0]) continue;
         ccount = 0;
         int h = h0;
-        double area2 = 0.0;
         while (!used[h]) {
             used[h] = 1;
             int e = h / 2, dir = h % 2;
             int u = p->edges[e].v[dir], v = p->edges[e].v[1 - dir];
             ORI__PUSH(cycle, ccount, ccap, u);
-            ori_v3 a = p->vertices[u], b = p->vertices[v];
-            area2 += a.x * b.y - a.y * b.x;
             int twin = 2 * e + (1 - dir);
             int s = pos[twin];
             int vb = p->vert_edge_offsets[v], vn = p->vert_edge_offsets[v + 1] - vb;
@@ -376,7 +393,7 @@ static void trace_faces(ori_pattern *p)
             int e2 = p->vert_edges[sp];
             h = 2 * e2 + (p->edges[e2].v[0] == v ? 0 : 1);
         }
-        if (area2 > 0.0 && ccount >= 3) {
+        if (ccount >= 3 && !is_outer_boundary(p, cycle, ccount)) {
             ori__pattern_reserve_faces(p, p->face_count + 1, p->face_vertex_count + ccount);
             memcpy(p->face_vertices + p->face_vertex_count, cycle, sizeof(int) * (size_t)ccount);
             p->face_vertex_count += ccount;
