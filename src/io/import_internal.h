@@ -1,6 +1,6 @@
-// Shared pieces of the importers and exporters (svg.c, oripa.c, import.c, export.c,
-// fold_text.c): the growing segment list and statistics, number scanning that never accepts
-// "inf", "nan" or hexadecimal, the XML entry point and a text buffer.
+// Shared pieces of the drawing importers (svg.c, oripa.c, import.c): the growing segment list
+// and statistics, number scanning that never accepts "inf", "nan" or hexadecimal, and the XML
+// entry point. (The writers' text buffer is in io_internal.h.)
 #ifndef ORI_IMPORT_INTERNAL_H
 #define ORI_IMPORT_INTERNAL_H
 
@@ -29,18 +29,5 @@ void ori__stats_clear(ori_import_stats *stats);
 // with its line and column (svg.c). *doc is NULL on failure; free it with xmlFreeDoc.
 struct _xmlDoc;
 ori_status ori__xml_parse(const char *text, size_t size, const char *what, struct _xmlDoc **doc, ori_error *error);
-
-// A growing text buffer for the writers (text.c); data is NUL-terminated once anything (or
-// nothing, via ori__text_reserve) was written, and owned by the caller.
-typedef struct ori__text {
-    char *data;
-    size_t len, cap;
-} ori__text;
-void ori__text_reserve(ori__text *t, size_t extra);
-void ori__text_put(ori__text *t, const char *s, size_t n);
-void ori__text_puts(ori__text *t, const char *s);
-void ori__text_printf(ori__text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-// A number in the shortest decimal that reads back exactly (the FOLD writer's format).
-void ori__text_real(ori__text *t, double x);
 
 #endif

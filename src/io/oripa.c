@@ -9,6 +9,7 @@
 
 #include "../pattern/pattern_internal.h"
 #include "import_internal.h"
+#include "io_internal.h"
 
 // Type code → assignment; false for codes that are skipped (*skip) or invalid.
 static bool oripa_type(double type, ori_assignment *asg, bool *skip)
