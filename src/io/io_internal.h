@@ -3,9 +3,7 @@
 #ifndef ORI_IO_INTERNAL_H
 #define ORI_IO_INTERNAL_H
 
-#include <jansson.h>
-
-#include "../core/core_internal.h"
+#include "../core/json_internal.h"
 
 // Custom FOLD keys written by orikin.
 #define ORI__KEY_FACES_NAME "orikin:faces_name"
