@@ -54,9 +54,31 @@ size_t ori__scan_number(const char *s, double *out)
     return n;
 }
 
-void ori__stats_clear(ori_import_stats *stats)
+static void stats_clear(ori_import_stats *stats)
 {
     if (stats) memset(stats, 0, sizeof *stats);
+}
+
+void ori__reader_begin(ori_segment **segments, int *count, ori_import_stats *stats, ori_error *error)
+{
+    *segments = NULL;
+    *count = 0;
+    stats_clear(stats);
+    ori_error_clear(error);
+}
+
+ori_status ori__reader_end(ori_status st, ori__seg_list *segs, ori_import_stats *found, ori_segment **segments,
+                           int *count, ori_import_stats *stats)
+{
+    if (st != ORI_OK) {
+        ori__free(segs->items);
+        return st;
+    }
+    found->segments = segs->count;
+    if (stats) *stats = *found;
+    *segments = segs->items;
+    *count = segs->count;
+    return ORI_OK;
 }
 
 // --- formats ---------------------------------------------------------------------------------
@@ -104,7 +126,7 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
     *count = 0;
-    ori__stats_clear(stats);
+    stats_clear(stats);
     if (format == ORI_FORMAT_UNKNOWN) format = ori_format_from_path(path);
     if (format != ORI_FORMAT_SVG && format != ORI_FORMAT_OPX && format != ORI_FORMAT_CP)
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "cannot read segments from a '%s' file", ori_format_name(format));

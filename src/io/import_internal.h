@@ -22,8 +22,12 @@ void ori__seg_push(ori__seg_list *list, double ax, double ay, double bx, double 
 // number of characters consumed (0 when there is no number) and the value in *out.
 size_t ori__scan_number(const char *s, double *out);
 
-// Reset stats (may be NULL).
-void ori__stats_clear(ori_import_stats *stats);
+// The start of a reader ori_X_read_segments: its outputs cleared (stats may be NULL).
+void ori__reader_begin(ori_segment **segments, int *count, ori_import_stats *stats, ori_error *error);
+// The end of a reader: on success the segments and the statistics found (their segment count
+// set) are handed out; on failure the list is freed. Returns st.
+ori_status ori__reader_end(ori_status st, ori__seg_list *segs, ori_import_stats *found, ori_segment **segments,
+                           int *count, ori_import_stats *stats);
 
 // Parse XML text into a tree without network access or entity substitution; the first error
 // with its line and column (svg.c). *doc is NULL on failure; free it with xmlFreeDoc.
