@@ -14,6 +14,8 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "pattern/pattern_internal.h"
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 enum { MAX_CREASES = 48 };
@@ -25,12 +27,6 @@ static double coord(const uint8_t *data, size_t i, int k) { return (double)(data
 static double jitter(uint8_t flags, int shift, double tol) { return ((double)((flags >> shift) & 3) - 1.5) / 2.5 * tol; }
 
 static double clamp16(double x) { return x < 0.0 ? 0.0 : (x > 16.0 ? 16.0 : x); }
-
-static int find_root(int *parent, int x)
-{
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-}
 
 static void check_sheet(ori_pattern *p)
 {
@@ -114,16 +110,10 @@ static void soup(const uint8_t *data, size_t size)
     ori_insert_result r;
     ori_error err;
     if (ori_pattern_from_segments(segs, n, &def, &p, &r, &err) != ORI_OK) abort(); // always planarises and builds
-    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p), parts = V;
-    int *parent = malloc(sizeof(int) * (size_t)(V + 1));
-    for (int v = 0; v < V; ++v) parent[v] = v;
-    for (int e = 0; e < E; ++e) {
-        ori_edge ed = ori_pattern_edge(p, e);
-        int a = find_root(parent, ed.v[0]), b = find_root(parent, ed.v[1]);
-        if (a != b) parent[a] = b, parts--;
-    }
-    free(parent);
-    if (V - E + ori_pattern_face_count(p) != parts) abort();
+    int V = ori_pattern_vertex_count(p), *part = malloc(sizeof(int) * (size_t)(V + 1));
+    int parts = ori__pattern_parts(p, part);
+    free(part);
+    if (V - ori_pattern_edge_count(p) + ori_pattern_face_count(p) != parts) abort();
     ori_pattern_destroy(p);
 }
 

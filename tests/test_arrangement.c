@@ -529,24 +529,13 @@ static ori_v2 jitter(ori_v2 x, double radius, unsigned *s)
     return ori_v2_make(x.x + r * cos(a), x.y + r * sin(a));
 }
 
-static int find_root(int *parent, int x)
-{
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-}
-
 // V − E + F = number of connected parts (faces traced from the planar graph, holes included).
 static void check_euler(const ori_pattern *p)
 {
-    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p), F = ori_pattern_face_count(p), parts = V;
-    int *parent = malloc(sizeof(int) * (size_t)(V + 1));
-    for (int v = 0; v < V; ++v) parent[v] = v;
-    for (int e = 0; e < E; ++e) {
-        ori_edge ed = ori_pattern_edge(p, e);
-        int a = find_root(parent, ed.v[0]), b = find_root(parent, ed.v[1]);
-        if (a != b) parent[a] = b, parts--;
-    }
-    free(parent);
+    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p), F = ori_pattern_face_count(p);
+    int *part = malloc(sizeof(int) * (size_t)(V + 1));
+    int parts = ori__pattern_parts(p, part);
+    free(part);
     cr_assert_eq(V - E + F, parts, "Euler: V %d E %d F %d, %d parts", V, E, F, parts);
 }
 

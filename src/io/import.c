@@ -144,16 +144,6 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
 
 // --- planarisation and clean-up --------------------------------------------------------------
 
-// Union-find over edges (path halving).
-static int find_root(int *parent, int x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
 // Remove every vertex that only joins two collinear edges (within tol) of equal assignment and
 // fold angle; the chains become single edges. Returns a new unbuilt pattern, or NULL when there
 // is nothing to merge.
@@ -179,7 +169,7 @@ static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
         double dist = fabs(ori_orient2d(pu, pw, pv)) / len;
         if (dist > tol || ori_v2_dot(ori_v2_sub(pu, pv), ori_v2_sub(pw, pv)) >= 0.0) continue;
         removed[v] = 1;
-        int a = find_root(parent, ed[0]), b = find_root(parent, ed[1]);
+        int a = ori__uf_root(parent, ed[0]), b = ori__uf_root(parent, ed[1]);
         if (a != b) parent[a < b ? b : a] = a < b ? a : b;
         merged++;
     }
@@ -198,7 +188,7 @@ static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
     int *end1 = ori__alloc(sizeof(int) * (size_t)(ne ? ne : 1));
     for (int e = 0; e < ne; ++e) end0[e] = end1[e] = ORI_NULL_INDEX;
     for (int e = 0; e < ne; ++e) {
-        int r = find_root(parent, e);
+        int r = ori__uf_root(parent, e);
         for (int k = 0; k < 2; ++k) {
             int v = p->edges[e].v[k];
             if (removed[v]) continue;
@@ -208,7 +198,7 @@ static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
     }
     // One edge per group, at the position of its lowest edge index (the root).
     for (int e = 0; e < ne; ++e) {
-        if (find_root(parent, e) != e) continue;
+        if (ori__uf_root(parent, e) != e) continue;
         ORI_ASSERT(end0[e] != ORI_NULL_INDEX && end1[e] != ORI_NULL_INDEX);
         ori_pattern_add_edge(q, end0[e], end1[e], p->edges[e].assignment, p->edges[e].fold_angle_rad);
     }
@@ -276,19 +266,12 @@ static ori_status check_islands(const ori_pattern *p, ori_error *error)
 {
     int nv = p->vertex_count;
     int *comp = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
-    for (int v = 0; v < nv; ++v) comp[v] = v;
-    for (int e = 0; e < p->edge_count; ++e) {
-        int a = find_root(comp, p->edges[e].v[0]), b = find_root(comp, p->edges[e].v[1]);
-        if (a != b) comp[a < b ? b : a] = a < b ? a : b;
-    }
+    int parts = ori__pattern_parts(p, comp);
     // leftmost (then lowest) vertex of each component
     int *left = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
     for (int v = 0; v < nv; ++v) left[v] = ORI_NULL_INDEX;
-    int parts = 0;
     for (int v = 0; v < nv; ++v) {
-        int r = find_root(comp, v);
-        comp[v] = r;
-        if (left[r] == ORI_NULL_INDEX) parts++;
+        int r = comp[v];
         ori_v3 a = p->vertices[v];
         if (left[r] == ORI_NULL_INDEX || a.x < p->vertices[left[r]].x ||
             (a.x == p->vertices[left[r]].x && a.y < p->vertices[left[r]].y))
