@@ -5,6 +5,21 @@
 
 #include <orikin/math.h>
 
+// The y range [*lo, *hi] of segment ab (a.x <= b.x) over the x range [xl, xr], for entering
+// the segment in the columns of a grid; all of ab's y range when ab is vertical or does not reach
+// into [xl, xr] (rounding at a column's edge).
+static inline void ori__segment_y_range(ori_v2 a, ori_v2 b, double xl, double xr, double *lo, double *hi)
+{
+    double y0 = a.y, y1 = b.y, x0 = xl > a.x ? xl : a.x, x1 = xr < b.x ? xr : b.x;
+    if (b.x > a.x && x0 <= x1) {
+        double t0 = (x0 - a.x) / (b.x - a.x), t1 = (x1 - a.x) / (b.x - a.x);
+        y0 = a.y + t0 * (b.y - a.y);
+        y1 = a.y + t1 * (b.y - a.y);
+    }
+    *lo = y0 < y1 ? y0 : y1;
+    *hi = y0 < y1 ? y1 : y0;
+}
+
 // c, collinear with ab (the caller checked), lies in the closed bounding box of ab. (Out of
 // line: it is off the hot path of ori__segments_conflict.)
 bool ori__in_segment_box(ori_v2 a, ori_v2 b, ori_v2 c);

@@ -326,22 +326,8 @@ static void grid_cells(arr *A, ori_v2 a, ori_v2 b, double pad)
     }
     int c0 = grid_col(g, a.x - pad), c1 = grid_col(g, b.x + pad);
     for (int cx = c0; cx <= c1; ++cx) {
-        double xl = g->x0 + (double)cx * g->cell - pad, xr = g->x0 + (double)(cx + 1) * g->cell + pad;
-        double lo = fmax(a.x, xl), hi = fmin(b.x, xr);
         double y0, y1;
-        if (b.x > a.x && lo <= hi) {
-            double t0 = clamp01((lo - a.x) / (b.x - a.x)), t1 = clamp01((hi - a.x) / (b.x - a.x));
-            y0 = a.y + t0 * (b.y - a.y);
-            y1 = a.y + t1 * (b.y - a.y);
-        } else {
-            y0 = a.y;
-            y1 = b.y;
-        }
-        if (y0 > y1) {
-            double t = y0;
-            y0 = y1;
-            y1 = t;
-        }
+        ori__segment_y_range(a, b, g->x0 + (double)cx * g->cell - pad, g->x0 + (double)(cx + 1) * g->cell + pad, &y0, &y1);
         int r0 = grid_row(g, y0 - pad) - 1, r1 = grid_row(g, y1 + pad) + 1;
         if (r0 < 0) r0 = 0;
         if (r1 >= g->ny) r1 = g->ny - 1;

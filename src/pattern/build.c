@@ -244,21 +244,8 @@ static void grid_enter(const ori_pattern *p, int e, const crossing_grid *g, int 
     if (c1 >= nx) c1 = nx - 1;
     for (int64_t cx = c0; cx <= c1; ++cx) {
         // y-range of the segment within this column (padded by one cell for rounding)
-        double x0 = fmax(a.x, minx + (double)cx * cell), x1 = fmin(b.x, minx + (double)(cx + 1) * cell);
-        double y0, y1;
-        if (b.x > a.x) {
-            double t0 = (x0 - a.x) / (b.x - a.x), t1 = (x1 - a.x) / (b.x - a.x);
-            y0 = a.y + t0 * (b.y - a.y);
-            y1 = a.y + t1 * (b.y - a.y);
-        } else {
-            y0 = a.y;
-            y1 = b.y;
-        }
-        if (y0 > y1) {
-            double t = y0;
-            y0 = y1;
-            y1 = t;
-        }
+        double x0 = fmax(a.x, minx + (double)cx * cell), y0, y1;
+        ori__segment_y_range(a, b, minx + (double)cx * cell, minx + (double)(cx + 1) * cell, &y0, &y1);
         int64_t r0 = (int64_t)floor((y0 - miny) / cell) - 1, r1 = (int64_t)floor((y1 - miny) / cell) + 1;
         if (r0 < 0) r0 = 0;
         if (r1 >= ny) r1 = ny - 1;
