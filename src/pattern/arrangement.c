@@ -27,15 +27,12 @@
 #include "../geometry/geometry_internal.h"
 #include "pattern_internal.h"
 
-ori_insert_def ori_default_insert_def(void)
-{
-    ori_insert_def def;
-    def.overlap = ORI_OVERLAP_KEEP_BOUNDARY;
-    def.name_faces = true;
-    def.length_scale = ORI_INSERT_AUTO_SCALE;
-    def.internal_value = ORI__DEF_COOKIE;
-    return def;
-}
+static const ori_insert_def default_def = {.overlap = ORI_OVERLAP_KEEP_BOUNDARY,
+                                           .name_faces = true,
+                                           .length_scale = ORI_INSERT_AUTO_SCALE,
+                                           .internal_value = ORI__DEF_COOKIE};
+
+ori_insert_def ori_default_insert_def(void) { return default_def; }
 
 // --- small geometry ---------------------------------------------------------------------
 
@@ -1641,23 +1638,31 @@ static plan_outcome insert_one(arr *A, ori_v2 a, ori_v2 b, ori_assignment asg, d
     return r;
 }
 
-static void bbox_with(const ori_pattern *p, double *lo_x, double *lo_y, double *hi_x, double *hi_y)
+// Grow the box [lx, hx] × [ly, hy] by the pattern's vertices; returns its diagonal (1 when it
+// has none: the scale of a single point).
+static double grow_box(const ori_pattern *p, double *lx, double *ly, double *hx, double *hy)
 {
     for (int v = 0; v < p->vertex_count; ++v) {
-        *lo_x = fmin(*lo_x, p->vertices[v].x);
-        *lo_y = fmin(*lo_y, p->vertices[v].y);
-        *hi_x = fmax(*hi_x, p->vertices[v].x);
-        *hi_y = fmax(*hi_y, p->vertices[v].y);
+        *lx = fmin(*lx, p->vertices[v].x);
+        *ly = fmin(*ly, p->vertices[v].y);
+        *hx = fmax(*hx, p->vertices[v].x);
+        *hy = fmax(*hy, p->vertices[v].y);
     }
+    double d = hypot(*hx - *lx, *hy - *ly);
+    return d > 0.0 && isfinite(d) ? d : 1.0;
 }
 
 static bool finite_v2(ori_v2 a) { return isfinite(a.x) && isfinite(a.y); }
 
-static ori_status check_common(const ori_pattern *p, const ori_insert_def *def, ori_error *error)
+// What every insertion does first: outputs cleared, the defaults for a NULL def, the checks.
+static ori_status start(const ori_pattern *p, const ori_insert_def **def, ori_insert_result *out, ori_error *error)
 {
-    ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
-    ORI_ASSERT(def->length_scale == ORI_INSERT_AUTO_SCALE || def->length_scale > 0.0);
-    ORI_ASSERT((int)def->overlap >= 0 && def->overlap <= ORI_OVERLAP_REPLACE);
+    if (!*def) *def = &default_def;
+    ori_error_clear(error);
+    if (out) memset(out, 0, sizeof *out);
+    ORI_ASSERT((*def)->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT((*def)->length_scale == ORI_INSERT_AUTO_SCALE || (*def)->length_scale > 0.0);
+    ORI_ASSERT((int)(*def)->overlap >= 0 && (*def)->overlap <= ORI_OVERLAP_REPLACE);
     if (p->folded_form)
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "segments can only be inserted into a flat crease pattern");
     for (int v = 0; v < p->vertex_count; ++v)
@@ -1674,31 +1679,27 @@ static ori_status check_common(const ori_pattern *p, const ori_insert_def *def, 
     return ORI_OK;
 }
 
+static void arr_init(arr *A, ori_pattern *p, const ori_insert_def *def, double scale)
+{
+    memset(A, 0, sizeof *A);
+    A->p = p;
+    A->def = def;
+    A->tol = ORI_TOL_LENGTH_REL * scale;
+    A->tol2 = A->tol * A->tol;
+}
+
 ori_status ori_pattern_insert_segment(ori_pattern *p, ori_v2 a, ori_v2 b, ori_assignment asg, double angle,
                                       const ori_insert_def *def, ori_insert_result *out, ori_error *error)
 {
     ORI_ASSERT(p && (int)asg >= 0 && asg < ORI_ASSIGN_COUNT);
-    ori_insert_def defaults = ori_default_insert_def();
-    if (!def) def = &defaults;
-    ori_error_clear(error);
-    if (out) memset(out, 0, sizeof *out);
-    ori_status st = check_common(p, def, error);
+    ori_status st = start(p, &def, out, error);
     if (st != ORI_OK) return st;
     if (!finite_v2(a) || !finite_v2(b) || !isfinite(angle))
         return ori__fail(error, ORI_ERR_RANGE, "segment coordinates and fold angle must be finite");
-    double scale = def->length_scale;
-    if (scale == ORI_INSERT_AUTO_SCALE) {
-        double lx = fmin(a.x, b.x), ly = fmin(a.y, b.y), hx = fmax(a.x, b.x), hy = fmax(a.y, b.y);
-        bbox_with(p, &lx, &ly, &hx, &hy);
-        scale = hypot(hx - lx, hy - ly);
-        if (!(scale > 0.0) || !isfinite(scale)) scale = 1.0;
-    }
+    double lx = fmin(a.x, b.x), ly = fmin(a.y, b.y), hx = fmax(a.x, b.x), hy = fmax(a.y, b.y);
+    double scale = def->length_scale != ORI_INSERT_AUTO_SCALE ? def->length_scale : grow_box(p, &lx, &ly, &hx, &hy);
     arr A;
-    memset(&A, 0, sizeof A);
-    A.p = p;
-    A.def = def;
-    A.tol = ORI_TOL_LENGTH_REL * scale;
-    A.tol2 = A.tol * A.tol;
+    arr_init(&A, p, def, scale);
     faces_load(&A);
     plan_outcome r = insert_one(&A, a, b, asg, angle);
     if (r == PLAN_OK) faces_store(&A);
@@ -1733,11 +1734,7 @@ static ori_status insert_many(ori_pattern *p, const ori_segment *segs, int count
                               bool may_drop, ori_insert_result *out, ori_error *error)
 {
     ORI_ASSERT(p && (segs || count == 0) && count >= 0);
-    ori_insert_def defaults = ori_default_insert_def();
-    if (!def) def = &defaults;
-    ori_error_clear(error);
-    if (out) memset(out, 0, sizeof *out);
-    ori_status st = check_common(p, def, error);
+    ori_status st = start(p, &def, out, error);
     if (st != ORI_OK) return st;
     double lx = DBL_MAX, ly = DBL_MAX, hx = -DBL_MAX, hy = -DBL_MAX, total_len = 0.0;
     for (int i = 0; i < count; ++i) {
@@ -1752,16 +1749,9 @@ static ori_status insert_many(ori_pattern *p, const ori_segment *segs, int count
         total_len += ori_v2_norm(ori_v2_sub(s->b, s->a));
     }
     if (count == 0) return ORI_OK;
-    bbox_with(p, &lx, &ly, &hx, &hy);
-    double diag = hypot(hx - lx, hy - ly);
-    if (!(diag > 0.0) || !isfinite(diag)) diag = 1.0;
-    double scale = def->length_scale == ORI_INSERT_AUTO_SCALE ? diag : def->length_scale;
+    double diag = grow_box(p, &lx, &ly, &hx, &hy);
     arr A;
-    memset(&A, 0, sizeof A);
-    A.p = p;
-    A.def = def;
-    A.tol = ORI_TOL_LENGTH_REL * scale;
-    A.tol2 = A.tol * A.tol;
+    arr_init(&A, p, def, def->length_scale == ORI_INSERT_AUTO_SCALE ? diag : def->length_scale);
     A.may_drop = may_drop;
     // About one cell per average segment length, at most ~4 cells per element.
     double cell = fmax(total_len / (double)count, diag / 4096.0);
