@@ -228,3 +228,27 @@ ori_mechanism *test_mechanism_of(const ori_pattern *p)
     cr_assert_eq(ori_mechanism_create(&md, &m, &err), ORI_OK, "%s", err.message);
     return m;
 }
+
+test_open_corner test_open_corner_load(void)
+{
+    test_open_corner c;
+    c.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    c.m = test_mechanism_of(c.p);
+    c.diag = test_edge_at(c.p, 1, 1, 0, 0);
+    c.down = test_edge_at(c.p, 1, 1, 1, 0);
+    c.right = test_edge_at(c.p, 1, 1, 2, 1);
+    c.up = test_edge_at(c.p, 1, 1, 1, 2);
+    c.left = test_edge_at(c.p, 1, 1, 0, 1);
+    c.t1 = test_face_at(c.p, 0.3, 0.7);
+    c.t2 = test_face_at(c.p, 0.7, 0.3);
+    c.lr = test_face_at(c.p, 1.5, 0.5);
+    c.ur = test_face_at(c.p, 1.5, 1.5);
+    c.ul = test_face_at(c.p, 0.5, 1.5);
+    return c;
+}
+
+void test_open_corner_free(test_open_corner *c)
+{
+    ori_mechanism_destroy(c->m);
+    ori_pattern_destroy(c->p);
+}

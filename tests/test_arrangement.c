@@ -80,6 +80,35 @@ static void check_invariants(ori_pattern *p, double sheet_area)
     cr_assert_float_eq(total, sheet_area, 1e-9 * sheet_area);
 }
 
+// The faces the arrangement maintained are the faces of the planar graph: tracing them from
+// scratch (ori_pattern_build on a copy without faces) finds as many.
+static void check_traced_faces(const ori_pattern *p, const char *what)
+{
+    ori_pattern *q = ori_pattern_clone(p);
+    ori_pattern_clear_faces(q);
+    build_ok(q);
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p), "%s: traced faces", what);
+    ori_pattern_destroy(q);
+}
+
+// The counts of vertices, edges and faces (a failed insertion must leave them as they were).
+typedef struct counts {
+    int v, e, f;
+} counts;
+
+static counts counts_of(const ori_pattern *p)
+{
+    counts c = {ori_pattern_vertex_count(p), ori_pattern_edge_count(p), ori_pattern_face_count(p)};
+    return c;
+}
+
+static void assert_counts(const ori_pattern *p, counts c)
+{
+    cr_assert_eq(ori_pattern_vertex_count(p), c.v);
+    cr_assert_eq(ori_pattern_edge_count(p), c.e);
+    cr_assert_eq(ori_pattern_face_count(p), c.f);
+}
+
 static double edge_length(const ori_pattern *p, int e)
 {
     ori_edge ed = ori_pattern_edge(p, e);
@@ -223,9 +252,7 @@ Test(arrangement, degenerate_and_bad_input_leave_pattern_unchanged)
     cr_assert(strstr(err.message, "shorter than the length tolerance") != NULL);
     st = ori_pattern_insert_segment(p, ori_v2_make(NAN, 0), ori_v2_make(1, 0), ORI_ASSIGN_VALLEY, 0.0, NULL, &r, &err);
     cr_assert_eq(st, ORI_ERR_RANGE);
-    cr_assert_eq(ori_pattern_vertex_count(p), 4);
-    cr_assert_eq(ori_pattern_edge_count(p), 4);
-    cr_assert_eq(ori_pattern_face_count(p), 1);
+    assert_counts(p, (counts){4, 4, 1});
     ori_pattern_set_folded_form(p, true);
     st = ori_pattern_insert_segment(p, ori_v2_make(0, 0), ori_v2_make(1, 1), ORI_ASSIGN_VALLEY, 0.0, NULL, &r, &err);
     cr_assert_eq(st, ORI_ERR_UNSUPPORTED);
@@ -394,12 +421,7 @@ Test(arrangement, thousands_of_random_creases)
     }
     check_invariants(p, 1.0);
     cr_assert_gt(ori_pattern_face_count(p), 2000);
-    // Faces from the arrangement equal faces traced from the planar graph.
-    ori_pattern *q = ori_pattern_clone(p);
-    ori_pattern_clear_faces(q);
-    build_ok(q);
-    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
-    ori_pattern_destroy(q);
+    check_traced_faces(p, "2000 creases");
     ori_pattern_destroy(p);
 }
 
@@ -506,7 +528,7 @@ Test(arrangement, a_merge_that_would_collapse_a_face_is_refused)
     ori_pattern *p = sheet(100, 100);
     insert_ok(p, 0, 0, 100, 40, ORI_ASSIGN_VALLEY, NULL);
     insert_ok(p, 0, 0, 100, 41, ORI_ASSIGN_MOUNTAIN, NULL);
-    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p), F = ori_pattern_face_count(p);
+    counts before = counts_of(p);
     ori_insert_def def = ori_default_insert_def();
     def.length_scale = 0.02 / ORI_TOL_LENGTH_REL; // the creases are 0.01 apart at x = 1
     ori_error err;
@@ -514,9 +536,7 @@ Test(arrangement, a_merge_that_would_collapse_a_face_is_refused)
                                                NULL, &err);
     cr_assert_eq(st, ORI_ERR_DEGENERATE);
     cr_assert(strstr(err.message, "would merge edge") != NULL, "%s", err.message);
-    cr_assert_eq(ori_pattern_vertex_count(p), V);
-    cr_assert_eq(ori_pattern_edge_count(p), E);
-    cr_assert_eq(ori_pattern_face_count(p), F);
+    assert_counts(p, before);
     insert_ok(p, 1, 0, 1, 100, ORI_ASSIGN_VALLEY, NULL);
     check_invariants(p, 1e4);
     ori_pattern_destroy(p);
@@ -641,26 +661,18 @@ Test(arrangement, coarse_snapping_in_a_sheet_keeps_the_faces)
             double da = 0.9 * tol * (2 * rnd(&s) - 1), db = 0.9 * tol * (2 * rnd(&s) - 1);
             a = a.x == 0 || a.x == 100 ? ori_v2_make(a.x, fmin(fmax(a.y + da, 0), 100)) : ori_v2_make(fmin(fmax(a.x + da, 0), 100), a.y);
             b = b.x == 0 || b.x == 100 ? ori_v2_make(b.x, fmin(fmax(b.y + db, 0), 100)) : ori_v2_make(fmin(fmax(b.x + db, 0), 100), b.y);
-            int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p), F = ori_pattern_face_count(p);
+            counts before = counts_of(p);
             ori_error err;
             char msg[300];
             ori_status st = ori_pattern_insert_segment(p, a, b, ORI_ASSIGN_VALLEY, 0.0, &def, NULL, &err);
             cr_assert(st == ORI_OK || st == ORI_ERR_DEGENERATE, "trial %d, chord %d: %s", trial, i,
                       ori_error_format(&err, msg, sizeof msg));
-            if (st != ORI_OK) {
-                cr_assert_eq(ori_pattern_vertex_count(p), V);
-                cr_assert_eq(ori_pattern_edge_count(p), E);
-                cr_assert_eq(ori_pattern_face_count(p), F);
-            }
+            if (st != ORI_OK) assert_counts(p, before);
             applied += st == ORI_OK;
         }
         cr_assert_gt(applied, 20, "trial %d", trial);
         check_invariants(p, 1e4);
-        ori_pattern *q = ori_pattern_clone(p);
-        ori_pattern_clear_faces(q);
-        build_ok(q);
-        cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p), "trial %d: traced faces", trial);
-        ori_pattern_destroy(q);
+        check_traced_faces(p, "coarse snapping");
         ori_pattern_destroy(p);
     }
 }
@@ -718,11 +730,7 @@ static void crease_real_pattern(const char *rel)
     cr_assert_gt(applied, 30);
     build_ok(p);
     cr_assert_float_eq(total_area(p), area, 1e-9 * area);
-    ori_pattern *q = ori_pattern_clone(p);
-    ori_pattern_clear_faces(q);
-    build_ok(q);
-    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p), "%s: traced faces", rel);
-    ori_pattern_destroy(q);
+    check_traced_faces(p, rel);
     ori_pattern_destroy(p);
 }
 
