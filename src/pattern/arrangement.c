@@ -595,7 +595,6 @@ static int compare_splits(const void *pa, const void *pb)
     return (a->id > b->id) - (a->id < b->id);
 }
 
-
 static void reset_marks(arr *A)
 {
     for (int i = 0; i < A->gr_count; ++i)
