@@ -67,6 +67,20 @@ bool cli_parse_int(const char *s, int *out)
     return true;
 }
 
+int cli_option_frame(const char *cmd, int argc, char **argv, int *i, int *frame)
+{
+    const char *v = cli_option_value(cmd, argc, argv, i);
+    if (!v) return CLI_EXIT_USAGE;
+    if (!cli_parse_int(v, frame) || *frame < 0) return cli_usage(cmd, "--frame needs a frame number ≥ 0");
+    return CLI_EXIT_OK;
+}
+
+bool cli_parse_crease_assignment(const char *s, ori_assignment *out)
+{
+    return s && strlen(s) == 1 && ori_assignment_from_char(s[0], out) &&
+           (ori_assignment_is_fold(*out) || *out == ORI_ASSIGN_FLAT);
+}
+
 bool cli_parse_doubles(const char *s, double *out, int n)
 {
     if (!s) return false;

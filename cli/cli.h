@@ -45,9 +45,14 @@ bool cli_parse_int(const char *s, int *out);
 bool cli_parse_doubles(const char *s, double *out, int n);
 // A comma-separated list of integers; returns the count (≤ cap) or -1 on a bad list.
 int cli_parse_int_list(const char *s, int *out, int cap);
+// The assignment of a new crease: one letter, M, V, F or U.
+bool cli_parse_crease_assignment(const char *s, ori_assignment *out);
 
 // The value after option argv[*i] (advancing *i); NULL (after a usage message) when missing.
 const char *cli_option_value(const char *cmd, int argc, char **argv, int *i);
+// The frame number ≥ 0 after --frame (argv[*i], advancing *i) into *frame: CLI_EXIT_OK, or
+// CLI_EXIT_USAGE after a usage message.
+int cli_option_frame(const char *cmd, int argc, char **argv, int *i, int *frame);
 
 // Load a FOLD file and the pattern of a frame; on failure print the error and return
 // CLI_EXIT_INPUT (with *doc and *pattern NULL), else CLI_EXIT_OK.

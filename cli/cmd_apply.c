@@ -5,12 +5,6 @@
 
 #include "cli.h"
 
-static bool parse_assignment(const char *s, ori_assignment *a)
-{
-    return s && strlen(s) == 1 && ori_assignment_from_char(s[0], a) &&
-           (ori_assignment_is_fold(*a) || *a == ORI_ASSIGN_FLAT);
-}
-
 static void list_builtins(void)
 {
     for (int i = 0; i < ori_collection_builtin_count(); ++i)
@@ -48,7 +42,7 @@ static int run(int argc, char **argv)
             if (!(face_spec = cli_option_value("apply", argc, argv, &i))) return CLI_EXIT_USAGE;
         } else if (strcmp(argv[i], "--assign") == 0) {
             if (!(v = cli_option_value("apply", argc, argv, &i))) return CLI_EXIT_USAGE;
-            if (!parse_assignment(v, &asg)) return cli_usage("apply", "--assign takes M, V, F or U");
+            if (!cli_parse_crease_assignment(v, &asg)) return cli_usage("apply", "--assign takes M, V, F or U");
             has_asg = true;
         } else if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
             if (!(out = cli_option_value("apply", argc, argv, &i))) return CLI_EXIT_USAGE;

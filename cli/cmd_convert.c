@@ -29,9 +29,7 @@ static int run(int argc, char **argv)
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--weld") == 0) weld = true;
         else if (strcmp(argv[i], "--frame") == 0) {
-            const char *v = cli_option_value("convert", argc, argv, &i);
-            if (!v) return CLI_EXIT_USAGE;
-            if (!cli_parse_int(v, &frame) || frame < 0) return cli_usage("convert", "--frame needs a frame number ≥ 0");
+            if (cli_option_frame("convert", argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
             frame_given = true;
         } else if (strcmp(argv[i], "--tolerance") == 0) {
             const char *v = cli_option_value("convert", argc, argv, &i);

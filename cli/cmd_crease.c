@@ -38,9 +38,7 @@ static int run(int argc, char **argv)
             all = true;
         } else if (strcmp(argv[i], "--assign") == 0) {
             if (!(v = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
-            if (strlen(v) != 1 || !ori_assignment_from_char(v[0], &asg) ||
-                !(ori_assignment_is_fold(asg) || asg == ORI_ASSIGN_FLAT))
-                return cli_usage("crease", "--assign takes M, V, F or U");
+            if (!cli_parse_crease_assignment(v, &asg)) return cli_usage("crease", "--assign takes M, V, F or U");
         } else if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
             if (!(out = cli_option_value("crease", argc, argv, &i))) return CLI_EXIT_USAGE;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {

@@ -11,9 +11,7 @@ static int run(int argc, char **argv)
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--json") == 0) json = true;
         else if (strcmp(argv[i], "--frame") == 0) {
-            const char *v = cli_option_value("info", argc, argv, &i);
-            if (!v) return CLI_EXIT_USAGE;
-            if (!cli_parse_int(v, &frame) || frame < 0) return cli_usage("info", "--frame needs a frame number ≥ 0");
+            if (cli_option_frame("info", argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') return cli_usage("info", "unknown option %s", argv[i]);
         else if (!path) path = argv[i];
         else return cli_usage("info", "one FILE only");

@@ -52,38 +52,13 @@ ori_pattern *test_load_pattern(const char *path, int frame)
     return p;
 }
 
-int test_run_cli(const char *args, char **output)
+// Run `orikin ARGS` from the repository root with stderr redirected as given (a shell
+// redirection); its stdout into *out (malloc'd; freed when out is NULL). Returns the exit code.
+static int run_cli(const char *args, const char *stderr_to, char **out)
 {
-    char *cmd = NULL;
-    size_t n = strlen(args) + strlen(ORI_CLI_PATH) + strlen(ORI_SOURCE_DIR) + 64;
-    cmd = malloc(n);
-    snprintf(cmd, n, "cd '%s' && '%s' %s 2>&1", ORI_SOURCE_DIR, ORI_CLI_PATH, args);
-    FILE *f = popen(cmd, "r");
-    free(cmd);
-    cr_assert_not_null(f);
-    size_t cap = 4096, len = 0;
-    char *buf = malloc(cap);
-    size_t got;
-    while ((got = fread(buf + len, 1, cap - len - 1, f)) > 0) {
-        len += got;
-        if (cap - len < 2) buf = realloc(buf, cap *= 2);
-    }
-    buf[len] = '\0';
-    int status = pclose(f);
-    if (output) *output = buf;
-    else free(buf);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-int test_run_cli_split(const char *args, char **out, char **err)
-{
-    char errpath[] = "/tmp/orikin-stderr-XXXXXX";
-    int fd = mkstemp(errpath);
-    cr_assert_geq(fd, 0);
-    close(fd);
-    size_t n = strlen(args) + strlen(ORI_CLI_PATH) + strlen(ORI_SOURCE_DIR) + strlen(errpath) + 64;
+    size_t n = strlen(args) + strlen(ORI_CLI_PATH) + strlen(ORI_SOURCE_DIR) + strlen(stderr_to) + 64;
     char *cmd = malloc(n);
-    snprintf(cmd, n, "cd '%s' && '%s' %s 2>'%s'", ORI_SOURCE_DIR, ORI_CLI_PATH, args, errpath);
+    snprintf(cmd, n, "cd '%s' && '%s' %s %s", ORI_SOURCE_DIR, ORI_CLI_PATH, args, stderr_to);
     FILE *f = popen(cmd, "r");
     free(cmd);
     cr_assert_not_null(f);
@@ -97,11 +72,24 @@ int test_run_cli_split(const char *args, char **out, char **err)
     int status = pclose(f);
     if (out) *out = buf;
     else free(buf);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+int test_run_cli(const char *args, char **output) { return run_cli(args, "2>&1", output); }
+
+int test_run_cli_split(const char *args, char **out, char **err)
+{
+    char errpath[] = "/tmp/orikin-stderr-XXXXXX", redirect[64];
+    int fd = mkstemp(errpath);
+    cr_assert_geq(fd, 0);
+    close(fd);
+    snprintf(redirect, sizeof redirect, "2>'%s'", errpath);
+    int rc = run_cli(args, redirect, out);
     char *e = test_read_text(errpath);
     unlink(errpath);
     if (err) *err = e ? e : strdup("");
     else free(e);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return rc;
 }
 
 char *test_tmpdir(void)
@@ -241,4 +229,28 @@ ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad
     ori_error err;
     cr_assert_eq(ori_generate(&g, &p, classes, &err), ORI_OK, "%s", err.message);
     return p;
+}
+
+test_open_corner test_open_corner_load(void)
+{
+    test_open_corner c;
+    c.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    c.m = test_mechanism_of(c.p);
+    c.diag = test_edge_at(c.p, 1, 1, 0, 0);
+    c.down = test_edge_at(c.p, 1, 1, 1, 0);
+    c.right = test_edge_at(c.p, 1, 1, 2, 1);
+    c.up = test_edge_at(c.p, 1, 1, 1, 2);
+    c.left = test_edge_at(c.p, 1, 1, 0, 1);
+    c.t1 = test_face_at(c.p, 0.3, 0.7);
+    c.t2 = test_face_at(c.p, 0.7, 0.3);
+    c.lr = test_face_at(c.p, 1.5, 0.5);
+    c.ur = test_face_at(c.p, 1.5, 1.5);
+    c.ul = test_face_at(c.p, 0.5, 1.5);
+    return c;
+}
+
+void test_open_corner_free(test_open_corner *c)
+{
+    ori_mechanism_destroy(c->m);
+    ori_pattern_destroy(c->p);
 }

@@ -42,6 +42,21 @@ int test_face_at(const ori_pattern *p, double x, double y);
 // The mechanism of a built flat pattern (fails the test on error).
 ori_mechanism *test_mechanism_of(const ori_pattern *p);
 
+// The thesis' open corner (examples/patterns/open-corner.fold, 2 × 2 with the centre (1, 1)) with
+// its mechanism; creases and faces found by coordinates, as the file's order may change: the
+// diagonal (1,1)–(0,0) and the creases from the centre down, right, up and left; the triangles
+// t1 (above the diagonal) and t2 (below), and the squares lr, ur, ul (lower right, upper right,
+// upper left). The one set-up for tests that fold it (test_sequence.c; test_kinematics.c's own
+// copy can adopt it). Free with test_open_corner_free.
+typedef struct test_open_corner {
+    ori_pattern *p;
+    ori_mechanism *m;
+    int diag, down, right, up, left;
+    int t1, t2, lr, ur, ul;
+} test_open_corner;
+test_open_corner test_open_corner_load(void);
+void test_open_corner_free(test_open_corner *c);
+
 #endif
 
 // Local flat-foldability of an interior vertex of a built flat pattern, checked independently

@@ -80,6 +80,35 @@ static void check_invariants(ori_pattern *p, double sheet_area)
     cr_assert_float_eq(total, sheet_area, 1e-9 * sheet_area);
 }
 
+// The faces the arrangement maintained are the faces of the planar graph: tracing them from
+// scratch (ori_pattern_build on a copy without faces) finds as many.
+static void check_traced_faces(const ori_pattern *p, const char *what)
+{
+    ori_pattern *q = ori_pattern_clone(p);
+    ori_pattern_clear_faces(q);
+    build_ok(q);
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p), "%s: traced faces", what);
+    ori_pattern_destroy(q);
+}
+
+// The counts of vertices, edges and faces (a failed insertion must leave them as they were).
+typedef struct counts {
+    int v, e, f;
+} counts;
+
+static counts counts_of(const ori_pattern *p)
+{
+    counts c = {ori_pattern_vertex_count(p), ori_pattern_edge_count(p), ori_pattern_face_count(p)};
+    return c;
+}
+
+static void assert_counts(const ori_pattern *p, counts c)
+{
+    cr_assert_eq(ori_pattern_vertex_count(p), c.v);
+    cr_assert_eq(ori_pattern_edge_count(p), c.e);
+    cr_assert_eq(ori_pattern_face_count(p), c.f);
+}
+
 static double edge_length(const ori_pattern *p, int e)
 {
     ori_edge ed = ori_pattern_edge(p, e);
@@ -223,9 +252,7 @@ Test(arrangement, degenerate_and_bad_input_leave_pattern_unchanged)
     cr_assert(strstr(err.message, "shorter than the length tolerance") != NULL);
     st = ori_pattern_insert_segment(p, ori_v2_make(NAN, 0), ori_v2_make(1, 0), ORI_ASSIGN_VALLEY, 0.0, NULL, &r, &err);
     cr_assert_eq(st, ORI_ERR_RANGE);
-    cr_assert_eq(ori_pattern_vertex_count(p), 4);
-    cr_assert_eq(ori_pattern_edge_count(p), 4);
-    cr_assert_eq(ori_pattern_face_count(p), 1);
+    assert_counts(p, (counts){4, 4, 1});
     ori_pattern_set_folded_form(p, true);
     st = ori_pattern_insert_segment(p, ori_v2_make(0, 0), ori_v2_make(1, 1), ORI_ASSIGN_VALLEY, 0.0, NULL, &r, &err);
     cr_assert_eq(st, ORI_ERR_UNSUPPORTED);
@@ -394,12 +421,7 @@ Test(arrangement, thousands_of_random_creases)
     }
     check_invariants(p, 1.0);
     cr_assert_gt(ori_pattern_face_count(p), 2000);
-    // Faces from the arrangement equal faces traced from the planar graph.
-    ori_pattern *q = ori_pattern_clone(p);
-    ori_pattern_clear_faces(q);
-    build_ok(q);
-    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
-    ori_pattern_destroy(q);
+    check_traced_faces(p, "2000 creases");
     ori_pattern_destroy(p);
 }
 
@@ -464,6 +486,197 @@ Test(arrangement, bulk_skips_degenerate_segments)
     ori_pattern_destroy(p);
 }
 
+// Two edges from one vertex, crossed by a third segment closer together than the tolerance:
+// the crossings snap to one vertex, and the two far parts of the edges then join the same two
+// vertices. They must become one edge (a merge), never two edges with the same end points.
+Test(arrangement, split_parts_that_snap_together_are_one_edge)
+{
+    ori_segment s[3] = {{{1655.555, -2874.012}, {1688.235, -2938.14}, ORI_ASSIGN_FLAT, 0.0},
+                        {{1665.989, -2869.686}, {1688.234, -2938.141}, ORI_ASSIGN_FLAT, 0.0},
+                        {{1617.164, -2938.13}, {1689.158, -2938.115}, ORI_ASSIGN_FLAT, 0.0}};
+    ori_insert_def def = ori_default_insert_def();
+    def.length_scale = 19083609.913247552; // tolerance 0.019
+    ori_pattern *p = NULL;
+    ori_insert_result r;
+    ori_error err;
+    char msg[300];
+    ori_status st = ori_pattern_from_segments(s, 3, &def, &p, &r, &err); // builds: no repeated edge
+    cr_assert_eq(st, ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(r.edges_merged, 1);
+    cr_assert_eq(r.segments_skipped, 0);
+    cr_assert_eq(ori_pattern_vertex_count(p), 6); // 2 + 1 end points (one welded), crossing, 2 ends
+    cr_assert_eq(ori_pattern_edge_count(p), 5);
+    int v = test_vertex_at(p, 1688.235, -2938.14), x = ori_pattern_vertex_count(p) - 2;
+    int e = ori_pattern_find_edge(p, v, x);
+    cr_assert_neq(e, ORI_NULL_INDEX, "the merged part joins the crossing to the shared end");
+    for (int k = 0; k < ori_pattern_edge_count(p); ++k) cr_assert_eq(ori_pattern_edge(p, k).assignment, ORI_ASSIGN_FLAT);
+    ori_pattern_destroy(p);
+    // The same one segment at a time into a pattern without faces (nothing is dropped there).
+    ori_pattern_def pdef = ori_default_pattern_def();
+    p = ori_pattern_create(&pdef);
+    for (int i = 0; i < 3; ++i) cr_assert_eq(ori_pattern_insert_segments(p, s + i, 1, &def, &r, &err), ORI_OK);
+    cr_assert_eq(r.edges_merged, 1);
+    cr_assert_eq(ori_pattern_edge_count(p), 5);
+    build_ok(p);
+    ori_pattern_destroy(p);
+}
+
+// In a pattern with faces the same snap would collapse the thin face between the two edges:
+// refused, leaving the pattern unchanged; the sheet still takes the crease at a finer scale.
+Test(arrangement, a_merge_that_would_collapse_a_face_is_refused)
+{
+    ori_pattern *p = sheet(100, 100);
+    insert_ok(p, 0, 0, 100, 40, ORI_ASSIGN_VALLEY, NULL);
+    insert_ok(p, 0, 0, 100, 41, ORI_ASSIGN_MOUNTAIN, NULL);
+    counts before = counts_of(p);
+    ori_insert_def def = ori_default_insert_def();
+    def.length_scale = 0.02 / ORI_TOL_LENGTH_REL; // the creases are 0.01 apart at x = 1
+    ori_error err;
+    ori_status st = ori_pattern_insert_segment(p, ori_v2_make(1, 0), ori_v2_make(1, 100), ORI_ASSIGN_VALLEY, 0.0, &def,
+                                               NULL, &err);
+    cr_assert_eq(st, ORI_ERR_DEGENERATE);
+    cr_assert(strstr(err.message, "would merge edge") != NULL, "%s", err.message);
+    assert_counts(p, before);
+    insert_ok(p, 1, 0, 1, 100, ORI_ASSIGN_VALLEY, NULL);
+    check_invariants(p, 1e4);
+    ori_pattern_destroy(p);
+}
+
+// Points on circles around each end point, closer to it than the tolerance.
+static ori_v2 jitter(ori_v2 x, double radius, unsigned *s)
+{
+    double r = radius * rnd(s), a = 2 * ORI_PI * rnd(s);
+    return ori_v2_make(x.x + r * cos(a), x.y + r * sin(a));
+}
+
+// V − E + F = number of connected parts (faces traced from the planar graph, holes included).
+static void check_euler(const ori_pattern *p)
+{
+    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p), F = ori_pattern_face_count(p);
+    int *part = malloc(sizeof(int) * (size_t)(V + 1));
+    int parts = ori__pattern_parts(p, part);
+    free(part);
+    cr_assert_eq(V - E + F, parts, "Euler: V %d E %d F %d, %d parts", V, E, F, parts);
+}
+
+static double point_to_edges(const ori_pattern *p, ori_v2 x)
+{
+    double best = INFINITY;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        ori_v2 a = ori__pattern_v2(p, ed.v[0]), d = ori_v2_sub(ori__pattern_v2(p, ed.v[1]), a);
+        double t = ori_v2_dot(ori_v2_sub(x, a), d) / ori_v2_dot(d, d);
+        t = t < 0 ? 0 : (t > 1 ? 1 : t);
+        best = fmin(best, ori_v2_norm(ori_v2_sub(x, ori_v2_add(a, ori_v2_scale(d, t)))));
+    }
+    return best;
+}
+
+// Random near-degenerate segment soups: a few points (at drawing-like coordinates), segments
+// between them, along their lines and to free points, every end point jittered by less than the
+// snap tolerance, which is 1e-2, 1e-3 or 1e-4 of the drawing (a coarse import tolerance). Snapping
+// merges crossings, routes segments through nearby vertices and lays edges onto each other; the
+// result must build with the planarity check, satisfy Euler's formula, and cover every segment.
+static void soup(int trials, int n, bool check_cover)
+{
+    ori_segment *segs = malloc(sizeof *segs * (size_t)n);
+    for (int trial = 0; trial < trials; ++trial) {
+        unsigned s = 77u + 7919u * (unsigned)trial;
+        double tol = trial % 3 == 0 ? 1.0 : (trial % 3 == 1 ? 0.1 : 0.01); // of an extent of 100
+        ori_v2 pts[16];
+        int np = 6 + (int)(rnd(&s) * 10);
+        for (int i = 0; i < np; ++i)
+            for (bool apart = false; !apart;) { // at least 10 tolerances apart
+                pts[i] = ori_v2_make(1000 + 100 * rnd(&s), -3000 + 100 * rnd(&s));
+                apart = true;
+                for (int j = 0; j < i; ++j) apart = apart && ori_v2_norm(ori_v2_sub(pts[i], pts[j])) >= 10 * tol;
+            }
+        int designed_short = 0;
+        for (int i = 0; i < n; ++i) {
+            int a = (int)(rnd(&s) * np), b = (int)(rnd(&s) * np);
+            ori_v2 A = pts[a], B = pts[b];
+            if (i % 3 == 1 && a != b) B = ori_v2_add(A, ori_v2_scale(ori_v2_sub(B, A), 0.2 + 0.6 * rnd(&s)));
+            if (i % 3 == 2)
+                do B = ori_v2_make(1000 + 100 * rnd(&s), -3000 + 100 * rnd(&s));
+                while (ori_v2_norm(ori_v2_sub(A, B)) < 10 * tol);
+            designed_short += A.x == B.x && A.y == B.y;
+            segs[i].a = jitter(A, 0.9 * tol, &s);
+            segs[i].b = jitter(B, 0.9 * tol, &s);
+            segs[i].assignment = (ori_assignment)(1 + i % 4);
+            segs[i].fold_angle_rad = 0.0;
+        }
+        ori_insert_def def = ori_default_insert_def();
+        def.length_scale = tol / ORI_TOL_LENGTH_REL;
+        def.name_faces = false;
+        ori_pattern *p = NULL;
+        ori_insert_result r;
+        ori_error err;
+        char msg[300];
+        ori_status st = ori_pattern_from_segments(segs, n, &def, &p, &r, &err);
+        cr_assert_eq(st, ORI_OK, "trial %d: %s", trial, ori_error_format(&err, msg, sizeof msg));
+        check_euler(p);
+        // Only segments whose ends are jittered copies of one point may collapse (a few
+        // others may be refused in the densest soups, counted as skipped).
+        cr_assert_leq(r.segments_skipped, designed_short + (check_cover ? 0 : n / 50), "trial %d", trial);
+        for (int i = 0; check_cover && i < n; ++i) {
+            if (ori_v2_norm(ori_v2_sub(segs[i].b, segs[i].a)) < 3 * tol) continue;
+            for (int k = 0; k <= 10; ++k) {
+                ori_v2 x = ori_v2_add(segs[i].a, ori_v2_scale(ori_v2_sub(segs[i].b, segs[i].a), 0.1 * k));
+                cr_assert_leq(point_to_edges(p, x), 3 * tol, "trial %d, segment %d at %d/10", trial, i, k);
+            }
+        }
+        ori_pattern_destroy(p);
+    }
+    free(segs);
+}
+
+Test(arrangement, near_degenerate_soups_build_and_cover_their_segments)
+{
+    soup(300, 40, true);
+}
+
+Test(arrangement, dense_near_degenerate_soups_build)
+{
+    soup(20, 200, false);
+}
+
+// The same coarse snapping in a sheet with faces: chords between points jittered along the
+// boundary (so that they stay on it). Every insertion succeeds or is refused leaving the pattern
+// unchanged, and the faces stay a tiling of the sheet.
+Test(arrangement, coarse_snapping_in_a_sheet_keeps_the_faces)
+{
+    for (int trial = 0; trial < 30; ++trial) {
+        unsigned s = 500u + 7919u * (unsigned)trial;
+        double tol = trial % 3 == 0 ? 1.0 : (trial % 3 == 1 ? 0.1 : 0.01);
+        ori_pattern *p = sheet(100, 100);
+        ori_insert_def def = ori_default_insert_def();
+        def.length_scale = tol / ORI_TOL_LENGTH_REL;
+        double t[12];
+        for (int i = 0; i < 12; ++i) t[i] = 4 * rnd(&s);
+        int applied = 0;
+        for (int i = 0; i < 40; ++i) {
+            ori_v2 a = ori_v2_scale(on_boundary(t[(int)(rnd(&s) * 12)]), 100);
+            ori_v2 b = ori_v2_scale(on_boundary(t[(int)(rnd(&s) * 12)]), 100);
+            // (along the side, by less than the tolerance; corners stay put)
+            double da = 0.9 * tol * (2 * rnd(&s) - 1), db = 0.9 * tol * (2 * rnd(&s) - 1);
+            a = a.x == 0 || a.x == 100 ? ori_v2_make(a.x, fmin(fmax(a.y + da, 0), 100)) : ori_v2_make(fmin(fmax(a.x + da, 0), 100), a.y);
+            b = b.x == 0 || b.x == 100 ? ori_v2_make(b.x, fmin(fmax(b.y + db, 0), 100)) : ori_v2_make(fmin(fmax(b.x + db, 0), 100), b.y);
+            counts before = counts_of(p);
+            ori_error err;
+            char msg[300];
+            ori_status st = ori_pattern_insert_segment(p, a, b, ORI_ASSIGN_VALLEY, 0.0, &def, NULL, &err);
+            cr_assert(st == ORI_OK || st == ORI_ERR_DEGENERATE, "trial %d, chord %d: %s", trial, i,
+                      ori_error_format(&err, msg, sizeof msg));
+            if (st != ORI_OK) assert_counts(p, before);
+            applied += st == ORI_OK;
+        }
+        cr_assert_gt(applied, 20, "trial %d", trial);
+        check_invariants(p, 1e4);
+        check_traced_faces(p, "coarse snapping");
+        ori_pattern_destroy(p);
+    }
+}
+
 Test(arrangement, find_edge_at_point)
 {
     ori_pattern *p = sheet(2, 2);
@@ -517,11 +730,7 @@ static void crease_real_pattern(const char *rel)
     cr_assert_gt(applied, 30);
     build_ok(p);
     cr_assert_float_eq(total_area(p), area, 1e-9 * area);
-    ori_pattern *q = ori_pattern_clone(p);
-    ori_pattern_clear_faces(q);
-    build_ok(q);
-    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p), "%s: traced faces", rel);
-    ori_pattern_destroy(q);
+    check_traced_faces(p, rel);
     ori_pattern_destroy(p);
 }
 

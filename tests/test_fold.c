@@ -57,8 +57,9 @@ static int shared_fold_files(char paths[][1400], int cap)
         struct dirent *fe;
         while (s && (fe = readdir(s))) {
             size_t l = strlen(fe->d_name);
-            if (l > 5 && strcmp(fe->d_name + l - 5, ".fold") == 0 && n < cap)
-                snprintf(paths[n++], 1400, "%s/%s", sub, fe->d_name);
+            if (l > 5 && strcmp(fe->d_name + l - 5, ".fold") == 0 && n < cap &&
+                snprintf(paths[n], 1400, "%s/%s", sub, fe->d_name) < 1400)
+                n++;
         }
         if (s) closedir(s);
     }
@@ -233,6 +234,38 @@ Test(fold, faces_are_traced_when_the_file_has_none)
     cr_assert_float_eq(area, sheet, 1e-12 * sheet);
     ori_pattern_destroy(a);
     ori_pattern_destroy(b);
+}
+
+// A tree encloses nothing: its one traced cycle (around every edge, both ways) has zero area, and
+// rounding must not make it a face. Neither may the outer boundary of a part nested in a face.
+Test(fold, trees_have_no_faces)
+{
+    ori_pattern_def def = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&def);
+    ori_pattern_add_vertex(p, ori_v3_make(-1.24, -0.99, 0));
+    ori_pattern_add_vertex(p, ori_v3_make(-1.24, 7.51, 0));
+    ori_pattern_add_vertex(p, ori_v3_make(0.51, -1.24, 0));
+    ori_pattern_add_edge(p, 0, 1, ORI_ASSIGN_BOUNDARY, 0.0);
+    ori_pattern_add_edge(p, 1, 2, ORI_ASSIGN_BOUNDARY, 0.0); // (the shoelace sum of its cycle rounds to 1.8e-15)
+    ori_error err;
+    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_face_count(p), 0);
+    // A star at drawing coordinates, and a square around it: one face (with the star inside).
+    int c = ori_pattern_add_vertex(p, ori_v3_make(1617.164, -2938.13, 0));
+    for (int k = 0; k < 7; ++k) {
+        int v = ori_pattern_add_vertex(p, ori_v3_make(1617.164 + 3.1 * cos(0.9 * k), -2938.13 + 2.7 * sin(0.9 * k), 0));
+        ori_pattern_add_edge(p, c, v, ORI_ASSIGN_VALLEY, 0.0);
+    }
+    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_face_count(p), 0);
+    int sq[4];
+    for (int k = 0; k < 4; ++k)
+        sq[k] = ori_pattern_add_vertex(p, ori_v3_make(1600 + 40 * (k == 1 || k == 2), -2960 + 40 * (k >= 2), 0));
+    for (int k = 0; k < 4; ++k) ori_pattern_add_edge(p, sq[k], sq[(k + 1) % 4], ORI_ASSIGN_BOUNDARY, 0.0);
+    cr_assert_eq(ori_pattern_build(p, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_face_count(p), 1);
+    cr_assert_eq(ori_pattern_face_size(p, 0), 4);
+    ori_pattern_destroy(p);
 }
 
 Test(fold, vertex_edges_are_in_counter_clockwise_order_with_sectors)

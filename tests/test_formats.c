@@ -580,6 +580,50 @@ Test(formats, near_misses_within_the_weld_tolerance_join)
     ori_pattern_destroy(p);
 }
 
+// Origami Simulator's Huffman tower is drawn with 3-decimal coordinates whose end points miss
+// each other by up to 1.4e-3 (5e-7 of the drawing's size). At every weld tolerance above that
+// it imports into a valid pattern (the arrangement once repeated an edge when two crossings
+// snapped together at 1e-5 and 1e-6); below it the drawing falls apart into pieces floating
+// inside faces, which is reported as such.
+Test(formats, huffman_tower_imports_at_every_weld_tolerance)
+{
+    const char *path = test_require_shared("origamisimulator/Curved_huffmanTower.svg");
+    const double ok[] = {1e-3, 3e-4, 1e-4, 5e-5, 2e-5, 1e-5, 5e-6, 2e-6, 1e-6};
+    for (size_t i = 0; i < sizeof ok / sizeof ok[0]; ++i) {
+        ori_import_def def = ori_default_import_def();
+        def.weld_rel = ok[i];
+        ori_pattern *p = NULL;
+        ori_error err;
+        ori_status st = ori_import_file(path, ORI_FORMAT_UNKNOWN, &def, &p, NULL, &err);
+        cr_assert_eq(st, ORI_OK, "tolerance %g: %s", ok[i], ori_error_format(&err, msg, sizeof msg));
+        cr_assert_gt(ori_pattern_face_count(p), 500, "tolerance %g", ok[i]);
+        for (int f = 0; f < ori_pattern_face_count(p); ++f) cr_assert_gt(ori__pattern_face_area2(p, f), 0.0);
+        reload_check(p, "huffman tower");
+        ori_pattern_destroy(p);
+    }
+    for (double weld = 1e-7; weld >= 1e-9; weld /= 10) {
+        ori_import_def def = ori_default_import_def();
+        def.weld_rel = weld;
+        ori_pattern *p = NULL;
+        ori_error err;
+        cr_assert_eq(ori_import_file(path, ORI_FORMAT_UNKNOWN, &def, &p, NULL, &err), ORI_ERR_TOPOLOGY, "tolerance %g", weld);
+        cr_assert_null(p);
+        cr_assert(strstr(err.message, "touch nothing else and lie inside a face") != NULL, "tolerance %g: %s", weld,
+                  err.message);
+    }
+    // and through the CLI
+    char *dir = test_tmpdir(), args[8192];
+    snprintf(args, sizeof args, "convert '%s' '%s/tower.fold' --tolerance 1e-5", path, dir);
+    char *output = NULL;
+    cr_assert_eq(test_run_cli(args, &output), 0, "%s", output);
+    free(output);
+    snprintf(args, sizeof args, "convert '%s' '%s/tower.fold' --tolerance 1e-7", path, dir);
+    cr_assert_eq(test_run_cli(args, &output), 3, "%s", output);
+    cr_assert(strstr(output, "touch nothing else") != NULL, "%s", output);
+    free(output);
+    test_tmpdir_remove(dir);
+}
+
 // --- the FOLD text writer --------------------------------------------------------------------
 
 static void assert_text_equals_jansson_path(const ori_pattern *p)

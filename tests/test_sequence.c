@@ -14,37 +14,7 @@ TestSuite(sequence, .init = test_leak_setup, .fini = test_leak_check);
 
 #define DEG (ORI_PI / 180.0)
 
-typedef struct corner {
-    ori_pattern *p;
-    ori_mechanism *m;
-    int diag, down, right, up, left;
-    int t2, lr, ur, ul;
-} corner;
-
-static corner corner_load(void)
-{
-    corner c;
-    c.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
-    c.m = test_mechanism_of(c.p);
-    c.diag = test_edge_at(c.p, 1, 1, 0, 0);
-    c.down = test_edge_at(c.p, 1, 1, 1, 0);
-    c.right = test_edge_at(c.p, 1, 1, 2, 1);
-    c.up = test_edge_at(c.p, 1, 1, 1, 2);
-    c.left = test_edge_at(c.p, 1, 1, 0, 1);
-    c.t2 = test_face_at(c.p, 0.7, 0.3);
-    c.lr = test_face_at(c.p, 1.5, 0.5);
-    c.ur = test_face_at(c.p, 1.5, 1.5);
-    c.ul = test_face_at(c.p, 0.5, 1.5);
-    return c;
-}
-
-static void corner_free(corner *c)
-{
-    ori_mechanism_destroy(c->m);
-    ori_pattern_destroy(c->p);
-}
-
-static char *corner_sequence_json(const corner *c, double to1, double to2, int fix2)
+static char *corner_sequence_json(const test_open_corner *c, double to1, double to2, int fix2)
 {
     char *buf = malloc(1024);
     snprintf(buf, 1024,
@@ -61,6 +31,35 @@ static ori_sequence *parse_ok(const char *json)
     ori_error err;
     cr_assert_eq(ori_sequence_parse(json, strlen(json), &s, &err), ORI_OK, "%s", err.message);
     return s;
+}
+
+// The open corner folded by its two-fold sequence (diag to to1, then down to to2 holding the
+// triangle t2, or the square lr when asked), run successfully; free with corner_run_free.
+typedef struct corner_run {
+    test_open_corner c;
+    char *json;
+    ori_sequence *s;
+    ori_record *r;
+} corner_run;
+
+static corner_run corner_run_make(double to1, double to2, bool hold_square)
+{
+    corner_run x;
+    x.c = test_open_corner_load();
+    x.json = corner_sequence_json(&x.c, to1, to2, hold_square ? x.c.lr : x.c.t2);
+    x.s = parse_ok(x.json);
+    x.r = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_run(x.s, x.c.m, NULL, ori_rigid_identity(), &x.r, &err), ORI_OK, "%s", err.message);
+    return x;
+}
+
+static void corner_run_free(corner_run *x)
+{
+    ori_record_destroy(x->r);
+    ori_sequence_destroy(x->s);
+    free(x->json);
+    test_open_corner_free(&x->c);
 }
 
 static ori_v3 face_normal(const ori_pattern *p, int face, const ori_v3 *pos)
@@ -140,12 +139,9 @@ Test(sequence, parse_errors_name_the_position_or_the_fold)
 
 Test(sequence, open_corner_two_folds_reach_the_corner_cube)
 {
-    corner c = corner_load();
-    char *json = corner_sequence_json(&c, 180, 90, c.t2);
-    ori_sequence *s = parse_ok(json);
-    ori_record *r = NULL;
-    ori_error err;
-    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    corner_run x = corner_run_make(180, 90, false);
+    test_open_corner c = x.c;
+    ori_record *r = x.r;
     cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
     cr_assert_eq(ori_record_completed_folds(r), 2);
     cr_assert_float_eq(ori_record_duration(r), 2.0, 0.0);
@@ -187,20 +183,15 @@ Test(sequence, open_corner_two_folds_reach_the_corner_cube)
     cr_assert_float_eq(pos[tv].x, 1.0, 1e-15);
     cr_assert_float_eq(pos[tv].z, 0.0, 1e-15);
     (void)V;
-    ori_record_destroy(r);
-    ori_sequence_destroy(s);
-    free(json);
-    corner_free(&c);
+    corner_run_free(&x);
 }
 
 Test(sequence, any_instant_is_restored_exactly)
 {
-    corner c = corner_load();
-    char *json = corner_sequence_json(&c, 180, 90, c.t2);
-    ori_sequence *s = parse_ok(json);
-    ori_record *r = NULL;
+    corner_run x = corner_run_make(180, 90, false);
+    test_open_corner c = x.c;
+    ori_record *r = x.r;
     ori_error err;
-    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
     int E = ori_pattern_edge_count(c.p), V = ori_pattern_vertex_count(c.p);
     double *ang = malloc(sizeof(double) * (size_t)E);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)V);
@@ -245,21 +236,14 @@ Test(sequence, any_instant_is_restored_exactly)
     cr_assert_eq(ori_record_at(r, -0.1, ang, NULL, NULL, NULL, NULL, &err), ORI_ERR_RANGE);
     free(ang);
     free(pos);
-    ori_record_destroy(r);
-    ori_sequence_destroy(s);
-    free(json);
-    corner_free(&c);
+    corner_run_free(&x);
 }
 
 Test(sequence, a_new_fixed_face_stays_where_the_previous_fold_left_it)
 {
-    corner c = corner_load();
-    // fold 2 holds the lower-right square instead of the triangle
-    char *json = corner_sequence_json(&c, 180, 90, c.lr);
-    ori_sequence *s = parse_ok(json);
-    ori_record *r = NULL;
-    ori_error err;
-    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    corner_run x = corner_run_make(180, 90, true); // fold 2 holds the lower-right square, not the triangle
+    test_open_corner c = x.c;
+    ori_record *r = x.r;
     cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
     int end1 = 18; // t = 1
     cr_assert_float_eq(ori_record_frame_time(r, end1), 1.0, 0.0);
@@ -274,21 +258,14 @@ Test(sequence, a_new_fixed_face_stays_where_the_previous_fold_left_it)
             cr_assert_float_eq(b[lrv[k]].z, a[lrv[k]].z, 1e-12);
         }
     }
-    ori_record_destroy(r);
-    ori_sequence_destroy(s);
-    free(json);
-    corner_free(&c);
+    corner_run_free(&x);
 }
 
 Test(sequence, a_fold_against_the_assignment_stops_the_sequence)
 {
-    corner c = corner_load();
-    // the second fold turns the down crease (a valley) towards a mountain
-    char *json = corner_sequence_json(&c, 180, -90, c.t2);
-    ori_sequence *s = parse_ok(json);
-    ori_record *r = NULL;
-    ori_error err;
-    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    corner_run x = corner_run_make(180, -90, false); // fold 2 turns the down crease (a valley) towards M
+    test_open_corner c = x.c;
+    ori_record *r = x.r;
     cr_assert_eq(ori_record_verdict(r), ORI_MOTION_INVALID_ASSIGNMENT);
     cr_assert_eq(ori_record_failed_fold(r), 1);
     cr_assert_eq(ori_record_completed_folds(r), 1);
@@ -297,15 +274,12 @@ Test(sequence, a_fold_against_the_assignment_stops_the_sequence)
     snprintf(want, sizeof want, "%d", c.down);
     cr_assert(strstr(ori_record_reason(r), want), "reason '%s' names crease %d", ori_record_reason(r), c.down);
     cr_assert_eq(ori_record_frame_count(r), 19); // fold 1 only
-    ori_record_destroy(r);
-    ori_sequence_destroy(s);
-    free(json);
-    corner_free(&c);
+    corner_run_free(&x);
 }
 
 Test(sequence, bad_indices_are_run_time_errors_naming_the_fold)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     const char *json = "{\"pattern\": \"x\", \"folds\": [{\"fix\": 0, \"drive\": 8, \"to\": 10}, {\"fix\": 99, \"drive\": 8, \"to\": 20}]}";
     ori_sequence *s = parse_ok(json);
     ori_record *r = NULL;
@@ -323,7 +297,7 @@ Test(sequence, bad_indices_are_run_time_errors_naming_the_fold)
     ori_error_format(&err, msg, sizeof msg);
     cr_assert(strstr(msg, "folds 0:"), "%s", msg);
     ori_sequence_destroy(s);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(sequence, cli_writes_every_state_and_restores_an_instant)

@@ -3,7 +3,8 @@
 /// vertices snap to them, the segment is split at every vertex it passes through, collinear
 /// overlaps merge with the edges they run along, and faces are split (and named) in place.
 /// Every existing index stays valid: new vertices, edges and faces are appended; a split edge
-/// keeps its index for the part at its first vertex; a split face keeps its index for the part
+/// keeps its index for the part at its first vertex (without faces, where snapping can lay that
+/// part onto another edge: for a part of its own); a split face keeps its index for the part
 /// left of the segment.
 ///
 /// Functions: ori_default_insert_def, ori_pattern_insert_segment, ori_pattern_insert_segments,
@@ -13,8 +14,11 @@
 /// inside a face corner) is an exact ori_orient2d_sign on stored coordinates; crossing points
 /// are computed in floating point from the (adaptive) orientation values and clamped to both
 /// segments' bounding boxes; points closer than ORI_TOL_LENGTH_REL × scale to a vertex become
-/// that vertex, and the segment is routed through every vertex within that distance of it.
-/// docs/authoring.md has the details.
+/// that vertex, the segment is routed through every vertex within that distance of it, and an
+/// edge passing that close to one of its points is split there. No two edges ever join the same
+/// two vertices: an edge part that snapping lays onto another edge merges with it. The result is
+/// checked exactly before anything changes; an insertion that snapping cannot make planar is
+/// refused. docs/authoring.md has the details.
 #ifndef ORIKIN_ARRANGEMENT_H
 #define ORIKIN_ARRANGEMENT_H
 
@@ -57,7 +61,8 @@ typedef struct ori_insert_result {
     int edges_overlapped; ///< existing edges (or parts) the segment runs along
     int faces_split;      ///< face splits performed
     int segment_edges;    ///< edges that now cover the segment (new pieces + overlapped edges)
-    int segments_skipped; ///< bulk insertion: segments shorter than the tolerance, or floating inside a face (ignored)
+    int segments_skipped; ///< bulk insertion: segments refused as ori_pattern_insert_segment would (ignored)
+    int edges_merged;     ///< pattern without faces: parts of split edges that snapping laid onto another edge (one edge remains)
 } ori_insert_result;
 
 /// One segment for bulk insertion: end points, assignment and fold angle (radians, FOLD sign).
@@ -70,11 +75,13 @@ typedef struct ori_segment {
 /// Insert the segment a→b (its direction defines "left" for face names) into a flat pattern
 /// with assignment asg and fold angle fold_angle_rad. def may be NULL (defaults); out may be
 /// NULL. The pattern need not be built and is left unbuilt (call ori_pattern_build). Fails,
-/// leaving the pattern unchanged, with ORI_ERR_RANGE for non-finite points, ORI_ERR_DEGENERATE
-/// when the snapped end points coincide, ORI_ERR_UNSUPPORTED on a folded form or when the
-/// pattern has faces and a piece would float inside one (touching neither its boundary nor
-/// a crease: a face is one cycle and cannot have a hole; a free end hanging from the boundary,
-/// a slit, is fine).
+/// leaving the pattern unchanged, with ORI_ERR_RANGE for non-finite points; ORI_ERR_DEGENERATE
+/// when the snapped end points coincide, when snapping would merge two existing edges of a
+/// pattern with faces (the face between them would collapse) or make an edge vanish into
+/// others, or when it cannot be made planar at the tolerance (element: an edge concerned, or
+/// ORI_NULL_INDEX); ORI_ERR_UNSUPPORTED on a folded form or when the pattern has faces and a
+/// piece would float inside one (touching neither its boundary nor a crease: a face is one cycle
+/// and cannot have a hole; a free end hanging from the boundary, a slit, is fine).
 ORI_API ori_status ori_pattern_insert_segment(ori_pattern *pattern, ori_v2 a, ori_v2 b, ori_assignment asg,
                                               double fold_angle_rad, const ori_insert_def *def,
                                               ori_insert_result *out, ori_error *error);
@@ -82,16 +89,17 @@ ORI_API ori_status ori_pattern_insert_segment(ori_pattern *pattern, ori_v2 a, or
 /// Insert count segments in order (a uniform grid keeps each insertion local, so tens of
 /// thousands of segments planarise in near-linear time when the pattern has no faces yet).
 /// With an automatic scale the scale is the diagonal of the pattern and all segments together,
-/// fixed for the whole call. Segments shorter than the tolerance (or, into a pattern with faces,
-/// floating inside a face) are skipped and counted; a non-finite coordinate fails (field
-/// "segments", element = segment index) before any change.
+/// fixed for the whole call. Segments that ori_pattern_insert_segment would refuse (shorter than
+/// the tolerance, floating inside a face, not insertable consistently) are skipped and counted;
+/// a non-finite coordinate fails (field "segments", element = segment index) before any change.
 ORI_API ori_status ori_pattern_insert_segments(ori_pattern *pattern, const ori_segment *segments, int count,
                                                const ori_insert_def *def, ori_insert_result *out,
                                                ori_error *error);
 
 /// A new planar pattern from segments (overlapping and crossing ones are planarised), built
-/// with faces traced from the planar graph. *out is NULL on failure; destroy with
-/// ori_pattern_destroy.
+/// with faces traced from the planar graph. As its indices are new, an edge that snapping lays
+/// entirely onto others is removed rather than the segment refused. *out is NULL on failure;
+/// destroy with ori_pattern_destroy.
 ORI_API ori_status ori_pattern_from_segments(const ori_segment *segments, int count, const ori_insert_def *def,
                                              ori_pattern **out, ori_insert_result *result, ori_error *error);
 

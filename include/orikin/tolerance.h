@@ -79,6 +79,11 @@
 /// in x or y, so that a sheet of collinear points still has a finite cell size. Unitless.
 #define ORI_GRID_MIN_EXTENT_REL 1e-6
 
+/// Segment insertion (arrangement): at most this many rounds refine a segment's polyline after
+/// snapping (vertices within the length tolerance join it, edges it passes are split there);
+/// two rounds settle nearly every segment. What is still inconsistent after them is refused.
+#define ORI_INSERT_MAX_ROUNDS 8
+
 /// Axiom 6: a root of the cubic is kept only when the fold it gives maps p2 to within this ×
 /// the input scale of l2 (rejects roots the closed form or a dropped leading term got wrong).
 /// Two roots closer than sqrt(ORI_TOL_CONSTRUCTION_REL) (in units of the input scale) are one

@@ -74,27 +74,32 @@ static bool unit_dir(ori_line l, ori_v2 *u)
     return !(u->x == 0.0 && u->y == 0.0);
 }
 
+// Two finite points farther apart than the length tolerance of their scale: their difference
+// p2 − p1 and the scale; false otherwise (axioms 1 and 2 then have no line).
+static bool two_points(ori_v2 p1, ori_v2 p2, ori_v2 *d, double *L)
+{
+    if (!finite2(p1) || !finite2(p2)) return false;
+    ori_v2 pts[2] = {p1, p2};
+    *L = scale_of(pts, 2);
+    *d = ori_v2_sub(p2, p1);
+    return ori_v2_norm(*d) > ORI_TOL_LENGTH_REL * *L;
+}
+
 ori_line_set ori_axiom_1(ori_v2 p1, ori_v2 p2)
 {
     ori_line_set s = empty_set();
-    if (!finite2(p1) || !finite2(p2)) return s;
-    ori_v2 pts[2] = {p1, p2};
-    double L = scale_of(pts, 2);
-    ori_v2 d = ori_v2_sub(p2, p1);
-    if (!(ori_v2_norm(d) > ORI_TOL_LENGTH_REL * L)) return s;
-    add_line(&s, p1, d, L);
+    ori_v2 d;
+    double L;
+    if (two_points(p1, p2, &d, &L)) add_line(&s, p1, d, L);
     return s;
 }
 
 ori_line_set ori_axiom_2(ori_v2 p1, ori_v2 p2)
 {
     ori_line_set s = empty_set();
-    if (!finite2(p1) || !finite2(p2)) return s;
-    ori_v2 pts[2] = {p1, p2};
-    double L = scale_of(pts, 2);
-    ori_v2 d = ori_v2_sub(p2, p1);
-    if (!(ori_v2_norm(d) > ORI_TOL_LENGTH_REL * L)) return s;
-    add_line(&s, ori_v2_scale(ori_v2_add(p1, p2), 0.5), ori_v2_perp(d), L);
+    ori_v2 d;
+    double L;
+    if (two_points(p1, p2, &d, &L)) add_line(&s, ori_v2_scale(ori_v2_add(p1, p2), 0.5), ori_v2_perp(d), L);
     return s;
 }
 

@@ -2,11 +2,10 @@
 // composites read from JSON, applied to a face through its bounding box.
 #include <orikin/collection.h>
 
-#include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../core/core_internal.h"
+#include "../core/json_internal.h"
 
 // Largest composite file read, and most creases in one composite.
 #define COMPOSITE_MAX_BYTES ((size_t)64 << 20)
@@ -322,11 +321,8 @@ ori_status ori_composite_load_string(const char *text, size_t size, ori_composit
     ORI_ASSERT(text && out);
     *out = NULL;
     ori_error_clear(error);
-    json_error_t je;
-    json_t *root = json_loadb(text, size, JSON_REJECT_DUPLICATES, &je);
-    if (!root)
-        return ori__fail_pos(error, ORI_ERR_PARSE, je.line > 0 ? je.line : 1, je.column > 0 ? je.column : 1, "%s",
-                             je.text);
+    json_t *root = ori__json_parse(text, size, JSON_REJECT_DUPLICATES, error);
+    if (!root) return ORI_ERR_PARSE;
     parse_ctx cx = {text, size, error};
     ori_composite *c = ori__calloc(1, sizeof *c);
     ori_status st = ORI_OK;

@@ -39,6 +39,13 @@ void ori__grow(void **array, int *cap, int need, size_t elem);
         (arr)[(count)++] = (value);                                                          \
     } while (0)
 
+// Union-find: the root of x in the forest parent[] (parent[r] == r at a root), halving the path.
+static inline int ori__uf_root(int *parent, int x)
+{
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+}
+
 // Arena: bump allocation for per-solve scratch; freed all at once.
 typedef struct ori__arena_block ori__arena_block;
 typedef struct ori__arena {

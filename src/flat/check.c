@@ -167,15 +167,10 @@ static void record_violations(ori_flat_report *rep, const ori_pattern *p, const 
                       r->valleys);
     if (!r->big_little_big) {
         int i = r->blb_crease, c = r->blb_run_creases;
-        int m = 0, vv = 0;
         char letters[24];
         int nl = 0;
-        for (int j = 0; j < c; ++j) {
-            ori_assignment x = p->edges[edges[(i + j) % n]].assignment;
-            m += x == ORI_ASSIGN_MOUNTAIN;
-            vv += x == ORI_ASSIGN_VALLEY;
-            if (nl < (int)sizeof letters - 4) letters[nl++] = ori_assignment_to_char(x);
-        }
+        for (int j = 0; j < c && nl < (int)sizeof letters - 4; ++j)
+            letters[nl++] = ori_assignment_to_char(p->edges[edges[(i + j) % n]].assignment);
         letters[nl] = '\0';
         if (c - 1 == 1)
             add_violation(rep, v, ORI_FLAT_RULE_BIG_LITTLE_BIG, edges[i], sectors[i],

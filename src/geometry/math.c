@@ -1,7 +1,10 @@
-// Rotations, twist exponentials and the robust orientation predicate.
+// Rotations, twist exponentials, the robust orientation predicate and the segment predicates
+// behind geometry_internal.h.
 #include <orikin/math.h>
 
 #include <float.h>
+
+#include "geometry_internal.h"
 
 ori_m3 ori_m3_rotation(ori_v3 k, double angle_rad)
 {
@@ -98,6 +101,27 @@ int ori_orient2d_sign(ori_v2 a, ori_v2 b, ori_v2 c)
 {
     double d = ori_orient2d(a, b, c);
     return (d > 0.0) - (d < 0.0);
+}
+
+bool ori__in_segment_box(ori_v2 a, ori_v2 b, ori_v2 c)
+{
+    return fmin(a.x, b.x) <= c.x && c.x <= fmax(a.x, b.x) && fmin(a.y, b.y) <= c.y && c.y <= fmax(a.y, b.y);
+}
+
+bool ori__overlap_beyond(ori_v2 s, ori_v2 x, ori_v2 y)
+{
+    return ori_orient2d_sign(s, x, y) == 0 && ori_v2_dot(ori_v2_sub(x, s), ori_v2_sub(y, s)) > 0.0;
+}
+
+bool ori__corner_contains(ori_v2 u, ori_v2 next, ori_v2 prev, ori_v2 x)
+{
+    int a = ori_orient2d_sign(u, next, x); // > 0: x counter-clockwise of next
+    int b = ori_orient2d_sign(u, x, prev); // > 0: prev counter-clockwise of x
+    int o = ori_orient2d_sign(u, next, prev);
+    if (o > 0) return a > 0 && b > 0;
+    if (o < 0) return a > 0 || b > 0;
+    if (ori_v2_dot(ori_v2_sub(next, u), ori_v2_sub(prev, u)) < 0.0) return a > 0; // straight corner (180°)
+    return !(a == 0 && ori_v2_dot(ori_v2_sub(x, u), ori_v2_sub(next, u)) > 0.0);    // zero angle
 }
 
 double ori_angle_ccw_v2(ori_v2 a, ori_v2 b)

@@ -1,10 +1,12 @@
 // Exporting a flat crease pattern: SVG in the Origami Simulator convention (one <line> per
 // edge, colour by assignment, stroke-opacity = |fold angle| / π), and the dispatch by format
 // (CP and OPX writers live in oripa.c).
+#include <orikin/formats.h>
+
 #include <stdio.h>
 
 #include "../pattern/pattern_internal.h"
-#include "import_internal.h"
+#include "io_internal.h"
 
 ori_svg_write_def ori_default_svg_write_def(void)
 {

@@ -2,7 +2,6 @@
 // interpret survives a round trip; patterns are read from and written into frames.
 #include <orikin/fold.h>
 
-#include <jansson.h>
 #include <stdio.h>
 
 #include "../pattern/pattern_internal.h"
@@ -20,12 +19,6 @@ static const char *const derived_fields[] = {
     "vertices_vertices", "vertices_edges", "vertices_faces", "edges_faces", "edges_edges",
     "faces_edges",       "faces_faces",    "edgeOrders",     "faceOrders",  "edges_length",
 };
-
-static ori_status from_json_error(const json_error_t *je, ori_error *error)
-{
-    return ori__fail_pos(error, ORI_ERR_PARSE, je->line > 0 ? je->line : 1,
-                         je->column > 0 ? je->column : 1, "%s", je->text);
-}
 
 static ori_status adopt_root(json_t *root, ori_fold **out, ori_error *error)
 {
@@ -56,10 +49,8 @@ ori_status ori_fold_load_string(const char *text, size_t size, ori_fold **out, o
     ORI_ASSERT(text && out);
     *out = NULL;
     ori_error_clear(error);
-    json_error_t je;
-    json_t *root = json_loadb(text, size, JSON_REJECT_DUPLICATES, &je);
-    if (!root) return from_json_error(&je, error);
-    return adopt_root(root, out, error);
+    json_t *root = ori__json_parse(text, size, JSON_REJECT_DUPLICATES, error);
+    return root ? adopt_root(root, out, error) : ORI_ERR_PARSE;
 }
 
 ori_status ori_fold_load_file(const char *path, ori_fold **out, ori_error *error)
@@ -552,9 +543,8 @@ ori_status ori_fold_set_custom(ori_fold *doc, int frame, const char *key, const 
         json_object_del(obj, key);
         return ORI_OK;
     }
-    json_error_t je;
-    json_t *v = json_loads(json, JSON_DECODE_ANY, &je);
-    if (!v) return from_json_error(&je, error);
+    json_t *v = ori__json_parse(json, strlen(json), JSON_DECODE_ANY, error);
+    if (!v) return ORI_ERR_PARSE;
     json_object_set_new(obj, key, v);
     return ORI_OK;
 }
@@ -576,12 +566,8 @@ char *ori_fold_to_string(const ori_fold *doc)
 char *ori_json_normalize(const char *json_text, bool pretty, ori_error *error)
 {
     ORI_ASSERT(json_text);
-    json_error_t je;
-    json_t *v = json_loads(json_text, JSON_DECODE_ANY, &je);
-    if (!v) {
-        from_json_error(&je, error);
-        return NULL;
-    }
+    json_t *v = ori__json_parse(json_text, strlen(json_text), JSON_DECODE_ANY, error);
+    if (!v) return NULL;
     char *out = pretty ? ori__json_write_pretty(v) : ori__json_write_compact(v);
     json_decref(v);
     return out;

@@ -4,41 +4,11 @@
 // and nothing more. tests/test_formats.c compares it byte for byte with the jansson path.
 #include <orikin/formats.h>
 
-#include <stdio.h>
-
 #include "../pattern/pattern_internal.h"
-#include "import_internal.h"
 #include "io_internal.h"
 
 static void puts_(ori__text *b, const char *s) { ori__text_puts(b, s); }
-static void put_int(ori__text *b, int x) { ori__text_printf(b, "%d", x); }
-// A real as jansson + json_write.c print it (−0 as 0, shortest exact digits).
-static void put_real(ori__text *b, double x) { ori__text_real(b, x); }
-
-static void put_string(ori__text *b, const char *s)
-{
-    puts_(b, "\"");
-    for (const unsigned char *c = (const unsigned char *)s; *c; ++c) {
-        char esc[8];
-        switch (*c) {
-        case '"': puts_(b, "\\\""); break;
-        case '\\': puts_(b, "\\\\"); break;
-        case '\n': puts_(b, "\\n"); break;
-        case '\r': puts_(b, "\\r"); break;
-        case '\t': puts_(b, "\\t"); break;
-        case '\b': puts_(b, "\\b"); break;
-        case '\f': puts_(b, "\\f"); break;
-        default:
-            if (*c < 0x20) {
-                snprintf(esc, sizeof esc, "\\u%04x", *c);
-                puts_(b, esc);
-            } else {
-                ori__text_put(b, (const char *)c, 1);
-            }
-        }
-    }
-    puts_(b, "\"");
-}
+static void put_string(ori__text *b, const char *s) { ori__text_json_string(b, s, strlen(s)); }
 
 static void key(ori__text *b, const char *k, bool *first)
 {
@@ -55,12 +25,12 @@ static void rows_next(ori__text *b, int row, int n) { puts_(b, row + 1 < n ? ",\
 static void put_coords(ori__text *b, const ori_pattern *p, int v, bool three)
 {
     puts_(b, "[");
-    put_real(b, p->vertices[v].x);
+    ori__text_real(b, p->vertices[v].x);
     puts_(b, ",");
-    put_real(b, p->vertices[v].y);
+    ori__text_real(b, p->vertices[v].y);
     if (three) {
         puts_(b, ",");
-        put_real(b, p->vertices[v].z);
+        ori__text_real(b, p->vertices[v].z);
     }
     puts_(b, "]");
 }
@@ -70,7 +40,7 @@ static void put_face(ori__text *b, const ori_pattern *p, int f)
     puts_(b, "[");
     for (int k = p->face_offsets[f]; k < p->face_offsets[f + 1]; ++k) {
         if (k > p->face_offsets[f]) puts_(b, ",");
-        put_int(b, p->face_vertices[k]);
+        ori__text_int(b, p->face_vertices[k]);
     }
     puts_(b, "]");
 }
@@ -95,7 +65,7 @@ char *ori_pattern_to_fold_text(const ori_pattern *p, const ori_fold_field *extra
     bool first = true;
     puts_(&b, "{\n");
     key(&b, "file_spec", &first);
-    put_real(&b, 1.2);
+    ori__text_real(&b, 1.2);
     key(&b, "file_creator", &first);
     put_string(&b, "orikin");
     key(&b, "file_classes", &first);
@@ -116,9 +86,9 @@ char *ori_pattern_to_fold_text(const ori_pattern *p, const ori_fold_field *extra
     rows_open(&b, p->edge_count);
     for (int e = 0; e < p->edge_count; ++e) {
         puts_(&b, "[");
-        put_int(&b, p->edges[e].v[0]);
+        ori__text_int(&b, p->edges[e].v[0]);
         puts_(&b, ",");
-        put_int(&b, p->edges[e].v[1]);
+        ori__text_int(&b, p->edges[e].v[1]);
         puts_(&b, "]");
         rows_next(&b, e, p->edge_count);
     }
@@ -134,7 +104,7 @@ char *ori_pattern_to_fold_text(const ori_pattern *p, const ori_fold_field *extra
         puts_(&b, "[");
         for (int e = 0; e < p->edge_count; ++e) {
             if (e) puts_(&b, ",");
-            put_real(&b, ori__clean_degrees(ori_rad_to_deg(p->edges[e].fold_angle_rad)));
+            ori__text_real(&b, ori__clean_degrees(ori_rad_to_deg(p->edges[e].fold_angle_rad)));
         }
         puts_(&b, "]");
     }
@@ -163,7 +133,7 @@ char *ori_pattern_to_fold_text(const ori_pattern *p, const ori_fold_field *extra
             puts_(&b, "{\"name\":");
             put_string(&b, p->tree[i].name);
             puts_(&b, ",\"parent\":");
-            put_int(&b, p->tree[i].parent);
+            ori__text_int(&b, p->tree[i].parent);
             puts_(&b, "}");
             rows_next(&b, i, p->tree_count);
         }

@@ -54,9 +54,31 @@ size_t ori__scan_number(const char *s, double *out)
     return n;
 }
 
-void ori__stats_clear(ori_import_stats *stats)
+static void stats_clear(ori_import_stats *stats)
 {
     if (stats) memset(stats, 0, sizeof *stats);
+}
+
+void ori__reader_begin(ori_segment **segments, int *count, ori_import_stats *stats, ori_error *error)
+{
+    *segments = NULL;
+    *count = 0;
+    stats_clear(stats);
+    ori_error_clear(error);
+}
+
+ori_status ori__reader_end(ori_status st, ori__seg_list *segs, ori_import_stats *found, ori_segment **segments,
+                           int *count, ori_import_stats *stats)
+{
+    if (st != ORI_OK) {
+        ori__free(segs->items);
+        return st;
+    }
+    found->segments = segs->count;
+    if (stats) *stats = *found;
+    *segments = segs->items;
+    *count = segs->count;
+    return ORI_OK;
 }
 
 // --- formats ---------------------------------------------------------------------------------
@@ -104,7 +126,7 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
     *count = 0;
-    ori__stats_clear(stats);
+    stats_clear(stats);
     if (format == ORI_FORMAT_UNKNOWN) format = ori_format_from_path(path);
     if (format != ORI_FORMAT_SVG && format != ORI_FORMAT_OPX && format != ORI_FORMAT_CP)
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "cannot read segments from a '%s' file", ori_format_name(format));
@@ -121,16 +143,6 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
 }
 
 // --- planarisation and clean-up --------------------------------------------------------------
-
-// Union-find over edges (path halving).
-static int find_root(int *parent, int x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
 
 // Remove every vertex that only joins two collinear edges (within tol) of equal assignment and
 // fold angle; the chains become single edges. Returns a new unbuilt pattern, or NULL when there
@@ -157,7 +169,7 @@ static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
         double dist = fabs(ori_orient2d(pu, pw, pv)) / len;
         if (dist > tol || ori_v2_dot(ori_v2_sub(pu, pv), ori_v2_sub(pw, pv)) >= 0.0) continue;
         removed[v] = 1;
-        int a = find_root(parent, ed[0]), b = find_root(parent, ed[1]);
+        int a = ori__uf_root(parent, ed[0]), b = ori__uf_root(parent, ed[1]);
         if (a != b) parent[a < b ? b : a] = a < b ? a : b;
         merged++;
     }
@@ -176,7 +188,7 @@ static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
     int *end1 = ori__alloc(sizeof(int) * (size_t)(ne ? ne : 1));
     for (int e = 0; e < ne; ++e) end0[e] = end1[e] = ORI_NULL_INDEX;
     for (int e = 0; e < ne; ++e) {
-        int r = find_root(parent, e);
+        int r = ori__uf_root(parent, e);
         for (int k = 0; k < 2; ++k) {
             int v = p->edges[e].v[k];
             if (removed[v]) continue;
@@ -186,7 +198,7 @@ static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
     }
     // One edge per group, at the position of its lowest edge index (the root).
     for (int e = 0; e < ne; ++e) {
-        if (find_root(parent, e) != e) continue;
+        if (ori__uf_root(parent, e) != e) continue;
         ORI_ASSERT(end0[e] != ORI_NULL_INDEX && end1[e] != ORI_NULL_INDEX);
         ori_pattern_add_edge(q, end0[e], end1[e], p->edges[e].assignment, p->edges[e].fold_angle_rad);
     }
@@ -254,19 +266,12 @@ static ori_status check_islands(const ori_pattern *p, ori_error *error)
 {
     int nv = p->vertex_count;
     int *comp = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
-    for (int v = 0; v < nv; ++v) comp[v] = v;
-    for (int e = 0; e < p->edge_count; ++e) {
-        int a = find_root(comp, p->edges[e].v[0]), b = find_root(comp, p->edges[e].v[1]);
-        if (a != b) comp[a < b ? b : a] = a < b ? a : b;
-    }
+    int parts = ori__pattern_parts(p, comp);
     // leftmost (then lowest) vertex of each component
     int *left = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
     for (int v = 0; v < nv; ++v) left[v] = ORI_NULL_INDEX;
-    int parts = 0;
     for (int v = 0; v < nv; ++v) {
-        int r = find_root(comp, v);
-        comp[v] = r;
-        if (left[r] == ORI_NULL_INDEX) parts++;
+        int r = comp[v];
         ori_v3 a = p->vertices[v];
         if (left[r] == ORI_NULL_INDEX || a.x < p->vertices[left[r]].x ||
             (a.x == p->vertices[left[r]].x && a.y < p->vertices[left[r]].y))

@@ -1,6 +1,6 @@
-// Shared pieces of the importers and exporters (svg.c, oripa.c, import.c, export.c,
-// fold_text.c): the growing segment list and statistics, number scanning that never accepts
-// "inf", "nan" or hexadecimal, the XML entry point and a text buffer.
+// Shared pieces of the drawing importers (svg.c, oripa.c, import.c): the growing segment list
+// and statistics, number scanning that never accepts "inf", "nan" or hexadecimal, and the XML
+// entry point. (The writers' text buffer is in io_internal.h.)
 #ifndef ORI_IMPORT_INTERNAL_H
 #define ORI_IMPORT_INTERNAL_H
 
@@ -22,25 +22,16 @@ void ori__seg_push(ori__seg_list *list, double ax, double ay, double bx, double 
 // number of characters consumed (0 when there is no number) and the value in *out.
 size_t ori__scan_number(const char *s, double *out);
 
-// Reset stats (may be NULL).
-void ori__stats_clear(ori_import_stats *stats);
+// The start of a reader ori_X_read_segments: its outputs cleared (stats may be NULL).
+void ori__reader_begin(ori_segment **segments, int *count, ori_import_stats *stats, ori_error *error);
+// The end of a reader: on success the segments and the statistics found (their segment count
+// set) are handed out; on failure the list is freed. Returns st.
+ori_status ori__reader_end(ori_status st, ori__seg_list *segs, ori_import_stats *found, ori_segment **segments,
+                           int *count, ori_import_stats *stats);
 
 // Parse XML text into a tree without network access or entity substitution; the first error
 // with its line and column (svg.c). *doc is NULL on failure; free it with xmlFreeDoc.
 struct _xmlDoc;
 ori_status ori__xml_parse(const char *text, size_t size, const char *what, struct _xmlDoc **doc, ori_error *error);
-
-// A growing text buffer for the writers (text.c); data is NUL-terminated once anything (or
-// nothing, via ori__text_reserve) was written, and owned by the caller.
-typedef struct ori__text {
-    char *data;
-    size_t len, cap;
-} ori__text;
-void ori__text_reserve(ori__text *t, size_t extra);
-void ori__text_put(ori__text *t, const char *s, size_t n);
-void ori__text_puts(ori__text *t, const char *s);
-void ori__text_printf(ori__text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-// A number in the shortest decimal that reads back exactly (the FOLD writer's format).
-void ori__text_real(ori__text *t, double x);
 
 #endif

@@ -1,21 +1,38 @@
-// Helpers shared by the file formats in src/io.
+// Helpers shared by the file formats in src/io: the custom FOLD keys, the text buffer and
+// number writers behind every text output (FOLD, JSON, SVG, CP, OPX), and the JSON layout.
 #ifndef ORI_IO_INTERNAL_H
 #define ORI_IO_INTERNAL_H
 
-#include <jansson.h>
-
-#include "../core/core_internal.h"
+#include "../core/json_internal.h"
 
 // Custom FOLD keys written by orikin.
 #define ORI__KEY_FACES_NAME "orikin:faces_name"
 #define ORI__KEY_FACE_TREE "orikin:face_tree"
 
-// A JSON real for a finite double (−0 written as 0).
-json_t *ori__json_number(double x);
+// A growing text buffer (text.c); data is NUL-terminated once anything (or nothing, via
+// ori__text_reserve) was written, and owned by the caller (ori__free).
+typedef struct ori__text {
+    char *data;
+    size_t len, cap;
+} ori__text;
+void ori__text_reserve(ori__text *t, size_t extra);
+void ori__text_put(ori__text *t, const char *s, size_t n);
+void ori__text_puts(ori__text *t, const char *s);
+void ori__text_printf(ori__text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+// An integer in decimal.
+void ori__text_int(ori__text *t, long long x);
+// A number in the shortest decimal that reads back exactly (ori__format_double).
+void ori__text_real(ori__text *t, double x);
+// A JSON string literal of the n bytes at s: quoted, with '"', '\\' and control characters escaped.
+void ori__text_json_string(ori__text *t, const char *s, size_t n);
+
+// Shortest decimal text that reads back as exactly x (at most 17 significant digits; ±0 is "0").
+void ori__format_double(double x, char *buf, size_t size);
 // Degrees within ORI_TOL_PRINT_DEG of an integer become that integer; −0 becomes 0.
 double ori__clean_degrees(double deg);
-// Shortest decimal text that reads back as exactly x (at most 17 significant digits).
-void ori__format_double(double x, char *buf, size_t size);
+
+// A JSON real for a finite double (−0 written as 0).
+json_t *ori__json_number(double x);
 // FOLD-style JSON text: one key per line at the top level and in frames, arrays of arrays one
 // entry per line, everything else compact. Allocated with ori__alloc.
 char *ori__json_write_pretty(const json_t *root);

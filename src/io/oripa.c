@@ -9,6 +9,7 @@
 
 #include "../pattern/pattern_internal.h"
 #include "import_internal.h"
+#include "io_internal.h"
 
 // Type code → assignment; false for codes that are skipped (*skip) or invalid.
 static bool oripa_type(double type, ori_assignment *asg, bool *skip)
@@ -105,10 +106,7 @@ ori_status ori_opx_read_segments(const char *text, size_t size, ori_segment **se
                                  ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(text && segments && count);
-    *segments = NULL;
-    *count = 0;
-    ori__stats_clear(stats);
-    ori_error_clear(error);
+    ori__reader_begin(segments, count, stats, error);
     xmlDoc *doc;
     ori_status st = ori__xml_parse(text, size, "OPX", &doc, error);
     if (st != ORI_OK) return st;
@@ -122,15 +120,7 @@ ori_status ori_opx_read_segments(const char *text, size_t size, ori_segment **se
     else
         st = opx_walk(&c, root, 0);
     xmlFreeDoc(doc);
-    if (st != ORI_OK) {
-        ori__free(c.segs.items);
-        return st;
-    }
-    c.stats.segments = c.segs.count;
-    if (stats) *stats = c.stats;
-    *segments = c.segs.items;
-    *count = c.segs.count;
-    return ORI_OK;
+    return ori__reader_end(st, &c.segs, &c.stats, segments, count, stats);
 }
 
 // --- .cp -------------------------------------------------------------------------------------
@@ -139,31 +129,29 @@ ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **seg
                                 ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(text && segments && count);
-    *segments = NULL;
-    *count = 0;
-    ori__stats_clear(stats);
-    ori_error_clear(error);
+    ori__reader_begin(segments, count, stats, error);
     ori__seg_list segs = {NULL, 0, 0};
     ori_import_stats s;
     memset(&s, 0, sizeof s);
     const char *p = text, *end = text + size;
     int line = 0;
-    while (p < end) {
+    ori_status st = ORI_OK;
+    while (p < end && st == ORI_OK) {
         line++;
         const char *eol = memchr(p, '\n', (size_t)(end - p));
         if (!eol) eol = end;
         char buf[512];
         size_t n = (size_t)(eol - p);
         if (n >= sizeof buf) {
-            ori__free(segs.items);
-            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "line longer than %zu characters", sizeof buf - 1);
+            st = ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "line longer than %zu characters", sizeof buf - 1);
+            break;
         }
         memcpy(buf, p, n);
         buf[n] = '\0';
         p = eol < end ? eol + 1 : end;
         if (memchr(buf, '\0', n)) {
-            ori__free(segs.items);
-            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "NUL byte (not a text file)");
+            st = ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "NUL byte (not a text file)");
+            break;
         }
         double v[5];
         int k = 0;
@@ -186,27 +174,20 @@ ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **seg
         }
         if (ok && k == 0) continue; // blank line
         if (!ok || k != 5) {
-            ori__free(segs.items);
-            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "expected \"type x1 y1 x2 y2\" (an integer and four numbers)");
+            st = ori__fail_pos(error, ORI_ERR_PARSE, line, 0, "expected \"type x1 y1 x2 y2\" (an integer and four numbers)");
+            break;
         }
         ori_assignment asg;
         bool skip;
         if (!oripa_type(v[0], &asg, &skip)) {
-            if (skip) {
-                s.ignored_elements++;
-                continue;
-            }
-            ori__free(segs.items);
-            return ori__fail_pos(error, ORI_ERR_PARSE, line, 0,
-                                 "line type %g is not 0 (aux), 1 (cut), 2 (mountain), 3 (valley) or 4 (aux)", v[0]);
+            if (skip) s.ignored_elements++;
+            else st = ori__fail_pos(error, ORI_ERR_PARSE, line, 0,
+                                    "line type %g is not 0 (aux), 1 (cut), 2 (mountain), 3 (valley) or 4 (aux)", v[0]);
+            continue;
         }
         ori__seg_push(&segs, v[1], v[2], v[3], v[4], asg, flat_angle(asg));
     }
-    s.segments = segs.count;
-    if (stats) *stats = s;
-    *segments = segs.items;
-    *count = segs.count;
-    return ORI_OK;
+    return ori__reader_end(st, &segs, &s, segments, count, stats);
 }
 
 // --- writers ---------------------------------------------------------------------------------

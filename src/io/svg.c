@@ -768,10 +768,7 @@ ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **se
                                  ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(text && segments && count);
-    *segments = NULL;
-    *count = 0;
-    ori__stats_clear(stats);
-    ori_error_clear(error);
+    ori__reader_begin(segments, count, stats, error);
     if (size > (size_t)INT32_MAX) return ori__fail(error, ORI_ERR_LIMIT, "the SVG file is too large");
     svg_ctx c;
     memset(&c, 0, sizeof c);
@@ -786,13 +783,5 @@ ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **se
     for (int i = 0; i < c.text_count; ++i) ori__free(c.texts[i]);
     ori__free(c.texts);
     ori__free(c.rules);
-    if (st != ORI_OK) {
-        ori__free(c.segs.items);
-        return st;
-    }
-    c.stats.segments = c.segs.count;
-    if (stats) *stats = c.stats;
-    *segments = c.segs.items;
-    *count = c.segs.count;
-    return ORI_OK;
+    return ori__reader_end(st, &c.segs, &c.stats, segments, count, stats);
 }

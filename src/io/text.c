@@ -1,8 +1,9 @@
-// A growing text buffer for the writers (FOLD text, SVG, CP, OPX): appends, printf, and
+// The writers' text buffer (FOLD text, JSON, SVG, CP, OPX): appends, printf, JSON strings, and
 // numbers in their shortest exact form. Allocated with ori__alloc; the caller owns data.
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
-#include "import_internal.h"
 #include "io_internal.h"
 
 void ori__text_reserve(ori__text *t, size_t extra)
@@ -42,9 +43,59 @@ void ori__text_printf(ori__text *t, const char *fmt, ...)
     va_end(again);
 }
 
+void ori__text_int(ori__text *t, long long x)
+{
+    char buf[24], *p = buf + sizeof buf;
+    unsigned long long u = x < 0 ? 0ull - (unsigned long long)x : (unsigned long long)x;
+    do *--p = (char)('0' + u % 10);
+    while (u /= 10);
+    if (x < 0) *--p = '-';
+    ori__text_put(t, p, (size_t)(buf + sizeof buf - p));
+}
+
+void ori__format_double(double x, char *buf, size_t size)
+{
+    if (x == 0.0) {
+        snprintf(buf, size, "0");
+        return;
+    }
+    for (int prec = 15; prec <= 17; ++prec) {
+        snprintf(buf, size, "%.*g", prec, x);
+        if (strtod(buf, NULL) == x) break;
+    }
+}
+
+double ori__clean_degrees(double deg)
+{
+    double r = round(deg);
+    if (fabs(deg - r) <= ORI_TOL_PRINT_DEG) deg = r;
+    return deg == 0.0 ? 0.0 : deg;
+}
+
 void ori__text_real(ori__text *t, double x)
 {
     char num[40];
     ori__format_double(x, num, sizeof num);
     ori__text_puts(t, num);
+}
+
+void ori__text_json_string(ori__text *t, const char *s, size_t n)
+{
+    ori__text_puts(t, "\"");
+    for (size_t i = 0; i < n; ++i) {
+        unsigned char c = (unsigned char)s[i];
+        switch (c) {
+        case '"': ori__text_puts(t, "\\\""); break;
+        case '\\': ori__text_puts(t, "\\\\"); break;
+        case '\n': ori__text_puts(t, "\\n"); break;
+        case '\r': ori__text_puts(t, "\\r"); break;
+        case '\t': ori__text_puts(t, "\\t"); break;
+        case '\b': ori__text_puts(t, "\\b"); break;
+        case '\f': ori__text_puts(t, "\\f"); break;
+        default:
+            if (c < 0x20) ori__text_printf(t, "\\u%04x", c);
+            else ori__text_put(t, (const char *)&s[i], 1);
+        }
+    }
+    ori__text_puts(t, "\"");
 }

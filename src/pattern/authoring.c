@@ -24,6 +24,19 @@ static ori_status build_default(ori_pattern *p, ori_error *error)
     return ori_pattern_build(p, &def, error);
 }
 
+// The end of an edit on the working copy q of p: when the edit (status st) succeeded and q
+// builds, p adopts q; otherwise q is dropped and p stays as it was. Returns the status.
+static ori_status finish(ori_pattern *p, ori_pattern *q, ori_status st, ori_error *error)
+{
+    if (st == ORI_OK) st = build_default(q, error);
+    if (st != ORI_OK) {
+        ori_pattern_destroy(q);
+        return st;
+    }
+    adopt(p, q);
+    return ORI_OK;
+}
+
 // A working copy of p, built (faces traced when missing); fails when p is not a flat pattern
 // that builds.
 static ori_status working_copy(const ori_pattern *p, ori_pattern **out, ori_error *error)
@@ -343,15 +356,9 @@ ori_status ori_pattern_apply_creases(ori_pattern *p, const ori_crease *cs, int c
     ori_pattern *q;
     ori_status st = working_copy(p, &q, error);
     if (st != ORI_OK) return st;
-    st = apply_impl(q, cs, count, face, &res, error);
-    if (st == ORI_OK) st = build_default(q, error);
-    if (st != ORI_OK) {
-        ori_pattern_destroy(q);
-        return st;
-    }
-    adopt(p, q);
-    if (out) *out = res;
-    return ORI_OK;
+    st = finish(p, q, apply_impl(q, cs, count, face, &res, error), error);
+    if (st == ORI_OK && out) *out = res;
+    return st;
 }
 
 ori_status ori_pattern_apply_crease(ori_pattern *p, const ori_crease *c, int face, ori_apply_result *out,
@@ -651,15 +658,9 @@ ori_status ori_pattern_remove_crease(ori_pattern *p, int e, ori_remove_result *o
     ori_pattern *q;
     ori_status st = working_copy(p, &q, error);
     if (st != ORI_OK) return st;
-    st = remove_impl(q, e, &res, error);
-    if (st == ORI_OK) st = build_default(q, error);
-    if (st != ORI_OK) {
-        ori_pattern_destroy(q);
-        return st;
-    }
-    adopt(p, q);
-    if (out) *out = res;
-    return ORI_OK;
+    st = finish(p, q, remove_impl(q, e, &res, error), error);
+    if (st == ORI_OK && out) *out = res;
+    return st;
 }
 
 int ori_remove_result_map_edge(const ori_remove_result *r, int e)
@@ -706,15 +707,10 @@ ori_status ori_pattern_move_crease(ori_pattern *p, int e, ori_v2 a, ori_v2 b, or
         res.first_edge = q->edge_count;
         st = apply_impl(q, &c, 1, ORI_NULL_INDEX, &res, error);
     }
-    if (st == ORI_OK) st = build_default(q, error);
-    if (st != ORI_OK) {
-        ori_pattern_destroy(q);
-        return st;
-    }
-    adopt(p, q);
-    if (out) *out = res;
-    if (removed) *removed = rr;
-    return ORI_OK;
+    st = finish(p, q, st, error);
+    if (st == ORI_OK && out) *out = res;
+    if (st == ORI_OK && removed) *removed = rr;
+    return st;
 }
 
 // --- face tree ------------------------------------------------------------------------------

@@ -3,6 +3,9 @@
 // vertex → edges in cyclic order, faces (given, or traced from the planar graph), edge → faces.
 #include "pattern_internal.h"
 
+#include "../core/hash.h"
+#include "../geometry/geometry_internal.h"
+
 #include <float.h>
 #include <stdlib.h>
 
@@ -16,41 +19,18 @@ ori_build_def ori_default_build_def(void)
     return def;
 }
 
-// --- hashing ---------------------------------------------------------------------------
-
-static uint64_t mix64(uint64_t x)
-{
-    x ^= x >> 33;
-    x *= 0xff51afd7ed558ccdULL;
-    x ^= x >> 33;
-    x *= 0xc4ceb9fe1a85ec53ULL;
-    x ^= x >> 33;
-    return x;
-}
-
-static uint64_t edge_key(int a, int b)
-{
-    uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
-    return ((uint64_t)hi << 32) | lo;
-}
-
-static int hash_capacity(int n)
-{
-    int cap = 16;
-    while (cap < 2 * n) cap *= 2;
-    return cap;
-}
+// --- edge lookup -----------------------------------------------------------------------
 
 int ori_pattern_find_edge(const ori_pattern *p, int a, int b)
 {
     ORI_ASSERT(p && p->built);
     if (a < 0 || b < 0 || a >= p->vertex_count || b >= p->vertex_count) return ORI_NULL_INDEX;
-    uint64_t key = edge_key(a, b);
+    uint64_t key = ori__pair_key(a, b);
     int mask = p->edge_hash_cap - 1;
-    for (int i = (int)(mix64(key) & (uint64_t)mask);; i = (i + 1) & mask) {
+    for (int i = (int)(ori__mix64(key) & (uint64_t)mask);; i = (i + 1) & mask) {
         int e = p->edge_hash[i];
         if (e < 0) return ORI_NULL_INDEX;
-        if (edge_key(p->edges[e].v[0], p->edges[e].v[1]) == key) return e;
+        if (ori__pair_key(p->edges[e].v[0], p->edges[e].v[1]) == key) return e;
     }
 }
 
@@ -70,12 +50,18 @@ static double bbox_diagonal(const ori_pattern *p, ori_v3 *lo_out)
     return d > 0.0 ? d : 1.0;
 }
 
+static inline uint64_t cell_hash(const int64_t c[3])
+{
+    return ori__mix64((uint64_t)c[0] * 0x9E3779B97F4A7C15ULL ^ ori__mix64((uint64_t)c[1] + 0x632BE59BD9B4E019ULL) ^
+                      ori__mix64((uint64_t)c[2] * 0x94D049BB133111EBULL + 7));
+}
+
 // Cell hash of 3D points with cell size h: for each vertex, the earlier vertex within tol, or -1.
 static ori_status find_close_vertices(ori_pattern *p, double tol, int *twin)
 {
     int n = p->vertex_count;
     double h = tol > 0.0 ? tol : DBL_MIN;
-    int cap = hash_capacity(n);
+    int cap = ori__hash_capacity(n);
     int *head = ori__alloc(sizeof(int) * (size_t)cap);
     int *next = ori__alloc(sizeof(int) * (size_t)(n ? n : 1));
     int64_t *cell = ori__alloc(sizeof(int64_t) * 3 * (size_t)(n ? n : 1));
@@ -96,10 +82,7 @@ static ori_status find_close_vertices(ori_pattern *p, double tol, int *twin)
             for (int dy = -1; dy <= 1 && twin[i] < 0; ++dy)
                 for (int dz = dz_lo; dz <= dz_hi && twin[i] < 0; ++dz) {
                     int64_t k[3] = {c[0] + dx, c[1] + dy, c[2] + dz};
-                    uint64_t hk = mix64((uint64_t)k[0] * 0x9E3779B97F4A7C15ULL ^
-                                        mix64((uint64_t)k[1] + 0x632BE59BD9B4E019ULL) ^
-                                        mix64((uint64_t)k[2] * 0x94D049BB133111EBULL + 7));
-                    for (int j = head[hk & (uint64_t)(cap - 1)]; j >= 0; j = next[j]) {
+                    for (int j = head[cell_hash(k) & (uint64_t)(cap - 1)]; j >= 0; j = next[j]) {
                         if (cell[3 * j] != k[0] || cell[3 * j + 1] != k[1] || cell[3 * j + 2] != k[2]) continue;
                         if (ori_v3_norm(ori_v3_sub(p->vertices[j], v)) <= tol) {
                             twin[i] = twin[j] >= 0 ? twin[j] : j;
@@ -107,10 +90,7 @@ static ori_status find_close_vertices(ori_pattern *p, double tol, int *twin)
                         }
                     }
                 }
-        uint64_t hk = mix64((uint64_t)c[0] * 0x9E3779B97F4A7C15ULL ^
-                            mix64((uint64_t)c[1] + 0x632BE59BD9B4E019ULL) ^
-                            mix64((uint64_t)c[2] * 0x94D049BB133111EBULL + 7));
-        int slot = (int)(hk & (uint64_t)(cap - 1));
+        int slot = (int)(cell_hash(c) & (uint64_t)(cap - 1));
         next[i] = head[slot];
         head[slot] = i;
     }
@@ -239,52 +219,6 @@ static void order_vertex_edges_by_faces(ori_pattern *p)
 
 // --- crossing edges ------------------------------------------------------------------------
 
-static bool on_segment(ori_v2 a, ori_v2 b, ori_v2 c)
-{
-    // c collinear with ab (caller checked): inside the closed box of ab?
-    return fmin(a.x, b.x) <= c.x && c.x <= fmax(a.x, b.x) && fmin(a.y, b.y) <= c.y && c.y <= fmax(a.y, b.y);
-}
-
-// Edges e and f conflict when they intersect anywhere but at a shared endpoint.
-static bool edges_conflict(const ori_pattern *p, int e, int f)
-{
-    const int *ev = p->edges[e].v, *fv = p->edges[f].v;
-    ori_v2 a = ori__pattern_v2(p, ev[0]), b = ori__pattern_v2(p, ev[1]);
-    ori_v2 c = ori__pattern_v2(p, fv[0]), d = ori__pattern_v2(p, fv[1]);
-    // Disjoint closed bounding boxes: no common point at all (exact comparisons). Most pairs
-    // that share a grid cell end here without an orientation test.
-    // (Plain comparisons: fmin/fmax are library calls here; coordinates are finite.)
-    if ((a.x > b.x ? a.x : b.x) < (c.x < d.x ? c.x : d.x) || (c.x > d.x ? c.x : d.x) < (a.x < b.x ? a.x : b.x) ||
-        (a.y > b.y ? a.y : b.y) < (c.y < d.y ? c.y : d.y) || (c.y > d.y ? c.y : d.y) < (a.y < b.y ? a.y : b.y))
-        return false;
-    int shared = (ev[0] == fv[0] || ev[0] == fv[1]) + (ev[1] == fv[0] || ev[1] == fv[1]);
-    if (shared == 2) return true; // duplicate edge
-    if (shared == 1) {
-        // Only a collinear overlap beyond the shared endpoint conflicts.
-        int other_f = (fv[0] == ev[0] || fv[0] == ev[1]) ? fv[1] : fv[0];
-        int other_e = (ev[0] == fv[0] || ev[0] == fv[1]) ? ev[1] : ev[0];
-        int common = (fv[0] == ev[0] || fv[0] == ev[1]) ? fv[0] : fv[1];
-        ori_v2 s = ori__pattern_v2(p, common);
-        ori_v2 x = ori__pattern_v2(p, other_e), y = ori__pattern_v2(p, other_f);
-        if (ori_orient2d_sign(s, x, y) != 0) return false;
-        // collinear: overlap when both lie on the same side of the shared endpoint
-        return ori_v2_dot(ori_v2_sub(x, s), ori_v2_sub(y, s)) > 0.0;
-    }
-    // (Computed only here: with a shared end point two of them are exactly zero, which sends
-    // every call through the slow exact path of ori_orient2d.)
-    int o1 = ori_orient2d_sign(a, b, c), o2 = ori_orient2d_sign(a, b, d);
-    int o3 = ori_orient2d_sign(c, d, a), o4 = ori_orient2d_sign(c, d, b);
-    if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0) {
-        if (o1 == 0 && o2 == 0) return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a);
-        return true;
-    }
-    if (o1 == 0 && on_segment(a, b, c)) return true;
-    if (o2 == 0 && on_segment(a, b, d)) return true;
-    if (o3 == 0 && on_segment(c, d, a)) return true;
-    if (o4 == 0 && on_segment(c, d, b)) return true;
-    return false;
-}
-
 // Uniform grid over the bounding box of the sheet (about one cell per edge).
 typedef struct crossing_grid {
     double minx, miny, cell;
@@ -310,21 +244,8 @@ static void grid_enter(const ori_pattern *p, int e, const crossing_grid *g, int 
     if (c1 >= nx) c1 = nx - 1;
     for (int64_t cx = c0; cx <= c1; ++cx) {
         // y-range of the segment within this column (padded by one cell for rounding)
-        double x0 = fmax(a.x, minx + (double)cx * cell), x1 = fmin(b.x, minx + (double)(cx + 1) * cell);
-        double y0, y1;
-        if (b.x > a.x) {
-            double t0 = (x0 - a.x) / (b.x - a.x), t1 = (x1 - a.x) / (b.x - a.x);
-            y0 = a.y + t0 * (b.y - a.y);
-            y1 = a.y + t1 * (b.y - a.y);
-        } else {
-            y0 = a.y;
-            y1 = b.y;
-        }
-        if (y0 > y1) {
-            double t = y0;
-            y0 = y1;
-            y1 = t;
-        }
+        double x0 = fmax(a.x, minx + (double)cx * cell), y0, y1;
+        ori__segment_y_range(a, b, minx + (double)cx * cell, minx + (double)(cx + 1) * cell, &y0, &y1);
         int64_t r0 = (int64_t)floor((y0 - miny) / cell) - 1, r1 = (int64_t)floor((y1 - miny) / cell) + 1;
         if (r0 < 0) r0 = 0;
         if (r1 >= ny) r1 = ny - 1;
@@ -381,16 +302,21 @@ static ori_status check_crossings(ori_pattern *p, ori_error *error)
     int bad_e = -1, bad_f = -1;
     for (size_t c = 0; c < cells && st == ORI_OK; ++c) {
         int i = start[c], j = start[c + 1];
-        for (int x = i; x < j && st == ORI_OK; ++x)
+        for (int x = i; x < j && st == ORI_OK; ++x) {
+            // Edges conflict when they intersect anywhere but at a shared end point.
+            const int *ev = p->edges[items[x]].v;
+            ori_v2 a = ori__pattern_v2(p, ev[0]), b = ori__pattern_v2(p, ev[1]);
             for (int y = x + 1; y < j; ++y) {
                 if (items[x] == items[y]) continue;
-                if (edges_conflict(p, items[x], items[y])) {
+                const int *fv = p->edges[items[y]].v;
+                if (ori__segments_conflict(a, b, ev, ori__pattern_v2(p, fv[0]), ori__pattern_v2(p, fv[1]), fv)) {
                     bad_e = items[x] < items[y] ? items[x] : items[y];
                     bad_f = items[x] < items[y] ? items[y] : items[x];
                     st = ORI_ERR_CROSSING;
                     break;
                 }
             }
+        }
     }
     ori__free(items);
     ori__free(start);
@@ -402,8 +328,28 @@ static ori_status check_crossings(ori_pattern *p, ori_error *error)
 
 // --- faces -------------------------------------------------------------------------------
 
+// A traced cycle is the outer boundary of its part of the graph exactly when the region left of
+// it holds the points just left of the cycle's lowest-leftmost vertex (the region of a face lies
+// within its boundary's hull, right of that vertex). Decided by orientation signs, so that a
+// tree, whose single cycle has zero area, is never taken for a face.
+static bool is_outer_boundary(const ori_pattern *p, const int *cycle, int n)
+{
+    int m = 0;
+    for (int i = 1; i < n; ++i) {
+        ori_v3 a = p->vertices[cycle[i]], b = p->vertices[cycle[m]];
+        if (a.x < b.x || (a.x == b.x && a.y < b.y)) m = i;
+    }
+    ori_v2 u = ori__pattern_v2(p, cycle[m]);
+    ori_v2 left = ori_v2_make(u.x - fmax(1.0, fabs(u.x)), u.y); // (exact: a point left of u)
+    for (int i = 0; i < n; ++i)
+        if (cycle[i] == cycle[m] &&
+            ori__corner_contains(u, ori__pattern_v2(p, cycle[(i + 1) % n]), ori__pattern_v2(p, cycle[(i + n - 1) % n]), left))
+            return true;
+    return false;
+}
+
 // Trace faces of the planar graph: the face left of half-edge u→v continues with the edge just
-// clockwise of (v→u) around v. Cycles of positive area are faces; the others are outer boundaries.
+// clockwise of (v→u) around v. Every cycle is a face but the outer boundaries.
 static void trace_faces(ori_pattern *p)
 {
     int m = p->edge_count;
@@ -422,14 +368,11 @@ static void trace_faces(ori_pattern *p)
         if (used[h0]) continue;
         ccount = 0;
         int h = h0;
-        double area2 = 0.0;
         while (!used[h]) {
             used[h] = 1;
             int e = h / 2, dir = h % 2;
             int u = p->edges[e].v[dir], v = p->edges[e].v[1 - dir];
             ORI__PUSH(cycle, ccount, ccap, u);
-            ori_v3 a = p->vertices[u], b = p->vertices[v];
-            area2 += a.x * b.y - a.y * b.x;
             int twin = 2 * e + (1 - dir);
             int s = pos[twin];
             int vb = p->vert_edge_offsets[v], vn = p->vert_edge_offsets[v + 1] - vb;
@@ -437,7 +380,7 @@ static void trace_faces(ori_pattern *p)
             int e2 = p->vert_edges[sp];
             h = 2 * e2 + (p->edges[e2].v[0] == v ? 0 : 1);
         }
-        if (area2 > 0.0 && ccount >= 3) {
+        if (ccount >= 3 && !is_outer_boundary(p, cycle, ccount)) {
             ori__pattern_reserve_faces(p, p->face_count + 1, p->face_vertex_count + ccount);
             memcpy(p->face_vertices + p->face_vertex_count, cycle, sizeof(int) * (size_t)ccount);
             p->face_vertex_count += ccount;
@@ -567,20 +510,20 @@ ori_status ori_pattern_build(ori_pattern *p, const ori_build_def *def, ori_error
     if (def->weld && (st = check_zero_length(p, tol, error)) != ORI_OK) return st;
 
     // Edge hash, rejecting duplicates.
-    p->edge_hash_cap = hash_capacity(p->edge_count);
+    p->edge_hash_cap = ori__hash_capacity(p->edge_count);
     p->edge_hash = ori__alloc(sizeof(int) * (size_t)p->edge_hash_cap);
     for (int i = 0; i < p->edge_hash_cap; ++i) p->edge_hash[i] = -1;
     int mask = p->edge_hash_cap - 1;
     for (int e = 0; e < p->edge_count; ++e) {
-        uint64_t key = edge_key(p->edges[e].v[0], p->edges[e].v[1]);
-        int i = (int)(mix64(key) & (uint64_t)mask);
+        uint64_t key = ori__pair_key(p->edges[e].v[0], p->edges[e].v[1]);
+        int i = (int)(ori__mix64(key) & (uint64_t)mask);
         for (;; i = (i + 1) & mask) {
             int o = p->edge_hash[i];
             if (o < 0) {
                 p->edge_hash[i] = e;
                 break;
             }
-            if (edge_key(p->edges[o].v[0], p->edges[o].v[1]) == key) {
+            if (ori__pair_key(p->edges[o].v[0], p->edges[o].v[1]) == key) {
                 ori__free(p->edge_hash);
                 p->edge_hash = NULL;
                 p->edge_hash_cap = 0;

@@ -288,6 +288,21 @@ double ori__pattern_face_area2(const ori_pattern *p, int f)
     return a;
 }
 
+int ori__pattern_parts(const ori_pattern *p, int *part)
+{
+    for (int v = 0; v < p->vertex_count; ++v) part[v] = v;
+    for (int e = 0; e < p->edge_count; ++e) {
+        int a = ori__uf_root(part, p->edges[e].v[0]), b = ori__uf_root(part, p->edges[e].v[1]);
+        if (a != b) part[a < b ? b : a] = a < b ? a : b; // (the smaller index stays the root)
+    }
+    int parts = 0;
+    for (int v = 0; v < p->vertex_count; ++v) {
+        part[v] = ori__uf_root(part, v);
+        parts += part[v] == v;
+    }
+    return parts;
+}
+
 // --- names and tree ----------------------------------------------------------------------
 
 const char *ori_pattern_face_name(const ori_pattern *p, int f)

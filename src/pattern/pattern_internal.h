@@ -40,6 +40,10 @@ void ori__pattern_reserve_faces(ori_pattern *p, int faces, int face_vertices);
 void ori__pattern_invalidate(ori_pattern *p);
 // Twice the signed area of a face in the xy-plane (> 0: counter-clockwise).
 double ori__pattern_face_area2(const ori_pattern *p, int face);
+// Connected parts of the pattern's graph (edges joining vertices; an isolated vertex is a part of
+// its own): part[v] = the smallest vertex index of v's part, for the vertex_count entries of
+// part. Returns the number of parts.
+int ori__pattern_parts(const ori_pattern *p, int *part);
 // 2D position of a vertex (x, y).
 static inline ori_v2 ori__pattern_v2(const ori_pattern *p, int v)
 {

@@ -3,9 +3,7 @@
 // instant by continuation from the recorded state before it.
 #include <orikin/sequence.h>
 
-#include <jansson.h>
-
-#include "../core/core_internal.h"
+#include "../core/json_internal.h"
 
 struct ori_sequence {
     char *pattern;
@@ -132,10 +130,8 @@ ori_status ori_sequence_parse(const char *text, size_t size, ori_sequence **out,
     ORI_ASSERT(text && out);
     *out = NULL;
     ori_error_clear(error);
-    json_error_t je;
-    json_t *root = json_loadb(text, size, JSON_REJECT_DUPLICATES, &je);
-    if (!root)
-        return ori__fail_pos(error, ORI_ERR_PARSE, je.line > 0 ? je.line : 1, je.column > 0 ? je.column : 1, "%s", je.text);
+    json_t *root = ori__json_parse(text, size, JSON_REJECT_DUPLICATES, error);
+    if (!root) return ORI_ERR_PARSE;
     ori_status st = ORI_OK;
     ori_sequence *s = ori__calloc(1, sizeof *s);
     const char *key;
