@@ -46,8 +46,7 @@ ori_mechanism *test_mechanism_of(const ori_pattern *p);
 // its mechanism; creases and faces found by coordinates, as the file's order may change: the
 // diagonal (1,1)–(0,0) and the creases from the centre down, right, up and left; the triangles
 // t1 (above the diagonal) and t2 (below), and the squares lr, ur, ul (lower right, upper right,
-// upper left). The one set-up for tests that fold it (test_sequence.c; test_kinematics.c's own
-// copy can adopt it). Free with test_open_corner_free.
+// upper left). The one set-up for the tests that fold it (test_kinematics.c, test_sequence.c). Free with test_open_corner_free.
 typedef struct test_open_corner {
     ori_pattern *p;
     ori_mechanism *m;
@@ -57,7 +56,6 @@ typedef struct test_open_corner {
 test_open_corner test_open_corner_load(void);
 void test_open_corner_free(test_open_corner *c);
 
-#endif
 
 // Local flat-foldability of an interior vertex of a built flat pattern, checked independently
 // of src/flat: Kawasaki (|alternating sector sum| ≤ ORI_TOL_KAWASAKI_RAD), Maekawa over the M/V
@@ -72,3 +70,5 @@ bool test_vertex_flat_foldable(const ori_pattern *p, int vertex, char *why, size
 // classes (may be NULL) receives one ori_edge_class per edge (free with ori_buffer_free).
 // Fails the test on error.
 ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad, ori_edge_class **classes);
+
+#endif

@@ -28,44 +28,13 @@ static ori_motion *solve(const ori_mechanism *m, const ori_motion_def *d)
     return mo;
 }
 
-// The open corner and its creases, found by coordinates (the file's edge order may change).
-typedef struct corner {
-    ori_pattern *p;
-    ori_mechanism *m;
-    int diag, down, right, up, left;
-    int T2, T1, LR, UR, UL;
-} corner;
 
-static corner corner_load(void)
-{
-    corner c;
-    c.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
-    c.m = test_mechanism_of(c.p);
-    c.diag = test_edge_at(c.p, 1, 1, 0, 0);
-    c.down = test_edge_at(c.p, 1, 1, 1, 0);
-    c.right = test_edge_at(c.p, 1, 1, 2, 1);
-    c.up = test_edge_at(c.p, 1, 1, 1, 2);
-    c.left = test_edge_at(c.p, 1, 1, 0, 1);
-    c.T2 = test_face_at(c.p, 0.7, 0.3);
-    c.T1 = test_face_at(c.p, 0.3, 0.7);
-    c.LR = test_face_at(c.p, 1.5, 0.5);
-    c.UR = test_face_at(c.p, 1.5, 1.5);
-    c.UL = test_face_at(c.p, 0.5, 1.5);
-    return c;
-}
-
-static void corner_free(corner *c)
-{
-    ori_mechanism_destroy(c->m);
-    ori_pattern_destroy(c->p);
-}
-
-static ori_motion_def first_fold(const corner *c, ori_solver solver, double to_deg)
+static ori_motion_def first_fold(const test_open_corner *c, ori_solver solver, double to_deg)
 {
     static int lock;
     lock = c->down;
     ori_motion_def d = ori_default_motion_def();
-    d.fixed_face = c->T2;
+    d.fixed_face = c->t2;
     d.driven_edge = c->diag;
     d.to_rad = to_deg * DEG;
     d.step_rad = 10 * DEG;
@@ -107,7 +76,7 @@ static void check_frames(const ori_mechanism *m, const ori_pattern *p, const ori
 
 // --- the open corner, first fold -------------------------------------------------------------
 
-static void check_first_fold_at_90(const corner *c, const ori_motion *mo)
+static void check_first_fold_at_90(const test_open_corner *c, const ori_motion *mo)
 {
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
     int F = ori_motion_frame_count(mo);
@@ -131,7 +100,7 @@ static void check_first_fold_at_90(const corner *c, const ori_motion *mo)
 
 Test(kinematics, open_corner_first_fold_closed_form)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
     ori_motion *mo = solve(c.m, &d);
     cr_assert(ori_motion_stats_of(mo).analytic);
@@ -151,12 +120,12 @@ Test(kinematics, open_corner_first_fold_closed_form)
     check_frames(c.m, c.p, mo);
     cr_assert_eq(ori_motion_dof(mo), 2);
     ori_motion_destroy(mo);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def da = first_fold(&c, ORI_SOLVER_ANALYTIC, 180);
     ori_motion_def dn = first_fold(&c, ORI_SOLVER_NUMERIC, 180);
     ori_motion *ma = solve(c.m, &da), *mn = solve(c.m, &dn);
@@ -185,12 +154,12 @@ Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
     ori_motion *m90 = solve(c.m, &d90);
     check_first_fold_at_90(&c, m90);
     ori_motion_destroy(m90);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, open_corner_frame_a_frame_b_split)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
     ori_motion *mo = solve(c.m, &d);
     ori_vertex_split s;
@@ -226,12 +195,12 @@ Test(kinematics, open_corner_frame_a_frame_b_split)
     cr_assert_float_eq(ea.y, 1.0, 1e-15);
     cr_assert_float_eq(eb.x, -2.0, 1e-15);
     ori_motion_destroy(mo);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     // The thesis' invalid structure: the first axis negatively oriented (diagonal mountain),
     // driven in its own direction to −90°.
     ori_pattern_set_assignment(c.p, c.diag, ORI_ASSIGN_MOUNTAIN);
@@ -256,12 +225,12 @@ Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
         cr_assert_eq(ori_motion_frame_count(mo), 10); // the motion itself exists
         ori_motion_destroy(mo);
     }
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, driving_a_crease_against_its_own_assignment_is_invalid)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, -30);
     ori_motion *mo = solve(c.m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
@@ -269,12 +238,12 @@ Test(kinematics, driving_a_crease_against_its_own_assignment_is_invalid)
     snprintf(want, sizeof want, "the driven crease %d is assigned valley but is driven to -30°", c.diag);
     cr_assert(strstr(ori_motion_reason(mo), want), "%s", ori_motion_reason(mo));
     ori_motion_destroy(mo);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, open_corner_without_a_lock_is_underdetermined)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.locked_count = 0;
     ori_motion *mo = solve(c.m, &d);
@@ -282,20 +251,20 @@ Test(kinematics, open_corner_without_a_lock_is_underdetermined)
     cr_assert(strstr(ori_motion_reason(mo), "lock 1 more crease"), "%s", ori_motion_reason(mo));
     cr_assert_eq(ori_motion_frame_count(mo), 0);
     ori_motion_destroy(mo);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 // --- the second fold: the corner cube -----------------------------------------------------
 
 static void second_fold(ori_solver solver)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d1 = first_fold(&c, solver, 180);
     ori_motion *m1 = solve(c.m, &d1);
     cr_assert_eq(ori_motion_verdict_of(m1), ORI_MOTION_VALID);
     const double *state = ori_motion_frame_angles(m1, ori_motion_frame_count(m1) - 1);
     ori_motion_def d2 = ori_default_motion_def();
-    d2.fixed_face = c.T2;
+    d2.fixed_face = c.t2;
     d2.start_angles_rad = state;
     d2.driven_edge = c.down;
     d2.to_rad = 90 * DEG;
@@ -317,11 +286,11 @@ static void second_fold(ori_solver solver)
     ori_rigid g[5];
     ori_motion_frame_face_poses(m2, ori_motion_frame_count(m2) - 1, g);
     ori_v3 z = ori_v3_make(0, 0, 1);
-    ori_v3 n_lr = ori_m3_apply(g[c.LR].r, z), n_ur = ori_m3_apply(g[c.UR].r, z), n_ul = ori_m3_apply(g[c.UL].r, z);
+    ori_v3 n_lr = ori_m3_apply(g[c.lr].r, z), n_ur = ori_m3_apply(g[c.ur].r, z), n_ul = ori_m3_apply(g[c.ul].r, z);
     cr_assert_float_eq(ori_v3_dot(n_lr, n_ur), 0.0, 1e-9);
     cr_assert_float_eq(ori_v3_dot(n_ur, n_ul), 0.0, 1e-9);
     cr_assert_float_eq(ori_v3_dot(n_ul, n_lr), 0.0, 1e-9);
-    cr_assert_float_eq(ori_v3_dot(ori_m3_apply(g[c.T1].r, z), n_ul), -1.0, 1e-9);
+    cr_assert_float_eq(ori_v3_dot(ori_m3_apply(g[c.t1].r, z), n_ul), -1.0, 1e-9);
     // Four valleys and one mountain.
     const double *a = ori_motion_frame_angles(m2, ori_motion_frame_count(m2) - 1);
     cr_assert_gt(a[c.diag], 0.0);
@@ -332,7 +301,7 @@ static void second_fold(ori_solver solver)
     check_frames(c.m, c.p, m2);
     ori_motion_destroy(m1);
     ori_motion_destroy(m2);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, open_corner_second_fold_reaches_the_corner_cube_closed_form) { second_fold(ORI_SOLVER_ANALYTIC); }
@@ -343,15 +312,15 @@ Test(kinematics, a_fold_from_any_state_keeps_the_fixed_face_in_its_world_pose)
     // What a fold sequence does: after the first fold, fix another face (LR) where the first
     // fold left it, and fold again. The result is the same shape as with T2 fixed, moved by
     // the rigid motion that maps one onto the other; LR does not move.
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d1 = first_fold(&c, ORI_SOLVER_AUTO, 120);
     ori_motion *m1 = solve(c.m, &d1);
     int last = ori_motion_frame_count(m1) - 1;
     ori_rigid g[5];
     ori_motion_frame_face_poses(m1, last, g);
     ori_motion_def d2 = ori_default_motion_def();
-    d2.fixed_face = c.LR;
-    d2.fixed_pose = g[c.LR];
+    d2.fixed_face = c.lr;
+    d2.fixed_pose = g[c.lr];
     d2.start_angles_rad = ori_motion_frame_angles(m1, last);
     d2.driven_edge = c.diag;
     d2.to_rad = 150 * DEG;
@@ -372,12 +341,12 @@ Test(kinematics, a_fold_from_any_state_keeps_the_fixed_face_in_its_world_pose)
         ori_motion_destroy(m2);
     }
     ori_motion_destroy(m1);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, from_reaches_the_start_silently)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.has_from = true;
     d.from_rad = 30 * DEG;
@@ -388,7 +357,7 @@ Test(kinematics, from_reaches_the_start_silently)
     cr_assert_float_eq(ori_motion_frame_angles(mo, 0)[c.right] / DEG, 10.728583121609052, 1e-9);
     cr_assert_eq(ori_motion_frame_drive(mo, ori_motion_frame_count(mo) - 1), 90 * DEG);
     ori_motion_destroy(mo);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 // --- Miura-ori ------------------------------------------------------------------------------
@@ -538,7 +507,7 @@ Test(kinematics, single_square_twist_is_not_rigidly_foldable)
 
 Test(kinematics, transfer_functions_of_the_first_fold)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_fit_def fd = ori_default_fit_def();
     fd.motion = first_fold(&c, ORI_SOLVER_AUTO, 90);
     fd.degree = 4;
@@ -570,14 +539,14 @@ Test(kinematics, transfer_functions_of_the_first_fold)
     fd.motion.to_rad = -90 * DEG;
     cr_assert_eq(ori_fit_solve(c.m, &fd, &fit, &err), ORI_ERR_ARGUMENT);
     cr_assert(strstr(err.message, "the fold is invalid assignment"), "%s", err.message);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 // --- bad input ---------------------------------------------------------------------------------
 
 Test(kinematics, bad_fold_specifications_are_errors_naming_the_index)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion *mo = NULL;
     ori_error err;
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
@@ -624,12 +593,12 @@ Test(kinematics, bad_fold_specifications_are_errors_naming_the_index)
     cr_assert_eq(ori_motion_solve(m2, &d, &mo, &err), ORI_ERR_ARGUMENT);
     cr_assert(strstr(err.message, "cannot be driven"));
     ori_mechanism_destroy(m2);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 Test(kinematics, slightly_rounded_start_states_are_projected)
 {
-    corner c = corner_load();
+    test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
     ori_motion *m1 = solve(c.m, &d);
     double st[13];
@@ -643,7 +612,7 @@ Test(kinematics, slightly_rounded_start_states_are_projected)
     check_frames(c.m, c.p, m2);
     ori_motion_destroy(m1);
     ori_motion_destroy(m2);
-    corner_free(&c);
+    test_open_corner_free(&c);
 }
 
 // --- the command line: FOLD output and chaining -----------------------------------------
@@ -703,7 +672,7 @@ Test(kinematics, cli_square_twist_is_not_rigidly_foldable)
 
 // --- holes -------------------------------------------------------------------------------
 
-// A 3×3 square with a 1×1 hole: four creases from the hole's corners, either to the outer
+// A 3×3 square with a 1×1 hole: four creases from the hole's test_open_corners, either to the outer
 // corners (diagonals: all axes meet at the centre, a spherical loop) or pinwheel-wise.
 static ori_pattern *ring(bool diagonal)
 {
