@@ -75,6 +75,10 @@
 /// of the input scale counts as zero (parallel lines, tangency). Unitless.
 #define ORI_TOL_CONSTRUCTION_REL 1e-12
 
+/// Largest coordinate magnitude accepted anywhere (files, drawings, creases, sheets): beyond it
+/// squared lengths overflow double precision. Unitless (same unit as the coordinates).
+#define ORI_COORD_MAX 1e100
+
 /// Spatial grids (crossing checks, planarisation) never get thinner than this × the diagonal
 /// in x or y, so that a sheet of collinear points still has a finite cell size. Unitless.
 #define ORI_GRID_MIN_EXTENT_REL 1e-6

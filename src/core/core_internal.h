@@ -6,6 +6,7 @@
 #include <orikin/base.h>
 #include <orikin/tolerance.h>
 
+#include <math.h>
 #include <stdarg.h>
 #include <string.h>
 
@@ -64,6 +65,9 @@ ori_status ori__fail_at(ori_error *error, ori_status status, const char *field, 
                         const char *fmt, ...) __attribute__((format(printf, 5, 6)));
 ori_status ori__fail_pos(ori_error *error, ori_status status, int line, int column,
                          const char *fmt, ...) __attribute__((format(printf, 5, 6)));
+
+// A coordinate orikin can compute with: finite and at most ORI_COORD_MAX in magnitude.
+static inline bool ori__coord_ok(double x) { return isfinite(x) && fabs(x) <= ORI_COORD_MAX; }
 
 // Bounded string copy that always terminates.
 void ori__strlcpy(char *dst, const char *src, size_t size);

@@ -311,8 +311,8 @@ ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori
     for (int i = 0; i < count; ++i) {
         ori_v2 pts[2] = {segs[i].a, segs[i].b};
         for (int k = 0; k < 2; ++k) {
-            if (!isfinite(pts[k].x) || !isfinite(pts[k].y))
-                return ori__fail_at(error, ORI_ERR_RANGE, "segments", i, "coordinate is not finite");
+            if (!ori__coord_ok(pts[k].x) || !ori__coord_ok(pts[k].y))
+                return ori__fail_at(error, ORI_ERR_RANGE, "segments", i, "coordinate is not finite or exceeds %g", ORI_COORD_MAX);
             lo.x = fmin(lo.x, pts[k].x), lo.y = fmin(lo.y, pts[k].y);
             hi.x = fmax(hi.x, pts[k].x), hi.y = fmax(hi.y, pts[k].y);
         }

@@ -13,6 +13,7 @@ void ori__text_reserve(ori__text *t, size_t extra)
     while (cap < t->len + extra + 1) cap *= 2;
     t->data = ori__realloc(t->data, cap);
     t->cap = cap;
+    t->data[t->len] = '\0'; // terminated even when nothing is ever appended
 }
 
 void ori__text_put(ori__text *t, const char *s, size_t n)

@@ -1651,7 +1651,7 @@ static double grow_box(const ori_pattern *p, double *lx, double *ly, double *hx,
     return d > 0.0 && isfinite(d) ? d : 1.0;
 }
 
-static bool finite_v2(ori_v2 a) { return isfinite(a.x) && isfinite(a.y); }
+static bool finite_v2(ori_v2 a) { return ori__coord_ok(a.x) && ori__coord_ok(a.y); }
 
 // What every insertion does first: outputs cleared, the defaults for a NULL def, the checks.
 static ori_status start(const ori_pattern *p, const ori_insert_def **def, ori_insert_result *out, ori_error *error)
@@ -1665,8 +1665,8 @@ static ori_status start(const ori_pattern *p, const ori_insert_def **def, ori_in
     if (p->folded_form)
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "segments can only be inserted into a flat crease pattern");
     for (int v = 0; v < p->vertex_count; ++v)
-        if (!isfinite(p->vertices[v].x) || !isfinite(p->vertices[v].y))
-            return ori__fail_at(error, ORI_ERR_RANGE, "vertices_coords", v, "coordinate is not finite");
+        if (!finite_v2(ori_v2_make(p->vertices[v].x, p->vertices[v].y)))
+            return ori__fail_at(error, ORI_ERR_RANGE, "vertices_coords", v, "coordinate is not finite or exceeds %g", ORI_COORD_MAX);
     for (int e = 0; e < p->edge_count; ++e)
         for (int k = 0; k < 2; ++k)
             if (p->edges[e].v[k] < 0 || p->edges[e].v[k] >= p->vertex_count)
@@ -1694,7 +1694,7 @@ ori_status ori_pattern_insert_segment(ori_pattern *p, ori_v2 a, ori_v2 b, ori_as
     ori_status st = start(p, &def, out, error);
     if (st != ORI_OK) return st;
     if (!finite_v2(a) || !finite_v2(b) || !isfinite(angle))
-        return ori__fail(error, ORI_ERR_RANGE, "segment coordinates and fold angle must be finite");
+        return ori__fail(error, ORI_ERR_RANGE, "segment coordinates must be finite and at most %g, the fold angle finite", ORI_COORD_MAX);
     double lx = fmin(a.x, b.x), ly = fmin(a.y, b.y), hx = fmax(a.x, b.x), hy = fmax(a.y, b.y);
     double scale = def->length_scale != ORI_INSERT_AUTO_SCALE ? def->length_scale : grow_box(p, &lx, &ly, &hx, &hy);
     arr A;
@@ -1740,7 +1740,7 @@ static ori_status insert_many(ori_pattern *p, const ori_segment *segs, int count
         const ori_segment *s = &segs[i];
         ORI_ASSERT((int)s->assignment >= 0 && s->assignment < ORI_ASSIGN_COUNT);
         if (!finite_v2(s->a) || !finite_v2(s->b) || !isfinite(s->fold_angle_rad))
-            return ori__fail_at(error, ORI_ERR_RANGE, "segments", i, "coordinate or fold angle is not finite");
+            return ori__fail_at(error, ORI_ERR_RANGE, "segments", i, "coordinate (finite, at most %g) or fold angle (finite) out of range", ORI_COORD_MAX);
         lx = fmin(lx, fmin(s->a.x, s->b.x));
         ly = fmin(ly, fmin(s->a.y, s->b.y));
         hx = fmax(hx, fmax(s->a.x, s->b.x));

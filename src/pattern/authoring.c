@@ -118,8 +118,8 @@ ori_status ori_pattern_create_sheet(const ori_v2 *poly, int n, ori_pattern **out
     ori_error_clear(error);
     if (n < 3) return ori__fail(error, ORI_ERR_DEGENERATE, "a sheet needs at least 3 corners (got %d)", n);
     for (int i = 0; i < n; ++i)
-        if (!isfinite(poly[i].x) || !isfinite(poly[i].y))
-            return ori__fail_at(error, ORI_ERR_RANGE, "corners", i, "corner is not finite");
+        if (!ori__coord_ok(poly[i].x) || !ori__coord_ok(poly[i].y))
+            return ori__fail_at(error, ORI_ERR_RANGE, "corners", i, "corner is not finite or exceeds %g", ORI_COORD_MAX);
     ori_pattern *p;
     ori_status st = sheet_pattern(poly, n, false, &p, error);
     if (st != ORI_OK) return st;
@@ -269,8 +269,9 @@ static int clip_crease(const ori_pattern *p, const ori_crease *c, int face, inte
 
 static ori_status check_crease(const ori_pattern *p, const ori_crease *c, int face, ori_error *error)
 {
-    if (!isfinite(c->a.x) || !isfinite(c->a.y) || !isfinite(c->b.x) || !isfinite(c->b.y) || !isfinite(c->fold_angle_rad))
-        return ori__fail(error, ORI_ERR_RANGE, "crease points and fold angle must be finite");
+    if (!ori__coord_ok(c->a.x) || !ori__coord_ok(c->a.y) || !ori__coord_ok(c->b.x) || !ori__coord_ok(c->b.y) ||
+        !isfinite(c->fold_angle_rad))
+        return ori__fail(error, ORI_ERR_RANGE, "crease points must be finite and at most %g, the fold angle finite", ORI_COORD_MAX);
     if ((int)c->assignment < 0 || c->assignment >= ORI_ASSIGN_COUNT || !(ori_assignment_is_fold(c->assignment) || c->assignment == ORI_ASSIGN_FLAT))
         return ori__fail(error, ORI_ERR_ARGUMENT, "a crease is M, V, F or U");
     if (face != ORI_NULL_INDEX && (face < 0 || face >= p->face_count))

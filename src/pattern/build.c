@@ -69,13 +69,18 @@ static ori_status find_close_vertices(ori_pattern *p, double tol, int *twin)
     // When every vertex lies in the same z layer of cells (a flat sheet), probes of the layers
     // above and below can never match: skip them (9 probes per vertex instead of 27).
     bool one_layer = true;
-    int64_t z_layer = n > 0 ? (int64_t)floor(p->vertices[0].z / h) : 0;
-    for (int i = 1; i < n && one_layer; ++i) one_layer = (int64_t)floor(p->vertices[i].z / h) == z_layer;
+    // Cells count from the lower corner of the bounding box: at most diagonal / h ≈ 1e9 per axis,
+    // whatever the coordinates' offset from the origin (an int64 cast of a larger value is UB).
+    ori_v3 lo = n > 0 ? p->vertices[0] : ori_v3_make(0, 0, 0);
+    for (int i = 1; i < n; ++i)
+        lo = ori_v3_make(fmin(lo.x, p->vertices[i].x), fmin(lo.y, p->vertices[i].y), fmin(lo.z, p->vertices[i].z));
+    int64_t z_layer = n > 0 ? (int64_t)floor((p->vertices[0].z - lo.z) / h) : 0;
+    for (int i = 1; i < n && one_layer; ++i) one_layer = (int64_t)floor((p->vertices[i].z - lo.z) / h) == z_layer;
     int dz_lo = one_layer ? 0 : -1, dz_hi = one_layer ? 0 : 1;
     ori_status st = ORI_OK;
     for (int i = 0; i < n && st == ORI_OK; ++i) {
         ori_v3 v = p->vertices[i];
-        int64_t c[3] = {(int64_t)floor(v.x / h), (int64_t)floor(v.y / h), (int64_t)floor(v.z / h)};
+        int64_t c[3] = {(int64_t)floor((v.x - lo.x) / h), (int64_t)floor((v.y - lo.y) / h), (int64_t)floor((v.z - lo.z) / h)};
         memcpy(cell + 3 * i, c, sizeof c);
         twin[i] = -1;
         for (int dx = -1; dx <= 1 && twin[i] < 0; ++dx)
@@ -431,8 +436,8 @@ static ori_status check_indices(const ori_pattern *p, ori_error *error)
 {
     for (int i = 0; i < p->vertex_count; ++i) {
         ori_v3 v = p->vertices[i];
-        if (!isfinite(v.x) || !isfinite(v.y) || !isfinite(v.z))
-            return ori__fail_at(error, ORI_ERR_RANGE, "vertices_coords", i, "coordinate is not finite");
+        if (!ori__coord_ok(v.x) || !ori__coord_ok(v.y) || !ori__coord_ok(v.z))
+            return ori__fail_at(error, ORI_ERR_RANGE, "vertices_coords", i, "coordinate is not finite or exceeds %g", ORI_COORD_MAX);
     }
     for (int e = 0; e < p->edge_count; ++e) {
         for (int k = 0; k < 2; ++k) {
