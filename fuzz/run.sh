@@ -13,9 +13,15 @@ for t in "$BUILD"/fuzz/fuzz_*; do
     name=$(basename "$t" | sed 's/^fuzz_//')
     dir="$corpus/$name"
     mkdir -p "$dir"
-    # seeds: fuzz/seeds/<name>/* plus files with the target's extension from examples and tests
-    [ -d "fuzz/seeds/$name" ] && cp fuzz/seeds/"$name"/* "$dir"/ 2>/dev/null || true
-    for f in examples/patterns/*."$name" tests/data/*."$name" tests/data/formats/*."$name"; do
+    # seeds: fuzz/seeds/<name>/* and the repository's own inputs of that kind
+    case $name in
+        fold) seeds="examples/patterns/*.fold tests/data/*.fold" ;;
+        composite) seeds="examples/composites/*.json tests/data/*composite*.json" ;;
+        sequence) seeds="examples/*.seq.json" ;;
+        arrangement) seeds="" ;;
+        *) seeds="tests/data/formats/*.$name" ;;
+    esac
+    for f in fuzz/seeds/"$name"/* $seeds; do
         [ -e "$f" ] && cp "$f" "$dir"/
     done
     echo "fuzz: $name for ${SECONDS_EACH}s"
