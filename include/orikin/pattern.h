@@ -119,8 +119,11 @@ ORI_API ori_status ori_pattern_build(ori_pattern *pattern, const ori_build_def *
 /// True after a successful build and before the next topology change.
 ORI_API bool ori_pattern_is_built(const ori_pattern *pattern);
 
+/// Number of vertices (FOLD vertices_coords entries).
 ORI_API int ori_pattern_vertex_count(const ori_pattern *pattern);
+/// Number of edges (FOLD edges_vertices entries).
 ORI_API int ori_pattern_edge_count(const ori_pattern *pattern);
+/// Number of faces (given, or traced by the last build).
 ORI_API int ori_pattern_face_count(const ori_pattern *pattern);
 /// Position of a vertex.
 ORI_API ori_v3 ori_pattern_vertex(const ori_pattern *pattern, int vertex);

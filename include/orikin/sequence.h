@@ -57,6 +57,7 @@ ORI_API void ori_sequence_destroy(ori_sequence *sequence);
 ORI_API const char *ori_sequence_pattern_path(const ori_sequence *sequence);
 /// Frame of the pattern file whose fold angles start the sequence (default 0).
 ORI_API int ori_sequence_frame(const ori_sequence *sequence);
+/// Number of folds in the sequence (≥ 1).
 ORI_API int ori_sequence_fold_count(const ori_sequence *sequence);
 /// A fold by value.
 ORI_API ori_sequence_fold ori_sequence_fold_at(const ori_sequence *sequence, int fold);
