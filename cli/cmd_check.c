@@ -6,14 +6,6 @@
 
 #include "cli.h"
 
-// Degrees for output: values within ORI_TOL_PRINT_DEG of an integer are written as it.
-static double out_deg(double rad)
-{
-    double d = ori_rad_to_deg(rad);
-    double r = nearbyint(d);
-    if (fabs(d - r) <= ORI_TOL_PRINT_DEG) d = r;
-    return d == 0.0 ? 0.0 : d;
-}
 
 static json_t *count_json(ori_mv_count c)
 {
@@ -40,7 +32,7 @@ static json_t *vertex_json(const ori_pattern *p, const ori_flat_report *rep, int
     char *letters = malloc((size_t)n + 1);
     for (int k = 0; k < n; ++k) {
         json_array_append_new(cr, json_integer(edges[k]));
-        json_array_append_new(sd, json_real(out_deg(sectors[k])));
+        json_array_append_new(sd, json_real(ori_rad_to_deg_output(sectors[k])));
         letters[k] = ori_assignment_to_char(ori_pattern_edge(p, edges[k]).assignment);
     }
     letters[n] = '\0';
@@ -48,7 +40,7 @@ static json_t *vertex_json(const ori_pattern *p, const ori_flat_report *rep, int
     json_object_set_new(o, "assignment", json_string(letters));
     free(letters);
     json_object_set_new(o, "sectors_deg", sd);
-    json_object_set_new(o, "sector_sum_deg", json_real(out_deg(r.sector_sum_rad)));
+    json_object_set_new(o, "sector_sum_deg", json_real(ori_rad_to_deg_output(r.sector_sum_rad)));
     json_object_set_new(o, "kawasaki", json_boolean(r.kawasaki));
     json_object_set_new(o, "maekawa", r.maekawa == ORI_FLAT_UNDETERMINED ? json_null() : json_boolean(r.maekawa == ORI_FLAT_YES));
     json_object_set_new(o, "big_little_big", json_boolean(r.big_little_big));
@@ -131,7 +123,7 @@ static int run(int argc, char **argv)
                 printf("%-7d %-6d %-4s %-4s %-4s ", r.vertex, r.degree, yes_no(r.kawasaki), m, yes_no(r.big_little_big));
                 print_count(r.mv_count, 8);
                 printf(" %-6s", r.flat_foldable ? "yes" : "NO");
-                for (int k = 0; k < n; ++k) printf(" %.6g", out_deg(sectors[k]));
+                for (int k = 0; k < n; ++k) printf(" %.6g", ori_rad_to_deg_output(sectors[k]));
                 printf("\n");
             }
         }

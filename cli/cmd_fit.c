@@ -39,7 +39,7 @@ static int run(int argc, char **argv)
         return rc;
     }
     int n = ori_fit_crease_count(fit), d = a.degree;
-    double from = a.has_from ? a.from_deg : cli_deg(k.angles[a.drive]);
+    double from = a.has_from ? a.from_deg : ori_rad_to_deg_output(k.angles[a.drive]);
     double coef[13];
     // Coefficients in powers of the drive in degrees: θ_deg = Σ c_k x_deg^k with
     // c_k = (180/π) c_k^rad (π/180)^k.

@@ -109,22 +109,22 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
         ori_crease_violation fv = ori_motion_violation(mo, i);
         char as[2] = {ori_assignment_to_char(fv.assignment), '\0'};
         json_array_append_new(off, json_pack("{s:i,s:s,s:f,s:f}", "edge", fv.edge, "assignment", as, "angle_deg",
-                                             cli_deg(fv.angle_rad), "at_drive_deg", cli_deg(fv.drive_rad)));
+                                             ori_rad_to_deg_output(fv.angle_rad), "at_drive_deg", ori_rad_to_deg_output(fv.drive_rad)));
     }
     json_object_set_new(out, "offending_edges", off);
     json_t *frames = json_array();
     for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
         json_t *fr = json_object();
-        json_object_set_new(fr, "drive_deg", json_real(cli_deg(ori_motion_frame_drive(mo, f))));
+        json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, f))));
         const double *ang = ori_motion_frame_angles(mo, f);
         json_t *angs = json_array();
-        for (int e = 0; e < E; ++e) json_array_append_new(angs, json_real(cli_deg(ang[e])));
+        for (int e = 0; e < E; ++e) json_array_append_new(angs, json_real(ori_rad_to_deg_output(ang[e])));
         json_object_set_new(fr, "fold_angles_deg", angs);
         json_object_set_new(fr, "residual", json_real(ori_motion_frame_residual(mo, f)));
         double *alt = malloc(sizeof(double) * (size_t)(E + 1));
         if (ori_motion_frame_other_branch(mo, f, alt)) {
             json_t *oth = json_array();
-            for (int e = 0; e < E; ++e) json_array_append_new(oth, json_real(cli_deg(alt[e])));
+            for (int e = 0; e < E; ++e) json_array_append_new(oth, json_real(ori_rad_to_deg_output(alt[e])));
             json_object_set_new(fr, "other_branch_deg", oth);
         }
         free(alt);
@@ -186,8 +186,8 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
         for (int i = 0; i < nc; ++i) printf(" %11s%-4d", "crease ", cols[i]);
         printf("  residual\n");
         for (int f = 0; f < F; ++f) {
-            printf("%10.4f", cli_deg(ori_motion_frame_drive(mo, f)));
-            for (int i = 0; i < nc; ++i) printf(" %15.6f", cli_deg(ori_motion_frame_angles(mo, f)[cols[i]]));
+            printf("%10.4f", ori_rad_to_deg_output(ori_motion_frame_drive(mo, f)));
+            for (int i = 0; i < nc; ++i) printf(" %15.6f", ori_rad_to_deg_output(ori_motion_frame_angles(mo, f)[cols[i]]));
             printf("  %.1e\n", ori_motion_frame_residual(mo, f));
         }
         if (moving > nc) printf("(%d more moving creases: see --json)\n", moving - nc);
@@ -210,7 +210,7 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
         ori_motion_frame_vertices(mo, f, pos);
         char title[128];
-        snprintf(title, sizeof title, "fold crease %d: %g deg", a->drive, cli_deg(ori_motion_frame_drive(mo, f)));
+        snprintf(title, sizeof title, "fold crease %d: %g deg", a->drive, ori_rad_to_deg_output(ori_motion_frame_drive(mo, f)));
         ori_fold_append_state(k->doc, 0, V, pos, E, ori_motion_frame_angles(mo, f), title);
     }
     free(pos);

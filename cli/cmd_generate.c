@@ -32,12 +32,6 @@ static const char *option_for_field(const char *field)
     return buf;
 }
 
-// Degrees for files: round-off from the radian round trip (59.99999999999999) removed.
-static double clean_deg(double rad)
-{
-    double d = ori_rad_to_deg(rad), r = round(d);
-    return fabs(d - r) <= ORI_TOL_PRINT_DEG ? r : d;
-}
 
 // "orikin:generator": the tessellation and the parameters it read.
 static void generator_json(const ori_generate_def *def, char *buf, size_t size)
@@ -46,7 +40,7 @@ static void generator_json(const ori_generate_def *def, char *buf, size_t size)
     int n = snprintf(buf, size, "{\"kind\":\"%s\",\"rows\":%d", ori_tessellation_name(k), def->rows);
     if (k == ORI_TESS_KRESLING) n += snprintf(buf + n, size - (size_t)n, ",\"sides\":%d", def->sides);
     else n += snprintf(buf + n, size - (size_t)n, ",\"cols\":%d", def->cols);
-    if (k != ORI_TESS_WATERBOMB) n += snprintf(buf + n, size - (size_t)n, ",\"angle_deg\":%.17g", clean_deg(def->angle_rad));
+    if (k != ORI_TESS_WATERBOMB) n += snprintf(buf + n, size - (size_t)n, ",\"angle_deg\":%.17g", ori_rad_to_deg_output(def->angle_rad));
     n += snprintf(buf + n, size - (size_t)n, ",\"width\":%.17g", def->width);
     if (k == ORI_TESS_KRESLING && def->bistable_height)
         n += snprintf(buf + n, size - (size_t)n, ",\"height\":\"bistable\"");

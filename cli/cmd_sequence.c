@@ -45,7 +45,7 @@ static int moving_creases(const ori_record *r, int edges, int *out, int cap)
 static json_t *angles_json(const double *a, int n)
 {
     json_t *arr = json_array();
-    for (int e = 0; e < n; ++e) json_array_append_new(arr, json_real(cli_deg(a[e])));
+    for (int e = 0; e < n; ++e) json_array_append_new(arr, json_real(ori_rad_to_deg_output(a[e])));
     return arr;
 }
 
@@ -59,9 +59,9 @@ static json_t *fold_json(const ori_sequence_fold *f, int i)
     json_t *lock = json_array();
     for (int k = 0; k < f->locked_count; ++k) json_array_append_new(lock, json_integer(f->locked[k]));
     json_object_set_new(o, "lock", lock);
-    json_object_set_new(o, "from_deg", f->has_from ? json_real(cli_deg(f->from_rad)) : json_null());
-    json_object_set_new(o, "to_deg", json_real(cli_deg(f->to_rad)));
-    json_object_set_new(o, "step_deg", json_real(cli_deg(f->step_rad)));
+    json_object_set_new(o, "from_deg", f->has_from ? json_real(ori_rad_to_deg_output(f->from_rad)) : json_null());
+    json_object_set_new(o, "to_deg", json_real(ori_rad_to_deg_output(f->to_rad)));
+    json_object_set_new(o, "step_deg", json_real(ori_rad_to_deg_output(f->step_rad)));
     return o;
 }
 
@@ -87,7 +87,7 @@ static void print_record_json(const seq_args *a, const char *pattern, const ori_
         json_t *fr = json_object();
         json_object_set_new(fr, "t", json_real(ori_record_frame_time(r, f)));
         json_object_set_new(fr, "fold", json_integer(ori_record_frame_fold(r, f) + 1));
-        json_object_set_new(fr, "drive_deg", json_real(cli_deg(ori_record_frame_drive(r, f))));
+        json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_record_frame_drive(r, f))));
         json_object_set_new(fr, "fold_angles_deg", angles_json(ori_record_frame_angles(r, f), E));
         json_object_set_new(fr, "residual", json_real(ori_record_frame_residual(r, f)));
         json_array_append_new(frames, fr);
@@ -105,7 +105,7 @@ static void print_record_text(const char *pattern, const ori_sequence *s, const 
     for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
         ori_sequence_fold f = ori_sequence_fold_at(s, i);
         printf("  fold %d%s%s%s: fix face %d, drive crease %d to %g deg (step %g)", i + 1, f.name[0] ? " (" : "", f.name,
-               f.name[0] ? ")" : "", f.fixed_face, f.driven_edge, cli_deg(f.to_rad), cli_deg(f.step_rad));
+               f.name[0] ? ")" : "", f.fixed_face, f.driven_edge, ori_rad_to_deg_output(f.to_rad), ori_rad_to_deg_output(f.step_rad));
         if (f.locked_count) {
             printf(", lock");
             for (int k = 0; k < f.locked_count; ++k) printf("%s%d", k ? "," : " ", f.locked[k]);
@@ -117,7 +117,7 @@ static void print_record_text(const char *pattern, const ori_sequence *s, const 
     printf("  residual\n");
     for (int f = 0; f < ori_record_frame_count(r); ++f) {
         printf("%7.3f %5d", ori_record_frame_time(r, f), ori_record_frame_fold(r, f) + 1);
-        for (int i = 0; i < nc; ++i) printf(" %12.6f", cli_deg(ori_record_frame_angles(r, f)[cols[i]]));
+        for (int i = 0; i < nc; ++i) printf(" %12.6f", ori_rad_to_deg_output(ori_record_frame_angles(r, f)[cols[i]]));
         printf("  %.1e\n", ori_record_frame_residual(r, f));
     }
     if (moving > nc) printf("(%d more moving creases: see --json)\n", moving - nc);
@@ -150,7 +150,7 @@ static int print_at(const seq_args *a, const cli_kin *k, const ori_record *r)
         json_t *o = json_object();
         json_object_set_new(o, "t", json_real(a->at));
         json_object_set_new(o, "fold", json_integer(fold + 1));
-        json_object_set_new(o, "drive_deg", json_real(cli_deg(drive)));
+        json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(drive)));
         json_object_set_new(o, "fold_angles_deg", angles_json(ang, E));
         json_object_set_new(o, "residual", json_real(residual));
         json_t *coords = json_array();
@@ -158,11 +158,11 @@ static int print_at(const seq_args *a, const cli_kin *k, const ori_record *r)
         json_object_set_new(o, "vertices_coords", coords);
         cli_print_json(o);
     } else {
-        printf("t = %g: fold %d, drive %.6f deg, residual %.1e\n", a->at, fold + 1, cli_deg(drive), residual);
+        printf("t = %g: fold %d, drive %.6f deg, residual %.1e\n", a->at, fold + 1, ori_rad_to_deg_output(drive), residual);
         for (int e = 0; e < E; ++e) {
             ori_edge ed = ori_pattern_edge(k->flat, e);
             if (!ori_assignment_is_fold(ed.assignment) && ed.assignment != ORI_ASSIGN_FLAT) continue;
-            printf("  crease %-5d %c %12.6f\n", e, ori_assignment_to_char(ed.assignment), cli_deg(ang[e]));
+            printf("  crease %-5d %c %12.6f\n", e, ori_assignment_to_char(ed.assignment), ori_rad_to_deg_output(ang[e]));
         }
     }
     if (a->out) {
@@ -186,7 +186,7 @@ static int write_record(const seq_args *a, const cli_kin *k, const ori_sequence 
         char title[128];
         snprintf(title, sizeof title, "t = %.4g: fold %d, crease %d at %g deg", ori_record_frame_time(r, f),
                  ori_record_frame_fold(r, f) + 1, ori_sequence_fold_at(s, ori_record_frame_fold(r, f)).driven_edge,
-                 cli_deg(ori_record_frame_drive(r, f)));
+                 ori_rad_to_deg_output(ori_record_frame_drive(r, f)));
         int fr = ori_fold_append_state(k->doc, 0, V, ori_record_frame_vertices(r, f), E, ori_record_frame_angles(r, f), title);
         char t[64];
         snprintf(t, sizeof t, "%.17g", ori_record_frame_time(r, f));

@@ -1,16 +1,9 @@
-// Shared pieces of the kinematics commands: loading, the fold options, degrees.
+// Shared pieces of the kinematics commands: loading and the fold options.
 #include "kin_args.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-double cli_deg(double rad)
-{
-    double d = ori_rad_to_deg(rad);
-    double r = nearbyint(d);
-    return fabs(d - r) <= ORI_TOL_PRINT_DEG ? r + 0.0 : d;
-}
 
 void cli_kin_free(cli_kin *k)
 {

@@ -1,5 +1,5 @@
 // Shared pieces of the kinematics commands (fold, fit, dof): loading the flat crease pattern
-// of frame 0 and the start state of a frame, parsing the fold specification, degrees.
+// of frame 0 and the start state of a frame, parsing the fold specification.
 #ifndef ORI_CLI_KIN_ARGS_H
 #define ORI_CLI_KIN_ARGS_H
 
@@ -53,7 +53,5 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
 // CLI_EXIT_INPUT for bad indices/angles; else CLI_EXIT_OK.
 int cli_fold_def(const char *cmd, const cli_fold_args *a, const cli_kin *k, ori_motion_def *def);
 
-// Degrees of an angle with radian↔degree round-off removed (ORI_TOL_PRINT_DEG).
-double cli_deg(double rad);
 
 #endif

@@ -4,7 +4,7 @@
 /// Inline: ori_v2_*, ori_v3_*, ori_m3_*, ori_rigid_* (add, sub, scale, dot, cross, norm,
 /// normalize, mul, transpose, apply, compose, inverse).
 /// Functions: ori_m3_rotation, ori_twist_from_axis, ori_twist_exp, ori_orient2d,
-/// ori_orient2d_sign, ori_angle_between_v2, ori_angle_between_v3, ori_wrap_angle.
+/// ori_orient2d_sign, ori_angle_ccw_v2, ori_angle_between_v3, ori_wrap_angle, ori_rad_to_deg_output.
 /// Angles are radians; rotations follow the right-hand rule.
 #ifndef ORIKIN_MATH_H
 #define ORIKIN_MATH_H
@@ -160,6 +160,10 @@ ORI_API double ori_angle_ccw_v2(ori_v2 a, ori_v2 b);
 ORI_API double ori_angle_between_v3(ori_v3 a, ori_v3 b);
 /// An angle wrapped into (−π, π].
 ORI_API double ori_wrap_angle(double angle_rad);
+
+/// Radians → degrees for output (files, messages, the CLI): a value within ORI_TOL_PRINT_DEG
+/// of an integer becomes that integer (90.00000000000001 → 90) and −0 becomes 0.
+ORI_API double ori_rad_to_deg_output(double angle_rad);
 
 /// Degrees → radians and back (I/O and CLI only; the library works in radians).
 static inline double ori_deg_to_rad(double deg) { return deg * (ORI_PI / 180.0); }

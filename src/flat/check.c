@@ -120,7 +120,7 @@ ori_flat_check_def ori_default_flat_check_def(void)
     return def;
 }
 
-static double deg(double rad) { return rad * (180.0 / ORI_PI); }
+static double deg(double rad) { return ori_rad_to_deg_output(rad); }
 
 static void add_violation(ori_flat_report *rep, int vertex, ori_flat_rule rule, int edge, double value,
                           const char *fmt, ...) __attribute__((format(printf, 6, 7)));

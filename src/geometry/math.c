@@ -1,6 +1,7 @@
 // Rotations, twist exponentials, the robust orientation predicate and the segment predicates
 // behind geometry_internal.h.
 #include <orikin/math.h>
+#include <orikin/tolerance.h>
 
 #include <float.h>
 
@@ -147,4 +148,11 @@ double ori_wrap_angle(double angle_rad)
     if (a > ORI_PI) a -= 2.0 * ORI_PI;
     else if (a <= -ORI_PI) a += 2.0 * ORI_PI;
     return a;
+}
+
+double ori_rad_to_deg_output(double angle_rad)
+{
+    double d = ori_rad_to_deg(angle_rad), r = round(d);
+    if (fabs(d - r) <= ORI_TOL_PRINT_DEG) d = r;
+    return d == 0.0 ? 0.0 : d;
 }

@@ -354,7 +354,7 @@ static json_t *fold_angles_json(const double *angles_rad, int count, json_t *old
         if (o && json_is_number(o) && ori_deg_to_rad(json_number_value(o)) == rad)
             json_array_append(arr, o);
         else
-            json_array_append_new(arr, ori__json_number(ori__clean_degrees(ori_rad_to_deg(rad))));
+            json_array_append_new(arr, ori__json_number(ori_rad_to_deg_output(rad)));
     }
     return arr;
 }

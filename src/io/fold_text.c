@@ -104,7 +104,7 @@ char *ori_pattern_to_fold_text(const ori_pattern *p, const ori_fold_field *extra
         puts_(&b, "[");
         for (int e = 0; e < p->edge_count; ++e) {
             if (e) puts_(&b, ",");
-            ori__text_real(&b, ori__clean_degrees(ori_rad_to_deg(p->edges[e].fold_angle_rad)));
+            ori__text_real(&b, ori_rad_to_deg_output(p->edges[e].fold_angle_rad));
         }
         puts_(&b, "]");
     }

@@ -28,8 +28,6 @@ void ori__text_json_string(ori__text *t, const char *s, size_t n);
 
 // Shortest decimal text that reads back as exactly x (at most 17 significant digits; ±0 is "0").
 void ori__format_double(double x, char *buf, size_t size);
-// Degrees within ORI_TOL_PRINT_DEG of an integer become that integer; −0 becomes 0.
-double ori__clean_degrees(double deg);
 
 // A JSON real for a finite double (−0 written as 0).
 json_t *ori__json_number(double x);

@@ -66,13 +66,6 @@ void ori__format_double(double x, char *buf, size_t size)
     }
 }
 
-double ori__clean_degrees(double deg)
-{
-    double r = round(deg);
-    if (fabs(deg - r) <= ORI_TOL_PRINT_DEG) deg = r;
-    return deg == 0.0 ? 0.0 : deg;
-}
-
 void ori__text_real(ori__text *t, double x)
 {
     char num[40];

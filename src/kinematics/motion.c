@@ -581,12 +581,7 @@ static void append_reason(ori_motion *mo, const char *fmt, double a, double b)
     snprintf(mo->reason + len, sizeof mo->reason - len, fmt, a, b);
 }
 
-static double deg(double rad)
-{
-    double d = ori_rad_to_deg(rad);
-    double r = nearbyint(d);
-    return fabs(d - r) <= ORI_TOL_PRINT_DEG ? r : d;
-}
+static double deg(double rad) { return ori_rad_to_deg_output(rad); }
 
 ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, ori_motion **out, ori_error *error)
 {

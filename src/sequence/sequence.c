@@ -210,12 +210,7 @@ ori_sequence_fold ori_sequence_fold_at(const ori_sequence *s, int fold)
     return s->folds[fold];
 }
 
-static json_t *degrees(double rad)
-{
-    double d = ori_rad_to_deg(rad), r = round(d);
-    if (fabs(d - r) <= ORI_TOL_PRINT_DEG) d = r;
-    return json_real(d == 0.0 ? 0.0 : d);
-}
+static json_t *degrees(double rad) { return json_real(ori_rad_to_deg_output(rad)); }
 
 char *ori_sequence_to_json(const ori_sequence *s)
 {
