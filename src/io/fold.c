@@ -440,6 +440,38 @@ static bool had_three_coords(json_t *coords)
     return json_is_array(first) && json_array_size(first) == 3;
 }
 
+// Whether a JSON array of integers equals ints[0..n).
+static bool same_ints(json_t *arr, const int *ints, int n)
+{
+    if (!json_is_array(arr) || json_array_size(arr) != (size_t)n) return false;
+    for (int i = 0; i < n; ++i) {
+        json_t *x = json_array_get(arr, (size_t)i);
+        if (!json_is_integer(x) || json_integer_value(x) != ints[i]) return false;
+    }
+    return true;
+}
+
+// The file's edges_vertices are the pattern's edges (compared in place, no copy built).
+static bool same_edges(json_t *old, const ori_pattern *p)
+{
+    if (!json_is_array(old) || json_array_size(old) != (size_t)p->edge_count) return false;
+    for (int e = 0; e < p->edge_count; ++e)
+        if (!same_ints(json_array_get(old, (size_t)e), p->edges[e].v, 2)) return false;
+    return true;
+}
+
+// The file's faces_vertices are the pattern's faces (both absent counts as the same).
+static bool same_faces(json_t *old, const ori_pattern *p)
+{
+    if (!old) return p->face_count == 0;
+    if (!json_is_array(old) || json_array_size(old) != (size_t)p->face_count) return false;
+    for (int f = 0; f < p->face_count; ++f)
+        if (!same_ints(json_array_get(old, (size_t)f), p->face_vertices + p->face_offsets[f],
+                       p->face_offsets[f + 1] - p->face_offsets[f]))
+            return false;
+    return true;
+}
+
 ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, ori_error *error)
 {
     ORI_ASSERT(doc && p);
@@ -449,15 +481,9 @@ ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, 
     json_t *old_coords = frame_field(doc, frame, "vertices_coords");
     bool three = ori_pattern_is_3d(p) || had_three_coords(old_coords);
     // Same topology? Then FOLD's derived index fields stay valid.
-    json_t *new_edges = edges_json(p);
-    json_t *new_faces = p->face_count > 0 ? faces_json(p) : NULL;
-    json_t *old_edges = frame_field(doc, frame, "edges_vertices");
-    json_t *old_faces = frame_field(doc, frame, "faces_vertices");
-    bool same = json_array_size(old_coords) == (size_t)p->vertex_count && old_edges &&
-                json_equal(old_edges, new_edges) &&
-                ((!old_faces && !new_faces) || (old_faces && new_faces && json_equal(old_faces, new_faces)));
-    json_decref(new_edges);
-    json_decref(new_faces);
+    bool same = json_array_size(old_coords) == (size_t)p->vertex_count &&
+                same_edges(frame_field(doc, frame, "edges_vertices"), p) &&
+                same_faces(frame_field(doc, frame, "faces_vertices"), p);
     json_t *old_angles = json_incref(frame_field(doc, frame, "edges_foldAngle"));
     write_pattern_fields(obj, p, old_angles, three);
     json_decref(old_angles);
