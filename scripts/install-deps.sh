@@ -1,7 +1,10 @@
 #!/bin/sh
-# Install the Debian packages orikin needs to build and test. Idempotent and quiet:
-# only packages that are missing are installed. Run as root (or with sudo available).
+# Install what orikin needs to build and test. Idempotent and quiet: only Debian packages that
+# are missing are installed (apt-get), and the front-end/test packages of package.json are
+# installed from package-lock.json (npm ci) when node_modules is missing or older than the
+# lock file. Run as root (or with sudo available).
 set -eu
+cd "$(dirname "$0")/.."
 
 PACKAGES="
 build-essential
@@ -15,7 +18,19 @@ libxml2-dev
 liblapacke-dev
 libopenblas-dev
 libsuitesparse-dev
+libcairo2-dev
+libpng-dev
+libgif-dev
+libmicrohttpd-dev
+libgmp-dev
+libqhull-dev
+poppler-utils
+chromium
 "
+# Node.js and npm come with the machine on most set-ups; from Debian when they are missing.
+if ! command -v npm >/dev/null 2>&1; then
+    PACKAGES="$PACKAGES nodejs npm"
+fi
 
 missing=""
 for p in $PACKAGES; do
@@ -24,17 +39,22 @@ for p in $PACKAGES; do
     fi
 done
 
-if [ -z "$missing" ]; then
-    exit 0
+if [ -n "$missing" ]; then
+    SUDO=""
+    if [ "$(id -u)" -ne 0 ]; then
+        SUDO="sudo"
+    fi
+    echo "install-deps: installing$missing" >&2
+    export DEBIAN_FRONTEND=noninteractive
+    $SUDO apt-get update -qq >/dev/null
+    # shellcheck disable=SC2086
+    $SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
 fi
 
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then
-    SUDO="sudo"
+# npm packages, exactly as locked. The stamp records the lock file the tree was installed from.
+stamp=node_modules/.orikin-lock
+if [ ! -f "$stamp" ] || ! cmp -s package-lock.json "$stamp"; then
+    echo "install-deps: npm ci (package-lock.json)" >&2
+    npm ci --no-audit --no-fund --loglevel=error >/dev/null
+    cp package-lock.json "$stamp"
 fi
-
-echo "install-deps: installing$missing" >&2
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq >/dev/null
-# shellcheck disable=SC2086
-$SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
