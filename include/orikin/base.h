@@ -121,6 +121,12 @@ ORI_API ori_status ori_file_read_all(const char *path, size_t max_bytes, char **
 ORI_API ori_status ori_file_write_atomic(const char *path, const void *data, size_t size,
                                          ori_error *error);
 
+/// Progress of a long operation: called now and then with the fraction done (0 … 1) and the
+/// user pointer given with it. Return false to cancel: the operation then stops at its next
+/// check and fails with ORI_ERR_LIMIT ("cancelled"). The library never prints; the CLI draws a
+/// bar on stderr and the studio's server reports it to the page.
+typedef bool ori_progress_fn(double fraction, void *user);
+
 /// Library version, e.g. "0.1.0"; static string.
 ORI_API const char *ori_version_string(void);
 

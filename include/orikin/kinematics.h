@@ -10,7 +10,7 @@
 /// ori_mechanism_loop_faces, ori_mechanism_vertex_faces, ori_mechanism_grubler,
 /// ori_mechanism_bone_count, ori_mechanism_bone, ori_mechanism_spanning_tree,
 /// ori_mechanism_face_poses, ori_mechanism_vertex_positions, ori_mechanism_residual,
-/// ori_mechanism_face_pose_from_coords, ori_default_dof_def, ori_mechanism_dof,
+/// ori_mechanism_face_pose_from_coords, ori_mechanism_pose_state, ori_default_dof_def, ori_mechanism_dof,
 /// ori_default_motion_def, ori_motion_solve, ori_motion_destroy, ori_motion_verdict_of,
 /// ori_motion_verdict_name, ori_motion_reason, ori_motion_violation_count,
 /// ori_motion_violation, ori_motion_frame_count, ori_motion_frame_drive,
@@ -152,6 +152,18 @@ ORI_API double ori_mechanism_residual(const ori_mechanism *mechanism, const doub
 ORI_API ori_status ori_mechanism_face_pose_from_coords(const ori_mechanism *mechanism, int face,
                                                        const ori_v3 *coords, ori_rigid *out,
                                                        ori_error *error);
+
+/// Pose a state given by fold angles (edge_count entries, radians, e.g. a FOLD frame's
+/// edges_foldAngle): angles whose loops close within ORI_TOL_START_RESIDUAL are first projected
+/// exactly onto the loop-closure manifold (minimum-norm Gauss–Newton; residual ≤
+/// ORI_TOL_RESIDUAL), then posed by forward kinematics from fixed_face at fixed_pose. Outputs,
+/// each optional (NULL): the closed angles (edge_count), world vertex positions (vertex_count)
+/// and face poses (face_count). Fails with ORI_ERR_RANGE (element = edge) for an angle outside
+/// [−π, π], ORI_ERR_ARGUMENT when the loops do not close, ORI_ERR_NOT_CONVERGED when the
+/// projection fails.
+ORI_API ori_status ori_mechanism_pose_state(const ori_mechanism *mechanism, const double *angles_rad,
+                                            int fixed_face, ori_rigid fixed_pose, double *closed_angles_rad,
+                                            ori_v3 *positions, ori_rigid *poses, ori_error *error);
 
 // --- degrees of freedom -----------------------------------------------------------------
 
