@@ -144,4 +144,54 @@
 /// unit axes for vertex loops). The sparse least-squares corrector then takes over.
 #define ORI_KIN_SWEEP_PIVOT_REL 1e-6
 
+
+// --- regularization (check --tolerance, regularize) -----------------------------------------
+
+/// A regularized vertex satisfies Kawasaki to this (|alternating sector sum|, radians).
+#define ORI_TOL_REGULARIZE_KAWASAKI_RAD 1e-12
+
+/// The rigid conditions of a regularized pattern (first- and second-order closure of the fold
+/// rates, in units of the largest rate) hold to this. Unitless.
+#define ORI_TOL_REGULARIZE_RIGID 1e-12
+
+/// regularize refuses (exit 1) when a vertex would move farther than this × the sheet's
+/// bounding-box diagonal: beyond it the drawing is not a rounded exact pattern but a
+/// different one. Unitless (relative length); --max-move overrides it.
+#define ORI_REGULARIZE_MAX_MOVE_REL 1e-3
+
+/// Weight of the fold-rate changes against the coordinate changes in regularize --rigid's
+/// least squares: small, so that the rates adapt freely and the coordinates move the least.
+/// Unitless (rates in units of the largest rate, coordinates in units of the diagonal).
+#define ORI_REGULARIZE_RATE_WEIGHT 1e-6
+
+/// Tikhonov damping of regularize's normal equations, relative to their largest diagonal entry:
+/// lets dependent (consistent) conditions factor; the iteration removes its small bias.
+#define ORI_REGULARIZE_DAMPING_REL 1e-14
+
+/// A boundary vertex whose two boundary edges turn by at most this is on a straight side and
+/// slides along it; a larger turn is a corner, which stays. Radians (rounded drawings bend
+/// straight sides by ~1e-5).
+#define ORI_REGULARIZE_BOUNDARY_STRAIGHT_RAD 1e-4
+
+/// Gauss–Newton passes over the fold rates alone (coordinates held) that measure how far the
+/// input is from rigid before regularizing.
+#define ORI_REGULARIZE_RATE_PASSES 20
+
+/// regularize's Gauss–Newton iteration counts as progressing while each step divides the
+/// largest defect by at least 1 / this; it stops after ORI_REGULARIZE_STALL_STEPS steps without
+/// progress (inconsistent conditions), and halves a step at most ORI_REGULARIZE_BACKTRACK_MAX
+/// times when it would increase the defect.
+#define ORI_REGULARIZE_PROGRESS 0.5
+#define ORI_REGULARIZE_STALL_STEPS 5
+#define ORI_REGULARIZE_BACKTRACK_MAX 30
+
+/// Once regularize's largest defect is below this, the last Newton steps weight coordinates and
+/// rates alike and start from the current state (polish): the moves left are too small to
+/// change the answer, and the disparate weights would limit the precision. Radians.
+#define ORI_REGULARIZE_POLISH 1e-8
+
+/// check: without --tolerance, failures that would all pass within this are reported as the
+/// rounding of a drawing, with a hint to use --tolerance or regularize. Radians (0.01°).
+#define ORI_FLAT_ROUNDING_HINT_RAD 1.7453292519943295e-4
+
 #endif
