@@ -14,6 +14,7 @@
 #include "kinematics.h"
 #include "math.h"
 #include "pattern.h"
+#include "render.h"
 #include "sequence.h"
 #include "tolerance.h"
 
