@@ -191,7 +191,7 @@ typedef struct ori_render_def {
     bool mark_failing;        ///< crease view: ring the interior vertices that are not locally flat-foldable (ori_flat_check_pattern)
     const void *texture_png;  ///< 3D view: PNG image (bytes) mapped on the front side by flat-sheet coordinates, or NULL
     size_t texture_size;      ///< its size in bytes
-    double line_width_rel;    ///< line width as a fraction of the smaller image side (at least 0.75 image units)
+    double line_width_rel;    ///< line width as a fraction of the smaller image side, at least 0.75 image units but at most 1/12 of the mean edge length in the image (dense patterns)
     int internal_value;       ///< set by ori_default_render_def; do not change
 } ori_render_def;
 

@@ -91,13 +91,9 @@ static void part_tri(part_builder *b, int a, int c, int d, int face)
     p->tcount++;
 }
 
-typedef struct uv_map {
-    double x0, y0, dx, dy;
-} uv_map;
-
-static uv_map uv_of_mesh(const ori_mesh *m)
+ori__uv_map ori__uv_of_mesh(const ori_mesh *m)
 {
-    uv_map u = {INFINITY, INFINITY, 0, 0};
+    ori__uv_map u = {INFINITY, INFINITY, 0, 0};
     double x1 = -INFINITY, y1 = -INFINITY;
     for (int v = 0; v < m->vertex_count; ++v) {
         u.x0 = fmin(u.x0, m->ref[v].x);
@@ -113,11 +109,11 @@ static uv_map uv_of_mesh(const ori_mesh *m)
 }
 
 // Texture coordinates: the flat sheet's bounding box stretched over [0, 1]², v downwards (glTF).
-static ori_v2 uv_at(const uv_map *u, ori_v3 ref) { return ori_v2_make((ref.x - u->x0) / u->dx, 1.0 - (ref.y - u->y0) / u->dy); }
+static ori_v2 uv_at(const ori__uv_map *u, ori_v3 ref) { return ori_v2_make((ref.x - u->x0) / u->dx, 1.0 - (ref.y - u->y0) / u->dy); }
 
 // Both sides of face f: vertices at positions pts (world or reference), the front with the
 // face's normal nf.
-static void sheet_face(const ori_mesh *m, int f, const ori_v3 *pts, ori_v3 nf, const uv_map *u, part_builder *front,
+static void sheet_face(const ori_mesh *m, int f, const ori_v3 *pts, ori_v3 nf, const ori__uv_map *u, part_builder *front,
                        part_builder *back)
 {
     int o = m->face_start[f], n = m->face_start[f + 1] - o;
@@ -149,21 +145,20 @@ static ori_v3 ref_normal(const ori_mesh *m, int f)
     return ori_v3_normalize(s);
 }
 
-void ori__xmesh_face(const ori_mesh *m, int face, ori__xmesh *x)
+void ori__xmesh_face(const ori_mesh *m, int face, const ori__uv_map *u, ori__xmesh *x)
 {
     memset(x, 0, sizeof *x);
     x->has_uv = m->has_flat;
-    uv_map u = uv_of_mesh(m);
     part_builder bf = {&x->part[ORI__PART_FRONT], 0, 0, 0, 0, 0, 0};
     part_builder bb = {&x->part[ORI__PART_BACK], 0, 0, 0, 0, 0, 0};
-    sheet_face(m, face, m->ref, ref_normal(m, face), &u, &bf, &bb);
+    sheet_face(m, face, m->ref, ref_normal(m, face), u, &bf, &bb);
 }
 
 void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__xmesh *x)
 {
     memset(x, 0, sizeof *x);
     x->has_uv = m->has_flat;
-    uv_map u = uv_of_mesh(m);
+    ori__uv_map u = ori__uv_of_mesh(m);
     part_builder b[ORI__PART_COUNT];
     for (int i = 0; i < ORI__PART_COUNT; ++i) {
         memset(&b[i], 0, sizeof b[i]);
@@ -257,7 +252,7 @@ static void write_obj(const ori_mesh *m, const ori_export_def *def, ori__text *t
             put_v3(t, m->pos[v]);
             ori__text_puts(t, "\n");
         }
-        uv_map u = uv_of_mesh(m);
+        ori__uv_map u = ori__uv_of_mesh(m);
         if (m->has_flat)
             for (int v = 0; v < m->vertex_count; ++v) {
                 ori_v2 uv = uv_at(&u, m->ref[v]);

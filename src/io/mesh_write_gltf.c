@@ -37,6 +37,20 @@ static void put_u32(bytes *b, uint32_t x)
     b->d[b->n++] = (unsigned char)((x >> 24) & 255);
 }
 
+// n floats at byte offset at of a buffer already large enough, little-endian.
+static void put_floats_at(bytes *b, size_t at, const float *f, int n)
+{
+    for (int i = 0; i < n; ++i) {
+        uint32_t x;
+        memcpy(&x, &f[i], 4);
+        unsigned char *p = b->d + at + 4 * (size_t)i;
+        p[0] = (unsigned char)(x & 255);
+        p[1] = (unsigned char)((x >> 8) & 255);
+        p[2] = (unsigned char)((x >> 16) & 255);
+        p[3] = (unsigned char)((x >> 24) & 255);
+    }
+}
+
 static void put_f32(bytes *b, float f)
 {
     uint32_t x;
@@ -199,28 +213,51 @@ static double srgb_to_linear(double c)
     return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
 
-static void base64(ori__text *t, const unsigned char *d, size_t n)
+// Base64 written piece by piece: up to two bytes wait for the next piece.
+typedef struct b64_state {
+    unsigned char held[2];
+    int nheld;
+} b64_state;
+
+static const char b64_tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+static void b64_group(char *o, const unsigned char *d, int n)
 {
-    static const char tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    ori__text_reserve(t, (n + 2) / 3 * 4);
+    uint32_t v = (uint32_t)d[0] << 16 | (n > 1 ? (uint32_t)d[1] << 8 : 0) | (n > 2 ? d[2] : 0);
+    o[0] = b64_tab[v >> 18];
+    o[1] = b64_tab[(v >> 12) & 63];
+    o[2] = n > 1 ? b64_tab[(v >> 6) & 63] : '=';
+    o[3] = n > 2 ? b64_tab[v & 63] : '=';
+}
+
+static void b64_put(ori__text *t, b64_state *st, const unsigned char *d, size_t n)
+{
+    ori__text_reserve(t, (n + 2) / 3 * 4 + 4);
     char *o = t->data + t->len;
     size_t i = 0;
-    for (; i + 2 < n; i += 3) {
-        uint32_t v = (uint32_t)d[i] << 16 | (uint32_t)d[i + 1] << 8 | d[i + 2];
-        *o++ = tab[v >> 18];
-        *o++ = tab[(v >> 12) & 63];
-        *o++ = tab[(v >> 6) & 63];
-        *o++ = tab[v & 63];
+    while (st->nheld > 0 && st->nheld < 3 && i < n) {
+        if (st->nheld == 2) {
+            unsigned char g[3] = {st->held[0], st->held[1], d[i++]};
+            b64_group(o, g, 3);
+            o += 4;
+            st->nheld = 0;
+        } else {
+            st->held[st->nheld++] = d[i++];
+        }
     }
-    if (i < n) {
-        uint32_t v = (uint32_t)d[i] << 16 | (i + 1 < n ? (uint32_t)d[i + 1] << 8 : 0);
-        *o++ = tab[v >> 18];
-        *o++ = tab[(v >> 12) & 63];
-        *o++ = i + 1 < n ? tab[(v >> 6) & 63] : '=';
-        *o++ = '=';
-    }
+    for (; i + 2 < n; i += 3, o += 4) b64_group(o, d + i, 3);
+    for (; i < n; ++i) st->held[st->nheld++] = d[i];
     t->len = (size_t)(o - t->data);
     t->data[t->len] = '\0';
+}
+
+static void b64_finish(ori__text *t, b64_state *st)
+{
+    if (st->nheld == 0) return;
+    char o[4];
+    b64_group(o, st->held, st->nheld);
+    ori__text_put(t, o, 4);
+    st->nheld = 0;
 }
 
 void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, ori__text *out)
@@ -257,32 +294,22 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
         for (int k = 0; k < K; ++k) put_f32(&g.view[VIEW_TIME], (float)def->keyframe_times_s[k]);
         float t0 = (float)def->keyframe_times_s[0], t1 = (float)def->keyframe_times_s[K - 1];
         int a_time = accessor(&g, VIEW_TIME, off_t, K, "SCALAR", &t0, &t1, 1, GL_FLOAT);
+        ori__uv_map uv = ori__uv_of_mesh(m);
         ori__text chan = {NULL, 0, 0}, samp = {NULL, 0, 0};
         ori__text_reserve(&chan, 0);
         ori__text_reserve(&samp, 0);
         for (int f = 0; f < F; ++f) {
             ori__xmesh x;
-            ori__xmesh_face(m, f, &x);
+            ori__xmesh_face(m, f, &uv, &x);
             char name[32];
             snprintf(name, sizeof name, "face %d", f);
             int mi = mesh_of(&g, &x, name);
             ori__xmesh_free(&x);
-            // Keyframes, quaternions kept on one side (q and −q are the same rotation).
-            size_t off_r = g.view[VIEW_ROTATION].n, off_tr = g.view[VIEW_TRANSLATION].n;
-            double prev[4] = {0, 0, 0, 1}, q0[4] = {0, 0, 0, 1};
-            for (int k = 0; k < K; ++k) {
-                ori_rigid p = def->keyframe_poses[(size_t)k * (size_t)F + (size_t)f];
-                double q[4];
-                quat_of(p.r, q);
-                if (k > 0 && q[0] * prev[0] + q[1] * prev[1] + q[2] * prev[2] + q[3] * prev[3] < 0.0)
-                    for (int i = 0; i < 4; ++i) q[i] = -q[i];
-                memcpy(prev, q, sizeof q);
-                if (k == 0) memcpy(q0, q, sizeof q);
-                for (int i = 0; i < 4; ++i) put_f32(&g.view[VIEW_ROTATION], (float)q[i]);
-                put_f32(&g.view[VIEW_TRANSLATION], (float)p.t.x);
-                put_f32(&g.view[VIEW_TRANSLATION], (float)p.t.y);
-                put_f32(&g.view[VIEW_TRANSLATION], (float)p.t.z);
-            }
+            // Keyframes: face f's rotations and translations are blocks of K values, filled
+            // below keyframe by keyframe (the poses are stored keyframe-major).
+            size_t off_r = (size_t)f * (size_t)K * 16, off_tr = (size_t)f * (size_t)K * 12;
+            double q0[4];
+            quat_of(def->keyframe_poses[f].r, q0);
             int a_r = accessor(&g, VIEW_ROTATION, off_r, K, "VEC4", NULL, NULL, 4, GL_FLOAT);
             int a_tr = accessor(&g, VIEW_TRANSLATION, off_tr, K, "VEC3", NULL, NULL, 3, GL_FLOAT);
             ori_rigid p0 = def->keyframe_poses[f];
@@ -307,6 +334,29 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
                                     "{\"sampler\":%d,\"target\":{\"node\":%d,\"path\":\"translation\"}}",
                              f ? "," : "", 2 * f, f + 1, 2 * f + 1, f + 1);
         }
+        // Quaternions kept on one side from keyframe to keyframe (q and −q are one rotation, and
+        // a player interpolates between neighbours).
+        bytes *vr = &g.view[VIEW_ROTATION], *vt = &g.view[VIEW_TRANSLATION];
+        vr->cap = vr->n = (size_t)F * (size_t)K * 16;
+        vt->cap = vt->n = (size_t)F * (size_t)K * 12;
+        vr->d = ori__alloc(vr->n);
+        vt->d = ori__alloc(vt->n);
+        double *prev = ori__alloc(sizeof(double) * 4 * (size_t)F);
+        for (int k = 0; k < K; ++k)
+            for (int f = 0; f < F; ++f) {
+                ori_rigid pose = def->keyframe_poses[(size_t)k * (size_t)F + (size_t)f];
+                double q[4];
+                quat_of(pose.r, q);
+                double *pq = prev + 4 * (size_t)f;
+                if (k > 0 && q[0] * pq[0] + q[1] * pq[1] + q[2] * pq[2] + q[3] * pq[3] < 0.0)
+                    for (int i = 0; i < 4; ++i) q[i] = -q[i];
+                memcpy(pq, q, sizeof q);
+                float fr[4] = {(float)q[0], (float)q[1], (float)q[2], (float)q[3]};
+                float ft[3] = {(float)pose.t.x, (float)pose.t.y, (float)pose.t.z};
+                put_floats_at(vr, ((size_t)f * (size_t)K + (size_t)k) * 16, fr, 4);
+                put_floats_at(vt, ((size_t)f * (size_t)K + (size_t)k) * 12, ft, 3);
+            }
+        ori__free(prev);
         ori__text_puts(&anim, "{\"name\":\"fold\",\"channels\":[");
         ori__text_put(&anim, chan.data, chan.len);
         ori__text_puts(&anim, "],\"samplers\":[");
@@ -316,15 +366,13 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
         ori__free(samp.data);
     }
 
-    // The buffer: the views one after the other (every element is 4-byte aligned).
+    // The buffer: the views one after the other (every element is 4-byte aligned), written
+    // straight from the views into the output.
     size_t offset[VIEW_COUNT], total = 0;
     for (int v = 0; v < VIEW_COUNT; ++v) {
         offset[v] = total;
         total += g.view[v].n;
     }
-    unsigned char *buf = ori__alloc(total ? total : 1);
-    for (int v = 0; v < VIEW_COUNT; ++v)
-        if (g.view[v].n) memcpy(buf + offset[v], g.view[v].d, g.view[v].n);
 
     ori__text j = {NULL, 0, 0};
     ori__text_printf(&j, "{\"asset\":{\"version\":\"2.0\",\"generator\":\"orikin %s\"},", ori_version_string());
@@ -378,22 +426,27 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
         ori__text_puts(&j, "]");
     }
     size_t buf_len = total < 4 ? 4 : total;
+    static const unsigned char zero[4] = {0, 0, 0, 0};
     ori__text_printf(&j, ",\"buffers\":[{\"byteLength\":%zu", buf_len);
     if (!binary) {
         ori__text_puts(&j, ",\"uri\":\"data:application/octet-stream;base64,");
-        unsigned char zero[4] = {0, 0, 0, 0};
-        if (total >= 4) base64(&j, buf, total);
-        else base64(&j, zero, 4);
-        ori__text_puts(&j, "\"");
-    }
-    ori__text_puts(&j, "}]}");
-
-    if (!binary) {
+        ori__text_reserve(out, j.len + (buf_len + 2) / 3 * 4 + 8);
         ori__text_put(out, j.data, j.len);
+        b64_state st = {{0, 0}, 0};
+        for (int v = 0; v < VIEW_COUNT; ++v) {
+            if (g.view[v].n) b64_put(out, &st, g.view[v].d, g.view[v].n);
+            ori__free(g.view[v].d);
+            g.view[v].d = NULL;
+        }
+        if (total < 4) b64_put(out, &st, zero, 4);
+        b64_finish(out, &st);
+        ori__text_puts(out, "\"}]}");
     } else {
+        ori__text_puts(&j, "}]}");
         // GLB: 12-byte header, a JSON chunk padded with spaces, a BIN chunk padded with zeros.
         size_t jlen = (j.len + 3) & ~(size_t)3, blen = (buf_len + 3) & ~(size_t)3;
         size_t whole = 12 + 8 + jlen + 8 + blen;
+        ori__text_reserve(out, whole);
         bytes b = {NULL, 0, 0};
         put_u32(&b, 0x46546C67u); // "glTF"
         put_u32(&b, 2);
@@ -407,13 +460,15 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
         put_u32(&b, (uint32_t)blen);
         put_u32(&b, 0x004E4942u); // "BIN"
         ori__text_put(out, (const char *)b.d, b.n);
-        if (total) ori__text_put(out, (const char *)buf, total);
-        static const char pad[4] = {0, 0, 0, 0};
-        ori__text_put(out, pad, blen - total);
+        for (int v = 0; v < VIEW_COUNT; ++v) {
+            if (g.view[v].n) ori__text_put(out, (const char *)g.view[v].d, g.view[v].n);
+            ori__free(g.view[v].d);
+            g.view[v].d = NULL;
+        }
+        ori__text_put(out, (const char *)zero, blen - total);
         ori__free(b.d);
     }
     ori__free(j.data);
-    ori__free(buf);
     for (int v = 0; v < VIEW_COUNT; ++v) ori__free(g.view[v].d);
     ori__free(g.acc.data);
     ori__free(g.meshes.data);

@@ -26,11 +26,17 @@ typedef struct ori__xmesh {
     bool has_uv;
 } ori__xmesh;
 
+// Texture coordinates: the flat sheet's bounding box stretched over [0, 1]², v downwards.
+typedef struct ori__uv_map {
+    double x0, y0, dx, dy;
+} ori__uv_map;
+ori__uv_map ori__uv_of_mesh(const ori_mesh *m);
+
 // The surface of a mesh in its current pose: the two-sided sheet (thickness 0) or the closed
 // solid. With reference = true, the sheet in its reference position (animated glTF nodes).
 void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__xmesh *out);
 // The sheet of one face (front and back parts) in its reference position.
-void ori__xmesh_face(const ori_mesh *m, int face, ori__xmesh *out);
+void ori__xmesh_face(const ori_mesh *m, int face, const ori__uv_map *uv, ori__xmesh *out);
 void ori__xmesh_free(ori__xmesh *x);
 
 // glTF 2.0 (embedded buffer) or GLB into out.

@@ -243,9 +243,15 @@ static void apply_style(cairo_t *cr, const line_style *s, double lw)
     cairo_set_dash(cr, d, s->dash_count, 0.0);
 }
 
-static double line_width_of(const ori_render_def *def)
+// Line width: a fraction of the image, but at most LINE_PER_EDGE of the mean edge length in the
+// image, so that a dense pattern is not buried under its lines.
+#define LINE_PER_EDGE (1.0 / 12.0)
+#define LINE_MIN 0.25
+static double line_width_of(const ori_render_def *def, double mean_edge)
 {
-    return fmax(0.75, def->line_width_rel * fmin(def->width, def->height));
+    double lw = fmax(0.75, def->line_width_rel * fmin(def->width, def->height));
+    if (mean_edge > 0.0) lw = fmin(lw, fmax(LINE_MIN, LINE_PER_EDGE * mean_edge));
+    return lw;
 }
 
 static void draw_label(cairo_t *cr, double x, double y, const char *text, ori_rgb colour, double size)
@@ -288,7 +294,12 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
     double ox = 0.5 * W - s * 0.5 * (x0 + x1), oy = 0.5 * H + s * 0.5 * (y0 + y1);
 #define IX(q) (ox + s * (q).x)
 #define IY(q) (oy - s * (q).y)
-    double lw = line_width_of(def);
+    double mean = 0.0;
+    for (int e = 0; e < ne; ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        mean += s * ori_v3_norm(ori_v3_sub(ori_pattern_vertex(p, ed.v[1]), ori_pattern_vertex(p, ed.v[0])));
+    }
+    double lw = line_width_of(def, ne ? mean / ne : 0.0);
     set_source(cr, def->background);
     cairo_paint(cr);
     // The paper.
@@ -539,7 +550,12 @@ static void path_piece(cairo_t *cr, const ori__order *o, const ori__piece *pc)
 static void draw_3d(cairo_t *cr, const ori_mesh *m, const ori_render_def *def, const ori_camera *cam,
                     cairo_surface_t *texture, const ori_v3 *scene_lo, const ori_v3 *scene_hi)
 {
-    double lw = line_width_of(def);
+    double mean = 0.0;
+    for (int e = 0; e < m->edge_count; ++e) {
+        ori_v3 a = ori_camera_project(cam, m->pos[m->edge_v[e][0]]), b = ori_camera_project(cam, m->pos[m->edge_v[e][1]]);
+        mean += hypot(b.x - a.x, b.y - a.y);
+    }
+    double lw = line_width_of(def, m->edge_count ? mean / m->edge_count : 0.0);
     set_source(cr, def->background);
     cairo_paint(cr);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
