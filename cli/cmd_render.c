@@ -44,21 +44,15 @@ static int run(int argc, char **argv)
     if (ra.has_view && ra.view == ORI_RENDER_CREASES && sa.source != CLI_STATE_FRAME)
         return cli_usage(cmd, "--view cp draws the crease pattern: it takes no fold options or --at");
 
-    // The view: as asked; else the crease pattern for a crease-pattern frame, 3D otherwise.
+    // The view: as asked; else the crease pattern for a crease-pattern frame (its fold angles may
+    // be targets rather than a state), 3D otherwise.
     ori_render_view view = ORI_RENDER_3D;
     bool decided = ra.has_view || ra.only_3d || ra.labels || sa.source != CLI_STATE_FRAME;
     if (ra.has_view) view = ra.view;
     else if (ra.labels) view = ORI_RENDER_CREASES;
     cli_state st;
     if ((rc = cli_state_load(cmd, &sa, decided && view == ORI_RENDER_3D, &st)) != CLI_EXIT_OK) return rc;
-    if (!decided) {
-        view = st.has_flat && !st.folded && sa.source == CLI_STATE_FRAME ? ORI_RENDER_CREASES : ORI_RENDER_3D;
-        if (view == ORI_RENDER_3D && !st.positions) {
-            // A crease-pattern frame with fold angles: pose it after all.
-            cli_state_free(&st);
-            if ((rc = cli_state_load(cmd, &sa, true, &st)) != CLI_EXIT_OK) return rc;
-        }
-    }
+    if (!decided) view = st.cp_frame ? ORI_RENDER_CREASES : ORI_RENDER_3D;
     if (view == ORI_RENDER_CREASES && !st.has_flat) {
         cli_state_free(&st);
         return cli_input_fail(cmd, sa.path, "frame %d is a folded form without a crease pattern: use --view 3d", sa.frame);
@@ -106,7 +100,9 @@ static int run(int argc, char **argv)
         } else {
             printf("wrote %s: %s of %s, %s (%dx%d %s)", out, view_name, sa.path, st.label, def.width, def.height,
                    ori_image_format_name(format));
-            if (failing > 0) printf("; %d vertices not locally flat-foldable are ringed", failing);
+            if (failing > 0)
+                printf("; %d %s not locally flat-foldable %s ringed", failing, failing == 1 ? "vertex" : "vertices",
+                       failing == 1 ? "is" : "are");
             printf("\n");
         }
     }
@@ -132,7 +128,8 @@ const cli_command cli_cmd_render = {
     "grey; vertices that are not locally flat-foldable are ringed in orange. The 3D view draws\n"
     "the posed sheet with two colours (front = the side facing +z in the flat sheet),\n"
     "directional light and the creases on top; SVG and PDF are true vector drawings, faces\n"
-    "sorted back to front (cycles split). The view is cp for a crease-pattern frame, else 3D.\n"
+    "sorted back to front (cycles split). The view is cp for a crease-pattern frame (unless a\n"
+    "3D option is given), 3D for a folded form, a fold or a sequence.\n"
     "\n"
     "options:\n"
     "  --frame N            the state in frame N of a FOLD file (default 0)\n"

@@ -221,6 +221,7 @@ static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, 
         if (pf) ori_pattern_destroy(p0);
         s->pattern = p;
         s->has_flat = true;
+        s->cp_frame = true;
         int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p), nf = ori_pattern_face_count(p);
         s->angles = xcalloc((size_t)ne, sizeof(double));
         for (int e = 0; e < ne; ++e) {

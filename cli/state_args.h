@@ -65,6 +65,7 @@ typedef struct cli_state {
     ori_rigid *poses;        // flat → world pose of every face, or NULL (folded forms, unposed, non-rigid faces)
     double *angles;          // fold angle of every edge (radians), or NULL when unknown
     bool folded;             // the state is not the flat sheet
+    bool cp_frame;           // the chosen state is a crease-pattern frame (posed from its fold angles)
     int frame_count;         // frames of the FOLD file (1 for a fold or a sequence)
     char label[160];         // what the state is: "frame 2", "crease 12 folded to 90 deg", "t = 1.5"
     // Internals kept for motions.

@@ -254,21 +254,74 @@ static double line_width_of(const ori_render_def *def, double mean_edge)
     return lw;
 }
 
+// Labels are drawn with a small built-in stroke font (digits, v, f, -): vector paths that look
+// the same on every machine, with no dependency on the system's fonts. Each glyph is polylines
+// in a box 0.5 wide and 1 high (y up), a point (-1, -1) ending a polyline.
+typedef struct glyph {
+    char c;
+    float pts[24][2];
+} glyph;
+
+static const glyph glyphs[] = {
+    {'0', {{0, 0}, {0.5f, 0}, {0.5f, 1}, {0, 1}, {0, 0}, {-1, -1}}},
+    {'1', {{0.1f, 0.8f}, {0.25f, 1}, {0.25f, 0}, {-1, -1}, {0.05f, 0}, {0.45f, 0}, {-1, -1}}},
+    {'2', {{0, 1}, {0.5f, 1}, {0.5f, 0.5f}, {0, 0.5f}, {0, 0}, {0.5f, 0}, {-1, -1}}},
+    {'3', {{0, 1}, {0.5f, 1}, {0.5f, 0}, {0, 0}, {-1, -1}, {0.1f, 0.5f}, {0.5f, 0.5f}, {-1, -1}}},
+    {'4', {{0, 1}, {0, 0.5f}, {0.5f, 0.5f}, {-1, -1}, {0.5f, 1}, {0.5f, 0}, {-1, -1}}},
+    {'5', {{0.5f, 1}, {0, 1}, {0, 0.5f}, {0.5f, 0.5f}, {0.5f, 0}, {0, 0}, {-1, -1}}},
+    {'6', {{0.5f, 1}, {0, 1}, {0, 0}, {0.5f, 0}, {0.5f, 0.5f}, {0, 0.5f}, {-1, -1}}},
+    {'7', {{0, 1}, {0.5f, 1}, {0.2f, 0}, {-1, -1}}},
+    {'8', {{0, 0}, {0.5f, 0}, {0.5f, 1}, {0, 1}, {0, 0}, {-1, -1}, {0, 0.5f}, {0.5f, 0.5f}, {-1, -1}}},
+    {'9', {{0.5f, 0.5f}, {0, 0.5f}, {0, 1}, {0.5f, 1}, {0.5f, 0}, {0, 0}, {-1, -1}}},
+    {'v', {{0, 0.6f}, {0.25f, 0}, {0.5f, 0.6f}, {-1, -1}}},
+    {'f', {{0.45f, 1}, {0.2f, 1}, {0.2f, 0}, {-1, -1}, {0, 0.6f}, {0.4f, 0.6f}, {-1, -1}}},
+    {'-', {{0.05f, 0.5f}, {0.45f, 0.5f}, {-1, -1}}},
+};
+
+static const glyph *glyph_of(char c)
+{
+    for (size_t i = 0; i < sizeof glyphs / sizeof glyphs[0]; ++i)
+        if (glyphs[i].c == c) return &glyphs[i];
+    return NULL;
+}
+
+// The label's strokes as one path, centred on (x, y), glyphs `size` high.
+static void label_path(cairo_t *cr, double x, double y, const char *text, double size)
+{
+    size_t n = strlen(text);
+    double advance = 0.8 * size, width = n ? (double)(n - 1) * advance + 0.5 * size : 0.0;
+    double x0 = x - 0.5 * width, y0 = y + 0.5 * size;
+    for (size_t i = 0; i < n; ++i) {
+        const glyph *g = glyph_of(text[i]);
+        if (!g) continue;
+        bool pen = false;
+        for (int k = 0; k < 24; ++k) {
+            if (g->pts[k][0] < 0) {
+                if (!pen) break; // two ends in a row: the glyph is done
+                pen = false;
+                continue;
+            }
+            double px = x0 + i * advance + g->pts[k][0] * size, py = y0 - g->pts[k][1] * size;
+            if (pen) cairo_line_to(cr, px, py);
+            else cairo_move_to(cr, px, py);
+            pen = true;
+        }
+    }
+}
+
 static void draw_label(cairo_t *cr, double x, double y, const char *text, ori_rgb colour, double size)
 {
-    cairo_text_extents_t ext;
-    cairo_set_font_size(cr, size);
-    cairo_text_extents(cr, text, &ext);
-    // A white halo keeps the number readable over lines.
-    cairo_move_to(cr, x - ext.width / 2 - ext.x_bearing, y - ext.height / 2 - ext.y_bearing);
-    cairo_text_path(cr, text);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_set_line_width(cr, size * 0.25);
     cairo_set_dash(cr, NULL, 0, 0);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    // A white halo keeps the number readable over lines.
+    label_path(cr, x, y, text, size);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_set_line_width(cr, 0.42 * size);
     cairo_stroke_preserve(cr);
     set_source(cr, colour);
-    cairo_fill(cr);
+    cairo_set_line_width(cr, 0.14 * size);
+    cairo_stroke(cr);
 }
 
 static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_render_def *def, ori_error *error)
@@ -352,8 +405,7 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
         ori_flat_report_destroy(r);
     }
     if (def->labels) {
-        double fs = fmax(7.0, 0.022 * fmin(W, H));
-        cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+        double fs = fmax(6.0, 0.018 * fmin(W, H));
         char buf[32];
         for (int f = 0; f < nf; ++f) {
             int n = ori_pattern_face_size(p, f);
