@@ -467,8 +467,9 @@ Test(render, texture_maps_by_flat_sheet_coordinates)
 
 // --- the depth order -------------------------------------------------------------------------------
 
-// Depth of a piece's plane at image point q (orthographic: affine in the image).
-static double piece_depth(const ori__order *o, const ori__piece *pc, ori_v2 q)
+// Depth of a piece's plane at image point q: affine in the image for an orthographic camera,
+// 1/depth affine with perspective.
+static double piece_depth(const ori__order *o, const ori__piece *pc, ori_v2 q, bool perspective)
 {
     // The piece's largest-area corner triangle defines its plane in (x, y, depth).
     const ori_v3 *pt = o->points + pc->first;
@@ -485,6 +486,7 @@ static double piece_depth(const ori__order *o, const ori__piece *pc, ori_v2 q)
     double det = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     double u = ((q.x - a.x) * (c.y - a.y) - (q.y - a.y) * (c.x - a.x)) / det;
     double v = ((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)) / det;
+    if (perspective) return 1.0 / (1.0 / a.z + u * (1.0 / b.z - 1.0 / a.z) + v * (1.0 / c.z - 1.0 / a.z));
     return a.z + u * (b.z - a.z) + v * (c.z - a.z);
 }
 
@@ -516,7 +518,7 @@ static int convex_clip(const ori_v2 *a, int na, const ori_v2 *b, int nb, ori_v2 
 // Every pair of pieces overlapping in the image (more than 1e-6 of a square pixel) is drawn
 // back to front: the later piece is not farther at a point inside the overlap. Pieces must be
 // convex (Miura faces and triangles are). Returns the number of overlapping pairs checked.
-static int check_order(const ori__order *o, double tol)
+static int check_order(const ori__order *o, double tol, bool perspective)
 {
     int pairs = 0;
     for (int i = 0; i < o->piece_count; ++i) {
@@ -537,7 +539,7 @@ static int check_order(const ori__order *o, double tol)
             for (int k = 0; k < n; ++k) q = ori_v2_add(q, ov[k]);
             q = ori_v2_scale(q, 1.0 / n);
             pairs++;
-            double da = piece_depth(o, a, q), db = piece_depth(o, b, q);
+            double da = piece_depth(o, a, q, perspective), db = piece_depth(o, b, q, perspective);
             cr_assert_leq(db, da + tol, "piece %d (face %d) drawn after piece %d (face %d) but behind it: %.17g > %.17g", j,
                           b->face, i, a->face, db, da);
         }
@@ -545,8 +547,8 @@ static int check_order(const ori__order *o, double tol)
     return pairs;
 }
 
-// A 4 × 4 Miura-ori folded to 120° (every crease moving) seen from several directions: every
-// overlapping pair of faces is painted back to front.
+// A 4 × 4 Miura-ori folded to 150° (every crease moving) seen from 40 directions, orthographic
+// and in perspective: every overlapping pair of faces is painted back to front.
 Test(render, miura_faces_are_painted_back_to_front)
 {
     ori_pattern *p = test_miura(4, 4, 1.0, 1.0, ori_deg_to_rad(60.0), NULL);
@@ -568,19 +570,21 @@ Test(render, miura_faces_are_painted_back_to_front)
     ori_mesh *mesh = NULL;
     cr_assert_eq(ori_mesh_create(&sv, &mesh, &err), ORI_OK);
     int checked = 0;
-    for (int preset = ORI_CAMERA_ISO; preset <= ORI_CAMERA_BOTTOM; ++preset)
-        for (int yaw = 0; yaw < 360; yaw += 45) {
-            ori_camera c = ori_camera_preset((ori_camera_preset_kind)preset, ori_deg_to_rad(yaw), ori_deg_to_rad(20), 0);
-            ori_v3 pts[64];
-            int n = ori_mesh_vertex_count(mesh);
-            for (int v = 0; v < n; ++v) pts[v] = ori_mesh_vertex(mesh, v);
-            ori_camera_fit(&c, pts, n, 800, 600, 0.05);
-            ori__order o;
-            ori__order_build(mesh, &c, &o);
-            cr_assert_eq(o.piece_count, ori_mesh_face_count(mesh), "no splitting needed");
-            checked += check_order(&o, 1e-9);
-            ori__order_free(&o);
-        }
+    for (int view = 0; view < 2 * 5 * 8; ++view) {
+        bool persp = view >= 40;
+        int preset = (view / 8) % 5, yaw = 45 * (view % 8);
+        ori_camera c = ori_camera_preset((ori_camera_preset_kind)preset, ori_deg_to_rad(yaw), ori_deg_to_rad(20), 0);
+        c.perspective = persp;
+        ori_v3 pts[64];
+        int n = ori_mesh_vertex_count(mesh);
+        for (int v = 0; v < n; ++v) pts[v] = ori_mesh_vertex(mesh, v);
+        ori_camera_fit(&c, pts, n, 800, 600, 0.05);
+        ori__order o;
+        ori__order_build(mesh, &c, &o);
+        cr_assert_eq(o.piece_count, ori_mesh_face_count(mesh), "no splitting needed");
+        checked += check_order(&o, 1e-9, persp);
+        ori__order_free(&o);
+    }
     cr_assert_gt(checked, 100, "the views overlap faces (%d pairs checked)", checked);
     ori_mesh_destroy(mesh);
     free(pos);
@@ -622,7 +626,7 @@ Test(render, cyclic_overlaps_are_split)
     ori__order_build(mesh, &c, &o);
     cr_assert_eq(o.groups_split, 1, "the three panels form one cycle");
     cr_assert_gt(o.piece_count, 3, "and are split into %d pieces", o.piece_count);
-    cr_assert_gt(check_order(&o, 1e-9), 3);
+    cr_assert_gt(check_order(&o, 1e-9, false), 3);
     ori__order_free(&o);
     ori_mesh_destroy(mesh);
     ori_pattern_destroy(p);
