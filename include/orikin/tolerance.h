@@ -164,8 +164,8 @@
 /// (the faces lie on each other and the fold angle's sign says which is on top). Radians.
 #define ORI_TOL_RENDER_FLAT_FOLD_RAD 1e-6
 
-/// Thick solid: faces meeting at a vertex whose normals differ by at most this angle share
-/// their offset points (a flat crease needs no strip). Radians.
+/// Thick solid: two faces joined by a crease whose normals differ by at most this angle share
+/// their offset points, and belong to one slab (a flat region of the sheet). Radians.
 #define ORI_TOL_MESH_NORMAL_RAD 1e-9
 
 #endif
