@@ -79,7 +79,7 @@ ORI_API int ori_mesh_face_count(const ori_mesh *mesh);
 ORI_API int ori_mesh_triangle_count(const ori_mesh *mesh);
 /// A triangle by value; triangles are grouped by face, faces in FOLD order.
 ORI_API ori_mesh_triangle ori_mesh_triangle_at(const ori_mesh *mesh, int triangle);
-/// The first triangle of a face and their number (a face of n vertices has n − 2).
+/// The first triangle of a face and their number (n − 2 for a simple face of n vertices).
 ORI_API int ori_mesh_face_triangles(const ori_mesh *mesh, int face, int *first);
 /// World position of a vertex in the current pose.
 ORI_API ori_v3 ori_mesh_vertex(const ori_mesh *mesh, int vertex);
