@@ -57,6 +57,15 @@ run 0 mv-count 100 70 50 40 30 70 --list
 run 0 check examples/patterns/degree4-vertex.fold
 run 1 check examples/patterns/non-flat-foldable-vertex.fold
 
+step "6. Pictures, animation and mesh of the fold (thesis ch. 9.6): orikin render, animate, export"
+run 0 render examples/open-corner.seq.json --yaw 90 --grid -o "$OUT/corner-cube.png"
+run 0 render examples/open-corner.seq.json --yaw 90 -o "$OUT/corner-cube.svg"
+run 0 animate examples/open-corner.seq.json --yaw 90 --grid -o "$OUT/open-corner.gif"
+run 0 export examples/open-corner.seq.json --animate -o "$OUT/open-corner.glb"
+echo "The folded corner cube: $OUT/corner-cube.png (picture) and $OUT/corner-cube.svg (vector);"
+echo "the two folds: $OUT/open-corner.gif (animation) and $OUT/open-corner.glb (glTF, one node per face)."
+echo
+
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1

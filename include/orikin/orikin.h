@@ -15,6 +15,7 @@
 #include "math.h"
 #include "pattern.h"
 #include "regularize.h"
+#include "render.h"
 #include "sequence.h"
 #include "tolerance.h"
 

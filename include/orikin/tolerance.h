@@ -193,5 +193,28 @@
 /// check: without --tolerance, failures that would all pass within this are reported as the
 /// rounding of a drawing, with a hint to use --tolerance or regularize. Radians (0.01°).
 #define ORI_FLAT_ROUNDING_HINT_RAD 1.7453292519943295e-4
+// --- rendering and mesh export (src/render, src/io/mesh_write*) ---------------------------
+
+/// Depth order: two faces whose depths at a point of their overlap in the image differ by less
+/// than this × the scene's diagonal lie in one plane (folded flat onto each other), and are
+/// ordered by stacking instead; a depth difference that changes sign by more than it over the
+/// overlap means the faces cross (they are split). Unitless (relative length).
+#define ORI_TOL_RENDER_DEPTH_REL 1e-9
+
+/// Depth order: images of two triangles overlapping by less than this × the smaller one's image
+/// area only touch (a shared edge, a vertex): no order is needed between them. Unitless.
+#define ORI_TOL_RENDER_OVERLAP_REL 1e-9
+
+/// BSP splitting: a point within this × the scene's diagonal of a face's plane lies on it.
+/// Unitless (relative length).
+#define ORI_TOL_RENDER_PLANE_REL 1e-9
+
+/// Stacking: a crease whose two faces' normals are opposite within this angle is folded flat
+/// (the faces lie on each other and the fold angle's sign says which is on top). Radians.
+#define ORI_TOL_RENDER_FLAT_FOLD_RAD 1e-6
+
+/// Thick solid: two faces joined by a crease whose normals differ by at most this angle share
+/// their offset points, and belong to one slab (a flat region of the sheet). Radians.
+#define ORI_TOL_MESH_NORMAL_RAD 1e-9
 
 #endif
