@@ -792,3 +792,267 @@ Test(collision, the_rabbit_ear_bird_base_is_collision_free_and_a_face_moved_thro
 {
     shared_form_case("rabbit-ear/fold_bird-base-3d.fold");
 }
+
+// --- along a motion: the clearance, and stacked layers leaving through each other -------------
+
+Test(collision, with_a_clearance_the_strip_collides_when_the_tip_comes_within_it)
+{
+    double g = 1.0, l1 = 2.0, l2 = 1.5, D = 0.1;
+    double want = acos((D - g) / l2) / DEG; // the tip edge at x = D: 126.8698976°
+    strip s = strip_make(g, l1, l2);
+    ori_collider *c = collider_of(s.p, D);
+    ori_collision_event ev = strip_fold(&s, c, NULL);
+    cr_assert(ev.collides);
+    cr_assert_eq(ev.frame, 13);
+    cr_assert_float_eq(ev.drive_rad / DEG, want, CONTACT_TOL_DEG);
+    cr_assert_eq(ev.contact.kind, ORI_CONTACT_NEAR);
+    cr_assert_float_eq(ev.contact.distance, D, 1e-7);
+    // the witness is midway between the tip edge (x = D) and the standing flap (x = 0)
+    cr_assert_float_eq(ev.contact.point.x, 0.5 * D, 1e-7);
+    ev = strip_sequence(&s, c, NULL);
+    cr_assert_float_eq(ev.drive_rad / DEG, want, CONTACT_TOL_DEG);
+    ori_collider_destroy(c);
+    strip_free(&s);
+}
+
+// A strip of three unit panels P0 [0,1], P1 [1,2], P2 [2,3] with valley creases at x = 1 and 2.
+typedef struct strip3 {
+    ori_pattern *p;
+    ori_mechanism *m;
+    int c1, c2, p0, p1, p2;
+} strip3;
+
+static strip3 strip3_make(void)
+{
+    strip3 s;
+    ori_pattern_def pd = ori_default_pattern_def();
+    s.p = ori_pattern_create(&pd);
+    for (int i = 0; i < 4; ++i) {
+        ori_pattern_add_vertex(s.p, ori_v3_make(i, 0.0, 0.0));
+        ori_pattern_add_vertex(s.p, ori_v3_make(i, 1.0, 0.0));
+    }
+    for (int i = 0; i < 3; ++i) {
+        ori_pattern_add_edge(s.p, 2 * i, 2 * i + 2, ORI_ASSIGN_BOUNDARY, 0.0);
+        ori_pattern_add_edge(s.p, 2 * i + 1, 2 * i + 3, ORI_ASSIGN_BOUNDARY, 0.0);
+    }
+    ori_pattern_add_edge(s.p, 0, 1, ORI_ASSIGN_BOUNDARY, 0.0);
+    s.c1 = ori_pattern_add_edge(s.p, 2, 3, ORI_ASSIGN_VALLEY, 0.0);
+    s.c2 = ori_pattern_add_edge(s.p, 4, 5, ORI_ASSIGN_VALLEY, 0.0);
+    ori_pattern_add_edge(s.p, 6, 7, ORI_ASSIGN_BOUNDARY, 0.0);
+    ori_error err;
+    cr_assert_eq(ori_pattern_build(s.p, NULL, &err), ORI_OK, "%s", err.message);
+    s.p0 = test_face_at(s.p, 0.5, 0.5);
+    s.p1 = test_face_at(s.p, 1.5, 0.5);
+    s.p2 = test_face_at(s.p, 2.5, 0.5);
+    s.m = test_mechanism_of(s.p);
+    return s;
+}
+
+// Fold first then second crease flat onto P1 (the later flap lands on top), then unfold the
+// crease `undo` again.
+static ori_collision_event strip3_run(strip3 *s, int first, int second, int undo)
+{
+    char json[768];
+    snprintf(json, sizeof json,
+             "{\"pattern\": \"s.fold\", \"folds\": ["
+             "{\"fix\": %d, \"drive\": %d, \"to\": 180, \"step\": 10, \"lock\": [%d]},"
+             "{\"fix\": %d, \"drive\": %d, \"to\": 180, \"step\": 10, \"lock\": [%d]},"
+             "{\"fix\": %d, \"drive\": %d, \"to\": 0, \"step\": 10, \"lock\": [%d]}]}",
+             s->p1, first, second, s->p1, second, first, s->p1, undo, undo == first ? second : first);
+    ori_sequence *seq = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_parse(json, strlen(json), &seq, &err), ORI_OK, "%s", err.message);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(seq, s->m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
+    ori_collider *c = collider_of(s->p, 0);
+    // every recorded state alone is clean: the layers only ever touch
+    int nv = ori_mechanism_vertex_count(s->m);
+    for (int k = 0; k < ori_record_frame_count(r); ++k) {
+        ori_collision_result res;
+        cr_assert_eq(ori_collider_check(c, ori_record_frame_vertices(r, k), &res, &err), ORI_OK, "%s", err.message);
+        cr_assert(!res.collides, "frame %d", k);
+    }
+    (void)nv;
+    ori_collision_motion_def cd = ori_default_collision_motion_def();
+    ori_collision_event ev;
+    cr_assert_eq(ori_collision_check_record(c, r, &cd, &ev, &err), ORI_OK, "%s", err.message);
+    ori_collider_destroy(c);
+    ori_record_destroy(r);
+    ori_sequence_destroy(seq);
+    return ev;
+}
+
+Test(collision, a_layer_leaving_its_stack_through_the_layer_above_it_penetrates)
+{
+    strip3 s = strip3_make();
+    // P2 folded onto P1 first, P0 on top of it: unfolding P2 takes it up through P0.
+    ori_collision_event ev = strip3_run(&s, s.c2, s.c1, s.c2);
+    cr_assert(ev.collides);
+    cr_assert_eq(ev.fold, 2);
+    cr_assert_eq(ev.step, 1);
+    cr_assert_eq(ev.contact.kind, ORI_CONTACT_PENETRATING);
+    cr_assert(ev.contact.stacked);
+    cr_assert_eq(ev.contact.face_a, s.p0 < s.p2 ? s.p0 : s.p2);
+    cr_assert_eq(ev.contact.face_b, s.p0 < s.p2 ? s.p2 : s.p0);
+    // first contact right at the start of the unfolding (180°), to the drive tolerance
+    cr_assert_float_eq(ev.drive_rad / DEG, 180.0, CONTACT_TOL_DEG);
+    cr_assert_lt(ev.drive_rad / DEG, 180.0);
+    cr_assert_float_eq(ev.contact.point.x, 1.5, 1e-6); // in the overlap of the two layers
+    // P0 folded first, P2 on top: unfolding P2 lifts it off the top of the stack.
+    ev = strip3_run(&s, s.c1, s.c2, s.c2);
+    cr_assert(!ev.collides);
+    ori_mechanism_destroy(s.m);
+    ori_pattern_destroy(s.p);
+}
+
+// --- the broad phase finds what all pairs find; the cloud agrees with the exact clearance ------
+
+#include "collision/collision_internal.h"
+
+// Brute force over all pairs with the same exact test: the contacts of ori_collider_check must
+// be exactly these, and its least clearance the least exact distance.
+static void compare_with_all_pairs(ori_collider *c, const ori_v3 *pos)
+{
+    ori_collision_result r = check_ok(c, pos);
+    ori_error err;
+    cr_assert_eq(col_state_prepare(c, pos, &err), ORI_OK);
+    int nf = ori_collider_face_count(c), found = 0;
+    double least = INFINITY;
+    for (int f = 0; f < nf; ++f)
+        for (int g = f + 1; g < nf; ++g) {
+            bool adj = ori_collider_adjacent(c, f, g);
+            col_pair_result pr;
+            col_pair_test(c, f, g, col_adjacency_of(c, f, g), &pr);
+            if (pr.cls != COL_APART) {
+                found++;
+                ori_contact k = find_contact(c, f, g);
+                cr_assert_eq(k.kind == ORI_CONTACT_PENETRATING, pr.cls == COL_CROSS, "%d-%d", f, g);
+            }
+            if (!adj) {
+                ori_v3 a, b;
+                double d = pr.cls != COL_APART ? 0.0 : col_face_distance(c, f, g, INFINITY, &a, &b);
+                least = fmin(least, d);
+            }
+        }
+    cr_assert_eq(found, r.contact_count);
+    cr_assert_float_eq(r.min_clearance, least, 0.0);
+    cr_assert_lt(r.candidate_pairs, (int64_t)nf * (nf - 1) / 2 + 1);
+}
+
+Test(collision, the_broad_phase_misses_nothing_on_a_folding_miura)
+{
+    miura_fold x = miura_fold_make(6, 6, 15.0);
+    ori_collider *c = collider_of(x.p, 0);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)ori_mechanism_vertex_count(x.m));
+    for (int k = 0; k < ori_motion_frame_count(x.mo); k += 3) {
+        ori_motion_frame_vertices(x.mo, k, pos);
+        compare_with_all_pairs(c, pos);
+    }
+    free(pos);
+    ori_collider_destroy(c);
+    miura_fold_free(&x);
+}
+
+// Deterministic pseudo-random numbers in [0, 1).
+static double lcg(uint64_t *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+Test(collision, the_broad_phase_misses_nothing_in_a_heap_of_triangles)
+{
+    uint64_t seed = 12345;
+    for (int round = 0; round < 4; ++round) {
+        scene s = scene_new();
+        for (int t = 0; t < 60; ++t) {
+            ori_v3 o = ori_v3_make(4 * lcg(&seed), 4 * lcg(&seed), 4 * lcg(&seed)), q[3];
+            for (int i = 0; i < 3; ++i) q[i] = ori_v3_add(o, ori_v3_make(lcg(&seed) - 0.5, lcg(&seed) - 0.5, lcg(&seed) - 0.5));
+            scene_face(&s, q, 3);
+        }
+        ori_collider *c = scene_collider(&s, 0);
+        compare_with_all_pairs(c, s.pos);
+        scene_free(&s, c);
+    }
+}
+
+static void cloud_agrees(ori_collider *c, const ori_v3 *pos, double spacing)
+{
+    ori_collision_result r = check_ok(c, pos);
+    cr_assert(isfinite(r.min_clearance));
+    ori_cloud_def cd = ori_default_cloud_def();
+    cd.spacing = spacing;
+    cd.distance = r.min_clearance + 2 * spacing;
+    ori_cloud_result cr;
+    ori_error err;
+    cr_assert_eq(ori_collider_cloud(c, pos, &cd, &cr, &err), ORI_OK, "%s", err.message);
+    cr_assert_gt(cr.points, 0);
+    cr_assert_gt(cr.point_pairs, 0);
+    // never below the exact clearance (round-off aside), and above it by at most the spacing
+    cr_assert_geq(cr.min_distance, r.min_clearance - 1e-12);
+    cr_assert_leq(cr.min_distance, r.min_clearance + spacing, "cloud %g exact %g spacing %g", cr.min_distance,
+                  r.min_clearance, spacing);
+    // the face pair at the least sample distance is one the exact check measures as close
+    bool found = false;
+    for (int i = 0; i < ori_collider_cloud_pair_count(c); ++i) {
+        ori_cloud_pair p = ori_collider_cloud_pair(c, i);
+        cr_assert(!ori_collider_adjacent(c, p.face_a, p.face_b));
+        cr_assert_float_eq(ori_v3_norm(ori_v3_sub(p.points[0], p.points[1])), p.distance, 1e-12);
+        if (p.face_a == r.clearance_faces[0] && p.face_b == r.clearance_faces[1]) found = true;
+    }
+    cr_assert(found, "the exact clearance pair %d-%d is not in the cloud", r.clearance_faces[0], r.clearance_faces[1]);
+}
+
+Test(collision, the_cloud_of_proximity_agrees_with_the_exact_clearance_within_the_spacing)
+{
+    miura_fold x = miura_fold_make(4, 4, 30.0);
+    ori_collider *c = collider_of(x.p, 0);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)ori_mechanism_vertex_count(x.m));
+    for (int k = 0; k < ori_motion_frame_count(x.mo) - 1; ++k) {
+        ori_motion_frame_vertices(x.mo, k, pos);
+        cloud_agrees(c, pos, 0.1);
+        cloud_agrees(c, pos, 0.03);
+    }
+    free(pos);
+    ori_collider_destroy(c);
+    miura_fold_free(&x);
+    // the strip in its three regimes, halfway to contact
+    double l2s[3] = {1.5, 3.0, 0.8}, l1s[3] = {2.0, 1.0, 1.0};
+    for (int i = 0; i < 3; ++i) {
+        strip s = strip_make(1.0, l1s[i], l2s[i]);
+        ori_collider *cs = collider_of(s.p, 0);
+        ori_motion *mo = NULL;
+        ori_collision_event ev = strip_fold(&s, cs, &mo);
+        (void)ev;
+        ori_v3 sp[8];
+        ori_motion_frame_vertices(mo, 10, sp);
+        cloud_agrees(cs, sp, 0.05);
+        ori_motion_destroy(mo);
+        ori_collider_destroy(cs);
+        strip_free(&s);
+    }
+}
+
+Test(collision, the_cloud_refuses_bad_spacings)
+{
+    strip s = strip_make(1.0, 1.0, 1.0);
+    ori_collider *c = collider_of(s.p, 0);
+    ori_v3 pos[8];
+    for (int v = 0; v < 8; ++v) pos[v] = ori_pattern_vertex(s.p, v);
+    ori_cloud_def cd = ori_default_cloud_def();
+    ori_cloud_result cr;
+    ori_error err;
+    cd.spacing = -0.1;
+    cd.distance = 0.1;
+    cr_assert_eq(ori_collider_cloud(c, pos, &cd, &cr, &err), ORI_ERR_RANGE);
+    cr_assert(strstr(err.message, "spacing"), "%s", err.message);
+    cd.spacing = 0.1;
+    cd.distance = 0.0;
+    cr_assert_eq(ori_collider_cloud(c, pos, &cd, &cr, &err), ORI_ERR_RANGE);
+    cd.distance = 0.1;
+    cd.spacing = 1e-5;
+    cr_assert_eq(ori_collider_cloud(c, pos, &cd, &cr, &err), ORI_ERR_LIMIT);
+    ori_collider_destroy(c);
+    strip_free(&s);
+}

@@ -10,6 +10,7 @@ void col_bvh_free(col_bvh *bvh)
 {
     ori__free(bvh->nodes);
     ori__free(bvh->items);
+    ori__free(bvh->keys);
     ori__free(bvh->stack);
     memset(bvh, 0, sizeof *bvh);
 }
@@ -19,19 +20,19 @@ static double centre(const col_box *b, int axis)
     return axis == 0 ? b->lo.x + b->hi.x : axis == 1 ? b->lo.y + b->hi.y : b->lo.z + b->hi.z;
 }
 
-// Partition items[lo..hi) so that the k-th smallest centre along axis is at k (quickselect).
-static void select_kth(int *items, int lo, int hi, int k, const col_box *boxes, int axis)
+// Partition items[lo..hi) so that the k-th smallest key is at k (quickselect); keys[item] is
+// the item's box centre along the split axis.
+static void select_kth(int *items, int lo, int hi, int k, const double *keys)
 {
     while (hi - lo > 1) {
         int mid = lo + (hi - lo) / 2;
         // median of three as pivot
-        double a = centre(&boxes[items[lo]], axis), b = centre(&boxes[items[mid]], axis),
-               cc = centre(&boxes[items[hi - 1]], axis);
+        double a = keys[items[lo]], b = keys[items[mid]], cc = keys[items[hi - 1]];
         double pivot = a < b ? (b < cc ? b : (a < cc ? cc : a)) : (a < cc ? a : (b < cc ? cc : b));
         int i = lo, j = hi - 1;
         while (i <= j) {
-            while (centre(&boxes[items[i]], axis) < pivot) i++;
-            while (centre(&boxes[items[j]], axis) > pivot) j--;
+            while (keys[items[i]] < pivot) i++;
+            while (keys[items[j]] > pivot) j--;
             if (i <= j) {
                 int t = items[i];
                 items[i] = items[j];
@@ -59,11 +60,19 @@ static int build(col_bvh *bvh, int first, int count)
     ori_v3 clo = ori_v3_make(INFINITY, INFINITY, INFINITY), chi = ori_v3_make(-INFINITY, -INFINITY, -INFINITY);
     for (int i = first; i < first + count; ++i) {
         const col_box *b = &bvh->boxes[bvh->items[i]];
-        box.lo = ori_v3_make(fmin(box.lo.x, b->lo.x), fmin(box.lo.y, b->lo.y), fmin(box.lo.z, b->lo.z));
-        box.hi = ori_v3_make(fmax(box.hi.x, b->hi.x), fmax(box.hi.y, b->hi.y), fmax(box.hi.z, b->hi.z));
+        box.lo.x = b->lo.x < box.lo.x ? b->lo.x : box.lo.x;
+        box.lo.y = b->lo.y < box.lo.y ? b->lo.y : box.lo.y;
+        box.lo.z = b->lo.z < box.lo.z ? b->lo.z : box.lo.z;
+        box.hi.x = b->hi.x > box.hi.x ? b->hi.x : box.hi.x;
+        box.hi.y = b->hi.y > box.hi.y ? b->hi.y : box.hi.y;
+        box.hi.z = b->hi.z > box.hi.z ? b->hi.z : box.hi.z;
         double cx = centre(b, 0), cy = centre(b, 1), cz = centre(b, 2);
-        clo = ori_v3_make(fmin(clo.x, cx), fmin(clo.y, cy), fmin(clo.z, cz));
-        chi = ori_v3_make(fmax(chi.x, cx), fmax(chi.y, cy), fmax(chi.z, cz));
+        clo.x = cx < clo.x ? cx : clo.x;
+        clo.y = cy < clo.y ? cy : clo.y;
+        clo.z = cz < clo.z ? cz : clo.z;
+        chi.x = cx > chi.x ? cx : chi.x;
+        chi.y = cy > chi.y ? cy : chi.y;
+        chi.z = cz > chi.z ? cz : chi.z;
     }
     bvh->nodes[id].box = box;
     if (count <= LEAF_ITEMS) {
@@ -75,7 +84,9 @@ static int build(col_bvh *bvh, int first, int count)
     double ex = chi.x - clo.x, ey = chi.y - clo.y, ez = chi.z - clo.z;
     int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
     int half = count / 2;
-    select_kth(bvh->items, first, first + count, first + half, bvh->boxes, axis);
+    double *keys = bvh->keys;
+    for (int i = first; i < first + count; ++i) keys[bvh->items[i]] = centre(&bvh->boxes[bvh->items[i]], axis);
+    select_kth(bvh->items, first, first + count, first + half, keys);
     int l = build(bvh, first, half);
     int r = build(bvh, first + half, count - half);
     bvh->nodes[id].left = l;
@@ -91,6 +102,7 @@ void col_bvh_build(col_bvh *bvh, const col_box *boxes, int n)
     bvh->node_count = 0;
     if (n <= 0) return;
     ORI__RESERVE(bvh->items, bvh->item_cap, n);
+    ORI__RESERVE(bvh->keys, bvh->key_cap, n);
     ORI__RESERVE(bvh->nodes, bvh->node_cap, 2 * (n / LEAF_ITEMS + 1) + 1);
     for (int i = 0; i < n; ++i) bvh->items[i] = i;
     build(bvh, 0, n);
@@ -174,9 +186,8 @@ static void nearest_rec(nearest_ctx *x, int a, int b)
         nearest_rec(x, na->left, na->right);
         return;
     }
-    // Split the inner node with the larger box, nearer child pair first.
-    bool split_a = !is_leaf(na) && (is_leaf(nb) || ori_v3_norm(ori_v3_sub(na->box.hi, na->box.lo)) >=
-                                                     ori_v3_norm(ori_v3_sub(nb->box.hi, nb->box.lo)));
+    // Split the inner node holding more items, nearer child first.
+    bool split_a = !is_leaf(na) && (is_leaf(nb) || na->count >= nb->count);
     int c0 = split_a ? na->left : nb->left, c1 = split_a ? na->right : nb->right, other = split_a ? b : a;
     const col_box *ob = &x->bvh->nodes[other].box;
     double d0 = col_box_dist2(&x->bvh->nodes[c0].box, ob), d1 = col_box_dist2(&x->bvh->nodes[c1].box, ob);

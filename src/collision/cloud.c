@@ -218,7 +218,7 @@ ori_status ori_collider_cloud(ori_collider *c, const ori_v3 *positions, const or
                     for (int64_t j = lo; j < n && cmp_cell(s[j].cell, want) == 0; ++j) {
                         if (j <= i) continue;
                         int a = s[i].face, b = s[j].face;
-                        if (a == b || col_adjacent(c, a, b)) continue;
+                        if (a == b || col_adjacency_of(c, a, b) != COL_ADJ_NONE) continue;
                         double d = ori_v3_norm(ori_v3_sub(s[i].p, s[j].p));
                         if (!(d < dist)) continue;
                         out->point_pairs++;

@@ -18,6 +18,8 @@ ori_collider_def ori_default_collider_def(void)
 
 // --- creation -------------------------------------------------------------------------------
 
+static bool convex_crease_pair(const ori_collider *c, int f, int g);
+
 static int cmp_int(const void *a, const void *b)
 {
     int x = *(const int *)a, y = *(const int *)b;
@@ -195,6 +197,10 @@ ori_status ori_collider_create(const ori_collider_def *def, ori_collider **out, 
     ori__free(vf_off);
     ori__free(vf);
     ori__free(fill);
+    c->adj_kind = ori__alloc((size_t)adj_n + 1);
+    for (int f = 0; f < nf; ++f)
+        for (int k = c->adj_off[f]; k < c->adj_off[f + 1]; ++k)
+            c->adj_kind[k] = convex_crease_pair(c, f, c->adj[k]) ? COL_ADJ_CREASE : COL_ADJ_VERTEX;
 
     c->geom = ori__alloc(sizeof(col_geom) * (size_t)nf);
     c->boxes = ori__alloc(sizeof(col_box) * (size_t)nf);
@@ -212,6 +218,7 @@ void ori_collider_destroy(ori_collider *c)
     ori__free(c->tris);
     ori__free(c->adj_off);
     ori__free(c->adj);
+    ori__free(c->adj_kind);
     ori__free(c->geom);
     ori__free(c->boxes);
     col_bvh_free(&c->bvh);
@@ -233,7 +240,7 @@ int ori_collider_vertex_count(const ori_collider *c)
     return c->vertex_count;
 }
 
-bool col_adjacent(const ori_collider *c, int f, int g)
+col_adjacency col_adjacency_of(const ori_collider *c, int f, int g)
 {
     int lo = c->adj_off[f], hi = c->adj_off[f + 1];
     while (lo < hi) {
@@ -241,13 +248,13 @@ bool col_adjacent(const ori_collider *c, int f, int g)
         if (c->adj[mid] < g) lo = mid + 1;
         else hi = mid;
     }
-    return lo < c->adj_off[f + 1] && c->adj[lo] == g;
+    return lo < c->adj_off[f + 1] && c->adj[lo] == g ? (col_adjacency)c->adj_kind[lo] : COL_ADJ_NONE;
 }
 
 bool ori_collider_adjacent(const ori_collider *c, int f, int g)
 {
     ORI_ASSERT(c && f >= 0 && f < c->face_count && g >= 0 && g < c->face_count);
-    return f != g && col_adjacent(c, f, g);
+    return f != g && col_adjacency_of(c, f, g) != COL_ADJ_NONE;
 }
 
 int col_shared_vertices(const ori_collider *c, int f, int g, int *out, int cap)
@@ -262,7 +269,8 @@ int col_shared_vertices(const ori_collider *c, int f, int g, int *out, int cap)
     return n;
 }
 
-bool col_convex_crease_pair(const ori_collider *c, int f, int g)
+// Two convex faces with a common side (a crease).
+static bool convex_crease_pair(const ori_collider *c, int f, int g)
 {
     if (c->tri_off[f + 1] > c->tri_off[f] || c->tri_off[g + 1] > c->tri_off[g]) return false;
     int nf = c->face_off[f + 1] - c->face_off[f], ng = c->face_off[g + 1] - c->face_off[g];
@@ -339,6 +347,7 @@ ori_status col_state_prepare(ori_collider *c, const ori_v3 *positions, ori_error
 typedef struct check_ctx {
     ori_collider *c;
     ori_collision_result *r;
+    bool want_clearance;
 } check_ctx;
 
 static void push_contact(ori_collider *c, const ori_contact *k)
@@ -363,9 +372,13 @@ static bool check_pair(void *user, int f, int g)
     ori_collider *c = x->c;
     ori_collision_result *r = x->r;
     r->candidate_pairs++;
-    bool adj = col_adjacent(c, f, g);
+    col_adjacency kind = col_adjacency_of(c, f, g);
+    bool adj = kind != COL_ADJ_NONE;
     col_pair_result pr;
-    col_pair_test(c, f, g, adj, &pr);
+    // Nearby pairs are the likely nearest: measuring them below the least distance so far
+    // gives the nearest-pair search a tight bound from the start.
+    c->distance_bound = x->want_clearance ? r->min_clearance : 0.0;
+    col_pair_test(c, f, g, kind, &pr);
     if (pr.has_distance) r->distance_pairs++;
     ori_contact k;
     memset(&k, 0, sizeof k);
@@ -412,13 +425,45 @@ typedef struct nearest_user {
 static double nearest_pair(void *user, int f, int g, double best)
 {
     nearest_user *x = user;
-    (void)best;
-    if (col_adjacent(x->c, f, g)) return INFINITY;
+    if (col_adjacency_of(x->c, f, g) != COL_ADJ_NONE) return INFINITY;
     ori_v3 pa, pb;
-    double d = col_face_distance(x->c, f, g, &pa, &pb);
+    double d = col_face_distance(x->c, f, g, best, &pa, &pb);
     x->r->distance_pairs++;
-    note_clearance(x->r, f, g, d, pa, pb);
+    if (d < best) note_clearance(x->r, f, g, d, pa, pb);
     return d;
+}
+
+// A first bound on the least clearance: for every face, its distance to one face sharing no
+// vertex with it among its neighbours' neighbours (in a sheet, the nearest faces are there).
+static void seed_clearance(ori_collider *c, ori_collision_result *r)
+{
+    for (int f = 0; f < c->face_count; ++f) {
+        int pick = -1;
+        for (int k = c->adj_off[f]; k < c->adj_off[f + 1] && pick < 0; ++k) {
+            int a = c->adj[k];
+            for (int j = c->adj_off[a]; j < c->adj_off[a + 1]; ++j) {
+                int b = c->adj[j];
+                if (b != f && col_adjacency_of(c, f, b) == COL_ADJ_NONE) {
+                    pick = b;
+                    break;
+                }
+            }
+        }
+        if (pick < 0) continue;
+        ori_v3 pa, pb;
+        int lo = f < pick ? f : pick, hi = f < pick ? pick : f;
+        double d = col_face_distance(c, lo, hi, r->min_clearance, &pa, &pb);
+        r->distance_pairs++;
+        if (d < r->min_clearance) note_clearance(r, lo, hi, d, pa, pb);
+    }
+}
+
+static bool nearer_pair(void *user, int f, int g)
+{
+    nearest_user *x = user;
+    double best = x->r->min_clearance;
+    if (col_box_dist2(&x->c->boxes[f], &x->c->boxes[g]) < best * best) nearest_pair(user, f, g, best);
+    return true;
 }
 
 void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_result *out)
@@ -429,12 +474,18 @@ void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_resu
     out->tolerance = c->tol_touch;
     c->contact_count = 0;
     col_bvh_build(&c->bvh, c->boxes, c->face_count);
-    check_ctx x = {c, out};
+    check_ctx x = {c, out, want_clearance};
     col_bvh_self_pairs(&c->bvh, fmax(c->tol_touch, c->clearance), check_pair, &x);
     qsort(c->contacts, (size_t)c->contact_count, sizeof(ori_contact), cmp_contact);
+    c->distance_bound = 0.0;
     if (want_clearance && out->min_clearance > 0.0) {
         nearest_user nu = {c, out};
-        col_bvh_nearest(&c->bvh, out->min_clearance, nearest_pair, &nu);
+        seed_clearance(c, out);
+        if (isfinite(out->min_clearance))
+            // a nearby pair gave a bound: every nearer pair has boxes within it
+            col_bvh_self_pairs(&c->bvh, out->min_clearance, nearer_pair, &nu);
+        else
+            col_bvh_nearest(&c->bvh, out->min_clearance, nearest_pair, &nu);
     }
     int first = -1;
     for (int i = 0; i < c->contact_count; ++i) {

@@ -25,6 +25,8 @@ typedef struct col_bvh {
     int node_count, node_cap;
     int *items;
     int item_cap;
+    double *keys;     // split keys per item (build scratch)
+    int key_cap;
     const col_box *boxes; // the item boxes of the last build (not owned)
     // traversal scratch
     int *stack;
@@ -45,12 +47,18 @@ double col_bvh_nearest(col_bvh *bvh, double best, col_dist_fn *fn, void *user);
 
 static inline double col_box_dist2(const col_box *a, const col_box *b)
 {
-    double d2 = 0.0, g;
-    g = fmax(a->lo.x - b->hi.x, b->lo.x - a->hi.x);
+    double d2 = 0.0, g, h;
+    g = a->lo.x - b->hi.x;
+    h = b->lo.x - a->hi.x;
+    g = g > h ? g : h;
     if (g > 0.0) d2 += g * g;
-    g = fmax(a->lo.y - b->hi.y, b->lo.y - a->hi.y);
+    g = a->lo.y - b->hi.y;
+    h = b->lo.y - a->hi.y;
+    g = g > h ? g : h;
     if (g > 0.0) d2 += g * g;
-    g = fmax(a->lo.z - b->hi.z, b->lo.z - a->hi.z);
+    g = a->lo.z - b->hi.z;
+    h = b->lo.z - a->hi.z;
+    g = g > h ? g : h;
     if (g > 0.0) d2 += g * g;
     return d2;
 }
@@ -112,6 +120,7 @@ typedef struct col_work {
     col_xing *xa, *xb, *ia, *ib, *ic; // crossings and interval lists (endpoint pairs)
     ori_v2 *p2, *q2;   // face vertices in a plane frame
     ori_v2 *clip0, *clip1; // polygon clipping buffers
+    col_box *eboxes;   // edge boxes
 } col_work;
 
 void col_work_init(col_work *w, int max_face);
@@ -122,6 +131,7 @@ struct ori_collider {
     int *face_off, *face_verts;   // faces_vertices, CSR
     int *tri_off, *tris;          // convex pieces of non-convex faces: triangles (3 ints), CSR; 0 for convex faces
     int *adj_off, *adj;           // faces sharing a vertex, sorted, CSR
+    unsigned char *adj_kind;      // col_adjacency of each adj entry
     int max_face;                 // largest face size
     double diagonal, clearance;
 
@@ -130,6 +140,7 @@ struct ori_collider {
     col_geom *geom;
     col_box *boxes;
     double tol_pen, tol_touch;
+    double distance_bound;        // col_pair_test measures non-adjacent pairs exactly below this too
     col_bvh bvh;
 
     // results of the last check
@@ -145,17 +156,22 @@ struct ori_collider {
 
 // Shared vertices of faces f and g (FOLD vertex indices into out, at most cap); returns count.
 int col_shared_vertices(const ori_collider *c, int f, int g, int *out, int cap);
-bool col_adjacent(const ori_collider *c, int f, int g);
-// Whether faces f and g share an edge of both cycles (a crease) and are both convex.
-bool col_convex_crease_pair(const ori_collider *c, int f, int g);
+// How faces f ≠ g meet by construction.
+typedef enum col_adjacency {
+    COL_ADJ_NONE = 0,   // no shared vertex
+    COL_ADJ_VERTEX,     // a shared vertex (or a shared side of a non-convex face)
+    COL_ADJ_CREASE,     // two convex faces with a common side: they meet only on its line (or stacked)
+} col_adjacency;
+col_adjacency col_adjacency_of(const ori_collider *c, int f, int g);
 
 // Plane, box and tolerances of every face at positions; fails on bad positions or faces.
 ori_status col_state_prepare(ori_collider *c, const ori_v3 *positions, ori_error *error);
 
 // The exact test of faces f < g at the prepared state (narrow.c).
-void col_pair_test(ori_collider *c, int f, int g, bool adjacent, col_pair_result *out);
-// Exact distance of faces f and g (no crossing assumed), points on each.
-double col_face_distance(ori_collider *c, int f, int g, ori_v3 *pa, ori_v3 *pb);
+void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_pair_result *out);
+// Exact distance of faces f and g (no crossing assumed) when it is below bound, with the
+// closest points on each; otherwise a value >= bound (points unset).
+double col_face_distance(ori_collider *c, int f, int g, double bound, ori_v3 *pa, ori_v3 *pb);
 // Side of face a relative to face b's front side; *point = a point of the overlap (on b).
 col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point);
 

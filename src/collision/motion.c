@@ -118,7 +118,7 @@ static bool collect_pair(void *user, int a, int b)
     col_step *s = user;
     // Two convex faces joined by a crease turn about their common line: they cannot pass
     // through each other.
-    if (col_convex_crease_pair(s->c, a, b)) return true;
+    if (col_adjacency_of(s->c, a, b) == COL_ADJ_CREASE) return true;
     ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
     s->pairs[s->npairs].a = a;
     s->pairs[s->npairs].b = b;
@@ -197,7 +197,7 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         contact->face_a = s->pairs[flip].a;
         contact->face_b = s->pairs[flip].b;
         contact->kind = ORI_CONTACT_PENETRATING;
-        contact->adjacent = col_adjacent(c, s->pairs[flip].a, s->pairs[flip].b);
+        contact->adjacent = col_adjacency_of(c, s->pairs[flip].a, s->pairs[flip].b) != COL_ADJ_NONE;
         contact->stacked = s->pairs[flip].sa == COL_SIDE_FLAT;
         contact->collides = true;
         contact->point = flip_point;
@@ -287,10 +287,11 @@ typedef struct run_out {
     int solved;
 } run_out;
 
-// Walk the frames; on the first colliding step call prepare_bisect(k) and bisect it.
+// Walk the frames; on the first colliding step call prepare_bisect(k) (which also gives the
+// drive's rate of change per unit of the parameter on that step) and bisect it.
 static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collision_motion_def *check,
-                             ori_status (*prepare_bisect)(void *user, int k), const col_source *src, run_out *out,
-                             ori_error *error)
+                             ori_status (*prepare_bisect)(void *user, int k, double *per, ori_error *error),
+                             const col_source *src, run_out *out, ori_error *error)
 {
     memset(out, 0, sizeof *out);
     int V = c->vertex_count;
@@ -331,10 +332,9 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
             pb = t;
             continue;
         }
-        double x0 = fr->param(fr->src, k - 1), x1 = fr->param(fr->src, k);
-        double d0 = fr->drive(fr->src, k - 1), d1 = fr->drive(fr->src, k);
-        double per = x1 != x0 ? fabs(d1 - d0) / fabs(x1 - x0) : 0.0;
-        if ((st = prepare_bisect(src->user, k)) != ORI_OK) break;
+        double x0 = fr->param(fr->src, k - 1), x1 = fr->param(fr->src, k), d1 = fr->drive(fr->src, k);
+        double per = 0.0;
+        if ((st = prepare_bisect(src->user, k, &per, error)) != ORI_OK) break;
         bisect_out bo;
         st = bisect(&s, src, pa, pt, pb, x0, x1, d1, per, check->drive_tol_rad, contact, &bo, error);
         if (st != ORI_OK) break;
@@ -370,9 +370,11 @@ static void motion_vertices(const void *src, int k, ori_v3 *pos)
 
 static double motion_drive(const void *src, int k) { return ori_motion_frame_drive(((const motion_src *)src)->mo, k); }
 
-static ori_status motion_prepare(void *user, int k)
+static ori_status motion_prepare(void *user, int k, double *per, ori_error *error)
 {
     motion_src *ms = user;
+    (void)error;
+    *per = 1.0; // the parameter is the drive
     memcpy(ms->lo_angles, ori_motion_frame_angles(ms->mo, k - 1), sizeof(double) * (size_t)ms->edges);
     return ORI_OK;
 }
@@ -463,10 +465,18 @@ static void record_vertices(const void *src, int k, ori_v3 *pos)
 
 static double record_drive(const void *src, int k) { return ori_record_frame_drive(((const record_src *)src)->r, k); }
 static double record_time(const void *src, int k) { return ori_record_frame_time(((const record_src *)src)->r, k); }
-static ori_status record_prepare(void *user, int k)
+// Within a fold the drive is linear in the time; frame k − 1 may end the previous fold (whose
+// drive is another crease), so the rate comes from the state halfway through the step.
+static ori_status record_prepare(void *user, int k, double *per, ori_error *error)
 {
-    (void)user;
-    (void)k;
+    record_src *rs = user;
+    double t0 = ori_record_frame_time(rs->r, k - 1), t1 = ori_record_frame_time(rs->r, k);
+    *per = 0.0;
+    if (!(t1 > t0)) return ORI_OK;
+    double tm = 0.5 * (t0 + t1), dm;
+    ori_status st = ori_record_at(rs->r, tm, rs->angles, NULL, &dm, NULL, NULL, error);
+    if (st != ORI_OK) return st;
+    *per = fabs(ori_record_frame_drive(rs->r, k) - dm) / (t1 - tm);
     return ORI_OK;
 }
 

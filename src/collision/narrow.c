@@ -31,6 +31,7 @@ void col_work_init(col_work *w, int m)
     w->q2 = ori__alloc(sizeof(ori_v2) * n);
     w->clip0 = ori__alloc(sizeof(ori_v2) * 3 * n);
     w->clip1 = ori__alloc(sizeof(ori_v2) * 3 * n);
+    w->eboxes = ori__alloc(sizeof(col_box) * n);
 }
 
 void col_work_free(col_work *w)
@@ -48,6 +49,7 @@ void col_work_free(col_work *w)
     ori__free(w->q2);
     ori__free(w->clip0);
     ori__free(w->clip1);
+    ori__free(w->eboxes);
     memset(w, 0, sizeof *w);
 }
 
@@ -76,10 +78,12 @@ static ori_v3 from_frame(const col_geom *g, ori_v2 x)
 
 // --- segments and points -------------------------------------------------------------------
 
-// Closest points of segments p1p2 and q1q2 (Ericson, Real-Time Collision Detection, 5.1.9),
-// with exact-zero guards only: edges have positive length, and the clamped re-solve keeps
-// near-parallel segments accurate.
-static double seg_seg(ori_v3 p1, ori_v3 p2, ori_v3 q1, ori_v3 q2, ori_v3 *cp, ori_v3 *cq)
+static double clamp01(double x) { return x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x; }
+
+// Squared distance of segments p1p2 and q1q2 and the parameters s, t of the closest points
+// (Ericson, Real-Time Collision Detection, 5.1.9), with exact-zero guards only: edges have
+// positive length, and the clamped re-solve keeps near-parallel segments accurate.
+static double seg_seg2(ori_v3 p1, ori_v3 p2, ori_v3 q1, ori_v3 q2, double *sp, double *tp)
 {
     ori_v3 d1 = ori_v3_sub(p2, p1), d2 = ori_v3_sub(q2, q1), r = ori_v3_sub(p1, q1);
     double a = ori_v3_dot(d1, d1), e = ori_v3_dot(d2, d2), f = ori_v3_dot(d2, r);
@@ -87,27 +91,37 @@ static double seg_seg(ori_v3 p1, ori_v3 p2, ori_v3 q1, ori_v3 q2, ori_v3 *cp, or
     if (a == 0.0 && e == 0.0) {
         s = t = 0.0;
     } else if (a == 0.0) {
-        t = fmin(fmax(f / e, 0.0), 1.0);
+        t = clamp01(f / e);
     } else {
         double cc = ori_v3_dot(d1, r);
         if (e == 0.0) {
-            s = fmin(fmax(-cc / a, 0.0), 1.0);
+            s = clamp01(-cc / a);
         } else {
             double b = ori_v3_dot(d1, d2), denom = a * e - b * b;
-            s = denom > 0.0 ? fmin(fmax((b * f - cc * e) / denom, 0.0), 1.0) : 0.0;
+            s = denom > 0.0 ? clamp01((b * f - cc * e) / denom) : 0.0;
             t = (b * s + f) / e;
             if (t < 0.0) {
                 t = 0.0;
-                s = fmin(fmax(-cc / a, 0.0), 1.0);
+                s = clamp01(-cc / a);
             } else if (t > 1.0) {
                 t = 1.0;
-                s = fmin(fmax((b - cc) / a, 0.0), 1.0);
+                s = clamp01((b - cc) / a);
             }
         }
     }
-    *cp = ori_v3_add(p1, ori_v3_scale(d1, s));
-    *cq = ori_v3_add(q1, ori_v3_scale(d2, t));
-    return ori_v3_norm(ori_v3_sub(*cp, *cq));
+    *sp = s;
+    *tp = t;
+    ori_v3 x = ori_v3_sub(ori_v3_add(p1, ori_v3_scale(d1, s)), ori_v3_add(q1, ori_v3_scale(d2, t)));
+    return ori_v3_dot(x, x);
+}
+
+// Closest points of segments p1p2 and q1q2 and their distance.
+static double seg_seg(ori_v3 p1, ori_v3 p2, ori_v3 q1, ori_v3 q2, ori_v3 *cp, ori_v3 *cq)
+{
+    double s, t, d2 = seg_seg2(p1, p2, q1, q2, &s, &t);
+    *cp = ori_v3_add(p1, ori_v3_scale(ori_v3_sub(p2, p1), s));
+    *cq = ori_v3_add(q1, ori_v3_scale(ori_v3_sub(q2, q1), t));
+    return sqrt(d2);
 }
 
 // Even–odd point-in-polygon in 2D (boundary cases are decided by the edge distances instead).
@@ -146,45 +160,105 @@ static double point_face(const col_geom *g, const ori_v3 *q, const ori_v2 *q2, i
     return best;
 }
 
-double col_face_distance(ori_collider *c, int f, int g, ori_v3 *pa, ori_v3 *pb)
+// Lower bound of the distance of face p (n vertices) to the plane of face g: the least
+// distance of its vertices when they all lie on one side, else 0.
+static double plane_gap(const col_geom *g, const ori_v3 *p, int n)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < n; ++i) {
+        double h = ori_v3_dot(g->n, p[i]) - g->d;
+        lo = h < lo ? h : lo;
+        hi = h > hi ? h : hi;
+    }
+    return lo > 0.0 ? lo : hi < 0.0 ? -hi : 0.0;
+}
+
+// Squared gap between two boxes (0 when they overlap).
+static double box_gap2(const col_box *a, const col_box *b) { return col_box_dist2(a, b); }
+
+static col_box seg_box(ori_v3 a, ori_v3 b)
+{
+    col_box x;
+    x.lo = ori_v3_make(a.x < b.x ? a.x : b.x, a.y < b.y ? a.y : b.y, a.z < b.z ? a.z : b.z);
+    x.hi = ori_v3_make(a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z);
+    return x;
+}
+
+double col_face_distance(ori_collider *c, int f, int g, double bound, ori_v3 *pa, ori_v3 *pb)
 {
     col_work *w = &c->work;
     const col_geom *gf = &c->geom[f], *gg = &c->geom[g];
     int n = load(c, f, w->pp), m = load(c, g, w->qq);
-    to_frame(gf, w->pp, n, w->p2);
-    to_frame(gg, w->qq, m, w->q2);
-    double best = INFINITY;
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < m; ++j) {
-            ori_v3 a, b;
-            double d = seg_seg(w->pp[i], w->pp[(i + 1) % n], w->qq[j], w->qq[(j + 1) % m], &a, &b);
-            if (d < best) {
-                best = d;
-                *pa = a;
-                *pb = b;
-            }
-        }
+    // Separating planes give a lower bound: most far pairs end here.
+    double lb = plane_gap(gg, w->pp, n), lq = plane_gap(gf, w->qq, m);
+    if (lq > lb) lb = lq;
+    if (lb >= bound) return lb;
+    double best2 = bound * bound;
+    int kind = -1, bi = 0, bj = 0; // 0 edge–edge, 1 vertex of f on g, 2 vertex of g on f
+    double bs = 0.0, bt = 0.0;
+    // Vertex–face first: cheap, and often the answer, which then prunes the edge pairs.
+    bool q2_ready = false, p2_ready = false;
     for (int i = 0; i < n; ++i) {
         ori_v3 r = ori_v3_sub(w->pp[i], gg->o);
-        ori_v2 x2 = ori_v2_make(ori_v3_dot(r, gg->e1), ori_v3_dot(r, gg->e2));
-        double h = fabs(ori_v3_dot(r, gg->n));
-        if (h < best && inside2(w->q2, m, x2)) {
-            best = h;
-            *pa = w->pp[i];
-            *pb = ori_v3_sub(w->pp[i], ori_v3_scale(gg->n, ori_v3_dot(r, gg->n)));
+        double h = ori_v3_dot(r, gg->n);
+        if (!(h * h < best2)) continue;
+        if (!q2_ready) {
+            to_frame(gg, w->qq, m, w->q2);
+            q2_ready = true;
+        }
+        if (inside2(w->q2, m, ori_v2_make(ori_v3_dot(r, gg->e1), ori_v3_dot(r, gg->e2)))) {
+            best2 = h * h;
+            kind = 1;
+            bi = i;
+            bs = h;
         }
     }
     for (int j = 0; j < m; ++j) {
         ori_v3 r = ori_v3_sub(w->qq[j], gf->o);
-        ori_v2 x2 = ori_v2_make(ori_v3_dot(r, gf->e1), ori_v3_dot(r, gf->e2));
-        double h = fabs(ori_v3_dot(r, gf->n));
-        if (h < best && inside2(w->p2, n, x2)) {
-            best = h;
-            *pb = w->qq[j];
-            *pa = ori_v3_sub(w->qq[j], ori_v3_scale(gf->n, ori_v3_dot(r, gf->n)));
+        double h = ori_v3_dot(r, gf->n);
+        if (!(h * h < best2)) continue;
+        if (!p2_ready) {
+            to_frame(gf, w->pp, n, w->p2);
+            p2_ready = true;
+        }
+        if (inside2(w->p2, n, ori_v2_make(ori_v3_dot(r, gf->e1), ori_v3_dot(r, gf->e2)))) {
+            best2 = h * h;
+            kind = 2;
+            bj = j;
+            bs = h;
         }
     }
-    return best;
+    col_box *eb = w->eboxes;
+    for (int j = 0; j < m; ++j) eb[j] = seg_box(w->qq[j], w->qq[(j + 1) % m]);
+    for (int i = 0; i < n; ++i) {
+        ori_v3 a = w->pp[i], b = w->pp[(i + 1) % n];
+        col_box ea = seg_box(a, b);
+        for (int j = 0; j < m; ++j) {
+            if (box_gap2(&ea, &eb[j]) >= best2) continue;
+            double sp, tp, d2 = seg_seg2(a, b, w->qq[j], w->qq[(j + 1) % m], &sp, &tp);
+            if (d2 < best2) {
+                best2 = d2;
+                kind = 0;
+                bi = i;
+                bj = j;
+                bs = sp;
+                bt = tp;
+            }
+        }
+    }
+    if (kind < 0) return bound;
+    if (kind == 0) {
+        ori_v3 a = w->pp[bi], b = w->pp[(bi + 1) % n], q1 = w->qq[bj], q2 = w->qq[(bj + 1) % m];
+        *pa = ori_v3_add(a, ori_v3_scale(ori_v3_sub(b, a), bs));
+        *pb = ori_v3_add(q1, ori_v3_scale(ori_v3_sub(q2, q1), bt));
+    } else if (kind == 1) {
+        *pa = w->pp[bi];
+        *pb = ori_v3_sub(w->pp[bi], ori_v3_scale(gg->n, bs));
+    } else {
+        *pb = w->qq[bj];
+        *pa = ori_v3_sub(w->qq[bj], ori_v3_scale(gf->n, bs));
+    }
+    return sqrt(best2);
 }
 
 // --- overlap of two faces in one plane frame -----------------------------------------------
@@ -319,7 +393,9 @@ col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point)
     overlap(c, a, w->p2, b, w->q2, c->tol_touch, true, &o);
     if (!o.any) return COL_SIDE_NONE;
     if (point) *point = from_frame(gb, o.centroid);
-    double t = c->tol_touch;
+    // The side is decided at the penetration tolerance, not the contact one: a layer leaving
+    // its stack through another is caught as soon as it has moved by more than round-off.
+    double t = c->tol_pen;
     if (o.hmax > t && o.hmin < -t) return COL_SIDE_MIXED;
     if (o.hmax > t) return COL_SIDE_ABOVE;
     if (o.hmin < -t) return COL_SIDE_BELOW;
@@ -409,50 +485,72 @@ static bool is_shared(const int *sv, int ns, int v)
     return false;
 }
 
-// Faces sharing vertices: the least distance between their parts away from the shared
-// vertices (non-shared vertices to the other face, edges without a shared end to each other).
-static double away_distance(ori_collider *c, int f, int g, ori_v3 *point)
+// Faces sharing vertices: whether their parts away from the shared vertices come within the
+// contact tolerance (non-shared vertices to the other face, edges without a shared end to each
+// other); *point is the contact.
+static bool away_touch(ori_collider *c, int f, int g, const int *sv, int ns, ori_v3 *point)
 {
     col_work *w = &c->work;
-    int sv[64];
-    int ns = col_shared_vertices(c, f, g, sv, 64);
-    if (ns > 64) ns = 64;
     const col_geom *gf = &c->geom[f], *gg = &c->geom[g];
-    int n = load(c, f, w->pp), m = load(c, g, w->qq);
-    to_frame(gf, w->pp, n, w->p2);
-    to_frame(gg, w->qq, m, w->q2);
+    int n = face_size(c, f), m = face_size(c, g);
     const int *fv = c->face_verts + c->face_off[f], *gv = c->face_verts + c->face_off[g];
-    double best = INFINITY;
+    double tol = c->tol_touch, tol2 = tol * tol;
+    bool p2_ready = false, q2_ready = false;
     ori_v3 cp;
     for (int i = 0; i < n; ++i) {
-        if (is_shared(sv, ns, fv[i])) continue;
-        double d = point_face(gg, w->qq, w->q2, m, w->pp[i], &cp);
-        if (d < best) {
-            best = d;
+        if (is_shared(sv, ns, fv[i]) || fabs(w->dp[i]) > tol) continue;
+        if (!q2_ready) {
+            to_frame(gg, w->qq, m, w->q2);
+            q2_ready = true;
+        }
+        if (point_face(gg, w->qq, w->q2, m, w->pp[i], &cp) <= tol) {
             *point = ori_v3_scale(ori_v3_add(w->pp[i], cp), 0.5);
+            return true;
         }
     }
     for (int j = 0; j < m; ++j) {
-        if (is_shared(sv, ns, gv[j])) continue;
-        double d = point_face(gf, w->pp, w->p2, n, w->qq[j], &cp);
-        if (d < best) {
-            best = d;
+        if (is_shared(sv, ns, gv[j]) || fabs(w->dq[j]) > tol) continue;
+        if (!p2_ready) {
+            to_frame(gf, w->pp, n, w->p2);
+            p2_ready = true;
+        }
+        if (point_face(gf, w->pp, w->p2, n, w->qq[j], &cp) <= tol) {
             *point = ori_v3_scale(ori_v3_add(w->qq[j], cp), 0.5);
+            return true;
         }
     }
     for (int i = 0; i < n; ++i) {
         if (is_shared(sv, ns, fv[i]) || is_shared(sv, ns, fv[(i + 1) % n])) continue;
         for (int j = 0; j < m; ++j) {
             if (is_shared(sv, ns, gv[j]) || is_shared(sv, ns, gv[(j + 1) % m])) continue;
-            ori_v3 a, b;
-            double d = seg_seg(w->pp[i], w->pp[(i + 1) % n], w->qq[j], w->qq[(j + 1) % m], &a, &b);
-            if (d < best) {
-                best = d;
-                *point = ori_v3_scale(ori_v3_add(a, b), 0.5);
+            ori_v3 a = w->pp[i], b = w->pp[(i + 1) % n], q1 = w->qq[j], q2 = w->qq[(j + 1) % m];
+            col_box ea = seg_box(a, b), eq = seg_box(q1, q2);
+            if (box_gap2(&ea, &eq) > tol2) continue;
+            double s, t;
+            if (seg_seg2(a, b, q1, q2, &s, &t) <= tol2) {
+                *point = ori_v3_scale(ori_v3_add(ori_v3_add(a, ori_v3_scale(ori_v3_sub(b, a), s)),
+                                                 ori_v3_add(q1, ori_v3_scale(ori_v3_sub(q2, q1), t))),
+                                      0.5);
+                return true;
             }
         }
     }
-    return best;
+    return false;
+}
+
+// Whether the vertices of face f other than the shared ones all lie on one side of the other
+// face's plane (signed distances d), beyond the contact tolerance.
+static bool one_side_beyond(const ori_collider *c, int f, const double *d, int n, const int *sv, int ns)
+{
+    const int *fv = c->face_verts + c->face_off[f];
+    bool pos = false, neg = false;
+    for (int i = 0; i < n; ++i) {
+        if (is_shared(sv, ns, fv[i])) continue;
+        if (d[i] > c->tol_touch) pos = true;
+        else if (d[i] < -c->tol_touch) neg = true;
+        else return false;
+    }
+    return !(pos && neg);
 }
 
 static bool stacked(ori_collider *c, int f, int g, int n, int m, col_pair_result *out)
@@ -470,8 +568,9 @@ static bool stacked(ori_collider *c, int f, int g, int n, int m, col_pair_result
     return true;
 }
 
-void col_pair_test(ori_collider *c, int f, int g, bool adjacent, col_pair_result *out)
+void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_pair_result *out)
 {
+    bool adjacent = adjacency != COL_ADJ_NONE;
     memset(out, 0, sizeof *out);
     out->cls = COL_APART;
     col_work *w = &c->work;
@@ -489,7 +588,7 @@ void col_pair_test(ori_collider *c, int f, int g, bool adjacent, col_pair_result
     bool coplanar = maxp <= c->tol_touch && maxq <= c->tol_touch;
     // Two convex faces joined by a crease lie in half-planes of their common line: away from
     // the crease they can only meet as stacked layers (folded to ±180°).
-    if (adjacent && col_convex_crease_pair(c, f, g)) {
+    if (adjacency == COL_ADJ_CREASE) {
         if (coplanar) stacked(c, f, g, n, m, out);
         return;
     }
@@ -522,16 +621,28 @@ void col_pair_test(ori_collider *c, int f, int g, bool adjacent, col_pair_result
         }
     }
     if (!adjacent) {
+        // exact below the bound: enough for contact and the clearance, and (when the least
+        // clearance is wanted) for every pair nearer than the least distance found so far
+        double bound = 2.0 * (c->tol_touch > c->clearance ? c->tol_touch : c->clearance);
+        if (c->distance_bound > bound) bound = c->distance_bound;
+        double d = col_face_distance(c, f, g, bound, &out->pa, &out->pb);
+        if (!(d < bound)) return;
         out->has_distance = true;
-        out->distance = col_face_distance(c, f, g, &out->pa, &out->pb);
+        out->distance = d;
         if (out->distance <= c->tol_touch) {
             out->cls = COL_TOUCH;
             out->point = ori_v3_scale(ori_v3_add(out->pa, out->pb), 0.5);
         }
         return;
     }
+    // Away from the shared vertices only the other vertices (and the edges between them)
+    // count: when each face has them all on one side of the other's plane, beyond the
+    // tolerance, nothing else touches.
+    int sv[64];
+    int ns = col_shared_vertices(c, f, g, sv, 64);
+    if (ns <= 64 && one_side_beyond(c, f, w->dp, n, sv, ns) && one_side_beyond(c, g, w->dq, m, sv, ns)) return;
     ori_v3 p;
-    if (away_distance(c, f, g, &p) <= c->tol_touch) {
+    if (away_touch(c, f, g, sv, ns < 64 ? ns : 64, &p)) {
         out->cls = COL_TOUCH;
         out->point = p;
     }
