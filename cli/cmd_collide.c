@@ -243,6 +243,6 @@ const cli_command cli_cmd_collide = {
     "                     candidate_pairs, cloud: {spacing, distance, points, point_pairs,\n"
     "                     min_distance, faces: [{faces, point_pairs, distance}]} | null}\n"
     "\n"
-    "example: orikin collide ../shared/patterns/fold-spec/box.fold\n",
+    "example: orikin collide examples/patterns/two-flaps.fold --frame 1 --cloud 0.25\n",
     run,
 };

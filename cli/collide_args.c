@@ -108,6 +108,20 @@ int cli_collide_option(const char *cmd, int argc, char **argv, int *i, cli_colli
     return 1;
 }
 
+int cli_collide_strip(const char *cmd, int *argc, char **argv, cli_collide_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    int w = 1;
+    for (int i = 1; i < *argc; ++i) {
+        int r = cli_collide_option(cmd, *argc, argv, &i, o);
+        if (r < 0) return CLI_EXIT_USAGE;
+        if (r == 0) argv[w++] = argv[i];
+    }
+    *argc = w;
+    argv[w] = NULL;
+    return CLI_EXIT_OK;
+}
+
 static int make_collider(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *p,
                          ori_collider **c)
 {

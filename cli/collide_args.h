@@ -34,6 +34,9 @@ typedef struct cli_collide_opts {
 // If argv[*i] is --no-collisions or --clearance D, consume it (advancing *i past its value) and
 // return 1; return 0 when it is not one of them; on a usage error print it and return -1.
 int cli_collide_option(const char *cmd, int argc, char **argv, int *i, cli_collide_opts *o);
+// Take --no-collisions and --clearance D out of argv (compacting it, *argc updated) into *o.
+// Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after printing the message.
+int cli_collide_strip(const char *cmd, int *argc, char **argv, cli_collide_opts *o);
 
 // The first collision of a checked motion.
 typedef struct cli_collision {

@@ -983,7 +983,7 @@ static void cloud_agrees(ori_collider *c, const ori_v3 *pos, double spacing)
     cr_assert(isfinite(r.min_clearance));
     ori_cloud_def cd = ori_default_cloud_def();
     cd.spacing = spacing;
-    cd.distance = r.min_clearance + 2 * spacing;
+    cd.distance = r.min_clearance + 1.5 * spacing;
     ori_cloud_result cr;
     ori_error err;
     cr_assert_eq(ori_collider_cloud(c, pos, &cd, &cr, &err), ORI_OK, "%s", err.message);
@@ -1009,10 +1009,10 @@ Test(collision, the_cloud_of_proximity_agrees_with_the_exact_clearance_within_th
     miura_fold x = miura_fold_make(4, 4, 30.0);
     ori_collider *c = collider_of(x.p, 0);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)ori_mechanism_vertex_count(x.m));
-    for (int k = 0; k < ori_motion_frame_count(x.mo) - 1; ++k) {
+    for (int k = 1; k < ori_motion_frame_count(x.mo) - 1; k += 2) { // 30°, 90°, 150°
         ori_motion_frame_vertices(x.mo, k, pos);
         cloud_agrees(c, pos, 0.1);
-        cloud_agrees(c, pos, 0.03);
+        cloud_agrees(c, pos, 0.05);
     }
     free(pos);
     ori_collider_destroy(c);

@@ -332,8 +332,13 @@ ori_status col_state_prepare(ori_collider *c, const ori_v3 *positions, ori_error
                                 "the face is not planar: vertex %d is %.3g off its plane (at most %.3g, %g of the "
                                 "pattern's size)",
                                 worst, g->dev, planar, ORI_TOL_FACE_PLANAR_REL);
-        // in-plane frame: e1 along the first side, projected
+        // in-plane frame: e1 towards the vertex farthest from the first one, projected (a
+        // folded form may repeat a position along a face's cycle)
         ori_v3 s = ori_v3_sub(positions[fv[1]], p0);
+        for (int i = 2; i < n; ++i) {
+            ori_v3 t = ori_v3_sub(positions[fv[i]], p0);
+            if (ori_v3_dot(t, t) > ori_v3_dot(s, s)) s = t;
+        }
         g->e1 = ori_v3_normalize(ori_v3_sub(s, ori_v3_scale(g->n, ori_v3_dot(s, g->n))));
         g->e2 = ori_v3_cross(g->n, g->e1);
         if (g->dev > maxdev) maxdev = g->dev;
@@ -343,12 +348,6 @@ ori_status col_state_prepare(ori_collider *c, const ori_v3 *positions, ori_error
     c->tol_touch = fmax(ORI_TOL_CONTACT_REL * c->diagonal, c->tol_pen);
     return ORI_OK;
 }
-
-typedef struct check_ctx {
-    ori_collider *c;
-    ori_collision_result *r;
-    bool want_clearance;
-} check_ctx;
 
 static void push_contact(ori_collider *c, const ori_contact *k)
 {
@@ -366,18 +365,15 @@ static void note_clearance(ori_collision_result *r, int f, int g, double d, ori_
     }
 }
 
-static bool check_pair(void *user, int f, int g)
+void col_check_pair(ori_collider *c, ori_collision_result *r, bool want_clearance, int f, int g)
 {
-    check_ctx *x = user;
-    ori_collider *c = x->c;
-    ori_collision_result *r = x->r;
     r->candidate_pairs++;
     col_adjacency kind = col_adjacency_of(c, f, g);
     bool adj = kind != COL_ADJ_NONE;
     col_pair_result pr;
     // Nearby pairs are the likely nearest: measuring them below the least distance so far
     // gives the nearest-pair search a tight bound from the start.
-    c->distance_bound = x->want_clearance ? r->min_clearance : 0.0;
+    c->distance_bound = want_clearance ? r->min_clearance : 0.0;
     col_pair_test(c, f, g, kind, &pr);
     if (pr.has_distance) r->distance_pairs++;
     ori_contact k;
@@ -407,6 +403,18 @@ static bool check_pair(void *user, int f, int g)
             push_contact(c, &k);
         }
     }
+}
+
+typedef struct check_ctx {
+    ori_collider *c;
+    ori_collision_result *r;
+    bool want_clearance;
+} check_ctx;
+
+static bool check_pair(void *user, int f, int g)
+{
+    check_ctx *x = user;
+    col_check_pair(x->c, x->r, x->want_clearance, f, g);
     return true;
 }
 
@@ -466,16 +474,26 @@ static bool nearer_pair(void *user, int f, int g)
     return true;
 }
 
-void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_result *out)
+void col_check_begin(ori_collider *c, ori_collision_result *out)
 {
     memset(out, 0, sizeof *out);
     out->min_clearance = INFINITY;
     out->clearance_faces[0] = out->clearance_faces[1] = ORI_NULL_INDEX;
     out->tolerance = c->tol_touch;
     c->contact_count = 0;
+}
+
+void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_result *out)
+{
+    col_check_begin(c, out);
     col_bvh_build(&c->bvh, c->boxes, c->face_count);
     check_ctx x = {c, out, want_clearance};
     col_bvh_self_pairs(&c->bvh, fmax(c->tol_touch, c->clearance), check_pair, &x);
+    col_check_end(c, want_clearance, out);
+}
+
+void col_check_end(ori_collider *c, bool want_clearance, ori_collision_result *out)
+{
     qsort(c->contacts, (size_t)c->contact_count, sizeof(ori_contact), cmp_contact);
     c->distance_bound = 0.0;
     if (want_clearance && out->min_clearance > 0.0) {

@@ -178,5 +178,11 @@ col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point);
 // Check the prepared state: contacts into the collider; want_clearance also finds the least
 // clearance (otherwise only pairs within the clearance margin are measured).
 void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_result *out);
+// The same in pieces, for callers with their own candidate pairs: begin, every pair f < g whose
+// boxes lie within max(contact tolerance, clearance), end (sorts the contacts, finds the least
+// clearance with the checker's own hierarchy when wanted, counts and picks the witness).
+void col_check_begin(ori_collider *c, ori_collision_result *out);
+void col_check_pair(ori_collider *c, ori_collision_result *out, bool want_clearance, int f, int g);
+void col_check_end(ori_collider *c, bool want_clearance, ori_collision_result *out);
 
 #endif

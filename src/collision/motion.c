@@ -81,13 +81,25 @@ static col_side memo_get(const memo *m, uint64_t k)
 
 // --- one step --------------------------------------------------------------------------------
 
+// The geometry of a prepared state, kept for the clean state A of a step.
+typedef struct col_geomset {
+    col_geom *geom;
+    col_box *boxes;
+    const ori_v3 *pos;
+    double tol_pen, tol_touch;
+    bool valid;
+} col_geomset;
+
 typedef struct col_step {
     ori_collider *c;
     col_bvh bvh;     // over the swept boxes
-    col_box *box_a, *box_b, *swept;
+    col_geomset a;   // state A (valid after the first clean state)
+    col_geomset tmp; // scratch for swapping
+    col_box *swept;
     struct tracked {
         int a, b;
-        col_side sa; // side of a relative to b's front at the clean state
+        bool crease;  // two convex faces joined by a crease: they turn about its line and cannot pass through each other
+        col_side sa;  // side of a relative to b's front at the clean state
     } *pairs;
     int npairs, pair_cap;
     memo mem, next;  // orders at the clean state A, and at B when B is clean
@@ -97,16 +109,20 @@ static void step_init(col_step *s, ori_collider *c)
 {
     memset(s, 0, sizeof *s);
     s->c = c;
-    s->box_a = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
-    s->box_b = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
+    s->a.geom = ori__alloc(sizeof(col_geom) * (size_t)c->face_count);
+    s->a.boxes = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
+    s->tmp.geom = ori__alloc(sizeof(col_geom) * (size_t)c->face_count);
+    s->tmp.boxes = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
     s->swept = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
 }
 
 static void step_free(col_step *s)
 {
     col_bvh_free(&s->bvh);
-    ori__free(s->box_a);
-    ori__free(s->box_b);
+    ori__free(s->a.geom);
+    ori__free(s->a.boxes);
+    ori__free(s->tmp.geom);
+    ori__free(s->tmp.boxes);
     ori__free(s->swept);
     ori__free(s->pairs);
     memo_free(&s->mem);
@@ -116,15 +132,43 @@ static void step_free(col_step *s)
 static bool collect_pair(void *user, int a, int b)
 {
     col_step *s = user;
-    // Two convex faces joined by a crease turn about their common line: they cannot pass
-    // through each other.
-    if (col_adjacency_of(s->c, a, b) == COL_ADJ_CREASE) return true;
     ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
     s->pairs[s->npairs].a = a;
     s->pairs[s->npairs].b = b;
+    s->pairs[s->npairs].crease = col_adjacency_of(s->c, a, b) == COL_ADJ_CREASE;
     s->pairs[s->npairs].sa = COL_SIDE_NONE;
     s->npairs++;
     return true;
+}
+
+// Copy the checker's prepared geometry into g.
+static void geom_save(const ori_collider *c, col_geomset *g)
+{
+    memcpy(g->geom, c->geom, sizeof(col_geom) * (size_t)c->face_count);
+    memcpy(g->boxes, c->boxes, sizeof(col_box) * (size_t)c->face_count);
+    g->pos = c->pos;
+    g->tol_pen = c->tol_pen;
+    g->tol_touch = c->tol_touch;
+    g->valid = true;
+}
+
+// Exchange the checker's prepared geometry with g's (pointers only).
+static void geom_swap(ori_collider *c, col_geomset *g)
+{
+    col_geom *gm = c->geom;
+    col_box *bx = c->boxes;
+    const ori_v3 *p = c->pos;
+    double tp = c->tol_pen, tt = c->tol_touch;
+    c->geom = g->geom;
+    c->boxes = g->boxes;
+    c->pos = g->pos;
+    c->tol_pen = g->tol_pen;
+    c->tol_touch = g->tol_touch;
+    g->geom = gm;
+    g->boxes = bx;
+    g->pos = p;
+    g->tol_pen = tp;
+    g->tol_touch = tt;
 }
 
 static ori_contact first_colliding(const ori_collider *c)
@@ -149,30 +193,46 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
 {
     ori_collider *c = s->c;
     *hit = false;
-    ori_status st = col_state_prepare(c, b, error);
-    if (st != ORI_OK) return st;
+    ori_status st;
+    // A's geometry is kept from the previous step (computed here only for the first one).
+    if (!s->a.valid) {
+        if ((st = col_state_prepare(c, a, error)) != ORI_OK) return st;
+        geom_save(c, &s->a);
+    }
+    if ((st = col_state_prepare(c, b, error)) != ORI_OK) return st;
+    // One traversal of the boxes swept from A to B gives both the candidates of B's check (the
+    // pairs whose boxes at B are near) and the pairs whose layer order is compared.
+    int F = c->face_count;
+    double near = c->tol_touch > c->clearance ? c->tol_touch : c->clearance;
+    double margin = near > s->a.tol_touch ? near : s->a.tol_touch;
+    for (int f = 0; f < F; ++f) {
+        const col_box *x = &s->a.boxes[f], *y = &c->boxes[f];
+        col_box *w = &s->swept[f];
+        w->lo.x = x->lo.x < y->lo.x ? x->lo.x : y->lo.x;
+        w->lo.y = x->lo.y < y->lo.y ? x->lo.y : y->lo.y;
+        w->lo.z = x->lo.z < y->lo.z ? x->lo.z : y->lo.z;
+        w->hi.x = x->hi.x > y->hi.x ? x->hi.x : y->hi.x;
+        w->hi.y = x->hi.y > y->hi.y ? x->hi.y : y->hi.y;
+        w->hi.z = x->hi.z > y->hi.z ? x->hi.z : y->hi.z;
+    }
+    s->npairs = 0;
+    col_bvh_build(&s->bvh, s->swept, F);
+    col_bvh_self_pairs(&s->bvh, margin, collect_pair, s);
     ori_collision_result r;
-    col_check_prepared(c, false, &r);
+    col_check_begin(c, &r);
+    for (int i = 0; i < s->npairs; ++i)
+        if (col_box_near(&c->boxes[s->pairs[i].a], &c->boxes[s->pairs[i].b], near))
+            col_check_pair(c, &r, false, s->pairs[i].a, s->pairs[i].b);
+    col_check_end(c, false, &r);
     if (r.collides) {
         *hit = true;
         *contact = first_colliding(c);
         return ORI_OK;
     }
-    // The contacts of b are kept while the layer orders are compared.
-    int F = c->face_count;
-    memcpy(s->box_b, c->boxes, sizeof(col_box) * (size_t)F);
-    if ((st = col_state_prepare(c, a, error)) != ORI_OK) return st;
-    double margin = c->tol_touch;
-    for (int f = 0; f < F; ++f) {
-        const col_box *x = &c->boxes[f], *y = &s->box_b[f];
-        s->swept[f].lo = ori_v3_make(fmin(x->lo.x, y->lo.x), fmin(x->lo.y, y->lo.y), fmin(x->lo.z, y->lo.z));
-        s->swept[f].hi = ori_v3_make(fmax(x->hi.x, y->hi.x), fmax(x->hi.y, y->hi.y), fmax(x->hi.z, y->hi.z));
-    }
-    s->npairs = 0;
-    col_bvh_build(&s->bvh, s->swept, F);
-    col_bvh_self_pairs(&s->bvh, margin, collect_pair, s);
-    for (int i = 0; i < s->npairs; ++i) s->pairs[i].sa = col_face_side(c, s->pairs[i].a, s->pairs[i].b, NULL);
-    if ((st = col_state_prepare(c, b, error)) != ORI_OK) return st;
+    geom_swap(c, &s->a); // the checker at A
+    for (int i = 0; i < s->npairs; ++i)
+        s->pairs[i].sa = s->pairs[i].crease ? COL_SIDE_NONE : col_face_side(c, s->pairs[i].a, s->pairs[i].b, NULL);
+    geom_swap(c, &s->a); // back to B
     memo_clear(&s->next);
     int flip = -1;
     ori_v3 flip_point = ori_v3_make(0.0, 0.0, 0.0);
@@ -205,11 +265,14 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     return ORI_OK;
 }
 
-static void step_advance(col_step *s)
+// The clean state b (the checker is prepared at it, its positions at pos) becomes A.
+static void step_advance(col_step *s, const ori_v3 *pos)
 {
     memo t = s->mem;
     s->mem = s->next;
     s->next = t;
+    geom_save(s->c, &s->a);
+    s->a.pos = pos;
 }
 
 // --- bisection -------------------------------------------------------------------------------
@@ -254,7 +317,7 @@ static ori_status bisect(col_step *s, const col_source *src, ori_v3 *pos_a, ori_
         } else {
             lo = mid;
             memcpy(pos_a, pos_t, sizeof(ori_v3) * (size_t)s->c->vertex_count);
-            step_advance(s);
+            step_advance(s, pos_a);
             src->commit(src->user);
         }
     }
@@ -306,6 +369,7 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
         ori_collision_result r;
         if (st == ORI_OK) {
             col_check_prepared(c, false, &r);
+            geom_save(c, &s.a);
             if (r.collides) {
                 out->collides = true;
                 out->frame = 0;
@@ -326,10 +390,10 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
         st = step_check(&s, pa, pb, &hit, &contact, error);
         if (st != ORI_OK) break;
         if (!hit) {
-            step_advance(&s);
             ori_v3 *t = pa;
             pa = pb;
             pb = t;
+            step_advance(&s, pa);
             continue;
         }
         double x0 = fr->param(fr->src, k - 1), x1 = fr->param(fr->src, k), d1 = fr->drive(fr->src, k);
