@@ -199,7 +199,7 @@ ori_status ori_collider_cloud(ori_collider *c, const ori_v3 *positions, const or
         s[i].cell[1] = (int64_t)floor(s[i].p.y / dist);
         s[i].cell[2] = (int64_t)floor(s[i].p.z / dist);
     }
-    qsort(s, (size_t)n, sizeof(sample), cmp_sample);
+    if (n > 1) qsort(s, (size_t)n, sizeof(sample), cmp_sample);
     out->points = n;
     pair_map map = {NULL, NULL, 0, 0};
     // cell runs: for every sample, the samples of the 27 cells around it that sort after it
@@ -238,7 +238,7 @@ ori_status ori_collider_cloud(ori_collider *c, const ori_v3 *positions, const or
     ori__free(map.key);
     ori__free(map.idx);
     ori__free(s);
-    qsort(c->cloud_pairs, (size_t)c->cloud_pair_count, sizeof(ori_cloud_pair), cmp_pair);
+    if (c->cloud_pair_count > 1) qsort(c->cloud_pairs, (size_t)c->cloud_pair_count, sizeof(ori_cloud_pair), cmp_pair);
     out->face_pairs = c->cloud_pair_count;
     return ORI_OK;
 }

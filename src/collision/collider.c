@@ -187,7 +187,7 @@ ori_status ori_collider_create(const ori_collider_def *def, ori_collider **out, 
             for (int j = vf_off[v]; j < vf_off[v + 1]; ++j)
                 if (vf[j] != f) ORI__PUSH(c->adj, adj_n, adj_cap, vf[j]);
         }
-        qsort(c->adj + start, (size_t)(adj_n - start), sizeof(int), cmp_int);
+        if (adj_n - start > 1) qsort(c->adj + start, (size_t)(adj_n - start), sizeof(int), cmp_int);
         int w = start;
         for (int k = start; k < adj_n; ++k)
             if (k == start || c->adj[k] != c->adj[k - 1]) c->adj[w++] = c->adj[k];
@@ -494,7 +494,7 @@ void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_resu
 
 void col_check_end(ori_collider *c, bool want_clearance, ori_collision_result *out)
 {
-    qsort(c->contacts, (size_t)c->contact_count, sizeof(ori_contact), cmp_contact);
+    if (c->contact_count > 1) qsort(c->contacts, (size_t)c->contact_count, sizeof(ori_contact), cmp_contact);
     c->distance_bound = 0.0;
     if (want_clearance && out->min_clearance > 0.0) {
         nearest_user nu = {c, out};
