@@ -99,7 +99,8 @@ typedef struct col_step {
     struct tracked {
         int a, b;
         bool crease;  // two convex faces joined by a crease: they turn about its line and cannot pass through each other
-        col_side sa;  // side of a relative to b's front at the clean state
+        col_side sa;  // side of a relative to b's front at the clean state (NONE when not needed)
+        col_side qb;  // side at B from a's vertices alone (col_face_side_quick)
     } *pairs;
     int npairs, pair_cap;
     memo mem, next;  // orders at the clean state A, and at B when B is clean
@@ -229,9 +230,20 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         *contact = first_colliding(c);
         return ORI_OK;
     }
-    geom_swap(c, &s->a); // the checker at A
+    // Sides from the vertices alone first: a face whose vertices all lie strictly on the same
+    // side of the other's plane at both ends of the step cannot have changed sides, nor be
+    // stacked; only the other pairs need the overlap.
     for (int i = 0; i < s->npairs; ++i)
-        s->pairs[i].sa = s->pairs[i].crease ? COL_SIDE_NONE : col_face_side(c, s->pairs[i].a, s->pairs[i].b, NULL);
+        s->pairs[i].qb = s->pairs[i].crease ? COL_SIDE_NONE : col_face_side_quick(c, s->pairs[i].a, s->pairs[i].b);
+    geom_swap(c, &s->a); // the checker at A
+    for (int i = 0; i < s->npairs; ++i) {
+        struct tracked *t = &s->pairs[i];
+        t->sa = COL_SIDE_NONE;
+        if (t->crease) continue;
+        col_side qa = col_face_side_quick(c, t->a, t->b);
+        if ((qa == COL_SIDE_ABOVE || qa == COL_SIDE_BELOW) && qa == t->qb) continue;
+        t->sa = col_face_side(c, t->a, t->b, NULL);
+    }
     geom_swap(c, &s->a); // back to B
     memo_clear(&s->next);
     int flip = -1;
@@ -239,9 +251,8 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     for (int i = 0; i < s->npairs; ++i) {
         uint64_t key = ori__pair_key(s->pairs[i].a, s->pairs[i].b);
         col_side was = s->pairs[i].sa == COL_SIDE_FLAT ? memo_get(&s->mem, key) : s->pairs[i].sa;
-        if (was != COL_SIDE_ABOVE && was != COL_SIDE_BELOW) {
-            continue;
-        }
+        if (was != COL_SIDE_ABOVE && was != COL_SIDE_BELOW) continue;
+        if (s->pairs[i].qb == was) continue; // still strictly on that side: no flip, not stacked
         ori_v3 p;
         col_side now = col_face_side(c, s->pairs[i].a, s->pairs[i].b, &p);
         if (now == COL_SIDE_FLAT) memo_put(&s->next, key, (unsigned char)was);

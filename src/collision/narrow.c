@@ -361,7 +361,8 @@ static void overlap(ori_collider *c, int a, const ori_v2 *a2, int b, const ori_v
                 area2 += cr;
                 cx += (p.x + q.x) * cr;
                 cy += (p.y + q.y) * cr;
-                per += ori_v2_norm(ori_v2_sub(q, p));
+                ori_v2 e = ori_v2_sub(q, p);
+                per += sqrt(ori_v2_dot(e, e));
             }
             if (!(area2 > 0.0) || !(per > 0.0)) continue;
             double width = area2 / per; // 2·(area2/2)/per
@@ -379,6 +380,24 @@ static void overlap(ori_collider *c, int a, const ori_v2 *a2, int b, const ori_v
                 o->centroid = ori_v2_make(cx / (3.0 * area2), cy / (3.0 * area2));
             }
         }
+}
+
+col_side col_face_side_quick(const ori_collider *c, int a, int b)
+{
+    const col_geom *gb = &c->geom[b];
+    const int *fv = c->face_verts + c->face_off[a];
+    int n = face_size(c, a);
+    bool pos = false, neg = false, on = false;
+    for (int i = 0; i < n; ++i) {
+        double h = ori_v3_dot(gb->n, c->pos[fv[i]]) - gb->d;
+        if (h > c->tol_pen) pos = true;
+        else if (h < -c->tol_pen) neg = true;
+        else on = true;
+    }
+    if (pos && !neg && !on) return COL_SIDE_ABOVE;
+    if (neg && !pos && !on) return COL_SIDE_BELOW;
+    if (on && !pos && !neg) return COL_SIDE_FLAT;
+    return COL_SIDE_MIXED;
 }
 
 col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point)
