@@ -98,7 +98,7 @@ typedef struct col_step {
     col_box *swept;
     struct tracked {
         int a, b;
-        bool crease;  // two convex faces joined by a crease: they turn about its line and cannot pass through each other
+        bool crease;  // convex faces joined by a crease: they turn about its line, never through each other
         col_side sa;  // side of a relative to b's front at the clean state (NONE when not needed)
         col_side qb;  // side at B from a's vertices alone (col_face_side_quick)
     } *pairs;
@@ -257,7 +257,10 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         col_side now = col_face_side(c, s->pairs[i].a, s->pairs[i].b, &p);
         if (now == COL_SIDE_FLAT) memo_put(&s->next, key, (unsigned char)was);
         bool flipped = (was == COL_SIDE_ABOVE && now == COL_SIDE_BELOW) || (was == COL_SIDE_BELOW && now == COL_SIDE_ABOVE);
-        if (flipped && (flip < 0 || s->pairs[i].a < s->pairs[flip].a || (s->pairs[i].a == s->pairs[flip].a && s->pairs[i].b < s->pairs[flip].b))) {
+        // report the first flipped pair in (face_a, face_b) order
+        bool first = flip < 0 || s->pairs[i].a < s->pairs[flip].a ||
+                     (s->pairs[i].a == s->pairs[flip].a && s->pairs[i].b < s->pairs[flip].b);
+        if (flipped && first) {
             flip = i;
             flip_point = p;
         }
