@@ -156,7 +156,8 @@
 
 /// Faces penetrate when they cross each other along a segment longer than this × the
 /// diagonal, and a vertex within this of the other face's plane lies on it (it touches, it does
-/// not cross). Small, so that the first contact of a motion is located to well below 1e-6°.
+/// not cross); along a motion, a face is above or below another when it lies beyond this from
+/// its plane. Small, so that the first contact of a motion is located to well below 1e-6°.
 /// Unitless (relative length).
 #define ORI_TOL_PENETRATION_REL 1e-9
 
