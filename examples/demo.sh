@@ -57,6 +57,23 @@ run 0 mv-count 100 70 50 40 30 70 --list
 run 0 check examples/patterns/degree4-vertex.fold
 run 1 check examples/patterns/non-flat-foldable-vertex.fold
 
+# --- self-collision (docs/collision.md) --------------------------------------------------------
+step "6. Self-collision along the motion: the open corner folds clean, two flaps collide"
+echo "(every fold and sequence is checked by default; the first contact is located to 1e-6 deg)"
+run 0 sequence examples/open-corner.seq.json --json >"$OUT/open-corner-sequence.json"
+grep -o '"verdict":"valid"' "$OUT/open-corner-sequence.json" >/dev/null || {
+    echo "demo: the open corner's sequence should be clean" >&2
+    failed=1
+}
+echo "(open corner: verdict valid, \"collision\": null in $OUT/open-corner-sequence.json)"
+echo
+run 1 sequence examples/two-flaps.seq.json
+run 1 fold examples/patterns/two-flaps.fold --frame 1 --fix 1 --drive 8 --lock 7 --to 180 --json \
+    >"$OUT/two-flaps-fold.json"
+grep -o '"collision":{[^}]*}' "$OUT/two-flaps-fold.json" || failed=1
+echo
+run 1 collide tests/data/collide-flaps-crossing.fold
+
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1
