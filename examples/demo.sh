@@ -65,6 +65,22 @@ run 0 export examples/open-corner.seq.json --animate -o "$OUT/open-corner.glb"
 echo "The folded corner cube: $OUT/corner-cube.png (picture) and $OUT/corner-cube.svg (vector);"
 echo "the two folds: $OUT/open-corner.gif (animation) and $OUT/open-corner.glb (glTF, one node per face)."
 echo
+# --- self-collision (docs/collision.md) --------------------------------------------------------
+step "7. Self-collision along the motion: the open corner folds clean, two flaps collide"
+echo "(every fold and sequence is checked by default; the first contact is located to 1e-6 deg)"
+run 0 sequence examples/open-corner.seq.json --json >"$OUT/open-corner-sequence.json"
+grep -o '"verdict":"valid"' "$OUT/open-corner-sequence.json" >/dev/null || {
+    echo "demo: the open corner's sequence should be clean" >&2
+    failed=1
+}
+echo "(open corner: verdict valid, \"collision\": null in $OUT/open-corner-sequence.json)"
+echo
+run 1 sequence examples/two-flaps.seq.json
+run 1 fold examples/patterns/two-flaps.fold --frame 1 --fix 1 --drive 8 --lock 7 --to 180 --json \
+    >"$OUT/two-flaps-fold.json"
+grep -o '"collision":{[^}]*}' "$OUT/two-flaps-fold.json" || failed=1
+echo
+run 1 collide tests/data/collide-flaps-crossing.fold
 
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2

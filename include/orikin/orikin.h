@@ -7,6 +7,7 @@
 #include "axioms.h"
 #include "base.h"
 #include "collection.h"
+#include "collision.h"
 #include "flat.h"
 #include "fold.h"
 #include "formats.h"

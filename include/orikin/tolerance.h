@@ -216,5 +216,39 @@
 /// Thick solid: two faces joined by a crease whose normals differ by at most this angle share
 /// their offset points, and belong to one slab (a flat region of the sheet). Radians.
 #define ORI_TOL_MESH_NORMAL_RAD 1e-9
+// --- self-collision (src/collision) -------------------------------------------------------
+
+/// Two faces closer than this × the pattern's diagonal touch (contact, not a collision unless a
+/// clearance is asked for), and two faces each within this of the other's plane are coplanar
+/// layers (stacked when they overlap by a width above it). Coarser than the penetration
+/// tolerance: a state solved near a singular flat fold (±180°) is only accurate to about the
+/// square root of the solver's tolerance, and its layers must still read as touching.
+/// Unitless (relative length).
+#define ORI_TOL_CONTACT_REL 1e-6
+
+/// Faces penetrate when they cross each other along a segment longer than this × the
+/// diagonal, and a vertex within this of the other face's plane lies on it (it touches, it does
+/// not cross); along a motion, a face is above or below another when it lies beyond this from
+/// its plane. Small, so that the first contact of a motion is located to well below 1e-6°.
+/// Unitless (relative length).
+#define ORI_TOL_PENETRATION_REL 1e-9
+
+/// A face whose vertices lie off their best plane by more than this × the diagonal is not
+/// planar: bad input. Admits folded forms written with 6 significant digits (the FOLD
+/// specification's square twist is off by 1.3e-7). Unitless (relative length).
+#define ORI_TOL_FACE_PLANAR_REL 1e-5
+
+/// The penetration and contact tolerances of a state are at least this × its faces' largest
+/// distance from their own planes: a rounded folded form cannot resolve contact more finely
+/// than its rounding, and adjacent faces must not cross at their shared vertices. Unitless.
+#define ORI_COLLISION_PLANAR_SLACK 4.0
+
+/// The first contact along a motion is located by bisection on the drive angle until the
+/// bracket is this narrow: 1e-6 degree. Radians.
+#define ORI_TOL_CONTACT_DRIVE_RAD (1e-6 * 3.14159265358979323846 / 180.0)
+
+/// Two faces whose unit normals have a cross product shorter than this are parallel planes
+/// (their intersection line is not computed; coplanar ones are handled as layers). Unitless.
+#define ORI_COLLISION_PARALLEL_SIN 1e-14
 
 #endif

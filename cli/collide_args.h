@@ -1,0 +1,65 @@
+// Collision checks in the CLI: loading one state for `orikin collide` (a folded form, or a
+// crease pattern posed from its fold angles), and the glue that lets `orikin fold` and
+// `orikin sequence` check their motion (--no-collisions, --clearance D; verdict "collision").
+#ifndef ORI_CLI_COLLIDE_ARGS_H
+#define ORI_CLI_COLLIDE_ARGS_H
+
+#include <orikin/collision.h>
+
+#include "cli.h"
+
+// One state to check: the pattern whose faces are checked and the world vertex positions.
+typedef struct cli_state {
+    ori_fold *doc;
+    ori_pattern *pattern;  // the frame's pattern (faces, vertices)
+    ori_v3 *positions;     // vertex_count entries
+    bool posed;            // a crease pattern posed by forward kinematics (else a folded form)
+    int frame;
+} cli_state;
+
+// Load frame `frame` of FILE as a state: a folded form (3D vertices_coords or foldedForm) as
+// it is, a crease pattern with edges_foldAngle posed by forward kinematics (fixed face 0).
+// Prints a one-line error and returns CLI_EXIT_INPUT on failure, else CLI_EXIT_OK.
+int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s);
+void cli_state_free(cli_state *s);
+
+// The collision options of fold and sequence.
+typedef struct cli_collide_opts {
+    bool skip;           // --no-collisions
+    bool has_clearance;  // --clearance D given
+    double clearance;    // D (length); 0 by default
+    const char *raw;     // the text after --clearance (for the error message)
+} cli_collide_opts;
+
+// If argv[*i] is --no-collisions or --clearance D, consume it (advancing *i past its value) and
+// return 1; return 0 when it is not one of them; on a usage error print it and return -1.
+int cli_collide_option(const char *cmd, int argc, char **argv, int *i, cli_collide_opts *o);
+// Take --no-collisions and --clearance D out of argv (compacting it, *argc updated) into *o.
+// Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after printing the message.
+int cli_collide_strip(const char *cmd, int *argc, char **argv, cli_collide_opts *o);
+
+// The first collision of a checked motion.
+typedef struct cli_collision {
+    bool checked;            // the motion was checked (not --no-collisions)
+    ori_collision_event ev;  // ev.collides: frames 0 … ev.frame − 1 are clean
+} cli_collision;
+
+// Check a solved fold (def as solved) on the mechanism of `flat`. Prints the error and returns
+// its exit code on failure (bad clearance: CLI_EXIT_INPUT), else CLI_EXIT_OK with *out filled.
+int cli_collide_motion(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
+                       const ori_mechanism *m, const ori_motion_def *def, const ori_motion *mo, cli_collision *out);
+// Same for a recorded sequence.
+int cli_collide_record(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
+                       const ori_record *r, cli_collision *out);
+
+// Number of frames to show and write: all of them, or those before the first collision.
+int cli_collide_frames(const cli_collision *c, int frames);
+// True when the motion collides (the verdict is then "collision").
+bool cli_collides(const cli_collision *c);
+// {"fold": k (1-based, with_fold only), "step": s, "drive_deg": x, "faces": [f, g], "point": [x, y, z]}
+// or null when clean or unchecked.
+json_t *cli_collision_json(const cli_collision *c, bool with_fold);
+// One line: "faces 3 and 9 penetrate at step 14, drive 131.810315 deg, at (x, y, z)".
+void cli_collision_describe(const cli_collision *c, bool with_fold, char *buf, size_t size);
+
+#endif
