@@ -74,7 +74,7 @@ static const char *kind_name(ori_contact_kind k)
     return k == ORI_CONTACT_PENETRATING ? "penetrating" : k == ORI_CONTACT_TOUCHING ? "touching" : "near";
 }
 
-static void print_json(const collide_args *a, const cli_state *s, const ori_collider *c, const ori_collision_result *r,
+static void print_json(const collide_args *a, const cli_collide_state *s, const ori_collider *c, const ori_collision_result *r,
                        const ori_cloud_result *cr, double cloud_distance)
 {
     json_t *o = json_object();
@@ -141,7 +141,7 @@ static void list_pairs(const ori_collider *c, ori_contact_kind kind)
     if (n > MAX_LISTED) printf("  (%d more: see --json)\n", n - MAX_LISTED);
 }
 
-static void print_text(const collide_args *a, const cli_state *s, const ori_collider *c, const ori_collision_result *r,
+static void print_text(const collide_args *a, const cli_collide_state *s, const ori_collider *c, const ori_collision_result *r,
                        const ori_cloud_result *cr, double cloud_distance)
 {
     int nf = ori_collider_face_count(c);
@@ -183,8 +183,8 @@ static int run(int argc, char **argv)
         return cli_input_fail("collide", a.path, "--clearance must be a length >= 0, got %s", a.clearance_raw);
     if (a.has_cloud && !(a.spacing > 0.0))
         return cli_input_fail("collide", a.path, "--cloud needs a sample spacing > 0, got %s", a.cloud_raw);
-    cli_state s;
-    rc = cli_state_load("collide", a.path, a.frame, &s);
+    cli_collide_state s;
+    rc = cli_collide_state_load("collide", a.path, a.frame, &s);
     if (rc != CLI_EXIT_OK) return rc;
     ori_collider_def cd = ori_default_collider_def();
     cd.pattern = s.pattern;
@@ -213,7 +213,7 @@ static int run(int argc, char **argv)
         rc = r.collides ? CLI_EXIT_NEGATIVE : CLI_EXIT_OK;
     }
     ori_collider_destroy(c);
-    cli_state_free(&s);
+    cli_collide_state_free(&s);
     return rc;
 }
 

@@ -8,7 +8,7 @@
 
 #include "progress.h"
 
-void cli_state_free(cli_state *s)
+void cli_collide_state_free(cli_collide_state *s)
 {
     ori_pattern_destroy(s->pattern);
     ori_fold_destroy(s->doc);
@@ -16,7 +16,7 @@ void cli_state_free(cli_state *s)
     memset(s, 0, sizeof *s);
 }
 
-int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s)
+int cli_collide_state_load(const char *cmd, const char *path, int frame, cli_collide_state *s)
 {
     memset(s, 0, sizeof *s);
     s->frame = frame;
@@ -24,7 +24,7 @@ int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s)
     if (ori_fold_load_file(path, &s->doc, &err) != ORI_OK) return cli_input_error(cmd, path, &err);
     int frames = ori_fold_frame_count(s->doc);
     if (frame < 0 || frame >= frames) {
-        cli_state_free(s);
+        cli_collide_state_free(s);
         return cli_input_fail(cmd, path, "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
     }
     ori_build_def bd = ori_default_build_def();
@@ -32,7 +32,7 @@ int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s)
     bd.compute_faces = false;
     if (ori_fold_get_pattern(s->doc, frame, &bd, &s->pattern, &err) != ORI_OK) {
         int rc = cli_input_error(cmd, path, &err);
-        cli_state_free(s);
+        cli_collide_state_free(s);
         return rc;
     }
     bool folded = ori_pattern_is_3d(s->pattern) || ori_pattern_is_folded_form(s->pattern) ||
@@ -41,14 +41,14 @@ int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s)
     s->positions = malloc(sizeof(ori_v3) * (size_t)(nv + 1));
     if (folded) {
         if (ori_pattern_face_count(s->pattern) == 0) {
-            cli_state_free(s);
+            cli_collide_state_free(s);
             return cli_input_fail(cmd, path, "faces_vertices: frame %d is a folded form without faces", frame);
         }
         for (int v = 0; v < nv; ++v) s->positions[v] = ori_pattern_vertex(s->pattern, v);
         return CLI_EXIT_OK;
     }
     if (!ori_pattern_has_fold_angles(s->pattern)) {
-        cli_state_free(s);
+        cli_collide_state_free(s);
         return cli_input_fail(cmd, path,
                               "frame %d has neither 3D vertices_coords nor edges_foldAngle: there is no folded state to check",
                               frame);
@@ -59,7 +59,7 @@ int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s)
     s->pattern = NULL;
     if (ori_fold_get_pattern(s->doc, frame, NULL, &s->pattern, &err) != ORI_OK) {
         int rc = cli_input_error(cmd, path, &err);
-        cli_state_free(s);
+        cli_collide_state_free(s);
         return rc;
     }
     ori_mechanism_def md = ori_default_mechanism_def();
@@ -67,7 +67,7 @@ int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s)
     ori_mechanism *m = NULL;
     if (ori_mechanism_create(&md, &m, &err) != ORI_OK) {
         int rc = cli_input_error(cmd, path, &err);
-        cli_state_free(s);
+        cli_collide_state_free(s);
         return rc;
     }
     int ne = ori_pattern_edge_count(s->pattern);
@@ -79,7 +79,7 @@ int cli_state_load(const char *cmd, const char *path, int frame, cli_state *s)
     if (st != ORI_OK) {
         char buf[512];
         ori_error_format(&err, buf, sizeof buf);
-        cli_state_free(s);
+        cli_collide_state_free(s);
         return cli_input_fail(cmd, path, "edges_foldAngle: frame %d cannot be posed: %s", frame, buf);
     }
     s->posed = true;
