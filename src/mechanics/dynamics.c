@@ -71,7 +71,9 @@ typedef struct dyn {
     int nw;
     // assembly
     mech_spd *K;
-    double alpha, mass_diag;
+    double *pen;       // penalty per constraint row (loop rows, then one per coordinate)
+    double *mdiag;     // diagonal of the mass matrix per coordinate
+    double *mfloor;    // the inertia of the panel a crease turns: the scale of coordinates without inertia of their own
     double *lam;       // acceleration multipliers (loop rows), warm-started
     double *jac, *gam, *phi;
     ori_rigid *poses;
@@ -160,7 +162,7 @@ static bool constrained(const dyn *s)
 }
 
 // Kinematics, mass matrix and (with forces) the right-hand side Q − c(θ, θ̇) at (q, v); the
-// hinge moments from the committed fibres. Factors K = M + αΦᵀΦ.
+// hinge moments from the committed fibres. Factors K = M + Φᵀ·diag(pen)·Φ.
 static bool assemble(dyn *s, const double *q, const double *v, bool forces)
 {
     int F = s->F, n = s->n;
@@ -238,6 +240,7 @@ static bool assemble(dyn *s, const double *q, const double *v, bool forces)
     // Mass matrix (composite rigid bodies) plus the constraint penalty.
     ori__spd_zero(s->K);
     double diag = 0.0;
+    for (int c = 0; c < n; ++c) s->mdiag[c] = s->mfloor[c];
     for (int k = 0; k < F; ++k) {
         int f = s->t.order[k], i = s->t.pcol[f];
         if (i < 0) continue;
@@ -247,15 +250,27 @@ static bool assemble(dyn *s, const double *q, const double *v, bool forces)
             if (j < 0) continue;
             double mij = sv6_dot(s->S[a], Fv);
             ori__spd_add(s->K, i, j, mij);
-            if (i == j) diag = fmax(diag, mij);
+            if (i == j) {
+                diag = fmax(diag, mij);
+                s->mdiag[i] = fmax(s->mdiag[i], mij);
+            }
         }
     }
     if (!(diag > 0.0)) return false;
-    s->mass_diag = diag;
-    s->alpha = ORI_DYN_ALM_PENALTY * diag;
+    // The penalty of each loop's rows scales with the lightest crease in it (and a held crease's
+    // with its own inertia): every coordinate sees a penalty ORI_DYN_ALM_PENALTY times its own
+    // inertia or less, so the rounding of the stiff part stays below ORI_DYN_ALM_PENALTY × ε of
+    // the light panels' accelerations, however heavy the rest of the sheet.
     ori__loops_jacobian(&s->L, s->eth, v ? s->erate : NULL, s->jac, s->gam);
     for (int k = 0; k < s->L.count; ++k) {
         int nr = s->L.nrows[k];
+        double lightest = INFINITY;
+        for (int i = s->L.first[k]; i < s->L.first[k] + s->L.size[k]; ++i) {
+            int ci = s->t.col_of_edge[s->L.edge[i]];
+            if (ci >= 0) lightest = fmin(lightest, s->mdiag[ci]);
+        }
+        double wl = ORI_DYN_ALM_PENALTY * (isfinite(lightest) ? lightest : diag);
+        for (int r = 0; r < nr; ++r) s->pen[s->L.row0[k] + r] = wl;
         for (int i = s->L.first[k]; i < s->L.first[k] + s->L.size[k]; ++i) {
             int ci = s->t.col_of_edge[s->L.edge[i]];
             if (ci < 0) continue;
@@ -264,12 +279,14 @@ static bool assemble(dyn *s, const double *q, const double *v, bool forces)
                 if (cj < ci) continue;
                 double dot = 0.0;
                 for (int r = 0; r < nr; ++r) dot += s->jac[6 * (size_t)i + r] * s->jac[6 * (size_t)j + r];
-                ori__spd_add(s->K, ci, cj, s->alpha * dot);
+                ori__spd_add(s->K, ci, cj, wl * dot);
             }
         }
     }
-    for (int c = 0; c < n; ++c)
-        if (s->held[c]) ori__spd_add(s->K, c, c, s->alpha);
+    for (int c = 0; c < n; ++c) {
+        s->pen[s->rows + c] = ORI_DYN_ALM_PENALTY * s->mdiag[c];
+        if (s->held[c]) ori__spd_add(s->K, c, c, s->pen[s->rows + c]);
+    }
     return ori__spd_factor(s->K);
 }
 
@@ -288,14 +305,14 @@ static bool alm(dyn *s, const double *b, const double *g, double *lam, double *x
     if (!constrained(s)) return ori__spd_solve(s->K, b, x);
     double gn = norm_inf(g, mr);
     for (int it = 0; it < ORI_DYN_ALM_MAX; ++it) {
-        for (int k = 0; k < mr; ++k) s->y[k] = s->alpha * g[k] - lam[k];
+        for (int k = 0; k < mr; ++k) s->y[k] = s->pen[k] * g[k] - lam[k];
         phi_tmult(s, s->y, s->tmp);
         for (int c = 0; c < n; ++c) s->tmp[c] += b[c];
         if (!ori__spd_solve(s->K, s->tmp, x)) return false;
         phi_mult(s, x, s->r);
         for (int k = 0; k < mr; ++k) {
             s->r[k] -= g[k];
-            lam[k] += s->alpha * s->r[k];
+            lam[k] += s->pen[k] * s->r[k];
         }
         if (norm_inf(s->r, mr) <= ORI_DYN_ALM_TOL * (gn + norm_inf(x, n))) return true;
     }
@@ -357,15 +374,16 @@ static bool project_position(dyn *s, double *q)
     return false;
 }
 
-// ½ vᵀ M v with M = K − αΦᵀΦ of the last assembly.
+// ½ vᵀ M v with M = K − Φᵀ·diag(pen)·Φ of the last assembly.
 static double kinetic_of(dyn *s, const double *v)
 {
     int n = s->n;
     ori__spd_mult(s->K, v, s->tmp2);
     phi_mult(s, v, s->r);
+    for (int k = 0; k < s->rows + n; ++k) s->r[k] *= s->pen[k];
     phi_tmult(s, s->r, s->y);
     double e = 0.0;
-    for (int c = 0; c < n; ++c) e += v[c] * (s->tmp2[c] - s->alpha * s->y[c]);
+    for (int c = 0; c < n; ++c) e += v[c] * (s->tmp2[c] - s->y[c]);
     return 0.5 * e;
 }
 
@@ -373,12 +391,13 @@ static double kinetic_of(dyn *s, const double *v)
 static bool project_velocity(dyn *s, double *v)
 {
     int n = s->n, mr = s->rows + n;
-    // M v = K v − αΦᵀΦ v.
+    // M v = K v − Φᵀ·diag(pen)·Φ v.
     ori__spd_mult(s->K, v, s->tmp2);
     phi_mult(s, v, s->r);
+    for (int k = 0; k < mr; ++k) s->r[k] *= s->pen[k];
     phi_tmult(s, s->r, s->y);
     double *mv = s->tmp2;
-    for (int c = 0; c < n; ++c) mv[c] -= s->alpha * s->y[c];
+    for (int c = 0; c < n; ++c) mv[c] -= s->y[c];
     double *lam = ori__calloc((size_t)mr + 1, sizeof(double));
     double *mvc = ori__alloc(sizeof(double) * (size_t)(n + 1));
     memcpy(mvc, mv, sizeof(double) * (size_t)n);
@@ -395,7 +414,7 @@ static void dyn_free(dyn *s)
     ori__spd_destroy(s->K);
     ori__loops_free(&s->L);
     ori__tree_free(&s->t);
-    void *ptrs[] = {s->sched_dir, s->stage_wire, s->held, s->held_at, s->lock_first, s->has_sec, s->sec, s->fib, s->damp, s->applied, s->target, s->start, s->stop,
+    void *ptrs[] = {s->pen, s->mdiag, s->mfloor, s->sched_dir, s->stage_wire, s->held, s->held_at, s->lock_first, s->has_sec, s->sec, s->fib, s->damp, s->applied, s->target, s->start, s->stop,
                     s->w, s->lam, s->jac, s->gam, s->phi, s->poses, s->body, s->comp, s->S, s->Vf, s->Af, s->Wf,
                     s->Wext, s->eth, s->erate, s->rhs, s->x, s->y, s->r, s->tmp, s->tmp2, s->zero};
     for (size_t i = 0; i < sizeof ptrs / sizeof ptrs[0]; ++i) ori__free(ptrs[i]);
@@ -454,6 +473,9 @@ static ori_status dyn_init(dyn *s, const ori_simulation_def *def, double *q, dou
     s->w = ori__calloc((size_t)E + 1, sizeof(dyn_wire));
     s->sched_dir = ori__calloc(ORI_SCHEDULE_MAX, sizeof(int));
     s->lam = ori__calloc((size_t)mr + 1, sizeof(double));
+    s->pen = ori__calloc((size_t)mr + 1, sizeof(double));
+    s->mdiag = ori__calloc((size_t)n + 1, sizeof(double));
+    s->mfloor = ori__calloc((size_t)n + 1, sizeof(double));
     s->phi = ori__calloc((size_t)mr + 1, sizeof(double));
     s->gam = ori__calloc((size_t)s->rows + 1, sizeof(double));
     s->zero = ori__calloc((size_t)mr + 1, sizeof(double));
@@ -508,6 +530,7 @@ static ori_status dyn_init(dyn *s, const ori_simulation_def *def, double *q, dou
         int a = d->edge_faces[e][0], b = d->edge_faces[e][1];
         int mover = s->t.depth[a] >= s->t.depth[b] ? a : b;
         double J = panel_inertia_about(d, mover, e);
+        s->mfloor[c] = J;
         double w2 = 0.0;
         if (ori__design_section(d, e, &s->sec[e])) {
             s->has_sec[e] = true;
