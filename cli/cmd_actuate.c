@@ -134,12 +134,15 @@ static void print_text(const act_input *in, const ori_sizing *z)
     for (int i = 0; i < ori_sizing_hinge_count(z); ++i) {
         ori_hinge_sizing h = ori_sizing_hinge(z, i);
         if (!h.actuated) continue;
-        printf("\nhinge %d along the motion:\n%10s %10s %14s %13s %13s %10s %10s %11s\n", h.edge, "drive", "angle",
-               "M/I (N*m/A)", "gravity(N*m)", "needed(N*m)", "I(mA)", "P(mW)", "J(A/m2)");
+        printf("\nhinge %d along the motion (drive: the driven crease and its angle):\n%6s %10s %10s %14s %13s %13s %10s "
+               "%10s %11s\n",
+               h.edge, "crease", "drive", "angle", "M/I (N*m/A)", "gravity(N*m)", "needed(N*m)", "I(mA)", "P(mW)", "J(A/m2)");
         for (int f = 0; f < S; ++f) {
             ori_sizing_step s = ori_sizing_step_at(z, i, f);
-            printf("%10.3f %10.3f %14.5e %13.5e %13.5e %10.4g %10.4g %11.4g\n",
-                   ori_rad_to_deg_output(ori_sizing_frame_drive(z, f, NULL)), ori_rad_to_deg_output(s.angle_rad),
+            int de;
+            double dr = ori_sizing_frame_drive(z, f, &de);
+            printf("%6d %10.3f %10.3f %14.5e %13.5e %13.5e %10.4g %10.4g %11.4g\n", de, ori_rad_to_deg_output(dr),
+                   ori_rad_to_deg_output(s.angle_rad),
                    s.lorentz_moment_per_amp, s.gravity_moment_nm, s.required_moment_nm, 1e3 * s.current_a, 1e3 * s.power_w,
                    s.current_density_a_m2);
         }

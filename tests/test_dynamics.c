@@ -3,6 +3,7 @@
 // damping, the Lorentz work on a free flap, the thesis' fold (time, latching, springback), the
 // open corner with two actuated hinges (residual at every step), stops, and bad input.
 #define _POSIX_C_SOURCE 200809L
+#include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -435,4 +436,78 @@ Test(dynamics, bad_input)
     cr_assert_str_eq(err.field, "orikin:actuation");
     cr_assert_null(s);
     loaded_free(&x);
+}
+
+Test(dynamics, cli_frames_with_frame_time_and_nothing_written_on_error)
+{
+    char *dir = test_tmpdir();
+    char args[1024], *out = NULL;
+    snprintf(args, sizeof args,
+             "simulate examples/patterns/thesis-flap.fold --fix 0 --current 0.02 --duration 0.004 --frames 9 -o '%s/out.fold' "
+             "--json",
+             dir);
+    cr_assert_eq(test_run_cli_split(args, &out, NULL), 0);
+    json_error_t je;
+    json_t *j = json_loads(out, 0, &je);
+    cr_assert_not_null(j, "%s", out);
+    free(out);
+    cr_assert(json_is_number(json_object_get(j, "time_to_target")));
+    cr_assert_eq(json_array_size(json_object_get(j, "latched_angle_deg")), 7);
+    cr_assert(json_is_number(json_object_get(j, "peak_angular_velocity")));
+    cr_assert(json_is_number(json_object_get(j, "energy_drift")));
+    cr_assert(json_real_value(json_object_get(j, "max_residual")) <= ORI_TOL_RESIDUAL);
+    cr_assert_eq(json_array_size(json_object_get(j, "frames")), 9);
+    json_decref(j);
+    // The frames replay: folded forms with frame_time in seconds, the flap turning.
+    char path[1024];
+    snprintf(path, sizeof path, "%s/out.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fold_frame_count(doc), 10);
+    for (int k = 1; k < 10; ++k) {
+        cr_assert(ori_fold_frame_is_folded_form(doc, k));
+        char *t = ori_fold_get_custom(doc, k, "frame_time");
+        cr_assert_not_null(t);
+        cr_assert_lt(fabs(atof(t) - 0.5e-3 * (k - 1)), 1e-15);
+        ori_buffer_free(t);
+        char *c = ori_fold_get_custom(doc, k, "orikin:edges_current");
+        cr_assert_not_null(c);
+        ori_buffer_free(c);
+    }
+    ori_pattern *last = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 9, NULL, &last, &err), ORI_OK, "%s", err.message);
+    cr_assert(ori_pattern_is_3d(last));
+    cr_assert_gt(ori_pattern_edge(last, 0).fold_angle_rad, 90 * DEG);
+    ori_pattern_destroy(last);
+    ori_fold_destroy(doc);
+    // Bad input: a usage error and an input error, and no file.
+    snprintf(args, sizeof args,
+             "simulate examples/patterns/thesis-flap.fold --fix 0 --current 0.02 --duration 0.001 --dt 0.01 -o '%s/bad.fold'", dir);
+    cr_assert_eq(test_run_cli(args, NULL), 2);
+    snprintf(args, sizeof args,
+             "simulate tests/data/actuation/no-panel.fold --fix 0 --current 0.02 --duration 0.001 -o '%s/bad.fold'", dir);
+    cr_assert_eq(test_run_cli(args, NULL), 3);
+    snprintf(path, sizeof path, "%s/bad.fold", dir);
+    FILE *f = fopen(path, "r");
+    cr_assert_null(f, "a failed run wrote %s", path);
+    test_tmpdir_remove(dir);
+}
+
+Test(dynamics, cli_actuate_json_fields)
+{
+    char *out = NULL;
+    cr_assert_eq(test_run_cli_split("actuate examples/patterns/thesis-flap.fold --fix 0 --drive 0 --to 180 --json", &out, NULL), 0);
+    json_t *j = json_loads(out, 0, NULL);
+    cr_assert_not_null(j, "%s", out);
+    free(out);
+    cr_assert(json_is_true(json_object_get(j, "feasible")));
+    json_t *h = json_array_get(json_object_get(j, "hinges"), 0);
+    const char *keys[] = {"edge", "M_y", "M_p", "current_needed", "power_peak", "feasible", "optimal_thickness"};
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; ++i) cr_assert_not_null(json_object_get(h, keys[i]), "%s", keys[i]);
+    cr_assert_lt(fabs(json_number_value(json_object_get(h, "M_p")) - 1.854e-10), 1e-22);
+    json_t *sch = json_object_get(j, "field_schedule");
+    cr_assert_eq(json_array_size(sch), 2);
+    cr_assert_lt(fabs(json_number_value(json_object_get(json_array_get(sch, 1), "from_deg")) - 90.0), 1e-9);
+    json_decref(j);
 }
