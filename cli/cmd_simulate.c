@@ -7,8 +7,6 @@
 #include "actuation_args.h"
 #include "progress.h"
 
-static json_t *num(double x) { return isfinite(x) ? json_real(x) : json_null(); }
-
 static json_t *deg_array(const double *a, int n)
 {
     json_t *j = json_array();
@@ -142,7 +140,6 @@ static void print_json(const act_input *in, const ori_simulation *s, const ori_f
                           "energy", te, "residual", ori_simulation_frame_residual(s, f)));
     }
     json_object_set_new(o, "frames", fr);
-    (void)num;
     cli_print_json(o);
 }
 

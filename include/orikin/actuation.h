@@ -64,7 +64,7 @@ typedef struct ori_material {
 typedef struct ori_materials ori_materials;
 
 /// The built-in table (data/materials.json compiled in: Au from the thesis, Ag, Al, Cr, Cu, Ni,
-/// Pt, Ti, Si, SiO2, Si3N4, SU-8, polyimide, PDMS). Destroy with ori_materials_destroy.
+/// Ti, Si, SiO2, Si3N4, SU-8, polyimide). Destroy with ori_materials_destroy.
 ORI_API ori_materials *ori_materials_create(void);
 /// Destroy a table; NULL is a no-op.
 ORI_API void ori_materials_destroy(ori_materials *table);

@@ -219,4 +219,8 @@
 #define ORI_DYN_SETTLE_PERIODS 40
 #define ORI_DYN_SETTLE_KINETIC 1e-16
 
+/// A simulation keeps at most this many values per history (output frames × edges): about 0.4 GB
+/// for its angles, currents and plastic rotations.
+#define ORI_DYN_MAX_FRAME_VALUES 2e7
+
 #endif

@@ -12,16 +12,17 @@
 //
 // Constraint forces: the accelerations minimise ½(θ̈ − M⁻¹Q)ᵀM(θ̈ − M⁻¹Q) subject to
 // Φ_θ θ̈ = γ (Gauss's principle), solved by an augmented Lagrangian with mass-orthogonal
-// projections (Bayo & García de Jalón): (M + αΦ_θᵀΦ_θ) θ̈ = Q − Φ_θᵀ(λ − αγ), λ ← λ + α(Φ_θθ̈ − γ).
-// It needs no rank decisions, so redundant loop equations (overconstrained patterns such as
-// the Miura-ori) and singular states (the flat sheet) are handled the same way as regular ones.
+// projections (Bayo & García de Jalón): (M + Φ_θᵀWΦ_θ) θ̈ = Q − Φ_θᵀ(λ − Wγ), λ ← λ + W(Φ_θθ̈ − γ),
+// with a penalty W per loop scaled by the inertia of its lightest crease. It needs no rank
+// decisions, so redundant loop equations (overconstrained patterns such as the Miura-ori) and
+// singular states (the flat sheet) are handled the same way as regular ones.
 //
 // Time integration: the implicit midpoint rule, v₁ = v₀ + h·a(θ₀ + h/2·v_m, v_m), θ₁ = θ₀ + h·v_m,
 // solved by fixed-point iteration on the midpoint acceleration. It is symmetric and symplectic
 // on the unconstrained (tree) part: quadratic invariants are kept exactly, so an elastic flap's
 // energy stays constant to rounding, and a constant moment gives θ = ½(M/J)t² exactly. After each
-// step θ₁ is projected onto Φ = 0 (Gauss–Newton in the mass metric, to ORI_DYN_PROJECT_TOL) and
-// v₁ onto the tangent space (mass-orthogonal, which is also the perfectly inelastic impact when a
+// step θ₁ is projected onto Φ = 0 (Gauss–Newton with minimum-norm steps, to ORI_DYN_PROJECT_TOL)
+// and v₁ onto the tangent space (mass-orthogonal, which is also the perfectly inelastic impact when a
 // crease hits its ±180° stop). The loops therefore close at every step to machine precision.
 #include <stdlib.h>
 
@@ -59,14 +60,13 @@ typedef struct dyn {
     bool *has_sec;
     hinge_section *sec;
     hinge_fibres *fib;
-    double *damp, *applied, *target, *start;
+    double *damp, *applied, *target, *start; // start: the closed start state
     // per coordinate: creases held at held_at (a ±180° stop with its sign, or a fold's lock)
     int *stop;
     bool *held;
     double *held_at;
     int *lock_first;   // per stage: its locks in lock_edges[lock_first[k] … lock_first[k+1])
     const int *lock_edges;
-    double *lam_stop_acc;
     dyn_wire *w;
     int nw;
     // assembly
@@ -74,7 +74,7 @@ typedef struct dyn {
     double *pen;       // penalty per constraint row (loop rows, then one per coordinate)
     double *mdiag;     // diagonal of the mass matrix per coordinate
     double *mfloor;    // the inertia of the panel a crease turns: the scale of coordinates without inertia of their own
-    double *lam;       // acceleration multipliers (loop rows), warm-started
+    double *lam;       // multipliers of the last acceleration solve (loop rows, then per coordinate)
     double *jac, *gam, *phi;
     ori_rigid *poses;
     body_inertia *body, *comp;
@@ -85,7 +85,7 @@ typedef struct dyn {
 } dyn;
 
 struct ori_simulation {
-    int E, V, frames, cap;
+    int E, V, frames;
     const ori_mechanism *m;
     int fixed;
     ori_rigid g0;
@@ -940,6 +940,9 @@ ori_status ori_simulation_run(const ori_simulation_def *def, ori_simulation **ou
     if (def->has_damping && !(isfinite(def->damping_ratio) && def->damping_ratio >= 0.0))
         return ori__fail(error, ORI_ERR_RANGE, "the damping ratio must be >= 0");
     if (def->output_frames < 2) return ori__fail(error, ORI_ERR_RANGE, "at least 2 output frames");
+    if ((double)def->output_frames * (double)(E + 1) > ORI_DYN_MAX_FRAME_VALUES)
+        return ori__fail(error, ORI_ERR_LIMIT, "%d frames of %d creases are more than the %g values kept", def->output_frames, E,
+                         (double)ORI_DYN_MAX_FRAME_VALUES);
     if (def->schedule_count < 0 || def->schedule_count > ORI_SCHEDULE_MAX || (def->schedule_count && !def->schedule))
         return ori__fail(error, ORI_ERR_RANGE, "at most %d schedule entries", ORI_SCHEDULE_MAX);
     for (int i = 0; i < def->schedule_count; ++i)

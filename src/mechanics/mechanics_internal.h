@@ -168,8 +168,6 @@ bool ori__spd_factor(mech_spd *s);
 bool ori__spd_solve(mech_spd *s, const double *b, double *x);
 // y = A x for the assembled (not factored) matrix.
 void ori__spd_mult(const mech_spd *s, const double *x, double *y);
-bool ori__spd_is_dense(const mech_spd *s);
-size_t ori__spd_factor_nnz(const mech_spd *s);
 
 // --- min-norm point of a convex hull (sizing.c, exposed for tests) -------------------------------
 // Wolfe's algorithm: the point of conv{p_0 … p_{n−1}} nearest the origin.

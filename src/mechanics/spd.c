@@ -116,14 +116,6 @@ void ori__spd_destroy(mech_spd *s)
     ori__free(s);
 }
 
-bool ori__spd_is_dense(const mech_spd *s) { return s->dense; }
-
-size_t ori__spd_factor_nnz(const mech_spd *s)
-{
-    if (s->dense) return (size_t)s->n * (size_t)(s->n + 1) / 2;
-    return s->L ? (s->L->is_super ? s->L->xsize : s->L->nzmax) : 0;
-}
-
 void ori__spd_zero(mech_spd *s)
 {
     s->factored = false;

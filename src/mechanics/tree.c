@@ -91,7 +91,7 @@ sv6 ori__tree_twist(const mech_tree *t, int f, const ori_rigid *poses, double mp
     const ori_rigid *g = &poses[t->parent[f]];
     ori_v3 w = ori_rigid_apply_dir(*g, J.omega);
     ori_v3 q = ori_v3_scale(ori_rigid_apply(*g, J.q), mpu);
-    sv6 s = sv6_make(ori_v3_scale(ori_v3_cross(q, w), 1.0), w); // v = −ω × q = q × ω
+    sv6 s = sv6_make(ori_v3_cross(q, w), w); // v = −ω × q = q × ω
     return sv6_scale(s, (double)t->psign[f]);
 }
 
