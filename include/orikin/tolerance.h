@@ -171,7 +171,8 @@
 /// point improves the distance by more than this × the largest point norm squared. Unitless.
 #define ORI_ACT_MINNORM_TOL 1e-13
 
-/// Optimal hinge thickness: golden-section search to this relative width of the bracket.
+/// Optimal hinge thickness and the width range: golden-section search and bisection to this
+/// relative width of the bracket. Unitless.
 #define ORI_ACT_THICKNESS_TOL 1e-10
 
 /// Linear systems with at most this many unknowns use dense LAPACK (Cholesky); larger ones

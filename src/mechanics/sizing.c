@@ -483,6 +483,7 @@ static int segment_points(const sz_ctx *c, int f0, int f1, ori_v3 *out)
     int k = 0;
     for (int w = 0; w < c->W; ++w) {
         int h = c->wh[w];
+        if (!c->sigma[w]) continue; // left out (choosing polarities one wire at a time)
         for (int f = f0; f <= f1; ++f) {
             double R = required(c, h, f, c->sec[h].m_p);
             if (fabs(R) <= ORI_ACT_RATE_MIN * c->sec[h].m_p) continue;
