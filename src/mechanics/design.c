@@ -145,7 +145,9 @@ static bool segments_of(const ori_design *d, int edge, const ori_hinge *h, int f
     out->a[0] = h1, out->b[0] = w1; // out along the panel
     out->a[1] = w1, out->b[1] = w2; // the wire, along the edge direction
     out->a[2] = w2, out->b[2] = h2; // back to the hinge
+    out->a[3] = h2, out->b[3] = h1; // closing along the crease, on the other face
     out->turns = h->wire.turns;
+    out->other = face == d->edge_faces[edge][0] ? d->edge_faces[edge][1] : d->edge_faces[edge][0];
     return in_face(d, face, ori_v3_add(mid, lev));
 }
 
@@ -155,12 +157,12 @@ bool ori__wire_segments(const ori_design *d, int edge, int face, wire_segments *
     return segments_of(d, edge, &d->hinges[edge], face, out);
 }
 
-void ori__wire_wrench(const ori_design *d, const wire_segments *w, ori_rigid g, double current_a, ori_v3 field_t,
-                      ori_v3 *force, ori_v3 *moment)
+void ori__wire_wrench(const ori_design *d, const wire_segments *w, int first, int last, ori_rigid g, double current_a,
+                      ori_v3 field_t, ori_v3 *force, ori_v3 *moment)
 {
     double mpu = d->meters_per_unit;
     ori_v3 f = ori_v3_make(0, 0, 0), m = ori_v3_make(0, 0, 0);
-    for (int s = 0; s < 3; ++s) {
+    for (int s = first; s < last; ++s) {
         ori_v3 a = ori_v3_scale(ori_rigid_apply(g, w->a[s]), mpu), b = ori_v3_scale(ori_rigid_apply(g, w->b[s]), mpu);
         ori_v3 fs = ori_v3_scale(ori_v3_cross(ori_v3_sub(b, a), field_t), (double)w->turns * current_a);
         ori_v3 p = ori_v3_scale(ori_v3_add(a, b), 0.5);
@@ -713,7 +715,7 @@ double ori__wire_moment(const ori_design *d, int e, int f, const ori_rigid *pose
     wire_segments w;
     ori__wire_segments(d, e, f, &w);
     ori_v3 force, moment;
-    ori__wire_wrench(d, &w, poses[f], current_a, field_t, &force, &moment);
+    ori__wire_wrench(d, &w, 0, 3, poses[f], current_a, field_t, &force, &moment);
     double mpu = d->meters_per_unit;
     ori_v3 v0 = d->vertices[d->edges[e][0]], v1 = d->vertices[d->edges[e][1]];
     ori_v3 q = ori_v3_scale(ori_rigid_apply(poses[f], v0), mpu);

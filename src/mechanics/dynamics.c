@@ -198,10 +198,16 @@ static bool assemble(dyn *s, const double *q, const double *v, bool forces)
         const dyn_wire *w = &s->w[i];
         if (!w->on || w->current == 0.0) continue;
         ori_v3 f, mo;
-        ori__wire_wrench(s->d, &w->seg, s->poses[w->face], w->current, s->field, &f, &mo);
+        ori__wire_wrench(s->d, &w->seg, 0, 3, s->poses[w->face], w->current, s->field, &f, &mo);
         sv6 W = sv6_make(f, mo);
         s->Wext[w->face] = sv6_add(s->Wext[w->face], W);
         s->power_in += sv6_dot(W, s->Vf[w->face]);
+        // The loop closes along the crease on the other face: no net force on the pair.
+        int o = w->seg.other;
+        ori__wire_wrench(s->d, &w->seg, 3, 4, s->poses[o], w->current, s->field, &f, &mo);
+        W = sv6_make(f, mo);
+        s->Wext[o] = sv6_add(s->Wext[o], W);
+        s->power_in += sv6_dot(W, s->Vf[o]);
     }
     // Composite inertias (children into parents) and the velocity-product wrenches.
     for (int k = F - 1; k >= 0; --k) {

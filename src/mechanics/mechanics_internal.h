@@ -68,18 +68,21 @@ double ori__hinge_plastic_rotation(const hinge_section *s, const hinge_fibres *f
 bool ori__design_section(const ori_design *d, int edge, hinge_section *out);
 
 // --- wire geometry (design.c) -----------------------------------------------------------------
-// The wire loop of an edge on face `face` in the flat frame (pattern units): three segments
-// (leg out from the hinge, the wire along the hinge, leg back), each from a to b in the direction
-// of positive current.
+// The current loop of an edge's wire placed on face `face`, in the flat frame (pattern units),
+// each segment from a to b in the direction of positive current: on the wire's face the leg out
+// from the crease, the wire along it and the leg back (segments 0–2); the loop closes along the
+// crease itself (segment 3: the hinge strips and the leads), on the other face. A closed loop in
+// a uniform field feels no net force, only a moment.
 typedef struct wire_segments {
-    ori_v3 a[3], b[3];
+    ori_v3 a[4], b[4];
     int turns;
+    int other; // the face across the crease, carrying segment 3
 } wire_segments;
 bool ori__wire_segments(const ori_design *d, int edge, int face, wire_segments *out);
-// Lorentz wrench (force, moment about the world origin; SI) of a wire posed by g (pattern units
-// → world pattern units), current I, field B.
-void ori__wire_wrench(const ori_design *d, const wire_segments *w, ori_rigid g, double current_a, ori_v3 field_t,
-                      ori_v3 *force, ori_v3 *moment);
+// Lorentz wrench (force, moment about the world origin; SI) on segments [first, last) posed by g
+// (pattern units → world pattern units), current I, field B.
+void ori__wire_wrench(const ori_design *d, const wire_segments *w, int first, int last, ori_rigid g, double current_a,
+                      ori_v3 field_t, ori_v3 *force, ori_v3 *moment);
 
 // Generalised Lorentz moment (on the fold angle, positive = valley) of edge e's wire on face f.
 double ori__wire_moment(const ori_design *d, int e, int f, const ori_rigid *poses, double current_a, ori_v3 field_t);

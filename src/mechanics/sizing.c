@@ -204,6 +204,7 @@ typedef struct sz_ctx {
     ori_v3 *pvec;
     double *res;       // per frame: plastic + gravity work rate the wires must supply
     double bmag;
+    bool mech_points;  // the segments' points include the mechanism's virtual-work requirement
     int *sigma;        // polarity per wire
     double *A, *G2;    // scratch
 } sz_ctx;
@@ -446,9 +447,10 @@ static ori_status measure(sz_ctx *c, ori_error *error)
             ori__wire_segments(d, e, wf, &ws);
             double pw[3];
             for (int k = 0; k < 3; ++k) {
-                ori_v3 fo, mo;
-                ori__wire_wrench(d, &ws, poses[wf], 1.0, ex[k], &fo, &mo);
-                pw[k] = sv6_dot(sv6_make(fo, mo), V[wf]);
+                ori_v3 fo, mo, fc, mc;
+                ori__wire_wrench(d, &ws, 0, 3, poses[wf], 1.0, ex[k], &fo, &mo);
+                ori__wire_wrench(d, &ws, 3, 4, poses[ws.other], 1.0, ex[k], &fc, &mc);
+                pw[k] = sv6_dot(sv6_make(fo, mo), V[wf]) + sv6_dot(sv6_make(fc, mc), V[ws.other]);
             }
             c->pvec[(size_t)wi * (size_t)S + (size_t)f] = ori_v3_make(pw[0], pw[1], pw[2]);
         }
@@ -477,10 +479,18 @@ static double required(const sz_ctx *c, int h, int f, double m_p)
     return (r > 0 ? m_p : -m_p) - c->grav[i];
 }
 
-// Points a = σ·m/R of the wired hinges over frames [f0, f1] (those with a requirement).
+// Points a = σ·m/R of the wired hinges over frames [f0, f1] (those with a requirement), and of
+// the mechanism: the wires' common power per ampere and tesla over the work rate they must supply.
 static int segment_points(const sz_ctx *c, int f0, int f1, ori_v3 *out)
 {
     int k = 0;
+    if (c->mech_points)
+        for (int f = f0; f <= f1; ++f) {
+            if (!(c->res[f] > 0.0)) continue;
+            ori_v3 p = ori_v3_make(0, 0, 0);
+            for (int w = 0; w < c->W; ++w) p = ori_v3_add(p, ori_v3_scale(c->pvec[(size_t)w * (size_t)c->S + (size_t)f], c->sigma[w]));
+            out[k++] = ori_v3_scale(p, 1.0 / c->res[f]);
+        }
     for (int w = 0; w < c->W; ++w) {
         int h = c->wh[w];
         if (!c->sigma[w]) continue; // left out (choosing polarities one wire at a time)
@@ -825,11 +835,12 @@ ori_status ori_sizing_solve(const ori_sizing_def *def, ori_sizing **out, ori_err
         z->drive_edge[f] = c.fr[f].edge;
     }
     // The field schedule.
-    pts = ori__alloc(sizeof(ori_v3) * ((size_t)c.W * (size_t)S + 1));
+    pts = ori__alloc(sizeof(ori_v3) * ((size_t)(c.W + 1) * (size_t)S + 1));
     ori_schedule_mode mode = def->schedule;
     if (mode == ORI_SCHEDULE_AUTO) mode = a->schedule_count ? ORI_SCHEDULE_DESIGN : ORI_SCHEDULE_OPTIMIZE;
     if (mode == ORI_SCHEDULE_OPTIMIZE) {
         choose_polarity(&c, pts);
+        c.mech_points = true;
         int K = def->reorientations;
         if (K < 0) K = c.fr[S - 1].fold + 1 < ORI_SCHEDULE_MAX ? c.fr[S - 1].fold + 1 : ORI_SCHEDULE_MAX - 1;
         optimize_schedule(&c, K, z, pts);
