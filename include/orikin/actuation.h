@@ -306,7 +306,7 @@ typedef struct ori_hinge_sizing {
 /// One hinge at one frame.
 typedef struct ori_sizing_step {
     double angle_rad;              ///< fold angle
-    double rate;                   ///< dθ/ds along the motion (s = the drive angle)
+    double rate;                   ///< dθ/ds along the motion (s: the driven crease's angle toward its target)
     double lorentz_moment_per_amp; ///< Lorentz moment about the hinge axis per ampere (N·m/A), this frame's field
     double gravity_moment_nm;      ///< gravity moment of the panels beyond the hinge, positive = valley
     double required_moment_nm;     ///< moment the wire must supply where the hinge turns: M_p·sign(rate) − gravity (0 where it does not)
