@@ -167,6 +167,15 @@
 /// radian of drive) and gravity loads it by less than this × M_p.
 #define ORI_ACT_RATE_MIN 1e-9
 
+/// Sizing tangents: the exact tangent of a state (normal equations shifted by
+/// ORI_ACT_TANGENT_SHIFT × their largest diagonal entry) is used when its loop-closure residual
+/// is below ORI_ACT_TANGENT_RESIDUAL (radians per radian of drive) and it makes a cosine of at
+/// least ORI_ACT_TANGENT_AGREE with the finite difference of the recorded states; otherwise
+/// (singular states such as the flat sheet, where it is not unique) the finite difference.
+#define ORI_ACT_TANGENT_SHIFT 1e-9
+#define ORI_ACT_TANGENT_RESIDUAL 1e-6
+#define ORI_ACT_TANGENT_AGREE 0.9
+
 /// Field schedule: the minimum-norm point of a convex hull (Wolfe's algorithm) stops when no
 /// point improves the distance by more than this × the largest point norm squared. Unitless.
 #define ORI_ACT_MINNORM_TOL 1e-13
@@ -190,6 +199,8 @@
 /// ORI_DYN_ALM_PENALTY × machine epsilon): an iteration that stops improving below this × the
 /// velocity scale has converged. Unitless.
 #define ORI_DYN_ITER_STALL 1e-8
+/// … "stops improving": the change shrank by less than this factor over the last iteration.
+#define ORI_DYN_ITER_STALL_RATIO 0.5
 /// Iteration budget per step; a step that does not converge is halved.
 #define ORI_DYN_ITER_MAX 60
 /// A step whose iteration does not converge is halved at most this many times; at the smallest

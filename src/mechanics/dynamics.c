@@ -784,7 +784,8 @@ static bool midpoint_step(dyn *s, dyn_state *x, double h, bool rescue, ori_statu
         }
         diff *= 0.5 * h;
         // Converged, or settled at the rounding level of the constrained solve.
-        if (diff <= ORI_DYN_ITER_TOL * scale || (it >= 2 && diff >= 0.5 * prev && diff <= ORI_DYN_ITER_STALL * scale)) {
+        if (diff <= ORI_DYN_ITER_TOL * scale ||
+            (it >= 2 && diff >= ORI_DYN_ITER_STALL_RATIO * prev && diff <= ORI_DYN_ITER_STALL * scale)) {
             ok = true;
             break;
         }
@@ -989,7 +990,7 @@ ori_status ori_simulation_run(const ori_simulation_def *def, ori_simulation **ou
     int frames = def->output_frames;
     double frame_dt = def->duration_s / (double)(frames - 1);
     double dt = def->has_dt ? def->dt_s : fmin(t_short / ORI_DYN_STEPS_PER_PERIOD, def->duration_s / 100.0);
-    int per = (int)ceil(frame_dt / dt - 1e-9);
+    int per = (int)ceil(frame_dt / dt);
     if (per < 1) per = 1;
     double h = frame_dt / per;
     r = ori__calloc(1, sizeof *r);

@@ -340,7 +340,7 @@ static void tangents(sz_ctx *c, const mech_loops *L, double *tan)
                     }
                 }
             }
-            for (int i = 0; i < n; ++i) ori__spd_add(spd, i, i, ORI_TOL_RANK_REL * (diag > 0 ? diag : 1.0));
+            for (int i = 0; i < n; ++i) ori__spd_add(spd, i, i, ORI_ACT_TANGENT_SHIFT * (diag > 0 ? diag : 1.0));
             if (!ori__spd_factor(spd) || !ori__spd_solve(spd, b, x)) continue;
             // Residual of the tangent equations and agreement with the finite difference.
             for (int k = 0; k < L->rows; ++k) r[k] = 0.0;
@@ -358,8 +358,8 @@ static void tangents(sz_ctx *c, const mech_loops *L, double *tan)
                     nx += x[col[e]] * x[col[e]];
                     nf += fd[e] * fd[e];
                 }
-            bool agree = nf == 0.0 || dot >= 0.9 * sqrt(nx * nf);
-            if (rn <= ORI_TOL_CONSTRUCTION_CHECK_REL && agree)
+            bool agree = nf == 0.0 || dot >= ORI_ACT_TANGENT_AGREE * sqrt(nx * nf);
+            if (rn <= ORI_ACT_TANGENT_RESIDUAL && agree)
                 for (int e = 0; e < E; ++e)
                     if (col[e] >= 0) t[e] = x[col[e]];
         }
