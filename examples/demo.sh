@@ -81,9 +81,20 @@ run 1 fold examples/patterns/two-flaps.fold --frame 1 --fix 1 --drive 8 --lock 7
 grep -o '"collision":{[^}]*}' "$OUT/two-flaps-fold.json" || failed=1
 echo
 run 1 collide tests/data/collide-flaps-crossing.fold
+# --- mech: hinges, Lorentz actuation and folding dynamics (issue 11) ---------------------------
+step "8. Hinges, Lorentz-force actuation and folding dynamics (thesis ch. 2.2.2, 2.3, 5.3)"
+echo "(the thesis' flap: 500 x 500 x 10 um silicon on a 0.6 um gold hinge, 20 mA in 0.1 T)"
+run 0 actuate examples/patterns/thesis-flap.fold --fix 0 --drive 0 --to 180 --step 15
+run 0 simulate examples/patterns/thesis-flap.fold --fix 0 --current 0.02 --duration 0.006 --frames 13 \
+    -o "$OUT/thesis-flap-folding.fold"
+echo "(the open corner with gold hinges, folded as the thesis does: two folds, one wire each)"
+run 0 actuate examples/open-corner-gold.seq.json
+run 0 simulate examples/open-corner-gold.seq.json --current 0.02 --duration 0.012 --damping 0.2 --frames 13 \
+    -o "$OUT/open-corner-gold-folding.fold"
 
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1
 fi
 echo "The folded open corner (every step as a FOLD frame) is in $OUT/open-corner-folded.fold."
+echo "The simulated foldings (frames with frame_time) are in $OUT/thesis-flap-folding.fold and $OUT/open-corner-gold-folding.fold."

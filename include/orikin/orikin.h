@@ -2,6 +2,7 @@
 #ifndef ORIKIN_ORIKIN_H
 #define ORIKIN_ORIKIN_H
 
+#include "actuation.h"
 #include "arrangement.h"
 #include "authoring.h"
 #include "axioms.h"

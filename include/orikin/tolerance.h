@@ -250,5 +250,95 @@
 /// Two faces whose unit normals have a cross product shorter than this are parallel planes
 /// (their intersection line is not computed; coplanar ones are handled as layers). Unitless.
 #define ORI_COLLISION_PARALLEL_SIN 1e-14
+// --- actuation and dynamics (src/mechanics) -----------------------------------------------
+
+/// Fibres through the thickness of an elastoplastic hinge (even). The section's elastic
+/// stiffness and fully plastic moment are exact; the yield transition is within about
+/// 1/ORI_HINGE_LAYERS of the continuum rectangular section.
+#define ORI_HINGE_LAYERS 64
+
+/// Default bending span of a hinge across its crease when the design gives none: this many
+/// hinge thicknesses. Unitless.
+#define ORI_HINGE_SPAN_PER_THICKNESS 20.0
+
+/// Gravity classification of a hinge by gravity moment / M_p: below MINOR it is negligible,
+/// at or above 1 it is decisive (the hinge cannot hold its panels). Unitless.
+#define ORI_ACT_GRAVITY_MINOR 0.1
+
+/// A wire's centre may lie this far (× the pattern diagonal) outside its panel: on its
+/// boundary counts as inside. Unitless.
+#define ORI_ACT_WIRE_INSIDE_REL 1e-9
+
+/// A hinge needs no moment at a frame where it turns slower than this (radians of crease per
+/// radian of drive) and gravity loads it by less than this × M_p.
+#define ORI_ACT_RATE_MIN 1e-9
+
+/// Sizing tangents: the exact tangent of a state (normal equations shifted by
+/// ORI_ACT_TANGENT_SHIFT × their largest diagonal entry) is used when its loop-closure residual
+/// is below ORI_ACT_TANGENT_RESIDUAL (radians per radian of drive) and it makes a cosine of at
+/// least ORI_ACT_TANGENT_AGREE with the finite difference of the recorded states; otherwise
+/// (singular states such as the flat sheet, where it is not unique) the finite difference.
+#define ORI_ACT_TANGENT_SHIFT 1e-9
+#define ORI_ACT_TANGENT_RESIDUAL 1e-6
+#define ORI_ACT_TANGENT_AGREE 0.9
+
+/// Field schedule: the minimum-norm point of a convex hull (Wolfe's algorithm) stops when no
+/// point improves the distance by more than this × the largest point norm squared. Unitless.
+#define ORI_ACT_MINNORM_TOL 1e-13
+
+/// Optimal hinge thickness and the width range: golden-section search and bisection to this
+/// relative width of the bracket. Unitless.
+#define ORI_ACT_THICKNESS_TOL 1e-10
+
+/// Linear systems with at most this many unknowns use dense LAPACK (Cholesky); larger ones
+/// sparse CHOLMOD.
+#define ORI_MECH_DENSE_MAX 64
+
+/// Automatic time step: this many steps per shortest natural period (hinge stiffness or
+/// Lorentz moment against the lightest panel's inertia).
+#define ORI_DYN_STEPS_PER_PERIOD 64
+
+/// Implicit midpoint iteration: converged when the change of the midpoint acceleration moves
+/// the velocity by less than this × (its size + the velocity scale). Unitless.
+#define ORI_DYN_ITER_TOL 1e-14
+/// With constraints the midpoint acceleration is only as exact as the constrained solve (about
+/// ORI_DYN_ALM_PENALTY × machine epsilon): an iteration that stops improving below this × the
+/// velocity scale has converged. Unitless.
+#define ORI_DYN_ITER_STALL 1e-8
+/// … "stops improving": the change shrank by less than this factor over the last iteration.
+#define ORI_DYN_ITER_STALL_RATIO 0.5
+/// Iteration budget per step; a step that does not converge is halved.
+#define ORI_DYN_ITER_MAX 60
+/// A step whose iteration does not converge is halved at most this many times; at the smallest
+/// step the iterate that changed least is taken (explicit midpoint), as at a singular start.
+#define ORI_DYN_MAX_HALVINGS 3
+
+/// Augmented Lagrangian: penalty = this × the largest diagonal entry of the mass matrix, and
+/// the multiplier iteration stops when the constraint residual is below
+/// ORI_DYN_ALM_TOL × (its right-hand side + 1) or after ORI_DYN_ALM_MAX iterations.
+#define ORI_DYN_ALM_PENALTY 1e6
+#define ORI_DYN_ALM_TOL 1e-13
+#define ORI_DYN_ALM_MAX 30
+
+/// Position projection onto the loop-closure manifold after each step: Gauss–Newton until the
+/// constraint residual (rotation vectors, radians) is below this.
+#define ORI_DYN_PROJECT_TOL 1e-14
+#define ORI_DYN_PROJECT_MAX 20
+/// Levenberg shift of that projection's normal equations, relative to their largest diagonal
+/// entry: small enough that the steps are minimum-norm wherever the Jacobian's singular values
+/// exceed 1e-6, large enough to keep the flat sheet's rank-deficient system solvable.
+#define ORI_DYN_PROJECT_SHIFT 1e-12
+
+/// A crease has reached its target (or a stop at ±180°) within this. Radians.
+#define ORI_DYN_TARGET_RAD 1e-9
+
+/// Settling for the latched angles: at most this many of the longest hinge periods, stopping
+/// once the kinetic energy is below ORI_DYN_SETTLE_KINETIC × the largest seen.
+#define ORI_DYN_SETTLE_PERIODS 40
+#define ORI_DYN_SETTLE_KINETIC 1e-16
+
+/// A simulation keeps at most this many values per history (output frames × edges): about 0.4 GB
+/// for its angles, currents and plastic rotations.
+#define ORI_DYN_MAX_FRAME_VALUES 2e7
 
 #endif
