@@ -5,81 +5,7 @@
 #include <stdlib.h>
 
 #include "../pattern/pattern_internal.h"
-#include "import_internal.h"
-
-// --- shared helpers --------------------------------------------------------------------------
-
-void ori__seg_push(ori__seg_list *list, double ax, double ay, double bx, double by, ori_assignment asg,
-                   double fold_angle_rad)
-{
-    if (ax == bx && ay == by) return;
-    ori_segment s;
-    s.a = ori_v2_make(ax, ay == 0.0 ? 0.0 : -ay);
-    s.b = ori_v2_make(bx, by == 0.0 ? 0.0 : -by);
-    s.assignment = asg;
-    s.fold_angle_rad = fold_angle_rad;
-    ORI__PUSH(list->items, list->count, list->cap, s);
-}
-
-size_t ori__scan_number(const char *s, double *out)
-{
-    const char *p = s;
-    if (*p == '+' || *p == '-') ++p;
-    const char *digits = p;
-    while (*p >= '0' && *p <= '9') ++p;
-    bool int_part = p > digits;
-    bool frac_part = false;
-    if (*p == '.') {
-        const char *f = ++p;
-        while (*p >= '0' && *p <= '9') ++p;
-        frac_part = p > f;
-    }
-    if (!int_part && !frac_part) return 0;
-    if (*p == 'e' || *p == 'E') {
-        const char *e = p + 1;
-        if (*e == '+' || *e == '-') ++e;
-        if (*e >= '0' && *e <= '9') {
-            while (*e >= '0' && *e <= '9') ++e;
-            p = e;
-        }
-    }
-    size_t n = (size_t)(p - s);
-    char buf[128];
-    if (n >= sizeof buf) return 0;
-    memcpy(buf, s, n);
-    buf[n] = '\0';
-    double v = strtod(buf, NULL);
-    if (!isfinite(v)) return 0;
-    *out = v;
-    return n;
-}
-
-static void stats_clear(ori_import_stats *stats)
-{
-    if (stats) memset(stats, 0, sizeof *stats);
-}
-
-void ori__reader_begin(ori_segment **segments, int *count, ori_import_stats *stats, ori_error *error)
-{
-    *segments = NULL;
-    *count = 0;
-    stats_clear(stats);
-    ori_error_clear(error);
-}
-
-ori_status ori__reader_end(ori_status st, ori__seg_list *segs, ori_import_stats *found, ori_segment **segments,
-                           int *count, ori_import_stats *stats)
-{
-    if (st != ORI_OK) {
-        ori__free(segs->items);
-        return st;
-    }
-    found->segments = segs->count;
-    if (stats) *stats = *found;
-    *segments = segs->items;
-    *count = segs->count;
-    return ORI_OK;
-}
+#include "reader_internal.h"
 
 // --- formats ---------------------------------------------------------------------------------
 
@@ -126,7 +52,7 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
     *count = 0;
-    stats_clear(stats);
+    if (stats) memset(stats, 0, sizeof *stats);
     if (format == ORI_FORMAT_UNKNOWN) format = ori_format_from_path(path);
     if (format != ORI_FORMAT_SVG && format != ORI_FORMAT_OPX && format != ORI_FORMAT_CP)
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "cannot read segments from a '%s' file", ori_format_name(format));

@@ -8,7 +8,7 @@
 #include <stdio.h>
 
 #include "../pattern/pattern_internal.h"
-#include "import_internal.h"
+#include "reader_internal.h"
 #include "io_internal.h"
 
 // Type code → assignment; false for codes that are skipped (*skip) or invalid.

@@ -10,7 +10,7 @@
 #include <libxml/xmlreader.h>
 #include <stdlib.h>
 
-#include "import_internal.h"
+#include "reader_internal.h"
 
 #define SVG_NS "http://www.w3.org/2000/svg"
 #define MAX_DEPTH 256 // nesting beyond this is refused (stack safety)
@@ -649,74 +649,16 @@ static ori_status element(svg_ctx *c, const xmlNode *n, const frame *parent, fra
 
 // --- entry ----------------------------------------------------------------------------------
 
-// The first XML error (libxml2 keeps only the last one, which is usually a consequence).
-typedef struct xml_first_error {
-    bool set;
-    int line, column;
-    char message[200];
-} xml_first_error;
-
-static void keep_first_error(xml_first_error *first, const xmlError *xe)
-{
-    if (!first || first->set || !xe || xe->level < XML_ERR_ERROR) return;
-    first->set = true;
-    first->line = xe->line;
-    first->column = xe->int2;
-    const char *m = xe->message ? xe->message : "not well-formed XML";
-    trim_copy(first->message, sizeof first->message, m, strlen(m));
-}
-
-static void reader_error(void *user, xmlErrorPtr xe) { keep_first_error(user, xe); }
-
-static void ctxt_error(void *user, xmlErrorPtr xe)
-{
-    xmlParserCtxt *ctxt = user;
-    keep_first_error(ctxt ? ctxt->_private : NULL, xe);
-}
-
-static ori_status xml_error(const xml_first_error *first, ori_error *error)
-{
-    return ori__fail_pos(error, ORI_ERR_PARSE, first->line > 0 ? first->line : 1, first->column > 0 ? first->column : 0,
-                         "XML: %s", first->set ? first->message : "not well-formed XML");
-}
-
-// No network, no entity substitution or DTD loading, errors captured instead of printed.
-#define XML_OPTIONS (XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES)
-
-// The tree parser for small documents (ORIPA files).
-ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error)
-{
-    *doc = NULL;
-    if (size > (size_t)INT32_MAX) return ori__fail(error, ORI_ERR_LIMIT, "the %s file is too large", what);
-    xmlParserCtxt *ctxt = xmlNewParserCtxt();
-    if (!ctxt) return ori__fail(error, ORI_ERR_NOMEM, "cannot create the XML parser");
-    xml_first_error first;
-    memset(&first, 0, sizeof first);
-    ctxt->_private = &first;
-    ctxt->sax->serror = ctxt_error;
-    xmlDoc *d = xmlCtxtReadMemory(ctxt, text, (int)size, NULL, NULL, XML_OPTIONS);
-    ori_status st = ORI_OK;
-    if (!d || !ctxt->wellFormed) {
-        keep_first_error(&first, xmlCtxtGetLastError(ctxt)); // when no callback came
-        st = xml_error(&first, error);
-        if (d) xmlFreeDoc(d);
-        d = NULL;
-    }
-    xmlFreeParserCtxt(ctxt);
-    *doc = d;
-    return st;
-}
-
 // One pass of the streaming reader over the document (the tree of a large drawing would take
 // gigabytes): with styles_only, collect the <style> rules; otherwise read the geometry, each
 // element seeing the state of its parent in frames[depth − 1].
 static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_only)
 {
-    xmlTextReaderPtr r = xmlReaderForMemory(text, (int)size, NULL, NULL, XML_OPTIONS);
+    xmlTextReaderPtr r = xmlReaderForMemory(text, (int)size, NULL, NULL, ORI__XML_OPTIONS);
     if (!r) return ori__fail(c->error, ORI_ERR_NOMEM, "cannot create the XML reader");
-    xml_first_error first;
+    ori__xml_first_error first;
     memset(&first, 0, sizeof first);
-    xmlTextReaderSetStructuredErrorHandler(r, reader_error, &first);
+    xmlTextReaderSetStructuredErrorHandler(r, ori__xml_reader_error, &first);
     frame *frames = ori__alloc(sizeof(frame) * (MAX_DEPTH + 1));
     int skip = -1; // depth of the element whose content is not read
     ori_status st = ORI_OK;
@@ -758,7 +700,7 @@ static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_
         }
         if (!enter && !empty) skip = depth;
     }
-    if (st == ORI_OK && ret < 0) st = xml_error(&first, c->error);
+    if (st == ORI_OK && ret < 0) st = ori__xml_error(&first, c->error);
     xmlFreeTextReader(r);
     ori__free(frames);
     return st;
