@@ -173,11 +173,18 @@ void cli_print_json(json_t *value)
     }
 }
 
+static const char *finishing_command = NULL;
+
+void cli_set_command(const char *cmd) { finishing_command = cmd; }
+
 int cli_finish(int code)
 {
+    errno = 0;
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "orikin: error writing the output\n");
-        return CLI_EXIT_INTERNAL;
+        int e = errno;
+        fprintf(stderr, "orikin%s%s: stdout: cannot write: %s\n", finishing_command ? " " : "",
+                finishing_command ? finishing_command : "", e ? strerror(e) : "output error");
+        return CLI_EXIT_INPUT;
     }
     return code;
 }

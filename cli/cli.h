@@ -68,7 +68,10 @@ int cli_find_face(const char *cmd, const char *file, const ori_pattern *pattern,
 
 // Print a jansson value as JSON (shortest exact numbers) on stdout and release it.
 void cli_print_json(json_t *value);
-// Flush stdout; returns CLI_EXIT_INTERNAL when that fails (full disk, closed pipe), else code.
+// Flush stdout; when that fails (full disk, closed pipe) print "orikin CMD: stdout: cannot
+// write: why" and return CLI_EXIT_INPUT (3, as for a file that cannot be written), else code.
 int cli_finish(int code);
+// The command name cli_finish puts in its message (main sets it before running a command).
+void cli_set_command(const char *cmd);
 
 #endif

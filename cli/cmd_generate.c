@@ -122,10 +122,21 @@ static int run(int argc, char **argv)
         const char *opt = err.field[0] ? option_for_field(err.field) : "";
         return cli_usage("generate", "%s%s%s", opt, *opt ? ": " : "", err.message);
     }
+    if (st == ORI_ERR_LIMIT || st == ORI_ERR_RANGE || st == ORI_ERR_DEGENERATE || st == ORI_ERR_CROSSING ||
+        st == ORI_ERR_DUPLICATE) {
+        // The values given make a pattern orikin cannot hold (coordinates beyond ORI_COORD_MAX,
+        // cells below the length tolerance, too many edges): a usage error naming the options.
+        char buf[512], given[160] = "";
+        for (int o = 0; o < OPT_COUNT; ++o)
+            if (seen[o] && o != OPT_ANGLE)
+                snprintf(given + strlen(given), sizeof given - strlen(given), "%s%s", given[0] ? ", " : "", options[o].name);
+        return cli_usage("generate", "%s%sthese values give no pattern orikin can hold: %s", given,
+                         given[0] ? ": " : "", ori_error_format(&err, buf, sizeof buf));
+    }
     if (st != ORI_OK) {
         char buf[512];
         fprintf(stderr, "orikin generate: %s\n", ori_error_format(&err, buf, sizeof buf));
-        return st == ORI_ERR_LIMIT ? CLI_EXIT_USAGE : CLI_EXIT_INTERNAL;
+        return CLI_EXIT_INTERNAL;
     }
 
     // Written directly (no JSON tree): a 1000 x 1000 Miura-ori costs its text, not gigabytes.

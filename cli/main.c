@@ -44,9 +44,9 @@ static void print_overview(FILE *out)
             "example: orikin check examples/patterns/open-corner.fold\n");
 }
 
-// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ (file size limit): remove the temporary files of outputs being
-// written (the library tracks them, ori_file_remove_temporaries is async-signal-safe), then die
-// of the signal as if unhandled, so that the shell sees the usual status.
+// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ (file size limit): remove the temporary
+// files of outputs being written (the library tracks them; ori_file_remove_temporaries is
+// async-signal-safe), then die of the signal as if unhandled, so the shell sees the usual status.
 static void on_signal(int sig)
 {
     ori_file_remove_temporaries();
@@ -102,6 +102,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "orikin: unknown command '%s'; try 'orikin -h'\n", name);
         return CLI_EXIT_USAGE;
     }
+    cli_set_command(cmd->name);
     for (int i = 2; i < argc; ++i)
         if (cli_is_help(argv[i])) return cli_finish(cli_print_help(cmd));
     return cli_finish(cmd->run(argc - 1, argv + 1));

@@ -69,6 +69,10 @@ ori_status ori__fail_pos(ori_error *error, ori_status status, int line, int colu
 // A coordinate orikin can compute with: finite and at most ORI_COORD_MAX in magnitude.
 static inline bool ori__coord_ok(double x) { return isfinite(x) && fabs(x) <= ORI_COORD_MAX; }
 
+// vsnprintf for library messages (ori__fail*): the same conversions, except that %g without a
+// precision prints a value exactly enough to read back as itself (see status.c).
+void ori__vformat(char *buf, size_t size, const char *fmt, va_list ap);
+
 // Bounded string copy that always terminates.
 void ori__strlcpy(char *dst, const char *src, size_t size);
 
