@@ -1,6 +1,7 @@
 // Status names and messages from the one X-macro table; error records.
 #include "core_internal.h"
 
+#include <float.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -62,8 +63,10 @@ char *ori_error_format(const ori_error *error, char *buf, size_t size)
 // --- messages ----------------------------------------------------------------------------------
 
 // A %g conversion without a precision: as printf writes it when that text reads back as the
-// same double, else with the fewest significant digits (up to 17) that do. A message never
-// shows a value rounded onto the bound it violates ("90° is outside (0°, 90°)").
+// value, else with the fewest significant digits (up to 17) that read back within a few ulps
+// (so that a bound computed in radians still shows as 60°, while 89.9999999 is never shown as
+// 90 and -180.00000000286695 never as -180: a message does not show a value rounded onto the
+// bound it violates).
 static void format_exact_g(char *out, size_t size, const char *spec, size_t spec_len, int width, bool star_width,
                            double x)
 {
@@ -74,7 +77,7 @@ static void format_exact_g(char *out, size_t size, const char *spec, size_t spec
         if (prec > 6) snprintf(f + spec_len - 1, sizeof f - (spec_len - 1), ".%d%c", prec, spec[spec_len - 1]);
         if (star_width) snprintf(out, size, f, width, x);
         else snprintf(out, size, f, x);
-        if (!isfinite(x) || strtod(out, NULL) == x) return;
+        if (!isfinite(x) || fabs(strtod(out, NULL) - x) <= 4.0 * DBL_EPSILON * fabs(x)) return;
     }
 }
 
