@@ -144,4 +144,11 @@
 /// unit axes for vertex loops). The sparse least-squares corrector then takes over.
 #define ORI_KIN_SWEEP_PIVOT_REL 1e-6
 
+// --- files and imports (io) ---------------------------------------------------------------------
+
+/// A fold angle read from a file that lies beyond ±π by at most this is read as ±π: the
+/// rounding of a fully folded state written by orikin (−180.00000000286695°) or another tool.
+/// Beyond it the angle is refused. Radians (files hold degrees: 5.7e-7°).
+#define ORI_TOL_FILE_ANGLE_RAD 1e-8
+
 #endif

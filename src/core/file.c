@@ -22,6 +22,7 @@
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -82,6 +83,76 @@ ori_status ori_file_read_all(const char *path, size_t max_bytes, char **out_data
     *out_data = data;
     if (out_size) *out_size = size;
     return ORI_OK;
+}
+
+// --- memory -----------------------------------------------------------------------------------
+
+// The first number in a small text file (/proc, /sys), or false.
+static bool read_number_file(const char *path, const char *after, uint64_t *out)
+{
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    char buf[4096];
+    ssize_t n = read(fd, buf, sizeof buf - 1);
+    close(fd);
+    if (n <= 0) return false;
+    buf[n] = '\0';
+    const char *p = buf;
+    if (after) {
+        p = strstr(buf, after);
+        if (!p) return false;
+        p += strlen(after);
+    }
+    while (*p == ' ' || *p == '\t') ++p;
+    if (*p < '0' || *p > '9') return false; // e.g. "max": no limit
+    *out = strtoull(p, NULL, 10);
+    return true;
+}
+
+uint64_t ori__memory_available(void)
+{
+    uint64_t best = UINT64_MAX, v, used;
+    if (read_number_file("/proc/meminfo", "MemAvailable:", &v)) best = v * 1024u;
+    // A container's limit (cgroup v2, then v1), less what the group already uses.
+    if (read_number_file("/sys/fs/cgroup/memory.max", NULL, &v)) {
+        if (!read_number_file("/sys/fs/cgroup/memory.current", NULL, &used)) used = 0;
+        v = v > used ? v - used : 0;
+        if (v < best) best = v;
+    } else if (read_number_file("/sys/fs/cgroup/memory/memory.limit_in_bytes", NULL, &v) && v < ((uint64_t)1 << 60)) {
+        if (!read_number_file("/sys/fs/cgroup/memory/memory.usage_in_bytes", NULL, &used)) used = 0;
+        v = v > used ? v - used : 0;
+        if (v < best) best = v;
+    }
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (uint64_t)rl.rlim_cur < best) best = rl.rlim_cur;
+    if (getrlimit(RLIMIT_DATA, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY && (uint64_t)rl.rlim_cur < best) best = rl.rlim_cur;
+    return best;
+}
+
+static void format_bytes(uint64_t b, char *buf, size_t size)
+{
+    if (b >= ((uint64_t)1 << 30)) snprintf(buf, size, "%.1f GB", (double)b / (double)((uint64_t)1 << 30));
+    else if (b >= ((uint64_t)1 << 20)) snprintf(buf, size, "%.1f MB", (double)b / (double)((uint64_t)1 << 20));
+    else snprintf(buf, size, "%llu bytes", (unsigned long long)b);
+}
+
+ori_status ori__file_read_within_memory(const char *path, size_t max_bytes, unsigned bytes_per_byte, char **out_data,
+                                        size_t *out_size, ori_error *error)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISREG(st.st_mode) && (uint64_t)st.st_size <= (uint64_t)max_bytes) {
+        uint64_t need = (uint64_t)st.st_size * bytes_per_byte, have = ori__memory_available();
+        if (need > have) {
+            char a[32], b[32], c[32];
+            format_bytes((uint64_t)st.st_size, a, sizeof a);
+            format_bytes(need, b, sizeof b);
+            format_bytes(have, c, sizeof c);
+            *out_data = NULL;
+            if (out_size) *out_size = 0;
+            return ori__fail(error, ORI_ERR_LIMIT, "this %s file needs about %s of memory to load; %s is available", a, b, c);
+        }
+    }
+    return ori_file_read_all(path, max_bytes, out_data, out_size, error);
 }
 
 // --- writes in progress ------------------------------------------------------------------------
