@@ -415,6 +415,11 @@ Test(formats, cp_lines_and_errors)
     cr_assert_eq(n, 3);
     assert_seg(&s[2], 10, 0, 0, -15, ORI_ASSIGN_VALLEY, ORI_PI);
     ori_buffer_free(s);
+    // A UTF-8 byte-order mark (Windows editors) is not part of the first line.
+    const char *bom = "\xEF\xBB\xBF" "2 0 0 1 1\n";
+    cr_assert_eq(ori_cp_read_segments(bom, strlen(bom), &s, &n, NULL, &err), ORI_OK);
+    cr_assert_eq(n, 1);
+    ori_buffer_free(s);
     static const struct {
         const char *text;
         int line;
@@ -713,4 +718,148 @@ Test(formats, cli_convert_writes_nothing_on_bad_input)
     cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 3);
     ori_pattern_destroy(p);
     test_tmpdir_remove(dir);
+}
+
+// Islands (parts of a drawing inside a face of another part) against a brute-force reference:
+// random axis-aligned squares, some nested, some side by side, some touching a vertex of another
+// straight above their leftmost corner (the ray of the check passes through a vertex). The import
+// must fail exactly when some square's corner lies strictly inside another square.
+static void square_segments(ori_segment *s, double x, double y, double d)
+{
+    ori_v2 c[4] = {{x, y}, {x + d, y}, {x + d, y + d}, {x, y + d}};
+    for (int k = 0; k < 4; ++k) {
+        s[k].a = c[k];
+        s[k].b = c[(k + 1) % 4];
+        s[k].assignment = ORI_ASSIGN_BOUNDARY;
+        s[k].fold_angle_rad = 0.0;
+    }
+}
+
+Test(formats, islands_inside_faces_are_found_exactly)
+{
+    unsigned seed = 99;
+    int outcomes[2] = {0, 0};
+    for (int trial = 0; trial < 200; ++trial) {
+        int n = 2 + trial % 6;
+        double sq[8][3];
+        ori_segment segs[32];
+        for (int i = 0; i < n; ++i) {
+            for (int attempt = 0;; ++attempt) { // squares whose outlines do not meet (so each is its own part)
+                cr_assert_lt(attempt, 100000);
+                seed = seed * 1664525u + 1013904223u;
+                double x = (double)(seed >> 24 & 15), d = 1 + (double)(seed >> 20 & 7);
+                double y = (double)(seed >> 12 & 15);
+                if (trial % 3 == 0 && i == 1) x = sq[0][0], y = sq[0][1] + sq[0][2] + 1; // straight above: same x
+                bool ok = true;
+                for (int j = 0; j < i && ok; ++j) {
+                    // outlines meet when the boxes overlap without one being strictly inside the other
+                    double ax0 = x, ax1 = x + d, ay0 = y, ay1 = y + d, bx0 = sq[j][0], bx1 = sq[j][0] + sq[j][2];
+                    double by0 = sq[j][1], by1 = sq[j][1] + sq[j][2];
+                    bool apart = ax1 < bx0 || bx1 < ax0 || ay1 < by0 || by1 < ay0;
+                    bool a_in_b = ax0 > bx0 && ax1 < bx1 && ay0 > by0 && ay1 < by1;
+                    bool b_in_a = bx0 > ax0 && bx1 < ax1 && by0 > ay0 && by1 < ay1;
+                    ok = apart || a_in_b || b_in_a;
+                }
+                if (ok) {
+                    sq[i][0] = x, sq[i][1] = y, sq[i][2] = d;
+                    break;
+                }
+            }
+            square_segments(segs + 4 * i, sq[i][0], sq[i][1], sq[i][2]);
+        }
+        bool nested = false;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                nested = nested || (i != j && sq[i][0] > sq[j][0] && sq[i][0] < sq[j][0] + sq[j][2] && sq[i][1] > sq[j][1] &&
+                                    sq[i][1] < sq[j][1] + sq[j][2]);
+        ori_import_def def = ori_default_import_def();
+        def.remove_holes = false; // (a square inside a square would otherwise make it a hole)
+        ori_pattern *p = NULL;
+        ori_error err;
+        char msg[300];
+        ori_status st = ori_segments_to_pattern(segs, 4 * n, &def, &p, &err);
+        cr_assert_eq(st, nested ? ORI_ERR_TOPOLOGY : ORI_OK, "trial %d (%d squares): %s", trial, n,
+                     ori_error_format(&err, msg, sizeof msg));
+        outcomes[nested]++;
+        ori_pattern_destroy(p);
+    }
+    cr_assert_gt(outcomes[0], 30, "%d without islands", outcomes[0]);
+    cr_assert_gt(outcomes[1], 30, "%d with islands", outcomes[1]);
+}
+
+// Entity references are expanded by orikin within a budget: entities that expand to more than
+// 8 times the file (plus 1 MB) are refused with a clear error, never expanded at length; ordinary
+// entities (Illustrator writes some) and a byte-order mark work.
+Test(formats, svg_entities_expand_within_a_budget)
+{
+    const char *ok = "\xEF\xBB\xBF<?xml version=\"1.0\"?>\n<!DOCTYPE svg [<!ENTITY red \"#ff0000\"><!ENTITY two \"&red;\">\n"
+                     "<!ENTITY css \".v { stroke: #0000ff }\">]>\n"
+                     "<svg xmlns=\"http://www.w3.org/2000/svg\"><style>&css;</style>\n"
+                     "<line x1=\"0\" y1=\"0\" x2=\"1\" y2=\"0\" stroke=\"&two;\"/>\n"
+                     "<line class=\"v\" x1=\"0\" y1=\"1\" x2=\"1\" y2=\"1\"/></svg>\n";
+    ori_segment *s = NULL;
+    int n = 0;
+    ori_error err;
+    char msg[300];
+    cr_assert_eq(ori_svg_read_segments(ok, strlen(ok), &s, &n, NULL, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    cr_assert_eq(n, 2);
+    cr_assert_eq(s[0].assignment, ORI_ASSIGN_MOUNTAIN);
+    cr_assert_eq(s[1].assignment, ORI_ASSIGN_VALLEY);
+    ori_buffer_free(s);
+    // 1000-character entity (below libxml2's own limits) read by 2 attributes of 4000 lines:
+    // 8 MB of expansion from a 340 KB file.
+    size_t cap = 400000, len = 0;
+    char *big = malloc(cap);
+    len += (size_t)snprintf(big + len, cap - len, "<!DOCTYPE svg [<!ENTITY a \"xxxxxxxxxx\"><!ENTITY b \"");
+    for (int i = 0; i < 10; ++i) len += (size_t)snprintf(big + len, cap - len, "&a;");
+    len += (size_t)snprintf(big + len, cap - len, "\"><!ENTITY c \"");
+    for (int i = 0; i < 10; ++i) len += (size_t)snprintf(big + len, cap - len, "&b;");
+    len += (size_t)snprintf(big + len, cap - len, "\">]>\n<svg xmlns=\"http://www.w3.org/2000/svg\"><style>.q{}</style>\n");
+    for (int i = 0; i < 4000; ++i)
+        len += (size_t)snprintf(big + len, cap - len,
+                                "<line x1=\"0\" y1=\"%d\" x2=\"1\" y2=\"%d\" stroke=\"#f00\" class=\"&c;\" style=\"&c;\"/>\n", i, i);
+    len += (size_t)snprintf(big + len, cap - len, "</svg>\n");
+    ori_status st = ori_svg_read_segments(big, len, &s, &n, NULL, &err);
+    if (st == ORI_ERR_PARSE) { // (libxml2 versions that count attribute expansion refuse it themselves)
+        cr_assert(strstr(err.message, "entity"), "%s", err.message);
+    } else {
+        cr_assert_eq(st, ORI_ERR_LIMIT, "%s", ori_error_format(&err, msg, sizeof msg));
+        cr_assert(strstr(err.message, "entity references expand to more than 8 times the file's size"), "%s", err.message);
+        cr_assert_gt(err.line, 1);
+    }
+    ori_buffer_free(s);
+    cr_assert_null(s);
+    free(big);
+}
+
+// The style cascade: tag rules, then .class and tag.class rules in file order (later wins, for
+// each property separately), then style=""; an opacity that does not parse overrides nothing.
+Test(formats, svg_style_cascade_order)
+{
+    const char *text = "<svg xmlns=\"http://www.w3.org/2000/svg\"><style>\n"
+                       "line { stroke: #000000 }\n"
+                       ".a { stroke: #ff0000; stroke-opacity: 0.5 }\n"
+                       "line.b { stroke: #0000ff }\n"
+                       ".c { stroke-opacity: bogus }\n"
+                       ".a { stroke-opacity: 0.25 }\n"
+                       "</style>\n"
+                       "<line x1=\"0\" y1=\"0\" x2=\"1\" y2=\"0\"/>\n"                                 // B (tag rule)
+                       "<line class=\"a\" x1=\"0\" y1=\"1\" x2=\"1\" y2=\"1\"/>\n"                     // M at 0.25
+                       "<line class=\"a b\" x1=\"0\" y1=\"2\" x2=\"1\" y2=\"2\"/>\n"                   // V (later), 0.25
+                       "<line class=\"b a c\" x1=\"0\" y1=\"3\" x2=\"1\" y2=\"3\"/>\n"                 // same: order is the sheet's
+                       "<line class=\"a\" style=\"stroke:#0000ff\" x1=\"0\" y1=\"4\" x2=\"1\" y2=\"4\"/>\n" // V (style="")
+                       "<path class=\"b\" d=\"M0 5 L1 5\"/>\n"                                          // no stroke: ignored
+                       "</svg>\n";
+    ori_segment *s = NULL;
+    int n = 0;
+    ori_error err;
+    cr_assert_eq(ori_svg_read_segments(text, strlen(text), &s, &n, NULL, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 5);
+    ori_assignment want[5] = {ORI_ASSIGN_BOUNDARY, ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_VALLEY, ORI_ASSIGN_VALLEY, ORI_ASSIGN_VALLEY};
+    double angle[5] = {0, -0.25 * ORI_PI, 0.25 * ORI_PI, 0.25 * ORI_PI, 0.25 * ORI_PI};
+    for (int i = 0; i < 5; ++i) {
+        cr_assert_eq(s[i].assignment, want[i], "line %d", i);
+        cr_assert_float_eq(s[i].fold_angle_rad, angle[i], 1e-15, "line %d", i);
+    }
+    ori_buffer_free(s);
 }

@@ -4,6 +4,7 @@
 #include <ctype.h>
 #include <stdlib.h>
 
+#include "../geometry/geometry_internal.h"
 #include "../pattern/pattern_internal.h"
 #include "reader_internal.h"
 
@@ -171,51 +172,145 @@ static int remove_holes(ori_pattern *p)
     return holes;
 }
 
-// Exact winding number of face f around point q (nonzero: q strictly inside or on its edges).
-static int winding(const ori_pattern *p, int f, ori_v2 q)
+// Whether non-vertical segment s (left end l, right end r) lies below segment t at x just right
+// of x0, both spanning it and not crossing (planar edges): decided exactly by orientation signs.
+static bool below(ori_v2 sl, ori_v2 sr, ori_v2 tl, ori_v2 tr)
 {
-    int wn = 0, b = p->face_offsets[f], n = p->face_offsets[f + 1] - b;
-    for (int k = 0; k < n; ++k) {
-        ori_v2 a = ori__pattern_v2(p, p->face_vertices[b + k]), c = ori__pattern_v2(p, p->face_vertices[b + (k + 1) % n]);
-        if (a.y <= q.y) {
-            if (c.y > q.y && ori_orient2d_sign(a, c, q) > 0) wn++;
-        } else if (c.y <= q.y && ori_orient2d_sign(a, c, q) < 0) {
-            wn--;
+    if (sl.x >= tl.x) { // s starts within t's x range: where is s's start relative to t?
+        int o = ori_orient2d_sign(tl, tr, sl);
+        if (o == 0) o = ori_orient2d_sign(tl, tr, sr); // they meet there: the slopes decide
+        return o < 0;
+    }
+    int o = ori_orient2d_sign(sl, sr, tl);
+    if (o == 0) o = ori_orient2d_sign(sl, sr, tr);
+    return o > 0;
+}
+
+// A uniform grid over the non-vertical edges, by columns and the rows each edge's y range
+// covers within a column (CSR: cell → edges).
+typedef struct edge_grid {
+    double x0, y0, cell;
+    int nx, ny;
+    int *start, *items;
+} edge_grid;
+
+static int grid_index(double v, double v0, double cell, int n)
+{
+    double c = floor((v - v0) / cell);
+    if (!(c >= 0.0)) return 0;
+    return c >= (double)n ? n - 1 : (int)c;
+}
+
+// Visit the cells of edge e (two passes: count, then fill).
+static void grid_edge_cells(const ori_pattern *p, const edge_grid *g, int e, int *count, int *fill)
+{
+    ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+    if (a.x == b.x) return; // vertical edges never lie above a point in the sense used here
+    if (a.x > b.x) {
+        ori_v2 t = a;
+        a = b;
+        b = t;
+    }
+    int c0 = grid_index(a.x, g->x0, g->cell, g->nx), c1 = grid_index(b.x, g->x0, g->cell, g->nx);
+    for (int cx = c0; cx <= c1; ++cx) {
+        double lo, hi;
+        ori__segment_y_range(a, b, g->x0 + cx * g->cell, g->x0 + (cx + 1) * g->cell, &lo, &hi);
+        int r0 = grid_index(lo, g->y0, g->cell, g->ny) - 1, r1 = grid_index(hi, g->y0, g->cell, g->ny) + 1;
+        if (r0 < 0) r0 = 0;
+        if (r1 >= g->ny) r1 = g->ny - 1;
+        for (int r = r0; r <= r1; ++r) {
+            int cell = cx * g->ny + r;
+            if (fill) g->items[fill[cell]++] = e;
+            else count[cell]++;
         }
     }
-    return wn;
 }
 
 // A connected part of the drawing that lies inside a face of another part (a hole or a crease
 // touching nothing) cannot be expressed: FOLD faces are single cycles. Reject it, naming where.
+//
+// For each part, the vertical ray up from (just right of) its leftmost vertex q finds the lowest
+// edge e of any other part: q lies in the face below e, so the part is inside a face exactly when
+// e has a face on that side. Parts inside a face whose ray first meets yet another part are
+// found through the leftmost part in that face, whose ray meets the face's own boundary. The
+// edges are found in a grid walked upwards from q (about √E cells), not by testing every face.
 static ori_status check_islands(const ori_pattern *p, ori_error *error)
 {
-    int nv = p->vertex_count;
+    int nv = p->vertex_count, ne = p->edge_count;
     int *comp = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
     int parts = ori__pattern_parts(p, comp);
+    if (parts <= 1 || p->face_count == 0) {
+        ori__free(comp);
+        return ORI_OK;
+    }
     // leftmost (then lowest) vertex of each component
-    int *left = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+    int *left = ori__alloc(sizeof(int) * (size_t)nv);
     for (int v = 0; v < nv; ++v) left[v] = ORI_NULL_INDEX;
+    double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY, total = 0.0;
     for (int v = 0; v < nv; ++v) {
         int r = comp[v];
         ori_v3 a = p->vertices[v];
         if (left[r] == ORI_NULL_INDEX || a.x < p->vertices[left[r]].x ||
             (a.x == p->vertices[left[r]].x && a.y < p->vertices[left[r]].y))
             left[r] = v;
+        lx = fmin(lx, a.x), ly = fmin(ly, a.y), hx = fmax(hx, a.x), hy = fmax(hy, a.y);
     }
+    for (int e = 0; e < ne; ++e)
+        total += ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, p->edges[e].v[1]), ori__pattern_v2(p, p->edges[e].v[0])));
+    // About one cell per edge, and cells no smaller than a quarter of the mean edge length (a
+    // long edge then enters a few cells per edge length, not hundreds).
+    edge_grid g;
+    double w = fmax(hx - lx, 0.0), h = fmax(hy - ly, 0.0), area = fmax(w * h, 0.0);
+    g.cell = fmax(sqrt(area / (ne + 1.0)), 0.25 * total / (ne + 1.0));
+    if (!(g.cell > 0.0) || !isfinite(g.cell)) g.cell = fmax(fmax(w, h), 1.0);
+    while ((floor(w / g.cell) + 1.0) * (floor(h / g.cell) + 1.0) > (double)(1 << 22)) g.cell *= 1.5;
+    g.x0 = lx, g.y0 = ly;
+    g.nx = (int)floor(w / g.cell) + 1, g.ny = (int)floor(h / g.cell) + 1;
+    size_t cells = (size_t)g.nx * (size_t)g.ny;
+    g.start = ori__calloc(cells + 1, sizeof(int));
+    for (int e = 0; e < ne; ++e) grid_edge_cells(p, &g, e, g.start + 1, NULL);
+    for (size_t c = 0; c < cells; ++c) g.start[c + 1] += g.start[c];
+    g.items = ori__alloc(sizeof(int) * (size_t)(g.start[cells] ? g.start[cells] : 1));
+    int *fill = ori__alloc(sizeof(int) * cells);
+    memcpy(fill, g.start, sizeof(int) * cells);
+    for (int e = 0; e < ne; ++e) grid_edge_cells(p, &g, e, NULL, fill);
+    ori__free(fill);
+
     ori_status st = ORI_OK;
-    for (int r = 0; r < nv && parts > 1 && st == ORI_OK; ++r) {
+    for (int r = 0; r < nv && st == ORI_OK; ++r) {
         if (comp[r] != r || left[r] == ORI_NULL_INDEX) continue;
         ori_v2 q = ori__pattern_v2(p, left[r]);
-        for (int f = 0; f < p->face_count; ++f) {
-            if (comp[p->face_vertices[p->face_offsets[f]]] == r || winding(p, f, q) == 0) continue;
+        int col = grid_index(q.x, g.x0, g.cell, g.nx), best = ORI_NULL_INDEX;
+        ori_v2 bl = q, br = q;
+        double best_y = INFINITY;
+        for (int row = grid_index(q.y, g.y0, g.cell, g.ny); row < g.ny; ++row) {
+            // (the lowest edge found lies at best_y ≈: once a row ends below it, no later row has a lower one)
+            if (best != ORI_NULL_INDEX && g.y0 + row * g.cell > best_y + g.cell) break;
+            int cell = col * g.ny + row;
+            for (int k = g.start[cell]; k < g.start[cell + 1]; ++k) {
+                int e = g.items[k];
+                if (comp[p->edges[e].v[0]] == r) continue;
+                ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+                ori_v2 el = a.x < b.x ? a : b, er = a.x < b.x ? b : a;
+                if (!(el.x <= q.x && q.x < er.x)) continue;     // spans x just right of q
+                if (ori_orient2d_sign(el, er, q) >= 0) continue; // not above q
+                if (best == ORI_NULL_INDEX || below(el, er, bl, br)) {
+                    best = e, bl = el, br = er;
+                    best_y = el.y + (q.x - el.x) / (er.x - el.x) * (er.y - el.y);
+                }
+            }
+        }
+        if (best == ORI_NULL_INDEX) continue;
+        // The face below best: right of v0→v1 when it runs left to right, else left of it.
+        bool ltr = ori__pattern_v2(p, p->edges[best].v[0]).x < ori__pattern_v2(p, p->edges[best].v[1]).x;
+        if (p->edge_faces[2 * best + (ltr ? 1 : 0)] != ORI_NULL_INDEX)
             st = ori__fail_at(error, ORI_ERR_TOPOLOGY, "vertices_coords", left[r],
                               "the lines around (%g, %g) touch nothing else and lie inside a face: FOLD faces "
                               "cannot have holes; connect them to the rest with a crease",
                               q.x, q.y);
-            break;
-        }
     }
+    ori__free(g.start);
+    ori__free(g.items);
     ori__free(comp);
     ori__free(left);
     return st;

@@ -7,6 +7,7 @@
 #include <libxml/xmlreader.h>
 #include <stdlib.h>
 
+#include "io_internal.h"
 #include "reader_internal.h"
 
 // --- segments and numbers ---------------------------------------------------------------------
@@ -132,4 +133,119 @@ ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDo
     xmlFreeParserCtxt(ctxt);
     *doc = d;
     return st;
+}
+
+// --- attributes and text, entity references expanded within a budget --------------------------
+
+void ori__xml_budget_init(ori__xml_budget *b, size_t input_size)
+{
+    b->left = ORI__XML_EXPANSION_PER_BYTE * input_size + ORI__XML_EXPANSION_MIN;
+    b->exceeded = false;
+}
+
+static void expand_content(const xmlDoc *doc, const char *s, int depth, ori__xml_budget *b, ori__text *out);
+
+// An internal general entity's replacement text, recursively (character references decoded,
+// external and unknown entities left out).
+static void expand_entity(const xmlDoc *doc, const xmlChar *name, int depth, ori__xml_budget *b, ori__text *out)
+{
+    if (b->exceeded) return;
+    if (depth >= ORI__XML_ENTITY_DEPTH) {
+        b->exceeded = true;
+        return;
+    }
+    xmlEntity *ent = xmlGetDocEntity(doc, name);
+    if (!ent) return;
+    if (ent->etype == XML_INTERNAL_PREDEFINED_ENTITY) {
+        size_t n = ent->content ? strlen((const char *)ent->content) : 0;
+        if (n > b->left) {
+            b->exceeded = true;
+            return;
+        }
+        b->left -= n;
+        ori__text_put(out, (const char *)ent->content, n);
+        return;
+    }
+    if (ent->etype != XML_INTERNAL_GENERAL_ENTITY || !ent->content) return;
+    expand_content(doc, (const char *)ent->content, depth + 1, b, out);
+}
+
+static void expand_content(const xmlDoc *doc, const char *s, int depth, ori__xml_budget *b, ori__text *out)
+{
+    while (*s && !b->exceeded) {
+        const char *amp = strchr(s, '&');
+        size_t n = amp ? (size_t)(amp - s) : strlen(s);
+        if (n > b->left) {
+            b->exceeded = true;
+            return;
+        }
+        b->left -= n;
+        ori__text_put(out, s, n);
+        if (!amp) return;
+        const char *semi = strchr(amp, ';');
+        if (!semi) { // not a reference: the rest as it is
+            s = amp + 1;
+            ori__text_put(out, "&", 1);
+            continue;
+        }
+        if (amp[1] == '#') { // a character reference
+            unsigned long cp = amp[2] == 'x' ? strtoul(amp + 3, NULL, 16) : strtoul(amp + 2, NULL, 10);
+            char u[5] = {0};
+            if (cp < 0x80) u[0] = (char)cp;
+            else if (cp < 0x800) u[0] = (char)(0xC0 | cp >> 6), u[1] = (char)(0x80 | (cp & 0x3F));
+            else if (cp < 0x10000) u[0] = (char)(0xE0 | cp >> 12), u[1] = (char)(0x80 | ((cp >> 6) & 0x3F)), u[2] = (char)(0x80 | (cp & 0x3F));
+            else if (cp < 0x110000)
+                u[0] = (char)(0xF0 | cp >> 18), u[1] = (char)(0x80 | ((cp >> 12) & 0x3F)), u[2] = (char)(0x80 | ((cp >> 6) & 0x3F)),
+                u[3] = (char)(0x80 | (cp & 0x3F));
+            if (u[0]) ori__text_puts(out, u);
+        } else {
+            char name[128];
+            size_t len = (size_t)(semi - amp - 1);
+            if (len < sizeof name) {
+                memcpy(name, amp + 1, len);
+                name[len] = '\0';
+                expand_entity(doc, (const xmlChar *)name, depth, b, out);
+            }
+        }
+        s = semi + 1;
+    }
+}
+
+// The text of a node list (text, CDATA, entity references) appended to out.
+static void node_list_text(const xmlNode *list, ori__xml_budget *b, ori__text *out)
+{
+    for (const xmlNode *c = list; c && !b->exceeded; c = c->next) {
+        if ((c->type == XML_TEXT_NODE || c->type == XML_CDATA_SECTION_NODE) && c->content)
+            ori__text_puts(out, (const char *)c->content);
+        else if (c->type == XML_ENTITY_REF_NODE)
+            expand_entity(c->doc, c->name, 0, b, out);
+    }
+}
+
+char *ori__xml_attr(const xmlNode *n, const char *name, ori__xml_budget *b)
+{
+    for (const xmlAttr *a = n->properties; a; a = a->next) {
+        if (a->ns != NULL || strcmp((const char *)a->name, name) != 0) continue;
+        ori__text out = {NULL, 0, 0};
+        ori__text_reserve(&out, 0);
+        node_list_text(a->children, b, &out);
+        if (b->exceeded) {
+            ori__free(out.data);
+            return NULL;
+        }
+        return out.data;
+    }
+    return NULL;
+}
+
+char *ori__xml_text(const xmlNode *n, ori__xml_budget *b)
+{
+    ori__text out = {NULL, 0, 0};
+    ori__text_reserve(&out, 0);
+    node_list_text(n->children, b, &out);
+    if (b->exceeded) {
+        ori__free(out.data);
+        return NULL;
+    }
+    return out.data;
 }

@@ -52,4 +52,24 @@ void ori__xml_reader_error(void *user, struct _xmlError *xe);
 // ORI_ERR_PARSE at the first error's line and column ("XML: message").
 ori_status ori__xml_error(const ori__xml_first_error *first, ori_error *error);
 
+// Entity references in attributes and text are expanded by orikin (never by xmlGetProp, whose
+// expansion of nested entities has no bound): at most ORI__XML_EXPANSION_PER_BYTE bytes per byte
+// of the document (plus ORI__XML_EXPANSION_MIN) over the whole document, and nested at most
+// ORI__XML_ENTITY_DEPTH deep, so that reading stays linear in the input. External entities are
+// never loaded.
+#define ORI__XML_EXPANSION_PER_BYTE 8
+#define ORI__XML_EXPANSION_MIN ((size_t)1 << 20)
+#define ORI__XML_ENTITY_DEPTH 16
+typedef struct ori__xml_budget {
+    size_t left;   // bytes entity expansion may still produce
+    bool exceeded; // set once a document expands beyond its budget (the reader then fails)
+} ori__xml_budget;
+void ori__xml_budget_init(ori__xml_budget *b, size_t input_size);
+// The value of element n's attribute name (no namespace), entity references expanded within the
+// budget: a string to ori__free, or NULL when absent or over budget (b->exceeded then set).
+struct _xmlNode;
+char *ori__xml_attr(const struct _xmlNode *n, const char *name, ori__xml_budget *b);
+// The text content of n's children (text, CDATA, entity references), as ori__xml_attr.
+char *ori__xml_text(const struct _xmlNode *n, ori__xml_budget *b);
+
 #endif

@@ -97,8 +97,9 @@ typedef struct grid_node {
 
 typedef struct grid {
     bool on;
-    double x0, y0, cell;
+    double x0, y0, x1, y1, cell;
     int nx, ny;
+    int built_edges; // edges when the grid was (re)built: it is refined as they multiply
     int *edge_head, *vert_head; // per cell: first node or -1
     grid_node *nodes;
     int node_count, node_cap;
@@ -371,7 +372,10 @@ static void grid_init(arr *A, double x0, double y0, double x1, double y1, double
     }
     g->x0 = x0;
     g->y0 = y0;
+    g->x1 = x1;
+    g->y1 = y1;
     g->cell = cell;
+    g->built_edges = A->p->edge_count;
     size_t cells = (size_t)g->nx * (size_t)g->ny;
     g->edge_head = ori__alloc(sizeof(int) * cells);
     g->vert_head = ori__alloc(sizeof(int) * cells);
@@ -379,6 +383,34 @@ static void grid_init(arr *A, double x0, double y0, double x1, double y1, double
     g->on = true;
     for (int v = 0; v < A->p->vertex_count; ++v) grid_add_vertex(A, v);
     for (int e = 0; e < A->p->edge_count; ++e) grid_add_edge(A, e);
+}
+
+// Cells for the edges as they are now: about one cell per average edge length, and at most
+// ~4 cells per edge. Planarising long crossing segments splits them into many short edges; a
+// grid sized for the segments would then hold thousands of edges per cell, and each insertion
+// would look at all of them (quadratic work). Rebuilt whenever the edges have doubled, the grid
+// keeps a few edges per cell at amortised linear cost.
+static bool is_dead(const arr *A, int e);
+
+static void grid_rebuild(arr *A)
+{
+    grid *g = &A->g;
+    ori_pattern *p = A->p;
+    double total = 0.0;
+    int live = 0;
+    for (int e = 0; e < p->edge_count; ++e) {
+        if (is_dead(A, e)) continue;
+        total += ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, p->edges[e].v[1]), ori__pattern_v2(p, p->edges[e].v[0])));
+        live++;
+    }
+    double diag = hypot(g->x1 - g->x0, g->y1 - g->y0);
+    double cell = fmax(live > 0 ? total / live : diag, diag / 4096.0);
+    int64_t budget = 4 * (int64_t)p->edge_count + 16;
+    if (budget > 1 << 24) budget = 1 << 24;
+    ori__free(g->edge_head);
+    ori__free(g->vert_head);
+    g->node_count = 0;
+    grid_init(A, g->x0, g->y0, g->x1, g->y1, cell, (int)budget);
 }
 
 // --- per-vertex / per-edge scratch ---------------------------------------------------------
@@ -1760,8 +1792,10 @@ static ori_status insert_many(ori_pattern *p, const ori_segment *segs, int count
     grid_init(&A, lx - pad, ly - pad, hx + pad, hy + pad, cell, (int)budget);
     faces_load(&A);
     int skipped = 0;
-    for (int i = 0; i < count; ++i)
+    for (int i = 0; i < count; ++i) {
         if (insert_one(&A, segs[i].a, segs[i].b, segs[i].assignment, segs[i].fold_angle_rad) != PLAN_OK) skipped++;
+        if (p->edge_count > 2 * A.g.built_edges + 1024) grid_rebuild(&A);
+    }
     faces_store(&A);
     if (A.dropped > 0) remove_dropped(&A);
     A.res.segments_skipped = skipped;
