@@ -491,7 +491,7 @@ Test(formats, svg_export_round_trips_edges_assignments_and_angles)
     cr_assert(strstr(svg, "viewBox=\""));
     cr_assert(strstr(svg, "stroke=\"#ff0000\""));
     ori_pattern *q = reimport(svg, ORI_FORMAT_SVG);
-    assert_same_edges(p, q, 1e-15);
+    assert_same_edges(p, q, 1e-15); // (to the last bit: see svg_opacity_gives_the_angle_back_to_the_last_bit)
     cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
     ori_pattern_destroy(q);
     ori_buffer_free(svg);
@@ -862,4 +862,119 @@ Test(formats, svg_style_cascade_order)
         cr_assert_float_eq(s[i].fold_angle_rad, angle[i], 1e-15, "line %d", i);
     }
     ori_buffer_free(s);
+}
+
+// Fold angles come back through the SVG opacity (read as opacity × π) to the last bit: exactly
+// in most cases, else as a neighbouring double (where the opacities are coarser than the angles,
+// no opacity gives the angle itself).
+Test(formats, svg_opacity_gives_the_angle_back_to_the_last_bit)
+{
+    int exact = 0, total = 0;
+    for (int k = 1; k < 20000; ++k) {
+        double a = ORI_PI * k / 20000.0 + (k % 3) * 1e-13;
+        ori_segment seg = {{0, 0}, {1, 0}, ORI_ASSIGN_VALLEY, a};
+        ori_pattern *p = NULL;
+        cr_assert_eq(ori_segments_to_pattern(&seg, 1, NULL, &p, NULL), ORI_OK);
+        char *svg = ori_svg_write(p, NULL);
+        ori_segment *s = NULL;
+        int n = 0;
+        cr_assert_eq(ori_svg_read_segments(svg, strlen(svg), &s, &n, NULL, NULL), ORI_OK);
+        cr_assert_eq(n, 1);
+        double b = s[0].fold_angle_rad;
+        cr_assert(b == a || b == nextafter(a, 0.0) || b == nextafter(a, 4.0), "angle %d: %.17g back as %.17g", k, a, b);
+        exact += b == a;
+        total++;
+        ori_buffer_free(s);
+        ori_buffer_free(svg);
+        ori_pattern_destroy(p);
+    }
+    cr_assert_gt(exact, total * 8 / 10, "exact %d of %d", exact, total);
+}
+
+// A generated pattern (fold angles 0: no targets) shows its creases: drawn folded flat.
+Test(formats, svg_of_a_generated_pattern_shows_its_creases)
+{
+    ori_generate_def def = ori_default_generate_def(ORI_TESS_MIURA);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_generate(&def, &p, NULL, NULL), ORI_OK);
+    char *svg = ori_svg_write(p, NULL);
+    cr_assert_null(strstr(svg, "stroke-opacity"), "creases at 0 are written at opacity 1");
+    ori_pattern *q = reimport(svg, ORI_FORMAT_SVG);
+    for (int e = 0; e < ori_pattern_edge_count(q); ++e) {
+        ori_edge ed = ori_pattern_edge(q, e);
+        if (ed.assignment == ORI_ASSIGN_MOUNTAIN) cr_assert_eq(ed.fold_angle_rad, -ORI_PI);
+        if (ed.assignment == ORI_ASSIGN_VALLEY) cr_assert_eq(ed.fold_angle_rad, ORI_PI);
+    }
+    cr_assert_eq(ori_pattern_count_assignment(q, ORI_ASSIGN_MOUNTAIN), ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN));
+    ori_pattern_destroy(q);
+    ori_buffer_free(svg);
+    ori_pattern_destroy(p);
+}
+
+// Labels: one <text> per face (index and name) and per edge, in a group the reader skips
+// silently; the drawing reads back as the same pattern.
+Test(formats, svg_labels_faces_and_edges_and_reads_back)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_svg_write_def def = ori_default_svg_write_def();
+    def.label_faces = def.label_edges = true;
+    char *svg = ori_svg_write(p, &def);
+    int texts = 0;
+    for (const char *c = svg; (c = strstr(c, "<text")) != NULL; ++c) texts++;
+    cr_assert_eq(texts, ori_pattern_face_count(p) + ori_pattern_edge_count(p));
+    char face0[64];
+    snprintf(face0, sizeof face0, ">0%s%s</text>", ori_pattern_face_name(p, 0) ? " " : "",
+             ori_pattern_face_name(p, 0) ? ori_pattern_face_name(p, 0) : "");
+    cr_assert(strstr(svg, face0), "%s lacks %s", svg, face0);
+    ori_segment *s = NULL;
+    int n = 0;
+    ori_import_stats stats;
+    cr_assert_eq(ori_svg_read_segments(svg, strlen(svg), &s, &n, &stats, NULL), ORI_OK);
+    cr_assert_eq(stats.unsupported_elements, 0);
+    cr_assert_eq(n, ori_pattern_edge_count(p));
+    ori_buffer_free(s);
+    ori_pattern *q = reimport(svg, ORI_FORMAT_SVG);
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
+    ori_pattern_destroy(q);
+    ori_buffer_free(svg);
+    ori_pattern_destroy(p);
+}
+
+// ORIPA has no flat or unassigned crease: exporting one is refused with the reason and the
+// edge, instead of writing an auxiliary line that would not come back.
+Test(formats, cp_and_opx_export_refuse_flat_and_unassigned_creases)
+{
+    char *dir = test_tmpdir();
+    char path[600];
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    int e = 0;
+    while (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_BOUNDARY) ++e;
+    ori_error err;
+    cr_assert_eq(ori_pattern_assign_crease(p, e, ORI_ASSIGN_UNASSIGNED, &err), ORI_OK);
+    const char *ext[2] = {"cp", "opx"};
+    for (int k = 0; k < 2; ++k) {
+        snprintf(path, sizeof path, "%s/out.%s", dir, ext[k]);
+        cr_assert_eq(ori_export_file(p, ORI_FORMAT_UNKNOWN, NULL, path, &err), ORI_ERR_UNSUPPORTED);
+        cr_assert_eq(err.element, e);
+        cr_assert(strstr(err.message, "ORIPA has no unassigned (U) crease"), "%s", err.message);
+        cr_assert_null(test_read_text(path));
+    }
+    // SVG keeps U (magenta) and reads it back.
+    snprintf(path, sizeof path, "%s/out.svg", dir);
+    cr_assert_eq(ori_export_file(p, ORI_FORMAT_UNKNOWN, NULL, path, &err), ORI_OK);
+    ori_pattern *q = import_ok(path, NULL);
+    cr_assert_eq(ori_pattern_count_assignment(q, ORI_ASSIGN_UNASSIGNED), 1);
+    ori_pattern_destroy(q);
+    // With M instead, CP and OPX export and read back the same creases.
+    cr_assert_eq(ori_pattern_assign_crease(p, e, ORI_ASSIGN_MOUNTAIN, &err), ORI_OK);
+    for (int k = 0; k < 2; ++k) {
+        snprintf(path, sizeof path, "%s/out.%s", dir, ext[k]);
+        cr_assert_eq(ori_export_file(p, ORI_FORMAT_UNKNOWN, NULL, path, &err), ORI_OK, "%s", err.message);
+        q = import_ok(path, NULL);
+        cr_assert_eq(ori_pattern_edge_count(q), ori_pattern_edge_count(p));
+        cr_assert_eq(ori_pattern_count_assignment(q, ORI_ASSIGN_MOUNTAIN), ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN));
+        ori_pattern_destroy(q);
+    }
+    ori_pattern_destroy(p);
+    test_tmpdir_remove(dir);
 }

@@ -92,25 +92,32 @@ typedef struct ori_svg_write_def {
     double stroke_width_rel; ///< stroke width as a fraction of the larger side of the drawing; default 1/300
     double margin_rel;       ///< blank margin around the drawing, fraction of the larger side; default 0.05
     bool full_fold;          ///< write every M and V at opacity 1 (fold flat) whatever its angle; default false
+    bool label_faces;        ///< write each face's index (and name) at its centroid, as <text> in a group the reader skips; default false
+    bool label_edges;        ///< write each edge's index at its middle (same group); default false
     int internal_value;      ///< set by ori_default_svg_write_def; do not change
 } ori_svg_write_def;
 
-/// Defaults: stroke width 1/300 of the drawing, 5 % margin, opacity from the fold angles.
+/// Defaults: stroke width 1/300 of the drawing, 5 % margin, opacity from the fold angles, no labels.
 ORI_API ori_svg_write_def ori_default_svg_write_def(void);
 
 /// The pattern (flat, x and y) as an SVG document that Origami Simulator opens: one <line> per
 /// edge in FOLD index order (J edges left out), coloured by assignment, stroke-opacity =
-/// |fold angle| / π for M and V (omitted when 1; 0 for an unfolded crease, which then does not
-/// show), y flipped back, a viewBox around the drawing. def may be NULL. Free with ori_buffer_free.
+/// |fold angle| / π for M and V (read back as opacity × π: the angle or its neighbouring double;
+/// omitted when 1; a crease at 0, e.g. of a generated pattern, has no target and is written
+/// at 1, fold flat, so that it shows), y flipped back, a viewBox around the drawing, labels as
+/// def says. def may be NULL. Free with ori_buffer_free.
 ORI_API char *ori_svg_write(const ori_pattern *pattern, const ori_svg_write_def *def);
-/// The pattern as ORIPA .cp text: B → 1, M → 2, V → 3, C → 1, F and U → 4 (auxiliary); J edges
-/// are left out. y flipped back. Free with ori_buffer_free.
+/// The pattern as ORIPA .cp text: B → 1, M → 2, V → 3, C → 1, F and U → 4 (auxiliary, which
+/// ORIPA and orikin do not read as creases: ori_export_file refuses such patterns); J edges are
+/// left out. y flipped back. Free with ori_buffer_free.
 ORI_API char *ori_cp_write(const ori_pattern *pattern);
 /// The pattern as ORIPA .opx XML with the same type mapping as ori_cp_write (F and U → 0, aux).
 /// Free with ori_buffer_free.
 ORI_API char *ori_opx_write(const ori_pattern *pattern);
 /// Write a flat pattern as SVG (with svg_def, may be NULL), CP or OPX to path atomically (format
-/// by extension unless given). Fails with ORI_ERR_UNSUPPORTED for a folded form.
+/// by extension unless given); what it writes reads back as the same pattern (CP and OPX: C as
+/// B). Fails with ORI_ERR_UNSUPPORTED for a folded form, and for CP and OPX when the pattern
+/// has F or U creases (ORIPA has no such type; the first one is named).
 ORI_API ori_status ori_export_file(const ori_pattern *pattern, ori_format format, const ori_svg_write_def *svg_def,
                                    const char *path, ori_error *error);
 

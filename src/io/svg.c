@@ -704,6 +704,12 @@ static ori_status element(svg_ctx *c, const xmlNode *n, const frame *parent, fra
             return ORI_OK;
         }
     bool group = name_is(n, "g") || name_is(n, "a") || name_is(n, "svg");
+    if (name_is(n, "g")) { // the labels orikin's writer adds are not part of the drawing
+        char *id = ori__xml_attr(n, "id", &c->budget);
+        bool labels = id && strcmp(id, "orikin-labels") == 0;
+        ori__free(id);
+        if (labels) return ORI_OK;
+    }
     bool is_shape = false;
     for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; ++i) is_shape |= name_is(n, shapes[i]);
     if (!group && !is_shape) return ORI_OK; // unknown elements are ignored with their content

@@ -421,7 +421,9 @@ static void ensure_filled(int **a, int *cap, int n, int fill)
     if (*cap >= n) return;
     int old = *cap;
     ORI__RESERVE(*a, *cap, n);
-    for (int i = old; i < *cap; ++i) (*a)[i] = fill;
+    if (fill == 0 || fill == -1) memset(*a + old, fill == 0 ? 0 : 0xFF, sizeof(int) * (size_t)(*cap - old));
+    else
+        for (int i = old; i < *cap; ++i) (*a)[i] = fill;
 }
 
 static void ensure_vertex_arrays(arr *A)
@@ -1471,11 +1473,17 @@ static int find_split(const arr *A, int a, int b)
 static void faces_apply_splits(arr *A)
 {
     if (!A->faces || A->es_count == 0) return;
+    // Only sides joining two end points of split edges can be split (marked: a stamp per vertex).
+    ensure_vertex_arrays(A);
+    int stamp = next_stamp(&A->fstamp, A->fmark, A->fmark_cap);
+    for (int i = 0; i < A->es_count; ++i) A->fmark[A->es[i].p] = A->fmark[A->es[i].q] = stamp;
     for (int f = 0; f < A->fl_count; ++f) {
         face_list *F = &A->fl[f];
         int extra = 0;
         for (int i = 0; i < F->n; ++i) {
-            int s = find_split(A, F->v[i], F->v[(i + 1) % F->n]);
+            int a = F->v[i], b = F->v[(i + 1) % F->n];
+            if (A->fmark[a] != stamp || A->fmark[b] != stamp) continue;
+            int s = find_split(A, a, b);
             if (s >= 0) extra += A->es[s].count;
         }
         if (extra == 0) continue;
