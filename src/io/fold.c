@@ -652,8 +652,31 @@ ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, 
     return ORI_OK;
 }
 
+// A document with a motion (frames appended by orikin) is an animation (FOLD file_classes):
+// "singleModel" becomes "animation", other classes stay.
+static void mark_animation(ori_fold *doc)
+{
+    const ori__field *c = ori__frame_find(&doc->frames[0], "file_classes");
+    json_t *classes = !c ? json_array() : c->pk ? ori__pk_to_json(c->pk) : json_is_array(c->json) ? json_copy(c->json) : json_array();
+    size_t i, single = (size_t)-1;
+    json_t *v;
+    json_array_foreach(classes, i, v)
+    {
+        if (!json_is_string(v)) continue;
+        if (strcmp(json_string_value(v), "animation") == 0) {
+            json_decref(classes);
+            return;
+        }
+        if (strcmp(json_string_value(v), "singleModel") == 0 && single == (size_t)-1) single = i;
+    }
+    if (single != (size_t)-1) json_array_set_new(classes, single, json_string("animation"));
+    else json_array_append_new(classes, json_string("animation"));
+    ori__frame_set(&doc->frames[0], "file_classes", classes, NULL);
+}
+
 static ori__frame *new_frame(ori_fold *doc, const char *frame_class, const char *title)
 {
+    mark_animation(doc);
     if (!ori__frame_find(&doc->frames[0], "file_frames")) ori__frame_set(&doc->frames[0], "file_frames", NULL, NULL);
     int k = ori__doc_add_frame(doc);
     ori__frame *fr = &doc->frames[k];
@@ -699,6 +722,48 @@ int ori_fold_append_state(ori_fold *doc, int parent, int vertex_count, const ori
     ori__frame *fr = new_frame(doc, "foldedForm", title);
     set_state_fields(fr, parent, vertex_count, positions, edge_count, angles_rad);
     return ori_fold_frame_count(doc) - 1;
+}
+
+ori_status ori_fold_extract_frame(const ori_fold *doc, int frame, ori_fold **out, ori_error *error)
+{
+    ORI_ASSERT(doc && out);
+    *out = NULL;
+    ori_error_clear(error);
+    if (frame < 0 || frame >= doc->frame_count)
+        return ori__fail(error, ORI_ERR_RANGE, "frame %d does not exist (frames 0 to %d)", frame, doc->frame_count - 1);
+    ori_fold *x = ori__doc_new();
+    ori__frame *top = &x->frames[0];
+    const ori__frame *f0 = &doc->frames[0];
+    // The file's own metadata (file_title, file_author, …), then the frame's fields, nearest first.
+    for (int i = 0; i < f0->count; ++i) {
+        const ori__field *f = &f0->fields[i];
+        if (strncmp(f->key, "file_", 5) != 0 || strcmp(f->key, "file_frames") == 0) continue;
+        if (strcmp(f->key, "file_classes") == 0) {
+            json_t *classes = json_array();
+            json_array_append_new(classes, json_string("singleModel"));
+            ori__frame_set(top, f->key, classes, NULL);
+            continue;
+        }
+        ori__frame_set(top, f->key, f->json ? json_deep_copy(f->json) : NULL, f->pk ? ori__pk_copy(f->pk) : NULL);
+    }
+    int k = frame;
+    for (int depth = 0; depth <= MAX_INHERIT_DEPTH; ++depth) {
+        const ori__frame *fr = &doc->frames[k];
+        for (int i = 0; i < fr->count; ++i) {
+            const ori__field *f = &fr->fields[i];
+            if (!f->json && !f->pk) continue; // (the file_frames marker)
+            if (strncmp(f->key, "file_", 5) == 0 || strcmp(f->key, "frame_parent") == 0 ||
+                strcmp(f->key, "frame_inherit") == 0 || ori__frame_find(top, f->key))
+                continue;
+            ori__frame_set(top, f->key, f->json ? json_deep_copy(f->json) : NULL, f->pk ? ori__pk_copy(f->pk) : NULL);
+        }
+        const ori__field *inh = own_field(doc, k, "frame_inherit"), *parent = own_field(doc, k, "frame_parent");
+        if (k == 0 || !inh || !json_is_true(inh->json) || !parent) break;
+        k = (int)json_integer_value(parent->json); // (checked on load)
+    }
+    if (!ori__frame_find(top, "file_spec")) ori__frame_set(top, "file_spec", json_real(1.2), NULL);
+    *out = x;
+    return ORI_OK;
 }
 
 // --- custom fields -------------------------------------------------------------------------

@@ -156,6 +156,32 @@ static json_t *pk_number_json(const ori__packed *pk, int64_t k)
     return json_real(x);
 }
 
+ori__packed *ori__pk_copy(const ori__packed *pk)
+{
+    ori__pk_full *f = ori__calloc(1, sizeof *f);
+    f->pk = *pk;
+    f->pk.off = NULL, f->pk.i32 = NULL, f->pk.f64 = NULL, f->pk.chars = NULL;
+    if (pk->off) {
+        f->off_cap = pk->count + 1;
+        f->pk.off = ori__alloc(sizeof(int64_t) * (size_t)f->off_cap);
+        memcpy(f->pk.off, pk->off, sizeof(int64_t) * (size_t)f->off_cap);
+    }
+    f->val_cap = pk->nvals ? pk->nvals : 1;
+    if (pk->i32) {
+        f->pk.i32 = ori__alloc(sizeof(int32_t) * (size_t)f->val_cap);
+        memcpy(f->pk.i32, pk->i32, sizeof(int32_t) * (size_t)pk->nvals);
+    } else if (pk->f64) {
+        f->pk.f64 = ori__alloc(sizeof(double) * (size_t)f->val_cap);
+        memcpy(f->pk.f64, pk->f64, sizeof(double) * (size_t)pk->nvals);
+    }
+    if (pk->chars) {
+        f->char_cap = pk->nchars ? pk->nchars : 1;
+        f->pk.chars = ori__alloc((size_t)f->char_cap);
+        memcpy(f->pk.chars, pk->chars, (size_t)pk->nchars);
+    }
+    return &f->pk;
+}
+
 json_t *ori__pk_to_json(const ori__packed *pk)
 {
     json_t *arr = json_array();

@@ -76,6 +76,8 @@ void ori__pk_end_row(ori__packed *pk);
 void ori__pk_push_string(ori__packed *pk, const char *s, size_t n);
 // Give the arrays their final sizes (after the last push).
 void ori__pk_shrink(ori__packed *pk);
+// A copy.
+ori__packed *ori__pk_copy(const ori__packed *pk);
 // The same content as a jansson value (for fields that must become general JSON).
 json_t *ori__pk_to_json(const ori__packed *pk);
 

@@ -41,6 +41,7 @@ ori_import_def ori_default_import_def(void)
 {
     ori_import_def def;
     def.weld_rel = ORI_TOL_IMPORT_WELD_REL;
+    def.gap_rel = ORI_IMPORT_GAP_AUTO;
     def.merge_collinear = true;
     def.remove_holes = true;
     def.internal_value = ORI__DEF_COOKIE;
@@ -53,7 +54,10 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
     *count = 0;
-    if (stats) memset(stats, 0, sizeof *stats);
+    if (stats) {
+        memset(stats, 0, sizeof *stats);
+        stats->dangling_example = stats->part_example = ORI_NULL_INDEX;
+    }
     if (format == ORI_FORMAT_UNKNOWN) format = ori_format_from_path(path);
     if (format != ORI_FORMAT_SVG && format != ORI_FORMAT_OPX && format != ORI_FORMAT_CP)
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "cannot read segments from a '%s' file", ori_format_name(format));
@@ -316,8 +320,250 @@ static ori_status check_islands(const ori_pattern *p, ori_error *error)
     return st;
 }
 
-ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori_import_def *def, ori_pattern **out,
-                                   ori_error *error)
+// --- planarisation, gaps, diagnosis -------------------------------------------------------------
+
+// Planarise with the weld, then merge collinear pass-through vertices and remove holes as def
+// says (no island check).
+static ori_status pipeline(const ori_segment *segs, int count, const ori_import_def *def, double weld, ori_pattern **out,
+                           ori_error *error)
+{
+    *out = NULL;
+    // The arrangement snaps within ORI_TOL_LENGTH_REL × length_scale: scale it to the weld.
+    ori_insert_def idef = ori_default_insert_def();
+    idef.name_faces = false;
+    idef.length_scale = weld / ORI_TOL_LENGTH_REL;
+    ori_pattern *p = NULL;
+    ori_status st = ori_pattern_from_segments(segs, count, &idef, &p, NULL, error);
+    if (st != ORI_OK) return st;
+    ori_pattern_set_has_fold_angles(p, true);
+    ori_build_def bdef = ori_default_build_def();
+    if (def->merge_collinear) {
+        ori_pattern *q = merge_collinear(p, weld);
+        if (q) {
+            ori_pattern_destroy(p);
+            p = q;
+            st = ori_pattern_build(p, &bdef, error);
+        }
+    }
+    if (st == ORI_OK && def->remove_holes && remove_holes(p) > 0) st = ori_pattern_build(p, &bdef, error);
+    if (st != ORI_OK) {
+        ori_pattern_destroy(p);
+        return st;
+    }
+    *out = p;
+    return ORI_OK;
+}
+
+// All edges in a grid of square cells (for nearest-line queries around a point).
+typedef struct line_grid {
+    double x0, y0, cell;
+    int nx, ny;
+    int *start, *items;
+} line_grid;
+
+static void line_grid_cells(const ori_pattern *p, const line_grid *g, int e, int *count, int *fill)
+{
+    ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+    if (a.x > b.x) {
+        ori_v2 t = a;
+        a = b;
+        b = t;
+    }
+    int c0 = grid_index(a.x, g->x0, g->cell, g->nx), c1 = grid_index(b.x, g->x0, g->cell, g->nx);
+    for (int cx = c0; cx <= c1; ++cx) {
+        double lo, hi;
+        ori__segment_y_range(a, b, g->x0 + cx * g->cell, g->x0 + (cx + 1) * g->cell, &lo, &hi);
+        int r0 = grid_index(lo, g->y0, g->cell, g->ny), r1 = grid_index(hi, g->y0, g->cell, g->ny);
+        for (int r = r0; r <= r1; ++r) {
+            int cell = cx * g->ny + r;
+            if (fill) g->items[fill[cell]++] = e;
+            else count[cell]++;
+        }
+    }
+}
+
+// Cells of size ≥ radius (a query looks at the 3 × 3 cells around its point), about one per edge.
+static void line_grid_build(const ori_pattern *p, double radius, line_grid *g)
+{
+    double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
+    for (int v = 0; v < p->vertex_count; ++v) {
+        lx = fmin(lx, p->vertices[v].x), ly = fmin(ly, p->vertices[v].y);
+        hx = fmax(hx, p->vertices[v].x), hy = fmax(hy, p->vertices[v].y);
+    }
+    double w = hx - lx, h = hy - ly;
+    g->cell = fmax(radius, sqrt(fmax(w * h, 0.0) / (p->edge_count + 1.0)));
+    if (!(g->cell > 0.0) || !isfinite(g->cell)) g->cell = fmax(fmax(w, h), 1.0);
+    while ((floor(w / g->cell) + 1.0) * (floor(h / g->cell) + 1.0) > (double)(1 << 22)) g->cell *= 1.5;
+    g->x0 = lx, g->y0 = ly;
+    g->nx = (int)floor(w / g->cell) + 1, g->ny = (int)floor(h / g->cell) + 1;
+    size_t cells = (size_t)g->nx * (size_t)g->ny;
+    g->start = ori__calloc(cells + 1, sizeof(int));
+    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, g->start + 1, NULL);
+    for (size_t c = 0; c < cells; ++c) g->start[c + 1] += g->start[c];
+    g->items = ori__alloc(sizeof(int) * (size_t)(g->start[cells] ? g->start[cells] : 1));
+    int *fill = ori__alloc(sizeof(int) * cells);
+    memcpy(fill, g->start, sizeof(int) * cells);
+    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, NULL, fill);
+    ori__free(fill);
+}
+
+static void line_grid_free(line_grid *g)
+{
+    ori__free(g->start);
+    ori__free(g->items);
+}
+
+// The closest point to x on an edge other than those at vertex v (within radius, which must not
+// exceed the grid's cell): its distance, or INFINITY. *at receives the point.
+static double nearest_line(const ori_pattern *p, const line_grid *g, int v, ori_v2 x, double radius, ori_v2 *at)
+{
+    int cx = grid_index(x.x, g->x0, g->cell, g->nx), cy = grid_index(x.y, g->y0, g->cell, g->ny);
+    double best = INFINITY;
+    for (int i = cx - 1; i <= cx + 1; ++i)
+        for (int j = cy - 1; j <= cy + 1; ++j) {
+            if (i < 0 || j < 0 || i >= g->nx || j >= g->ny) continue;
+            int cell = i * g->ny + j;
+            for (int k = g->start[cell]; k < g->start[cell + 1]; ++k) {
+                int e = g->items[k];
+                if (p->edges[e].v[0] == v || p->edges[e].v[1] == v) continue;
+                ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+                ori_v2 d = ori_v2_sub(b, a);
+                double l2 = ori_v2_dot(d, d), t = l2 > 0.0 ? ori_v2_dot(ori_v2_sub(x, a), d) / l2 : 0.0;
+                t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+                ori_v2 q = ori_v2_add(a, ori_v2_scale(d, t));
+                double dist = ori_v2_norm(ori_v2_sub(x, q));
+                if (dist < best) best = dist, *at = q;
+            }
+        }
+    return best <= radius ? best : INFINITY;
+}
+
+// Where the ray from u through the dangling end v, continued by at most reach past v, first meets
+// another edge (not at u or v): the distance past v, or INFINITY.
+static double ray_hit(const ori_pattern *p, const line_grid *g, int u, int v, double reach, ori_v2 *at)
+{
+    ori_v2 a = ori__pattern_v2(p, u), x = ori__pattern_v2(p, v), dir = ori_v2_sub(x, a);
+    double len = ori_v2_norm(dir);
+    if (!(len > 0.0)) return INFINITY;
+    dir = ori_v2_scale(dir, 1.0 / len);
+    int cx = grid_index(x.x, g->x0, g->cell, g->nx), cy = grid_index(x.y, g->y0, g->cell, g->ny);
+    double best = INFINITY;
+    for (int i = cx - 1; i <= cx + 1; ++i)
+        for (int j = cy - 1; j <= cy + 1; ++j) {
+            if (i < 0 || j < 0 || i >= g->nx || j >= g->ny) continue;
+            int cell = i * g->ny + j;
+            for (int k = g->start[cell]; k < g->start[cell + 1]; ++k) {
+                int e = g->items[k], e0 = p->edges[e].v[0], e1 = p->edges[e].v[1];
+                if (e0 == v || e1 == v || e0 == u || e1 == u) continue;
+                ori_v2 b0 = ori__pattern_v2(p, e0), b1 = ori__pattern_v2(p, e1), r = ori_v2_sub(b1, b0);
+                double den = ori_v2_cross(dir, r);
+                if (den == 0.0) continue;
+                ori_v2 q = ori_v2_sub(b0, x);
+                double t = ori_v2_cross(q, r) / den, s = ori_v2_cross(q, dir) / den;
+                if (t >= 0.0 && t <= reach && s >= 0.0 && s <= 1.0 && t < best) best = t, *at = ori_v2_add(x, ori_v2_scale(dir, t));
+            }
+        }
+    return best;
+}
+
+// The degree of every vertex (into deg, vertex_count entries).
+static void vertex_degrees(const ori_pattern *p, int *deg)
+{
+    memset(deg, 0, sizeof(int) * (size_t)p->vertex_count);
+    for (int e = 0; e < p->edge_count; ++e) deg[p->edges[e].v[0]]++, deg[p->edges[e].v[1]]++;
+}
+
+// Close the gaps of at most gap: a dangling crease shorter than gap (an overshoot past a crossing,
+// a stroke fragment) is dropped; a longer one whose free end stops within gap of another line is
+// extended along its own direction onto it, or else moved to the nearest point of that line.
+// Returns the segments of the result (NULL when nothing changed) with their count in *n.
+static ori_segment *close_gaps(const ori_pattern *p, double gap, int *n, int *closed, double *largest)
+{
+    *n = *closed = 0;
+    *largest = 0.0;
+    int nv = p->vertex_count, ne = p->edge_count;
+    int *deg = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+    vertex_degrees(p, deg);
+    int dangling = 0;
+    for (int v = 0; v < nv; ++v) dangling += deg[v] == 1;
+    if (dangling == 0) {
+        ori__free(deg);
+        return NULL;
+    }
+    line_grid g;
+    line_grid_build(p, gap, &g);
+    ori_segment *segs = ori__alloc(sizeof(ori_segment) * (size_t)ne);
+    for (int e = 0; e < ne; ++e) {
+        const ori_edge *ed = &p->edges[e];
+        ori_v2 end[2] = {ori__pattern_v2(p, ed->v[0]), ori__pattern_v2(p, ed->v[1])};
+        bool drop = false;
+        for (int k = 0; k < 2 && !drop; ++k) {
+            int v = ed->v[k], u = ed->v[1 - k];
+            if (deg[v] != 1) continue;
+            ori_v2 at;
+            double len = ori_v2_norm(ori_v2_sub(end[k], end[1 - k]));
+            if (deg[u] > 1 && len <= gap && nearest_line(p, &g, v, end[k], gap, &at) <= gap) {
+                drop = true; // an overshoot: its free end is as close to a line as its length
+                *largest = fmax(*largest, len);
+            } else {
+                double d = ray_hit(p, &g, u, v, gap, &at);
+                if (!(d <= gap)) d = nearest_line(p, &g, v, end[k], gap, &at);
+                if (!(d <= gap)) continue;
+                end[k] = at;
+                *largest = fmax(*largest, d);
+            }
+            (*closed)++;
+        }
+        if (drop) continue;
+        ori_segment s = {end[0], end[1], ed->assignment, ed->fold_angle_rad};
+        segs[(*n)++] = s;
+    }
+    line_grid_free(&g);
+    ori__free(deg);
+    if (*closed == 0) {
+        ori__free(segs);
+        return NULL;
+    }
+    return segs;
+}
+
+// Dangling ends and separate pieces of the result, with examples and how far the dangling ends
+// are from another line (up to 1 % of the diagonal).
+static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
+{
+    int nv = p->vertex_count;
+    int *deg = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+    vertex_degrees(p, deg);
+    stats->dangling = 0;
+    stats->dangling_example = ORI_NULL_INDEX;
+    stats->dangling_gap_rel = 0.0;
+    line_grid g = {0, 0, 0, 0, 0, NULL, NULL};
+    double reach = 0.01 * diag;
+    bool grid = false;
+    for (int v = 0; v < nv; ++v) {
+        if (deg[v] != 1) continue;
+        if (stats->dangling++ == 0) stats->dangling_example = v;
+        if (!grid) line_grid_build(p, reach, &g), grid = true;
+        ori_v2 at;
+        double d = nearest_line(p, &g, v, ori__pattern_v2(p, v), reach, &at);
+        if (d <= reach) stats->dangling_gap_rel = fmax(stats->dangling_gap_rel, d / diag);
+    }
+    if (grid) line_grid_free(&g);
+    int *comp = deg; // (reused)
+    stats->parts = ori__pattern_parts(p, comp);
+    stats->part_example = ORI_NULL_INDEX;
+    for (int v = 0; v < nv && stats->parts > 1; ++v)
+        if (comp[v] != comp[0]) {
+            stats->part_example = v;
+            break;
+        }
+    ori__free(deg);
+}
+
+// Planarise, close the gaps, check for islands; stats (may be NULL) receives the diagnosis.
+// stroke_width: the drawing's line width in its units (0: unknown).
+static ori_status to_pattern(const ori_segment *segs, int count, const ori_import_def *def, double stroke_width,
+                             ori_pattern **out, ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(out && count >= 0 && (segs || count == 0));
     *out = NULL;
@@ -327,6 +573,8 @@ ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori
     ori_error_clear(error);
     if (!(def->weld_rel > 0.0 && def->weld_rel < 1.0))
         return ori__fail(error, ORI_ERR_ARGUMENT, "weld tolerance %g is outside (0, 1)", def->weld_rel);
+    if (!(def->gap_rel == ORI_IMPORT_GAP_AUTO || (def->gap_rel >= 0.0 && def->gap_rel < 1.0)))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "gap %g is outside [0, 1)", def->gap_rel);
     if (count == 0) return ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
     ori_v2 lo = segs[0].a, hi = segs[0].a;
     for (int i = 0; i < count; ++i) {
@@ -341,34 +589,45 @@ ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori
     double diag = ori_v2_norm(ori_v2_sub(hi, lo));
     if (!(diag > 0.0) || !isfinite(diag)) return ori__fail(error, ORI_ERR_DEGENERATE, "the drawing has no extent");
     double weld = def->weld_rel * diag;
-
-    // The arrangement snaps within ORI_TOL_LENGTH_REL × length_scale: scale it to the weld.
-    ori_insert_def idef = ori_default_insert_def();
-    idef.name_faces = false;
-    idef.length_scale = weld / ORI_TOL_LENGTH_REL;
+    double gap_rel = def->gap_rel != ORI_IMPORT_GAP_AUTO ? def->gap_rel : stroke_width > 0.0 ? stroke_width / diag : 0.0;
+    if (!(gap_rel < 0.01)) gap_rel = 0.01; // (line widths beyond 1 % of the drawing are not gaps)
     ori_pattern *p = NULL;
-    ori_status st = ori_pattern_from_segments(segs, count, &idef, &p, NULL, error);
-    if (st != ORI_OK) return st;
-    ori_pattern_set_has_fold_angles(p, true);
-
-    ori_build_def bdef = ori_default_build_def();
-    if (def->merge_collinear) {
-        ori_pattern *q = merge_collinear(p, weld);
-        if (q) {
-            ori_pattern_destroy(p);
-            p = q;
-            st = ori_pattern_build(p, &bdef, error);
-        }
+    ori_status st = pipeline(segs, count, def, weld, &p, error);
+    int closed = 0;
+    double largest = 0.0;
+    // (A joined end may leave a sliver where it meets its line near a vertex: a few rounds.)
+    for (int round = 0; round < 4 && st == ORI_OK && gap_rel * diag > weld; ++round) {
+        int n, k;
+        double big;
+        ori_segment *fixed = close_gaps(p, gap_rel * diag, &n, &k, &big);
+        if (!fixed) break;
+        closed += round == 0 ? k : 0;
+        largest = fmax(largest, big);
+        ori_pattern_destroy(p);
+        p = NULL;
+        st = n > 0 ? pipeline(fixed, n, def, weld, &p, error) : ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
+        ori__free(fixed);
     }
-    if (st == ORI_OK && def->remove_holes && remove_holes(p) > 0) st = ori_pattern_build(p, &bdef, error);
     // After the holes are gone: a separate piece inside a (connected) hole is fine.
     if (st == ORI_OK) st = check_islands(p, error);
     if (st != ORI_OK) {
         ori_pattern_destroy(p);
         return st;
     }
+    if (stats) {
+        stats->gap_rel = gap_rel;
+        stats->gaps_closed = closed;
+        stats->largest_gap_rel = largest / diag;
+        diagnose(p, diag, stats);
+    }
     *out = p;
     return ORI_OK;
+}
+
+ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori_import_def *def, ori_pattern **out,
+                                   ori_error *error)
+{
+    return to_pattern(segs, count, def, 0.0, out, NULL, error);
 }
 
 ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def, ori_pattern **out,
@@ -378,9 +637,12 @@ ori_status ori_import_file(const char *path, ori_format format, const ori_import
     *out = NULL;
     ori_segment *segs;
     int n;
-    ori_status st = ori_read_segments(path, format, &segs, &n, stats, error);
+    ori_import_stats found;
+    ori_status st = ori_read_segments(path, format, &segs, &n, &found, error);
+    if (stats) *stats = found;
     if (st != ORI_OK) return st;
-    st = ori_segments_to_pattern(segs, n, def, out, error);
+    st = to_pattern(segs, n, def, found.stroke_width, out, &found, error);
     ori__free(segs);
+    if (stats) *stats = found;
     return st;
 }

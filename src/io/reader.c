@@ -61,7 +61,10 @@ void ori__reader_begin(ori_segment **segments, int *count, ori_import_stats *sta
 {
     *segments = NULL;
     *count = 0;
-    if (stats) memset(stats, 0, sizeof *stats);
+    if (stats) {
+        memset(stats, 0, sizeof *stats);
+        stats->dangling_example = stats->part_example = ORI_NULL_INDEX;
+    }
     ori_error_clear(error);
 }
 
@@ -73,6 +76,7 @@ ori_status ori__reader_end(ori_status st, ori__seg_list *segs, ori_import_stats 
         return st;
     }
     found->segments = segs->count;
+    found->dangling_example = found->part_example = ORI_NULL_INDEX; // (set by ori_import_file)
     if (stats) *stats = *found;
     *segments = segs->items;
     *count = segs->count;

@@ -40,16 +40,17 @@ typedef struct svg_style {
     char color[64];
     double stroke_opacity; // inherited
     double opacity;        // product of the element's and its ancestors' opacity
+    double stroke_width;   // inherited, in the element's user units (default 1)
     bool hidden;           // visibility: hidden / collapse (inherited, children may override)
 } svg_style;
 
 // The properties orikin reads, as the cascade leaves them. A declaration of a property sets it
 // (with the position of its rule in the style sheets, for "later wins"); an opacity that does
 // not parse sets nothing.
-enum { P_STROKE, P_COLOR, P_STROKE_OPACITY, P_OPACITY, P_DISPLAY, P_VISIBILITY, P_COUNT };
+enum { P_STROKE, P_COLOR, P_STROKE_OPACITY, P_OPACITY, P_DISPLAY, P_VISIBILITY, P_STROKE_WIDTH, P_COUNT };
 typedef struct css_props {
     char stroke[64], color[64];
-    double stroke_opacity, opacity;
+    double stroke_opacity, opacity, stroke_width;
     bool display_none, hidden;
     int order[P_COUNT]; // position of the declaration that set the property, -1 = not set
 } css_props;
@@ -67,6 +68,8 @@ typedef struct css_sheet {
 typedef struct svg_ctx {
     ori__seg_list segs;
     ori_import_stats stats;
+    double *widths; // stroke width of each crease element, in drawing units
+    int width_count, width_cap;
     css_sheet sheet;
     ori__xml_budget budget;
     ori_error *error;
@@ -257,6 +260,7 @@ static void declare(css_props *p, const char *name, const char *value, int order
     else if (ieq(name, "opacity") && parse_opacity(v, &x)) p->opacity = x, k = P_OPACITY;
     else if (ieq(name, "display")) p->display_none = ieq(v, "none"), k = P_DISPLAY;
     else if (ieq(name, "visibility")) p->hidden = ieq(v, "hidden") || ieq(v, "collapse"), k = P_VISIBILITY;
+    else if (ieq(name, "stroke-width") && parse_length(v, &x) && x >= 0.0) p->stroke_width = x, k = P_STROKE_WIDTH;
     if (k >= 0) p->order[k] = order;
 }
 
@@ -290,6 +294,7 @@ static void props_merge(css_props *dst, const css_props *src, bool force)
         case P_STROKE_OPACITY: dst->stroke_opacity = src->stroke_opacity; break;
         case P_OPACITY: dst->opacity = src->opacity; break;
         case P_DISPLAY: dst->display_none = src->display_none; break;
+        case P_STROKE_WIDTH: dst->stroke_width = src->stroke_width; break;
         default: dst->hidden = src->hidden; break;
         }
         dst->order[k] = src->order[k];
@@ -328,6 +333,7 @@ static void apply_props(svg_style *st, double *own, bool *display_none, const cs
     if (p->order[P_OPACITY] >= 0) *own = p->opacity;
     if (p->order[P_DISPLAY] >= 0) *display_none = p->display_none;
     if (p->order[P_VISIBILITY] >= 0) st->hidden = p->hidden;
+    if (p->order[P_STROKE_WIDTH] >= 0) st->stroke_width = p->stroke_width;
 }
 
 // Presentation attributes, then matching <style> rules (tag rules, then class and tag.class
@@ -336,7 +342,8 @@ static void apply_props(svg_style *st, double *own, bool *display_none, const cs
 // (opacity multiplied in).
 static void element_style(svg_ctx *c, const xmlNode *n, svg_style *st, bool *display_none)
 {
-    static const char *const names[P_COUNT] = {"stroke", "color", "stroke-opacity", "opacity", "display", "visibility"};
+    static const char *const names[P_COUNT] = {"stroke",  "color",      "stroke-opacity", "opacity",
+                                               "display", "visibility", "stroke-width"};
     *display_none = false;
     double own = 1.0;
     css_props p;
@@ -644,6 +651,10 @@ static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style 
     if (name_is(n, "circle") || name_is(n, "ellipse"))
         return fail(c, n, ORI_ERR_UNSUPPORTED, "a %s cannot be a crease: crease lines must be straight",
                     (const char *)n->name);
+    // The drawn width of its lines (stroke-width scaled by the transform): how far apart two lines
+    // may be and still touch on the page (the import closes such gaps).
+    double drawn = style->stroke_width * sqrt(fabs(m.a * m.d - m.b * m.c));
+    if (isfinite(drawn)) ORI__PUSH(c->widths, c->width_count, c->width_cap, drawn);
     double opacity = style->opacity * style->stroke_opacity;
     double angle = 0.0;
     if (asg == ORI_ASSIGN_MOUNTAIN) angle = -opacity * ORI_PI;
@@ -764,6 +775,7 @@ static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_
                 memset(&frames[0], 0, sizeof frames[0]);
                 frames[0].m = affine_identity();
                 frames[0].style.stroke_opacity = 1.0;
+                frames[0].style.stroke_width = 1.0;
                 frames[0].style.opacity = 1.0;
                 bool display_none;
                 element_style(c, n, &frames[0].style, &display_none);
@@ -794,6 +806,12 @@ static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_
     return st;
 }
 
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
 ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
                                  ori_import_stats *stats, ori_error *error)
 {
@@ -813,5 +831,10 @@ ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **se
     if (st == ORI_OK) st = stream(&c, text, size, false);
     json_decref(c.sheet.index);
     ori__free(c.sheet.entries);
+    if (c.width_count > 0) { // the median: a few thick outlines do not set it
+        qsort(c.widths, (size_t)c.width_count, sizeof(double), compare_doubles);
+        c.stats.stroke_width = c.widths[c.width_count / 2];
+    }
+    ori__free(c.widths);
     return ori__reader_end(st, &c.segs, &c.stats, segments, count, stats);
 }
