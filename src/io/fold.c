@@ -762,6 +762,11 @@ ori_status ori_fold_extract_frame(const ori_fold *doc, int frame, ori_fold **out
         k = (int)json_integer_value(parent->json); // (checked on load)
     }
     if (!ori__frame_find(top, "file_spec")) ori__frame_set(top, "file_spec", json_real(1.2), NULL);
+    if (!ori__frame_find(top, "file_classes")) {
+        json_t *classes = json_array();
+        json_array_append_new(classes, json_string("singleModel"));
+        ori__frame_set(top, "file_classes", classes, NULL);
+    }
     *out = x;
     return ORI_OK;
 }
