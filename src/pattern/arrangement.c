@@ -105,9 +105,13 @@ typedef struct grid {
     int node_count, node_cap;
 } grid;
 
+// A face's vertices while an insertion runs. Loaded faces borrow their vertices from one copy of
+// the pattern's (no allocation per face: a single insertion into a pattern of thousands of faces
+// would otherwise allocate thousands of lists); a face gets its own array when it grows.
 typedef struct face_list {
     int *v;
     int n, cap;
+    bool owned;
 } face_list;
 
 typedef struct event {
@@ -261,6 +265,7 @@ typedef struct arr {
     bool faces;
     face_list *fl;
     int fl_count, fl_cap;
+    int *fl_block; // the loaded faces' vertices (borrowed by their lists)
     char (*names)[ORI_NAME_MAX];
     int names_cap;
     int_list *glist; // per group: faces containing the group's vertex
@@ -1244,14 +1249,14 @@ static void faces_load(arr *A)
     ORI__RESERVE(A->fl, A->fl_cap, p->face_count);
     ORI__RESERVE(A->names, A->names_cap, p->face_count);
     A->fl_count = p->face_count;
+    A->fl_block = ori__alloc(sizeof(int) * (size_t)(p->face_vertex_count ? p->face_vertex_count : 1));
+    memcpy(A->fl_block, p->face_vertices, sizeof(int) * (size_t)p->face_vertex_count);
     for (int f = 0; f < p->face_count; ++f) {
         face_list *F = &A->fl[f];
-        F->v = NULL;
-        F->n = F->cap = 0;
         int b = p->face_offsets[f], n = p->face_offsets[f + 1] - b;
-        ORI__RESERVE(F->v, F->cap, n);
-        memcpy(F->v, p->face_vertices + b, sizeof(int) * (size_t)n);
-        F->n = n;
+        F->v = A->fl_block + b;
+        F->n = F->cap = n;
+        F->owned = false;
         ori__strlcpy(A->names[f], p->face_names ? p->face_names[f] : "", ORI_NAME_MAX);
     }
 }
@@ -1278,9 +1283,27 @@ static void faces_store(arr *A)
         for (int f = 0; f < A->fl_count; ++f) ori_pattern_set_face_name(p, f, A->names[f][0] ? A->names[f] : NULL);
 }
 
+// Room for need vertices in face F (a borrowed list gets its own array first).
+static void face_reserve(face_list *F, int need)
+{
+    if (!F->owned) {
+        if (need <= F->cap) return;
+        int *v = ori__alloc(sizeof(int) * (size_t)(need > 2 * F->n ? need : 2 * F->n));
+        memcpy(v, F->v, sizeof(int) * (size_t)F->n);
+        F->cap = need > 2 * F->n ? need : 2 * F->n;
+        F->v = v;
+        F->owned = true;
+        return;
+    }
+    ORI__RESERVE(F->v, F->cap, need);
+}
+
 static void faces_free(arr *A)
 {
-    for (int f = 0; f < A->fl_count; ++f) ori__free(A->fl[f].v);
+    for (int f = 0; f < A->fl_count; ++f)
+        if (A->fl[f].owned) ori__free(A->fl[f].v);
+    ori__free(A->fl_block);
+    A->fl_block = NULL;
     ori__free(A->fl);
     ori__free(A->names);
     A->fl = NULL;
@@ -1338,6 +1361,7 @@ static int new_face(arr *A)
     face_list *F = &A->fl[A->fl_count];
     F->v = NULL;
     F->n = F->cap = 0;
+    F->owned = true;
     A->names[A->fl_count][0] = '\0';
     return A->fl_count++;
 }
@@ -1386,7 +1410,7 @@ static void insert_spike(arr *A, int f, int j, int u)
 {
     face_list *F = &A->fl[f];
     int w = F->v[j];
-    ORI__RESERVE(F->v, F->cap, F->n + 2);
+    face_reserve(F, F->n + 2);
     memmove(F->v + j + 3, F->v + j + 1, sizeof(int) * (size_t)(F->n - j - 1));
     F->v[j + 1] = u;
     F->v[j + 2] = w;
@@ -1500,7 +1524,7 @@ static void faces_apply_splits(arr *A)
             else
                 for (int k = r->count - 1; k >= 0; --k) A->tmp[m++] = A->split_verts[r->first + k];
         }
-        ORI__RESERVE(F->v, F->cap, m);
+        face_reserve(F, m);
         memcpy(F->v, A->tmp, sizeof(int) * (size_t)m);
         F->n = m;
     }
@@ -1860,9 +1884,12 @@ int ori_pattern_edges_on_segment(const ori_pattern *p, ori_v2 a, ori_v2 b, int *
 {
     ORI_ASSERT(p && (out || cap == 0));
     double tol = ORI_TOL_ON_LINE_REL * ori_pattern_diagonal(p);
+    double lx = fmin(a.x, b.x) - tol, hx = fmax(a.x, b.x) + tol, ly = fmin(a.y, b.y) - tol, hy = fmax(a.y, b.y) + tol;
     int n = 0;
     for (int e = 0; e < p->edge_count; ++e) {
         ori_v2 u = ori__pattern_v2(p, p->edges[e].v[0]), w = ori__pattern_v2(p, p->edges[e].v[1]);
+        // (both ends must be near the segment, so within its box: most edges end here)
+        if (u.x < lx || u.x > hx || u.y < ly || u.y > hy || w.x < lx || w.x > hx || w.y < ly || w.y > hy) continue;
         if (seg_dist2(a, b, u) <= tol * tol && seg_dist2(a, b, w) <= tol * tol) {
             if (n < cap) out[n] = e;
             n++;
