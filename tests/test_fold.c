@@ -519,14 +519,16 @@ Test(fold, packed_fields_read_as_the_json_they_were)
     expect_error("{\"vertices_coords\": [0, 1]}", ORI_ERR_TYPE, "vertices_coords 0: expected an array of 2 or 3 numbers");
     expect_error("{\"vertices_coords\": [[0, 1], [2]]}", ORI_ERR_TYPE, "vertices_coords 1: expected an array of 2 or 3 numbers");
     expect_error("{\"vertices_coords\": [[0, 1], [2, null]]}", ORI_ERR_TYPE, "vertices_coords 1: coordinate 1 is not a number");
-    // Unknown fields of every shape come back as they were, numbers in shortest form.
-    const char *custom = "{\"a\": [1, \"x\", null], \"b\": [[1, 2.5], [3]], \"c\": [\"p\", \"\\u00e9\\ud83d\\ude00\"], "
+    // Unknown fields of every shape come back as they were, numbers in shortest form (an empty
+    // key after a longer one, and empty strings, included: fuzzing found the empty key read as
+    // the key before it).
+    const char *custom = "{\"\": [\"\", \"q\"], \"a\": [1, \"x\", null], \"b\": [[1, 2.5], [3]], \"c\": [\"p\", \"\\u00e9\\ud83d\\ude00\"], "
                          "\"d\": [], \"e\": [[]], \"f\": [9007199254740993], \"g\": [4294967296, -3, 1e-300], "
                          "\"h\": {\"k\": [1, 2]}, \"i\": 1.50}";
     ori_fold *doc = NULL;
     ori_error err;
     cr_assert_eq(load_text(custom, &doc, &err), ORI_OK);
-    const char *expect[][2] = {{"a", "[1,\"x\",null]"},   {"b", "[[1,2.5],[3]]"},
+    const char *expect[][2] = {{"", "[\"\",\"q\"]"},      {"a", "[1,\"x\",null]"},   {"b", "[[1,2.5],[3]]"},
                                {"c", "[\"p\",\"é😀\"]"},   {"d", "[]"},
                                {"e", "[[]]"},              {"f", "[9007199254740993]"},
                                {"g", "[4294967296,-3,1e-300]"}, {"h", "{\"k\":[1,2]}"},
@@ -665,4 +667,100 @@ Test(fold, set_custom_file_frames_replaces_the_frames)
     cr_assert_null(strstr(t, "file_frames"));
     ori_buffer_free(t);
     ori_fold_destroy(doc);
+}
+
+// A document to which frames are appended (a motion) says so: file_classes "animation".
+Test(fold, appending_frames_makes_an_animation)
+{
+    ori_fold *doc = ori_fold_create();
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_error err;
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, &err), ORI_OK);
+    char *classes = ori_fold_get_custom(doc, 0, "file_classes");
+    cr_assert_str_eq(classes, "[\"singleModel\"]");
+    ori_buffer_free(classes);
+    double *angles = calloc((size_t)ori_pattern_edge_count(p), sizeof(double));
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)ori_pattern_vertex_count(p));
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) pos[v] = ori_pattern_vertex(p, v);
+    for (int k = 0; k < 3; ++k) ori_fold_append_state(doc, 0, ori_pattern_vertex_count(p), pos, ori_pattern_edge_count(p), angles, NULL);
+    classes = ori_fold_get_custom(doc, 0, "file_classes");
+    cr_assert_str_eq(classes, "[\"animation\"]");
+    ori_buffer_free(classes);
+    // other classes stay; "animation" is not added twice
+    cr_assert_eq(ori_fold_set_custom(doc, 0, "file_classes", "[\"diagrams\"]", &err), ORI_OK);
+    ori_fold_append_state(doc, 0, ori_pattern_vertex_count(p), pos, ori_pattern_edge_count(p), angles, NULL);
+    ori_fold_append_state(doc, 0, ori_pattern_vertex_count(p), pos, ori_pattern_edge_count(p), angles, NULL);
+    classes = ori_fold_get_custom(doc, 0, "file_classes");
+    cr_assert_str_eq(classes, "[\"diagrams\",\"animation\"]");
+    ori_buffer_free(classes);
+    free(angles);
+    free(pos);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+}
+
+// Extracting a frame: its own fields first, then those it inherits; the file's metadata; no
+// frame bookkeeping; and the extracted document's frame 0 is the frame, field for field.
+Test(fold, a_frame_is_extracted_with_its_inherited_fields)
+{
+    ori_fold *doc = NULL, *x = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(test_repo_path("tests/data/frames.fold"), &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_extract_frame(doc, 1, &x, &err), ORI_OK);
+    cr_assert_eq(ori_fold_frame_count(x), 1);
+    const char *keys[] = {"vertices_coords", "edges_foldAngle", "frame_classes", "edges_vertices", "edges_assignment",
+                          "faces_vertices", "custom:answer"};
+    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; ++i) {
+        char *a = ori_fold_get_custom(doc, 1, keys[i]), *b = ori_fold_get_custom(x, 0, keys[i]);
+        cr_assert_not_null(b, "%s", keys[i]);
+        cr_assert_str_eq(a, b, "%s", keys[i]);
+        ori_buffer_free(a);
+        ori_buffer_free(b);
+    }
+    cr_assert_null(ori_fold_get_custom(x, 0, "frame_parent"));
+    cr_assert_null(ori_fold_get_custom(x, 0, "frame_inherit"));
+    char *creator = ori_fold_get_custom(x, 0, "file_creator");
+    cr_assert_str_eq(creator, "\"orikin test\"");
+    ori_buffer_free(creator);
+    ori_fold_destroy(x);
+    // frame 2 does not inherit: only its own fields
+    cr_assert_eq(ori_fold_extract_frame(doc, 2, &x, &err), ORI_OK);
+    cr_assert_null(ori_fold_get_custom(x, 0, "custom:answer"));
+    cr_assert_null(ori_fold_get_custom(x, 0, "edges_assignment"));
+    ori_fold_destroy(x);
+    cr_assert_eq(ori_fold_extract_frame(doc, 3, &x, &err), ORI_ERR_RANGE);
+    cr_assert_null(x);
+    ori_fold_destroy(doc);
+}
+
+// Writing a pattern into a frame that inherits: what the pattern does not have must not come back
+// from the parent (found by fuzzing: a frame's edges_foldAngle removed, the parent's showed).
+Test(fold, a_pattern_written_into_an_inheriting_frame_replaces_what_it_inherited)
+{
+    ori_fold *doc = NULL, *again = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(test_repo_path("tests/data/frames.fold"), &doc, &err), ORI_OK);
+    ori_pattern *p = NULL, *q = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 1, NULL, &p, &err), ORI_OK);
+    ori_pattern_set_has_fold_angles(p, false);
+    cr_assert_eq(ori_fold_set_pattern(doc, 1, p, &err), ORI_OK);
+    char *text = ori_fold_to_string(doc);
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &again, &err), ORI_OK);
+    cr_assert_eq(ori_fold_get_pattern(again, 1, NULL, &q, &err), ORI_OK, "%s", err.message);
+    cr_assert_not(ori_pattern_has_fold_angles(q));
+    char *inherit = ori_fold_get_custom(again, 1, "frame_inherit");
+    cr_assert_str_eq(inherit, "false");
+    ori_buffer_free(inherit);
+    char *answer = ori_fold_get_custom(again, 1, "custom:answer"); // (taken in from the parent)
+    cr_assert_not_null(answer);
+    ori_buffer_free(answer);
+    // the same pattern written back unchanged keeps the frame inheriting
+    ori_pattern_destroy(q);
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &q, &err), ORI_OK);
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, q, &err), ORI_OK);
+    ori_buffer_free(text);
+    ori_pattern_destroy(p);
+    ori_pattern_destroy(q);
+    ori_fold_destroy(doc);
+    ori_fold_destroy(again);
 }

@@ -986,3 +986,26 @@ Test(formats, cp_and_opx_export_refuse_flat_and_unassigned_creases)
     ori_pattern_destroy(p);
     test_tmpdir_remove(dir);
 }
+
+// A drawing whose lines all collapse under the weld (its size comes from one far-away stray
+// line) is refused, not turned into an empty pattern that writes as nothing (found by fuzzing).
+Test(formats, a_drawing_whose_lines_all_weld_away_is_refused)
+{
+    ori_segment s[3] = {{{0, 0}, {1, 0}, ORI_ASSIGN_MOUNTAIN, -ORI_PI},
+                        {{0, 0}, {0, 1}, ORI_ASSIGN_VALLEY, ORI_PI},
+                        {{0, 5.5e9}, {3, 5.5e9}, ORI_ASSIGN_VALLEY, ORI_PI}};
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_segments_to_pattern(s, 3, NULL, &p, &err), ORI_ERR_DEGENERATE);
+    cr_assert_null(p);
+    cr_assert(strstr(err.message, "every line is shorter than the weld tolerance"), "%s", err.message);
+    // A weld below the lines' lengths keeps them (when they are not below the length tolerance
+    // of the whole drawing, 1e-9 of it, which no weld can change).
+    s[2].a.y = s[2].b.y = 5.5e6;
+    cr_assert_eq(ori_segments_to_pattern(s, 3, NULL, &p, &err), ORI_ERR_DEGENERATE);
+    ori_import_def def = ori_default_import_def();
+    def.weld_rel = 1e-8;
+    cr_assert_eq(ori_segments_to_pattern(s, 3, &def, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_edge_count(p), 3);
+    ori_pattern_destroy(p);
+}

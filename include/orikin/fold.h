@@ -49,7 +49,9 @@ ORI_API ori_status ori_fold_get_pattern(const ori_fold *doc, int frame, const or
                                         ori_pattern **out, ori_error *error);
 /// Write a pattern's fields into a frame (0 = top level), keeping every other field. When the
 /// vertex, edge or face counts change, FOLD's derived index fields (vertices_vertices,
-/// faces_edges, edges_faces, …) of that frame are dropped, since they would be stale.
+/// faces_edges, edges_faces, …) of that frame are dropped, since they would be stale. A frame
+/// that inherits a field that must go (stale, or one the pattern does not have) first takes its
+/// inherited fields in and stops inheriting (frame_inherit false).
 ORI_API ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *pattern,
                                         ori_error *error);
 /// A new document holding frame `frame` alone as its top level (a real extraction): the frame's

@@ -633,12 +633,45 @@ static bool same_faces(const ori__field *old, const ori_pattern *p)
     return true;
 }
 
+// Make a frame that inherits hold its inherited fields itself and stop inheriting, so that a field
+// the new pattern does not have (fold angles, faces, names) or a derived field that is stale can
+// be removed without the parent's showing through.
+static bool any_face_name(const ori_pattern *p);
+
+static void detach_frame(ori_fold *doc, int frame)
+{
+    const ori__field *inh = own_field(doc, frame, "frame_inherit");
+    if (frame == 0 || !inh || !json_is_true(inh->json)) return;
+    int k = frame;
+    for (int depth = 0; depth <= MAX_INHERIT_DEPTH; ++depth) {
+        const ori__field *i = own_field(doc, k, "frame_inherit"), *parent = own_field(doc, k, "frame_parent");
+        if (k == 0 || !i || !json_is_true(i->json) || !parent) break;
+        k = (int)json_integer_value(parent->json);
+        const ori__frame *from = &doc->frames[k];
+        for (int j = 0; j < from->count; ++j) {
+            const ori__field *f = &from->fields[j];
+            if ((!f->json && !f->pk) || strncmp(f->key, "file_", 5) == 0 || strcmp(f->key, "frame_parent") == 0 ||
+                strcmp(f->key, "frame_inherit") == 0 || own_field(doc, frame, f->key))
+                continue;
+            json_t *json = f->json ? json_deep_copy(f->json) : NULL;
+            ori__packed *pk = f->pk ? ori__pk_copy(f->pk) : NULL;
+            ori__frame_set(&doc->frames[frame], f->key, json, pk); // (may move doc->frames[frame]'s fields: from is another frame)
+        }
+    }
+    ori__frame_set(&doc->frames[frame], "frame_inherit", json_false(), NULL);
+}
+
+// A field the frame sees only through inheritance.
+static bool inherited(const ori_fold *doc, int frame, const char *key)
+{
+    return !own_field(doc, frame, key) && frame_field(doc, frame, key);
+}
+
 ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, ori_error *error)
 {
     ORI_ASSERT(doc && p);
     if (frame < 0 || frame >= ori_fold_frame_count(doc))
         return ori__fail(error, ORI_ERR_RANGE, "frame %d does not exist", frame);
-    ori__frame *fr = &doc->frames[frame];
     const ori__field *old_coords = frame_field(doc, frame, "vertices_coords");
     bool three = ori_pattern_is_3d(p) || had_three_coords(old_coords);
     // Same topology? Then FOLD's derived index fields stay valid.
@@ -646,6 +679,14 @@ ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, 
                 same_faces(frame_field(doc, frame, "faces_vertices"), p);
     // (The old angles may be this frame's own field, replaced below: the new ones first.)
     ori__packed *angles = p->has_fold_angles ? pattern_angles_packed(p, frame_field(doc, frame, "edges_foldAngle")) : NULL;
+    // A field the pattern does not have, or a stale derived one, can only be removed from a frame
+    // that does not inherit it: such a frame first takes its inherited fields in.
+    bool detach = !same || (!p->has_fold_angles && inherited(doc, frame, "edges_foldAngle")) ||
+                  (p->face_count == 0 && inherited(doc, frame, "faces_vertices")) ||
+                  (!any_face_name(p) && inherited(doc, frame, ORI__KEY_FACES_NAME)) ||
+                  (p->tree_count == 0 && inherited(doc, frame, ORI__KEY_FACE_TREE));
+    if (detach) detach_frame(doc, frame);
+    ori__frame *fr = &doc->frames[frame];
     write_pattern_fields(fr, p, angles, three);
     if (!same)
         for (size_t i = 0; i < sizeof derived_fields / sizeof derived_fields[0]; ++i) ori__frame_del(fr, derived_fields[i]);

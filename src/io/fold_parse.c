@@ -139,6 +139,7 @@ static bool parse_string(parser *P)
     size_t start = P->i++;
     P->str.len = 0;
     ori__text_reserve(&P->str, 0);
+    P->str.data[0] = '\0'; // (reserve terminates only when it grows: "" must not read as the last string)
     for (;;) {
         // A run of plain bytes at once.
         size_t run = P->i;

@@ -608,6 +608,13 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         st = n > 0 ? pipeline(fixed, n, def, weld, &p, error) : ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
         ori__free(fixed);
     }
+    // Every line shorter than the weld (a drawing whose extent comes from a far-away stray line):
+    // nothing is left, which is no crease pattern.
+    if (st == ORI_OK && p->edge_count == 0)
+        st = ori__fail(error, ORI_ERR_DEGENERATE,
+                       "every line is shorter than the weld tolerance (%g of the drawing's size, %g): nothing is left; "
+                       "a smaller --tolerance keeps them",
+                       def->weld_rel, weld);
     // After the holes are gone: a separate piece inside a (connected) hole is fine.
     if (st == ORI_OK) st = check_islands(p, error);
     if (st != ORI_OK) {
