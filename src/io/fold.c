@@ -661,10 +661,13 @@ static void detach_frame(ori_fold *doc, int frame)
     ori__frame_set(&doc->frames[frame], "frame_inherit", json_false(), NULL);
 }
 
-// A field the frame sees only through inheritance.
+// Whether a frame inherits and one of the frames it inherits from has the field (it would show
+// through were the frame's own removed).
 static bool inherited(const ori_fold *doc, int frame, const char *key)
 {
-    return !own_field(doc, frame, key) && frame_field(doc, frame, key);
+    const ori__field *inh = own_field(doc, frame, "frame_inherit"), *parent = own_field(doc, frame, "frame_parent");
+    if (frame == 0 || !inh || !json_is_true(inh->json) || !parent) return false;
+    return frame_field(doc, (int)json_integer_value(parent->json), key) != NULL;
 }
 
 ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, ori_error *error)
