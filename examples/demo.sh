@@ -57,6 +57,13 @@ run 0 mv-count 100 70 50 40 30 70 --list
 run 0 check examples/patterns/degree4-vertex.fold
 run 1 check examples/patterns/non-flat-foldable-vertex.fold
 
+# --- io: finding faces and edges; drawings from other tools ----------------------------------
+step "6. Finding faces and edges by index and name; drawings in and out (io)"
+run 0 info "$OUT/open-corner.fold" --faces --edges
+run 0 convert "$OUT/open-corner.fold" "$OUT/open-corner-labelled.svg" --labels all
+run 0 convert tests/data/formats/bird.cp "$OUT/bird.fold"
+run 0 generate miura --rows 4 --cols 6 -o "$OUT/miura.svg"
+
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1

@@ -46,8 +46,12 @@ static void put_xy(ori__text *t, const char *xa, double x, const char *ya, doubl
 // middle) in a group the reader skips, drawn over the creases. Drawing frame: y down.
 static void write_labels(ori__text *t, const ori_pattern *p, const ori_svg_write_def *def, double side)
 {
+    // (a white outline under each label keeps it legible where it sits on a line)
     ori__text_puts(t, "<g id=\"orikin-labels\" font-family=\"sans-serif\" text-anchor=\"middle\" "
-                      "dominant-baseline=\"central\" stroke=\"none\">\n");
+                      "dominant-baseline=\"central\" stroke=\"#ffffff\" paint-order=\"stroke\" stroke-linejoin=\"round\" "
+                      "stroke-width=\"");
+    ori__text_real(t, side / 500.0);
+    ori__text_puts(t, "\">\n");
     if (def->label_faces) {
         ori__text_puts(t, "<g fill=\"#404040\" font-size=\"");
         ori__text_real(t, side / 40.0);
