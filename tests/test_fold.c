@@ -5,6 +5,9 @@
 #include <jansson.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "support.h"
 
@@ -763,4 +766,45 @@ Test(fold, a_pattern_written_into_an_inheriting_frame_replaces_what_it_inherited
     ori_pattern_destroy(q);
     ori_fold_destroy(doc);
     ori_fold_destroy(again);
+}
+
+// A file the machine's memory cannot load is refused up front, saying what it needs: a child
+// process limits its data segment (RLIMIT_DATA) below 6 times a 1 MB file.
+Test(fold, a_file_too_big_for_the_memory_is_refused_up_front)
+{
+    char *dir = test_tmpdir(), path[600];
+    snprintf(path, sizeof path, "%s/big.fold", dir);
+    ori_pattern *m = test_miura(100, 100, 1.0, 1.0, ORI_PI / 3, NULL);
+    ori_error err;
+    cr_assert_eq(ori_pattern_save_fold(m, NULL, 0, path, &err), ORI_OK);
+    ori_pattern_destroy(m);
+    fflush(NULL);
+    int pipefd[2];
+    cr_assert_eq(pipe(pipefd), 0);
+    pid_t pid = fork();
+    cr_assert_geq(pid, 0);
+    if (pid == 0) {
+        close(pipefd[0]);
+        struct rlimit rl = {4 << 20, 4 << 20}; // 4 MB: below 6 × the file (1 MB × 6)
+        setrlimit(RLIMIT_DATA, &rl);
+        ori_fold *doc = NULL;
+        ori_error e;
+        ori_status st = ori_fold_load_file(path, &doc, &e);
+        if (write(pipefd[1], e.message, strlen(e.message) + 1) < 0) _exit(9);
+        _exit(st == ORI_ERR_LIMIT ? 0 : 1);
+    }
+    close(pipefd[1]);
+    char msg[300] = "";
+    ssize_t n = read(pipefd[0], msg, sizeof msg - 1);
+    msg[n > 0 ? n : 0] = '\0';
+    close(pipefd[0]);
+    int status = 0;
+    cr_assert_eq(waitpid(pid, &status, 0), pid);
+    cr_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0, "child: %s", msg);
+    cr_assert(strstr(msg, "file needs about ") && strstr(msg, " MB of memory to load; 4.0 MB is available"), "%s", msg);
+    // without the limit it loads
+    ori_fold *doc = NULL;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    ori_fold_destroy(doc);
+    test_tmpdir_remove(dir);
 }
