@@ -190,14 +190,6 @@ static bool below(ori_v2 sl, ori_v2 sr, ori_v2 tl, ori_v2 tr)
     return o > 0;
 }
 
-// A uniform grid over the non-vertical edges, by columns and the rows each edge's y range
-// covers within a column (CSR: cell → edges).
-typedef struct edge_grid {
-    double x0, y0, cell;
-    int nx, ny;
-    int *start, *items;
-} edge_grid;
-
 static int grid_index(double v, double v0, double cell, int n)
 {
     double c = floor((v - v0) / cell);
@@ -205,11 +197,18 @@ static int grid_index(double v, double v0, double cell, int n)
     return c >= (double)n ? n - 1 : (int)c;
 }
 
-// Visit the cells of edge e (two passes: count, then fill).
-static void grid_edge_cells(const ori_pattern *p, const edge_grid *g, int e, int *count, int *fill)
+// All edges in a uniform grid of square cells, by columns and the rows an edge's y range covers
+// within a column (one row more on each side against rounding at the column's edges); CSR:
+// cell → edges. For the islands check and the nearest-line queries of gaps and diagnosis.
+typedef struct line_grid {
+    double x0, y0, cell;
+    int nx, ny;
+    int *start, *items;
+} line_grid;
+
+static void line_grid_cells(const ori_pattern *p, const line_grid *g, int e, int *count, int *fill)
 {
     ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
-    if (a.x == b.x) return; // vertical edges never lie above a point in the sense used here
     if (a.x > b.x) {
         ori_v2 t = a;
         a = b;
@@ -230,6 +229,41 @@ static void grid_edge_cells(const ori_pattern *p, const edge_grid *g, int e, int
     }
 }
 
+// About one cell per edge, no smaller than radius (a nearest-line query looks at the 3 × 3 cells
+// around its point) nor than a quarter of the mean edge length (a long edge then enters a few
+// cells per edge length, not hundreds).
+static void line_grid_build(const ori_pattern *p, double radius, line_grid *g)
+{
+    double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY, total = 0.0;
+    for (int v = 0; v < p->vertex_count; ++v) {
+        lx = fmin(lx, p->vertices[v].x), ly = fmin(ly, p->vertices[v].y);
+        hx = fmax(hx, p->vertices[v].x), hy = fmax(hy, p->vertices[v].y);
+    }
+    for (int e = 0; e < p->edge_count; ++e)
+        total += ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, p->edges[e].v[1]), ori__pattern_v2(p, p->edges[e].v[0])));
+    double w = hx - lx, h = hy - ly;
+    g->cell = fmax(fmax(radius, 0.25 * total / (p->edge_count + 1.0)), sqrt(fmax(w * h, 0.0) / (p->edge_count + 1.0)));
+    if (!(g->cell > 0.0) || !isfinite(g->cell)) g->cell = fmax(fmax(w, h), 1.0);
+    while ((floor(w / g->cell) + 1.0) * (floor(h / g->cell) + 1.0) > (double)(1 << 22)) g->cell *= 1.5;
+    g->x0 = lx, g->y0 = ly;
+    g->nx = (int)floor(w / g->cell) + 1, g->ny = (int)floor(h / g->cell) + 1;
+    size_t cells = (size_t)g->nx * (size_t)g->ny;
+    g->start = ori__calloc(cells + 1, sizeof(int));
+    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, g->start + 1, NULL);
+    for (size_t c = 0; c < cells; ++c) g->start[c + 1] += g->start[c];
+    g->items = ori__alloc(sizeof(int) * (size_t)(g->start[cells] ? g->start[cells] : 1));
+    int *fill = ori__alloc(sizeof(int) * cells);
+    memcpy(fill, g->start, sizeof(int) * cells);
+    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, NULL, fill);
+    ori__free(fill);
+}
+
+static void line_grid_free(line_grid *g)
+{
+    ori__free(g->start);
+    ori__free(g->items);
+}
+
 // A connected part of the drawing that lies inside a face of another part (a hole or a crease
 // touching nothing) cannot be expressed: FOLD faces are single cycles. Reject it, naming where.
 //
@@ -240,7 +274,7 @@ static void grid_edge_cells(const ori_pattern *p, const edge_grid *g, int e, int
 // edges are found in a grid walked upwards from q (about √E cells), not by testing every face.
 static ori_status check_islands(const ori_pattern *p, ori_error *error)
 {
-    int nv = p->vertex_count, ne = p->edge_count;
+    int nv = p->vertex_count;
     int *comp = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
     int parts = ori__pattern_parts(p, comp);
     if (parts <= 1 || p->face_count == 0) {
@@ -250,36 +284,15 @@ static ori_status check_islands(const ori_pattern *p, ori_error *error)
     // leftmost (then lowest) vertex of each component
     int *left = ori__alloc(sizeof(int) * (size_t)nv);
     for (int v = 0; v < nv; ++v) left[v] = ORI_NULL_INDEX;
-    double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY, total = 0.0;
     for (int v = 0; v < nv; ++v) {
         int r = comp[v];
         ori_v3 a = p->vertices[v];
         if (left[r] == ORI_NULL_INDEX || a.x < p->vertices[left[r]].x ||
             (a.x == p->vertices[left[r]].x && a.y < p->vertices[left[r]].y))
             left[r] = v;
-        lx = fmin(lx, a.x), ly = fmin(ly, a.y), hx = fmax(hx, a.x), hy = fmax(hy, a.y);
     }
-    for (int e = 0; e < ne; ++e)
-        total += ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, p->edges[e].v[1]), ori__pattern_v2(p, p->edges[e].v[0])));
-    // About one cell per edge, and cells no smaller than a quarter of the mean edge length (a
-    // long edge then enters a few cells per edge length, not hundreds).
-    edge_grid g;
-    double w = fmax(hx - lx, 0.0), h = fmax(hy - ly, 0.0), area = fmax(w * h, 0.0);
-    g.cell = fmax(sqrt(area / (ne + 1.0)), 0.25 * total / (ne + 1.0));
-    if (!(g.cell > 0.0) || !isfinite(g.cell)) g.cell = fmax(fmax(w, h), 1.0);
-    while ((floor(w / g.cell) + 1.0) * (floor(h / g.cell) + 1.0) > (double)(1 << 22)) g.cell *= 1.5;
-    g.x0 = lx, g.y0 = ly;
-    g.nx = (int)floor(w / g.cell) + 1, g.ny = (int)floor(h / g.cell) + 1;
-    size_t cells = (size_t)g.nx * (size_t)g.ny;
-    g.start = ori__calloc(cells + 1, sizeof(int));
-    for (int e = 0; e < ne; ++e) grid_edge_cells(p, &g, e, g.start + 1, NULL);
-    for (size_t c = 0; c < cells; ++c) g.start[c + 1] += g.start[c];
-    g.items = ori__alloc(sizeof(int) * (size_t)(g.start[cells] ? g.start[cells] : 1));
-    int *fill = ori__alloc(sizeof(int) * cells);
-    memcpy(fill, g.start, sizeof(int) * cells);
-    for (int e = 0; e < ne; ++e) grid_edge_cells(p, &g, e, NULL, fill);
-    ori__free(fill);
-
+    line_grid g;
+    line_grid_build(p, 0.0, &g);
     ori_status st = ORI_OK;
     for (int r = 0; r < nv && st == ORI_OK; ++r) {
         if (comp[r] != r || left[r] == ORI_NULL_INDEX) continue;
@@ -313,8 +326,7 @@ static ori_status check_islands(const ori_pattern *p, ori_error *error)
                               "cannot have holes; connect them to the rest with a crease",
                               q.x, q.y);
     }
-    ori__free(g.start);
-    ori__free(g.items);
+    line_grid_free(&g);
     ori__free(comp);
     ori__free(left);
     return st;
@@ -354,68 +366,9 @@ static ori_status pipeline(const ori_segment *segs, int count, const ori_import_
     return ORI_OK;
 }
 
-// All edges in a grid of square cells (for nearest-line queries around a point).
-typedef struct line_grid {
-    double x0, y0, cell;
-    int nx, ny;
-    int *start, *items;
-} line_grid;
-
-static void line_grid_cells(const ori_pattern *p, const line_grid *g, int e, int *count, int *fill)
-{
-    ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
-    if (a.x > b.x) {
-        ori_v2 t = a;
-        a = b;
-        b = t;
-    }
-    int c0 = grid_index(a.x, g->x0, g->cell, g->nx), c1 = grid_index(b.x, g->x0, g->cell, g->nx);
-    for (int cx = c0; cx <= c1; ++cx) {
-        double lo, hi;
-        ori__segment_y_range(a, b, g->x0 + cx * g->cell, g->x0 + (cx + 1) * g->cell, &lo, &hi);
-        int r0 = grid_index(lo, g->y0, g->cell, g->ny), r1 = grid_index(hi, g->y0, g->cell, g->ny);
-        for (int r = r0; r <= r1; ++r) {
-            int cell = cx * g->ny + r;
-            if (fill) g->items[fill[cell]++] = e;
-            else count[cell]++;
-        }
-    }
-}
-
-// Cells of size ≥ radius (a query looks at the 3 × 3 cells around its point), about one per edge.
-static void line_grid_build(const ori_pattern *p, double radius, line_grid *g)
-{
-    double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY;
-    for (int v = 0; v < p->vertex_count; ++v) {
-        lx = fmin(lx, p->vertices[v].x), ly = fmin(ly, p->vertices[v].y);
-        hx = fmax(hx, p->vertices[v].x), hy = fmax(hy, p->vertices[v].y);
-    }
-    double w = hx - lx, h = hy - ly;
-    g->cell = fmax(radius, sqrt(fmax(w * h, 0.0) / (p->edge_count + 1.0)));
-    if (!(g->cell > 0.0) || !isfinite(g->cell)) g->cell = fmax(fmax(w, h), 1.0);
-    while ((floor(w / g->cell) + 1.0) * (floor(h / g->cell) + 1.0) > (double)(1 << 22)) g->cell *= 1.5;
-    g->x0 = lx, g->y0 = ly;
-    g->nx = (int)floor(w / g->cell) + 1, g->ny = (int)floor(h / g->cell) + 1;
-    size_t cells = (size_t)g->nx * (size_t)g->ny;
-    g->start = ori__calloc(cells + 1, sizeof(int));
-    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, g->start + 1, NULL);
-    for (size_t c = 0; c < cells; ++c) g->start[c + 1] += g->start[c];
-    g->items = ori__alloc(sizeof(int) * (size_t)(g->start[cells] ? g->start[cells] : 1));
-    int *fill = ori__alloc(sizeof(int) * cells);
-    memcpy(fill, g->start, sizeof(int) * cells);
-    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, NULL, fill);
-    ori__free(fill);
-}
-
-static void line_grid_free(line_grid *g)
-{
-    ori__free(g->start);
-    ori__free(g->items);
-}
-
 // The closest point to x on an edge other than those at vertex v (within radius, which must not
 // exceed the grid's cell): its distance, or INFINITY. *at receives the point.
-static double nearest_line(const ori_pattern *p, const line_grid *g, int v, ori_v2 x, double radius, ori_v2 *at)
+static double nearest_line(const ori_pattern *p, const line_grid *g, int v, ori_v2 x, double radius, ori_v2 *at, int *edge)
 {
     int cx = grid_index(x.x, g->x0, g->cell, g->nx), cy = grid_index(x.y, g->y0, g->cell, g->ny);
     double best = INFINITY;
@@ -432,7 +385,7 @@ static double nearest_line(const ori_pattern *p, const line_grid *g, int v, ori_
                 t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
                 ori_v2 q = ori_v2_add(a, ori_v2_scale(d, t));
                 double dist = ori_v2_norm(ori_v2_sub(x, q));
-                if (dist < best) best = dist, *at = q;
+                if (dist < best) best = dist, *at = q, *edge = e;
             }
         }
     return best <= radius ? best : INFINITY;
@@ -440,7 +393,7 @@ static double nearest_line(const ori_pattern *p, const line_grid *g, int v, ori_
 
 // Where the ray from u through the dangling end v, continued by at most reach past v, first meets
 // another edge (not at u or v): the distance past v, or INFINITY.
-static double ray_hit(const ori_pattern *p, const line_grid *g, int u, int v, double reach, ori_v2 *at)
+static double ray_hit(const ori_pattern *p, const line_grid *g, int u, int v, double reach, ori_v2 *at, int *edge)
 {
     ori_v2 a = ori__pattern_v2(p, u), x = ori__pattern_v2(p, v), dir = ori_v2_sub(x, a);
     double len = ori_v2_norm(dir);
@@ -460,7 +413,8 @@ static double ray_hit(const ori_pattern *p, const line_grid *g, int u, int v, do
                 if (den == 0.0) continue;
                 ori_v2 q = ori_v2_sub(b0, x);
                 double t = ori_v2_cross(q, r) / den, s = ori_v2_cross(q, dir) / den;
-                if (t >= 0.0 && t <= reach && s >= 0.0 && s <= 1.0 && t < best) best = t, *at = ori_v2_add(x, ori_v2_scale(dir, t));
+                if (t >= 0.0 && t <= reach && s >= 0.0 && s <= 1.0 && t < best)
+                    best = t, *at = ori_v2_add(x, ori_v2_scale(dir, t)), *edge = e;
             }
         }
     return best;
@@ -501,14 +455,24 @@ static ori_segment *close_gaps(const ori_pattern *p, double gap, int *n, int *cl
             int v = ed->v[k], u = ed->v[1 - k];
             if (deg[v] != 1) continue;
             ori_v2 at;
+            int hit = ORI_NULL_INDEX;
             double len = ori_v2_norm(ori_v2_sub(end[k], end[1 - k]));
-            if (deg[u] > 1 && len <= gap && nearest_line(p, &g, v, end[k], gap, &at) <= gap) {
+            if (deg[u] > 1 && len <= gap && nearest_line(p, &g, v, end[k], gap, &at, &hit) <= gap) {
                 drop = true; // an overshoot: its free end is as close to a line as its length
                 *largest = fmax(*largest, len);
             } else {
-                double d = ray_hit(p, &g, u, v, gap, &at);
-                if (!(d <= gap)) d = nearest_line(p, &g, v, end[k], gap, &at);
+                double d = ray_hit(p, &g, u, v, gap, &at, &hit);
+                if (!(d <= gap)) d = nearest_line(p, &g, v, end[k], gap, &at, &hit);
                 if (!(d <= gap)) continue;
+                // Within the gap of an end of the line it meets, it meets at that end (as drawn:
+                // the lines touch there), not a sliver away from it.
+                for (int j = 0; j < 2; ++j) {
+                    ori_v2 c = ori__pattern_v2(p, p->edges[hit].v[j]);
+                    if (ori_v2_norm(ori_v2_sub(c, at)) <= gap && ori_v2_norm(ori_v2_sub(c, end[k])) <= 2.0 * gap) {
+                        at = c;
+                        break;
+                    }
+                }
                 end[k] = at;
                 *largest = fmax(*largest, d);
             }
@@ -545,7 +509,8 @@ static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
         if (stats->dangling++ == 0) stats->dangling_example = v;
         if (!grid) line_grid_build(p, reach, &g), grid = true;
         ori_v2 at;
-        double d = nearest_line(p, &g, v, ori__pattern_v2(p, v), reach, &at);
+        int hit;
+        double d = nearest_line(p, &g, v, ori__pattern_v2(p, v), reach, &at, &hit);
         if (d <= reach) stats->dangling_gap_rel = fmax(stats->dangling_gap_rel, d / diag);
     }
     if (grid) line_grid_free(&g);
@@ -595,8 +560,8 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
     ori_status st = pipeline(segs, count, def, weld, &p, error);
     int closed = 0;
     double largest = 0.0;
-    // (A joined end may leave a sliver where it meets its line near a vertex: a few rounds.)
-    for (int round = 0; round < 4 && st == ORI_OK && gap_rel * diag > weld; ++round) {
+    // (A joined end may still leave a sliver where it meets its line: later rounds drop it.)
+    for (int round = 0; round < 3 && st == ORI_OK && gap_rel * diag > weld; ++round) {
         int n, k;
         double big;
         ori_segment *fixed = close_gaps(p, gap_rel * diag, &n, &k, &big);
