@@ -330,8 +330,10 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
         if (!(v = cli_option_once(cmd, argc, argv, i, seen))) return -CLI_EXIT_USAGE;
         if (strcmp(v, "auto") == 0) {
             in->import.gap_rel = ORI_IMPORT_GAP_AUTO;
-        } else if (!cli_parse_double(v, &in->import.gap_rel) || !(in->import.gap_rel >= 0.0 && in->import.gap_rel < 0.01)) {
-            cli_usage(cmd, "--gaps needs auto or a number in [0, 0.01) (a fraction of the drawing's size), got '%s'", v);
+        } else if (!cli_parse_double(v, &in->import.gap_rel) ||
+                   !(in->import.gap_rel >= 0.0 && in->import.gap_rel <= ORI_IMPORT_GAP_MAX_REL)) {
+            cli_usage(cmd, "--gaps needs auto or a number in [0, %g] (a fraction of the drawing's size), got '%s'",
+                      ORI_IMPORT_GAP_MAX_REL, v);
             return -CLI_EXIT_USAGE;
         }
         if (!in->import_option) in->import_option = a;
@@ -370,12 +372,12 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
         ori_v3 x = ori_pattern_vertex(p, s->dangling_example);
         fprintf(stderr, "orikin %s: %s: warning: %d crease end(s) touch nothing (e.g. vertex %d at (%g, %g))", cmd, path,
                 s->dangling, s->dangling_example, x.x, x.y);
-        if (s->dangling_gap_rel > 0.0 && s->dangling_gap_rel < 0.01)
+        if (s->dangling_gap_rel > 0.0 && s->dangling_gap_rel * 1.05 <= ORI_IMPORT_GAP_MAX_REL)
             fprintf(stderr, "; they miss another line by up to %.2g of the drawing's size: --gaps %.2g would join them\n",
                     s->dangling_gap_rel, s->dangling_gap_rel * 1.05);
         else
-            fprintf(stderr, "; no line is within 1%% of the drawing's size (a crease must end on another line or the "
-                            "boundary)\n");
+            fprintf(stderr, "; no line is within %g of the drawing's size (a crease must end on another line or the "
+                            "boundary)\n", ORI_IMPORT_GAP_MAX_REL);
     }
     if (s->parts > 1) {
         ori_v3 x = ori_pattern_vertex(p, s->part_example);

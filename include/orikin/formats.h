@@ -45,7 +45,7 @@ ORI_API const char *ori_format_name(ori_format format);
 /// Import parameters; get them from ori_default_import_def().
 typedef struct ori_import_def {
     double weld_rel;       ///< end points (and points on segments) closer than weld_rel × the drawing's diagonal are one point; > 0, default ORI_TOL_IMPORT_WELD_REL
-    double gap_rel;        ///< a crease end touching nothing (dangling) within gap_rel × the diagonal of another line is extended onto it (a dangling piece shorter than that, an overshoot, is dropped); 0 = off; default ORI_IMPORT_GAP_AUTO: the drawing's line width where the reader knows it (SVG stroke-width: lines that touch on the page are joined), else off
+    double gap_rel;        ///< a crease end touching nothing (dangling) within gap_rel × the diagonal of another line is extended onto it (a dangling piece shorter than that, an overshoot, is dropped); 0 = off, at most ORI_IMPORT_GAP_MAX_REL; default ORI_IMPORT_GAP_AUTO: the drawing's line width where the reader knows it (SVG stroke-width: lines that touch on the page are joined; capped to ORI_IMPORT_GAP_MAX_REL), else off
     bool merge_collinear;  ///< remove vertices joining just two collinear edges of the same assignment and angle (drawing artefacts); default true
     bool remove_holes;     ///< drop faces bounded only by B/C edges that have paper on their other side (holes); default true
     int internal_value;    ///< set by ori_default_import_def; do not change
@@ -68,7 +68,7 @@ typedef struct ori_import_stats {
     double largest_gap_rel;  ///< the largest gap closed, × the diagonal
     int dangling;            ///< crease ends still touching nothing after the import (degree-1 vertices)
     int dangling_example;    ///< one of them (vertex index), ORI_NULL_INDEX when none
-    double dangling_gap_rel; ///< how far the farthest of them is from another line, × the diagonal (0 when none within 1 %)
+    double dangling_gap_rel; ///< how far the farthest of them is from another line, × the diagonal (0 when none within ORI_IMPORT_GAP_MAX_REL)
     int parts;               ///< separate pieces of the result (connected components; 1 is one sheet)
     int part_example;        ///< a vertex of a piece other than the one holding vertex 0, ORI_NULL_INDEX when one piece
 } ori_import_stats;

@@ -151,4 +151,14 @@
 /// Beyond it the angle is refused. Radians (files hold degrees: 5.7e-7°).
 #define ORI_TOL_FILE_ANGLE_RAD 1e-8
 
+/// The widest gap an import closes between a crease end and another line (ori_import_def
+/// gap_rel is capped to it: a line drawn wider than this is no gap to hide), and how far the
+/// diagnosis looks for the line a dangling crease end missed. Unitless (× the drawing's diagonal).
+#define ORI_IMPORT_GAP_MAX_REL 0.01
+
+/// Library messages show a number rounded to 6 digits (%g) only when that is within this of the
+/// value relative to its size, else with more digits, so a value just outside a bound is never
+/// shown as the bound. Unitless (4 ulps).
+#define ORI_TOL_MESSAGE_REL 8.881784197001252e-16
+
 #endif

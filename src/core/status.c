@@ -1,7 +1,6 @@
 // Status names and messages from the one X-macro table; error records.
 #include "core_internal.h"
 
-#include <float.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -77,7 +76,7 @@ static void format_exact_g(char *out, size_t size, const char *spec, size_t spec
         if (prec > 6) snprintf(f + spec_len - 1, sizeof f - (spec_len - 1), ".%d%c", prec, spec[spec_len - 1]);
         if (star_width) snprintf(out, size, f, width, x);
         else snprintf(out, size, f, x);
-        if (!isfinite(x) || fabs(strtod(out, NULL) - x) <= 4.0 * DBL_EPSILON * fabs(x)) return;
+        if (!isfinite(x) || fabs(strtod(out, NULL) - x) <= ORI_TOL_MESSAGE_REL * fabs(x)) return;
     }
 }
 

@@ -492,7 +492,7 @@ static ori_segment *close_gaps(const ori_pattern *p, double gap, int *n, int *cl
 }
 
 // Dangling ends and separate pieces of the result, with examples and how far the dangling ends
-// are from another line (up to 1 % of the diagonal).
+// are from another line (up to ORI_IMPORT_GAP_MAX_REL of the diagonal).
 static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
 {
     int nv = p->vertex_count;
@@ -502,7 +502,7 @@ static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
     stats->dangling_example = ORI_NULL_INDEX;
     stats->dangling_gap_rel = 0.0;
     line_grid g = {0, 0, 0, 0, 0, NULL, NULL};
-    double reach = 0.01 * diag;
+    double reach = ORI_IMPORT_GAP_MAX_REL * diag;
     bool grid = false;
     for (int v = 0; v < nv; ++v) {
         if (deg[v] != 1) continue;
@@ -538,8 +538,8 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
     ori_error_clear(error);
     if (!(def->weld_rel > 0.0 && def->weld_rel < 1.0))
         return ori__fail(error, ORI_ERR_ARGUMENT, "weld tolerance %g is outside (0, 1)", def->weld_rel);
-    if (!(def->gap_rel == ORI_IMPORT_GAP_AUTO || (def->gap_rel >= 0.0 && def->gap_rel < 1.0)))
-        return ori__fail(error, ORI_ERR_ARGUMENT, "gap %g is outside [0, 1)", def->gap_rel);
+    if (!(def->gap_rel == ORI_IMPORT_GAP_AUTO || (def->gap_rel >= 0.0 && def->gap_rel <= ORI_IMPORT_GAP_MAX_REL)))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "gap %g is outside [0, %g]", def->gap_rel, ORI_IMPORT_GAP_MAX_REL);
     if (count == 0) return ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
     ori_v2 lo = segs[0].a, hi = segs[0].a;
     for (int i = 0; i < count; ++i) {
@@ -555,7 +555,7 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
     if (!(diag > 0.0) || !isfinite(diag)) return ori__fail(error, ORI_ERR_DEGENERATE, "the drawing has no extent");
     double weld = def->weld_rel * diag;
     double gap_rel = def->gap_rel != ORI_IMPORT_GAP_AUTO ? def->gap_rel : stroke_width > 0.0 ? stroke_width / diag : 0.0;
-    if (!(gap_rel < 0.01)) gap_rel = 0.01; // (line widths beyond 1 % of the drawing are not gaps)
+    if (!(gap_rel <= ORI_IMPORT_GAP_MAX_REL)) gap_rel = ORI_IMPORT_GAP_MAX_REL; // (a wider line is no gap)
     ori_pattern *p = NULL;
     ori_status st = pipeline(segs, count, def, weld, &p, error);
     int closed = 0;
