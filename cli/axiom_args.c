@@ -44,6 +44,7 @@ int axiom_parse_option(const char *cmd, int argc, char **argv, int *i, ori_axiom
     int bit = strcmp(a, "--p1") == 0 ? AXIOM_P1 : strcmp(a, "--p2") == 0 ? AXIOM_P2
             : strcmp(a, "--l1") == 0 ? AXIOM_L1 : strcmp(a, "--l2") == 0 ? AXIOM_L2 : 0;
     if (!bit) return 0;
+    if (*given & bit) return -cli_usage(cmd, "%s given twice (it takes one value)", a);
     const char *v = cli_option_value(cmd, argc, argv, i);
     if (!v) return -CLI_EXIT_USAGE;
     double x[4];

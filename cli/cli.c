@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <orikin/formats.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -141,7 +142,7 @@ int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, or
     if (frame < 0 || frame >= frames) {
         ori_fold_destroy(*doc);
         *doc = NULL;
-        return cli_input_fail(cmd, path, "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
+        return cli_value_fail(cmd, path, "--frame", "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
     }
     ori_build_def def = ori_default_build_def();
     def.weld = weld;
@@ -173,11 +174,18 @@ void cli_print_json(json_t *value)
     }
 }
 
+static const char *finishing_command = NULL;
+
+void cli_set_command(const char *cmd) { finishing_command = cmd; }
+
 int cli_finish(int code)
 {
+    errno = 0;
     if (fflush(stdout) != 0 || ferror(stdout)) {
-        fprintf(stderr, "orikin: error writing the output\n");
-        return CLI_EXIT_INTERNAL;
+        int e = errno;
+        fprintf(stderr, "orikin%s%s: stdout: cannot write: %s\n", finishing_command ? " " : "",
+                finishing_command ? finishing_command : "", e ? strerror(e) : "output error");
+        return CLI_EXIT_INPUT;
     }
     return code;
 }
@@ -185,8 +193,15 @@ int cli_finish(int code)
 int cli_write_pattern(const char *cmd, ori_fold *doc, const ori_pattern *p, const char *out)
 {
     ori_error err;
+    if (!cli_is_stdout(out)) {
+        ori_format f = ori_format_from_path(out);
+        if (f == ORI_FORMAT_SVG || f == ORI_FORMAT_CP || f == ORI_FORMAT_OPX) {
+            if (ori_export_file(p, f, NULL, out, &err) != ORI_OK) return cli_input_error(cmd, out, &err);
+            return CLI_EXIT_OK;
+        }
+    }
     if (ori_fold_set_pattern(doc, 0, p, &err) != ORI_OK) return cli_input_error(cmd, out ? out : "-", &err);
-    if (!out) {
+    if (cli_is_stdout(out)) {
         char *text = ori_fold_to_string(doc);
         fputs(text, stdout);
         ori_buffer_free(text);
@@ -218,4 +233,229 @@ int cli_find_face(const char *cmd, const char *file, const ori_pattern *p, const
     }
     *face = idx;
     return CLI_EXIT_OK;
+}
+
+// --- conventions shared by every command ---------------------------------------------------------
+
+static const char *canonical(const char *name) { return strcmp(name, "-o") == 0 ? "--output" : name; }
+
+bool cli_once(const char *cmd, cli_seen *seen, const char *name)
+{
+    const char *c = canonical(name);
+    for (int k = 0; k < seen->count; ++k)
+        if (strcmp(seen->names[k], c) == 0) {
+            cli_usage(cmd, "%s given twice (it takes one value)", name);
+            return false;
+        }
+    if (seen->count < (int)(sizeof seen->names / sizeof seen->names[0])) seen->names[seen->count++] = c;
+    return true;
+}
+
+const char *cli_option_once(const char *cmd, int argc, char **argv, int *i, cli_seen *seen)
+{
+    if (!cli_once(cmd, seen, argv[*i])) return NULL;
+    return cli_option_value(cmd, argc, argv, i);
+}
+
+int cli_option_frame_once(const char *cmd, int argc, char **argv, int *i, cli_seen *seen, int *frame)
+{
+    if (!cli_once(cmd, seen, argv[*i])) return CLI_EXIT_USAGE;
+    return cli_option_frame(cmd, argc, argv, i, frame);
+}
+
+int cli_value_fail(const char *cmd, const char *file, const char *option, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    if (file) fprintf(stderr, "orikin %s: %s: %s: ", cmd, file, option);
+    else fprintf(stderr, "orikin %s: %s: ", cmd, option);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return CLI_EXIT_USAGE;
+}
+
+int cli_find_face_option(const char *cmd, const char *file, const ori_pattern *p, const char *option, const char *spec,
+                         int *face)
+{
+    int idx;
+    if (cli_parse_int(spec, &idx)) {
+        if (idx < 0 || idx >= ori_pattern_face_count(p))
+            return cli_value_fail(cmd, file, option, "face %d does not exist (faces 0 to %d)", idx,
+                                  ori_pattern_face_count(p) - 1);
+        *face = idx;
+        return CLI_EXIT_OK;
+    }
+    idx = ori_pattern_find_face_by_name(p, spec);
+    if (idx == ORI_NULL_INDEX) {
+        if (ori_pattern_find_tree_node(p, spec) != ORI_NULL_INDEX)
+            return cli_value_fail(cmd, file, option, "%s is not a folding element any more (it was split; see orikin tree)",
+                                  spec);
+        return cli_value_fail(cmd, file, option, "no face named %s (see orikin info --faces %s)", spec, file);
+    }
+    *face = idx;
+    return CLI_EXIT_OK;
+}
+
+// --- reading a pattern ---------------------------------------------------------------------------
+
+void cli_input_init(cli_input *in)
+{
+    memset(in, 0, sizeof *in);
+    in->import = ori_default_import_def();
+}
+
+int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *in, cli_seen *seen)
+{
+    const char *a = argv[*i], *v;
+    if (strcmp(a, "--frame") == 0) {
+        if (cli_option_frame_once(cmd, argc, argv, i, seen, &in->frame) != CLI_EXIT_OK) return -CLI_EXIT_USAGE;
+        in->frame_given = true;
+        return 1;
+    }
+    if (strcmp(a, "--weld") == 0) {
+        in->weld = true;
+        return 1;
+    }
+    if (strcmp(a, "--tolerance") == 0) {
+        if (!(v = cli_option_once(cmd, argc, argv, i, seen))) return -CLI_EXIT_USAGE;
+        if (!cli_parse_double(v, &in->import.weld_rel) || !(in->import.weld_rel > 0.0 && in->import.weld_rel < 1.0)) {
+            cli_usage(cmd, "--tolerance needs a number in (0, 1) (a fraction of the drawing's size), got '%s'", v);
+            return -CLI_EXIT_USAGE;
+        }
+        if (!in->import_option) in->import_option = a;
+        return 1;
+    }
+    if (strcmp(a, "--gaps") == 0) {
+        if (!(v = cli_option_once(cmd, argc, argv, i, seen))) return -CLI_EXIT_USAGE;
+        if (strcmp(v, "auto") == 0) {
+            in->import.gap_rel = ORI_IMPORT_GAP_AUTO;
+        } else if (!cli_parse_double(v, &in->import.gap_rel) ||
+                   !(in->import.gap_rel >= 0.0 && in->import.gap_rel <= ORI_IMPORT_GAP_MAX_REL)) {
+            cli_usage(cmd, "--gaps needs auto or a number in [0, %g] (a fraction of the drawing's size), got '%s'",
+                      ORI_IMPORT_GAP_MAX_REL, v);
+            return -CLI_EXIT_USAGE;
+        }
+        if (!in->import_option) in->import_option = a;
+        return 1;
+    }
+    if (strcmp(a, "--keep-collinear") == 0 || strcmp(a, "--keep-holes") == 0) {
+        if (a[7] == 'c') in->import.merge_collinear = false;
+        else in->import.remove_holes = false;
+        if (!in->import_option) in->import_option = a;
+        return 1;
+    }
+    return 0;
+}
+
+// What the import of a drawing found, as warnings that say what would fix it.
+static void import_warnings(const char *cmd, const char *path, const ori_pattern *p, const ori_import_stats *s)
+{
+    if (s->ignored_elements > 0 && s->ignored_colour[0])
+        fprintf(stderr,
+                "orikin %s: %s: warning: %d element(s) ignored: stroke \"%s\" (and others) is not a crease colour "
+                "(#000000 B, #ff0000 M, #0000ff V, #00ff00 C, #ffff00 F, #ff00ff U)\n",
+                cmd, path, s->ignored_elements, s->ignored_colour);
+    else if (s->ignored_elements > 0)
+        fprintf(stderr, "orikin %s: %s: warning: %d auxiliary or cut-model line(s) skipped\n", cmd, path, s->ignored_elements);
+    if (s->unsupported_elements > 0)
+        fprintf(stderr, "orikin %s: %s: warning: %d element(s) orikin does not read (use, image, text…) skipped\n", cmd,
+                path, s->unsupported_elements);
+    if (!p) return;
+    if (s->gaps_closed > 0)
+        fprintf(stderr,
+                "orikin %s: %s: note: joined %d crease end(s) that stopped short of a line by up to %.2g of the drawing's "
+                "size (%.3g), within the width its lines are drawn with (%.3g): --gaps 0 keeps them apart\n",
+                cmd, path, s->gaps_closed, s->largest_gap_rel, s->largest_gap_rel / s->gap_rel * s->stroke_width,
+                s->stroke_width);
+    if (s->dangling > 0) {
+        ori_v3 x = ori_pattern_vertex(p, s->dangling_example);
+        fprintf(stderr, "orikin %s: %s: warning: %d crease end(s) touch nothing (e.g. vertex %d at (%g, %g))", cmd, path,
+                s->dangling, s->dangling_example, x.x, x.y);
+        if (s->dangling_gap_rel > 0.0 && s->dangling_gap_rel * 1.05 <= ORI_IMPORT_GAP_MAX_REL)
+            fprintf(stderr, "; they miss another line by up to %.2g of the drawing's size: --gaps %.2g would join them\n",
+                    s->dangling_gap_rel, s->dangling_gap_rel * 1.05);
+        else
+            fprintf(stderr, "; no line is within %g of the drawing's size (a crease must end on another line or the "
+                            "boundary)\n", ORI_IMPORT_GAP_MAX_REL);
+    }
+    if (s->parts > 1) {
+        ori_v3 x = ori_pattern_vertex(p, s->part_example);
+        fprintf(stderr,
+                "orikin %s: %s: warning: the drawing is %d separate pieces (vertex %d at (%g, %g) is not connected to "
+                "vertex 0); to fold it as one sheet, draw the lines that join them, or widen --tolerance or --gaps if "
+                "they should touch\n",
+                cmd, path, s->parts, s->part_example, x.x, x.y);
+    }
+}
+
+int cli_input_load(const char *cmd, const char *path, cli_input *in, ori_fold **doc, ori_pattern **pattern)
+{
+    *doc = NULL;
+    *pattern = NULL;
+    ori_format f = ori_format_from_path(path);
+    in->drawing = f == ORI_FORMAT_SVG || f == ORI_FORMAT_OPX || f == ORI_FORMAT_CP;
+    if (in->drawing && (in->frame_given || in->weld))
+        return cli_usage(cmd, "%s applies to .fold input, not to %s", in->frame_given ? "--frame" : "--weld", path);
+    if (!in->drawing && in->import_option)
+        return cli_usage(cmd, "%s applies to drawing input (.svg, .opx, .cp), not to %s", in->import_option, path);
+    if (!in->drawing) return cli_load_pattern(cmd, path, in->frame, in->weld, doc, pattern);
+    ori_error err;
+    ori_status st = ori_import_file(path, f, &in->import, pattern, &in->stats, &err);
+    if (st == ORI_OK || st == ORI_ERR_NOT_FOUND) import_warnings(cmd, path, *pattern, &in->stats); // (why nothing was found)
+    if (st != ORI_OK) return cli_input_error(cmd, path, &err);
+    *doc = ori_fold_create();
+    ori_fold_set_custom(*doc, 0, "frame_classes", "[\"creasePattern\"]", NULL);
+    return CLI_EXIT_OK;
+}
+
+// --- writing a pattern and the summary -------------------------------------------------------------
+
+bool cli_is_stdout(const char *out) { return !out || strcmp(out, "-") == 0; }
+
+int cli_write_frame_pattern(const char *cmd, ori_fold **doc, const cli_input *in, const ori_pattern *p, const char *out)
+{
+    if (in->frame_given && !in->drawing) {
+        ori_fold *x = NULL;
+        ori_error err;
+        if (ori_fold_extract_frame(*doc, in->frame, &x, &err) != ORI_OK) return cli_input_error(cmd, "-", &err);
+        ori_fold_destroy(*doc);
+        *doc = x;
+    }
+    return cli_write_pattern(cmd, *doc, p, out);
+}
+
+int cli_check_json_output(const char *cmd, const char *out, bool json)
+{
+    if (json && cli_is_stdout(out))
+        return cli_usage(cmd, "--json needs -o FILE (without it the FOLD text goes to stdout)");
+    return CLI_EXIT_OK;
+}
+
+void cli_json_counts(json_t *obj, const ori_pattern *p)
+{
+    json_object_set_new(obj, "vertices", json_integer(ori_pattern_vertex_count(p)));
+    json_object_set_new(obj, "edges", json_integer(ori_pattern_edge_count(p)));
+    json_object_set_new(obj, "faces", json_integer(ori_pattern_face_count(p)));
+    json_t *by = json_object();
+    for (int a = 0; a < ORI_ASSIGN_COUNT; ++a) {
+        int n = ori_pattern_count_assignment(p, (ori_assignment)a);
+        char key[2] = {ori_assignment_to_char((ori_assignment)a), '\0'};
+        if (n) json_object_set_new(by, key, json_integer(n));
+    }
+    json_object_set_new(obj, "edges_by_assignment", by);
+}
+
+void cli_print_summary(bool json, json_t *obj, const char *fmt, ...)
+{
+    if (json) {
+        cli_print_json(obj);
+        return;
+    }
+    json_decref(obj);
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    putchar('\n');
 }

@@ -55,20 +55,109 @@ const char *cli_option_value(const char *cmd, int argc, char **argv, int *i);
 int cli_option_frame(const char *cmd, int argc, char **argv, int *i, int *frame);
 
 // Load a FOLD file and the pattern of a frame; on failure print the error and return
-// CLI_EXIT_INPUT (with *doc and *pattern NULL), else CLI_EXIT_OK.
+// CLI_EXIT_INPUT (with *doc and *pattern NULL), else CLI_EXIT_OK. A frame the file does not have
+// is an out-of-range command-line value: "orikin CMD: FILE: --frame N: frame N does not exist
+// (frames 0 to M)", CLI_EXIT_USAGE.
 int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, ori_fold **doc,
                      ori_pattern **pattern);
 
 // Write the pattern into frame 0 of doc and save the document to out atomically, or print the
-// FOLD text on stdout when out is NULL. Prints the error and returns its exit code on failure.
+// FOLD text on stdout when out is NULL or "-"; an out ending in .svg, .cp or .opx is an export
+// of the pattern in that format. Prints the error and returns its exit code on failure (3).
 int cli_write_pattern(const char *cmd, ori_fold *doc, const ori_pattern *pattern, const char *out);
 // A face given by name ("Obj12") or FOLD index ("3"); prints an input error naming the file
 // and returns CLI_EXIT_INPUT when there is none, else CLI_EXIT_OK with *face set.
 int cli_find_face(const char *cmd, const char *file, const ori_pattern *pattern, const char *spec, int *face);
 
+// --- conventions shared by every command (docs/conventions.md) --------------------------------
+
+// A single-valued option given twice is a usage error. Declare `cli_seen seen = {0};` in the
+// command and guard each single-valued option with cli_once (or take its value with
+// cli_option_once); flags (--json) may repeat.
+//     } else if (strcmp(argv[i], "--fix") == 0) {
+//         if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+typedef struct cli_seen {
+    const char *names[48];
+    int count;
+} cli_seen;
+// Record option name ("-o" counts as "--output"); false after the usage error "NAME given
+// twice" when it was already given.
+bool cli_once(const char *cmd, cli_seen *seen, const char *name);
+// The value of the single-valued option argv[*i] (advancing *i), or NULL after a usage message
+// when the value is missing or the option was already given.
+const char *cli_option_once(const char *cmd, int argc, char **argv, int *i, cli_seen *seen);
+// cli_option_frame for a --frame given at most once.
+int cli_option_frame_once(const char *cmd, int argc, char **argv, int *i, cli_seen *seen, int *frame);
+
+// A command-line value out of range for the file it refers to (a face, edge or frame the file
+// does not have) or for what it constructs (file NULL): "orikin CMD: FILE: OPTION: message" on
+// stderr, one line; returns CLI_EXIT_USAGE.
+int cli_value_fail(const char *cmd, const char *file, const char *option, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+// A face given by name ("Obj12") or FOLD index ("3") for option (e.g. "--face"): CLI_EXIT_OK
+// with *face set, else CLI_EXIT_USAGE after cli_value_fail (a face the file does not have).
+int cli_find_face_option(const char *cmd, const char *file, const ori_pattern *pattern, const char *option,
+                         const char *spec, int *face);
+
+// --- reading a pattern: FOLD, SVG, OPX and CP, one set of options -----------------------------
+
+// The input options of every command that reads a pattern (CLI_INPUT_HELP lists them):
+// --frame N and --weld (FOLD), --tolerance REL, --gaps REL, --keep-collinear and --keep-holes
+// (drawings). Initialise with cli_input_init.
+typedef struct cli_input {
+    int frame;
+    bool frame_given, weld;
+    ori_import_def import;
+    const char *import_option; // the first drawing-only option given (NULL: none)
+    ori_import_stats stats;    // after cli_input_load of a drawing: what the import found
+    bool drawing;              // after cli_input_load: the file was a drawing (SVG, OPX, CP)
+} cli_input;
+void cli_input_init(cli_input *in);
+// When argv[*i] is an input option: parse it (advancing *i) and return 1; 0 when it is not one;
+// -CLI_EXIT_USAGE after a usage message (bad value, given twice).
+int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *in, cli_seen *seen);
+// Load FILE by its extension: a FOLD document and the pattern of --frame, or a drawing (SVG,
+// OPX, CP) planarised into a new FOLD document (frame 0, frame_classes creasePattern), with its
+// warnings on stderr: elements skipped, gaps closed, crease ends left dangling, separate pieces
+// (each with an example and what would fix it). Options that do not apply to the file's kind
+// are usage errors. Returns CLI_EXIT_OK, or the exit code after printing the error.
+int cli_input_load(const char *cmd, const char *path, cli_input *in, ori_fold **doc, ori_pattern **pattern);
+// The help lines of the input options, for a command's -h text.
+#define CLI_INPUT_HELP                                                                                     \
+    "  --frame N          FOLD input: frame to read (0 = top level, k = file_frames[k-1]); default 0\n"    \
+    "  --weld             FOLD input: merge vertices closer than the length tolerance\n"                  \
+    "  --tolerance REL    drawing input: weld points closer than REL x the drawing's size (default\n"     \
+    "                     5e-5)\n"                                                                        \
+    "  --gaps REL|auto    drawing input: join crease ends within REL x the drawing's size of another\n"   \
+    "                     line (auto, the default: the width the lines are drawn with; 0: off)\n"        \
+    "  --keep-collinear   drawing input: keep vertices that only join two collinear edges\n"             \
+    "  --keep-holes       drawing input: keep faces bounded only by boundary lines (holes)\n"
+
+// --- writing a pattern and the summary ----------------------------------------------------------
+
+// cli_write_pattern for a pattern read with cli_input_load: with --frame N the output is that
+// frame alone (ori_fold_extract_frame: *doc is replaced), as convert --frame writes it.
+int cli_write_frame_pattern(const char *cmd, ori_fold **doc, const cli_input *in, const ori_pattern *pattern,
+                            const char *out);
+
+// Commands that produce a pattern (new, apply, edit, crease, convert, generate) write it to
+// -o FILE and print a one-line summary on stdout, or with --json the summary as one JSON object;
+// without -o (or with -o -) the FOLD text goes to stdout and nothing else. --json needs -o: the
+// check, CLI_EXIT_USAGE after a message, else CLI_EXIT_OK.
+int cli_check_json_output(const char *cmd, const char *out, bool json);
+// Whether out means stdout (NULL or "-").
+bool cli_is_stdout(const char *out);
+// The counts of a pattern into a JSON object: vertices, edges, faces, edges_by_assignment.
+void cli_json_counts(json_t *obj, const ori_pattern *pattern);
+// Print the summary: with json, obj as compact JSON (released); else the text line (obj released).
+void cli_print_summary(bool json, json_t *obj, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
 // Print a jansson value as JSON (shortest exact numbers) on stdout and release it.
 void cli_print_json(json_t *value);
-// Flush stdout; returns CLI_EXIT_INTERNAL when that fails (full disk, closed pipe), else code.
+// Flush stdout; when that fails (full disk, closed pipe) print "orikin CMD: stdout: cannot
+// write: why" and return CLI_EXIT_INPUT (3, as for a file that cannot be written), else code.
 int cli_finish(int code);
+// The command name cli_finish puts in its message (main sets it before running a command).
+void cli_set_command(const char *cmd);
 
 #endif

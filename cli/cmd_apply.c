@@ -11,66 +11,96 @@ static void list_builtins(void)
         printf("%-16s %s\n", ori_collection_builtin_name(i), ori_collection_builtin_summary(i));
 }
 
-static void report(const ori_pattern *p, int node_before, const char *face_name, const ori_apply_result *r)
+// The summary: text line(s) or one JSON object.
+static void report(bool json, const char *out, const ori_pattern *p, int node_before, const char *face_name,
+                   const char *pattern, const ori_apply_result *r)
 {
-    printf("applied to %s: %d crease piece%s, %d face split%s, %d new edge%s (edges %d to %d)\n", face_name,
-           r->segments, r->segments == 1 ? "" : "s", r->faces_split, r->faces_split == 1 ? "" : "s", r->edges_added,
-           r->edges_added == 1 ? "" : "s", r->first_edge, ori_pattern_edge_count(p) - 1);
-    int leaves = 0;
+    json_t *o = json_object(), *leaves = json_array();
+    char names[2048] = "";
+    size_t len = 0;
     for (int i = node_before; i < ori_pattern_tree_node_count(p); ++i) {
         ori_tree_node n = ori_pattern_tree_node(p, i);
         int f = ori_pattern_find_face_by_name(p, n.name);
         if (f == ORI_NULL_INDEX) continue;
-        printf("%s %s (face %d)", leaves++ ? "," : "new folding elements:", n.name, f);
+        json_array_append_new(leaves, json_pack("{sssi}", "name", n.name, "face", f));
+        if (len < sizeof names - 64)
+            len += (size_t)snprintf(names + len, sizeof names - len, "%s%s (face %d)", len ? ", " : "; new folding elements: ",
+                                    n.name, f);
     }
-    if (leaves) printf("\n");
+    json_object_set_new(o, "output", json_string(out));
+    json_object_set_new(o, "pattern", json_string(pattern));
+    json_object_set_new(o, "face", json_string(face_name));
+    json_object_set_new(o, "segments", json_integer(r->segments));
+    json_object_set_new(o, "faces_split", json_integer(r->faces_split));
+    json_object_set_new(o, "edges_added", json_integer(r->edges_added));
+    json_object_set_new(o, "first_edge", json_integer(r->first_edge));
+    json_object_set_new(o, "last_edge", json_integer(ori_pattern_edge_count(p) - 1));
+    json_object_set_new(o, "new_faces", leaves);
+    cli_json_counts(o, p);
+    cli_print_summary(json, o, "applied to %s: %d crease piece%s, %d face split%s, %d new edge%s (edges %d to %d)%s",
+                      face_name, r->segments, r->segments == 1 ? "" : "s", r->faces_split, r->faces_split == 1 ? "" : "s",
+                      r->edges_added, r->edges_added == 1 ? "" : "s", r->first_edge, ori_pattern_edge_count(p) - 1, names);
 }
 
 static int run(int argc, char **argv)
 {
-    const char *path = NULL, *pattern = NULL, *face_spec = NULL, *out = NULL;
-    bool has_asg = false;
+    const char *cmd = "apply", *path = NULL, *pattern = NULL, *face_spec = NULL, *out = NULL;
+    bool has_asg = false, json = false;
     ori_assignment asg = ORI_ASSIGN_UNASSIGNED;
+    cli_input in;
+    cli_input_init(&in);
+    cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
         const char *v;
+        int r = cli_input_option(cmd, argc, argv, &i, &in, &seen);
+        if (r < 0) return -r;
+        if (r > 0) continue;
         if (strcmp(argv[i], "--list") == 0) {
             list_builtins();
             return CLI_EXIT_OK;
         } else if (strcmp(argv[i], "--pattern") == 0) {
-            if (!(pattern = cli_option_value("apply", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (!(pattern = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
         } else if (strcmp(argv[i], "--face") == 0) {
-            if (!(face_spec = cli_option_value("apply", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (!(face_spec = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
         } else if (strcmp(argv[i], "--assign") == 0) {
-            if (!(v = cli_option_value("apply", argc, argv, &i))) return CLI_EXIT_USAGE;
-            if (!cli_parse_crease_assignment(v, &asg)) return cli_usage("apply", "--assign takes M, V, F or U");
+            if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_crease_assignment(v, &asg)) return cli_usage(cmd, "--assign takes M, V, F or U");
             has_asg = true;
         } else if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
-            if (!(out = cli_option_value("apply", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (!(out = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+        } else if (strcmp(argv[i], "--json") == 0) {
+            json = true;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_usage("apply", "unknown option %s", argv[i]);
+            return cli_usage(cmd, "unknown option %s", argv[i]);
         } else if (!path) {
             path = argv[i];
         } else {
-            return cli_usage("apply", "one FILE only");
+            return cli_usage(cmd, "one FILE only");
         }
     }
-    if (!path) return cli_usage("apply", "missing FILE");
-    if (!pattern) return cli_usage("apply", "missing --pattern NAME|PATH.json (see orikin apply --list)");
-    if (!face_spec) return cli_usage("apply", "missing --face NAME");
+    if (!path) return cli_usage(cmd, "missing FILE");
+    if (!pattern) return cli_usage(cmd, "missing --pattern NAME|PATH.json (see orikin apply --list)");
+    if (!face_spec) return cli_usage(cmd, "missing --face NAME");
+    int rc = cli_check_json_output(cmd, out, json);
+    if (rc != CLI_EXIT_OK) return rc;
     ori_composite *comp = NULL;
     ori_error err;
     bool is_file = strchr(pattern, '/') || strchr(pattern, '.');
     ori_status st = is_file ? ori_composite_load_file(pattern, &comp, &err) : ori_composite_builtin(pattern, &comp, &err);
-    if (st != ORI_OK) return cli_input_error("apply", pattern, &err);
+    if (st != ORI_OK && !is_file) { // a name that is no built-in: the option's value
+        char buf[400];
+        return cli_value_fail(cmd, NULL, "--pattern", "%s", ori_error_format(&err, buf, sizeof buf));
+    }
+    if (st != ORI_OK) return cli_input_error(cmd, pattern, &err);
     ori_fold *doc;
     ori_pattern *p;
-    int rc = cli_load_pattern("apply", path, 0, false, &doc, &p);
+    rc = cli_input_load(cmd, path, &in, &doc, &p);
     if (rc != CLI_EXIT_OK) {
         ori_composite_destroy(comp);
         return rc;
     }
     int face = 0;
-    rc = cli_find_face("apply", path, p, face_spec, &face);
+    rc = cli_find_face_option(cmd, path, p, "--face", face_spec, &face);
     if (rc == CLI_EXIT_OK) {
         char face_name[ORI_NAME_MAX + 16];
         const char *fname = ori_pattern_face_name(p, face);
@@ -79,9 +109,10 @@ static int run(int argc, char **argv)
         int nodes = ori_pattern_tree_node_count(p);
         ori_apply_result r;
         st = ori_pattern_apply_composite(p, comp, face, has_asg ? &asg : NULL, &r, &err);
-        if (st != ORI_OK) rc = cli_input_error("apply", path, &err);
-        else rc = cli_write_pattern("apply", doc, p, out);
-        if (rc == CLI_EXIT_OK && out) report(p, nodes, face_name, &r);
+        if (st == ORI_ERR_NOT_FOUND) rc = cli_value_fail(cmd, path, "--face", "%s", err.message); // misses the face
+        else if (st != ORI_OK) rc = cli_input_error(cmd, path, &err);
+        else rc = cli_write_frame_pattern(cmd, &doc, &in, p, out);
+        if (rc == CLI_EXIT_OK && !cli_is_stdout(out)) report(json, out, p, nodes, face_name, pattern, &r);
     }
     ori_composite_destroy(comp);
     ori_pattern_destroy(p);
@@ -92,7 +123,8 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_apply = {
     "apply",
     "apply a pattern of the crease collection (built-in or composite file) to a face",
-    "usage: orikin apply FILE --pattern NAME|PATH.json --face NAME [--assign M|V|F|U] [-o OUT]\n"
+    "usage: orikin apply FILE --pattern NAME|PATH.json --face NAME [--assign M|V|F|U]\n"
+    "                    [input options] [-o OUT [--json]]\n"
     "       orikin apply --list\n"
     "\n"
     "Apply a reusable crease pattern to one face, scaled to the face's bounding box (0,0 its\n"
@@ -103,17 +135,20 @@ const cli_command cli_cmd_apply = {
     "coordinates (docs/authoring.md). Each crease splits the faces it crosses within the target\n"
     "face's region: ObjK becomes ObjK1 (left of the crease's direction) and ObjK2. New creases\n"
     "are unassigned (U) unless the composite or --assign says otherwise. Without -o the FOLD\n"
-    "text goes to stdout; with -o a summary is printed.\n"
+    "text goes to stdout; with -o a one-line summary is printed (--json: an object).\n"
     "\n"
     "options:\n"
     "  --pattern NAME|PATH   a built-in name or a composite .json file\n"
     "  --face NAME           the target face: its name (Obj12) or FOLD face index\n"
     "  --assign M|V|F|U      assignment of every new crease (overrides the composite's)\n"
-    "  -o, --output OUT      write the FOLD file here (atomically)\n"
-    "  --list                list the built-in patterns\n"
+    "  -o, --output OUT      write the FOLD file here (atomically; .svg, .cp, .opx: export)\n"
+    "  --json                with -o: print {output, pattern, face, segments, faces_split,\n"
+    "                        edges_added, first_edge, last_edge, new_faces: [{name, face}],\n"
+    "                        vertices, edges, faces, edges_by_assignment}\n"
+    "  --list                list the built-in patterns\n" CLI_INPUT_HELP
     "\n"
-    "exit codes: 0 applied, 2 bad command line, 3 bad file, unknown face or pattern, crease\n"
-    "misses the face (nothing written)\n"
+    "exit codes: 0 applied, 2 bad command line (an unknown built-in or face, a pattern that\n"
+    "misses the face), 3 bad file or composite (nothing written)\n"
     "example: orikin apply sheet.fold --pattern middle-h --face Obj1 --assign V -o step1.fold\n",
     run,
 };

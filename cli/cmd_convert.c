@@ -4,93 +4,126 @@
 
 #include "cli.h"
 
-static void warn_stats(const char *in, const ori_import_stats *s)
+// What the import of a drawing found (cli_input stats), for --json.
+static json_t *import_json(const ori_import_stats *s)
 {
-    if (s->ignored_elements > 0 && s->ignored_colour[0])
-        fprintf(stderr,
-                "orikin convert: %s: warning: %d element(s) ignored: stroke \"%s\" (and others) is not a crease "
-                "colour (#000000 B, #ff0000 M, #0000ff V, #00ff00 C, #ffff00 F, #ff00ff U)\n",
-                in, s->ignored_elements, s->ignored_colour);
-    else if (s->ignored_elements > 0)
-        fprintf(stderr, "orikin convert: %s: warning: %d auxiliary or cut-model line(s) skipped\n", in,
-                s->ignored_elements);
-    if (s->unsupported_elements > 0)
-        fprintf(stderr, "orikin convert: %s: warning: %d element(s) orikin does not read (use, image, text…) skipped\n",
-                in, s->unsupported_elements);
+    json_t *o = json_object();
+    json_object_set_new(o, "segments", json_integer(s->segments));
+    json_object_set_new(o, "ignored_elements", json_integer(s->ignored_elements));
+    json_object_set_new(o, "unsupported_elements", json_integer(s->unsupported_elements));
+    json_object_set_new(o, "stroke_width", json_real(s->stroke_width));
+    json_object_set_new(o, "gap_rel", json_real(s->gap_rel));
+    json_object_set_new(o, "gaps_closed", json_integer(s->gaps_closed));
+    json_object_set_new(o, "largest_gap_rel", json_real(s->largest_gap_rel));
+    json_object_set_new(o, "dangling", json_integer(s->dangling));
+    json_object_set_new(o, "dangling_example", s->dangling_example >= 0 ? json_integer(s->dangling_example) : json_null());
+    json_object_set_new(o, "parts", json_integer(s->parts));
+    json_object_set_new(o, "part_example", s->part_example >= 0 ? json_integer(s->part_example) : json_null());
+    return o;
 }
 
 static int run(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
-    int frame = 0;
-    bool weld = false, frame_given = false, full_fold = false;
-    ori_import_def idef = ori_default_import_def();
-    bool import_option = false;
+    const char *cmd = "convert", *in_path = NULL, *out = NULL, *v;
+    cli_input in;
+    cli_input_init(&in);
+    cli_seen seen = {0};
+    bool full_fold = false, json = false, label_faces = false, label_edges = false;
     for (int i = 1; i < argc; ++i) {
-        if (strcmp(argv[i], "--weld") == 0) weld = true;
-        else if (strcmp(argv[i], "--frame") == 0) {
-            if (cli_option_frame("convert", argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
-            frame_given = true;
-        } else if (strcmp(argv[i], "--tolerance") == 0) {
-            const char *v = cli_option_value("convert", argc, argv, &i);
-            if (!v) return CLI_EXIT_USAGE;
-            if (!cli_parse_double(v, &idef.weld_rel) || !(idef.weld_rel > 0.0 && idef.weld_rel < 1.0))
-                return cli_usage("convert", "--tolerance needs a number in (0, 1) (a fraction of the drawing's size)");
-            import_option = true;
-        } else if (strcmp(argv[i], "--keep-collinear") == 0) {
-            idef.merge_collinear = false;
-            import_option = true;
-        } else if (strcmp(argv[i], "--keep-holes") == 0) {
-            idef.remove_holes = false;
-            import_option = true;
-        } else if (strcmp(argv[i], "--full-fold") == 0) {
+        int r = cli_input_option(cmd, argc, argv, &i, &in, &seen);
+        if (r < 0) return -r;
+        if (r > 0) continue;
+        if (strcmp(argv[i], "--full-fold") == 0) {
             full_fold = true;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') return cli_usage("convert", "unknown option %s", argv[i]);
-        else if (!in) in = argv[i];
-        else if (!out) out = argv[i];
-        else return cli_usage("convert", "expected IN and OUT only");
+        } else if (strcmp(argv[i], "--json") == 0) {
+            json = true;
+        } else if (strcmp(argv[i], "--labels") == 0) {
+            if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (strcmp(v, "faces") == 0) label_faces = true;
+            else if (strcmp(v, "edges") == 0) label_edges = true;
+            else if (strcmp(v, "all") == 0) label_faces = label_edges = true;
+            else return cli_usage(cmd, "--labels takes faces, edges or all, got '%s'", v);
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            return cli_usage(cmd, "unknown option %s", argv[i]);
+        } else if (!in_path) {
+            in_path = argv[i];
+        } else if (!out) {
+            out = argv[i];
+        } else {
+            return cli_usage(cmd, "expected IN and OUT only");
+        }
     }
-    if (!in || !out) return cli_usage("convert", "missing IN or OUT");
-    ori_format fin = ori_format_from_path(in), fout = ori_format_from_path(out);
-    if (fin == ORI_FORMAT_UNKNOWN) return cli_usage("convert", "cannot read '%s': use .fold, .svg, .opx or .cp", in);
-    if (fout == ORI_FORMAT_UNKNOWN) return cli_usage("convert", "cannot write '%s': use .fold, .svg, .opx or .cp", out);
-    bool fold_in = fin == ORI_FORMAT_FOLD;
-    if (fold_in && import_option)
-        return cli_usage("convert", "--tolerance, --keep-collinear and --keep-holes apply to .svg, .opx and .cp input");
-    if (!fold_in && (weld || frame_given)) return cli_usage("convert", "--frame and --weld apply to .fold input");
-    if (full_fold && fout != ORI_FORMAT_SVG) return cli_usage("convert", "--full-fold applies to .svg output");
+    if (!in_path || !out) return cli_usage(cmd, "missing IN or OUT");
+    ori_format fin = ori_format_from_path(in_path), fout = cli_is_stdout(out) ? ORI_FORMAT_FOLD : ori_format_from_path(out);
+    if (fin == ORI_FORMAT_UNKNOWN) return cli_usage(cmd, "cannot read '%s': use .fold, .svg, .opx or .cp", in_path);
+    if (fout == ORI_FORMAT_UNKNOWN) return cli_usage(cmd, "cannot write '%s': use .fold, .svg, .opx or .cp", out);
+    if (full_fold && fout != ORI_FORMAT_SVG) return cli_usage(cmd, "--full-fold applies to .svg output");
+    if ((label_faces || label_edges) && fout != ORI_FORMAT_SVG) return cli_usage(cmd, "--labels applies to .svg output");
+    int rc = cli_check_json_output(cmd, out, json);
+    if (rc != CLI_EXIT_OK) return rc;
 
-    ori_error err;
-    ori_status st;
-    ori_pattern *p = NULL;
     ori_fold *doc = NULL;
-    if (fold_in) {
-        int rc = cli_load_pattern("convert", in, frame, weld, &doc, &p);
-        if (rc != CLI_EXIT_OK) return rc;
-    } else {
-        ori_import_stats stats;
-        st = ori_import_file(in, fin, &idef, &p, &stats, &err);
-        if (st == ORI_OK || st == ORI_ERR_NOT_FOUND) warn_stats(in, &stats); // why nothing was found
-        if (st != ORI_OK) return cli_input_error("convert", in, &err);
-    }
-
-    if (fout == ORI_FORMAT_FOLD && doc) {
-        // FOLD to FOLD: the document is kept whole, only the frame's pattern is rewritten.
-        st = ori_fold_set_pattern(doc, frame, p, &err);
-        if (st == ORI_OK) st = ori_fold_save_file(doc, out, &err);
+    ori_pattern *p = NULL;
+    rc = cli_input_load(cmd, in_path, &in, &doc, &p);
+    if (rc != CLI_EXIT_OK) return rc;
+    ori_error err;
+    ori_status st = ORI_OK;
+    if (fout == ORI_FORMAT_FOLD && !in.drawing) {
+        // FOLD to FOLD: the document is kept whole and its frame rewritten; with --frame, that
+        // frame alone is extracted into a document of its own.
+        ori_fold *x = NULL;
+        if (in.frame_given) {
+            st = ori_fold_extract_frame(doc, in.frame, &x, &err);
+            if (st == ORI_OK) {
+                ori_fold_destroy(doc);
+                doc = x;
+            }
+        }
+        if (st == ORI_OK) st = ori_fold_set_pattern(doc, in.frame_given ? 0 : in.frame, p, &err);
+        if (st == ORI_OK) {
+            if (cli_is_stdout(out)) {
+                char *text = ori_fold_to_string(doc);
+                fputs(text, stdout);
+                ori_buffer_free(text);
+            } else {
+                st = ori_fold_save_file(doc, out, &err);
+            }
+        }
     } else if (fout == ORI_FORMAT_FOLD) {
+        // A drawing: written directly (no JSON tree), so a large one costs its text only.
         ori_fold_field extra[1] = {{"frame_classes", "[\"creasePattern\"]"}};
-        st = ori_pattern_save_fold(p, extra, 1, out, &err);
+        if (cli_is_stdout(out)) {
+            char *text = ori_pattern_to_fold_text(p, extra, 1, NULL);
+            fputs(text, stdout);
+            ori_buffer_free(text);
+        } else {
+            st = ori_pattern_save_fold(p, extra, 1, out, &err);
+        }
     } else {
         ori_svg_write_def sdef = ori_default_svg_write_def();
         sdef.full_fold = full_fold;
+        sdef.label_faces = label_faces;
+        sdef.label_edges = label_edges;
         st = ori_export_file(p, fout, &sdef, out, &err);
+    }
+    if (st == ORI_ERR_UNSUPPORTED) rc = cli_input_error(cmd, in_path, &err);
+    else if (st != ORI_OK) rc = cli_input_error(cmd, out, &err);
+    if (rc == CLI_EXIT_OK && !cli_is_stdout(out)) {
+        json_t *o = json_object();
+        json_object_set_new(o, "input", json_string(in_path));
+        json_object_set_new(o, "output", json_string(out));
+        json_object_set_new(o, "format", json_string(ori_format_name(fout)));
+        if (!in.drawing) json_object_set_new(o, "frame", json_integer(in.frame));
+        cli_json_counts(o, p);
+        if (in.drawing) json_object_set_new(o, "import", import_json(&in.stats));
+        char frame[32] = "";
+        if (in.frame_given) snprintf(frame, sizeof frame, ", frame %d", in.frame);
+        cli_print_summary(json, o, "%s: %d vertices, %d edges, %d faces (from %s%s)", out, ori_pattern_vertex_count(p),
+                          ori_pattern_edge_count(p), ori_pattern_face_count(p), in_path, frame);
     }
     ori_pattern_destroy(p);
     ori_fold_destroy(doc);
-    if (st == ORI_ERR_UNSUPPORTED) return cli_input_error("convert", in, &err);
-    if (st != ORI_OK) return cli_input_error("convert", out, &err);
-    return CLI_EXIT_OK;
+    return rc;
 }
 
 const cli_command cli_cmd_convert = {
@@ -99,22 +132,26 @@ const cli_command cli_cmd_convert = {
     "usage: orikin convert IN OUT [options]\n"
     "\n"
     "Read IN, validate it and write OUT; formats by extension: .fold, .svg (Origami Simulator\n"
-    "colours), .opx and .cp (ORIPA). FOLD to FOLD is a normalised rewrite: every field,\n"
-    "including unknown and custom ones, is kept; indices are unchanged; computed faces are\n"
-    "added when IN had none. SVG, OPX and CP drawings are planarised (crossing and overlapping\n"
-    "lines split and merged, nearby points welded) into a crease pattern with faces; their y\n"
-    "axis points down and is flipped (docs/formats.md). OUT is written atomically: nothing is\n"
-    "written when IN is bad (exit 3).\n"
+    "colours), .opx and .cp (ORIPA); OUT - writes FOLD text to stdout. FOLD to FOLD is a\n"
+    "normalised rewrite: every field, including unknown and custom ones, is kept; indices are\n"
+    "unchanged; computed faces are added when IN had none. With --frame N it extracts that frame\n"
+    "alone: a document whose top level is the frame (inherited fields resolved). SVG, OPX and CP\n"
+    "drawings are planarised (crossing and overlapping lines split and merged, nearby points\n"
+    "welded, crease ends that stop short of a line by less than the drawn line width joined to\n"
+    "it) into a crease pattern with faces; what was joined, crease ends left dangling and\n"
+    "separate pieces are reported on stderr with what would fix them. Their y axis points down\n"
+    "and is flipped (docs/formats.md). ORIPA has no F or U creases: such patterns are refused\n"
+    "as .cp/.opx. OUT is written atomically: nothing is written when IN is bad (exit 3). Prints\n"
+    "a one-line summary (--json: an object).\n"
     "\n"
-    "options:\n"
-    "  --frame N          FOLD input: frame whose pattern is converted (default 0)\n"
-    "  --weld             FOLD input: merge vertices closer than the length tolerance\n"
-    "  --tolerance REL    drawing input: weld points closer than REL × the drawing's diagonal\n"
-    "                     (default 5e-5)\n"
-    "  --keep-collinear   drawing input: keep vertices that only join two collinear edges\n"
-    "  --keep-holes       drawing input: keep faces bounded only by boundary lines (holes)\n"
-    "  --full-fold        SVG output: mountains and valleys at opacity 1 (fold flat) even when\n"
-    "                     their fold angle is 0\n"
+    "options:\n" CLI_INPUT_HELP
+    "  --full-fold        SVG output: mountains and valleys at opacity 1 (fold flat) whatever\n"
+    "                     their fold angle (creases at 0 are written at 1 anyway: no target)\n"
+    "  --labels WHAT      SVG output: write faces (index and name), edges (index) or all\n"
+    "  --json             print {input, output, format, frame, vertices, edges, faces,\n"
+    "                     edges_by_assignment, import: {segments, ignored_elements,\n"
+    "                     unsupported_elements, stroke_width, gap_rel, gaps_closed,\n"
+    "                     largest_gap_rel, dangling, dangling_example, parts, part_example}}\n"
     "\n"
     "example: orikin convert birdBase.svg bird.fold\n",
     run,

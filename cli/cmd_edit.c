@@ -18,23 +18,28 @@ typedef struct op {
 
 static const char *const op_names[] = {"--assign", "--flip", "--remove", "--move"};
 
-// The current index of the edge an operation names, or an exit code after an error message.
-static int resolve(const char *path, const ori_pattern *p, const int *map, int n_orig, const char *spec, int *edge)
+// The current index of the edge an operation (option opt) names, or an exit code after an error
+// message: an edge the file does not have is an out-of-range command-line value.
+static int resolve(const char *path, const ori_pattern *p, const int *map, int n_orig, const char *opt, const char *spec,
+                   int *edge)
 {
+    char where[96];
+    snprintf(where, sizeof where, "%s %s", opt, spec);
     if (spec[0] == '@') {
         double xy[2];
         if (!cli_parse_doubles(spec + 1, xy, 2)) return cli_usage("edit", "an edge is an index or @x,y (got %s)", spec);
         int e = ori_pattern_find_edge_at(p, ori_v2_make(xy[0], xy[1]));
-        if (e == ORI_NULL_INDEX) return cli_input_fail("edit", path, "no edge passes through (%g, %g)", xy[0], xy[1]);
+        if (e == ORI_NULL_INDEX)
+            return cli_value_fail("edit", path, where, "no edge passes through (%g, %g) (see orikin info --edges)", xy[0], xy[1]);
         *edge = e;
         return CLI_EXIT_OK;
     }
     int id;
     if (!cli_parse_int(spec, &id)) return cli_usage("edit", "an edge is an index or @x,y (got %s)", spec);
     if (id < 0 || id >= n_orig)
-        return cli_input_fail("edit", path, "edges_vertices %d: no such edge (the file has %d edges)", id, n_orig);
+        return cli_value_fail("edit", path, where, "no such edge (the file has %d edges: 0 to %d)", n_orig, n_orig - 1);
     if (map[id] == ORI_NULL_INDEX)
-        return cli_input_fail("edit", path, "edges_vertices %d: the edge was removed by an earlier operation", id);
+        return cli_value_fail("edit", path, where, "the edge was removed by an earlier operation");
     *edge = map[id];
     return CLI_EXIT_OK;
 }
@@ -57,10 +62,23 @@ static int run(int argc, char **argv)
     const char *path = NULL, *out = NULL;
     op *ops = calloc((size_t)argc, sizeof *ops);
     int nops = 0, rc = CLI_EXIT_OK;
+    bool json = false;
+    cli_input input;
+    cli_input_init(&input);
+    cli_seen seen = {0};
     for (int i = 1; i < argc && rc == CLI_EXIT_OK; ++i) {
         const char *v;
         op o;
         memset(&o, 0, sizeof o);
+        int r = cli_input_option("edit", argc, argv, &i, &input, &seen);
+        if (r != 0) {
+            if (r < 0) rc = -r;
+            continue;
+        }
+        if (strcmp(argv[i], "--json") == 0) {
+            json = true;
+            continue;
+        }
         if (strcmp(argv[i], "--assign") == 0) {
             if (!(v = cli_option_value("edit", argc, argv, &i))) {
                 rc = CLI_EXIT_USAGE;
@@ -89,7 +107,7 @@ static int run(int argc, char **argv)
             if (!cli_parse_doubles(argv[i + 2], o.seg, 4)) rc = cli_usage("edit", "--move needs E x1,y1,x2,y2");
             i += 2;
         } else if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
-            if (!(out = cli_option_value("edit", argc, argv, &i))) rc = CLI_EXIT_USAGE;
+            if (!(out = cli_option_once("edit", argc, argv, &i, &seen))) rc = CLI_EXIT_USAGE;
             continue;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             rc = cli_usage("edit", "unknown option %s", argv[i]);
@@ -105,9 +123,10 @@ static int run(int argc, char **argv)
     }
     if (rc == CLI_EXIT_OK && !path) rc = cli_usage("edit", "missing FILE");
     if (rc == CLI_EXIT_OK && nops == 0) rc = cli_usage("edit", "nothing to do: give --assign, --flip, --remove or --move");
+    if (rc == CLI_EXIT_OK) rc = cli_check_json_output("edit", out, json);
     ori_fold *doc = NULL;
     ori_pattern *p = NULL;
-    if (rc == CLI_EXIT_OK) rc = cli_load_pattern("edit", path, 0, false, &doc, &p);
+    if (rc == CLI_EXIT_OK) rc = cli_input_load("edit", path, &input, &doc, &p);
     int n_orig = p ? ori_pattern_edge_count(p) : 0;
     int *map = malloc(sizeof(int) * (size_t)(n_orig + 1));
     for (int i = 0; i < n_orig; ++i) map[i] = i;
@@ -115,10 +134,11 @@ static int run(int argc, char **argv)
     size_t log_len = 0;
     FILE *logf = open_memstream(&log, &log_len);
     bool topology = false;
+    json_t *log_json = json_array();
     for (int k = 0; k < nops && rc == CLI_EXIT_OK; ++k) {
         const op *o = &ops[k];
         int e = ORI_NULL_INDEX;
-        rc = resolve(path, p, map, n_orig, o->edge, &e);
+        rc = resolve(path, p, map, n_orig, op_names[o->kind], o->edge, &e);
         if (rc != CLI_EXIT_OK) break;
         ori_error err;
         ori_status st = ORI_OK;
@@ -177,22 +197,49 @@ static int run(int argc, char **argv)
         }
         }
         if (st != ORI_OK) {
+            // An edge the operation does not apply to (a boundary edge, a J edge) is the command
+            // line's mistake (2); geometry the file cannot take is the file's (3).
             char buf[512];
             ori_error_format(&err, buf, sizeof buf);
             fprintf(stderr, "orikin edit: %s: %s %s: %s\n", path, op_names[o->kind], o->edge, buf);
-            rc = CLI_EXIT_INPUT;
+            rc = st == ORI_ERR_ARGUMENT ? CLI_EXIT_USAGE : CLI_EXIT_INPUT;
+        } else {
+            fflush(logf);
+            const char *last = log;
+            for (const char *c = log; c && *c; ++c)
+                if (c[0] == '\n' && c[1]) last = c + 1;
+            json_t *entry = json_object();
+            json_object_set_new(entry, "op", json_string(op_names[o->kind] + 2));
+            json_object_set_new(entry, "edge", json_string(o->edge));
+            json_object_set_new(entry, "edge_index", json_integer(e));
+            json_object_set_new(entry, "text", json_stringn(last ? last : "", last ? strcspn(last, "\n") : 0));
+            json_array_append_new(log_json, entry);
         }
     }
     fclose(logf);
+    int dropped = 0;
     if (rc == CLI_EXIT_OK) {
-        if (topology && ori_fold_frame_count(doc) > 1) {
+        if (topology && ori_fold_frame_count(doc) > 1 && !input.frame_given) {
+            dropped = ori_fold_frame_count(doc) - 1;
             fprintf(stderr, "orikin edit: note: dropped %d frame(s) (file_frames) that no longer match the pattern\n",
-                    ori_fold_frame_count(doc) - 1);
+                    dropped);
             ori_fold_set_custom(doc, 0, "file_frames", NULL, NULL);
         }
-        rc = cli_write_pattern("edit", doc, p, out);
-        if (rc == CLI_EXIT_OK && out) fputs(log, stdout);
+        rc = cli_write_frame_pattern("edit", &doc, &input, p, out);
+        if (rc == CLI_EXIT_OK && !cli_is_stdout(out)) {
+            json_t *o = json_object();
+            json_object_set_new(o, "output", json_string(out));
+            json_object_set_new(o, "operations", json_incref(log_json));
+            json_object_set_new(o, "dropped_frames", json_integer(dropped));
+            cli_json_counts(o, p);
+            if (json) cli_print_json(o);
+            else {
+                json_decref(o);
+                fputs(log, stdout);
+            }
+        }
     }
+    json_decref(log_json);
     free(log);
     for (int k = 0; k < nops; ++k)
         if (ops[k].kind == OP_ASSIGN) free((char *)ops[k].edge);
@@ -207,7 +254,7 @@ const cli_command cli_cmd_edit = {
     "edit",
     "re-assign, flip, remove or move creases",
     "usage: orikin edit FILE (--assign E=M|V|F|U | --flip E | --remove E | --move E x1,y1,x2,y2)...\n"
-    "                   [-o OUT]\n"
+    "                   [input options] [-o OUT [--json]]\n"
     "\n"
     "Edit the creases of a crease pattern, operations in the order given. An edge E is its\n"
     "index in FILE (operations track the renumbering of earlier removals) or @x,y, the edge\n"
@@ -218,16 +265,18 @@ const cli_command cli_cmd_edit = {
     "rejoined. Removing renumbers the later edges (and vertices, faces). --move removes the\n"
     "crease and applies the segment x1,y1-x2,y2 (clipped to the sheet) with its assignment.\n"
     "Boundary edges cannot be edited. On any error nothing is written. Without -o the FOLD\n"
-    "text goes to stdout; with -o a summary is printed.\n"
+    "text goes to stdout; with -o a line per operation is printed (--json: an object).\n"
     "\n"
     "options:\n"
     "  --assign E=X          assign crease E: M mountain, V valley, F flat, U unassigned\n"
     "  --flip E              mountain <-> valley\n"
     "  --remove E            remove crease E\n"
     "  --move E x1,y1,x2,y2  move crease E onto this segment\n"
-    "  -o, --output OUT      write the FOLD file here (atomically)\n"
+    "  -o, --output OUT      write the FOLD file here (atomically; .svg, .cp, .opx: export)\n"
+    "  --json                with -o: print {output, operations: [{op, edge, edge_index, text}],\n"
+    "                        dropped_frames, vertices, edges, faces, edges_by_assignment}\n" CLI_INPUT_HELP
     "\n"
-    "exit codes: 0 written, 2 bad command line, 3 bad file, unknown edge, boundary edge\n"
+    "exit codes: 0 written, 2 bad command line (an unknown edge, a boundary edge), 3 bad file\n"
     "example: orikin edit corner.fold --assign @0.5,1=M --flip 8 -o corner2.fold\n",
     run,
 };

@@ -73,11 +73,16 @@ static int run(int argc, char **argv)
         return cli_usage("generate", "unknown KIND '%s' (miura, yoshimura, waterbomb, square-twist, kresling)", argv[1]);
     ori_generate_def def = ori_default_generate_def(kind);
     const char *out = NULL;
-    bool seen[OPT_COUNT] = {false};
+    bool seen[OPT_COUNT] = {false}, json = false;
     double value[OPT_COUNT] = {0};
+    cli_seen once = {0};
     for (int i = 2; i < argc; ++i) {
         if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
-            if (!(out = cli_option_value("generate", argc, argv, &i))) return CLI_EXIT_USAGE;
+            if (!(out = cli_option_once("generate", argc, argv, &i, &once))) return CLI_EXIT_USAGE;
+            continue;
+        }
+        if (strcmp(argv[i], "--json") == 0) {
+            json = true;
             continue;
         }
         int o = 0;
@@ -85,9 +90,10 @@ static int run(int argc, char **argv)
         if (o == OPT_COUNT) return cli_usage("generate", "unknown option %s", argv[i]);
         if (!(options[o].kinds & BIT(kind)))
             return cli_usage("generate", "%s does not apply to %s", options[o].name, ori_tessellation_name(kind));
-        const char *v = cli_option_value("generate", argc, argv, &i);
+        const char *v = cli_option_once("generate", argc, argv, &i, &once);
         if (!v) return CLI_EXIT_USAGE;
         if (o == OPT_ROWS || o == OPT_COLS || o == OPT_SIDES) {
+            // (an integer option: cli_parse_int refuses what does not fit)
             int n;
             if (!cli_parse_int(v, &n)) return cli_usage("generate", "%s needs an integer (got '%s')", options[o].name, v);
             value[o] = n;
@@ -114,6 +120,8 @@ static int run(int argc, char **argv)
         }
     }
 
+    int rc0 = cli_check_json_output("generate", out, json);
+    if (rc0 != CLI_EXIT_OK) return rc0;
     ori_error err;
     ori_pattern *p = NULL;
     ori_edge_class *cls = NULL;
@@ -122,10 +130,21 @@ static int run(int argc, char **argv)
         const char *opt = err.field[0] ? option_for_field(err.field) : "";
         return cli_usage("generate", "%s%s%s", opt, *opt ? ": " : "", err.message);
     }
+    if (st == ORI_ERR_LIMIT || st == ORI_ERR_RANGE || st == ORI_ERR_DEGENERATE || st == ORI_ERR_CROSSING ||
+        st == ORI_ERR_DUPLICATE) {
+        // The values given make a pattern orikin cannot hold (coordinates beyond ORI_COORD_MAX,
+        // cells below the length tolerance, too many edges): a usage error naming the options.
+        char buf[512], given[160] = "";
+        for (int o = 0; o < OPT_COUNT; ++o)
+            if (seen[o] && o != OPT_ANGLE)
+                snprintf(given + strlen(given), sizeof given - strlen(given), "%s%s", given[0] ? ", " : "", options[o].name);
+        return cli_usage("generate", "%s%sthese values give no pattern orikin can hold: %s", given,
+                         given[0] ? ": " : "", ori_error_format(&err, buf, sizeof buf));
+    }
     if (st != ORI_OK) {
         char buf[512];
         fprintf(stderr, "orikin generate: %s\n", ori_error_format(&err, buf, sizeof buf));
-        return st == ORI_ERR_LIMIT ? CLI_EXIT_USAGE : CLI_EXIT_INTERNAL;
+        return CLI_EXIT_INTERNAL;
     }
 
     // Written directly (no JSON tree): a 1000 x 1000 Miura-ori costs its text, not gigabytes.
@@ -144,12 +163,22 @@ static int run(int argc, char **argv)
     if (!classes) {
         fprintf(stderr, "orikin generate: out of memory\n");
         rc = CLI_EXIT_INTERNAL;
-    } else if (out) {
-        st = ori_pattern_save_fold(p, extra, n_extra, out, &err);
-        if (st != ORI_OK) rc = cli_input_error("generate", out, &err);
-        else
-            printf("%s: %s, %d vertices, %d edges, %d faces\n", out, title, ori_pattern_vertex_count(p),
-                   ori_pattern_edge_count(p), ori_pattern_face_count(p));
+    } else if (!cli_is_stdout(out)) {
+        ori_format f = ori_format_from_path(out);
+        if (f == ORI_FORMAT_SVG || f == ORI_FORMAT_CP || f == ORI_FORMAT_OPX) st = ori_export_file(p, f, NULL, out, &err);
+        else st = ori_pattern_save_fold(p, extra, n_extra, out, &err);
+        if (st != ORI_OK) {
+            rc = cli_input_error("generate", out, &err);
+        } else {
+            json_t *o = json_object();
+            json_object_set_new(o, "output", json_string(out));
+            json_object_set_new(o, "title", json_string(title));
+            cli_json_counts(o, p);
+            json_t *gen = json_loads(params, 0, NULL);
+            json_object_set_new(o, "generator", gen ? gen : json_null());
+            cli_print_summary(json, o, "%s: %s, %d vertices, %d edges, %d faces", out, title, ori_pattern_vertex_count(p),
+                              ori_pattern_edge_count(p), ori_pattern_face_count(p));
+        }
     } else {
         char *text = ori_pattern_to_fold_text(p, extra, n_extra, NULL);
         fputs(text, stdout);
@@ -164,13 +193,13 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_generate = {
     "generate",
     "tessellation crease patterns: miura, yoshimura, waterbomb, square-twist, kresling",
-    "usage: orikin generate KIND [options] [-o OUT.fold]\n"
+    "usage: orikin generate KIND [options] [-o OUT.fold [--json]]\n"
     "\n"
     "Generate a standard tessellation as a flat crease pattern with a flat-foldable mountain/\n"
     "valley assignment, fold angles 0 and faces, and write it as FOLD to OUT (or stdout). Each\n"
     "edge's family is stored in \"orikin:edges_class\" (e.g. Miura \"straight\" / \"zigzag\" /\n"
     "\"boundary\"), the parameters in \"orikin:generator\". Geometry, counts and edge index\n"
-    "ranges: docs/generators.md.\n"
+    "ranges: docs/generators.md. With -o a one-line summary is printed (--json: an object).\n"
     "\n"
     "kinds and their options (defaults in brackets):\n"
     "  miura         --rows --cols [4 4]  --angle γ: acute cell angle between zig-zag and\n"
@@ -188,7 +217,10 @@ const cli_command cli_cmd_generate = {
     "                height [the height at which a storey also folds flat]\n"
     "\n"
     "options:\n"
-    "  -o, --output FILE   write the FOLD file here (atomically) instead of stdout\n"
+    "  -o, --output FILE   write the FOLD file here (atomically) instead of stdout (.svg, .cp,\n"
+    "                      .opx: export in that format, creases drawn folded flat)\n"
+    "  --json              with -o: print {output, title, vertices, edges, faces,\n"
+    "                      edges_by_assignment, generator}\n"
     "\n"
     "Bad or inapplicable values exit with status 2 and the allowed range.\n"
     "\n"

@@ -29,14 +29,15 @@ static int run(int argc, char **argv)
     double *deg = malloc(sizeof(double) * (size_t)(argc > 1 ? argc : 1));
     int n = 0;
     int rc = CLI_EXIT_OK;
+    cli_seen seen = {0};
     for (int i = 1; i < argc && rc == CLI_EXIT_OK; ++i) {
         if (strcmp(argv[i], "--list") == 0) list = true;
         else if (strcmp(argv[i], "--json") == 0) json = true;
         else if (strcmp(argv[i], "--assign") == 0) {
-            assign = cli_option_value("mv-count", argc, argv, &i);
+            assign = cli_option_once("mv-count", argc, argv, &i, &seen);
             if (!assign) rc = CLI_EXIT_USAGE;
         } else if (strcmp(argv[i], "--max") == 0) {
-            const char *v = cli_option_value("mv-count", argc, argv, &i);
+            const char *v = cli_option_once("mv-count", argc, argv, &i, &seen);
             if (!v) rc = CLI_EXIT_USAGE;
             else if (!cli_parse_int(v, &max) || max < 0) rc = cli_usage("mv-count", "--max needs a count ≥ 0");
         } else if (argv[i][0] == '-' && argv[i][1] == '-') {

@@ -23,7 +23,13 @@ static int run(int argc, char **argv)
 {
     const char *path = NULL;
     bool json = false;
+    cli_input in;
+    cli_input_init(&in);
+    cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
+        int r = cli_input_option("tree", argc, argv, &i, &in, &seen);
+        if (r < 0) return -r;
+        if (r > 0) continue;
         if (strcmp(argv[i], "--json") == 0) json = true;
         else if (argv[i][0] == '-' && argv[i][1] != '\0') return cli_usage("tree", "unknown option %s", argv[i]);
         else if (!path) path = argv[i];
@@ -32,7 +38,7 @@ static int run(int argc, char **argv)
     if (!path) return cli_usage("tree", "missing FILE");
     ori_fold *doc;
     ori_pattern *p;
-    int rc = cli_load_pattern("tree", path, 0, false, &doc, &p);
+    int rc = cli_input_load("tree", path, &in, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
     int nodes = ori_pattern_tree_node_count(p), faces = ori_pattern_face_count(p);
     if (json) {
@@ -93,7 +99,7 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_tree = {
     "tree",
     "the face tree (crease history); its leaves are the folding elements",
-    "usage: orikin tree FILE [--json]\n"
+    "usage: orikin tree FILE [input options] [--json]\n"
     "\n"
     "Print the face tree of a crease pattern: every crease applied to a face ObjK split it into\n"
     "ObjK1 (left of the crease's direction) and ObjK2 (right). The leaves are the folding\n"
@@ -101,8 +107,8 @@ const cli_command cli_cmd_tree = {
     "elsewhere) are listed after the tree.\n"
     "\n"
     "options:\n"
-    "  --json   print {\"file\", \"nodes\": [{\"name\", \"parent\", \"children\", \"leaf\", \"face\"}],\n"
-    "           \"folding_elements\": [{\"face\", \"name\"}]}\n"
+    "  --json             print {\"file\", \"nodes\": [{\"name\", \"parent\", \"children\", \"leaf\",\n"
+    "                     \"face\"}], \"folding_elements\": [{\"face\", \"name\"}]}\n" CLI_INPUT_HELP
     "\n"
     "example: orikin tree examples/patterns/open-corner.fold\n",
     run,

@@ -1,5 +1,7 @@
 // orikin: the command-line tool. Commands come from a sorted, generated table (one
 // cli/cmd_<name>.c each); help goes to stdout, usage errors to stderr with exit 2.
+#define _POSIX_C_SOURCE 200809L
+#include <signal.h>
 #include <string.h>
 
 #include "cli.h"
@@ -42,8 +44,34 @@ static void print_overview(FILE *out)
             "example: orikin check examples/patterns/open-corner.fold\n");
 }
 
+// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ (file size limit): remove the temporary
+// files of outputs being written (the library tracks them; ori_file_remove_temporaries is
+// async-signal-safe), then die of the signal as if unhandled, so the shell sees the usual status.
+static void on_signal(int sig)
+{
+    ori_file_remove_temporaries();
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void install_signal_handlers(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ};
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; ++i) {
+        struct sigaction old;
+        // A signal ignored by the parent (nohup, a background job's SIGINT) stays ignored.
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+        sigaction(sigs[i], &sa, NULL);
+    }
+}
+
 int main(int argc, char **argv)
 {
+    install_signal_handlers();
     if (argc < 2) {
         print_overview(stderr);
         return CLI_EXIT_USAGE;
@@ -74,6 +102,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "orikin: unknown command '%s'; try 'orikin -h'\n", name);
         return CLI_EXIT_USAGE;
     }
+    cli_set_command(cmd->name);
     for (int i = 2; i < argc; ++i)
         if (cli_is_help(argv[i])) return cli_finish(cli_print_help(cmd));
     return cli_finish(cmd->run(argc - 1, argv + 1));

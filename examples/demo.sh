@@ -91,6 +91,12 @@ echo "(the open corner with gold hinges, folded as the thesis does: two folds, o
 run 0 actuate examples/open-corner-gold.seq.json
 run 0 simulate examples/open-corner-gold.seq.json --current 0.02 --duration 0.012 --damping 0.2 --frames 13 \
     -o "$OUT/open-corner-gold-folding.fold"
+# --- io: finding faces and edges; drawings from other tools ----------------------------------
+step "9. Finding faces and edges by index and name; drawings in and out"
+run 0 info "$OUT/open-corner.fold" --faces --edges
+run 0 convert "$OUT/open-corner.fold" "$OUT/open-corner-labelled.svg" --labels all
+run 0 convert tests/data/formats/bird.cp "$OUT/bird.fold"
+run 0 generate miura --rows 4 --cols 6 -o "$OUT/miura.svg"
 
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2

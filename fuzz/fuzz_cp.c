@@ -3,4 +3,4 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) { return fuzz_import(data, size, ori_cp_read_segments, ori_cp_write); }
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) { return fuzz_import(data, size, ori_cp_read_segments, ori_cp_write, false); }

@@ -4,7 +4,7 @@
 /// Functions: ori_status_name, ori_status_message, ori_error_clear, ori_error_format,
 /// ori_set_allocator, ori_set_assert_hook, ori_set_oom_hook, ori_alloc_live_count,
 /// ori_alloc_live_bytes, ori_alloc_peak_bytes, ori_alloc_reset_peak, ori_buffer_free,
-/// ori_file_read_all, ori_file_write_atomic, ori_version_string.
+/// ori_file_read_all, ori_file_write_atomic, ori_file_remove_temporaries, ori_version_string.
 #ifndef ORIKIN_BASE_H
 #define ORIKIN_BASE_H
 
@@ -112,14 +112,28 @@ ORI_API void ori_alloc_reset_peak(void);
 ORI_API void ori_buffer_free(void *buffer);
 
 /// Read a whole file into a NUL-terminated buffer (free with ori_buffer_free). Files larger
-/// than max_bytes fail with ORI_ERR_LIMIT before anything is allocated.
+/// than max_bytes fail with ORI_ERR_LIMIT before anything is allocated; anything but a regular
+/// file (FIFO, device, directory) fails at once with ORI_ERR_IO, without blocking.
 ORI_API ori_status ori_file_read_all(const char *path, size_t max_bytes, char **out_data,
                                      size_t *out_size, ori_error *error);
 
-/// Write size bytes to path atomically: into a temporary file beside it, then rename. On
-/// failure nothing is left at path (an existing file there is untouched).
+/// Write size bytes to path atomically: into a temporary file beside it ("NAME.tmp.XXXXXX",
+/// NAME shortened when too long for the directory), then rename. On failure nothing is left at
+/// path (an existing file there is untouched). A symbolic link is written through (its target
+/// is replaced, the link kept); a path that is not a regular file (device, FIFO, directory) or
+/// an existing file the process may not write (e.g. mode 0444) is refused with ORI_ERR_IO. The
+/// new file keeps the replaced file's mode (and owner where permitted); a new file gets 0666
+/// less the umask. While the temporary file exists, ori_file_remove_temporaries can remove it.
 ORI_API ori_status ori_file_write_atomic(const char *path, const void *data, size_t size,
                                          ori_error *error);
+
+/// Remove the temporary files of every ori_file_write_atomic still in progress (in any thread)
+/// and return how many were removed. Async-signal-safe: meant for the SIGINT/SIGTERM handler
+/// of the program (the library installs none), which calls it and then ends the process, e.g.
+///   static void on_signal(int sig) { ori_file_remove_temporaries(); signal(sig, SIG_DFL); raise(sig); }
+/// An interrupted write then leaves neither a partial output nor its temporary file. Up to 64
+/// writes at once are tracked.
+ORI_API int ori_file_remove_temporaries(void);
 
 /// Progress of a long operation: called now and then with the fraction done (0 … 1) and the
 /// user pointer given with it. Return false to cancel: the operation then stops at its next

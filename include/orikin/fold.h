@@ -4,8 +4,9 @@
 ///
 /// Functions: ori_fold_load_file, ori_fold_load_string, ori_fold_create, ori_fold_destroy,
 /// ori_fold_frame_count, ori_fold_frame_is_folded_form, ori_fold_get_pattern,
-/// ori_fold_set_pattern, ori_fold_append_frame, ori_fold_append_state, ori_fold_get_custom, ori_fold_set_custom,
-/// ori_fold_set_string, ori_fold_to_string, ori_json_normalize, ori_fold_save_file.
+/// ori_fold_set_pattern, ori_fold_extract_frame, ori_fold_append_frame, ori_fold_append_state,
+/// ori_fold_get_custom, ori_fold_set_custom, ori_fold_set_string, ori_fold_to_string,
+/// ori_json_normalize, ori_fold_save_file.
 ///
 /// Frame numbers follow FOLD: frame 0 is the top level, frame k ≥ 1 is file_frames[k − 1].
 #ifndef ORIKIN_FOLD_H
@@ -48,11 +49,20 @@ ORI_API ori_status ori_fold_get_pattern(const ori_fold *doc, int frame, const or
                                         ori_pattern **out, ori_error *error);
 /// Write a pattern's fields into a frame (0 = top level), keeping every other field. When the
 /// vertex, edge or face counts change, FOLD's derived index fields (vertices_vertices,
-/// faces_edges, edges_faces, …) of that frame are dropped, since they would be stale.
+/// faces_edges, edges_faces, …) of that frame are dropped, since they would be stale. A frame
+/// that inherits a field that must go (stale, or one the pattern does not have) first takes its
+/// inherited fields in and stops inheriting (frame_inherit false).
 ORI_API ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *pattern,
                                         ori_error *error);
+/// A new document holding frame `frame` alone as its top level (a real extraction): the frame's
+/// fields with inheritance resolved (its own first), the top level's file metadata (file_title,
+/// file_author, …) and file_classes ["singleModel"]; frame_parent, frame_inherit and file_frames
+/// are dropped. Destroy with ori_fold_destroy (*out is NULL on failure: ORI_ERR_RANGE).
+ORI_API ori_status ori_fold_extract_frame(const ori_fold *doc, int frame, ori_fold **out, ori_error *error);
+
 /// Append a frame to file_frames with the given frame_classes entry (e.g. "foldedForm") and
-/// title (either may be NULL). With parent = ORI_NULL_INDEX the frame holds all the pattern's
+/// title (either may be NULL). The document becomes an animation: file_classes "singleModel"
+/// is replaced by "animation" (ori_fold_append_state likewise). With parent = ORI_NULL_INDEX the frame holds all the pattern's
 /// fields; with a parent frame number it inherits from it (frame_inherit) and holds only
 /// vertices_coords and edges_foldAngle (a folded state of the same pattern). Returns the new
 /// frame number.

@@ -39,23 +39,38 @@ ORI_API ori_format ori_format_from_path(const char *path);
 /// Lower-case name of a format ("svg"); static string.
 ORI_API const char *ori_format_name(ori_format format);
 
+/// ori_import_def.gap_rel: close the gaps the drawing's own line width hides (see gap_rel).
+#define ORI_IMPORT_GAP_AUTO (-1.0)
+
 /// Import parameters; get them from ori_default_import_def().
 typedef struct ori_import_def {
     double weld_rel;       ///< end points (and points on segments) closer than weld_rel × the drawing's diagonal are one point; > 0, default ORI_TOL_IMPORT_WELD_REL
+    double gap_rel;        ///< a crease end touching nothing (dangling) within gap_rel × the diagonal of another line is extended onto it (a dangling piece shorter than that, an overshoot, is dropped); 0 = off, at most ORI_IMPORT_GAP_MAX_REL; default ORI_IMPORT_GAP_AUTO: the drawing's line width where the reader knows it (SVG stroke-width: lines that touch on the page are joined; capped to ORI_IMPORT_GAP_MAX_REL), else off
     bool merge_collinear;  ///< remove vertices joining just two collinear edges of the same assignment and angle (drawing artefacts); default true
     bool remove_holes;     ///< drop faces bounded only by B/C edges that have paper on their other side (holes); default true
     int internal_value;    ///< set by ori_default_import_def; do not change
 } ori_import_def;
 
-/// Defaults: weld ORI_TOL_IMPORT_WELD_REL, merge collinear, remove holes.
+/// Defaults: weld ORI_TOL_IMPORT_WELD_REL, gaps up to the line width closed, merge collinear,
+/// remove holes.
 ORI_API ori_import_def ori_default_import_def(void);
 
-/// What a reader found besides its segments (for warnings).
+/// What a reader found besides its segments, and (ori_import_file) what planarising them gave:
+/// for warnings that say what went wrong and what would fix it.
 typedef struct ori_import_stats {
     int segments;            ///< segments returned
     int ignored_elements;    ///< SVG elements with a stroke that is no crease colour; ORIPA aux/cut-model lines
     char ignored_colour[32]; ///< SVG: the first such stroke, as written ("" when none)
     int unsupported_elements;///< SVG elements skipped because orikin does not read them (use, image, text…)
+    double stroke_width;     ///< SVG: the median drawn width of the crease lines, in drawing units (0: unknown)
+    double gap_rel;          ///< ori_import_file: the gap closed (def gap_rel, resolved), × the diagonal
+    int gaps_closed;         ///< dangling crease ends extended onto a line (or overshoots dropped)
+    double largest_gap_rel;  ///< the largest gap closed, × the diagonal
+    int dangling;            ///< crease ends still touching nothing after the import (degree-1 vertices)
+    int dangling_example;    ///< one of them (vertex index), ORI_NULL_INDEX when none
+    double dangling_gap_rel; ///< how far the farthest of them is from another line, × the diagonal (0 when none within ORI_IMPORT_GAP_MAX_REL)
+    int parts;               ///< separate pieces of the result (connected components; 1 is one sheet)
+    int part_example;        ///< a vertex of a piece other than the one holding vertex 0, ORI_NULL_INDEX when one piece
 } ori_import_stats;
 
 /// Read an SVG document (text of size bytes) into segments: stroke colour → assignment, stroke
@@ -78,12 +93,15 @@ ORI_API ori_status ori_read_segments(const char *path, ori_format format, ori_se
                                      ori_import_stats *stats, ori_error *error);
 
 /// Planarise segments into a new flat pattern: overlapping and crossing segments are split and
-/// merged (ori_pattern_from_segments) with the weld tolerance of def (NULL = defaults), then
-/// collinear pass-through vertices are merged and holes removed as def says, and the pattern is
-/// built with faces. *out is NULL on failure; destroy with ori_pattern_destroy.
+/// merged (ori_pattern_from_segments) with the weld tolerance of def (NULL = defaults), gaps are
+/// closed (an explicit def gap_rel; segments carry no line width, so ORI_IMPORT_GAP_AUTO is off
+/// here), collinear pass-through vertices are merged and holes removed as def says, and the
+/// pattern is built with faces. *out is NULL on failure; destroy with ori_pattern_destroy.
 ORI_API ori_status ori_segments_to_pattern(const ori_segment *segments, int count, const ori_import_def *def,
                                            ori_pattern **out, ori_error *error);
 /// Read and planarise a file (format by extension unless format is given); def may be NULL.
+/// stats (may be NULL) receives the reader's findings and the diagnosis of the result: gaps
+/// closed, crease ends left dangling and separate pieces, each with an example.
 ORI_API ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def,
                                    ori_pattern **out, ori_import_stats *stats, ori_error *error);
 
@@ -92,25 +110,32 @@ typedef struct ori_svg_write_def {
     double stroke_width_rel; ///< stroke width as a fraction of the larger side of the drawing; default 1/300
     double margin_rel;       ///< blank margin around the drawing, fraction of the larger side; default 0.05
     bool full_fold;          ///< write every M and V at opacity 1 (fold flat) whatever its angle; default false
+    bool label_faces;        ///< write each face's index (and name) at its centroid, as <text> in a group the reader skips; default false
+    bool label_edges;        ///< write each edge's index at its middle (same group); default false
     int internal_value;      ///< set by ori_default_svg_write_def; do not change
 } ori_svg_write_def;
 
-/// Defaults: stroke width 1/300 of the drawing, 5 % margin, opacity from the fold angles.
+/// Defaults: stroke width 1/300 of the drawing, 5 % margin, opacity from the fold angles, no labels.
 ORI_API ori_svg_write_def ori_default_svg_write_def(void);
 
 /// The pattern (flat, x and y) as an SVG document that Origami Simulator opens: one <line> per
 /// edge in FOLD index order (J edges left out), coloured by assignment, stroke-opacity =
-/// |fold angle| / π for M and V (omitted when 1; 0 for an unfolded crease, which then does not
-/// show), y flipped back, a viewBox around the drawing. def may be NULL. Free with ori_buffer_free.
+/// |fold angle| / π for M and V (read back as opacity × π: the angle or its neighbouring double;
+/// omitted when 1; a crease at 0, e.g. of a generated pattern, has no target and is written
+/// at 1, fold flat, so that it shows), y flipped back, a viewBox around the drawing, labels as
+/// def says. def may be NULL. Free with ori_buffer_free.
 ORI_API char *ori_svg_write(const ori_pattern *pattern, const ori_svg_write_def *def);
-/// The pattern as ORIPA .cp text: B → 1, M → 2, V → 3, C → 1, F and U → 4 (auxiliary); J edges
-/// are left out. y flipped back. Free with ori_buffer_free.
+/// The pattern as ORIPA .cp text: B → 1, M → 2, V → 3, C → 1, F and U → 4 (auxiliary, which
+/// ORIPA and orikin do not read as creases: ori_export_file refuses such patterns); J edges are
+/// left out. y flipped back. Free with ori_buffer_free.
 ORI_API char *ori_cp_write(const ori_pattern *pattern);
 /// The pattern as ORIPA .opx XML with the same type mapping as ori_cp_write (F and U → 0, aux).
 /// Free with ori_buffer_free.
 ORI_API char *ori_opx_write(const ori_pattern *pattern);
 /// Write a flat pattern as SVG (with svg_def, may be NULL), CP or OPX to path atomically (format
-/// by extension unless given). Fails with ORI_ERR_UNSUPPORTED for a folded form.
+/// by extension unless given); what it writes reads back as the same pattern (CP and OPX: C as
+/// B). Fails with ORI_ERR_UNSUPPORTED for a folded form, and for CP and OPX when the pattern
+/// has F or U creases (ORIPA has no such type; the first one is named).
 ORI_API ori_status ori_export_file(const ori_pattern *pattern, ori_format format, const ori_svg_write_def *svg_def,
                                    const char *path, ori_error *error);
 

@@ -340,5 +340,21 @@
 /// A simulation keeps at most this many values per history (output frames × edges): about 0.4 GB
 /// for its angles, currents and plastic rotations.
 #define ORI_DYN_MAX_FRAME_VALUES 2e7
+// --- files and imports (io) ---------------------------------------------------------------------
+
+/// A fold angle read from a file that lies beyond ±π by at most this is read as ±π: the
+/// rounding of a fully folded state written by orikin (−180.00000000286695°) or another tool.
+/// Beyond it the angle is refused. Radians (files hold degrees: 5.7e-7°).
+#define ORI_TOL_FILE_ANGLE_RAD 1e-8
+
+/// The widest gap an import closes between a crease end and another line (ori_import_def
+/// gap_rel is capped to it: a line drawn wider than this is no gap to hide), and how far the
+/// diagnosis looks for the line a dangling crease end missed. Unitless (× the drawing's diagonal).
+#define ORI_IMPORT_GAP_MAX_REL 0.01
+
+/// Library messages show a number rounded to 6 digits (%g) only when that is within this of the
+/// value relative to its size, else with more digits, so a value just outside a bound is never
+/// shown as the bound. Unitless (4 ulps).
+#define ORI_TOL_MESSAGE_REL 8.881784197001252e-16
 
 #endif

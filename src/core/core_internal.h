@@ -69,6 +69,19 @@ ori_status ori__fail_pos(ori_error *error, ori_status status, int line, int colu
 // A coordinate orikin can compute with: finite and at most ORI_COORD_MAX in magnitude.
 static inline bool ori__coord_ok(double x) { return isfinite(x) && fabs(x) <= ORI_COORD_MAX; }
 
+// vsnprintf for library messages (ori__fail*): the same conversions, except that %g without a
+// precision prints a value exactly enough to read back as itself (see status.c).
+void ori__vformat(char *buf, size_t size, const char *fmt, va_list ap);
+
+// Memory the process can still use (bytes): the least of the system's available memory, the
+// container's limit less its use and the process's resource limits; UINT64_MAX when unknown.
+uint64_t ori__memory_available(void);
+// ori_file_read_all, refused up front (ORI_ERR_LIMIT, saying how much is needed and available)
+// when bytes_per_byte × the file's size exceeds ori__memory_available(): the peak memory a
+// reader needs per byte of its file.
+ori_status ori__file_read_within_memory(const char *path, size_t max_bytes, unsigned bytes_per_byte, char **out_data,
+                                        size_t *out_size, ori_error *error);
+
 // Bounded string copy that always terminates.
 void ori__strlcpy(char *dst, const char *src, size_t size);
 

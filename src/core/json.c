@@ -3,6 +3,8 @@
 
 json_t *ori__json_parse(const char *text, size_t size, size_t flags, ori_error *error)
 {
+    // A UTF-8 byte-order mark (some Windows editors write one) is not part of the JSON text.
+    if (size >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) text += 3, size -= 3;
     json_error_t je;
     json_t *root = json_loadb(text, size, flags, &je);
     if (!root)

@@ -1,6 +1,6 @@
 // Exporting a flat crease pattern: SVG in the Origami Simulator convention (one <line> per
-// edge, colour by assignment, stroke-opacity = |fold angle| / π), and the dispatch by format
-// (CP and OPX writers live in oripa.c).
+// edge, colour by assignment, stroke-opacity = |fold angle| / π), optional labels, and the
+// dispatch by format (CP and OPX writers live in oripa.c).
 #include <orikin/formats.h>
 
 #include <stdio.h>
@@ -14,6 +14,8 @@ ori_svg_write_def ori_default_svg_write_def(void)
     def.stroke_width_rel = 1.0 / 300.0;
     def.margin_rel = 0.05;
     def.full_fold = false;
+    def.label_faces = false;
+    def.label_edges = false;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
@@ -29,6 +31,66 @@ static const char *stroke_of(ori_assignment a)
     case ORI_ASSIGN_CUT: return "#00ff00";
     default: return NULL; // J: not a line of the drawing
     }
+}
+
+static void put_xy(ori__text *t, const char *xa, double x, const char *ya, double y)
+{
+    ori__text_printf(t, " %s=\"", xa);
+    ori__text_real(t, x);
+    ori__text_printf(t, "\" %s=\"", ya);
+    ori__text_real(t, y);
+    ori__text_puts(t, "\"");
+}
+
+// Labels (faces: index and name at the centroid of the face's corners; edges: index at the
+// middle) in a group the reader skips, drawn over the creases. Drawing frame: y down.
+static void write_labels(ori__text *t, const ori_pattern *p, const ori_svg_write_def *def, double side)
+{
+    // (a white outline under each label keeps it legible where it sits on a line)
+    ori__text_puts(t, "<g id=\"orikin-labels\" font-family=\"sans-serif\" text-anchor=\"middle\" "
+                      "dominant-baseline=\"central\" stroke=\"#ffffff\" paint-order=\"stroke\" stroke-linejoin=\"round\" "
+                      "stroke-width=\"");
+    ori__text_real(t, side / 500.0);
+    ori__text_puts(t, "\">\n");
+    if (def->label_faces) {
+        ori__text_puts(t, "<g fill=\"#404040\" font-size=\"");
+        ori__text_real(t, side / 40.0);
+        ori__text_puts(t, "\">\n");
+        for (int f = 0; f < p->face_count; ++f) {
+            double cx = 0.0, cy = 0.0;
+            int n = p->face_offsets[f + 1] - p->face_offsets[f];
+            for (int k = p->face_offsets[f]; k < p->face_offsets[f + 1]; ++k) {
+                cx += p->vertices[p->face_vertices[k]].x;
+                cy += p->vertices[p->face_vertices[k]].y;
+            }
+            ori__text_puts(t, "<text");
+            put_xy(t, "x", cx / n, "y", -cy / n);
+            ori__text_printf(t, ">%d", f);
+            if (p->face_names && p->face_names[f][0]) {
+                ori__text_puts(t, " ");
+                for (const char *c = p->face_names[f]; *c; ++c) { // (names are plain, but escape anyway)
+                    if (*c == '<') ori__text_puts(t, "&lt;");
+                    else if (*c == '&') ori__text_puts(t, "&amp;");
+                    else ori__text_put(t, c, 1);
+                }
+            }
+            ori__text_puts(t, "</text>\n");
+        }
+        ori__text_puts(t, "</g>\n");
+    }
+    if (def->label_edges) {
+        ori__text_puts(t, "<g fill=\"#007000\" font-size=\"");
+        ori__text_real(t, side / 60.0);
+        ori__text_puts(t, "\">\n");
+        for (int e = 0; e < p->edge_count; ++e) {
+            ori_v3 u = p->vertices[p->edges[e].v[0]], v = p->vertices[p->edges[e].v[1]];
+            ori__text_puts(t, "<text");
+            put_xy(t, "x", 0.5 * (u.x + v.x), "y", -0.5 * (u.y + v.y));
+            ori__text_printf(t, ">%d</text>\n", e);
+        }
+        ori__text_puts(t, "</g>\n");
+    }
+    ori__text_puts(t, "</g>\n");
 }
 
 char *ori_svg_write(const ori_pattern *p, const ori_svg_write_def *def)
@@ -74,7 +136,10 @@ char *ori_svg_write(const ori_pattern *p, const ori_svg_write_def *def)
         }
         ori__text_printf(&t, "\" stroke=\"%s\"", stroke);
         if (ed->assignment == ORI_ASSIGN_MOUNTAIN || ed->assignment == ORI_ASSIGN_VALLEY) {
-            double o = def->full_fold ? 1.0 : fmin(1.0, fabs(ed->fold_angle_rad) / ORI_PI);
+            // The fold angle is the crease's target; a crease at 0 (a flat crease pattern, e.g.
+            // a generated one) has none and is drawn folded flat, so that it shows.
+            double a = fabs(ed->fold_angle_rad);
+            double o = def->full_fold || a == 0.0 || a >= ORI_PI ? 1.0 : a / ORI_PI;
             if (o != 1.0) {
                 ori__text_puts(&t, " stroke-opacity=\"");
                 ori__text_real(&t, o);
@@ -83,7 +148,9 @@ char *ori_svg_write(const ori_pattern *p, const ori_svg_write_def *def)
         }
         ori__text_puts(&t, "/>\n");
     }
-    ori__text_puts(&t, "</g>\n</svg>\n");
+    ori__text_puts(&t, "</g>\n");
+    if (def->label_faces || def->label_edges) write_labels(&t, p, def, side);
+    ori__text_puts(&t, "</svg>\n");
     return t.data;
 }
 
@@ -97,6 +164,17 @@ ori_status ori_export_file(const ori_pattern *p, ori_format format, const ori_sv
     if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p))
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "%s export needs a flat crease pattern, not a folded form",
                          ori_format_name(format));
+    if (format != ORI_FORMAT_SVG)
+        for (int e = 0; e < p->edge_count; ++e) {
+            ori_assignment a = p->edges[e].assignment;
+            if (a != ORI_ASSIGN_FLAT && a != ORI_ASSIGN_UNASSIGNED) continue;
+            int n = ori_pattern_count_assignment(p, a);
+            return ori__fail_at(error, ORI_ERR_UNSUPPORTED, "edges_assignment", e,
+                                "ORIPA has no %s crease (%d in the pattern): its auxiliary lines are not creases and "
+                                "would not come back; assign them M or V (orikin edit --assign %d=M), or export "
+                                ".fold or .svg",
+                                a == ORI_ASSIGN_FLAT ? "flat (F)" : "unassigned (U)", n, e);
+        }
     char *text = format == ORI_FORMAT_SVG ? ori_svg_write(p, svg_def)
                  : format == ORI_FORMAT_CP ? ori_cp_write(p)
                                            : ori_opx_write(p);

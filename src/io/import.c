@@ -4,82 +4,9 @@
 #include <ctype.h>
 #include <stdlib.h>
 
+#include "../geometry/geometry_internal.h"
 #include "../pattern/pattern_internal.h"
-#include "import_internal.h"
-
-// --- shared helpers --------------------------------------------------------------------------
-
-void ori__seg_push(ori__seg_list *list, double ax, double ay, double bx, double by, ori_assignment asg,
-                   double fold_angle_rad)
-{
-    if (ax == bx && ay == by) return;
-    ori_segment s;
-    s.a = ori_v2_make(ax, ay == 0.0 ? 0.0 : -ay);
-    s.b = ori_v2_make(bx, by == 0.0 ? 0.0 : -by);
-    s.assignment = asg;
-    s.fold_angle_rad = fold_angle_rad;
-    ORI__PUSH(list->items, list->count, list->cap, s);
-}
-
-size_t ori__scan_number(const char *s, double *out)
-{
-    const char *p = s;
-    if (*p == '+' || *p == '-') ++p;
-    const char *digits = p;
-    while (*p >= '0' && *p <= '9') ++p;
-    bool int_part = p > digits;
-    bool frac_part = false;
-    if (*p == '.') {
-        const char *f = ++p;
-        while (*p >= '0' && *p <= '9') ++p;
-        frac_part = p > f;
-    }
-    if (!int_part && !frac_part) return 0;
-    if (*p == 'e' || *p == 'E') {
-        const char *e = p + 1;
-        if (*e == '+' || *e == '-') ++e;
-        if (*e >= '0' && *e <= '9') {
-            while (*e >= '0' && *e <= '9') ++e;
-            p = e;
-        }
-    }
-    size_t n = (size_t)(p - s);
-    char buf[128];
-    if (n >= sizeof buf) return 0;
-    memcpy(buf, s, n);
-    buf[n] = '\0';
-    double v = strtod(buf, NULL);
-    if (!isfinite(v)) return 0;
-    *out = v;
-    return n;
-}
-
-static void stats_clear(ori_import_stats *stats)
-{
-    if (stats) memset(stats, 0, sizeof *stats);
-}
-
-void ori__reader_begin(ori_segment **segments, int *count, ori_import_stats *stats, ori_error *error)
-{
-    *segments = NULL;
-    *count = 0;
-    stats_clear(stats);
-    ori_error_clear(error);
-}
-
-ori_status ori__reader_end(ori_status st, ori__seg_list *segs, ori_import_stats *found, ori_segment **segments,
-                           int *count, ori_import_stats *stats)
-{
-    if (st != ORI_OK) {
-        ori__free(segs->items);
-        return st;
-    }
-    found->segments = segs->count;
-    if (stats) *stats = *found;
-    *segments = segs->items;
-    *count = segs->count;
-    return ORI_OK;
-}
+#include "reader_internal.h"
 
 // --- formats ---------------------------------------------------------------------------------
 
@@ -114,6 +41,7 @@ ori_import_def ori_default_import_def(void)
 {
     ori_import_def def;
     def.weld_rel = ORI_TOL_IMPORT_WELD_REL;
+    def.gap_rel = ORI_IMPORT_GAP_AUTO;
     def.merge_collinear = true;
     def.remove_holes = true;
     def.internal_value = ORI__DEF_COOKIE;
@@ -126,7 +54,10 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
     *count = 0;
-    stats_clear(stats);
+    if (stats) {
+        memset(stats, 0, sizeof *stats);
+        stats->dangling_example = stats->part_example = ORI_NULL_INDEX;
+    }
     if (format == ORI_FORMAT_UNKNOWN) format = ori_format_from_path(path);
     if (format != ORI_FORMAT_SVG && format != ORI_FORMAT_OPX && format != ORI_FORMAT_CP)
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "cannot read segments from a '%s' file", ori_format_name(format));
@@ -245,30 +176,113 @@ static int remove_holes(ori_pattern *p)
     return holes;
 }
 
-// Exact winding number of face f around point q (nonzero: q strictly inside or on its edges).
-static int winding(const ori_pattern *p, int f, ori_v2 q)
+// Whether non-vertical segment s (left end l, right end r) lies below segment t at x just right
+// of x0, both spanning it and not crossing (planar edges): decided exactly by orientation signs.
+static bool below(ori_v2 sl, ori_v2 sr, ori_v2 tl, ori_v2 tr)
 {
-    int wn = 0, b = p->face_offsets[f], n = p->face_offsets[f + 1] - b;
-    for (int k = 0; k < n; ++k) {
-        ori_v2 a = ori__pattern_v2(p, p->face_vertices[b + k]), c = ori__pattern_v2(p, p->face_vertices[b + (k + 1) % n]);
-        if (a.y <= q.y) {
-            if (c.y > q.y && ori_orient2d_sign(a, c, q) > 0) wn++;
-        } else if (c.y <= q.y && ori_orient2d_sign(a, c, q) < 0) {
-            wn--;
+    if (sl.x >= tl.x) { // s starts within t's x range: where is s's start relative to t?
+        int o = ori_orient2d_sign(tl, tr, sl);
+        if (o == 0) o = ori_orient2d_sign(tl, tr, sr); // they meet there: the slopes decide
+        return o < 0;
+    }
+    int o = ori_orient2d_sign(sl, sr, tl);
+    if (o == 0) o = ori_orient2d_sign(sl, sr, tr);
+    return o > 0;
+}
+
+static int grid_index(double v, double v0, double cell, int n)
+{
+    double c = floor((v - v0) / cell);
+    if (!(c >= 0.0)) return 0;
+    return c >= (double)n ? n - 1 : (int)c;
+}
+
+// All edges in a uniform grid of square cells, by columns and the rows an edge's y range covers
+// within a column (one row more on each side against rounding at the column's edges); CSR:
+// cell → edges. For the islands check and the nearest-line queries of gaps and diagnosis.
+typedef struct line_grid {
+    double x0, y0, cell;
+    int nx, ny;
+    int *start, *items;
+} line_grid;
+
+static void line_grid_cells(const ori_pattern *p, const line_grid *g, int e, int *count, int *fill)
+{
+    ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+    if (a.x > b.x) {
+        ori_v2 t = a;
+        a = b;
+        b = t;
+    }
+    int c0 = grid_index(a.x, g->x0, g->cell, g->nx), c1 = grid_index(b.x, g->x0, g->cell, g->nx);
+    for (int cx = c0; cx <= c1; ++cx) {
+        double lo, hi;
+        ori__segment_y_range(a, b, g->x0 + cx * g->cell, g->x0 + (cx + 1) * g->cell, &lo, &hi);
+        int r0 = grid_index(lo, g->y0, g->cell, g->ny) - 1, r1 = grid_index(hi, g->y0, g->cell, g->ny) + 1;
+        if (r0 < 0) r0 = 0;
+        if (r1 >= g->ny) r1 = g->ny - 1;
+        for (int r = r0; r <= r1; ++r) {
+            int cell = cx * g->ny + r;
+            if (fill) g->items[fill[cell]++] = e;
+            else count[cell]++;
         }
     }
-    return wn;
+}
+
+// About one cell per edge, no smaller than radius (a nearest-line query looks at the 3 × 3 cells
+// around its point) nor than a quarter of the mean edge length (a long edge then enters a few
+// cells per edge length, not hundreds).
+static void line_grid_build(const ori_pattern *p, double radius, line_grid *g)
+{
+    double lx = INFINITY, ly = INFINITY, hx = -INFINITY, hy = -INFINITY, total = 0.0;
+    for (int v = 0; v < p->vertex_count; ++v) {
+        lx = fmin(lx, p->vertices[v].x), ly = fmin(ly, p->vertices[v].y);
+        hx = fmax(hx, p->vertices[v].x), hy = fmax(hy, p->vertices[v].y);
+    }
+    for (int e = 0; e < p->edge_count; ++e)
+        total += ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, p->edges[e].v[1]), ori__pattern_v2(p, p->edges[e].v[0])));
+    double w = hx - lx, h = hy - ly;
+    g->cell = fmax(fmax(radius, 0.25 * total / (p->edge_count + 1.0)), sqrt(fmax(w * h, 0.0) / (p->edge_count + 1.0)));
+    if (!(g->cell > 0.0) || !isfinite(g->cell)) g->cell = fmax(fmax(w, h), 1.0);
+    while ((floor(w / g->cell) + 1.0) * (floor(h / g->cell) + 1.0) > (double)(1 << 22)) g->cell *= 1.5;
+    g->x0 = lx, g->y0 = ly;
+    g->nx = (int)floor(w / g->cell) + 1, g->ny = (int)floor(h / g->cell) + 1;
+    size_t cells = (size_t)g->nx * (size_t)g->ny;
+    g->start = ori__calloc(cells + 1, sizeof(int));
+    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, g->start + 1, NULL);
+    for (size_t c = 0; c < cells; ++c) g->start[c + 1] += g->start[c];
+    g->items = ori__alloc(sizeof(int) * (size_t)(g->start[cells] ? g->start[cells] : 1));
+    int *fill = ori__alloc(sizeof(int) * cells);
+    memcpy(fill, g->start, sizeof(int) * cells);
+    for (int e = 0; e < p->edge_count; ++e) line_grid_cells(p, g, e, NULL, fill);
+    ori__free(fill);
+}
+
+static void line_grid_free(line_grid *g)
+{
+    ori__free(g->start);
+    ori__free(g->items);
 }
 
 // A connected part of the drawing that lies inside a face of another part (a hole or a crease
 // touching nothing) cannot be expressed: FOLD faces are single cycles. Reject it, naming where.
+//
+// For each part, the vertical ray up from (just right of) its leftmost vertex q finds the lowest
+// edge e of any other part: q lies in the face below e, so the part is inside a face exactly when
+// e has a face on that side. Parts inside a face whose ray first meets yet another part are
+// found through the leftmost part in that face, whose ray meets the face's own boundary. The
+// edges are found in a grid walked upwards from q (about √E cells), not by testing every face.
 static ori_status check_islands(const ori_pattern *p, ori_error *error)
 {
     int nv = p->vertex_count;
     int *comp = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
     int parts = ori__pattern_parts(p, comp);
+    if (parts <= 1 || p->face_count == 0) {
+        ori__free(comp);
+        return ORI_OK;
+    }
     // leftmost (then lowest) vertex of each component
-    int *left = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+    int *left = ori__alloc(sizeof(int) * (size_t)nv);
     for (int v = 0; v < nv; ++v) left[v] = ORI_NULL_INDEX;
     for (int v = 0; v < nv; ++v) {
         int r = comp[v];
@@ -277,26 +291,244 @@ static ori_status check_islands(const ori_pattern *p, ori_error *error)
             (a.x == p->vertices[left[r]].x && a.y < p->vertices[left[r]].y))
             left[r] = v;
     }
+    line_grid g;
+    line_grid_build(p, 0.0, &g);
     ori_status st = ORI_OK;
-    for (int r = 0; r < nv && parts > 1 && st == ORI_OK; ++r) {
+    for (int r = 0; r < nv && st == ORI_OK; ++r) {
         if (comp[r] != r || left[r] == ORI_NULL_INDEX) continue;
         ori_v2 q = ori__pattern_v2(p, left[r]);
-        for (int f = 0; f < p->face_count; ++f) {
-            if (comp[p->face_vertices[p->face_offsets[f]]] == r || winding(p, f, q) == 0) continue;
+        int col = grid_index(q.x, g.x0, g.cell, g.nx), best = ORI_NULL_INDEX;
+        ori_v2 bl = q, br = q;
+        double best_y = INFINITY;
+        for (int row = grid_index(q.y, g.y0, g.cell, g.ny); row < g.ny; ++row) {
+            // (the lowest edge found lies at best_y ≈: once a row ends below it, no later row has a lower one)
+            if (best != ORI_NULL_INDEX && g.y0 + row * g.cell > best_y + g.cell) break;
+            int cell = col * g.ny + row;
+            for (int k = g.start[cell]; k < g.start[cell + 1]; ++k) {
+                int e = g.items[k];
+                if (comp[p->edges[e].v[0]] == r) continue;
+                ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+                ori_v2 el = a.x < b.x ? a : b, er = a.x < b.x ? b : a;
+                if (!(el.x <= q.x && q.x < er.x)) continue;     // spans x just right of q
+                if (ori_orient2d_sign(el, er, q) >= 0) continue; // not above q
+                if (best == ORI_NULL_INDEX || below(el, er, bl, br)) {
+                    best = e, bl = el, br = er;
+                    best_y = el.y + (q.x - el.x) / (er.x - el.x) * (er.y - el.y);
+                }
+            }
+        }
+        if (best == ORI_NULL_INDEX) continue;
+        // The face below best: right of v0→v1 when it runs left to right, else left of it.
+        bool ltr = ori__pattern_v2(p, p->edges[best].v[0]).x < ori__pattern_v2(p, p->edges[best].v[1]).x;
+        if (p->edge_faces[2 * best + (ltr ? 1 : 0)] != ORI_NULL_INDEX)
             st = ori__fail_at(error, ORI_ERR_TOPOLOGY, "vertices_coords", left[r],
                               "the lines around (%g, %g) touch nothing else and lie inside a face: FOLD faces "
                               "cannot have holes; connect them to the rest with a crease",
                               q.x, q.y);
-            break;
-        }
     }
+    line_grid_free(&g);
     ori__free(comp);
     ori__free(left);
     return st;
 }
 
-ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori_import_def *def, ori_pattern **out,
-                                   ori_error *error)
+// --- planarisation, gaps, diagnosis -------------------------------------------------------------
+
+// Planarise with the weld, then merge collinear pass-through vertices and remove holes as def
+// says (no island check).
+static ori_status pipeline(const ori_segment *segs, int count, const ori_import_def *def, double weld, ori_pattern **out,
+                           ori_error *error)
+{
+    *out = NULL;
+    // The arrangement snaps within ORI_TOL_LENGTH_REL × length_scale: scale it to the weld.
+    ori_insert_def idef = ori_default_insert_def();
+    idef.name_faces = false;
+    idef.length_scale = weld / ORI_TOL_LENGTH_REL;
+    ori_pattern *p = NULL;
+    ori_status st = ori_pattern_from_segments(segs, count, &idef, &p, NULL, error);
+    if (st != ORI_OK) return st;
+    ori_pattern_set_has_fold_angles(p, true);
+    ori_build_def bdef = ori_default_build_def();
+    if (def->merge_collinear) {
+        ori_pattern *q = merge_collinear(p, weld);
+        if (q) {
+            ori_pattern_destroy(p);
+            p = q;
+            st = ori_pattern_build(p, &bdef, error);
+        }
+    }
+    if (st == ORI_OK && def->remove_holes && remove_holes(p) > 0) st = ori_pattern_build(p, &bdef, error);
+    if (st != ORI_OK) {
+        ori_pattern_destroy(p);
+        return st;
+    }
+    *out = p;
+    return ORI_OK;
+}
+
+// The closest point to x on an edge other than those at vertex v (within radius, which must not
+// exceed the grid's cell): its distance, or INFINITY. *at receives the point.
+static double nearest_line(const ori_pattern *p, const line_grid *g, int v, ori_v2 x, double radius, ori_v2 *at, int *edge)
+{
+    int cx = grid_index(x.x, g->x0, g->cell, g->nx), cy = grid_index(x.y, g->y0, g->cell, g->ny);
+    double best = INFINITY;
+    for (int i = cx - 1; i <= cx + 1; ++i)
+        for (int j = cy - 1; j <= cy + 1; ++j) {
+            if (i < 0 || j < 0 || i >= g->nx || j >= g->ny) continue;
+            int cell = i * g->ny + j;
+            for (int k = g->start[cell]; k < g->start[cell + 1]; ++k) {
+                int e = g->items[k];
+                if (p->edges[e].v[0] == v || p->edges[e].v[1] == v) continue;
+                ori_v2 a = ori__pattern_v2(p, p->edges[e].v[0]), b = ori__pattern_v2(p, p->edges[e].v[1]);
+                ori_v2 d = ori_v2_sub(b, a);
+                double l2 = ori_v2_dot(d, d), t = l2 > 0.0 ? ori_v2_dot(ori_v2_sub(x, a), d) / l2 : 0.0;
+                t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+                ori_v2 q = ori_v2_add(a, ori_v2_scale(d, t));
+                double dist = ori_v2_norm(ori_v2_sub(x, q));
+                if (dist < best) best = dist, *at = q, *edge = e;
+            }
+        }
+    return best <= radius ? best : INFINITY;
+}
+
+// Where the ray from u through the dangling end v, continued by at most reach past v, first meets
+// another edge (not at u or v): the distance past v, or INFINITY.
+static double ray_hit(const ori_pattern *p, const line_grid *g, int u, int v, double reach, ori_v2 *at, int *edge)
+{
+    ori_v2 a = ori__pattern_v2(p, u), x = ori__pattern_v2(p, v), dir = ori_v2_sub(x, a);
+    double len = ori_v2_norm(dir);
+    if (!(len > 0.0)) return INFINITY;
+    dir = ori_v2_scale(dir, 1.0 / len);
+    int cx = grid_index(x.x, g->x0, g->cell, g->nx), cy = grid_index(x.y, g->y0, g->cell, g->ny);
+    double best = INFINITY;
+    for (int i = cx - 1; i <= cx + 1; ++i)
+        for (int j = cy - 1; j <= cy + 1; ++j) {
+            if (i < 0 || j < 0 || i >= g->nx || j >= g->ny) continue;
+            int cell = i * g->ny + j;
+            for (int k = g->start[cell]; k < g->start[cell + 1]; ++k) {
+                int e = g->items[k], e0 = p->edges[e].v[0], e1 = p->edges[e].v[1];
+                if (e0 == v || e1 == v || e0 == u || e1 == u) continue;
+                ori_v2 b0 = ori__pattern_v2(p, e0), b1 = ori__pattern_v2(p, e1), r = ori_v2_sub(b1, b0);
+                double den = ori_v2_cross(dir, r);
+                if (den == 0.0) continue;
+                ori_v2 q = ori_v2_sub(b0, x);
+                double t = ori_v2_cross(q, r) / den, s = ori_v2_cross(q, dir) / den;
+                if (t >= 0.0 && t <= reach && s >= 0.0 && s <= 1.0 && t < best)
+                    best = t, *at = ori_v2_add(x, ori_v2_scale(dir, t)), *edge = e;
+            }
+        }
+    return best;
+}
+
+// The degree of every vertex (into deg, vertex_count entries).
+static void vertex_degrees(const ori_pattern *p, int *deg)
+{
+    memset(deg, 0, sizeof(int) * (size_t)p->vertex_count);
+    for (int e = 0; e < p->edge_count; ++e) deg[p->edges[e].v[0]]++, deg[p->edges[e].v[1]]++;
+}
+
+// Close the gaps of at most gap: a dangling crease shorter than gap (an overshoot past a crossing,
+// a stroke fragment) is dropped; a longer one whose free end stops within gap of another line is
+// extended along its own direction onto it, or else moved to the nearest point of that line.
+// Returns the segments of the result (NULL when nothing changed) with their count in *n.
+static ori_segment *close_gaps(const ori_pattern *p, double gap, int *n, int *closed, double *largest)
+{
+    *n = *closed = 0;
+    *largest = 0.0;
+    int nv = p->vertex_count, ne = p->edge_count;
+    int *deg = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+    vertex_degrees(p, deg);
+    int dangling = 0;
+    for (int v = 0; v < nv; ++v) dangling += deg[v] == 1;
+    if (dangling == 0) {
+        ori__free(deg);
+        return NULL;
+    }
+    line_grid g;
+    line_grid_build(p, gap, &g);
+    ori_segment *segs = ori__alloc(sizeof(ori_segment) * (size_t)ne);
+    for (int e = 0; e < ne; ++e) {
+        const ori_edge *ed = &p->edges[e];
+        ori_v2 end[2] = {ori__pattern_v2(p, ed->v[0]), ori__pattern_v2(p, ed->v[1])};
+        bool drop = false;
+        for (int k = 0; k < 2 && !drop; ++k) {
+            int v = ed->v[k], u = ed->v[1 - k];
+            if (deg[v] != 1) continue;
+            ori_v2 at;
+            int hit = ORI_NULL_INDEX;
+            double len = ori_v2_norm(ori_v2_sub(end[k], end[1 - k]));
+            if (deg[u] > 1 && len <= gap && nearest_line(p, &g, v, end[k], gap, &at, &hit) <= gap) {
+                drop = true; // an overshoot: its free end is as close to a line as its length
+                *largest = fmax(*largest, len);
+            } else {
+                double d = ray_hit(p, &g, u, v, gap, &at, &hit);
+                if (!(d <= gap)) d = nearest_line(p, &g, v, end[k], gap, &at, &hit);
+                if (!(d <= gap)) continue;
+                // Within the gap of an end of the line it meets, it meets at that end (as drawn:
+                // the lines touch there), not a sliver away from it.
+                for (int j = 0; j < 2; ++j) {
+                    ori_v2 c = ori__pattern_v2(p, p->edges[hit].v[j]);
+                    if (ori_v2_norm(ori_v2_sub(c, at)) <= gap && ori_v2_norm(ori_v2_sub(c, end[k])) <= 2.0 * gap) {
+                        at = c;
+                        break;
+                    }
+                }
+                end[k] = at;
+                *largest = fmax(*largest, d);
+            }
+            (*closed)++;
+        }
+        if (drop) continue;
+        ori_segment s = {end[0], end[1], ed->assignment, ed->fold_angle_rad};
+        segs[(*n)++] = s;
+    }
+    line_grid_free(&g);
+    ori__free(deg);
+    if (*closed == 0) {
+        ori__free(segs);
+        return NULL;
+    }
+    return segs;
+}
+
+// Dangling ends and separate pieces of the result, with examples and how far the dangling ends
+// are from another line (up to ORI_IMPORT_GAP_MAX_REL of the diagonal).
+static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
+{
+    int nv = p->vertex_count;
+    int *deg = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+    vertex_degrees(p, deg);
+    stats->dangling = 0;
+    stats->dangling_example = ORI_NULL_INDEX;
+    stats->dangling_gap_rel = 0.0;
+    line_grid g = {0, 0, 0, 0, 0, NULL, NULL};
+    double reach = ORI_IMPORT_GAP_MAX_REL * diag;
+    bool grid = false;
+    for (int v = 0; v < nv; ++v) {
+        if (deg[v] != 1) continue;
+        if (stats->dangling++ == 0) stats->dangling_example = v;
+        if (!grid) line_grid_build(p, reach, &g), grid = true;
+        ori_v2 at;
+        int hit;
+        double d = nearest_line(p, &g, v, ori__pattern_v2(p, v), reach, &at, &hit);
+        if (d <= reach) stats->dangling_gap_rel = fmax(stats->dangling_gap_rel, d / diag);
+    }
+    if (grid) line_grid_free(&g);
+    int *comp = deg; // (reused)
+    stats->parts = ori__pattern_parts(p, comp);
+    stats->part_example = ORI_NULL_INDEX;
+    for (int v = 0; v < nv && stats->parts > 1; ++v)
+        if (comp[v] != comp[0]) {
+            stats->part_example = v;
+            break;
+        }
+    ori__free(deg);
+}
+
+// Planarise, close the gaps, check for islands; stats (may be NULL) receives the diagnosis.
+// stroke_width: the drawing's line width in its units (0: unknown).
+static ori_status to_pattern(const ori_segment *segs, int count, const ori_import_def *def, double stroke_width,
+                             ori_pattern **out, ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(out && count >= 0 && (segs || count == 0));
     *out = NULL;
@@ -306,6 +538,8 @@ ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori
     ori_error_clear(error);
     if (!(def->weld_rel > 0.0 && def->weld_rel < 1.0))
         return ori__fail(error, ORI_ERR_ARGUMENT, "weld tolerance %g is outside (0, 1)", def->weld_rel);
+    if (!(def->gap_rel == ORI_IMPORT_GAP_AUTO || (def->gap_rel >= 0.0 && def->gap_rel <= ORI_IMPORT_GAP_MAX_REL)))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "gap %g is outside [0, %g]", def->gap_rel, ORI_IMPORT_GAP_MAX_REL);
     if (count == 0) return ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
     ori_v2 lo = segs[0].a, hi = segs[0].a;
     for (int i = 0; i < count; ++i) {
@@ -320,34 +554,52 @@ ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori
     double diag = ori_v2_norm(ori_v2_sub(hi, lo));
     if (!(diag > 0.0) || !isfinite(diag)) return ori__fail(error, ORI_ERR_DEGENERATE, "the drawing has no extent");
     double weld = def->weld_rel * diag;
-
-    // The arrangement snaps within ORI_TOL_LENGTH_REL × length_scale: scale it to the weld.
-    ori_insert_def idef = ori_default_insert_def();
-    idef.name_faces = false;
-    idef.length_scale = weld / ORI_TOL_LENGTH_REL;
+    double gap_rel = def->gap_rel != ORI_IMPORT_GAP_AUTO ? def->gap_rel : stroke_width > 0.0 ? stroke_width / diag : 0.0;
+    if (!(gap_rel <= ORI_IMPORT_GAP_MAX_REL)) gap_rel = ORI_IMPORT_GAP_MAX_REL; // (a wider line is no gap)
     ori_pattern *p = NULL;
-    ori_status st = ori_pattern_from_segments(segs, count, &idef, &p, NULL, error);
-    if (st != ORI_OK) return st;
-    ori_pattern_set_has_fold_angles(p, true);
-
-    ori_build_def bdef = ori_default_build_def();
-    if (def->merge_collinear) {
-        ori_pattern *q = merge_collinear(p, weld);
-        if (q) {
-            ori_pattern_destroy(p);
-            p = q;
-            st = ori_pattern_build(p, &bdef, error);
-        }
+    ori_status st = pipeline(segs, count, def, weld, &p, error);
+    int closed = 0;
+    double largest = 0.0;
+    // (A joined end may still leave a sliver where it meets its line: later rounds drop it.)
+    for (int round = 0; round < 3 && st == ORI_OK && gap_rel * diag > weld; ++round) {
+        int n, k;
+        double big;
+        ori_segment *fixed = close_gaps(p, gap_rel * diag, &n, &k, &big);
+        if (!fixed) break;
+        closed += round == 0 ? k : 0;
+        largest = fmax(largest, big);
+        ori_pattern_destroy(p);
+        p = NULL;
+        st = n > 0 ? pipeline(fixed, n, def, weld, &p, error) : ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
+        ori__free(fixed);
     }
-    if (st == ORI_OK && def->remove_holes && remove_holes(p) > 0) st = ori_pattern_build(p, &bdef, error);
+    // Every line shorter than the weld (a drawing whose extent comes from a far-away stray line):
+    // nothing is left, which is no crease pattern.
+    if (st == ORI_OK && p->edge_count == 0)
+        st = ori__fail(error, ORI_ERR_DEGENERATE,
+                       "every line is shorter than the weld tolerance (%g of the drawing's size, %g): nothing is left; "
+                       "a smaller --tolerance keeps them",
+                       def->weld_rel, weld);
     // After the holes are gone: a separate piece inside a (connected) hole is fine.
     if (st == ORI_OK) st = check_islands(p, error);
     if (st != ORI_OK) {
         ori_pattern_destroy(p);
         return st;
     }
+    if (stats) {
+        stats->gap_rel = gap_rel;
+        stats->gaps_closed = closed;
+        stats->largest_gap_rel = largest / diag;
+        diagnose(p, diag, stats);
+    }
     *out = p;
     return ORI_OK;
+}
+
+ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori_import_def *def, ori_pattern **out,
+                                   ori_error *error)
+{
+    return to_pattern(segs, count, def, 0.0, out, NULL, error);
 }
 
 ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def, ori_pattern **out,
@@ -357,9 +609,12 @@ ori_status ori_import_file(const char *path, ori_format format, const ori_import
     *out = NULL;
     ori_segment *segs;
     int n;
-    ori_status st = ori_read_segments(path, format, &segs, &n, stats, error);
+    ori_import_stats found;
+    ori_status st = ori_read_segments(path, format, &segs, &n, &found, error);
+    if (stats) *stats = found;
     if (st != ORI_OK) return st;
-    st = ori_segments_to_pattern(segs, n, def, out, error);
+    st = to_pattern(segs, n, def, found.stroke_width, out, &found, error);
     ori__free(segs);
+    if (stats) *stats = found;
     return st;
 }

@@ -1,6 +1,6 @@
 // JSON output with numbers in their shortest exact decimal form and a FOLD-friendly layout.
 
-#include "io_internal.h"
+#include "fold_internal.h"
 
 json_t *ori__json_number(double x)
 {
@@ -8,7 +8,7 @@ json_t *ori__json_number(double x)
     return json_real(x);
 }
 
-static void write_compact(ori__text *b, const json_t *v)
+void ori__json_write_compact_to(ori__text *b, const json_t *v)
 {
     switch (json_typeof(v)) {
     case JSON_OBJECT: {
@@ -22,7 +22,7 @@ static void write_compact(ori__text *b, const json_t *v)
             first = false;
             ori__text_json_string(b, key, strlen(key));
             ori__text_puts(b, ":");
-            write_compact(b, val);
+            ori__json_write_compact_to(b, val);
         }
         ori__text_puts(b, "}");
         break;
@@ -31,7 +31,7 @@ static void write_compact(ori__text *b, const json_t *v)
         ori__text_puts(b, "[");
         for (size_t i = 0; i < json_array_size(v); ++i) {
             if (i) ori__text_puts(b, ",");
-            write_compact(b, json_array_get(v, i));
+            ori__json_write_compact_to(b, json_array_get(v, i));
         }
         ori__text_puts(b, "]");
         break;
@@ -62,7 +62,7 @@ static void indent(ori__text *b, int n)
 
 static void write_object(ori__text *b, const json_t *obj, int depth);
 
-static void write_value(ori__text *b, const char *key, const json_t *val, int depth)
+void ori__json_write_value_pretty(ori__text *b, const char *key, const json_t *val, int depth)
 {
     if (key && strcmp(key, "file_frames") == 0 && json_is_array(val) && json_array_size(val) > 0) {
         ori__text_puts(b, "[\n");
@@ -70,7 +70,7 @@ static void write_value(ori__text *b, const char *key, const json_t *val, int de
             indent(b, depth + 1);
             json_t *fr = json_array_get(val, i);
             if (json_is_object(fr)) write_object(b, fr, depth + 1);
-            else write_compact(b, fr);
+            else ori__json_write_compact_to(b, fr);
             ori__text_puts(b, i + 1 < json_array_size(val) ? ",\n" : "\n");
         }
         indent(b, depth);
@@ -79,13 +79,13 @@ static void write_value(ori__text *b, const char *key, const json_t *val, int de
         ori__text_puts(b, "[\n");
         for (size_t i = 0; i < json_array_size(val); ++i) {
             indent(b, depth + 1);
-            write_compact(b, json_array_get(val, i));
+            ori__json_write_compact_to(b, json_array_get(val, i));
             ori__text_puts(b, i + 1 < json_array_size(val) ? ",\n" : "\n");
         }
         indent(b, depth);
         ori__text_puts(b, "]");
     } else {
-        write_compact(b, val);
+        ori__json_write_compact_to(b, val);
     }
 }
 
@@ -104,7 +104,7 @@ static void write_object(ori__text *b, const json_t *obj, int depth)
         indent(b, depth + 1);
         ori__text_json_string(b, key, strlen(key));
         ori__text_puts(b, ": ");
-        write_value(b, key, val, depth + 1);
+        ori__json_write_value_pretty(b, key, val, depth + 1);
         ori__text_puts(b, ++i < n ? ",\n" : "\n");
     }
     indent(b, depth);
@@ -115,7 +115,7 @@ char *ori__json_write_pretty(const json_t *root)
 {
     ori__text b = {NULL, 0, 0};
     if (json_is_object(root)) write_object(&b, root, 0);
-    else write_compact(&b, root);
+    else ori__json_write_compact_to(&b, root);
     ori__text_puts(&b, "\n");
     return b.data;
 }
@@ -123,7 +123,7 @@ char *ori__json_write_pretty(const json_t *root)
 char *ori__json_write_compact(const json_t *root)
 {
     ori__text b = {NULL, 0, 0};
-    write_compact(&b, root);
+    ori__json_write_compact_to(&b, root);
     ori__text_puts(&b, "\n");
     return b.data;
 }

@@ -8,7 +8,7 @@
 #include <stdio.h>
 
 #include "../pattern/pattern_internal.h"
-#include "import_internal.h"
+#include "reader_internal.h"
 #include "io_internal.h"
 
 // Type code → assignment; false for codes that are skipped (*skip) or invalid.
@@ -29,11 +29,18 @@ static double flat_angle(ori_assignment a)
 
 // --- .opx ------------------------------------------------------------------------------------
 
-static bool attr_is(const xmlNode *n, const char *name, const char *value)
+typedef struct opx_ctx {
+    ori__seg_list segs;
+    ori_import_stats stats;
+    ori__xml_budget budget;
+    ori_error *error;
+} opx_ctx;
+
+static bool attr_is(opx_ctx *c, const xmlNode *n, const char *name, const char *value)
 {
-    xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
-    bool eq = v && strcmp((const char *)v, value) == 0;
-    xmlFree(v);
+    char *v = ori__xml_attr(n, name, &c->budget);
+    bool eq = v && strcmp(v, value) == 0;
+    ori__free(v);
     return eq;
 }
 
@@ -44,11 +51,12 @@ static const xmlNode *first_element(const xmlNode *n)
     return NULL;
 }
 
-typedef struct opx_ctx {
-    ori__seg_list segs;
-    ori_import_stats stats;
-    ori_error *error;
-} opx_ctx;
+// The limit on entity expansion (reader_internal.h), reached.
+static ori_status over_budget(opx_ctx *c, const xmlNode *n)
+{
+    return ori__fail_pos(c->error, ORI_ERR_LIMIT, (int)xmlGetLineNo(n), 0,
+                         "entity references expand to more than %d times the file's size", ORI__XML_EXPANSION_PER_BYTE);
+}
 
 static ori_status opx_line(opx_ctx *c, const xmlNode *obj)
 {
@@ -56,21 +64,23 @@ static ori_status opx_line(opx_ctx *c, const xmlNode *obj)
     double v[5] = {0, 0, 0, 0, 0};
     for (const xmlNode *p = obj->children; p; p = p->next) {
         if (p->type != XML_ELEMENT_NODE || strcmp((const char *)p->name, "void") != 0) continue;
-        xmlChar *prop = xmlGetProp(p, (const xmlChar *)"property");
+        char *prop = ori__xml_attr(p, "property", &c->budget);
         int k = -1;
         for (int i = 0; prop && i < 5; ++i)
-            if (strcmp((const char *)prop, names[i]) == 0) k = i;
-        xmlFree(prop);
+            if (strcmp(prop, names[i]) == 0) k = i;
+        ori__free(prop);
+        if (c->budget.exceeded) return over_budget(c, p);
         if (k < 0) continue; // other bean properties (selected, …)
         const xmlNode *val = first_element(p);
-        xmlChar *text = val ? xmlNodeGetContent(val) : NULL;
-        const char *s = text ? (const char *)text : "";
+        char *text = val ? ori__xml_text(val, &c->budget) : NULL;
+        if (c->budget.exceeded) return over_budget(c, val);
+        const char *s = text ? text : "";
         while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') ++s;
         size_t n = ori__scan_number(s, &v[k]);
         const char *rest = s + n;
         while (*rest == ' ' || *rest == '\t' || *rest == '\n' || *rest == '\r') ++rest;
         bool ok = n > 0 && *rest == '\0';
-        xmlFree(text);
+        ori__free(text);
         if (!ok)
             return ori__fail_pos(c->error, ORI_ERR_PARSE, (int)xmlGetLineNo(val ? val : p), 0,
                                  "line property %s: expected %s", names[k], k == 0 ? "an integer type" : "a number");
@@ -94,9 +104,9 @@ static ori_status opx_walk(opx_ctx *c, const xmlNode *parent, int depth)
     if (depth > 256) return ori__fail(c->error, ORI_ERR_LIMIT, "elements nested deeper than 256 levels");
     for (const xmlNode *n = parent->children; n; n = n->next) {
         if (n->type != XML_ELEMENT_NODE) continue;
-        ori_status st = (strcmp((const char *)n->name, "object") == 0 && attr_is(n, "class", "oripa.OriLineProxy"))
-                            ? opx_line(c, n)
-                            : opx_walk(c, n, depth + 1);
+        bool line = strcmp((const char *)n->name, "object") == 0 && attr_is(c, n, "class", "oripa.OriLineProxy");
+        if (c->budget.exceeded) return over_budget(c, n);
+        ori_status st = line ? opx_line(c, n) : opx_walk(c, n, depth + 1);
         if (st != ORI_OK) return st;
     }
     return ORI_OK;
@@ -114,6 +124,7 @@ ori_status ori_opx_read_segments(const char *text, size_t size, ori_segment **se
     opx_ctx c;
     memset(&c, 0, sizeof c);
     c.error = error;
+    ori__xml_budget_init(&c.budget, size);
     if (!root || strcmp((const char *)root->name, "java") != 0)
         st = ori__fail_pos(error, ORI_ERR_PARSE, root ? (int)xmlGetLineNo(root) : 1, 0,
                            "not an ORIPA file: the root element is <%s>, not <java>", root ? (const char *)root->name : "");
@@ -134,6 +145,7 @@ ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **seg
     ori_import_stats s;
     memset(&s, 0, sizeof s);
     const char *p = text, *end = text + size;
+    if (size >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) p += 3; // a UTF-8 byte-order mark
     int line = 0;
     ori_status st = ORI_OK;
     while (p < end && st == ORI_OK) {

@@ -7,10 +7,11 @@
 // assignment and opacity × stroke-opacity the fold angle.
 #include <libxml/parser.h>
 #include <libxml/tree.h>
+#include <jansson.h>
 #include <libxml/xmlreader.h>
 #include <stdlib.h>
 
-#include "import_internal.h"
+#include "reader_internal.h"
 
 #define SVG_NS "http://www.w3.org/2000/svg"
 #define MAX_DEPTH 256 // nesting beyond this is refused (stack safety)
@@ -39,23 +40,38 @@ typedef struct svg_style {
     char color[64];
     double stroke_opacity; // inherited
     double opacity;        // product of the element's and its ancestors' opacity
+    double stroke_width;   // inherited, in the element's user units (default 1)
     bool hidden;           // visibility: hidden / collapse (inherited, children may override)
 } svg_style;
 
-// One <style> rule for a tag, a class or both; decls points into the rule text copy.
-typedef struct css_rule {
-    char tag[32];
-    char cls[64];
-    char *decls;
-} css_rule;
+// The properties orikin reads, as the cascade leaves them. A declaration of a property sets it
+// (with the position of its rule in the style sheets, for "later wins"); an opacity that does
+// not parse sets nothing.
+enum { P_STROKE, P_COLOR, P_STROKE_OPACITY, P_OPACITY, P_DISPLAY, P_VISIBILITY, P_STROKE_WIDTH, P_COUNT };
+typedef struct css_props {
+    char stroke[64], color[64];
+    double stroke_opacity, opacity, stroke_width;
+    bool display_none, hidden;
+    int order[P_COUNT]; // position of the declaration that set the property, -1 = not set
+} css_props;
+
+// The <style> rules merged by selector: one entry per tag (tag rules), per class (.class) and per
+// tag.class, so that an element looks up its few entries instead of testing every rule (a style
+// sheet of n rules styling n elements costs n, not n²).
+typedef struct css_sheet {
+    json_t *index; // "t:tag", "c:class", "tc:tag.class" → entry
+    css_props *entries;
+    int count, cap;
+    int next_order;
+} css_sheet;
 
 typedef struct svg_ctx {
     ori__seg_list segs;
     ori_import_stats stats;
-    css_rule *rules;
-    int rule_count, rule_cap;
-    char **texts; // owned copies of <style> contents
-    int text_count, text_cap;
+    double *widths; // stroke width of each crease element, in drawing units
+    int width_count, width_cap;
+    css_sheet sheet;
+    ori__xml_budget budget;
     ori_error *error;
 } svg_ctx;
 
@@ -223,91 +239,160 @@ static bool colour_assignment(const char *raw, const char *current, ori_assignme
 
 // --- style ----------------------------------------------------------------------------------
 
-// One CSS property. opacity is not inherited: it sets the element's own opacity (*own),
-// which multiplies the inherited product once the cascade is done.
-static void apply_property(svg_style *st, double *own, bool *display_none, const char *name, const char *value)
+static void props_clear(css_props *p)
+{
+    memset(p, 0, sizeof *p);
+    for (int k = 0; k < P_COUNT; ++k) p->order[k] = -1;
+}
+
+// One declaration into a property set (order: its position; "!important" is dropped).
+static void declare(css_props *p, const char *name, const char *value, int order)
 {
     char v[64];
     trim_copy(v, sizeof v, value, strlen(value));
     char *bang = strstr(v, "!important");
     if (bang) trim_copy(v, sizeof v, v, (size_t)(bang - v));
     double x;
-    if (ieq(name, "stroke")) ori__strlcpy(st->stroke, v, sizeof st->stroke);
-    else if (ieq(name, "color")) ori__strlcpy(st->color, v, sizeof st->color);
-    else if (ieq(name, "stroke-opacity") && parse_opacity(v, &x)) st->stroke_opacity = x;
-    else if (ieq(name, "opacity") && parse_opacity(v, &x)) *own = x;
-    else if (ieq(name, "display")) *display_none = ieq(v, "none");
-    else if (ieq(name, "visibility")) st->hidden = ieq(v, "hidden") || ieq(v, "collapse");
+    int k = -1;
+    if (ieq(name, "stroke")) ori__strlcpy(p->stroke, v, sizeof p->stroke), k = P_STROKE;
+    else if (ieq(name, "color")) ori__strlcpy(p->color, v, sizeof p->color), k = P_COLOR;
+    else if (ieq(name, "stroke-opacity") && parse_opacity(v, &x)) p->stroke_opacity = x, k = P_STROKE_OPACITY;
+    else if (ieq(name, "opacity") && parse_opacity(v, &x)) p->opacity = x, k = P_OPACITY;
+    else if (ieq(name, "display")) p->display_none = ieq(v, "none"), k = P_DISPLAY;
+    else if (ieq(name, "visibility")) p->hidden = ieq(v, "hidden") || ieq(v, "collapse"), k = P_VISIBILITY;
+    else if (ieq(name, "stroke-width") && parse_length(v, &x) && x >= 0.0) p->stroke_width = x, k = P_STROKE_WIDTH;
+    if (k >= 0) p->order[k] = order;
 }
 
-// "a: b; c: d" declarations.
-static void apply_declarations(svg_style *st, double *own, bool *display_none, const char *decls)
+// "a: b; c: d" declarations, each with the given order.
+static void declare_all(css_props *p, const char *decls, int order)
 {
-    const char *p = decls;
-    while (*p) {
-        const char *end = strchr(p, ';');
-        size_t n = end ? (size_t)(end - p) : strlen(p);
-        const char *colon = memchr(p, ':', n);
+    const char *q = decls;
+    while (*q) {
+        const char *end = strchr(q, ';');
+        size_t n = end ? (size_t)(end - q) : strlen(q);
+        const char *colon = memchr(q, ':', n);
         if (colon) {
             char name[48], value[96];
-            trim_copy(name, sizeof name, p, (size_t)(colon - p));
-            trim_copy(value, sizeof value, colon + 1, n - (size_t)(colon - p) - 1);
-            apply_property(st, own, display_none, name, value);
+            trim_copy(name, sizeof name, q, (size_t)(colon - q));
+            trim_copy(value, sizeof value, colon + 1, n - (size_t)(colon - q) - 1);
+            declare(p, name, value, order);
         }
-        p += n;
-        if (*p == ';') ++p;
+        q += n;
+        if (*q == ';') ++q;
     }
 }
 
-static bool has_class(const char *list, const char *cls)
+// Copy into dst every property src sets later than dst (or all of them with force).
+static void props_merge(css_props *dst, const css_props *src, bool force)
 {
-    size_t n = strlen(cls);
-    for (const char *p = list; *p;) {
-        p = skip_space(p);
-        const char *e = p;
-        while (*e && !is_space(*e)) ++e;
-        if ((size_t)(e - p) == n && strncmp(p, cls, n) == 0) return true;
-        p = e;
+    for (int k = 0; k < P_COUNT; ++k) {
+        if (src->order[k] < 0 || (!force && src->order[k] <= dst->order[k])) continue;
+        switch (k) {
+        case P_STROKE: memcpy(dst->stroke, src->stroke, sizeof dst->stroke); break;
+        case P_COLOR: memcpy(dst->color, src->color, sizeof dst->color); break;
+        case P_STROKE_OPACITY: dst->stroke_opacity = src->stroke_opacity; break;
+        case P_OPACITY: dst->opacity = src->opacity; break;
+        case P_DISPLAY: dst->display_none = src->display_none; break;
+        case P_STROKE_WIDTH: dst->stroke_width = src->stroke_width; break;
+        default: dst->hidden = src->hidden; break;
+        }
+        dst->order[k] = src->order[k];
     }
-    return false;
 }
 
-// Presentation attributes, then matching <style> rules (tags before classes, file order), then
-// style="": the CSS cascade for the properties orikin reads. st holds the inherited state on
-// entry and the element's computed state on return (opacity multiplied in).
+static const css_props *sheet_find(const css_sheet *sh, const char *kind, const char *a, const char *b)
+{
+    if (!sh->index) return NULL;
+    char key[160];
+    snprintf(key, sizeof key, "%s:%s%s%s", kind, a, b ? "." : "", b ? b : "");
+    json_t *v = json_object_get(sh->index, key);
+    return v ? &sh->entries[json_integer_value(v)] : NULL;
+}
+
+static css_props *sheet_entry(css_sheet *sh, const char *tag, const char *cls)
+{
+    char key[160];
+    snprintf(key, sizeof key, "%s:%s%s%s", !cls[0] ? "t" : !tag[0] ? "c" : "tc", tag[0] ? tag : cls, tag[0] && cls[0] ? "." : "",
+             tag[0] && cls[0] ? cls : "");
+    if (!sh->index) sh->index = json_object();
+    json_t *v = json_object_get(sh->index, key);
+    if (v) return &sh->entries[json_integer_value(v)];
+    ORI__RESERVE(sh->entries, sh->cap, sh->count + 1);
+    props_clear(&sh->entries[sh->count]);
+    json_object_set_new(sh->index, key, json_integer(sh->count));
+    return &sh->entries[sh->count++];
+}
+
+// Apply a property set to the inherited state (opacity sets the element's own, *own).
+static void apply_props(svg_style *st, double *own, bool *display_none, const css_props *p)
+{
+    if (p->order[P_STROKE] >= 0) memcpy(st->stroke, p->stroke, sizeof st->stroke);
+    if (p->order[P_COLOR] >= 0) memcpy(st->color, p->color, sizeof st->color);
+    if (p->order[P_STROKE_OPACITY] >= 0) st->stroke_opacity = p->stroke_opacity;
+    if (p->order[P_OPACITY] >= 0) *own = p->opacity;
+    if (p->order[P_DISPLAY] >= 0) *display_none = p->display_none;
+    if (p->order[P_VISIBILITY] >= 0) st->hidden = p->hidden;
+    if (p->order[P_STROKE_WIDTH] >= 0) st->stroke_width = p->stroke_width;
+}
+
+// Presentation attributes, then matching <style> rules (tag rules, then class and tag.class
+// rules, file order within each), then style="": the CSS cascade for the properties orikin
+// reads. st holds the inherited state on entry and the element's computed state on return
+// (opacity multiplied in).
 static void element_style(svg_ctx *c, const xmlNode *n, svg_style *st, bool *display_none)
 {
-    static const char *const props[] = {"stroke", "color", "stroke-opacity", "opacity", "display", "visibility"};
+    static const char *const names[P_COUNT] = {"stroke",  "color",      "stroke-opacity", "opacity",
+                                               "display", "visibility", "stroke-width"};
     *display_none = false;
     double own = 1.0;
-    for (size_t i = 0; i < sizeof props / sizeof props[0]; ++i) {
-        xmlChar *v = xmlGetProp(n, (const xmlChar *)props[i]);
-        if (v) apply_property(st, &own, display_none, props[i], (const char *)v);
-        xmlFree(v);
+    css_props p;
+    props_clear(&p);
+    for (int k = 0; k < P_COUNT; ++k) {
+        char *v = ori__xml_attr(n, names[k], &c->budget);
+        if (v) declare(&p, names[k], v, 0);
+        ori__free(v);
     }
-    xmlChar *cls = xmlGetProp(n, (const xmlChar *)"class");
-    for (int pass = 0; pass < 2; ++pass)
-        for (int r = 0; r < c->rule_count; ++r) {
-            const css_rule *rule = &c->rules[r];
-            bool has_cls = rule->cls[0] != '\0';
-            if (has_cls != (pass == 1)) continue;
-            if (rule->tag[0] && strcmp(rule->tag, (const char *)n->name) != 0) continue;
-            if (has_cls && (!cls || !has_class((const char *)cls, rule->cls))) continue;
-            apply_declarations(st, &own, display_none, rule->decls);
+    apply_props(st, &own, display_none, &p);
+    const char *tag = (const char *)n->name;
+    const css_props *t = sheet_find(&c->sheet, "t", tag, NULL);
+    if (t) apply_props(st, &own, display_none, t);
+    char *cls = c->sheet.index ? ori__xml_attr(n, "class", &c->budget) : NULL;
+    if (cls) {
+        props_clear(&p);
+        for (const char *q = cls; *q;) { // each class of the list: .class and tag.class rules
+            q = skip_space(q);
+            const char *e = q;
+            while (*e && !is_space(*e)) ++e;
+            char one[64];
+            if ((size_t)(e - q) < sizeof one) {
+                memcpy(one, q, (size_t)(e - q));
+                one[e - q] = '\0';
+                const css_props *a = one[0] ? sheet_find(&c->sheet, "c", one, NULL) : NULL;
+                const css_props *b = one[0] ? sheet_find(&c->sheet, "tc", tag, one) : NULL;
+                if (a) props_merge(&p, a, false);
+                if (b) props_merge(&p, b, false);
+            }
+            q = e;
         }
-    xmlFree(cls);
-    xmlChar *style = xmlGetProp(n, (const xmlChar *)"style");
-    if (style) apply_declarations(st, &own, display_none, (const char *)style);
-    xmlFree(style);
+        apply_props(st, &own, display_none, &p);
+        ori__free(cls);
+    }
+    char *style = ori__xml_attr(n, "style", &c->budget);
+    if (style) {
+        props_clear(&p);
+        declare_all(&p, style, 0);
+        apply_props(st, &own, display_none, &p);
+        ori__free(style);
+    }
     st->opacity *= own;
 }
 
-// Collect "selectors { declarations }" rules from a <style> text; selectors that are not a
-// plain tag, .class or tag.class (and @-rules) are skipped.
+// Collect "selectors { declarations }" rules from a <style> text into the sheet; selectors that
+// are not a plain tag, .class or tag.class (and @-rules) are skipped.
 static void add_style_rules(svg_ctx *c, const char *text)
 {
     char *copy = ori__strdup(text);
-    ORI__PUSH(c->texts, c->text_count, c->text_cap, copy);
     // strip comments
     for (char *p = copy; (p = strstr(p, "/*")) != NULL;) {
         char *e = strstr(p + 2, "*/");
@@ -334,28 +419,28 @@ static void add_style_rules(svg_ctx *c, const char *text)
         *open = '\0';
         *close = '\0';
         char *decls = open + 1;
+        int order = ++c->sheet.next_order;
         for (char *sel = p; sel && *sel;) {
             char *comma = strchr(sel, ',');
             if (comma) *comma = '\0';
             char one[96];
             trim_copy(one, sizeof one, sel, strlen(sel));
-            css_rule rule;
-            memset(&rule, 0, sizeof rule);
-            rule.decls = decls;
             char *dot = strchr(one, '.');
             bool simple = one[0] != '\0' && strpbrk(one, " >+~#:[*") == NULL && (!dot || !strchr(dot + 1, '.'));
             if (simple) {
+                char tag[32] = "", cls[64] = "";
                 if (dot) {
                     *dot = '\0';
-                    ori__strlcpy(rule.cls, dot + 1, sizeof rule.cls);
+                    ori__strlcpy(cls, dot + 1, sizeof cls);
                 }
-                ori__strlcpy(rule.tag, one, sizeof rule.tag);
-                if (rule.tag[0] || rule.cls[0]) ORI__PUSH(c->rules, c->rule_count, c->rule_cap, rule);
+                ori__strlcpy(tag, one, sizeof tag);
+                if (tag[0] || cls[0]) declare_all(sheet_entry(&c->sheet, tag, cls), decls, order);
             }
             sel = comma ? comma + 1 : NULL;
         }
         p = close + 1;
     }
+    ori__free(copy);
 }
 
 // --- geometry -------------------------------------------------------------------------------
@@ -384,20 +469,20 @@ static void emit_segment(emit *e, double x0, double y0, double x1, double y1)
 static ori_status length_attr(svg_ctx *c, const xmlNode *n, const char *name, double *out)
 {
     *out = 0.0; // SVG: a missing coordinate is 0
-    xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
+    char *v = ori__xml_attr(n, name, &c->budget);
     if (!v) return ORI_OK;
-    bool ok = parse_length((const char *)v, out);
-    ori_status st = ok ? ORI_OK : fail(c, n, ORI_ERR_PARSE, "attribute %s=\"%s\" is not a length", name, (const char *)v);
-    xmlFree(v);
+    bool ok = parse_length(v, out);
+    ori_status st = ok ? ORI_OK : fail(c, n, ORI_ERR_PARSE, "attribute %s=\"%.40s\" is not a length", name, v);
+    ori__free(v);
     return st;
 }
 
 // points="x,y x,y …" (polyline, polygon).
 static ori_status read_points(emit *e, const xmlNode *n, bool closed)
 {
-    xmlChar *v = xmlGetProp(n, (const xmlChar *)"points");
+    char *v = ori__xml_attr(n, "points", &e->c->budget);
     if (!v) return ORI_OK;
-    const char *p = skip_space((const char *)v);
+    const char *p = skip_space(v);
     double first[2] = {0, 0}, prev[2] = {0, 0};
     int k = 0;
     ori_status st = ORI_OK;
@@ -418,16 +503,16 @@ static ori_status read_points(emit *e, const xmlNode *n, bool closed)
         k++;
     }
     if (st == ORI_OK && closed && k > 2) emit_segment(e, prev[0], prev[1], first[0], first[1]);
-    xmlFree(v);
+    ori__free(v);
     return st;
 }
 
 // Path data with straight commands only.
 static ori_status read_path(emit *e, const xmlNode *n)
 {
-    xmlChar *v = xmlGetProp(n, (const xmlChar *)"d");
+    char *v = ori__xml_attr(n, "d", &e->c->budget);
     if (!v) return ORI_OK;
-    const char *base = (const char *)v, *p = skip_space(base);
+    const char *p = skip_space(v);
     double cx = 0, cy = 0, sx = 0, sy = 0;
     char cmd = 0;
     ori_status st = ORI_OK;
@@ -488,16 +573,16 @@ static ori_status read_path(emit *e, const xmlNode *n)
         }
         cx = nx, cy = ny;
     }
-    xmlFree(v);
+    ori__free(v);
     return st;
 }
 
 // transform="matrix(…) translate(…) scale(…) rotate(…) skewX(…) skewY(…)", composed left to right.
 static ori_status read_transform(svg_ctx *c, const xmlNode *n, affine *m)
 {
-    xmlChar *v = xmlGetProp(n, (const xmlChar *)"transform");
+    char *v = ori__xml_attr(n, "transform", &c->budget);
     if (!v) return ORI_OK;
-    const char *p = skip_space((const char *)v);
+    const char *p = skip_space(v);
     affine t = affine_identity();
     ori_status st = ORI_OK;
     while (*p && st == ORI_OK) {
@@ -545,7 +630,7 @@ static ori_status read_transform(svg_ctx *c, const xmlNode *n, affine *m)
         }
         t = affine_mul(t, u);
     }
-    xmlFree(v);
+    ori__free(v);
     if (st == ORI_OK) *m = affine_mul(*m, t);
     return st;
 }
@@ -566,6 +651,10 @@ static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style 
     if (name_is(n, "circle") || name_is(n, "ellipse"))
         return fail(c, n, ORI_ERR_UNSUPPORTED, "a %s cannot be a crease: crease lines must be straight",
                     (const char *)n->name);
+    // The drawn width of its lines (stroke-width scaled by the transform): how far apart two lines
+    // may be and still touch on the page (the import closes such gaps).
+    double drawn = style->stroke_width * sqrt(fabs(m.a * m.d - m.b * m.c));
+    if (isfinite(drawn)) ORI__PUSH(c->widths, c->width_count, c->width_cap, drawn);
     double opacity = style->opacity * style->stroke_opacity;
     double angle = 0.0;
     if (asg == ORI_ASSIGN_MOUNTAIN) angle = -opacity * ORI_PI;
@@ -626,6 +715,12 @@ static ori_status element(svg_ctx *c, const xmlNode *n, const frame *parent, fra
             return ORI_OK;
         }
     bool group = name_is(n, "g") || name_is(n, "a") || name_is(n, "svg");
+    if (name_is(n, "g")) { // the labels orikin's writer adds are not part of the drawing
+        char *id = ori__xml_attr(n, "id", &c->budget);
+        bool labels = id && strcmp(id, "orikin-labels") == 0;
+        ori__free(id);
+        if (labels) return ORI_OK;
+    }
     bool is_shape = false;
     for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; ++i) is_shape |= name_is(n, shapes[i]);
     if (!group && !is_shape) return ORI_OK; // unknown elements are ignored with their content
@@ -649,74 +744,16 @@ static ori_status element(svg_ctx *c, const xmlNode *n, const frame *parent, fra
 
 // --- entry ----------------------------------------------------------------------------------
 
-// The first XML error (libxml2 keeps only the last one, which is usually a consequence).
-typedef struct xml_first_error {
-    bool set;
-    int line, column;
-    char message[200];
-} xml_first_error;
-
-static void keep_first_error(xml_first_error *first, const xmlError *xe)
-{
-    if (!first || first->set || !xe || xe->level < XML_ERR_ERROR) return;
-    first->set = true;
-    first->line = xe->line;
-    first->column = xe->int2;
-    const char *m = xe->message ? xe->message : "not well-formed XML";
-    trim_copy(first->message, sizeof first->message, m, strlen(m));
-}
-
-static void reader_error(void *user, xmlErrorPtr xe) { keep_first_error(user, xe); }
-
-static void ctxt_error(void *user, xmlErrorPtr xe)
-{
-    xmlParserCtxt *ctxt = user;
-    keep_first_error(ctxt ? ctxt->_private : NULL, xe);
-}
-
-static ori_status xml_error(const xml_first_error *first, ori_error *error)
-{
-    return ori__fail_pos(error, ORI_ERR_PARSE, first->line > 0 ? first->line : 1, first->column > 0 ? first->column : 0,
-                         "XML: %s", first->set ? first->message : "not well-formed XML");
-}
-
-// No network, no entity substitution or DTD loading, errors captured instead of printed.
-#define XML_OPTIONS (XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING | XML_PARSE_BIG_LINES)
-
-// The tree parser for small documents (ORIPA files).
-ori_status ori__xml_parse(const char *text, size_t size, const char *what, xmlDoc **doc, ori_error *error)
-{
-    *doc = NULL;
-    if (size > (size_t)INT32_MAX) return ori__fail(error, ORI_ERR_LIMIT, "the %s file is too large", what);
-    xmlParserCtxt *ctxt = xmlNewParserCtxt();
-    if (!ctxt) return ori__fail(error, ORI_ERR_NOMEM, "cannot create the XML parser");
-    xml_first_error first;
-    memset(&first, 0, sizeof first);
-    ctxt->_private = &first;
-    ctxt->sax->serror = ctxt_error;
-    xmlDoc *d = xmlCtxtReadMemory(ctxt, text, (int)size, NULL, NULL, XML_OPTIONS);
-    ori_status st = ORI_OK;
-    if (!d || !ctxt->wellFormed) {
-        keep_first_error(&first, xmlCtxtGetLastError(ctxt)); // when no callback came
-        st = xml_error(&first, error);
-        if (d) xmlFreeDoc(d);
-        d = NULL;
-    }
-    xmlFreeParserCtxt(ctxt);
-    *doc = d;
-    return st;
-}
-
 // One pass of the streaming reader over the document (the tree of a large drawing would take
 // gigabytes): with styles_only, collect the <style> rules; otherwise read the geometry, each
 // element seeing the state of its parent in frames[depth − 1].
 static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_only)
 {
-    xmlTextReaderPtr r = xmlReaderForMemory(text, (int)size, NULL, NULL, XML_OPTIONS);
+    xmlTextReaderPtr r = xmlReaderForMemory(text, (int)size, NULL, NULL, ORI__XML_OPTIONS);
     if (!r) return ori__fail(c->error, ORI_ERR_NOMEM, "cannot create the XML reader");
-    xml_first_error first;
+    ori__xml_first_error first;
     memset(&first, 0, sizeof first);
-    xmlTextReaderSetStructuredErrorHandler(r, reader_error, &first);
+    xmlTextReaderSetStructuredErrorHandler(r, ori__xml_reader_error, &first);
     frame *frames = ori__alloc(sizeof(frame) * (MAX_DEPTH + 1));
     int skip = -1; // depth of the element whose content is not read
     ori_status st = ORI_OK;
@@ -738,6 +775,7 @@ static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_
                 memset(&frames[0], 0, sizeof frames[0]);
                 frames[0].m = affine_identity();
                 frames[0].style.stroke_opacity = 1.0;
+                frames[0].style.stroke_width = 1.0;
                 frames[0].style.opacity = 1.0;
                 bool display_none;
                 element_style(c, n, &frames[0].style, &display_none);
@@ -749,19 +787,29 @@ static ori_status stream(svg_ctx *c, const char *text, size_t size, bool styles_
         } else if (styles_only) {
             enter = true;
             if (is_svg_element(n) && name_is(n, "style") && !empty) {
-                xmlChar *css = xmlTextReaderReadString(r);
-                if (css) add_style_rules(c, (const char *)css);
-                xmlFree(css);
+                xmlNode *full = xmlTextReaderExpand(r);
+                char *css = full ? ori__xml_text(full, &c->budget) : NULL;
+                if (css) add_style_rules(c, css);
+                ori__free(css);
             }
         } else {
             st = element(c, n, &frames[depth - 1], &frames[depth], &enter);
         }
+        if (st == ORI_OK && c->budget.exceeded)
+            st = fail(c, n, ORI_ERR_LIMIT, "entity references expand to more than %d times the file's size",
+                      ORI__XML_EXPANSION_PER_BYTE);
         if (!enter && !empty) skip = depth;
     }
-    if (st == ORI_OK && ret < 0) st = xml_error(&first, c->error);
+    if (st == ORI_OK && ret < 0) st = ori__xml_error(&first, c->error);
     xmlFreeTextReader(r);
     ori__free(frames);
     return st;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
 }
 
 ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
@@ -773,6 +821,7 @@ ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **se
     svg_ctx c;
     memset(&c, 0, sizeof c);
     c.error = error;
+    ori__xml_budget_init(&c.budget, size);
     // <style> rules may come after the elements they style: a first pass collects them, only
     // when the text has a <style> at all.
     const char *needle = "<style";
@@ -780,8 +829,12 @@ ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **se
     for (size_t i = 0; i + 6 <= size && !has_style; ++i) has_style = memcmp(text + i, needle, 6) == 0;
     ori_status st = has_style ? stream(&c, text, size, true) : ORI_OK;
     if (st == ORI_OK) st = stream(&c, text, size, false);
-    for (int i = 0; i < c.text_count; ++i) ori__free(c.texts[i]);
-    ori__free(c.texts);
-    ori__free(c.rules);
+    json_decref(c.sheet.index);
+    ori__free(c.sheet.entries);
+    if (c.width_count > 0) { // the median: a few thick outlines do not set it
+        qsort(c.widths, (size_t)c.width_count, sizeof(double), compare_doubles);
+        c.stats.stroke_width = c.widths[c.width_count / 2];
+    }
+    ori__free(c.widths);
     return ori__reader_end(st, &c.segs, &c.stats, segments, count, stats);
 }

@@ -97,16 +97,21 @@ typedef struct grid_node {
 
 typedef struct grid {
     bool on;
-    double x0, y0, cell;
+    double x0, y0, x1, y1, cell;
     int nx, ny;
+    int built_edges; // edges when the grid was (re)built: it is refined as they multiply
     int *edge_head, *vert_head; // per cell: first node or -1
     grid_node *nodes;
     int node_count, node_cap;
 } grid;
 
+// A face's vertices while an insertion runs. Loaded faces borrow their vertices from one copy of
+// the pattern's (no allocation per face: a single insertion into a pattern of thousands of faces
+// would otherwise allocate thousands of lists); a face gets its own array when it grows.
 typedef struct face_list {
     int *v;
     int n, cap;
+    bool owned;
 } face_list;
 
 typedef struct event {
@@ -260,6 +265,7 @@ typedef struct arr {
     bool faces;
     face_list *fl;
     int fl_count, fl_cap;
+    int *fl_block; // the loaded faces' vertices (borrowed by their lists)
     char (*names)[ORI_NAME_MAX];
     int names_cap;
     int_list *glist; // per group: faces containing the group's vertex
@@ -371,7 +377,10 @@ static void grid_init(arr *A, double x0, double y0, double x1, double y1, double
     }
     g->x0 = x0;
     g->y0 = y0;
+    g->x1 = x1;
+    g->y1 = y1;
     g->cell = cell;
+    g->built_edges = A->p->edge_count;
     size_t cells = (size_t)g->nx * (size_t)g->ny;
     g->edge_head = ori__alloc(sizeof(int) * cells);
     g->vert_head = ori__alloc(sizeof(int) * cells);
@@ -379,6 +388,34 @@ static void grid_init(arr *A, double x0, double y0, double x1, double y1, double
     g->on = true;
     for (int v = 0; v < A->p->vertex_count; ++v) grid_add_vertex(A, v);
     for (int e = 0; e < A->p->edge_count; ++e) grid_add_edge(A, e);
+}
+
+// Cells for the edges as they are now: about one cell per average edge length, and at most
+// ~4 cells per edge. Planarising long crossing segments splits them into many short edges; a
+// grid sized for the segments would then hold thousands of edges per cell, and each insertion
+// would look at all of them (quadratic work). Rebuilt whenever the edges have doubled, the grid
+// keeps a few edges per cell at amortised linear cost.
+static bool is_dead(const arr *A, int e);
+
+static void grid_rebuild(arr *A)
+{
+    grid *g = &A->g;
+    ori_pattern *p = A->p;
+    double total = 0.0;
+    int live = 0;
+    for (int e = 0; e < p->edge_count; ++e) {
+        if (is_dead(A, e)) continue;
+        total += ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, p->edges[e].v[1]), ori__pattern_v2(p, p->edges[e].v[0])));
+        live++;
+    }
+    double diag = hypot(g->x1 - g->x0, g->y1 - g->y0);
+    double cell = fmax(live > 0 ? total / live : diag, diag / 4096.0);
+    int64_t budget = 4 * (int64_t)p->edge_count + 16;
+    if (budget > 1 << 24) budget = 1 << 24;
+    ori__free(g->edge_head);
+    ori__free(g->vert_head);
+    g->node_count = 0;
+    grid_init(A, g->x0, g->y0, g->x1, g->y1, cell, (int)budget);
 }
 
 // --- per-vertex / per-edge scratch ---------------------------------------------------------
@@ -389,7 +426,9 @@ static void ensure_filled(int **a, int *cap, int n, int fill)
     if (*cap >= n) return;
     int old = *cap;
     ORI__RESERVE(*a, *cap, n);
-    for (int i = old; i < *cap; ++i) (*a)[i] = fill;
+    if (fill == 0 || fill == -1) memset(*a + old, fill == 0 ? 0 : 0xFF, sizeof(int) * (size_t)(*cap - old));
+    else
+        for (int i = old; i < *cap; ++i) (*a)[i] = fill;
 }
 
 static void ensure_vertex_arrays(arr *A)
@@ -1210,14 +1249,14 @@ static void faces_load(arr *A)
     ORI__RESERVE(A->fl, A->fl_cap, p->face_count);
     ORI__RESERVE(A->names, A->names_cap, p->face_count);
     A->fl_count = p->face_count;
+    A->fl_block = ori__alloc(sizeof(int) * (size_t)(p->face_vertex_count ? p->face_vertex_count : 1));
+    memcpy(A->fl_block, p->face_vertices, sizeof(int) * (size_t)p->face_vertex_count);
     for (int f = 0; f < p->face_count; ++f) {
         face_list *F = &A->fl[f];
-        F->v = NULL;
-        F->n = F->cap = 0;
         int b = p->face_offsets[f], n = p->face_offsets[f + 1] - b;
-        ORI__RESERVE(F->v, F->cap, n);
-        memcpy(F->v, p->face_vertices + b, sizeof(int) * (size_t)n);
-        F->n = n;
+        F->v = A->fl_block + b;
+        F->n = F->cap = n;
+        F->owned = false;
         ori__strlcpy(A->names[f], p->face_names ? p->face_names[f] : "", ORI_NAME_MAX);
     }
 }
@@ -1244,9 +1283,27 @@ static void faces_store(arr *A)
         for (int f = 0; f < A->fl_count; ++f) ori_pattern_set_face_name(p, f, A->names[f][0] ? A->names[f] : NULL);
 }
 
+// Room for need vertices in face F (a borrowed list gets its own array first).
+static void face_reserve(face_list *F, int need)
+{
+    if (!F->owned) {
+        if (need <= F->cap) return;
+        int *v = ori__alloc(sizeof(int) * (size_t)(need > 2 * F->n ? need : 2 * F->n));
+        memcpy(v, F->v, sizeof(int) * (size_t)F->n);
+        F->cap = need > 2 * F->n ? need : 2 * F->n;
+        F->v = v;
+        F->owned = true;
+        return;
+    }
+    ORI__RESERVE(F->v, F->cap, need);
+}
+
 static void faces_free(arr *A)
 {
-    for (int f = 0; f < A->fl_count; ++f) ori__free(A->fl[f].v);
+    for (int f = 0; f < A->fl_count; ++f)
+        if (A->fl[f].owned) ori__free(A->fl[f].v);
+    ori__free(A->fl_block);
+    A->fl_block = NULL;
     ori__free(A->fl);
     ori__free(A->names);
     A->fl = NULL;
@@ -1304,6 +1361,7 @@ static int new_face(arr *A)
     face_list *F = &A->fl[A->fl_count];
     F->v = NULL;
     F->n = F->cap = 0;
+    F->owned = true;
     A->names[A->fl_count][0] = '\0';
     return A->fl_count++;
 }
@@ -1352,7 +1410,7 @@ static void insert_spike(arr *A, int f, int j, int u)
 {
     face_list *F = &A->fl[f];
     int w = F->v[j];
-    ORI__RESERVE(F->v, F->cap, F->n + 2);
+    face_reserve(F, F->n + 2);
     memmove(F->v + j + 3, F->v + j + 1, sizeof(int) * (size_t)(F->n - j - 1));
     F->v[j + 1] = u;
     F->v[j + 2] = w;
@@ -1439,11 +1497,17 @@ static int find_split(const arr *A, int a, int b)
 static void faces_apply_splits(arr *A)
 {
     if (!A->faces || A->es_count == 0) return;
+    // Only sides joining two end points of split edges can be split (marked: a stamp per vertex).
+    ensure_vertex_arrays(A);
+    int stamp = next_stamp(&A->fstamp, A->fmark, A->fmark_cap);
+    for (int i = 0; i < A->es_count; ++i) A->fmark[A->es[i].p] = A->fmark[A->es[i].q] = stamp;
     for (int f = 0; f < A->fl_count; ++f) {
         face_list *F = &A->fl[f];
         int extra = 0;
         for (int i = 0; i < F->n; ++i) {
-            int s = find_split(A, F->v[i], F->v[(i + 1) % F->n]);
+            int a = F->v[i], b = F->v[(i + 1) % F->n];
+            if (A->fmark[a] != stamp || A->fmark[b] != stamp) continue;
+            int s = find_split(A, a, b);
             if (s >= 0) extra += A->es[s].count;
         }
         if (extra == 0) continue;
@@ -1460,7 +1524,7 @@ static void faces_apply_splits(arr *A)
             else
                 for (int k = r->count - 1; k >= 0; --k) A->tmp[m++] = A->split_verts[r->first + k];
         }
-        ORI__RESERVE(F->v, F->cap, m);
+        face_reserve(F, m);
         memcpy(F->v, A->tmp, sizeof(int) * (size_t)m);
         F->n = m;
     }
@@ -1760,8 +1824,10 @@ static ori_status insert_many(ori_pattern *p, const ori_segment *segs, int count
     grid_init(&A, lx - pad, ly - pad, hx + pad, hy + pad, cell, (int)budget);
     faces_load(&A);
     int skipped = 0;
-    for (int i = 0; i < count; ++i)
+    for (int i = 0; i < count; ++i) {
         if (insert_one(&A, segs[i].a, segs[i].b, segs[i].assignment, segs[i].fold_angle_rad) != PLAN_OK) skipped++;
+        if (p->edge_count > 2 * A.g.built_edges + 1024) grid_rebuild(&A);
+    }
     faces_store(&A);
     if (A.dropped > 0) remove_dropped(&A);
     A.res.segments_skipped = skipped;
@@ -1818,9 +1884,12 @@ int ori_pattern_edges_on_segment(const ori_pattern *p, ori_v2 a, ori_v2 b, int *
 {
     ORI_ASSERT(p && (out || cap == 0));
     double tol = ORI_TOL_ON_LINE_REL * ori_pattern_diagonal(p);
+    double lx = fmin(a.x, b.x) - tol, hx = fmax(a.x, b.x) + tol, ly = fmin(a.y, b.y) - tol, hy = fmax(a.y, b.y) + tol;
     int n = 0;
     for (int e = 0; e < p->edge_count; ++e) {
         ori_v2 u = ori__pattern_v2(p, p->edges[e].v[0]), w = ori__pattern_v2(p, p->edges[e].v[1]);
+        // (both ends must be near the segment, so within its box: most edges end here)
+        if (u.x < lx || u.x > hx || u.y < ly || u.y > hy || w.x < lx || w.x > hx || w.y < ly || w.y > hy) continue;
         if (seg_dist2(a, b, u) <= tol * tol && seg_dist2(a, b, w) <= tol * tol) {
             if (n < cap) out[n] = e;
             n++;
