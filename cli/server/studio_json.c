@@ -1,0 +1,405 @@
+// The API's JSON: field for field what the CLI prints with --json (tests/test_server.c runs
+// both and compares them), so that a script and the page read the same answers.
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "studio_internal.h"
+
+static json_t *v3_json(ori_v3 v)
+{
+    return json_pack("[fff]", v.x, v.y, v.z);
+}
+
+static json_t *ints_json(const int *e, int n)
+{
+    json_t *a = json_array();
+    for (int i = 0; i < n; ++i) json_array_append_new(a, json_integer(e[i]));
+    return a;
+}
+
+static json_t *degrees_json(const double *a, int n)
+{
+    json_t *arr = json_array();
+    for (int e = 0; e < n; ++e) json_array_append_new(arr, json_real(ori_rad_to_deg_output(a[e])));
+    return arr;
+}
+
+// --- orikin fold --json --------------------------------------------------------------------
+
+static const char *solver_name(ori_motion_stats st)
+{
+    return st.analytic ? "analytic" : st.sweep ? "numeric-sweep" : st.sparse ? "numeric-sparse" : "numeric-dense";
+}
+
+static json_t *chain_json(const int *edges, const ori_v3 *q, const ori_v3 *w, int n)
+{
+    json_t *a = json_array();
+    for (int i = 0; i < n; ++i)
+        json_array_append_new(a, json_pack("{s:i,s:o,s:o}", "edge", edges[i], "q", v3_json(q[i]), "omega", v3_json(w[i])));
+    return a;
+}
+
+// Interior vertices of even degree that miss Kawasaki by a little (rounded coordinates).
+static int near_kawasaki_misses(const ori_pattern *p, double *worst)
+{
+    int n = 0;
+    *worst = 0.0;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        if (!ori_pattern_vertex_is_interior(p, v)) continue;
+        ori_vertex_report r;
+        ori_flat_check_vertex(p, v, &r);
+        if (r.degree % 2 || r.kawasaki || fabs(r.kawasaki_rad) > STUDIO_HINT_NEAR_KAWASAKI_RAD) continue;
+        n++;
+        *worst = fmax(*worst, fabs(r.kawasaki_rad));
+    }
+    return n;
+}
+
+static json_t *rounding_hint(const ori_pattern *flat, const ori_motion *mo)
+{
+    if (ori_motion_verdict_of(mo) != ORI_MOTION_NOT_RIGIDLY_FOLDABLE) return json_null();
+    double worst;
+    int n = near_kawasaki_misses(flat, &worst);
+    if (n == 0) return json_null();
+    char buf[512];
+    snprintf(buf, sizeof buf,
+             "%d interior vertices miss Kawasaki by up to %.2g rad (rounded coordinates?): rigid folding is "
+             "exact, and such a sheet is rigid even where its exact design folds; orikin check lists them",
+             n, worst);
+    return json_string(buf);
+}
+
+json_t *studio_json_fold(const char *file, const studio_fold_spec *a, const ori_pattern *flat,
+                         const ori_mechanism *m, const ori_motion *mo)
+{
+    int E = ori_mechanism_edge_count(m);
+    ori_motion_verdict v = ori_motion_verdict_of(mo);
+    ori_motion_stats st = ori_motion_stats_of(mo);
+    json_t *out = json_object();
+    json_object_set_new(out, "file", json_string(file));
+    json_object_set_new(out, "valid", json_boolean(v == ORI_MOTION_VALID));
+    json_object_set_new(out, "verdict", json_string(ori_motion_verdict_name(v)));
+    const char *why = ori_motion_reason(mo);
+    json_object_set_new(out, "reason", why ? json_string(why) : json_null());
+    json_object_set_new(out, "hint", rounding_hint(flat, mo));
+    json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
+    json_object_set_new(out, "dof", json_integer(ori_motion_dof(mo)));
+    json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
+    json_object_set_new(out, "solver", json_string(solver_name(st)));
+    json_object_set_new(out, "fixed_face", json_integer(a->fix));
+    json_object_set_new(out, "drive", json_integer(a->drive));
+    json_object_set_new(out, "to_deg", json_real(a->to_deg));
+    json_object_set_new(out, "step_deg", json_real(a->step_deg));
+    json_object_set_new(out, "locked", ints_json(a->locks, a->lock_count));
+    ori_vertex_split sp;
+    if (ori_motion_split(mo, &sp)) {
+        json_object_set_new(out, "frame_a", ints_json(sp.frame_a, 2));
+        json_object_set_new(out, "frame_b", ints_json(sp.frame_b, sp.frame_b_count));
+        json_object_set_new(out, "surrounding", ints_json(sp.surrounding, sp.surrounding_count));
+        json_t *s = json_object();
+        json_object_set_new(s, "vertex", json_integer(sp.vertex));
+        json_object_set_new(s, "end_effector_vertex", json_integer(sp.end_effector_vertex));
+        json_object_set_new(s, "origin_a", v3_json(sp.origin_a));
+        json_object_set_new(s, "origin_b", v3_json(sp.origin_b));
+        json_object_set_new(s, "d", v3_json(sp.d));
+        json_object_set_new(s, "chain_a", chain_json(sp.frame_a, sp.q_a, sp.omega_a, 2));
+        json_object_set_new(s, "chain_b", chain_json(sp.frame_b, sp.q_b, sp.omega_b, sp.frame_b_count));
+        json_object_set_new(out, "split", s);
+    }
+    json_t *off = json_array();
+    for (int i = 0; i < ori_motion_violation_count(mo); ++i) {
+        ori_crease_violation fv = ori_motion_violation(mo, i);
+        char as[2] = {ori_assignment_to_char(fv.assignment), '\0'};
+        json_array_append_new(off, json_pack("{s:i,s:s,s:f,s:f}", "edge", fv.edge, "assignment", as, "angle_deg",
+                                             ori_rad_to_deg_output(fv.angle_rad), "at_drive_deg",
+                                             ori_rad_to_deg_output(fv.drive_rad)));
+    }
+    json_object_set_new(out, "offending_edges", off);
+    json_t *frames = json_array();
+    double *alt = malloc(sizeof(double) * (size_t)(E + 1));
+    for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
+        json_t *fr = json_object();
+        json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, f))));
+        json_object_set_new(fr, "fold_angles_deg", degrees_json(ori_motion_frame_angles(mo, f), E));
+        json_object_set_new(fr, "residual", json_real(ori_motion_frame_residual(mo, f)));
+        if (ori_motion_frame_other_branch(mo, f, alt)) json_object_set_new(fr, "other_branch_deg", degrees_json(alt, E));
+        ori_v3 ea, eb;
+        if (ori_motion_frame_end_effector(mo, f, &ea, &eb))
+            json_object_set_new(fr, "end_effector", json_pack("{s:o,s:o}", "frame_a", v3_json(ea), "frame_b", v3_json(eb)));
+        json_array_append_new(frames, fr);
+    }
+    free(alt);
+    json_object_set_new(out, "frames", frames);
+    json_object_set_new(out, "stats",
+                        json_pack("{s:i,s:i,s:i,s:i,s:i,s:f}", "steps", st.steps, "rejected_steps", st.rejected_steps,
+                                  "newton_iterations", st.newton_iterations, "sweep_iterations", st.sweep_iterations,
+                                  "factorizations", st.factorizations, "max_residual", st.max_residual));
+    return out;
+}
+
+// --- orikin sequence --json and --at T --json ------------------------------------------------
+
+static json_t *sequence_fold_json(const ori_sequence_fold *f, int i)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "fold", json_integer(i + 1));
+    json_object_set_new(o, "name", f->name[0] ? json_string(f->name) : json_null());
+    json_object_set_new(o, "fix", json_integer(f->fixed_face));
+    json_object_set_new(o, "drive", json_integer(f->driven_edge));
+    json_object_set_new(o, "lock", ints_json(f->locked, f->locked_count));
+    json_object_set_new(o, "from_deg", f->has_from ? json_real(ori_rad_to_deg_output(f->from_rad)) : json_null());
+    json_object_set_new(o, "to_deg", json_real(ori_rad_to_deg_output(f->to_rad)));
+    json_object_set_new(o, "step_deg", json_real(ori_rad_to_deg_output(f->step_rad)));
+    return o;
+}
+
+json_t *studio_json_record(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
+                           int E)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "sequence", json_string(sequence));
+    json_object_set_new(o, "pattern", json_string(pattern));
+    json_object_set_new(o, "valid", json_boolean(ori_record_verdict(r) == ORI_MOTION_VALID));
+    json_object_set_new(o, "verdict", json_string(ori_motion_verdict_name(ori_record_verdict(r))));
+    json_object_set_new(o, "reason", ori_record_reason(r) ? json_string(ori_record_reason(r)) : json_null());
+    int failed = ori_record_failed_fold(r);
+    json_object_set_new(o, "failed_fold", failed >= 0 ? json_integer(failed + 1) : json_null());
+    json_object_set_new(o, "duration", json_integer(ori_record_completed_folds(r)));
+    json_t *folds = json_array();
+    for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
+        ori_sequence_fold f = ori_sequence_fold_at(s, i);
+        json_array_append_new(folds, sequence_fold_json(&f, i));
+    }
+    json_object_set_new(o, "folds", folds);
+    json_t *frames = json_array();
+    for (int f = 0; f < ori_record_frame_count(r); ++f) {
+        json_t *fr = json_object();
+        json_object_set_new(fr, "t", json_real(ori_record_frame_time(r, f)));
+        json_object_set_new(fr, "fold", json_integer(ori_record_frame_fold(r, f) + 1));
+        json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_record_frame_drive(r, f))));
+        json_object_set_new(fr, "fold_angles_deg", degrees_json(ori_record_frame_angles(r, f), E));
+        json_object_set_new(fr, "residual", json_real(ori_record_frame_residual(r, f)));
+        json_array_append_new(frames, fr);
+    }
+    json_object_set_new(o, "frames", frames);
+    return o;
+}
+
+json_t *studio_json_at(double t, int fold, double drive_rad, const double *angles_rad, int E, double residual,
+                       const ori_v3 *pos, int V)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "t", json_real(t));
+    json_object_set_new(o, "fold", json_integer(fold + 1));
+    json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(drive_rad)));
+    json_object_set_new(o, "fold_angles_deg", degrees_json(angles_rad, E));
+    json_object_set_new(o, "residual", json_real(residual));
+    json_t *coords = json_array();
+    for (int v = 0; v < V; ++v) json_array_append_new(coords, json_pack("[fff]", pos[v].x, pos[v].y, pos[v].z));
+    json_object_set_new(o, "vertices_coords", coords);
+    return o;
+}
+
+// Little-endian float64 whatever the host.
+static void put_f64(unsigned char *p, double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    for (int i = 0; i < 8; ++i) p[i] = (unsigned char)(u >> (8 * i));
+}
+
+char *studio_state_binary(double t, int fold, double drive_rad, double residual, const ori_v3 *pos, int V,
+                          const double *angles_rad, int E, size_t *size)
+{
+    size_t n = 8 + 3 * (size_t)V + (size_t)E;
+    unsigned char *b = malloc(8 * n);
+    double head[8] = {t, (double)(fold + 1), ori_rad_to_deg_output(drive_rad), residual, (double)V, (double)E, 0.0, 0.0};
+    size_t k = 0;
+    for (int i = 0; i < 8; ++i) put_f64(b + 8 * k++, head[i]);
+    for (int v = 0; v < V; ++v) {
+        put_f64(b + 8 * k++, pos[v].x);
+        put_f64(b + 8 * k++, pos[v].y);
+        put_f64(b + 8 * k++, pos[v].z);
+    }
+    for (int e = 0; e < E; ++e) put_f64(b + 8 * k++, ori_rad_to_deg_output(angles_rad[e]));
+    *size = 8 * n;
+    return (char *)b;
+}
+
+// --- orikin check --json ---------------------------------------------------------------------------
+
+static json_t *count_json(ori_mv_count c)
+{
+    if (c.overflow || c.count > (uint64_t)INT64_MAX) return json_null();
+    return json_integer((json_int_t)c.count);
+}
+
+static json_t *vertex_json(const ori_pattern *p, const ori_flat_report *rep, int i, int *edges, double *sectors)
+{
+    ori_vertex_report r = ori_flat_report_vertex(rep, i);
+    int n = ori_flat_report_vertex_creases(rep, i, edges, sectors, r.degree);
+    json_t *o = json_object();
+    json_object_set_new(o, "vertex", json_integer(r.vertex));
+    json_object_set_new(o, "degree", json_integer(r.degree));
+    json_t *cr = json_array(), *sd = json_array();
+    char *letters = malloc((size_t)n + 1);
+    for (int k = 0; k < n; ++k) {
+        json_array_append_new(cr, json_integer(edges[k]));
+        json_array_append_new(sd, json_real(ori_rad_to_deg_output(sectors[k])));
+        letters[k] = ori_assignment_to_char(ori_pattern_edge(p, edges[k]).assignment);
+    }
+    letters[n] = '\0';
+    json_object_set_new(o, "creases", cr);
+    json_object_set_new(o, "assignment", json_string(letters));
+    free(letters);
+    json_object_set_new(o, "sectors_deg", sd);
+    json_object_set_new(o, "sector_sum_deg", json_real(ori_rad_to_deg_output(r.sector_sum_rad)));
+    json_object_set_new(o, "kawasaki", json_boolean(r.kawasaki));
+    json_object_set_new(o, "maekawa", r.maekawa == ORI_FLAT_UNDETERMINED ? json_null() : json_boolean(r.maekawa == ORI_FLAT_YES));
+    json_object_set_new(o, "big_little_big", json_boolean(r.big_little_big));
+    json_object_set_new(o, "mv_count", count_json(r.mv_count));
+    if (r.mv_count.overflow) json_object_set_new(o, "mv_count_overflow", json_true());
+    json_object_set_new(o, "assignment_valid", json_boolean(r.assignment_valid));
+    if (r.unassigned > 0) {
+        json_object_set_new(o, "unassigned", json_integer(r.unassigned));
+        json_object_set_new(o, "unassigned_completions", count_json(r.completions));
+    }
+    json_object_set_new(o, "cone", json_boolean(r.cone));
+    json_object_set_new(o, "flat_foldable", json_boolean(r.flat_foldable));
+    return o;
+}
+
+json_t *studio_json_check(const char *file, int frame, const ori_pattern *p)
+{
+    ori_flat_report *rep = ori_flat_check_pattern(p, NULL);
+    int nv = ori_flat_report_vertex_count(rep);
+    int max_degree = 1;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        int d = ori_pattern_vertex_degree(p, v);
+        if (d > max_degree) max_degree = d;
+    }
+    int *edges = malloc(sizeof(int) * (size_t)max_degree);
+    double *sectors = malloc(sizeof(double) * (size_t)max_degree);
+    json_t *out = json_object();
+    json_object_set_new(out, "file", json_string(file));
+    json_object_set_new(out, "frame", json_integer(frame));
+    json_object_set_new(out, "locally_flat_foldable", json_boolean(ori_flat_report_flat_foldable(rep)));
+    json_object_set_new(out, "interior_vertices", json_integer(ori_flat_report_interior_count(rep)));
+    json_object_set_new(out, "failed_vertices", json_integer(ori_flat_report_failed_count(rep)));
+    json_t *vs = json_array();
+    for (int i = 0; i < nv; ++i) json_array_append_new(vs, vertex_json(p, rep, i, edges, sectors));
+    json_object_set_new(out, "vertices", vs);
+    json_t *viol = json_array();
+    for (int i = 0; i < ori_flat_report_violation_count(rep); ++i) {
+        ori_flat_violation x = ori_flat_report_violation(rep, i);
+        json_t *o = json_object();
+        json_object_set_new(o, "vertex", json_integer(x.vertex));
+        json_object_set_new(o, "rule", json_string(ori_flat_rule_name(x.rule)));
+        if (x.edge != ORI_NULL_INDEX) json_object_set_new(o, "edge", json_integer(x.edge));
+        json_object_set_new(o, "detail", json_string(x.detail));
+        json_array_append_new(viol, o);
+    }
+    json_object_set_new(out, "violations", viol);
+    free(edges);
+    free(sectors);
+    ori_flat_report_destroy(rep);
+    return out;
+}
+
+// --- orikin dof, tree, info, axiom --json ----------------------------------------------------
+
+json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, int loops)
+{
+    json_t *out = json_object();
+    json_object_set_new(out, "file", json_string(file));
+    json_object_set_new(out, "frame", json_integer(frame));
+    json_object_set_new(out, "grubler", json_integer(r->grubler));
+    json_object_set_new(out, "unknowns", json_integer(r->unknowns));
+    json_object_set_new(out, "equations", json_integer(r->equations));
+    json_object_set_new(out, "rank", json_integer(r->rank));
+    json_object_set_new(out, "dof", json_integer(r->dof));
+    json_object_set_new(out, "generic_dof", r->generic_dof >= 0 ? json_integer(r->generic_dof) : json_null());
+    json_object_set_new(out, "singular", json_boolean(r->singular));
+    json_object_set_new(out, "rigid", json_boolean(r->rigid));
+    json_object_set_new(out, "method", json_string(r->dense ? "dense-svd" : "sparse-cholmod"));
+    json_object_set_new(out, "sigma_max", json_real(r->sigma_max));
+    json_object_set_new(out, "sigma_cut", json_real(r->sigma_cut));
+    json_object_set_new(out, "loops", json_integer(loops));
+    return out;
+}
+
+json_t *studio_json_tree(const char *file, const ori_pattern *p)
+{
+    int nodes = ori_pattern_tree_node_count(p), faces = ori_pattern_face_count(p);
+    // children by parent in one pass (the CLI's double loop is quadratic)
+    int *first = malloc(sizeof(int) * (size_t)(nodes + 1)), *next = malloc(sizeof(int) * (size_t)(nodes + 1));
+    for (int i = 0; i < nodes; ++i) first[i] = next[i] = -1;
+    for (int k = nodes - 1; k >= 0; --k) {
+        int parent = ori_pattern_tree_node(p, k).parent;
+        if (parent >= 0 && parent < nodes) {
+            next[k] = first[parent];
+            first[parent] = k;
+        }
+    }
+    json_t *arr = json_array();
+    for (int i = 0; i < nodes; ++i) {
+        ori_tree_node n = ori_pattern_tree_node(p, i);
+        json_t *children = json_array();
+        for (int k = first[i]; k >= 0; k = next[k]) json_array_append_new(children, json_string(ori_pattern_tree_node(p, k).name));
+        int face = ori_pattern_find_face_by_name(p, n.name);
+        json_t *o = json_object();
+        json_object_set_new(o, "name", json_string(n.name));
+        json_object_set_new(o, "parent", json_integer(n.parent));
+        json_object_set_new(o, "children", children);
+        json_object_set_new(o, "leaf", json_boolean(first[i] < 0));
+        json_object_set_new(o, "face", face == ORI_NULL_INDEX ? json_null() : json_integer(face));
+        json_array_append_new(arr, o);
+    }
+    free(first);
+    free(next);
+    json_t *elems = json_array();
+    for (int f = 0; f < faces; ++f) {
+        const char *name = ori_pattern_face_name(p, f);
+        json_t *o = json_object();
+        json_object_set_new(o, "face", json_integer(f));
+        json_object_set_new(o, "name", name ? json_string(name) : json_null());
+        json_array_append_new(elems, o);
+    }
+    json_t *out = json_object();
+    json_object_set_new(out, "file", json_string(file));
+    json_object_set_new(out, "nodes", arr);
+    json_object_set_new(out, "folding_elements", elems);
+    return out;
+}
+
+json_t *studio_json_info(const char *file, int frame, int frames, const ori_pattern *p)
+{
+    json_t *by = json_object();
+    for (int a = 0; a < ORI_ASSIGN_COUNT; ++a) {
+        char key[2] = {ori_assignment_to_char((ori_assignment)a), '\0'};
+        json_object_set_new(by, key, json_integer(ori_pattern_count_assignment(p, (ori_assignment)a)));
+    }
+    json_t *out = json_object();
+    json_object_set_new(out, "file", json_string(file));
+    json_object_set_new(out, "frame", json_integer(frame));
+    json_object_set_new(out, "frames", json_integer(frames));
+    json_object_set_new(out, "vertices", json_integer(ori_pattern_vertex_count(p)));
+    json_object_set_new(out, "edges", json_integer(ori_pattern_edge_count(p)));
+    json_object_set_new(out, "edges_by_assignment", by);
+    json_object_set_new(out, "faces", json_integer(ori_pattern_face_count(p)));
+    json_object_set_new(out, "interior_vertices", json_integer(ori_pattern_interior_vertex_count(p)));
+    json_object_set_new(out, "dimension", json_integer(ori_pattern_is_3d(p) ? 3 : 2));
+    json_object_set_new(out, "folded_form", json_boolean(ori_pattern_is_folded_form(p)));
+    return out;
+}
+
+json_t *studio_json_axiom(int axiom, const ori_line_set *set)
+{
+    json_t *lines = json_array();
+    for (int k = 0; k < set->count; ++k) {
+        ori_line l = set->lines[k];
+        json_array_append_new(lines, json_pack("{s:[ff],s:[ff]}", "point", l.point.x, l.point.y, "dir", l.dir.x, l.dir.y));
+    }
+    return json_pack("{s:i,s:o}", "axiom", axiom, "lines", lines);
+}
