@@ -217,9 +217,13 @@ json_t *studio_json_fold(const char *file, const studio_fold_spec *spec, const o
 // orikin sequence --json (sequence and pattern as the CLI names them).
 json_t *studio_json_record(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
                            int edge_count);
-// orikin sequence --at T --json.
-json_t *studio_json_at(double t, int fold, double drive_rad, const double *angles_rad, int edge_count,
-                       double residual, const ori_v3 *positions, int vertex_count);
+// orikin sequence --at T --json, as text (malloc'd; *size set): the same fields and values.
+char *studio_json_at_text(double t, int fold, double drive_rad, const double *angles_rad, int edge_count,
+                          double residual, const ori_v3 *positions, int vertex_count, size_t *size);
+// A state of a computed fold (GET /api/fold/frame): frame, drive_deg, fold_angles_deg,
+// residual, vertices_coords.
+char *studio_json_frame_text(int frame, double drive_rad, const double *angles_rad, int edge_count, double residual,
+                             const ori_v3 *positions, int vertex_count, size_t *size);
 // orikin check --json.
 json_t *studio_json_check(const char *file, int frame, const ori_pattern *p);
 // orikin dof --json.

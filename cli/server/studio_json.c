@@ -186,19 +186,107 @@ json_t *studio_json_record(const char *sequence, const char *pattern, const ori_
     return o;
 }
 
-json_t *studio_json_at(double t, int fold, double drive_rad, const double *angles_rad, int E, double residual,
-                       const ori_v3 *pos, int V)
+// A growing text buffer for the state answers, written directly: a 100 × 100 Miura-ori state
+// has 50,000 numbers, which a JSON tree and its normalisation take ten times longer to write.
+typedef struct text_buf {
+    char *p;
+    size_t n, cap;
+} text_buf;
+
+static void tb_reserve(text_buf *b, size_t more)
 {
-    json_t *o = json_object();
-    json_object_set_new(o, "t", json_real(t));
-    json_object_set_new(o, "fold", json_integer(fold + 1));
-    json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(drive_rad)));
-    json_object_set_new(o, "fold_angles_deg", degrees_json(angles_rad, E));
-    json_object_set_new(o, "residual", json_real(residual));
-    json_t *coords = json_array();
-    for (int v = 0; v < V; ++v) json_array_append_new(coords, json_pack("[fff]", pos[v].x, pos[v].y, pos[v].z));
-    json_object_set_new(o, "vertices_coords", coords);
-    return o;
+    if (b->n + more + 1 <= b->cap) return;
+    size_t cap = b->cap ? b->cap : 4096;
+    while (cap < b->n + more + 1) cap *= 2;
+    b->p = realloc(b->p, cap);
+    b->cap = cap;
+}
+
+static void tb_str(text_buf *b, const char *s)
+{
+    size_t k = strlen(s);
+    tb_reserve(b, k);
+    memcpy(b->p + b->n, s, k + 1);
+    b->n += k;
+}
+
+// A number that reads back exactly: integers as integers (0, 90, 180 are common), anything
+// else with 17 significant digits (always enough for a double; the CLI prints the shortest
+// such form, which parses to the same double).
+static void tb_num(text_buf *b, double x)
+{
+    tb_reserve(b, 32);
+    int k;
+    if (x == floor(x) && fabs(x) < 1e15) k = snprintf(b->p + b->n, 32, "%.0f", x == 0.0 ? 0.0 : x);
+    else k = snprintf(b->p + b->n, 32, "%.17g", x);
+    b->n += (size_t)k;
+}
+
+static void tb_degrees(text_buf *b, const double *a, int n)
+{
+    tb_str(b, "[");
+    for (int e = 0; e < n; ++e) {
+        if (e) tb_str(b, ",");
+        tb_num(b, ori_rad_to_deg_output(a[e]));
+    }
+    tb_str(b, "]");
+}
+
+static void tb_coords(text_buf *b, const ori_v3 *pos, int V)
+{
+    tb_str(b, "[");
+    for (int v = 0; v < V; ++v) {
+        tb_str(b, v ? ",[" : "[");
+        tb_num(b, pos[v].x);
+        tb_str(b, ",");
+        tb_num(b, pos[v].y);
+        tb_str(b, ",");
+        tb_num(b, pos[v].z);
+        tb_str(b, "]");
+    }
+    tb_str(b, "]");
+}
+
+char *studio_json_at_text(double t, int fold, double drive_rad, const double *angles_rad, int E, double residual,
+                          const ori_v3 *pos, int V, size_t *size)
+{
+    text_buf b = {NULL, 0, 0};
+    tb_reserve(&b, (size_t)(E + 3 * V) * 20 + 256);
+    tb_str(&b, "{\"t\":");
+    tb_num(&b, t);
+    tb_str(&b, ",\"fold\":");
+    tb_num(&b, fold + 1);
+    tb_str(&b, ",\"drive_deg\":");
+    tb_num(&b, ori_rad_to_deg_output(drive_rad));
+    tb_str(&b, ",\"fold_angles_deg\":");
+    tb_degrees(&b, angles_rad, E);
+    tb_str(&b, ",\"residual\":");
+    tb_num(&b, residual);
+    tb_str(&b, ",\"vertices_coords\":");
+    tb_coords(&b, pos, V);
+    tb_str(&b, "}");
+    *size = b.n;
+    return b.p;
+}
+
+char *studio_json_frame_text(int frame, double drive_rad, const double *angles_rad, int E, double residual,
+                             const ori_v3 *pos, int V, size_t *size)
+{
+    text_buf b = {NULL, 0, 0};
+    tb_reserve(&b, (size_t)(E + 3 * V) * 20 + 256);
+    tb_str(&b, "{\"frame\":");
+    tb_num(&b, frame);
+    tb_str(&b, ",\"drive_deg\":");
+    tb_num(&b, ori_rad_to_deg_output(drive_rad));
+    tb_str(&b, ",\"fold_angles_deg\":");
+    tb_degrees(&b, angles_rad, E);
+    tb_str(&b, ",\"residual\":");
+    tb_num(&b, residual);
+    tb_str(&b, ",\"vertices_coords\":");
+    tb_coords(&b, pos, V);
+    tb_str(&b, "}");
+    *size = b.n;
+    return b.p;
 }
 
 // Little-endian float64 whatever the host.

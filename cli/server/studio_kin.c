@@ -487,23 +487,15 @@ void studio_api_fold_frame(studio *s, const studio_request *req, studio_response
     ori_motion_frame_vertices(f->motion, k, pos);
     const double *ang = ori_motion_frame_angles(f->motion, k);
     double drive = ori_motion_frame_drive(f->motion, k), res = ori_motion_frame_residual(f->motion, k);
-    if (binary_requested(req)) {
-        size_t size;
-        char *b = studio_state_binary((double)k, 0, drive, res, pos, V, ang, E, &size);
-        free(out->body);
-        out->status = 200;
-        out->content_type = "application/octet-stream";
-        out->body = b;
-        out->size = size;
-    } else {
-        json_t *o = studio_json_at((double)k, 0, drive, ang, E, res, pos, V);
-        json_object_del(o, "t");
-        json_object_del(o, "fold");
-        json_t *full = json_pack("{s:i}", "frame", k);
-        json_object_update(full, o);
-        json_decref(o);
-        studio_respond_json(out, 200, full);
-    }
+    size_t size;
+    bool binary = binary_requested(req);
+    char *b = binary ? studio_state_binary((double)k, 0, drive, res, pos, V, ang, E, &size)
+                     : studio_json_frame_text(k, drive, ang, E, res, pos, V, &size);
+    free(out->body);
+    out->status = 200;
+    out->content_type = binary ? "application/octet-stream" : "application/json";
+    out->body = b;
+    out->size = size;
     free(pos);
     studio_fold_unref(f);
 }
@@ -702,16 +694,16 @@ void studio_api_sequence_at(studio *s, const studio_request *req, studio_respons
     ori_status st = seq_state_at(q, t, ang, pos, &drive, &fold, &residual, &err);
     if (st != ORI_OK) {
         studio_fail_error(out, studio_status_of(st), &err);
-    } else if (binary_requested(req)) {
+    } else {
         size_t size;
-        char *b = studio_state_binary(t, fold, drive, residual, pos, V, ang, E, &size);
+        bool binary = binary_requested(req);
+        char *b = binary ? studio_state_binary(t, fold, drive, residual, pos, V, ang, E, &size)
+                         : studio_json_at_text(t, fold, drive, ang, E, residual, pos, V, &size);
         free(out->body);
         out->status = 200;
-        out->content_type = "application/octet-stream";
+        out->content_type = binary ? "application/octet-stream" : "application/json";
         out->body = b;
         out->size = size;
-    } else {
-        studio_respond_json(out, 200, studio_json_at(t, fold, drive, ang, E, residual, pos, V));
     }
     free(ang);
     free(pos);
