@@ -411,6 +411,7 @@ int studio_create(const studio_def *def, studio **out, char *err, size_t err_siz
             char *pattern = resolve_relative(s->def.path, ori_sequence_pattern_path(seq));
             ok = load_file(pattern, &s->doc, &s->model, err, err_size);
             copy_string(s->file, sizeof s->file, pattern);
+            studio_utf8_clean(s->file);
             copy_string(s->save_path, sizeof s->save_path, pattern);
             copy_string(s->seq_path, sizeof s->seq_path, s->def.path);
             copy_string(s->seq_pattern_ref, sizeof s->seq_pattern_ref, ori_sequence_pattern_path(seq));
@@ -421,6 +422,7 @@ int studio_create(const studio_def *def, studio **out, char *err, size_t err_siz
     } else {
         ok = load_file(s->def.path, &s->doc, &s->model, err, err_size);
         copy_string(s->file, sizeof s->file, s->def.path);
+        studio_utf8_clean(s->file);
         copy_string(s->save_path, sizeof s->save_path, s->def.path);
         s->format = s->save_format = format_of_name(s->def.path);
         s->from_command_line = true;
@@ -515,6 +517,25 @@ void studio_respond_json(studio_response *out, int status, json_t *value)
     set_body(out, status, "application/json", text, n);
 }
 
+void studio_utf8_clean(char *s)
+{
+    unsigned char *p = (unsigned char *)s;
+    while (*p) {
+        int n = *p < 0x80 ? 1 : (*p & 0xE0) == 0xC0 ? 2 : (*p & 0xF0) == 0xE0 ? 3 : (*p & 0xF8) == 0xF0 ? 4 : 0;
+        bool ok = n > 0;
+        for (int k = 1; ok && k < n; ++k) ok = (p[k] & 0xC0) == 0x80;
+        // overlong forms, surrogates and code points beyond U+10FFFF are not UTF-8 either
+        if (ok && n == 2) ok = *p >= 0xC2;
+        if (ok && n == 3) ok = !(*p == 0xE0 && p[1] < 0xA0) && !(*p == 0xED && p[1] >= 0xA0);
+        if (ok && n == 4) ok = !(*p == 0xF0 && p[1] < 0x90) && !(*p == 0xF4 && p[1] >= 0x90) && *p <= 0xF4;
+        if (!ok) {
+            *p++ = '?';
+            continue;
+        }
+        p += n;
+    }
+}
+
 void studio_fail(studio_response *out, int status, const char *fmt, ...)
 {
     char msg[640];
@@ -524,6 +545,8 @@ void studio_fail(studio_response *out, int status, const char *fmt, ...)
     va_end(ap);
     for (char *c = msg; *c; ++c)
         if (*c == '\n' || *c == '\r' || *c == '\t') *c = ' ';
+    // a message may quote the request (a name, a token of bad JSON): keep it valid UTF-8
+    studio_utf8_clean(msg);
     studio_respond_json(out, status, json_pack("{s:s}", "error", msg));
 }
 
@@ -760,8 +783,13 @@ void studio_api_session(studio *s, const studio_request *req, studio_response *o
     json_object_set_new(o, "format", json_string(ori_format_name(s->format)));
     json_object_set_new(o, "frames", json_integer(ori_fold_frame_count(s->doc)));
     bool can_save = s->from_command_line && s->save_path[0];
-    json_object_set_new(o, "save_path", can_save ? json_string(s->save_path) : json_null());
-    json_object_set_new(o, "sequence_path", s->seq_path[0] ? json_string(s->seq_path) : json_null());
+    char shown[STUDIO_PATH_MAX];
+    copy_string(shown, sizeof shown, s->save_path);
+    studio_utf8_clean(shown);
+    json_object_set_new(o, "save_path", can_save ? json_string(shown) : json_null());
+    copy_string(shown, sizeof shown, s->seq_path);
+    studio_utf8_clean(shown);
+    json_object_set_new(o, "sequence_path", s->seq_path[0] ? json_string(shown) : json_null());
     json_object_set_new(o, "undo", json_integer(s->undo_count));
     json_object_set_new(o, "redo", json_integer(s->redo_count));
     json_t *seq = json_null();

@@ -211,8 +211,10 @@ void studio_api_open(studio *s, const studio_request *req, studio_response *out)
         return;
     }
     // Only the name's extension is used: nothing from a request ever reaches the file system.
-    const char *base = strrchr(name, '/');
-    base = base ? base + 1 : name;
+    const char *slash = strrchr(name, '/');
+    char base[512];
+    copy_string(base, sizeof base, slash ? slash + 1 : name);
+    studio_utf8_clean(base);
     ori_fold *doc = NULL;
     studio_model *m = NULL;
     char err[600];
@@ -718,6 +720,7 @@ static bool edit_one(ori_pattern *p, json_t *op, int index, int *map, int n_orig
         studio_fail(out, studio_status_of(st), "ops %d (%s %s): %s", index, name, label, msg);
         return false;
     }
+    studio_utf8_clean(line); // a truncated line may end inside a character
     json_array_append_new(log, json_string(line));
     return true;
 }
@@ -890,5 +893,6 @@ void studio_api_save(studio *s, const studio_request *req, studio_response *out)
         studio_fail_error(out, 500, &err);
         return;
     }
+    studio_utf8_clean(path);
     studio_respond_json(out, 200, json_pack("{s:s}", "saved", path));
 }

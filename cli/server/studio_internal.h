@@ -107,7 +107,9 @@ struct studio {
 double studio_now(void);
 // Query argument by key, or NULL.
 const char *studio_arg_get(const studio_request *req, const char *key);
-// 400-style error: {"error": "one line"} (newlines replaced).
+// Replace the bytes of s that are not UTF-8 by '?' (JSON strings must be UTF-8).
+void studio_utf8_clean(char *s);
+// 400-style error: {"error": "one line"} (newlines replaced, valid UTF-8).
 void studio_fail(studio_response *out, int status, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 // An error of the library as {"error": ...} (ori_error_format).
 void studio_fail_error(studio_response *out, int status, const ori_error *err);

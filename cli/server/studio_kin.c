@@ -563,6 +563,7 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, studio
     }
     char file[STUDIO_PATH_MAX], name[STUDIO_PATH_MAX];
     copy_string(name, sizeof name, label && label[0] ? label : "studio");
+    studio_utf8_clean(name);
     double *angles = NULL;
     ori_v3 *coords = NULL;
     bool folded = false;

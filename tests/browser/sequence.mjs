@@ -66,7 +66,48 @@ await run('sequence', SEQ, async ({ page }) => {
   await page.check('#grid-toggle');
   await page.waitForTimeout(100);
 
+  // two-sided colours: a green front shows
+  await page.fill('#color-front', '#00c000');
+  await page.waitForTimeout(100);
+  const green = await page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = 'data:image/png;base64,' + b64;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 1] > 90 && d[i + 1] > 2 * d[i] && d[i + 1] > 2 * d[i + 2]) n++;
+    return n / (d.length / 4);
+  }, (await page.locator('#gl').screenshot()).toString('base64'));
+  assert(green > 0.02, `the front colour is drawn (${(100 * green).toFixed(1)} % green)`);
+  await page.fill('#color-front', '#e8833a');
+  // a texture image dropped onto the page is mapped on the front side
+  await page.evaluate(async () => {
+    const c = document.createElement('canvas');
+    c.width = 64; c.height = 64;
+    const ctx = c.getContext('2d');
+    for (let i = 0; i < 8; i++) for (let j = 0; j < 8; j++) {
+      ctx.fillStyle = (i + j) % 2 ? '#1b3a8a' : '#f2d13a';
+      ctx.fillRect(8 * i, 8 * j, 8, 8);
+    }
+    const blob = await new Promise((r) => c.toBlob(r, 'image/png'));
+    const dt = new DataTransfer();
+    dt.items.add(new File([blob], 'checker.png', { type: 'image/png' }));
+    window.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  });
+  await page.waitForFunction(() => !document.getElementById('texture-clear').hidden);
+  await page.waitForTimeout(150);
+  const tex = await measurePng(page, await page.locator('#gl').screenshot());
+  assert(tex.colors > 200, `the texture is drawn (${tex.colors} colours)`);
+  await page.click('#texture-clear');
+
   // screenshots that are not blank
+  await page.mouse.move(1, 1);
+  await page.evaluate(() => { document.getElementById('nav').scrollTop = 0; });
+  await page.waitForTimeout(100);
   const gl = await page.locator('#gl').screenshot();
   const m3 = await measurePng(page, gl);
   console.log(`3D view ${m3.width}x${m3.height}: ${(100 * m3.drawn).toFixed(1)} % drawn, ${m3.colors} colours`);

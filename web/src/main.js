@@ -716,6 +716,8 @@ function setupTimeline() {
   renderFolds();
   if (!r) {
     $('t-label').textContent = 'no sequence: specify a fold above and add it';
+    $('t-value').value = '0';
+    slider.value = '0';
     plot.setCursor(null);
   }
 }
