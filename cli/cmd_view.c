@@ -1,5 +1,6 @@
 // orikin view: the studio — serve the browser viewer and editor on loopback and open it.
 #define _POSIX_C_SOURCE 200809L
+#include <arpa/inet.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -56,6 +57,9 @@ static int run(int argc, char **argv)
         } else if (strcmp(argv[i], "--host") == 0) {
             if (host) return cli_usage("view", "--host given twice");
             if (!(host = cli_option_value("view", argc, argv, &i))) return CLI_EXIT_USAGE;
+            unsigned char addr[16];
+            if (inet_pton(AF_INET, host, addr) != 1 && inet_pton(AF_INET6, host, addr) != 1)
+                return cli_usage("view", "--host needs a numeric address (127.0.0.1, 0.0.0.0, ::1), got '%s'", host);
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             return cli_usage("view", "unknown option %s", argv[i]);
         } else if (!path) {

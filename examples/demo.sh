@@ -57,8 +57,33 @@ run 0 mv-count 100 70 50 40 30 70 --list
 run 0 check examples/patterns/degree4-vertex.fold
 run 1 check examples/patterns/non-flat-foldable-vertex.fold
 
+# --- studio (orikin view) -----------------------------------------------------------------
+step "6. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
+echo "\$ orikin view examples/open-corner.seq.json --port 0 --no-browser"
+"$ORIKIN" view examples/open-corner.seq.json --port 0 --no-browser >"$OUT/view.out" 2>&1 &
+view_pid=$!
+i=0
+while [ $i -lt 100 ] && ! grep -q "^orikin view: http" "$OUT/view.out"; do
+    sleep 0.1
+    i=$((i + 1))
+done
+if grep -q "^orikin view: http" "$OUT/view.out"; then
+    echo "(it served the open corner's two folds; stopped)"
+else
+    cat "$OUT/view.out"
+    echo "demo: orikin view did not start" >&2
+    failed=1
+fi
+kill -INT "$view_pid" 2>/dev/null
+wait "$view_pid" || failed=1
+echo
+
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1
 fi
 echo "The folded open corner (every step as a FOLD frame) is in $OUT/open-corner-folded.fold."
+echo
+echo "Open the studio on the open corner (author, check, fold and scrub the sequence in your browser;"
+echo "Ctrl-C stops it):"
+echo "    $ORIKIN view examples/open-corner.seq.json"

@@ -860,18 +860,18 @@ static bool exchange(int fd, const char *request, size_t request_size, http_repl
     char *buf = malloc(cap);
     char *eoh = NULL;
     while (!eoh) {
+        if (len + 1 >= cap) buf = realloc(buf, cap *= 2);
         ssize_t n = recv(fd, buf + len, cap - len - 1, 0);
         if (n <= 0) break;
         len += (size_t)n;
         buf[len] = '\0';
         eoh = strstr(buf, "\r\n\r\n");
-        if (len + 1 >= cap) buf = realloc(buf, cap *= 2);
     }
     if (!eoh || sscanf(buf, "HTTP/1.%*d %d", &r->status) != 1) {
         free(buf);
         return false;
     }
-    size_t hlen = (size_t)(eoh - buf) + 4;
+    size_t hlen = (size_t)(eoh - buf) + 4; // an offset: buf may move below
     snprintf(r->headers, sizeof r->headers, "%.*s", (int)hlen, buf);
     const char *cl = strcasestr(r->headers, "\r\nContent-Length:");
     long want = cl ? strtol(cl + 17, NULL, 10) : -1;

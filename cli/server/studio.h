@@ -21,7 +21,7 @@
 #define STUDIO_MAX_BODY_BYTES ((size_t)4 << 20)
 #define STUDIO_MAX_OPEN_BYTES ((size_t)64 << 20)
 // Memory budget of the scrubbing cache of a sequence (bytes): exact states on a fine time grid.
-#define STUDIO_CACHE_BYTES ((size_t)96 << 20)
+#define STUDIO_CACHE_BYTES ((size_t)64 << 20)
 // Finest grid of the scrubbing cache: states per fold (a multiple of 8, so that T = k/2, k/4 and
 // k/8 are grid points).
 #define STUDIO_GRID_MAX 720

@@ -32,14 +32,18 @@ export async function loadPlaywright() {
   return import(pw);
 }
 
-// Start the studio on FILE (relative to the repository) and return {url, stop}.
-export function startStudio(file) {
+// Start the studio on FILE (relative to the repository) and return {url, stop}. It prints its URL
+// once the file is loaded (and a sequence run): startMs bounds that.
+export function startStudio(file, startMs = 30000) {
   return new Promise((resolve, reject) => {
     const args = ['view', '--port', '0', '--no-browser'];
     if (file) args.push(file);
     const proc = spawn(ORIKIN, args, { cwd: SOURCE, stdio: ['ignore', 'pipe', 'pipe'] });
     let out = '', err = '';
-    const timer = setTimeout(() => reject(new Error('orikin view printed no URL within 10 s: ' + err)), 10000);
+    const timer = setTimeout(() => {
+      proc.kill('SIGKILL');
+      reject(new Error(`orikin view printed no URL within ${startMs / 1000} s: ` + err));
+    }, startMs);
     proc.stdout.on('data', (d) => {
       out += d;
       const m = /^orikin view: (http:\/\/\S+)$/m.exec(out);
@@ -48,7 +52,8 @@ export function startStudio(file) {
         resolve({
           url: m[1],
           proc,
-          stop: () => new Promise((r) => { proc.once('exit', r); proc.kill('SIGINT'); }),
+          // Ctrl-C: the server stops cleanly, exit 0 (under the sanitizers: no leak, no error)
+          stop: () => new Promise((r) => { proc.once('exit', (code, signal) => r({ code, signal, err })); proc.kill('SIGINT'); }),
         });
       }
     });
@@ -152,7 +157,7 @@ export async function measurePng(page, png) {
 export async function run(name, file, body, options = {}) {
   const pw = await loadPlaywright();
   fs.mkdirSync(OUT, { recursive: true });
-  const studio = await startStudio(file);
+  const studio = await startStudio(file, options.startMs);
   let browser = null;
   const t0 = Date.now();
   try {
@@ -163,12 +168,20 @@ export async function run(name, file, body, options = {}) {
     console.log(`PASS ${name} (${((Date.now() - t0) / 1000).toFixed(1)} s)`);
   } catch (e) {
     if (browser) {
-      try { await browser.page.screenshot({ path: path.join(OUT, `${name}-failure.png`) }); } catch (x) { /* ignore */ }
+      try {
+        await browser.page.screenshot({ path: path.join(OUT, `${name}-failure.png`) });
+        const msgs = await browser.page.$$eval('#messages .msg', (els) => els.slice(0, 5).map((e) => e.textContent));
+        if (msgs.length) console.error('the page said:\n  ' + msgs.join('\n  '));
+      } catch (x) { /* ignore */ }
     }
     console.error(`FAIL ${name}: ${e.stack || e.message}`);
     process.exitCode = 1;
   } finally {
     if (browser) await browser.close();
-    await studio.stop();
+    const end = await studio.stop();
+    if (end.code !== 0) {
+      console.error(`FAIL ${name}: orikin view ended with ${end.code !== null ? 'exit ' + end.code : end.signal}:\n${end.err.slice(-3000)}`);
+      process.exitCode = 1;
+    }
   }
 }

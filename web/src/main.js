@@ -45,6 +45,7 @@ const state = {
   foldPlaying: false,
   shown: 'flat',
   composites: [],
+  work: 0,
   lastError: '',
   stats: { states: 0, latency: [], since: performance.now() },
 };
@@ -729,7 +730,8 @@ function sliderSteps() {
 // Show the state at time T (exact, from the server); requests never pile up: while one is in
 // flight only the latest wanted T is remembered.
 async function showTime(t) {
-  state.targetT = t;
+  const duration = state.sequence ? state.sequence.duration : 0;
+  state.targetT = Math.min(Math.max(t, 0), duration);
   if (state.inflight) return;
   state.inflight = true;
   try {
@@ -782,8 +784,9 @@ function togglePlay() {
   let last = performance.now();
   const tick = (now) => {
     if (!state.playing) return;
-    t = Math.min(duration, t + ((now - last) / 1000) * PLAY_RATE * +$('speed').value);
-    last = now;
+    // an animation frame's time may precede the moment play was pressed: never step back
+    t = Math.min(duration, Math.max(0, t + (Math.max(0, now - last) / 1000) * PLAY_RATE * +$('speed').value));
+    last = Math.max(last, now);
     // on the grid of the scrubbing cache: every state is exact and served at once
     const k = Math.round(t * sliderSteps());
     showTime(k / sliderSteps());
@@ -818,6 +821,15 @@ async function exportAs(format) {
 }
 
 async function openFile(file) {
+  state.work++; // reading the file takes a moment before any request: count it as busy
+  try {
+    await openFileNow(file);
+  } finally {
+    state.work--;
+  }
+}
+
+async function openFileNow(file) {
   const name = file.name;
   const ext = (/\.[^.]+$/.exec(name.toLowerCase()) || [''])[0];
   if (file.type.startsWith('image/')) {
@@ -874,8 +886,9 @@ function token() {
 
 function wire() {
   $('new-sheet').onclick = () => $('new-dialog').showModal();
-  $('new-dialog').addEventListener('close', () => {
-    if ($('new-dialog').returnValue !== 'ok') return;
+  $('new-ok').addEventListener('click', (ev) => {
+    ev.preventDefault();
+    $('new-dialog').close('ok');
     const kind = document.querySelector('input[name=kind]:checked').value;
     const body = kind === 'square' ? { square: +$('new-side').value } : { rect: [+$('new-w').value, +$('new-h').value] };
     action(async () => {
@@ -1008,7 +1021,7 @@ window.studio = {
   shown: () => state.shown,
   version: () => state.version,
   lastError: () => state.lastError,
-  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0),
+  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work,
   stats: () => ({
     states: state.stats.states,
     framesDrawn: v3 ? v3.frameCount : 0,
