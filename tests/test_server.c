@@ -187,6 +187,13 @@ Test(server, fold_equals_cli_json)
     cr_assert_float_eq(fabs(json_number_value(json_array_get(ang, 6))), asin(1.0 / sqrt(3.0)) * 180.0 / ORI_PI, 1e-9);
     json_decref(api);
     json_decref(cli);
+    // the same fold with the face named and the creases given by a point on them
+    api = call_json(s, "POST", "/api/fold", NULL,
+                    "{\"fix\": \"Obj1212\", \"drive\": \"@0.5,0.5\", \"lock\": [\"@1,0.5\"], \"to\": 90, \"step\": 10}", 200);
+    cli = cli_json("fold " OPEN_CORNER " --fix 4 --drive 12 --lock 11 --to 90 --step 10 --json", 0);
+    assert_same(api, cli, "fold by name and point");
+    json_decref(api);
+    json_decref(cli);
     // a fold from a --from angle, another solver choice
     api = call_json(s, "POST", "/api/fold", NULL,
                     "{\"fix\": 4, \"drive\": 12, \"lock\": [11], \"to\": 150, \"from\": 30, \"step\": 40, \"solver\": \"numeric\"}", 200);
@@ -195,6 +202,29 @@ Test(server, fold_equals_cli_json)
     json_decref(api);
     json_decref(cli);
     studio_destroy(s);
+}
+
+// A fold from a folded frame of the document (the CLI's --frame): its angles and pose.
+Test(server, fold_from_a_frame_equals_cli_json)
+{
+    char *dir = test_tmpdir();
+    char args[1024], path[512];
+    snprintf(path, sizeof path, "%s/folded.fold", dir);
+    snprintf(args, sizeof args, "fold " OPEN_CORNER " --fix 4 --drive 12 --lock 11 --to 90 --step 30 -o '%s'", path);
+    cr_assert_eq(test_run_cli(args, NULL), 0);
+    studio *s = open_studio(path);
+    json_t *api = call_json(s, "POST", "/api/fold", NULL,
+                            "{\"fix\": 3, \"drive\": 11, \"lock\": [12], \"to\": 60, \"step\": 20, \"frame\": 4}", 200);
+    snprintf(args, sizeof args, "fold '%s' --fix 3 --drive 11 --lock 12 --to 60 --step 20 --frame 4 --json", path);
+    json_t *cli = cli_json(args, 0);
+    assert_same(api, cli, "fold from frame 4");
+    json_decref(api);
+    json_decref(cli);
+    json_t *sess = call_json(s, "GET", "/api/session", NULL, NULL, 200);
+    cr_assert_eq(json_integer_value(json_object_get(sess, "frames")), 5);
+    json_decref(sess);
+    studio_destroy(s);
+    test_tmpdir_remove(dir);
 }
 
 Test(server, invalid_fold_equals_cli_json)
@@ -350,6 +380,12 @@ Test(server, bad_requests_leave_the_document_unchanged)
         {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": 12, \"to\": 90, \"bogus\": 1}", 400},
         {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": 12, \"to\": 90, \"fix2\": 99999999999999999999}", 400},
         {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": 12, \"to\": 90, \"solver\": \"magic\"}", 400},
+        {"POST", "/api/fold", NULL, "{\"fix\": \"Obj9\", \"drive\": 12, \"to\": 90}", 400},
+        {"POST", "/api/fold", NULL, "{\"fix\": 4.5, \"drive\": 12, \"to\": 90}", 400},
+        {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": \"@9,9\", \"to\": 90}", 400},
+        {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": \"12\", \"to\": 90}", 400},
+        {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": 12, \"lock\": [\"@0.5\"], \"to\": 90}", 400},
+        {"POST", "/api/fold", NULL, "{\"drive\": 12, \"to\": 90}", 400},
         {"POST", "/api/edit", NULL, "{\"ops\": [{\"op\": \"flip\", \"edge\": 99}]}", 400},
         {"POST", "/api/edit", NULL, "{\"ops\": [{\"op\": \"flip\", \"edge\": 0}]}", 400},
         {"POST", "/api/edit", NULL, "{\"ops\": [{\"op\": \"flip\", \"edge\": 12}, {\"op\": \"flip\", \"edge\": 99}]}", 400},

@@ -317,13 +317,67 @@ static bool parse_solver(json_t *o, ori_solver *solver, ori_linear *linear, stud
 }
 
 // The fold request: fix, drive, to, step, from, lock, frame, after_sequence, solver, linear.
+// A face may be named ("Obj1212") and a crease given as "@x,y" (the crease through that point):
+// the references are kept until the document's model is known.
 typedef struct fold_request {
     studio_fold_spec spec;
     int frame;
     bool after_sequence;
     ori_solver solver;
     ori_linear linear;
+    json_t *fix_ref, *drive_ref, *lock_ref; // borrowed from the request body
 } fold_request;
+
+// A crease: an index, or "@x,y". False after a 400.
+static bool crease_ref(const ori_pattern *p, json_t *v, const char *what, int *out, studio_response *res)
+{
+    if (json_is_integer(v) && json_integer_value(v) >= -2147483647LL && json_integer_value(v) <= 2147483647LL) {
+        *out = (int)json_integer_value(v);
+        return true;
+    }
+    double x, y;
+    char tail;
+    const char *t = json_is_string(v) ? json_string_value(v) : NULL;
+    if (!t || t[0] != '@' || sscanf(t + 1, "%lf,%lf%c", &x, &y, &tail) != 2 || !isfinite(x) || !isfinite(y)) {
+        studio_fail(res, 400, "%s: an edge index or \"@x,y\"", what);
+        return false;
+    }
+    *out = ori_pattern_find_edge_at(p, ori_v2_make(x, y));
+    if (*out == ORI_NULL_INDEX) {
+        studio_fail(res, 400, "%s: no edge passes through (%g, %g)", what, x, y);
+        return false;
+    }
+    return true;
+}
+
+// Resolve the fold's face and crease references against the document's pattern.
+static bool resolve_fold(const ori_pattern *p, fold_request *f, studio_response *out)
+{
+    json_t *fix = f->fix_ref;
+    if (json_is_string(fix)) {
+        f->spec.fix = ori_pattern_find_face_by_name(p, json_string_value(fix));
+        if (f->spec.fix == ORI_NULL_INDEX) {
+            studio_fail(out, 400, "fix: no face named %.64s", json_string_value(fix));
+            return false;
+        }
+    } else if (json_is_integer(fix) && json_integer_value(fix) >= -2147483647LL && json_integer_value(fix) <= 2147483647LL) {
+        f->spec.fix = (int)json_integer_value(fix);
+    } else {
+        studio_fail(out, 400, "fix: a face index or name");
+        return false;
+    }
+    if (!crease_ref(p, f->drive_ref, "drive", &f->spec.drive, out)) return false;
+    f->spec.lock_count = 0;
+    if (f->lock_ref) {
+        if (!json_is_array(f->lock_ref) || json_array_size(f->lock_ref) > STUDIO_MAX_LOCKS) {
+            studio_fail(out, 400, "lock: an array of at most %d edges (indices or \"@x,y\")", STUDIO_MAX_LOCKS);
+            return false;
+        }
+        for (size_t i = 0; i < json_array_size(f->lock_ref); ++i)
+            if (!crease_ref(p, json_array_get(f->lock_ref, i), "lock", &f->spec.locks[f->spec.lock_count++], out)) return false;
+    }
+    return true;
+}
 
 static bool parse_fold(json_t *o, fold_request *f, studio_response *out)
 {
@@ -331,21 +385,26 @@ static bool parse_fold(json_t *o, fold_request *f, studio_response *out)
                                        "linear", NULL};
     memset(f, 0, sizeof *f);
     f->spec.step_deg = 10.0;
-    if (!studio_check_keys(o, keys, out) || !studio_get_int(o, "fix", true, &f->spec.fix, NULL, out) ||
-        !studio_get_int(o, "drive", true, &f->spec.drive, NULL, out) ||
-        !studio_get_number(o, "to", true, &f->spec.to_deg, NULL, out) ||
+    f->fix_ref = json_object_get(o, "fix");
+    f->drive_ref = json_object_get(o, "drive");
+    f->lock_ref = json_object_get(o, "lock");
+    if (!studio_check_keys(o, keys, out)) return false;
+    if (!f->fix_ref || !f->drive_ref) {
+        studio_fail(out, 400, "%s: missing", f->fix_ref ? "drive" : "fix");
+        return false;
+    }
+    if (!studio_get_number(o, "to", true, &f->spec.to_deg, NULL, out) ||
         !studio_get_number(o, "step", false, &f->spec.step_deg, NULL, out) ||
         !studio_get_number(o, "from", false, &f->spec.from_deg, &f->spec.has_from, out) ||
-        !studio_get_int_list(o, "lock", f->spec.locks, STUDIO_MAX_LOCKS, &f->spec.lock_count, out) ||
         !studio_get_int(o, "frame", false, &f->frame, NULL, out) ||
         !studio_get_bool(o, "after_sequence", &f->after_sequence, out) || !parse_solver(o, &f->solver, &f->linear, out))
         return false;
     if (!(fabs(f->spec.to_deg) <= 180.0)) {
-        studio_fail(out, 400, "edges_foldAngle %d: to %g is outside [-180, 180] degrees", f->spec.drive, f->spec.to_deg);
+        studio_fail(out, 400, "to: %g is outside [-180, 180] degrees", f->spec.to_deg);
         return false;
     }
     if (f->spec.has_from && !(fabs(f->spec.from_deg) <= 180.0)) {
-        studio_fail(out, 400, "edges_foldAngle %d: from %g is outside [-180, 180] degrees", f->spec.drive, f->spec.from_deg);
+        studio_fail(out, 400, "from: %g is outside [-180, 180] degrees", f->spec.from_deg);
         return false;
     }
     if (!(f->spec.step_deg > 0.0)) {
@@ -368,9 +427,10 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
     json_t *o = studio_body_object(req, out);
     if (!o) return;
     fold_request f;
-    bool parsed = parse_fold(o, &f, out);
-    json_decref(o);
-    if (!parsed || !studio_job_begin(s, "fold", out)) return;
+    if (!parse_fold(o, &f, out) || !studio_job_begin(s, "fold", out)) {
+        json_decref(o);
+        return;
+    }
     char file[STUDIO_PATH_MAX];
     double *angles = NULL;
     ori_v3 *coords = NULL;
@@ -398,6 +458,8 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
         ok = studio_frame_state(s, f.frame, &angles, &coords, &folded, out);
     }
     pthread_mutex_unlock(&s->lock);
+    ok = ok && resolve_fold(model->pattern, &f, out);
+    json_decref(o);
     ori_error err;
     const ori_mechanism *m = ok ? studio_model_mechanism(model, &err) : NULL;
     if (ok && !m) {

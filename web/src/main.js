@@ -122,6 +122,16 @@ function loadDocument(doc, changed) {
   }
   state.axiom = { picks: [], solutions: null, lines: null };
   state.move = { edge: -1, points: [] };
+  // a document with folded frames: a fold may start from any of them
+  const sf = $('start-frame');
+  sf.replaceChildren();
+  for (let k = 0; k < doc.frames; k++) {
+    const o = document.createElement('option');
+    o.value = k;
+    o.textContent = k === 0 ? 'frame 0 (flat)' : `frame ${k}`;
+    sf.appendChild(o);
+  }
+  $('start-frame-label').hidden = doc.frames < 2;
   renderTree();
   renderSpec();
   if (state.spec.fix >= 0) loadBones();
@@ -285,7 +295,7 @@ async function applyPattern(pattern, label) {
     return;
   }
   await action(async () => {
-    const r = await api.post('apply', { pattern, face: state.selectedFace, assign: $('collection-assign').value });
+    const r = await api.compute(label, () => api.post('apply', { pattern, face: state.selectedFace, assign: $('collection-assign').value }));
     message(`${label} on ${r.applied_to}: new faces ${r.new_faces.map((f) => f.name).join(', ')}`);
     state.selectedFace = -1;
     await refresh();
@@ -385,7 +395,7 @@ async function onClick(hit) {
 
 async function edit(op) {
   await action(async () => {
-    const r = await api.post('edit', { ops: [op] });
+    const r = await api.compute(op.op, () => api.post('edit', { ops: [op] }));
     for (const line of r.log) message(line);
     await refresh();
   });
@@ -501,7 +511,7 @@ async function creaseSolution(k) {
   body.assign = $('collection-assign').value;
   if (state.selectedFace < 0) body.all = true;
   await action(async () => {
-    const r = await api.post('crease', body);
+    const r = await api.compute(`axiom ${n}`, () => api.post('crease', body));
     message(`axiom ${n} solution ${k + 1} on ${r.applied_to}: ${r.faces_split} face(s) split`);
     state.axiom = { picks: [], solutions: null, lines: null };
     $('axiom-solutions').replaceChildren();
@@ -544,6 +554,8 @@ function foldBody() {
   const body = { fix: s.fix, drive: s.drive, to: +$('spec-to').value, step: +$('spec-step').value, lock: [...s.locks].sort((a, b) => a - b) };
   const from = $('spec-from').value.trim();
   if (from !== '') body.from = +from;
+  const frame = +$('start-frame').value;
+  if (frame > 0) body.frame = frame;
   return body;
 }
 
@@ -563,7 +575,7 @@ function clearFold() {
 async function compute() {
   await action(async () => {
     const body = foldBody();
-    if (state.sequence && state.sequence.valid && state.folds.length) body.after_sequence = true;
+    if (state.sequence && state.sequence.valid && state.folds.length && !body.frame) body.after_sequence = true;
     clearFold();
     const r = await api.compute('fold', () => api.post('fold', body));
     state.fold = r;
@@ -860,7 +872,7 @@ async function openFileNow(file) {
     return;
   }
   await action(async () => {
-    await api.postText('open', text, { name });
+    await api.compute('opening ' + name, () => api.postText('open', text, { name }));
     message(`opened ${name}`);
     state.folds = [];
     state.sequence = null;
@@ -916,8 +928,8 @@ function wire() {
     if (!state.folds.length) { message('no folds to download', true); return; }
     download('sequence.seq.json', new Blob([JSON.stringify(sequenceJson(state.folds), null, 2) + '\n'], { type: 'application/json' }));
   };
-  $('undo').onclick = () => action(async () => { await api.post('undo'); await refresh(); });
-  $('redo').onclick = () => action(async () => { await api.post('redo'); await refresh(); });
+  $('undo').onclick = () => action(async () => { await api.compute('undo', () => api.post('undo')); await refresh(); });
+  $('redo').onclick = () => action(async () => { await api.compute('redo', () => api.post('redo')); await refresh(); });
   for (const b of document.querySelectorAll('[data-layout]'))
     b.onclick = () => {
       $('main').className = 'layout-' + b.dataset.layout;
