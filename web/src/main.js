@@ -229,7 +229,7 @@ function renderTree() {
     d.appendChild(name);
     if (face >= 0) {
       const s = document.createElement('small');
-      s.textContent = 'face ' + face;
+      s.textContent = label === 'face ' + face ? '' : 'face ' + face;
       d.appendChild(s);
     }
     li.appendChild(d);
@@ -371,19 +371,27 @@ async function onClick(hit) {
       return axiomClick(hit);
     case 'fix':
       if (hit.kind !== 'face') { message('fix: click a face', true); return; }
+      if (state.fold) clearFold(); // the result was for another specification
       state.spec.fix = hit.index;
       renderSpec();
       renderTree();
       await action(loadBones);
       return;
-    case 'drive':
+    case 'drive': {
       if (!needCrease(hit, 'drive')) return;
+      if (state.fold) clearFold();
       state.spec.drive = hit.index;
       state.spec.locks.delete(hit.index);
+      // the target's sign follows the crease's assignment (valley > 0, mountain < 0)
+      const to = $('spec-to');
+      const a = doc.assignment[hit.index];
+      if ((a === 'M' && +to.value > 0) || (a === 'V' && +to.value < 0)) to.value = String(-to.value);
       renderSpec();
       return;
+    }
     case 'lock':
       if (!needCrease(hit, 'lock')) return;
+      if (state.fold) clearFold();
       if (state.spec.locks.has(hit.index)) state.spec.locks.delete(hit.index);
       else state.spec.locks.add(hit.index);
       if (state.spec.drive === hit.index) state.spec.drive = -1;
