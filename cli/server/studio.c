@@ -231,12 +231,6 @@ static bool has_suffix(const char *s, const char *suffix)
     return true;
 }
 
-static ori_format format_of_name(const char *name)
-{
-    ori_format f = ori_format_from_path(name);
-    return f;
-}
-
 // A new document holding pattern in frame 0.
 static ori_fold *document_of(const ori_pattern *p)
 {
@@ -258,7 +252,7 @@ bool studio_load_text(const char *name, const char *text, size_t size, ori_fold 
 {
     *doc = NULL;
     *model = NULL;
-    ori_format fmt = format_of_name(name);
+    ori_format fmt = ori_format_from_path(name);
     ori_error e;
     ori_pattern *p = NULL;
     if (fmt == ORI_FORMAT_FOLD) {
@@ -299,7 +293,7 @@ bool studio_load_text(const char *name, const char *text, size_t size, ori_fold 
 
 static bool load_file(const char *path, ori_fold **doc, studio_model **model, char *err, size_t err_size)
 {
-    ori_format fmt = format_of_name(path);
+    ori_format fmt = ori_format_from_path(path);
     if (fmt == ORI_FORMAT_UNKNOWN) {
         snprintf(err, err_size, "%s: unsupported file type (FOLD, SVG, OPX, CP or a SEQ.json)", path);
         return false;
@@ -416,7 +410,7 @@ int studio_create(const studio_def *def, studio **out, char *err, size_t err_siz
             copy_string(s->seq_path, sizeof s->seq_path, s->def.path);
             copy_string(s->seq_pattern_ref, sizeof s->seq_pattern_ref, ori_sequence_pattern_path(seq));
             free(pattern);
-            s->format = s->save_format = format_of_name(s->file);
+            s->format = s->save_format = ori_format_from_path(s->file);
             s->from_command_line = true;
         }
     } else {
@@ -424,7 +418,7 @@ int studio_create(const studio_def *def, studio **out, char *err, size_t err_siz
         copy_string(s->file, sizeof s->file, s->def.path);
         studio_utf8_clean(s->file);
         copy_string(s->save_path, sizeof s->save_path, s->def.path);
-        s->format = s->save_format = format_of_name(s->def.path);
+        s->format = s->save_format = ori_format_from_path(s->def.path);
         s->from_command_line = true;
     }
     if (ok && s->model) install_model(s);

@@ -735,6 +735,8 @@ function setupTimeline() {
   $('play').disabled = slider.disabled;
   plot.setRecord(r, state.doc ? state.doc.assignment : []);
   renderFolds();
+  // the folds are kept when the pattern changes; their record is not (its indices may be stale)
+  $('run-seq').hidden = !!r || state.folds.length === 0;
   if (!r) {
     $('t-label').textContent = 'no sequence: specify a fold above and add it';
     $('t-value').value = '0';
@@ -950,6 +952,7 @@ function wire() {
   $('fold-slider').oninput = (ev) => action(() => showFoldFrame(+ev.target.value));
   $('play-fold').onclick = playFold;
   $('add-fold').onclick = addFold;
+  $('run-seq').onclick = () => action(() => runSequence(state.folds, 'sequence'));
   $('play').onclick = togglePlay;
   $('t-slider').oninput = (ev) => showTime(+ev.target.value / sliderSteps());
   $('t-value').onchange = (ev) => {
