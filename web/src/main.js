@@ -105,6 +105,7 @@ function loadDocument(doc, changed) {
   state.doc = doc;
   v2.setDocument(doc, old && old.box.size === doc.box.size);
   v3.setDocument(doc);
+  $('edges-toggle').checked = v3.linesVisible !== false;
   state.shown = 'flat';
   $('state3d').textContent = doc.is3d ? 'frame 0 (3D)' : 'flat sheet';
   // keep the choices that still name something

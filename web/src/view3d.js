@@ -34,6 +34,8 @@ function sheetMaterial() {
 }
 
 const CREASE_COLORS = { M: 0xd7263d, V: 0x1b6ef3, B: 0x22262b, F: 0x9a9a9a, U: 0x6f6f6f, C: 0x000000, J: 0xcccccc };
+// Crease lines are drawn in 3D by default for patterns up to this many edges.
+const CREASE_LINES_AUTO_MAX = 5000;
 // Roll/pitch/yaw buttons turn the model by this much (radians).
 const ROTATE_STEP = Math.PI / 12;
 
@@ -103,6 +105,9 @@ export class View3D {
     lineGeom.setAttribute('position', this.linePos);
     lineGeom.setAttribute('color', new THREE.BufferAttribute(col, 3));
     this.lines = new THREE.LineSegments(lineGeom, this.lineMaterial);
+    // Thousands of crease lines cost a software renderer more than the sheet itself; the flat
+    // shading shows the folds anyway. Shown by default up to CREASE_LINES_AUTO_MAX edges.
+    if (this.linesChosen === undefined) this.linesVisible = E <= CREASE_LINES_AUTO_MAX;
     this.lines.visible = this.linesVisible !== false;
     this.model.add(this.lines);
     this.setPositions(Float64Array.from(doc.vertices.flat()));
@@ -147,6 +152,7 @@ export class View3D {
   }
 
   setCreasesVisible(on) {
+    this.linesChosen = true;
     this.linesVisible = on;
     if (this.lines) this.lines.visible = on;
     this.render();
