@@ -65,10 +65,11 @@ static double elements_of(const ori_mechanism *m)
            (double)ori_mechanism_face_count(m);
 }
 
-// Output frames of a fold driven over range_deg at step_deg.
+// Output frames of a fold driven over range_deg at step_deg: the start, one per step, the last
+// on the target (a last step shorter than ORI_KIN_GRID_MERGE of a step merges into it).
 static double frames_of(double range_deg, double step_deg)
 {
-    return ceil(fabs(range_deg) / step_deg - 1e-9) + 1.0;
+    return ceil(fabs(range_deg) / step_deg - ORI_KIN_GRID_MERGE) + 1.0;
 }
 
 // The world pose of the fixed face at the start: identity for a flat start, the rigid fit of
