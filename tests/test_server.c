@@ -1013,6 +1013,31 @@ Test(server, http_refuses_foreign_hosts_and_missing_tokens)
     unserve(&x);
 }
 
+// Listening on every address (--host 0.0.0.0): any numeric Host with the port is this server,
+// a name is not (DNS rebinding), and the token is still required.
+Test(server, http_wildcard_host)
+{
+    studio *s = open_studio(OPEN_CORNER);
+    char err[256];
+    studio_http *h = studio_http_start(s, "0.0.0.0", 0, TOKEN, err, sizeof err);
+    cr_assert_not_null(h, "%s", err);
+    int p = studio_http_port(h);
+    const char *api = "GET /api/session HTTP/1.1\r\nHost: %s\r\n%sConnection: close\r\n\r\n";
+    char host[64];
+    snprintf(host, sizeof host, "192.0.2.7:%d", p);
+    cr_assert_eq(status_of(p, api, host, "X-Orikin-Token: " TOKEN "\r\n"), 200);
+    cr_assert_eq(status_of(p, api, host, ""), 401);
+    snprintf(host, sizeof host, "[2001:db8::1]:%d", p);
+    cr_assert_eq(status_of(p, api, host, "X-Orikin-Token: " TOKEN "\r\n"), 200);
+    snprintf(host, sizeof host, "studio.example:%d", p);
+    cr_assert_eq(status_of(p, api, host, "X-Orikin-Token: " TOKEN "\r\n"), 403);
+    studio_http_stop(h);
+    studio_destroy(s);
+    // a name is not an address to listen on
+    cr_assert_null(studio_http_start(NULL, "localhost", 0, TOKEN, err, sizeof err));
+    cr_assert_not_null(strstr(err, "numeric address"));
+}
+
 Test(server, http_serves_only_embedded_assets)
 {
     served x = serve(OPEN_CORNER);

@@ -80,5 +80,28 @@ await run('perf', seq, async ({ page, url }) => {
   console.log(`scrubbing in headless Chromium: ${(r.states / r.dt).toFixed(1)} states/s shown (${(r.drawn / r.dt).toFixed(1)} frames/s ` +
     `drawn, ${(r.moves / r.dt).toFixed(0)} slider moves/s, mean request ${r.latency.toFixed(1)} ms)`);
   assert(r.states > 0, 'states were shown while scrubbing');
+
+  // a computation shows what runs while it runs (after a second; here at once)
+  await page.evaluate(() => {
+    window.studio.setProgressDelay(0);
+    window.progressSeen = [];
+    new MutationObserver(() => {
+      const p = document.getElementById('progress');
+      if (!p.hidden) window.progressSeen.push(document.getElementById('progress-text').textContent);
+    }).observe(document.getElementById('progress'), { attributes: true, childList: true, subtree: true });
+  });
+  await page.click('[data-tool="fix"]');
+  const [fx, fy] = await page.evaluate((f) => window.studio.faceClient(f), fix);
+  await page.mouse.click(fx, fy);
+  await page.click('[data-tool="drive"]');
+  const [dx, dy] = await page.evaluate((e) => window.studio.edgeClient(e), drive);
+  await page.mouse.click(dx, dy);
+  await page.fill('#spec-step', '30');
+  await page.click('#compute');
+  await idle(page);
+  const seen = await page.evaluate(() => window.progressSeen);
+  assert(seen.some((t) => t.startsWith('fold')), 'the progress box named the running fold: ' + JSON.stringify(seen));
+  assert(await page.$eval('#progress', (e) => e.hidden), 'and went away');
+  assert(await page.$eval('#verdict .valid', (e) => e.dataset.verdict) === 'valid', 'the Miura-ori folds');
 }, { startMs: 240000 });
 fs.rmSync(tmp, { recursive: true, force: true });

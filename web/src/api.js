@@ -35,6 +35,7 @@ export class Api {
   constructor(token, progress) {
     this.token = token;
     this.progress = progress; // {show(text), hide()}
+    this.progressDelay = 1000; // show progress for anything over a second
     this.busy = 0;    // long computations running (progress shown)
     this.pending = 0; // requests in flight
   }
@@ -96,7 +97,7 @@ export class Api {
       } catch (e) { /* the next poll will tell */ }
       if (!stopped) timer = setTimeout(poll, 250);
     };
-    timer = setTimeout(poll, 1000);
+    timer = setTimeout(poll, this.progressDelay);
     try {
       return await run();
     } finally {

@@ -324,6 +324,9 @@ function setTool(tool) {
     axiom: 'click the inputs of the axiom: vertices for points, creases for lines',
   };
   if (hints[tool]) $('state3d').dataset.hint = hints[tool];
+  // vertices are picked only where they are inputs (and for inspection): elsewhere a click near a
+  // vertex of a dense pattern still reaches the face or crease under it
+  v2.pickVertices = tool === 'select' || tool === 'axiom' || tool === 'move';
   v2.svg.style.cursor = tool === 'select' ? 'default' : 'crosshair';
 }
 
@@ -1060,6 +1063,7 @@ window.studio = {
   },
   vertexClient: (v) => v2.clientOf(...state.doc.flat[v]),
   renderMs: (n = 10) => v3.timeRender(n),
+  setProgressDelay: (ms) => { api.progressDelay = ms; },
   fold: () => state.fold,
   sequence: () => state.sequence,
   spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, locks: [...state.spec.locks] }),

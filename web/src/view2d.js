@@ -33,6 +33,7 @@ export class View2D {
     this.layers.halos.setAttribute('pointer-events', 'none');
     this.layers.labels.setAttribute('pointer-events', 'none');
     this.hover = null;
+    this.pickVertices = true; // false while a tool wants only faces and creases
     this.faceClass = new Map(); // face -> Set of classes
     this.markScale = [];
     this.installPointer();
@@ -152,7 +153,7 @@ export class View2D {
   // What is under the pointer: a vertex (within a few pixels), else a crease, else a face.
   pick(ev) {
     const [x, y] = this.toSheet(ev.clientX, ev.clientY);
-    const v = this.nearestVertex(x, y);
+    const v = this.pickVertices ? this.nearestVertex(x, y) : -1;
     if (v >= 0) return { kind: 'vertex', index: v, point: [x, y] };
     const t = ev.target;
     if (t && t.dataset && t.dataset.solution !== undefined) return { kind: 'solution', index: +t.dataset.solution, point: [x, y] };
