@@ -21,11 +21,9 @@ void studio_api_document(studio *s, const studio_request *req, studio_response *
     (void)req;
     pthread_mutex_lock(&s->lock);
     char *text = ori_fold_to_string(s->doc);
-    long version = s->version;
     pthread_mutex_unlock(&s->lock);
     studio_respond_text(out, 200, "application/json", text, strlen(text));
     ori_buffer_free(text);
-    (void)version;
 }
 
 // The current model (a reference) and file label, read under the lock.
