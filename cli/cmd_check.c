@@ -5,13 +5,7 @@
 #include <string.h>
 
 #include "cli.h"
-
-
-static json_t *count_json(ori_mv_count c)
-{
-    if (c.overflow || c.count > (uint64_t)INT64_MAX) return json_null();
-    return json_integer((json_int_t)c.count);
-}
+#include "report.h"
 
 static const char *yes_no(bool b) { return b ? "yes" : "no"; }
 
@@ -21,50 +15,26 @@ static void print_count(ori_mv_count c, int width)
     else printf("%-*llu", width, (unsigned long long)c.count);
 }
 
-static json_t *vertex_json(const ori_pattern *p, const ori_flat_report *rep, int i, int *edges, double *sectors)
-{
-    ori_vertex_report r = ori_flat_report_vertex(rep, i);
-    int n = ori_flat_report_vertex_creases(rep, i, edges, sectors, r.degree);
-    json_t *o = json_object();
-    json_object_set_new(o, "vertex", json_integer(r.vertex));
-    json_object_set_new(o, "degree", json_integer(r.degree));
-    json_t *cr = json_array(), *sd = json_array();
-    char *letters = malloc((size_t)n + 1);
-    for (int k = 0; k < n; ++k) {
-        json_array_append_new(cr, json_integer(edges[k]));
-        json_array_append_new(sd, json_real(ori_rad_to_deg_output(sectors[k])));
-        letters[k] = ori_assignment_to_char(ori_pattern_edge(p, edges[k]).assignment);
-    }
-    letters[n] = '\0';
-    json_object_set_new(o, "creases", cr);
-    json_object_set_new(o, "assignment", json_string(letters));
-    free(letters);
-    json_object_set_new(o, "sectors_deg", sd);
-    json_object_set_new(o, "sector_sum_deg", json_real(ori_rad_to_deg_output(r.sector_sum_rad)));
-    json_object_set_new(o, "kawasaki", json_boolean(r.kawasaki));
-    json_object_set_new(o, "maekawa", r.maekawa == ORI_FLAT_UNDETERMINED ? json_null() : json_boolean(r.maekawa == ORI_FLAT_YES));
-    json_object_set_new(o, "big_little_big", json_boolean(r.big_little_big));
-    json_object_set_new(o, "mv_count", count_json(r.mv_count));
-    if (r.mv_count.overflow) json_object_set_new(o, "mv_count_overflow", json_true());
-    json_object_set_new(o, "assignment_valid", json_boolean(r.assignment_valid));
-    if (r.unassigned > 0) {
-        json_object_set_new(o, "unassigned", json_integer(r.unassigned));
-        json_object_set_new(o, "unassigned_completions", count_json(r.completions));
-    }
-    json_object_set_new(o, "cone", json_boolean(r.cone));
-    json_object_set_new(o, "flat_foldable", json_boolean(r.flat_foldable));
-    return o;
-}
-
 static int run(int argc, char **argv)
 {
     const char *path = NULL;
     int frame = 0;
-    bool json = false, weld = false;
+    bool json = false, weld = false, has_frame = false, has_tol = false;
+    double tol_deg = 0.0;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--json") == 0) json = true;
+        else if (strcmp(argv[i], "--tolerance") == 0) {
+            if (has_tol) return cli_usage("check", "--tolerance given twice");
+            has_tol = true;
+            const char *v = cli_option_value("check", argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &tol_deg) || tol_deg < 0.0 || tol_deg > 1.0)
+                return cli_usage("check", "--tolerance needs an angle in degrees in [0, 1], got '%s'", v);
+        }
         else if (strcmp(argv[i], "--weld") == 0) weld = true;
         else if (strcmp(argv[i], "--frame") == 0) {
+            if (has_frame) return cli_usage("check", "--frame given twice");
+            has_frame = true;
             if (cli_option_frame("check", argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') return cli_usage("check", "unknown option %s", argv[i]);
         else if (!path) path = argv[i];
@@ -76,7 +46,10 @@ static int run(int argc, char **argv)
     int rc = cli_load_pattern("check", path, frame, weld, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
 
-    ori_flat_report *rep = ori_flat_check_pattern(p, NULL);
+    cli_check chk;
+    cli_check_run(p, path, has_tol, tol_deg, &chk);
+    const ori_flat_report *rep = chk.report;
+    const char *hint = chk.hint;
     int nv = ori_flat_report_vertex_count(rep);
     int max_degree = 1;
     for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
@@ -89,27 +62,7 @@ static int run(int argc, char **argv)
     int nviol = ori_flat_report_violation_count(rep);
 
     if (json) {
-        json_t *out = json_object();
-        json_object_set_new(out, "file", json_string(path));
-        json_object_set_new(out, "frame", json_integer(frame));
-        json_object_set_new(out, "locally_flat_foldable", json_boolean(ok));
-        json_object_set_new(out, "interior_vertices", json_integer(ori_flat_report_interior_count(rep)));
-        json_object_set_new(out, "failed_vertices", json_integer(ori_flat_report_failed_count(rep)));
-        json_t *vs = json_array();
-        for (int i = 0; i < nv; ++i) json_array_append_new(vs, vertex_json(p, rep, i, edges, sectors));
-        json_object_set_new(out, "vertices", vs);
-        json_t *viol = json_array();
-        for (int i = 0; i < nviol; ++i) {
-            ori_flat_violation x = ori_flat_report_violation(rep, i);
-            json_t *o = json_object();
-            json_object_set_new(o, "vertex", json_integer(x.vertex));
-            json_object_set_new(o, "rule", json_string(ori_flat_rule_name(x.rule)));
-            if (x.edge != ORI_NULL_INDEX) json_object_set_new(o, "edge", json_integer(x.edge));
-            json_object_set_new(o, "detail", json_string(x.detail));
-            json_array_append_new(viol, o);
-        }
-        json_object_set_new(out, "violations", viol);
-        cli_print_json(out);
+        cli_print_json(cli_check_json(&chk, path, frame, p));
     } else {
         printf("file     %s (frame %d, %s)\n", path, frame,
                ori_pattern_is_folded_form(p) ? "folded form" : "crease pattern");
@@ -122,7 +75,7 @@ static int run(int argc, char **argv)
                 const char *m = r.maekawa == ORI_FLAT_UNDETERMINED ? "n/a" : yes_no(r.maekawa == ORI_FLAT_YES);
                 printf("%-7d %-6d %-4s %-4s %-4s ", r.vertex, r.degree, yes_no(r.kawasaki), m, yes_no(r.big_little_big));
                 print_count(r.mv_count, 8);
-                printf(" %-6s", r.flat_foldable ? "yes" : "NO");
+                printf(" %-6s", r.within_tolerance ? "~yes" : r.flat_foldable ? "yes" : "NO");
                 for (int k = 0; k < n; ++k) printf(" %.6g", ori_rad_to_deg_output(sectors[k]));
                 printf("\n");
             }
@@ -134,7 +87,18 @@ static int run(int argc, char **argv)
             printf("vertex %d: %s: %s\n", x.vertex, ori_flat_rule_name(x.rule), x.detail);
         }
         int interior = ori_flat_report_interior_count(rep), failed = ori_flat_report_failed_count(rep);
+        int within = ori_flat_report_within_count(rep);
+        for (int i = 0; i < nv; ++i) {
+            ori_vertex_report r = ori_flat_report_vertex(rep, i);
+            if (r.within_tolerance)
+                printf("vertex %d: within tolerance: flat-foldable once its sectors move by %.3g deg\n", r.vertex,
+                       ori_rad_to_deg_output(r.deviation_rad));
+        }
         if (interior == 0) printf("verdict: no interior vertices; nothing to fold locally\n");
+        else if (ok && within > 0)
+            printf("verdict: locally flat-foldable within %g deg (%d of %d interior vertices within tolerance, "
+                   "largest deviation %.3g deg)\n",
+                   tol_deg, within, interior, ori_rad_to_deg_output(ori_flat_report_max_deviation(rep)));
         else if (ok) printf("verdict: locally flat-foldable (%d interior vert%s)\n", interior, interior == 1 ? "ex" : "ices");
         else {
             printf("verdict: NOT locally flat-foldable: %d of %d interior vert%s fail%s (", failed, interior,
@@ -147,10 +111,11 @@ static int run(int argc, char **argv)
                 }
             printf(")\n");
         }
+        if (hint[0]) printf("note: %s\n", hint);
     }
     free(edges);
     free(sectors);
-    ori_flat_report_destroy(rep);
+    cli_check_free(&chk);
     ori_pattern_destroy(p);
     ori_fold_destroy(doc);
     return ok ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
@@ -159,7 +124,7 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_check = {
     "check",
     "local flat-foldability of each interior vertex (Kawasaki, Maekawa, BLB, C)",
-    "usage: orikin check FILE [--frame N] [--json] [--weld]\n"
+    "usage: orikin check FILE [--tolerance DEG] [--frame N] [--json] [--weld]\n"
     "\n"
     "Check every interior vertex of a FOLD crease pattern (or folded form) for local flat-\n"
     "foldability with its mountain-valley assignment: Kawasaki (alternating sector sum 0, even\n"
@@ -170,13 +135,23 @@ const cli_command cli_cmd_check = {
     "Prints a table and every broken rule, then a verdict. Exit 0 when every interior vertex\n"
     "is locally flat-foldable, 1 when not, 3 for an invalid file.\n"
     "\n"
+    "Drawings from other tools carry rounded coordinates. With --tolerance DEG a vertex that\n"
+    "misses Kawasaki, the 360 degree sum or an equality of sectors by at most DEG is checked as\n"
+    "the exact vertex it means (its sectors snapped, least squares) and reported \"within\n"
+    "tolerance\" with its deviation. Without it, check says when every failure is below 0.01\n"
+    "degree and suggests --tolerance or 'orikin regularize'.\n"
+    "\n"
     "options:\n"
+    "  --tolerance DEG  accept vertices within DEG degrees of an exact flat-foldable one\n"
+    "              (0 to 1; default 0: exact up to rounding)\n"
     "  --frame N   frame to check (0 = top level, k = file_frames[k-1]); default 0\n"
     "  --json      print {\"file\", \"frame\", \"locally_flat_foldable\", \"interior_vertices\",\n"
     "              \"failed_vertices\", \"vertices\": [{\"vertex\", \"degree\", \"creases\",\n"
     "              \"assignment\", \"sectors_deg\", \"sector_sum_deg\", \"kawasaki\", \"maekawa\",\n"
     "              \"big_little_big\", \"mv_count\", \"assignment_valid\", \"cone\",\n"
-    "              \"flat_foldable\"}], \"violations\": [{\"vertex\", \"rule\", \"edge\", \"detail\"}]}\n"
+    "              \"flat_foldable\", \"within_tolerance\", \"deviation_deg\"}], \"violations\":\n"
+    "              [{\"vertex\", \"rule\", \"edge\", \"detail\"}], \"tolerance_deg\",\n"
+    "              \"within_tolerance_vertices\", \"max_deviation_deg\", \"rounding_failures\", \"hint\"}\n"
     "              (see docs/verification.md)\n"
     "  --weld      merge vertices closer than the length tolerance (renumbers vertices)\n"
     "\n"

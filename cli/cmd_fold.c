@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "collide_args.h"
 #include "kin_args.h"
 
 static json_t *v3_json(ori_v3 v)
@@ -64,7 +65,7 @@ static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, si
     return buf;
 }
 
-static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo)
+static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
 {
     const ori_mechanism *m = k->mech;
     int E = ori_mechanism_edge_count(m);
@@ -72,10 +73,13 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     ori_motion_stats st = ori_motion_stats_of(mo);
     json_t *out = json_object();
     json_object_set_new(out, "file", json_string(a->path));
-    json_object_set_new(out, "valid", json_boolean(v == ORI_MOTION_VALID));
-    json_object_set_new(out, "verdict", json_string(ori_motion_verdict_name(v)));
-    const char *why = ori_motion_reason(mo);
+    char hit[256];
+    cli_collision_describe(col, false, hit, sizeof hit);
+    json_object_set_new(out, "valid", json_boolean(v == ORI_MOTION_VALID && !cli_collides(col)));
+    json_object_set_new(out, "verdict", json_string(cli_collides(col) ? "collision" : ori_motion_verdict_name(v)));
+    const char *why = cli_collides(col) ? hit : ori_motion_reason(mo);
     json_object_set_new(out, "reason", why ? json_string(why) : json_null());
+    json_object_set_new(out, "collision", cli_collision_json(col, false));
     char hint[512];
     const char *h = rounding_hint(k, mo, hint, sizeof hint);
     json_object_set_new(out, "hint", h ? json_string(h) : json_null());
@@ -113,7 +117,7 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     }
     json_object_set_new(out, "offending_edges", off);
     json_t *frames = json_array();
-    for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
+    for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
         json_t *fr = json_object();
         json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, f))));
         const double *ang = ori_motion_frame_angles(mo, f);
@@ -141,10 +145,10 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     cli_print_json(out);
 }
 
-static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo)
+static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
 {
     const ori_mechanism *m = k->mech;
-    int E = ori_mechanism_edge_count(m), F = ori_motion_frame_count(mo);
+    int E = ori_mechanism_edge_count(m), F = cli_collide_frames(col, ori_motion_frame_count(mo));
     ori_motion_stats st = ori_motion_stats_of(mo);
     printf("%s: fold crease %d to %g deg (step %g deg), face %d fixed", a->path, a->drive, a->to_deg, a->step_deg, a->fix);
     if (a->lock_count) {
@@ -193,8 +197,11 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
         if (moving > nc) printf("(%d more moving creases: see --json)\n", moving - nc);
     }
     ori_motion_verdict v = ori_motion_verdict_of(mo);
-    printf("verdict: %s", ori_motion_verdict_name(v));
-    if (ori_motion_reason(mo)) printf(": %s", ori_motion_reason(mo));
+    char hit[256];
+    cli_collision_describe(col, false, hit, sizeof hit);
+    printf("verdict: %s", cli_collides(col) ? "collision" : ori_motion_verdict_name(v));
+    if (cli_collides(col)) printf(": %s (the motion stops at the last clean step)", hit);
+    else if (ori_motion_reason(mo)) printf(": %s", ori_motion_reason(mo));
     printf("\n");
     char hint[512];
     if (rounding_hint(k, mo, hint, sizeof hint)) printf("note: %s\n", hint);
@@ -202,12 +209,12 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
 }
 
 // Every output frame as a folded form inheriting from frame 0.
-static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo)
+static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
 {
     const ori_mechanism *m = k->mech;
     int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
-    for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
+    for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
         ori_motion_frame_vertices(mo, f, pos);
         char title[128];
         snprintf(title, sizeof title, "fold crease %d: %g deg", a->drive, ori_rad_to_deg_output(ori_motion_frame_drive(mo, f)));
@@ -221,8 +228,11 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
 
 static int run(int argc, char **argv)
 {
+    cli_collide_opts co;
+    int rc = cli_collide_strip("fold", &argc, argv, &co);
+    if (rc != CLI_EXIT_OK) return rc;
     cli_fold_args a;
-    int rc = cli_fold_parse("fold", argc, argv, false, &a);
+    rc = cli_fold_parse("fold", argc, argv, false, &a);
     if (rc != CLI_EXIT_OK) return rc;
     cli_kin k;
     rc = cli_kin_load("fold", a.path, a.frame, &k);
@@ -242,12 +252,19 @@ static int run(int argc, char **argv)
         cli_kin_free(&k);
         return rc;
     }
-    if (a.json) print_json(&a, &k, mo);
-    else print_text(&a, &k, mo);
+    cli_collision col;
+    rc = cli_collide_motion("fold", a.path, &co, k.flat, k.mech, &def, mo, &col);
+    if (rc != CLI_EXIT_OK) {
+        ori_motion_destroy(mo);
+        cli_kin_free(&k);
+        return rc;
+    }
+    if (a.json) print_json(&a, &k, mo, &col);
+    else print_text(&a, &k, mo, &col);
     bool valid = ori_motion_verdict_of(mo) == ORI_MOTION_VALID;
-    rc = valid ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
+    rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
     if (a.out && valid) {
-        int wr = write_frames(&a, &k, mo);
+        int wr = write_frames(&a, &k, mo, &col);
         if (wr != CLI_EXIT_OK) rc = wr;
     }
     ori_motion_destroy(mo);
@@ -259,7 +276,8 @@ const cli_command cli_cmd_fold = {
     "fold",
     "fold rigidly: fix a face, lock creases, drive a crease; motion, branch and validity",
     "usage: orikin fold FILE --fix FACE --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
-    "                   [--lock E1,E2,...] [--frame N] [--solver S] [--linear L] [--json] [-o OUT]\n"
+    "                   [--lock E1,E2,...] [--frame N] [--solver S] [--linear L]\n"
+    "                   [--no-collisions] [--clearance D] [--json] [-o OUT]\n"
     "\n"
     "Treat the crease pattern as a mechanism (faces = rigid bodies, creases = revolute joints),\n"
     "hold face FACE fixed and the locked creases at their current angle, and turn crease EDGE\n"
@@ -270,7 +288,9 @@ const cli_command cli_cmd_fold = {
     "and the angle it would reach are named), and not rigidly foldable when no motion exists.\n"
     "A single vertex with four moving creases is solved in closed form and split into the\n"
     "thesis' Frame A, Frame B and surrounding; other patterns by numeric continuation.\n"
-    "Exit 0 valid, 1 invalid / not foldable / underdetermined / blocked, 3 bad input.\n"
+    "Every step is checked for self-collision (orikin collide); a motion that collides stops\n"
+    "at the last clean step, with the first contact located to 1e-6 deg (verdict collision).\n"
+    "Exit 0 valid, 1 invalid / not foldable / underdetermined / blocked / collision, 3 bad input.\n"
     "\n"
     "options:\n"
     "  --fix FACE      face held fixed (FOLD index)\n"
@@ -282,12 +302,15 @@ const cli_command cli_cmd_fold = {
     "  --frame N       start from the fold angles (and 3D pose) of frame N; default 0\n"
     "  --solver S      auto (default), analytic (single vertex only) or numeric\n"
     "  --linear L      numeric solver's linear algebra: auto (default), dense, sparse or sweep\n"
-    "  --json          print {valid, verdict, reason, rigidly_foldable, dof, grubler, solver,\n"
+    "  --no-collisions do not check the motion for self-collision\n"
+    "  --clearance D   faces sharing no vertex closer than D collide too (a length >= 0)\n"
+    "  --json          print {valid, verdict, reason, collision: {step, drive_deg, faces, point}\n"
+    "                  | null, rigidly_foldable, dof, grubler, solver,\n"
     "                  frame_a, frame_b, surrounding, split, offending_edges, frames:\n"
     "                  [{drive_deg, fold_angles_deg, residual, other_branch_deg, end_effector}],\n"
     "                  stats}\n"
     "  -o OUT.fold     write FILE with every step appended as a folded-form frame (only when\n"
-    "                  the fold is valid)\n"
+    "                  the fold is valid; up to the last clean step when it collides)\n"
     "\n"
     "example: orikin fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90\n",
     run,

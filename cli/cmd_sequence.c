@@ -5,6 +5,7 @@
 
 #include <orikin/sequence.h>
 
+#include "collide_args.h"
 #include "kin_args.h"
 
 #define MAX_COLUMNS 10
@@ -65,14 +66,20 @@ static json_t *fold_json(const ori_sequence_fold *f, int i)
     return o;
 }
 
-static void print_record_json(const seq_args *a, const char *pattern, const ori_sequence *s, const ori_record *r, int E)
+static void print_record_json(const seq_args *a, const char *pattern, const ori_sequence *s, const ori_record *r, int E,
+                              const cli_collision *col)
 {
     json_t *o = json_object();
+    char hit[256];
+    cli_collision_describe(col, true, hit, sizeof hit);
     json_object_set_new(o, "sequence", json_string(a->path));
     json_object_set_new(o, "pattern", json_string(pattern));
-    json_object_set_new(o, "valid", json_boolean(ori_record_verdict(r) == ORI_MOTION_VALID));
-    json_object_set_new(o, "verdict", json_string(ori_motion_verdict_name(ori_record_verdict(r))));
-    json_object_set_new(o, "reason", ori_record_reason(r) ? json_string(ori_record_reason(r)) : json_null());
+    const char *why = cli_collides(col) ? hit : ori_record_reason(r);
+    json_object_set_new(o, "valid", json_boolean(ori_record_verdict(r) == ORI_MOTION_VALID && !cli_collides(col)));
+    json_object_set_new(o, "verdict",
+                        json_string(cli_collides(col) ? "collision" : ori_motion_verdict_name(ori_record_verdict(r))));
+    json_object_set_new(o, "reason", why ? json_string(why) : json_null());
+    json_object_set_new(o, "collision", cli_collision_json(col, true));
     int failed = ori_record_failed_fold(r);
     json_object_set_new(o, "failed_fold", failed >= 0 ? json_integer(failed + 1) : json_null());
     json_object_set_new(o, "duration", json_integer(ori_record_completed_folds(r)));
@@ -83,7 +90,7 @@ static void print_record_json(const seq_args *a, const char *pattern, const ori_
     }
     json_object_set_new(o, "folds", folds);
     json_t *frames = json_array();
-    for (int f = 0; f < ori_record_frame_count(r); ++f) {
+    for (int f = 0; f < cli_collide_frames(col, ori_record_frame_count(r)); ++f) {
         json_t *fr = json_object();
         json_object_set_new(fr, "t", json_real(ori_record_frame_time(r, f)));
         json_object_set_new(fr, "fold", json_integer(ori_record_frame_fold(r, f) + 1));
@@ -96,7 +103,8 @@ static void print_record_json(const seq_args *a, const char *pattern, const ori_
     cli_print_json(o);
 }
 
-static void print_record_text(const char *pattern, const ori_sequence *s, const ori_record *r, int E)
+static void print_record_text(const char *pattern, const ori_sequence *s, const ori_record *r, int E,
+                              const cli_collision *col)
 {
     int cols[MAX_COLUMNS];
     int moving = moving_creases(r, E, cols, MAX_COLUMNS);
@@ -115,14 +123,18 @@ static void print_record_text(const char *pattern, const ori_sequence *s, const 
     printf("\n%7s %5s", "t", "fold");
     for (int i = 0; i < nc; ++i) printf("  crease %-4d", cols[i]);
     printf("  residual\n");
-    for (int f = 0; f < ori_record_frame_count(r); ++f) {
+    for (int f = 0; f < cli_collide_frames(col, ori_record_frame_count(r)); ++f) {
         printf("%7.3f %5d", ori_record_frame_time(r, f), ori_record_frame_fold(r, f) + 1);
         for (int i = 0; i < nc; ++i) printf(" %12.6f", ori_rad_to_deg_output(ori_record_frame_angles(r, f)[cols[i]]));
         printf("  %.1e\n", ori_record_frame_residual(r, f));
     }
     if (moving > nc) printf("(%d more moving creases: see --json)\n", moving - nc);
     ori_motion_verdict v = ori_record_verdict(r);
-    if (v == ORI_MOTION_VALID)
+    char hit[256];
+    cli_collision_describe(col, true, hit, sizeof hit);
+    if (cli_collides(col))
+        printf("verdict: collision: %s, t = %.9g (the motion stops at the last clean step)\n", hit, col->ev.time);
+    else if (v == ORI_MOTION_VALID)
         printf("verdict: valid: %d of %d folds completed (angles in degrees, t = sequence time)\n",
                ori_record_completed_folds(r), ori_record_fold_count(r));
     else
@@ -179,10 +191,11 @@ static int print_at(const seq_args *a, const cli_kin *k, const ori_record *r)
     return rc;
 }
 
-static int write_record(const seq_args *a, const cli_kin *k, const ori_sequence *s, const ori_record *r)
+static int write_record(const seq_args *a, const cli_kin *k, const ori_sequence *s, const ori_record *r,
+                        const cli_collision *col)
 {
     int E = ori_mechanism_edge_count(k->mech), V = ori_mechanism_vertex_count(k->mech);
-    for (int f = 0; f < ori_record_frame_count(r); ++f) {
+    for (int f = 0; f < cli_collide_frames(col, ori_record_frame_count(r)); ++f) {
         char title[128];
         snprintf(title, sizeof title, "t = %.4g: fold %d, crease %d at %g deg", ori_record_frame_time(r, f),
                  ori_record_frame_fold(r, f) + 1, ori_sequence_fold_at(s, ori_record_frame_fold(r, f)).driven_edge,
@@ -203,6 +216,8 @@ static int write_record(const seq_args *a, const cli_kin *k, const ori_sequence 
 static int run(int argc, char **argv)
 {
     seq_args a = {0};
+    cli_collide_opts co;
+    if (cli_collide_strip("sequence", &argc, argv, &co) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--json") == 0) a.json = true;
         else if (strcmp(argv[i], "--at") == 0) {
@@ -240,19 +255,31 @@ static int run(int argc, char **argv)
     ori_record *r = NULL;
     if (rc == CLI_EXIT_OK && ori_sequence_run(s, k.mech, k.angles, pose, &r, &err) != ORI_OK)
         rc = cli_input_error("sequence", a.path, &err);
+    cli_collision col;
+    memset(&col, 0, sizeof col);
+    if (rc == CLI_EXIT_OK) rc = cli_collide_record("sequence", a.path, &co, k.flat, r, &col);
     if (rc == CLI_EXIT_OK) {
         int E = ori_mechanism_edge_count(k.mech);
         bool valid = ori_record_verdict(r) == ORI_MOTION_VALID;
         if (a.has_at) {
-            rc = valid ? print_at(&a, &k, r) : CLI_EXIT_NEGATIVE;
+            // an instant before the first contact is still a clean state of the sequence
+            bool clean = !cli_collides(&col) || a.at < col.ev.time;
+            rc = valid && clean ? print_at(&a, &k, r) : CLI_EXIT_NEGATIVE;
+            char hit[256];
+            cli_collision_describe(&col, true, hit, sizeof hit);
             if (!valid)
                 fprintf(stderr, "orikin sequence: %s: fold %d is %s: %s\n", a.path, ori_record_failed_fold(r) + 1,
                         ori_motion_verdict_name(ori_record_verdict(r)), ori_record_reason(r));
+            else if (!clean)
+                fprintf(stderr, "orikin sequence: %s: collision at t = %.9g: %s\n", a.path, col.ev.time, hit);
         } else {
-            if (a.json) print_record_json(&a, pattern, s, r, E);
-            else print_record_text(pattern, s, r, E);
-            rc = valid ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
-            if (valid && a.out) rc = write_record(&a, &k, s, r);
+            if (a.json) print_record_json(&a, pattern, s, r, E, &col);
+            else print_record_text(pattern, s, r, E, &col);
+            rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
+            if (valid && a.out) {
+                int wr = write_record(&a, &k, s, r, &col);
+                if (wr != CLI_EXIT_OK) rc = wr;
+            }
         }
     }
     ori_record_destroy(r);
@@ -265,7 +292,8 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_sequence = {
     "sequence",
     "the folding manager: run a fold sequence, record it, restore any instant",
-    "usage: orikin sequence SEQ.json [--at T] [--json] [-o OUT.fold]\n"
+    "usage: orikin sequence SEQ.json [--at T] [--no-collisions] [--clearance D] [--json]\n"
+    "                       [-o OUT.fold]\n"
     "\n"
     "Run the folds of SEQ.json one after the other: each fold fixes a face, locks creases at\n"
     "their current angle and drives one crease, starting from the geometry the previous fold\n"
@@ -273,6 +301,8 @@ const cli_command cli_cmd_sequence = {
     "and printed as a table of crease angles over the sequence time t: t = k + s is the\n"
     "fraction s of fold k+1 (t = 1.5 is halfway through fold 2). --at T restores the instant T\n"
     "exactly (solved, not interpolated). Stops at the first fold that is not valid (exit 1).\n"
+    "Every step is checked for self-collision (orikin collide): a sequence that collides stops\n"
+    "at the last clean step, with the first contact located to 1e-6 deg (verdict collision).\n"
     "\n"
     "SEQ.json: {\"pattern\": \"FILE.fold\" (relative to SEQ.json), \"frame\": N (optional start\n"
     "frame), \"folds\": [{\"fix\": FACE, \"drive\": EDGE, \"to\": DEG, \"step\": DEG (default 10),\n"
@@ -281,11 +311,15 @@ const cli_command cli_cmd_sequence = {
     "options:\n"
     "  --at T        the state at time T (0 <= T <= number of folds): crease angles, and with\n"
     "                --json also the 3D vertices\n"
-    "  --json        print {sequence, pattern, valid, verdict, reason, failed_fold, duration,\n"
-    "                folds: [...], frames: [{t, fold, drive_deg, fold_angles_deg, residual}]}\n"
+    "  --no-collisions  do not check the motion for self-collision\n"
+    "  --clearance D    faces sharing no vertex closer than D collide too (a length >= 0)\n"
+    "  --json        print {sequence, pattern, valid, verdict, reason, collision: {fold, step,\n"
+    "                drive_deg, faces, point} | null, failed_fold, duration, folds: [...],\n"
+    "                frames: [{t, fold, drive_deg, fold_angles_deg, residual}]}\n"
     "  -o OUT.fold   write the pattern with every recorded state (or the one at --at) as a\n"
     "                folded-form frame (with \"orikin:time\"), and the sequence under\n"
-    "                \"orikin:sequence\"; only when every fold is valid\n"
+    "                \"orikin:sequence\"; only when every fold is valid (up to the last clean\n"
+    "                step when the motion collides)\n"
     "\n"
     "example: orikin sequence examples/open-corner.seq.json -o open-corner-folded.fold\n",
     run,

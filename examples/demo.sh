@@ -57,8 +57,43 @@ run 0 mv-count 100 70 50 40 30 70 --list
 run 0 check examples/patterns/degree4-vertex.fold
 run 1 check examples/patterns/non-flat-foldable-vertex.fold
 
+step "6. Pictures, animation and mesh of the fold (thesis ch. 9.6): orikin render, animate, export"
+run 0 render examples/open-corner.seq.json --yaw 90 --grid -o "$OUT/corner-cube.png"
+run 0 render examples/open-corner.seq.json --yaw 90 -o "$OUT/corner-cube.svg"
+run 0 animate examples/open-corner.seq.json --yaw 90 --grid -o "$OUT/open-corner.gif"
+run 0 export examples/open-corner.seq.json --animate -o "$OUT/open-corner.glb"
+echo "The folded corner cube: $OUT/corner-cube.png (picture) and $OUT/corner-cube.svg (vector);"
+echo "the two folds: $OUT/open-corner.gif (animation) and $OUT/open-corner.glb (glTF, one node per face)."
+echo
+# --- self-collision (docs/collision.md) --------------------------------------------------------
+step "7. Self-collision along the motion: the open corner folds clean, two flaps collide"
+echo "(every fold and sequence is checked by default; the first contact is located to 1e-6 deg)"
+run 0 sequence examples/open-corner.seq.json --json >"$OUT/open-corner-sequence.json"
+grep -o '"verdict":"valid"' "$OUT/open-corner-sequence.json" >/dev/null || {
+    echo "demo: the open corner's sequence should be clean" >&2
+    failed=1
+}
+echo "(open corner: verdict valid, \"collision\": null in $OUT/open-corner-sequence.json)"
+echo
+run 1 sequence examples/two-flaps.seq.json
+run 1 fold examples/patterns/two-flaps.fold --frame 1 --fix 1 --drive 8 --lock 7 --to 180 --json \
+    >"$OUT/two-flaps-fold.json"
+grep -o '"collision":{[^}]*}' "$OUT/two-flaps-fold.json" || failed=1
+echo
+run 1 collide tests/data/collide-flaps-crossing.fold
+# --- mech: hinges, Lorentz actuation and folding dynamics (issue 11) ---------------------------
+step "8. Hinges, Lorentz-force actuation and folding dynamics (thesis ch. 2.2.2, 2.3, 5.3)"
+echo "(the thesis' flap: 500 x 500 x 10 um silicon on a 0.6 um gold hinge, 20 mA in 0.1 T)"
+run 0 actuate examples/patterns/thesis-flap.fold --fix 0 --drive 0 --to 180 --step 15
+run 0 simulate examples/patterns/thesis-flap.fold --fix 0 --current 0.02 --duration 0.006 --frames 13 \
+    -o "$OUT/thesis-flap-folding.fold"
+echo "(the open corner with gold hinges, folded as the thesis does: two folds, one wire each)"
+run 0 actuate examples/open-corner-gold.seq.json
+run 0 simulate examples/open-corner-gold.seq.json --current 0.02 --duration 0.012 --damping 0.2 --frames 13 \
+    -o "$OUT/open-corner-gold-folding.fold"
+
 # --- studio (orikin view) -----------------------------------------------------------------
-step "6. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
+step "9. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
 echo "\$ orikin view examples/open-corner.seq.json --port 0 --no-browser"
 "$ORIKIN" view examples/open-corner.seq.json --port 0 --no-browser >"$OUT/view.out" 2>&1 &
 view_pid=$!
@@ -83,6 +118,7 @@ if [ "$failed" -ne 0 ]; then
     exit 1
 fi
 echo "The folded open corner (every step as a FOLD frame) is in $OUT/open-corner-folded.fold."
+echo "The simulated foldings (frames with frame_time) are in $OUT/thesis-flap-folding.fold and $OUT/open-corner-gold-folding.fold."
 echo
 echo "Open the studio on the open corner (author, check, fold and scrub the sequence in your browser;"
 echo "Ctrl-C stops it):"

@@ -95,6 +95,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     def.work_limit = 2e5;          // keep each input fast: refusals are what is fuzzed
     def.cache_bytes = (size_t)1 << 20;
     def.max_open_bytes = 1 << 20;
+    def.render_pixels = 1 << 16;   // pictures and animations small enough for many runs a second
+    def.animation_pixels = 1 << 18;
     studio *s = NULL;
     char err[256];
     if (studio_create(&def, &s, err, sizeof err) != 0) abort();

@@ -18,6 +18,8 @@ for t in "$BUILD"/fuzz/fuzz_*; do
         fold) seeds="examples/patterns/*.fold tests/data/*.fold" ;;
         composite) seeds="examples/composites/*.json tests/data/*composite*.json" ;;
         sequence) seeds="examples/*.seq.json" ;;
+        materials) seeds="data/materials.json tests/data/actuation/*.json" ;;
+        design) seeds="examples/patterns/thesis-flap.fold examples/patterns/open-corner-gold.fold tests/data/actuation/*.fold" ;;
         arrangement) seeds="" ;;
         api) seeds="tests/data/server/*.req" ;;
         *) seeds="tests/data/formats/*.$name" ;;

@@ -442,7 +442,48 @@ Test(server, bad_requests_leave_the_document_unchanged)
         {"POST", "/api/dof", NULL, "{\"t\": 9}", 400},
         {"GET", "/api/mechanism", "fix=99", NULL, 400},
         {"GET", "/api/mechanism", "fix=0.5", NULL, 400},
-        {"GET", "/api/export", "format=png", NULL, 400},
+        {"GET", "/api/export", "format=gif", NULL, 400},
+        {"GET", "/api/export", "format=png&of=sequence", NULL, 400},
+        {"GET", "/api/export", "format=png&size=0x10", NULL, 400},
+        {"GET", "/api/export", "format=png&size=5000x5000", NULL, 400},
+        {"GET", "/api/export", "format=png&t=1&frame=0", NULL, 400},
+        {"GET", "/api/export", "format=png&view=cp&t=1", NULL, 400},
+        {"GET", "/api/export", "format=png&view=3d&labels=1", NULL, 400},
+        {"GET", "/api/export", "format=png&eye=0,0,1", NULL, 400},
+        {"GET", "/api/export", "format=png&eye=0,0,1&up=0,0,2", NULL, 400},
+        {"GET", "/api/export", "format=png&front=nocolour", NULL, 400},
+        {"GET", "/api/export", "format=png&grid=maybe", NULL, 400},
+        {"GET", "/api/export", "format=png&t=9", NULL, 400},
+        {"GET", "/api/export", "format=png&k=0", NULL, 409},
+        {"GET", "/api/export", "format=obj&thickness=-1", NULL, 400},
+        {"GET", "/api/export", "format=obj&of=elsewhere", NULL, 400},
+        {"GET", "/api/export", "format=glb&of=fold", NULL, 409},
+        {"GET", "/api/export", "format=glb&of=sequence&thickness=1", NULL, 400},
+        {"GET", "/api/export", "format=gif&of=sequence&fps=100", NULL, 400},
+        {"GET", "/api/export", "format=gif&of=sequence&duration=0", NULL, 400},
+        {"GET", "/api/export", "format=gif&of=sequence&view=cp", NULL, 400},
+        {"GET", "/api/export", "format=gif&of=sequence&t=1", NULL, 400},
+        {"GET", "/api/check", "tolerance_deg=2", NULL, 400},
+        {"GET", "/api/check", "tolerance_deg=x", NULL, 400},
+        {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": 12, \"to\": 90, \"clearance\": -1}", 400},
+        {"POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": 12, \"to\": 90, \"no_collisions\": 1}", 400},
+        {"POST", "/api/sequence", "clearance=-1", "{\"pattern\": \"p.fold\", \"folds\": [{\"fix\": 4, \"drive\": 12, \"to\": 90}]}", 400},
+        {"POST", "/api/sequence", "no_collisions=yes", "{\"pattern\": \"p.fold\", \"folds\": [{\"fix\": 4, \"drive\": 12, \"to\": 90}]}", 400},
+        {"GET", "/api/contact", NULL, NULL, 400},
+        {"GET", "/api/contact", "of=fold", NULL, 409},
+        {"GET", "/api/contact", "of=sequence", NULL, 409},
+        {"POST", "/api/collide", NULL, "{\"frame\": 7}", 400},
+        {"POST", "/api/collide", NULL, "{\"t\": 9}", 400},
+        {"POST", "/api/collide", NULL, "{\"k\": 0}", 409},
+        {"POST", "/api/collide", NULL, "{\"contact\": \"fold\"}", 409},
+        {"POST", "/api/collide", NULL, "{\"contact\": \"both\"}", 400},
+        {"POST", "/api/collide", NULL, "{\"frame\": 0, \"t\": 1}", 400},
+        {"POST", "/api/collide", NULL, "{\"clearance\": -1}", 400},
+        {"POST", "/api/collide", NULL, "{\"cloud\": 0}", 400},
+        {"POST", "/api/collide", NULL, "{\"witness\": true}", 400},
+        {"POST", "/api/regularize", NULL, "{\"max_move\": 0}", 400},
+        {"POST", "/api/regularize", NULL, "{\"rigid\": 1}", 400},
+        {"POST", "/api/regularize", NULL, "{\"frame\": 1}", 400},
         {"GET", "/api/export", NULL, NULL, 400},
         {"POST", "/api/save", NULL, "{\"what\": \"x\"}", 400},
         {"POST", "/api/undo", NULL, NULL, 409},
@@ -451,7 +492,6 @@ Test(server, bad_requests_leave_the_document_unchanged)
         {"GET", "/api/../index.html", NULL, NULL, 404},
         {"DELETE", "/api/fold", NULL, NULL, 405},
         {"POST", "/api/session", NULL, NULL, 405},
-        {"POST", "/api/collide", NULL, "{}", 501},
         {"POST", "/api/actuate", NULL, "{}", 501},
     };
     char *before = document(s);
@@ -855,6 +895,446 @@ Test(server, blank_sheet_and_a_drawing_given_on_the_command_line)
     cr_assert_null(strchr(err, '\n'));
     d.path = "README.md";
     cr_assert_eq(studio_create(&d, &s, err, sizeof err), 3);
+}
+
+// --- collisions, tolerance, regularize, pictures and meshes ------------------------------------
+
+#define TWO_FLAPS "examples/patterns/two-flaps.fold"
+#define TWO_FLAPS_SEQ "examples/two-flaps.seq.json"
+#define ROUNDED_MIURA "tests/data/rounded-miura.fold"
+
+// A fold that collides: the verdict, the located contact and the motion cut at the last clean
+// step are what orikin fold --json prints; the contact state is where the faces meet.
+Test(server, fold_collision_equals_cli_json)
+{
+    studio *s = open_studio(TWO_FLAPS);
+    json_t *api = call_json(s, "POST", "/api/fold", NULL,
+                            "{\"frame\": 1, \"fix\": 1, \"drive\": 8, \"lock\": [7], \"to\": 180}", 200);
+    json_t *cli = cli_json("fold " TWO_FLAPS " --frame 1 --fix 1 --drive 8 --lock 7 --to 180 --json", 1);
+    assert_same(api, cli, "colliding fold");
+    cr_assert_str_eq(json_string_value(json_object_get(api, "verdict")), "collision");
+    json_t *col = json_object_get(api, "collision");
+    int step = (int)json_integer_value(json_object_get(col, "step"));
+    // the flaps first touch at cos(rho) = -1/1.5 (examples/two-flaps.seq.json), located to 1e-6 deg
+    cr_assert_float_eq(json_number_value(json_object_get(col, "drive_deg")), acos(-1.0 / 1.5) * 180.0 / ORI_PI, 2e-6);
+    cr_assert_eq(json_array_size(json_object_get(api, "frames")), (size_t)step, "the motion stops at the last clean step");
+    json_decref(cli);
+    // the fold's states stop there too
+    char q[32];
+    snprintf(q, sizeof q, "k=%d", step - 1);
+    json_decref(call_json(s, "GET", "/api/fold/frame", q, NULL, 200));
+    snprintf(q, sizeof q, "k=%d", step);
+    studio_response r = call(s, "GET", "/api/fold/frame", q, NULL);
+    cr_assert_eq(r.status, 400);
+    studio_response_free(&r);
+    json_t *sess = call_json(s, "GET", "/api/session", NULL, NULL, 200);
+    cr_assert_eq(json_integer_value(json_object_get(sess, "fold_frames")), step);
+    cr_assert(json_is_true(json_object_get(json_object_get(sess, "features"), "collisions")));
+    json_decref(sess);
+    // the state at the first contact: at the located drive, and its faces collide there
+    json_t *c = call_json(s, "GET", "/api/contact", "of=fold", NULL, 200);
+    assert_same(json_object_get(c, "collision"), col, "contact.collision");
+    cr_assert_eq(json_number_value(json_object_get(c, "drive_deg")), json_number_value(json_object_get(col, "drive_deg")));
+    cr_assert_float_eq(json_number_value(json_array_get(json_object_get(c, "fold_angles_deg"), 8)),
+                       json_number_value(json_object_get(col, "drive_deg")), 1e-9);
+    json_decref(c);
+    json_t *k = call_json(s, "POST", "/api/collide", NULL, "{\"contact\": \"fold\"}", 200);
+    cr_assert(json_is_true(json_object_get(k, "collides")), "the contact state collides");
+    assert_same(json_array_get(json_object_get(k, "pairs"), 0), json_object_get(col, "faces"), "colliding pair");
+    cr_assert_str_eq(json_string_value(json_object_get(k, "state")), "first contact of the fold");
+    json_decref(k);
+    // and the last clean state does not
+    snprintf(q, sizeof q, "{\"k\": %d}", step - 1);
+    k = call_json(s, "POST", "/api/collide", NULL, q, 200);
+    cr_assert(json_is_false(json_object_get(k, "collides")));
+    json_decref(k);
+    json_decref(api);
+    // no_collisions and clearance as --no-collisions and --clearance
+    api = call_json(s, "POST", "/api/fold", NULL,
+                    "{\"frame\": 1, \"fix\": 1, \"drive\": 8, \"lock\": [7], \"to\": 180, \"no_collisions\": true}", 200);
+    cli = cli_json("fold " TWO_FLAPS " --frame 1 --fix 1 --drive 8 --lock 7 --to 180 --no-collisions --json", 0);
+    assert_same(api, cli, "fold --no-collisions");
+    cr_assert(json_is_null(json_object_get(api, "collision")));
+    json_decref(api);
+    json_decref(cli);
+    r = call(s, "GET", "/api/contact", "of=fold", NULL);
+    cr_assert_eq(r.status, 409, "an unchecked fold has no contact");
+    studio_response_free(&r);
+    api = call_json(s, "POST", "/api/fold", NULL,
+                    "{\"frame\": 1, \"fix\": 1, \"drive\": 8, \"lock\": [7], \"to\": 120, \"step\": 20, \"clearance\": 0.5}", 200);
+    cli = cli_json("fold " TWO_FLAPS " --frame 1 --fix 1 --drive 8 --lock 7 --to 120 --step 20 --clearance 0.5 --json", 1);
+    assert_same(api, cli, "fold --clearance 0.5");
+    cr_assert_str_eq(json_string_value(json_object_get(api, "verdict")), "collision");
+    json_decref(api);
+    json_decref(cli);
+    studio_destroy(s);
+}
+
+// A sequence that collides: the record, every clean instant, and the refusal after the contact
+// are what orikin sequence prints.
+Test(server, sequence_collision_equals_cli_json)
+{
+    studio *exact = open_studio_def(TWO_FLAPS_SEQ, 0);
+    json_t *api = call_json(exact, "GET", "/api/sequence", NULL, NULL, 200);
+    json_t *cli = cli_json("sequence " TWO_FLAPS_SEQ " --json", 1);
+    assert_same(api, cli, "colliding sequence");
+    cr_assert_str_eq(json_string_value(json_object_get(api, "verdict")), "collision");
+    json_t *col = json_object_get(api, "collision");
+    cr_assert_eq(json_integer_value(json_object_get(col, "fold")), 2);
+    json_t *sess = call_json(exact, "GET", "/api/session", NULL, NULL, 200);
+    double tc = json_number_value(json_object_get(json_object_get(sess, "sequence"), "collision_t"));
+    json_decref(sess);
+    cr_assert(tc > 1.7 && tc < 1.75, "contact at t = %g", tc);
+    json_t *a = call_json(exact, "GET", "/api/sequence/at", "t=1.5", NULL, 200);
+    json_t *b = cli_json("sequence " TWO_FLAPS_SEQ " --at 1.5 --json", 0);
+    assert_same(a, b, "t = 1.5");
+    json_decref(a);
+    json_decref(b);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli("sequence " TWO_FLAPS_SEQ " --at 1.8 --json", &out), 1);
+    free(out);
+    studio_response r = call(exact, "GET", "/api/sequence/at", "t=1.8", NULL);
+    cr_assert_eq(r.status, 409, "t = 1.8 is after the contact");
+    assert_error_body(&r, "t after the contact");
+    studio_response_free(&r);
+    // the contact state: at the contact time, its faces collide
+    json_t *c = call_json(exact, "GET", "/api/contact", "of=sequence", NULL, 200);
+    cr_assert_eq(json_number_value(json_object_get(c, "t")), tc);
+    cr_assert_eq(json_integer_value(json_object_get(c, "fold")), 2);
+    assert_same(json_object_get(c, "collision"), col, "contact.collision");
+    json_decref(c);
+    json_t *k = call_json(exact, "POST", "/api/collide", NULL, "{\"contact\": \"sequence\"}", 200);
+    cr_assert(json_is_true(json_object_get(k, "collides")));
+    assert_same(json_array_get(json_object_get(k, "pairs"), 0), json_object_get(col, "faces"), "colliding pair");
+    json_decref(k);
+    json_decref(api);
+    json_decref(cli);
+    // the sequence posted again without the check, as --no-collisions
+    char *text = test_read_text(TWO_FLAPS_SEQ);
+    studio_arg args[1] = {{"no_collisions", "1"}};
+    studio_request req = {"POST", "/api/sequence", args, 1, text, strlen(text)};
+    studio_handle(exact, &req, &r);
+    cr_assert_eq(r.status, 200);
+    api = parse(r.body, r.size);
+    studio_response_free(&r);
+    cli = cli_json("sequence " TWO_FLAPS_SEQ " --no-collisions --json", 0);
+    json_object_set_new(cli, "sequence", json_string("studio"));
+    assert_same(api, cli, "sequence --no-collisions");
+    json_decref(api);
+    json_decref(cli);
+    free(text);
+    a = call_json(exact, "GET", "/api/sequence/at", "t=1.8", NULL, 200);
+    json_decref(a);
+    studio_destroy(exact);
+}
+
+// One state checked for self-collision: what orikin collide --json prints (with "state" added).
+Test(server, collide_equals_cli_json)
+{
+    studio *s = open_studio(TWO_FLAPS);
+    static const struct {
+        const char *body, *cli;
+        int rc;
+    } cases[] = {
+        {"{\"frame\": 1}", "collide " TWO_FLAPS " --frame 1 --json", 0},
+        {"{\"frame\": 1, \"cloud\": 0.25}", "collide " TWO_FLAPS " --frame 1 --cloud 0.25 --json", 0},
+        {"{\"frame\": 1, \"clearance\": 1.5}", "collide " TWO_FLAPS " --frame 1 --clearance 1.5 --json", 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        json_t *api = call_json(s, "POST", "/api/collide", NULL, cases[i].body, 200);
+        cr_assert_str_eq(json_string_value(json_object_get(api, "state")), "frame 1");
+        json_object_del(api, "state");
+        json_t *cli = cli_json(cases[i].cli, cases[i].rc);
+        assert_same(api, cli, cases[i].cli);
+        json_decref(api);
+        json_decref(cli);
+    }
+    studio_destroy(s);
+    // a crossing folded form as it is
+    s = open_studio("tests/data/collide-flaps-crossing.fold");
+    json_t *api = call_json(s, "POST", "/api/collide", NULL, "{}", 200);
+    json_object_del(api, "state");
+    json_t *cli = cli_json("collide tests/data/collide-flaps-crossing.fold --json", 1);
+    assert_same(api, cli, "crossing flaps");
+    json_decref(api);
+    json_decref(cli);
+    studio_destroy(s);
+    // an instant of the sequence: the state orikin sequence --at writes, checked as collide does
+    char *dir = test_tmpdir();
+    char args[1024], path[512];
+    snprintf(path, sizeof path, "%s/at.fold", dir);
+    snprintf(args, sizeof args, "sequence " OPEN_CORNER_SEQ " --at 1.5 -o '%s'", path);
+    cr_assert_eq(test_run_cli(args, NULL), 0);
+    snprintf(args, sizeof args, "collide '%s' --frame 1 --json", path);
+    cli = cli_json(args, 0);
+    s = open_studio_def(OPEN_CORNER_SEQ, 0);
+    api = call_json(s, "POST", "/api/collide", NULL, "{\"t\": 1.5}", 200);
+    cr_assert(json_is_null(json_object_get(api, "frame")));
+    cr_assert(json_is_true(json_object_get(api, "posed")));
+    // the contact tolerance is relative to the collider's pattern: the flat sheet here (as the
+    // motion checks), the folded form there
+    static const char *const differ[] = {"file", "frame", "posed", "state", "tolerance"};
+    for (int i = 0; i < 5; ++i) {
+        json_object_del(api, differ[i]);
+        json_object_del(cli, differ[i]);
+    }
+    assert_close(api, cli, 1e-12, "t = 1.5");
+    json_decref(api);
+    json_decref(cli);
+    studio_destroy(s);
+    test_tmpdir_remove(dir);
+}
+
+// check with and without a tolerance on a rounded drawing: orikin check --json, hint included.
+Test(server, check_tolerance_equals_cli_json)
+{
+    studio *s = open_studio(ROUNDED_MIURA);
+    static const struct {
+        const char *query, *cli;
+        int rc;
+    } cases[] = {
+        {NULL, "check " ROUNDED_MIURA " --json", 1},
+        {"tolerance_deg=0.05", "check " ROUNDED_MIURA " --tolerance 0.05 --json", 0},
+        {"tolerance_deg=0", "check " ROUNDED_MIURA " --tolerance 0 --json", 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        json_t *api = call_json(s, "GET", "/api/check", cases[i].query, NULL, 200);
+        json_t *cli = cli_json(cases[i].cli, cases[i].rc);
+        assert_same(api, cli, cases[i].cli);
+        json_decref(api);
+        json_decref(cli);
+    }
+    json_t *c = call_json(s, "GET", "/api/check", NULL, NULL, 200);
+    cr_assert_not_null(strstr(json_string_value(json_object_get(c, "hint")), "orikin regularize " ROUNDED_MIURA));
+    json_decref(c);
+    c = call_json(s, "GET", "/api/check", "tolerance_deg=0.05", NULL, 200);
+    cr_assert_eq(json_integer_value(json_object_get(c, "within_tolerance_vertices")), 5);
+    json_decref(c);
+    studio_destroy(s);
+}
+
+// regularize replaces the document by what orikin regularize -o writes (undoable) and reports
+// what orikin regularize --json prints; a refusal changes nothing.
+Test(server, regularize_equals_cli)
+{
+    char *dir = test_tmpdir();
+    char args[1024], path[512];
+    const char *rigid[] = {"", " --rigid"};
+    const char *body[] = {"{}", "{\"rigid\": true}"};
+    for (int i = 0; i < 2; ++i) {
+        snprintf(path, sizeof path, "%s/exact%d.fold", dir, i);
+        snprintf(args, sizeof args, "regularize " ROUNDED_MIURA "%s -o '%s'", rigid[i], path);
+        cr_assert_eq(test_run_cli(args, NULL), 0);
+        snprintf(args, sizeof args, "regularize " ROUNDED_MIURA "%s --json", rigid[i]);
+        json_t *cli = cli_json(args, 0);
+        studio *s = open_studio(ROUNDED_MIURA);
+        char *before = document(s);
+        json_t *api = call_json(s, "POST", "/api/regularize", NULL, body[i], 200);
+        cr_assert(json_is_true(json_object_get(api, "replaced")));
+        cr_assert_eq(json_integer_value(json_object_get(api, "undo")), 1);
+        static const char *const extra[] = {"replaced", "version", "undo", "redo"};
+        for (int k = 0; k < 4; ++k) json_object_del(api, extra[k]);
+        assert_same(api, cli, args);
+        cr_assert_gt(json_number_value(json_object_get(api, "max_move_rel")), 0.0);
+        char *after = document(s);
+        json_t *a = parse(after, strlen(after)), *b = load_fold_json(path);
+        assert_same(a, b, "regularized document");
+        json_decref(a);
+        json_decref(b);
+        // now it checks exactly
+        json_t *c = call_json(s, "GET", "/api/check", NULL, NULL, 200);
+        cr_assert(json_is_true(json_object_get(c, "locally_flat_foldable")));
+        json_decref(c);
+        json_decref(call_json(s, "POST", "/api/undo", NULL, NULL, 200));
+        char *undone = document(s);
+        cr_assert_str_eq(undone, before);
+        free(undone);
+        free(after);
+        free(before);
+        json_decref(api);
+        json_decref(cli);
+        studio_destroy(s);
+    }
+    // a vertex that no small move makes flat-foldable: refused, the document unchanged
+    studio *s = open_studio("examples/patterns/non-flat-foldable-vertex.fold");
+    char *before = document(s);
+    long version = studio_version(s);
+    json_t *api = call_json(s, "POST", "/api/regularize", NULL, "{}", 200);
+    cr_assert(json_is_false(json_object_get(api, "replaced")));
+    for (const char *const *k = (const char *const[]){"replaced", "version", "undo", "redo", NULL}; *k; ++k)
+        json_object_del(api, *k);
+    json_t *cli = cli_json("regularize examples/patterns/non-flat-foldable-vertex.fold --json", 1);
+    assert_same(api, cli, "refused regularize");
+    char *after = document(s);
+    cr_assert_str_eq(after, before);
+    cr_assert_eq(studio_version(s), version);
+    free(after);
+    free(before);
+    json_decref(api);
+    json_decref(cli);
+    studio_destroy(s);
+    test_tmpdir_remove(dir);
+}
+
+static char *read_bytes(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s", path);
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    *size = fread(buf, 1, (size_t)n, f);
+    fclose(f);
+    return buf;
+}
+
+// Blank a PDF's creation and modification dates ("(D:2026…)"): the only bytes that differ
+// between two runs.
+static void blank_pdf_dates(char *b, size_t n)
+{
+    for (size_t i = 0; i + 3 < n; ++i)
+        if (b[i] == '(' && b[i + 1] == 'D' && b[i + 2] == ':')
+            for (size_t k = i + 3; k < n && b[k] != ')'; ++k) b[k] = '0';
+}
+
+// Renumber Cairo's SVG identifiers (surface1, clip2, …) in order of first appearance: Cairo
+// numbers them per process, so a long-running server writes "surface6" where a fresh CLI writes
+// "surface1" for the same drawing. Returns the new text (malloc'd) and its size.
+static char *canonical_svg_ids(const char *b, size_t n, size_t *out_n)
+{
+    static const char *const prefixes[] = {"surface", "clip", "pattern", "mask", "image", "source", "filter", "glyph"};
+    char *out = malloc(2 * n + 64), seen[64][32];
+    int nseen = 0;
+    size_t o = 0;
+    for (size_t i = 0; i < n;) {
+        bool done = false;
+        for (size_t p = 0; p < sizeof prefixes / sizeof prefixes[0] && !done; ++p) {
+            size_t k = strlen(prefixes[p]);
+            if (i + k >= n || strncmp(b + i, prefixes[p], k) != 0 || !(b[i + k] >= '0' && b[i + k] <= '9')) continue;
+            size_t j = i + k;
+            while (j < n && b[j] >= '0' && b[j] <= '9') j++;
+            char tok[32];
+            snprintf(tok, sizeof tok, "%.*s", (int)(j - i), b + i);
+            int id = -1;
+            for (int q = 0; q < nseen; ++q)
+                if (strcmp(seen[q], tok) == 0) id = q;
+            if (id < 0 && nseen < 64) {
+                snprintf(seen[nseen], sizeof seen[nseen], "%s", tok);
+                id = nseen++;
+            }
+            o += (size_t)sprintf(out + o, "%s#%d", prefixes[p], id);
+            i = j;
+            done = true;
+        }
+        if (!done) out[o++] = b[i++];
+    }
+    *out_n = o;
+    return out;
+}
+
+// GET /api/export?QUERY gives the bytes the CLI writes with ARGS -o OUT (ext: the file's suffix).
+static void assert_export_equals(studio *s, const char *query, const char *args, const char *ext, const char *dir)
+{
+    char path[512], cmd[1024];
+    snprintf(path, sizeof path, "%s/out.%s", dir, ext);
+    snprintf(cmd, sizeof cmd, "%s -o '%s'", args, path);
+    char *log = NULL;
+    int rc = test_run_cli(cmd, &log);
+    cr_assert_eq(rc, 0, "orikin %s: %s", cmd, log);
+    free(log);
+    size_t n;
+    char *want = read_bytes(path, &n);
+    studio_response r = call(s, "GET", "/api/export", query, NULL);
+    cr_assert_eq(r.status, 200, "%s: %d %.300s", query, r.status, r.body);
+    if (strcmp(ext, "pdf") == 0) {
+        blank_pdf_dates(want, n);
+        blank_pdf_dates(r.body, r.size);
+    }
+    if (strcmp(ext, "svg") == 0) {
+        size_t a, b;
+        char *x = canonical_svg_ids(want, n, &a), *y = canonical_svg_ids(r.body, r.size, &b);
+        free(want);
+        free(r.body);
+        want = x;
+        n = a;
+        r.body = y;
+        r.size = b;
+    }
+    cr_assert_eq(r.size, n, "%s: %zu bytes, the CLI wrote %zu", query, r.size, n);
+    cr_assert(memcmp(r.body, want, n) == 0, "%s: the bytes differ from orikin %s", query, args);
+    free(want);
+    studio_response_free(&r);
+}
+
+// Pictures, meshes and animations of states and motions: byte for byte what orikin render,
+// export and animate write for the same state and options.
+Test(server, exports_equal_render_export_and_animate)
+{
+    char *dir = test_tmpdir();
+    studio *s = open_studio(OPEN_CORNER_SEQ);
+    static const struct {
+        const char *query, *args, *ext;
+    } cases[] = {
+        {"format=png", "render " OPEN_CORNER, "png"},
+        {"format=png&frame=0&labels=1", "render " OPEN_CORNER " --labels", "png"},
+        {"format=png&t=1.5&yaw=30", "render " OPEN_CORNER_SEQ " --at 1.5 --yaw 30", "png"},
+        {"format=png&t=1.5&camera=top&perspective=1&size=320x200", "render " OPEN_CORNER_SEQ " --at 1.5 --camera top --perspective --size 320x200", "png"},
+        {"format=svg-picture&t=2&grid=1&front=#3366cc", "render " OPEN_CORNER_SEQ " --at 2 --grid --front '#3366cc'", "svg"},
+        {"format=pdf&t=1&edges=1", "render " OPEN_CORNER_SEQ " --at 1 --edges", "pdf"},
+        {"format=obj&t=1.5", "export " OPEN_CORNER_SEQ " --at 1.5", "obj"},
+        {"format=stl&t=2&thickness=0.02", "export " OPEN_CORNER_SEQ " --at 2 --thickness 0.02", "stl"},
+        {"format=ply&t=0.5", "export " OPEN_CORNER_SEQ " --at 0.5", "ply"},
+        {"format=gltf&t=1.25", "export " OPEN_CORNER_SEQ " --at 1.25", "gltf"},
+        {"format=glb&t=2&back=navy", "export " OPEN_CORNER_SEQ " --at 2 --back navy", "glb"},
+        {"format=gltf&of=sequence", "export " OPEN_CORNER_SEQ " --animate", "gltf"},
+        {"format=glb&of=sequence", "export " OPEN_CORNER_SEQ " --animate", "glb"},
+        {"format=gif&of=sequence&fps=5&duration=1&size=200x150", "animate " OPEN_CORNER_SEQ " --fps 5 --duration 1 --size 200x150", "gif"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) assert_export_equals(s, cases[i].query, cases[i].args, cases[i].ext, dir);
+    // the page's camera (eye direction and up) is the preset it equals
+    studio_response a = call(s, "GET", "/api/export", "format=png&t=1&camera=top", NULL);
+    studio_response b = call(s, "GET", "/api/export", "format=png&t=1&eye=0,0,2&up=0,3,0", NULL);
+    cr_assert_eq(a.status, 200);
+    cr_assert_eq(b.status, 200);
+    cr_assert(a.size == b.size && memcmp(a.body, b.body, a.size) == 0, "eye 0,0,1 up 0,1,0 is the top view");
+    cr_assert_str_eq(a.content_type, "image/png");
+    cr_assert_str_eq(a.filename, "open-corner.png");
+    studio_response_free(&a);
+    studio_response_free(&b);
+    // a computed fold: its last state and its whole motion
+    json_decref(call_json(s, "POST", "/api/fold", NULL, "{\"fix\": 4, \"drive\": 12, \"lock\": [11], \"to\": 90, \"step\": 10}", 200));
+#define FOLD_ARGS OPEN_CORNER " --fix 4 --drive 12 --lock 11 --to 90 --step 10"
+    assert_export_equals(s, "format=png&k=9", "render " FOLD_ARGS, "png", dir);
+    assert_export_equals(s, "format=obj&k=9", "export " FOLD_ARGS, "obj", dir);
+    assert_export_equals(s, "format=glb&of=fold", "export " FOLD_ARGS " --animate", "glb", dir);
+    assert_export_equals(s, "format=gif&of=fold&fps=4&duration=1&size=160x120", "animate " FOLD_ARGS " --fps 4 --duration 1 --size 160x120", "gif", dir);
+#undef FOLD_ARGS
+    studio_response g = call(s, "GET", "/api/export", "format=gltf&of=fold", NULL);
+    cr_assert_str_eq(g.filename, "open-corner-fold.gltf");
+    studio_response_free(&g);
+    studio_destroy(s);
+    test_tmpdir_remove(dir);
+}
+
+// The running phase's fraction reaches GET /api/progress.
+Test(server, progress_reports_the_fraction)
+{
+    studio *s = open_studio(OPEN_CORNER);
+    studio_response r;
+    memset(&r, 0, sizeof r);
+    cr_assert(studio_job_begin(s, "fold", &r));
+    json_t *p = call_json(s, "GET", "/api/progress", NULL, NULL, 200);
+    cr_assert(json_is_null(json_object_get(p, "fraction")), "no fraction before the phase reports one");
+    json_decref(p);
+    studio_job_phase(s, "fold: checking collisions");
+    studio_job_progress(0.25, s);
+    p = call_json(s, "GET", "/api/progress", NULL, NULL, 200);
+    cr_assert_str_eq(json_string_value(json_object_get(p, "job")), "fold: checking collisions");
+    cr_assert_eq(json_number_value(json_object_get(p, "fraction")), 0.25);
+    json_decref(p);
+    studio_job_end(s);
+    studio_destroy(s);
 }
 
 // --- HTTP ----------------------------------------------------------------------------------------

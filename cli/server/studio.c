@@ -23,6 +23,8 @@ studio_def studio_default_def(void)
     d.max_open_bytes = STUDIO_MAX_OPEN_BYTES;
     d.cache_bytes = STUDIO_CACHE_BYTES;
     d.work_limit = STUDIO_WORK_LIMIT;
+    d.render_pixels = STUDIO_RENDER_MAX_PIXELS;
+    d.animation_pixels = STUDIO_ANIMATION_MAX_PIXELS;
     return d;
 }
 
@@ -86,6 +88,13 @@ const ori_mechanism *studio_model_mechanism(studio_model *m, ori_error *error)
     return mech;
 }
 
+void studio_contact_free(studio_contact *c)
+{
+    free(c->angles);
+    free(c->positions);
+    memset(c, 0, sizeof *c);
+}
+
 void studio_seq_unref(studio_seq *q)
 {
     if (!q || atomic_fetch_sub(&q->refs, 1) != 1) return;
@@ -95,6 +104,7 @@ void studio_seq_unref(studio_seq *q)
     ori_sequence_destroy(q->sequence);
     studio_model_unref(q->model);
     pthread_mutex_destroy(&q->lock);
+    studio_contact_free(&q->contact);
     free(q->json);
     free(q);
 }
@@ -104,6 +114,9 @@ void studio_fold_unref(studio_fold *f)
     if (!f || atomic_fetch_sub(&f->refs, 1) != 1) return;
     ori_motion_destroy(f->motion);
     studio_model_unref(f->model);
+    studio_contact_free(&f->contact);
+    free(f->start_angles);
+    free(f->locks);
     free(f);
 }
 
@@ -425,7 +438,8 @@ int studio_create(const studio_def *def, studio **out, char *err, size_t err_siz
     if (ok && seq) {
         studio_response r;
         memset(&r, 0, sizeof r);
-        studio_run_sequence(s, seq, s->seq_path, &r);
+        studio_collide_opts opts = {false, 0.0};
+        studio_run_sequence(s, seq, s->seq_path, &opts, &r);
         seq = NULL;
         if (r.status != 200) {
             // the body is {"error": "..."}: the message alone
@@ -728,6 +742,24 @@ bool studio_job_begin(studio *s, const char *name, studio_response *out)
     s->busy = true;
     copy_string(s->job, sizeof s->job, name);
     s->job_start = studio_now();
+    s->job_fraction = -1.0;
+    pthread_mutex_unlock(&s->job_lock);
+    return true;
+}
+
+void studio_job_phase(studio *s, const char *name)
+{
+    pthread_mutex_lock(&s->job_lock);
+    copy_string(s->job, sizeof s->job, name);
+    s->job_fraction = -1.0;
+    pthread_mutex_unlock(&s->job_lock);
+}
+
+bool studio_job_progress(double fraction, void *user)
+{
+    studio *s = user;
+    pthread_mutex_lock(&s->job_lock);
+    s->job_fraction = fraction < 0.0 ? 0.0 : fraction > 1.0 ? 1.0 : fraction;
     pthread_mutex_unlock(&s->job_lock);
     return true;
 }
@@ -748,8 +780,9 @@ void studio_api_progress(studio *s, const studio_request *req, studio_response *
     json_object_set_new(o, "busy", json_boolean(s->busy));
     json_object_set_new(o, "job", s->busy ? json_string(s->job) : json_null());
     json_object_set_new(o, "elapsed_s", s->busy ? json_real(studio_now() - s->job_start) : json_null());
-    // The library's solvers do not report a fraction yet: the page shows the elapsed time.
-    json_object_set_new(o, "fraction", json_null());
+    // Phases that report progress (the collision checks, exports) give the fraction done; the
+    // solvers do not report one yet: the page shows the elapsed time.
+    json_object_set_new(o, "fraction", s->busy && s->job_fraction >= 0.0 ? json_real(s->job_fraction) : json_null());
     pthread_mutex_unlock(&s->job_lock);
     studio_respond_json(out, 200, o);
 }
@@ -763,8 +796,10 @@ void studio_api_session(studio *s, const studio_request *req, studio_response *o
     json_t *formats = json_array();
     for (int i = 0; i < studio_export_format_count(); ++i) {
         const studio_export_format *f = studio_export_format_at(i);
-        json_array_append_new(formats, json_pack("{s:s,s:s,s:s,s:s,s:b}", "format", f->name, "label", f->label,
-                                                 "extension", f->extension, "mime", f->mime, "state", f->state));
+        static const char *const kinds[] = {"document", "picture", "mesh", "animation"};
+        json_array_append_new(formats, json_pack("{s:s,s:s,s:s,s:s,s:s,s:b}", "format", f->name, "label", f->label,
+                                                 "extension", f->extension, "mime", f->mime, "kind", kinds[f->kind],
+                                                 "motion", f->motion));
     }
     json_t *coll = json_array();
     for (int i = 0; i < ori_collection_builtin_count(); ++i)
@@ -793,9 +828,12 @@ void studio_api_session(studio *s, const studio_request *req, studio_response *o
         json_object_set_new(seq, "valid", json_boolean(ori_record_verdict(s->seq->record) == ORI_MOTION_VALID));
         json_object_set_new(seq, "grid", json_integer(s->seq->grid));
         json_object_set_new(seq, "frames", json_integer(ori_record_frame_count(s->seq->record)));
+        // the sequence collides at this time: later states are not clean (as orikin sequence --at)
+        json_object_set_new(seq, "collision_t",
+                            cli_collides(&s->seq->collision) ? json_real(s->seq->collision.ev.time) : json_null());
     }
     json_object_set_new(o, "sequence", seq);
-    json_object_set_new(o, "fold_frames", s->fold ? json_integer(ori_motion_frame_count(s->fold->motion)) : json_null());
+    json_object_set_new(o, "fold_frames", s->fold ? json_integer(s->fold->clean_frames) : json_null());
     const ori_pattern *p = s->model->pattern;
     json_object_set_new(o, "vertices", json_integer(ori_pattern_vertex_count(p)));
     json_object_set_new(o, "edges", json_integer(ori_pattern_edge_count(p)));
@@ -809,7 +847,8 @@ void studio_api_session(studio *s, const studio_request *req, studio_response *o
                                                s->def.work_limit, "max_frames_per_fold", STUDIO_MAX_FRAMES_PER_FOLD,
                                                "undo_depth", STUDIO_UNDO_DEPTH));
     // Results that later capabilities add, each one more endpoint and one more overlay.
-    json_object_set_new(o, "features", json_pack("{s:b,s:b}", "collisions", 0, "actuation", 0));
+    json_object_set_new(o, "features", json_pack("{s:b,s:b,s:b,s:b}", "collisions", 1, "regularize", 1, "render", 1,
+                                                 "actuation", 0));
     studio_respond_json(out, 200, o);
 }
 
@@ -847,25 +886,13 @@ void studio_api_redo(studio *s, const studio_request *req, studio_response *out)
 
 typedef void studio_handler(studio *s, const studio_request *req, studio_response *out);
 
-static void not_yet(studio_response *out, const char *what)
-{
-    studio_fail(out, 501, "%s is not in this build of orikin yet", what);
-}
-
-// Hooks for results that later capabilities add: each becomes one handler here and one overlay
-// in the page (features in GET /api/session says which exist).
-static void api_collide(studio *s, const studio_request *req, studio_response *out)
-{
-    (void)s;
-    (void)req;
-    not_yet(out, "collision detection");
-}
-
+// The hook for actuation results: one more handler here and one more overlay in the page
+// (features in GET /api/session says which exist); until then `orikin actuate` computes them.
 static void api_actuate(studio *s, const studio_request *req, studio_response *out)
 {
     (void)s;
     (void)req;
-    not_yet(out, "actuation planning");
+    studio_fail(out, 501, "actuation is not in the studio yet: use orikin actuate");
 }
 
 typedef struct route {
@@ -898,7 +925,9 @@ static const route routes[] = {
     {"POST", "/api/sequence", studio_api_sequence},
     {"GET", "/api/sequence", studio_api_sequence_get},
     {"GET", "/api/sequence/at", studio_api_sequence_at},
-    {"POST", "/api/collide", api_collide},
+    {"GET", "/api/contact", studio_api_contact},
+    {"POST", "/api/collide", studio_api_collide},
+    {"POST", "/api/regularize", studio_api_regularize},
     {"POST", "/api/actuate", api_actuate},
 };
 

@@ -31,6 +31,11 @@
 #define STUDIO_WORK_LIMIT 1.2e7
 // Most output frames of one fold.
 #define STUDIO_MAX_FRAMES_PER_FOLD 3601
+// Largest picture the studio draws (pixels or points: width × height), 4096 × 4096; a bigger
+// one is `orikin render`'s job.
+#define STUDIO_RENDER_MAX_PIXELS 16777216.0
+// Largest animation (width × height × frames): 256 MB of frames at most.
+#define STUDIO_ANIMATION_MAX_PIXELS 268435456.0
 // Undo history depth (document states kept).
 #define STUDIO_UNDO_DEPTH 100
 // The session token: random bytes, written as hex.
@@ -46,6 +51,8 @@ typedef struct studio_def {
     size_t max_open_bytes; // files opened through the page
     size_t cache_bytes;    // scrubbing cache budget (0 = no cache)
     double work_limit;     // bound on frames × elements of one computation
+    double render_pixels;  // largest picture (width × height)
+    double animation_pixels; // largest animation (width × height × frames)
 } studio_def;
 
 studio_def studio_default_def(void);

@@ -69,10 +69,22 @@ static bool parse_frame_arg(const studio_request *req, int *frame, studio_respon
     return true;
 }
 
+// GET /api/check?frame=N&tolerance_deg=D: what `orikin check FILE --frame N --tolerance D --json`
+// prints (the same builder, cli/report).
 void studio_api_check(studio *s, const studio_request *req, studio_response *out)
 {
     int frame;
     if (!parse_frame_arg(req, &frame, out)) return;
+    const char *tv = studio_arg_get(req, "tolerance_deg");
+    double tol = 0.0;
+    if (tv) {
+        char *end;
+        tol = strtod(tv, &end);
+        if (end == tv || *end || !(tol >= 0.0 && tol <= 1.0)) {
+            studio_fail(out, 400, "tolerance_deg: an angle in degrees in [0, 1]");
+            return;
+        }
+    }
     char file[STUDIO_PATH_MAX];
     studio_model *m = NULL;
     ori_pattern *other = NULL;
@@ -93,9 +105,125 @@ void studio_api_check(studio *s, const studio_request *req, studio_response *out
         studio_fail_error(out, 400, &err);
         return;
     }
-    studio_respond_json(out, 200, studio_json_check(file, frame, m ? m->pattern : other));
+    const ori_pattern *p = m ? m->pattern : other;
+    cli_check chk;
+    cli_check_run(p, file, tv != NULL, tol, &chk);
+    studio_respond_json(out, 200, cli_check_json(&chk, file, frame, p));
+    cli_check_free(&chk);
     studio_model_unref(m);
     ori_pattern_destroy(other);
+}
+
+// Why regularize refuses, as `orikin regularize` says it (NULL: it succeeded).
+static const char *regularize_refusal(const ori_regularize_result *r, const ori_regularize_def *def, char *buf,
+                                      size_t size)
+{
+    const char *goal = def->rigid ? "rigidly foldable" : "flat-foldable";
+    if (r->odd_vertex != ORI_NULL_INDEX)
+        snprintf(buf, size, "interior vertex %d has an odd number of creases: no move makes it flat-foldable", r->odd_vertex);
+    else if (r->refused)
+        snprintf(buf, size,
+                 "the nearest %s pattern moves vertex %d by %.3g of the sheet size, more than %.3g (--max-move): "
+                 "the drawing is not a rounded version of one",
+                 goal, r->max_move_vertex, r->max_move_rel, def->max_move_rel);
+    else if (r->crossing_edge != ORI_NULL_INDEX)
+        snprintf(buf, size, "the nearest %s pattern would make edges cross (%s): the drawing's topology does not allow it",
+                 goal, r->crossing);
+    else if (!r->converged && def->rigid)
+        snprintf(buf, size,
+                 "no rigidly foldable pattern was found near this one (Kawasaki %.3g rad, rigid defect %.3g after %d "
+                 "iterations)",
+                 r->kawasaki_after_rad, r->rigid_after, r->iterations);
+    else if (!r->converged)
+        snprintf(buf, size, "no flat-foldable pattern was found near this one (Kawasaki %.3g rad after %d iterations)",
+                 r->kawasaki_after_rad, r->iterations);
+    else return NULL;
+    return buf;
+}
+
+// POST /api/regularize {rigid, max_move}: `orikin regularize --json` on the document's crease
+// pattern; when it succeeds the regularized pattern becomes the document (undoable).
+void studio_api_regularize(studio *s, const studio_request *req, studio_response *out)
+{
+    json_t *o = studio_body_object(req, out);
+    if (!o) return;
+    static const char *const keys[] = {"rigid", "max_move", NULL};
+    ori_regularize_def def = ori_default_regularize_def();
+    bool rigid = false, ok = studio_check_keys(o, keys, out) && studio_get_bool(o, "rigid", &rigid, out) &&
+                            studio_get_number(o, "max_move", false, &def.max_move_rel, NULL, out);
+    json_decref(o);
+    if (!ok) return;
+    if (!(def.max_move_rel > 0.0 && def.max_move_rel <= 1.0)) {
+        studio_fail(out, 400, "max_move: a fraction of the sheet size in (0, 1], got %g", def.max_move_rel);
+        return;
+    }
+    def.rigid = rigid;
+    if (!studio_job_begin(s, "regularize", out)) return;
+    char file[STUDIO_PATH_MAX];
+    pthread_mutex_lock(&s->lock);
+    studio_model *model = studio_model_ref(s->model);
+    long version = s->version;
+    copy_string(file, sizeof file, s->file);
+    pthread_mutex_unlock(&s->lock);
+    const ori_pattern *p = model->pattern;
+    ori_regularize_result r;
+    ori_pattern *q = NULL;
+    ori_error err;
+    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p)) {
+        studio_fail(out, 400, "frame 0 is a folded form: regularize needs a flat crease pattern");
+    } else {
+        ori_status st = ori_regularize(p, &def, &q, &r, &err);
+        if (st != ORI_OK) {
+            studio_fail_error(out, studio_status_of(st), &err);
+        } else {
+            char buf[320];
+            const char *why = regularize_refusal(&r, &def, buf, sizeof buf);
+            json_t *j = json_object();
+            json_object_set_new(j, "file", json_string(file));
+            json_object_set_new(j, "rigid", json_boolean(rigid));
+            json_object_set_new(j, "converged", json_boolean(r.converged));
+            json_object_set_new(j, "refused", json_boolean(r.refused));
+            json_object_set_new(j, "reason", why ? json_string(why) : json_null());
+            json_object_set_new(j, "interior_vertices", json_integer(r.interior_vertices));
+            json_object_set_new(j, "unknowns", json_integer(r.unknowns));
+            json_object_set_new(j, "equations", json_integer(r.equations));
+            json_object_set_new(j, "iterations", json_integer(r.iterations));
+            json_object_set_new(j, "moved_vertices", json_integer(r.moved_vertices));
+            json_object_set_new(j, "max_move_rel", json_real(r.max_move_rel));
+            json_object_set_new(j, "max_move_vertex",
+                                r.max_move_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.max_move_vertex));
+            json_object_set_new(j, "rms_move_rel", json_real(r.rms_move_rel));
+            json_object_set_new(j, "max_move_allowed_rel", json_real(def.max_move_rel));
+            json_object_set_new(j, "kawasaki_before_deg", json_real(ori_rad_to_deg_output(r.kawasaki_before_rad)));
+            json_object_set_new(j, "kawasaki_after_deg", json_real(ori_rad_to_deg_output(r.kawasaki_after_rad)));
+            json_object_set_new(j, "crossing_edge",
+                                r.crossing_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.crossing_edge));
+            json_object_set_new(j, "rigid_before", rigid ? json_real(r.rigid_before) : json_null());
+            json_object_set_new(j, "rigid_after", rigid ? json_real(r.rigid_after) : json_null());
+            json_object_set_new(j, "output", json_null());
+            bool replaced = false;
+            pthread_mutex_lock(&s->lock);
+            if (!why && q && s->version == version) {
+                studio_commit(s, studio_model_new(q));
+                q = NULL;
+                replaced = true;
+            }
+            json_object_set_new(j, "replaced", json_boolean(replaced));
+            json_object_set_new(j, "version", json_integer(s->version));
+            json_object_set_new(j, "undo", json_integer(s->undo_count));
+            json_object_set_new(j, "redo", json_integer(s->redo_count));
+            pthread_mutex_unlock(&s->lock);
+            if (!why && !replaced) {
+                json_decref(j);
+                studio_fail(out, 409, "the document changed while regularize ran: nothing was replaced");
+            } else {
+                studio_respond_json(out, 200, j);
+            }
+        }
+    }
+    ori_pattern_destroy(q);
+    studio_model_unref(model);
+    studio_job_end(s);
 }
 
 // --- changing the document -----------------------------------------------------------------
@@ -764,18 +892,29 @@ void studio_api_edit(studio *s, const studio_request *req, studio_response *out)
 // --- export and save-back --------------------------------------------------------------------
 
 static const studio_export_format formats[] = {
-    {"fold", "FOLD", ".fold", "application/json", false},
-    {"svg", "SVG", ".svg", "image/svg+xml", false},
-    {"cp", "ORIPA .cp", ".cp", "text/plain", false},
-    {"opx", "ORIPA .opx", ".opx", "application/xml", false},
-    // The render module's writers (PNG, glTF, OBJ, STL of a folded state) become entries here.
+    {"fold", "FOLD", ".fold", "application/json", STUDIO_EXPORT_DOCUMENT, false, 0},
+    {"svg", "SVG crease pattern", ".svg", "image/svg+xml", STUDIO_EXPORT_DOCUMENT, false, 0},
+    {"cp", "ORIPA .cp", ".cp", "text/plain", STUDIO_EXPORT_DOCUMENT, false, 0},
+    {"opx", "ORIPA .opx", ".opx", "application/xml", STUDIO_EXPORT_DOCUMENT, false, 0},
+    // orikin render: a picture of a state
+    {"png", "PNG picture", ".png", "image/png", STUDIO_EXPORT_PICTURE, false, ORI_IMAGE_PNG},
+    {"svg-picture", "SVG picture", ".svg", "image/svg+xml", STUDIO_EXPORT_PICTURE, false, ORI_IMAGE_SVG},
+    {"pdf", "PDF picture", ".pdf", "application/pdf", STUDIO_EXPORT_PICTURE, false, ORI_IMAGE_PDF},
+    // orikin export: a mesh of a state, or (glTF) the whole motion
+    {"obj", "OBJ mesh", ".obj", "model/obj", STUDIO_EXPORT_MESH, false, ORI_MESH_OBJ},
+    {"stl", "STL mesh", ".stl", "model/stl", STUDIO_EXPORT_MESH, false, ORI_MESH_STL},
+    {"ply", "PLY mesh", ".ply", "text/plain", STUDIO_EXPORT_MESH, false, ORI_MESH_PLY},
+    {"gltf", "glTF mesh", ".gltf", "model/gltf+json", STUDIO_EXPORT_MESH, true, ORI_MESH_GLTF},
+    {"glb", "GLB mesh", ".glb", "model/gltf-binary", STUDIO_EXPORT_MESH, true, ORI_MESH_GLB},
+    // orikin animate: the whole motion as a GIF
+    {"gif", "GIF animation", ".gif", "image/gif", STUDIO_EXPORT_ANIMATION, true, 0},
 };
 
 int studio_export_format_count(void) { return (int)(sizeof formats / sizeof formats[0]); }
 const studio_export_format *studio_export_format_at(int i) { return &formats[i]; }
 
 // The document's file name with another extension ("open-corner.svg").
-static void download_name(const char *file, const char *ext, char *out, size_t size)
+void studio_download_name(const char *file, const char *ext, char *out, size_t size)
 {
     const char *base = strrchr(file, '/');
     base = base ? base + 1 : file;
@@ -818,10 +957,14 @@ void studio_api_export(studio *s, const studio_request *req, studio_response *ou
         studio_fail(out, 400, "format: one of %s", list);
         return;
     }
+    if (f->kind != STUDIO_EXPORT_DOCUMENT) {
+        studio_export_render(s, req, f, out);
+        return;
+    }
     pthread_mutex_lock(&s->lock);
     char *text = export_text(s, f->name, out);
     char name[160];
-    download_name(s->file, f->extension, name, sizeof name);
+    studio_download_name(s->file, f->extension, name, sizeof name);
     pthread_mutex_unlock(&s->lock);
     if (!text) return;
     studio_respond_text(out, 200, f->mime, text, strlen(text));

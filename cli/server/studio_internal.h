@@ -8,6 +8,7 @@
 #include <pthread.h>
 #include <stdatomic.h>
 
+#include "report.h"
 #include "studio.h"
 
 // Longest file label or path the server keeps.
@@ -40,6 +41,19 @@ void studio_model_unref(studio_model *m);
 // The mechanism of the model (created once), or NULL with the error.
 const ori_mechanism *studio_model_mechanism(studio_model *m, ori_error *error);
 
+// The state at the first contact of a motion that collides (the fold or sequence solved exactly
+// at the event's drive angle or time): what GET /api/contact shows with the colliding faces.
+typedef struct studio_contact {
+    bool has;                // a contact state was solved
+    double t;                // sequence time (a sequence) or frame fraction (a fold)
+    int fold;                // 0-based fold of a sequence (0 for a fold)
+    double drive_rad, residual;
+    double *angles;          // edge_count
+    ori_v3 *positions;       // vertex_count
+} studio_contact;
+
+void studio_contact_free(studio_contact *c);
+
 // A sequence that ran on a model: the record the API reports, and the scrubbing cache (the
 // same folds run again on a fine uniform time grid, every state exact).
 typedef struct studio_seq {
@@ -51,6 +65,8 @@ typedef struct studio_seq {
     int grid;                // cache states per fold (0 without cache)
     char *json;              // the record's JSON (as orikin sequence --json)
     size_t json_size;
+    cli_collision collision; // its self-collision check (as orikin sequence)
+    studio_contact contact;  // the state at first contact when it collides
     pthread_mutex_t lock;    // one restore at a time per record
 } studio_seq;
 
@@ -61,6 +77,13 @@ typedef struct studio_fold {
     atomic_int refs;
     studio_model *model;
     ori_motion *motion;
+    ori_motion_def def;      // as solved (its arrays below are owned)
+    double *start_angles;
+    int *locks;
+    double start_drive_rad;  // where the drive starts (exports time the motion from it)
+    cli_collision collision; // its self-collision check (as orikin fold)
+    int clean_frames;        // frames before the first contact (all of them when clean)
+    studio_contact contact;  // the state at first contact when it collides
 } studio_fold;
 
 void studio_fold_unref(studio_fold *f);
@@ -99,6 +122,7 @@ struct studio {
     bool busy;
     char job[48];
     double job_start;
+    double job_fraction;         // < 0: the running phase reports no fraction
 };
 
 // --- requests and responses ---------------------------------------------------------------
@@ -140,6 +164,10 @@ bool studio_get_int_list(json_t *o, const char *key, int *out, int cap, int *cou
 // The job slot: false (after a 409) when another long computation runs.
 bool studio_job_begin(studio *s, const char *name, studio_response *out);
 void studio_job_end(studio *s);
+// A new phase of the running job ("checking collisions"): its name and no fraction yet.
+void studio_job_phase(studio *s, const char *name);
+// An ori_progress_fn whose user pointer is the studio: the running phase's fraction done.
+bool studio_job_progress(double fraction, void *user);
 
 // A new document state after a successful edit: push the current one on the undo stack, clear
 // redo, install model (takes the reference) into the document, bump the version. Call locked.
@@ -185,22 +213,98 @@ void studio_api_sequence(studio *s, const studio_request *req, studio_response *
 void studio_api_sequence_get(studio *s, const studio_request *req, studio_response *out);
 void studio_api_sequence_at(studio *s, const studio_request *req, studio_response *out);
 void studio_api_progress(studio *s, const studio_request *req, studio_response *out);
+void studio_api_contact(studio *s, const studio_request *req, studio_response *out);
+void studio_api_collide(studio *s, const studio_request *req, studio_response *out);
+void studio_api_regularize(studio *s, const studio_request *req, studio_response *out);
+
+// How a motion is checked for self-collision (as the CLI's --no-collisions and --clearance D).
+typedef struct studio_collide_opts {
+    bool skip;
+    double clearance;  // ≥ 0, pattern length units
+} studio_collide_opts;
 
 // Run a sequence on the current document and publish it (POST /api/sequence, and the SEQ.json
-// given on the command line, whose path is label). seq is consumed. Fills out with the record
-// JSON or an error.
-void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, studio_response *out);
+// given on the command line, whose path is label), checked for self-collision as opts says.
+// seq is consumed. Fills out with the record JSON or an error.
+void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const studio_collide_opts *opts,
+                         studio_response *out);
+
+// The collider of a flat pattern at a clearance: NULL after a 400 (a bad clearance named as the
+// request field "clearance").
+ori_collider *studio_collider(const ori_pattern *p, double clearance, studio_response *out);
+
+// --- states (POST /api/collide, GET /api/export): which one, and the posed sheet -------------
+
+// A state named by a request: a document frame, an instant of the sequence, a state of the
+// computed fold, or the first contact of either.
+typedef enum studio_state_kind {
+    STUDIO_STATE_FRAME = 0, // frame (default 0)
+    STUDIO_STATE_TIME,      // t: the sequence at time T
+    STUDIO_STATE_FOLD,      // k: state k of the computed fold
+    STUDIO_STATE_CONTACT,   // contact: "fold" or "sequence"
+} studio_state_kind;
+
+typedef struct studio_state_ref {
+    studio_state_kind kind;
+    int frame, k;
+    double t;
+    bool contact_of_sequence;
+} studio_state_ref;
+
+// Read frame / t / k / contact from the query arguments (at most one); false after a 400.
+bool studio_state_ref_args(const studio_request *req, studio_state_ref *ref, studio_response *out);
+// Read them from a JSON body's fields; false after a 400.
+bool studio_state_ref_json(json_t *o, studio_state_ref *ref, studio_response *out);
+
+// A posed sheet: the pattern to draw (topology and, when flat, the crease pattern) and where
+// every vertex is, as orikin render / export / collide load it.
+typedef struct studio_state {
+    studio_model *model;     // the document's model (a reference)
+    ori_pattern *own;        // a frame's own pattern, else NULL
+    ori_mechanism *own_mech; // the mechanism of a crease-pattern frame other than 0, else NULL
+    const ori_pattern *pattern;
+    const ori_pattern *collide_pattern; // the faces collide checks: a folded frame's own (its size sets
+                             // the contact tolerance, as orikin collide), else pattern
+    bool has_flat;           // pattern is a flat crease pattern (the crease view, texture coordinates)
+    bool cp_frame;           // a crease-pattern frame of the document (render draws its creases by default)
+    bool posed;              // positions come from the kinematics (else a folded form's coordinates)
+    bool folded;             // not the flat sheet
+    int frame;               // the document frame, or -1
+    ori_v3 *positions;       // vertex_count, or NULL (an unposed crease-pattern frame)
+    double *angles;          // edge_count radians, or NULL
+    ori_rigid *poses;        // face_count, or NULL
+    char label[96];          // "frame 0", "t = 1.5", "fold state 4", "contact of the fold"
+} studio_state;
+
+// Load the state ref names (need_pose: also pose a crease-pattern frame from its fold angles, as
+// render's 3D view and collide do). False after an error response.
+bool studio_state_load(studio *s, const studio_state_ref *ref, bool need_pose, studio_state *st, studio_response *out);
+void studio_state_free(studio_state *st);
 
 // The export formats (GET /api/export?format=…): one table entry per format.
+typedef enum studio_export_kind {
+    STUDIO_EXPORT_DOCUMENT = 0, // the document or its crease pattern (fold, svg, cp, opx)
+    STUDIO_EXPORT_PICTURE,      // a picture of a state (orikin render): png, pdf, svg-picture
+    STUDIO_EXPORT_MESH,         // a mesh of a state (orikin export): obj, stl, ply, gltf, glb
+    STUDIO_EXPORT_ANIMATION,    // a motion only (orikin animate): gif
+} studio_export_kind;
+
 typedef struct studio_export_format {
-    const char *name;       // "fold", "svg", …
-    const char *label;      // button text
+    const char *name;       // "fold", "svg", "png", …
+    const char *label;      // menu text
     const char *extension;  // ".fold"
     const char *mime;
-    bool state;             // needs a folded state (images, meshes): the request names t or frame
+    studio_export_kind kind;
+    bool motion;            // can hold a whole motion (of=sequence or of=fold)
+    int render_format;      // ori_image_format or ori_mesh_format (pictures and meshes)
 } studio_export_format;
 int studio_export_format_count(void);
 const studio_export_format *studio_export_format_at(int i);
+// The document's file name with another extension ("open-corner.png"), safe in a header.
+void studio_download_name(const char *file, const char *ext, char *out, size_t size);
+// GET /api/export of a picture, mesh or animation (studio_render.c): the state named by the
+// arguments (frame, t, k, contact) or, with of=sequence / of=fold, the whole motion.
+void studio_export_render(studio *s, const studio_request *req, const studio_export_format *f, studio_response *out);
 
 // --- JSON builders: field for field what the CLI prints with --json -----------------------
 
@@ -213,12 +317,12 @@ typedef struct studio_fold_spec {
     int lock_count;
 } studio_fold_spec;
 
-// orikin fold --json.
+// orikin fold --json (col: its collision check).
 json_t *studio_json_fold(const char *file, const studio_fold_spec *spec, const ori_pattern *flat,
-                         const ori_mechanism *m, const ori_motion *mo);
-// orikin sequence --json (sequence and pattern as the CLI names them).
+                         const ori_mechanism *m, const ori_motion *mo, const cli_collision *col);
+// orikin sequence --json (sequence and pattern as the CLI names them; col: its collision check).
 json_t *studio_json_record(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
-                           int edge_count);
+                           int edge_count, const cli_collision *col);
 // orikin sequence --at T --json, as text (malloc'd; *size set): the same fields and values.
 char *studio_json_at_text(double t, int fold, double drive_rad, const double *angles_rad, int edge_count,
                           double residual, const ori_v3 *positions, int vertex_count, size_t *size);
@@ -226,8 +330,10 @@ char *studio_json_at_text(double t, int fold, double drive_rad, const double *an
 // residual, vertices_coords.
 char *studio_json_frame_text(int frame, double drive_rad, const double *angles_rad, int edge_count, double residual,
                              const ori_v3 *positions, int vertex_count, size_t *size);
-// orikin check --json.
-json_t *studio_json_check(const char *file, int frame, const ori_pattern *p);
+// orikin collide --json of one state (frame: the document frame, or -1 for a state of a
+// computed fold or sequence; cloud_spacing > 0 with cr: the cloud of proximity too).
+json_t *studio_json_collide(const char *file, int frame, bool posed, const ori_collider *c, const ori_collision_result *r,
+                            double clearance, const ori_cloud_result *cr, double cloud_spacing, double cloud_distance);
 // orikin dof --json.
 json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, int loops);
 // orikin tree --json.

@@ -71,17 +71,21 @@ static json_t *rounding_hint(const ori_pattern *flat, const ori_motion *mo)
 }
 
 json_t *studio_json_fold(const char *file, const studio_fold_spec *a, const ori_pattern *flat,
-                         const ori_mechanism *m, const ori_motion *mo)
+                         const ori_mechanism *m, const ori_motion *mo, const cli_collision *col)
 {
     int E = ori_mechanism_edge_count(m);
     ori_motion_verdict v = ori_motion_verdict_of(mo);
     ori_motion_stats st = ori_motion_stats_of(mo);
     json_t *out = json_object();
     json_object_set_new(out, "file", json_string(file));
-    json_object_set_new(out, "valid", json_boolean(v == ORI_MOTION_VALID));
-    json_object_set_new(out, "verdict", json_string(ori_motion_verdict_name(v)));
-    const char *why = ori_motion_reason(mo);
+    char hit[256];
+    cli_collision_describe(col, false, hit, sizeof hit);
+    bool collides = cli_collides(col);
+    json_object_set_new(out, "valid", json_boolean(v == ORI_MOTION_VALID && !collides));
+    json_object_set_new(out, "verdict", json_string(collides ? "collision" : ori_motion_verdict_name(v)));
+    const char *why = collides ? hit : ori_motion_reason(mo);
     json_object_set_new(out, "reason", why ? json_string(why) : json_null());
+    json_object_set_new(out, "collision", cli_collision_json(col, false));
     json_object_set_new(out, "hint", rounding_hint(flat, mo));
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
     json_object_set_new(out, "dof", json_integer(ori_motion_dof(mo)));
@@ -118,7 +122,7 @@ json_t *studio_json_fold(const char *file, const studio_fold_spec *a, const ori_
     json_object_set_new(out, "offending_edges", off);
     json_t *frames = json_array();
     double *alt = malloc(sizeof(double) * (size_t)(E + 1));
-    for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
+    for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
         json_t *fr = json_object();
         json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, f))));
         json_object_set_new(fr, "fold_angles_deg", degrees_json(ori_motion_frame_angles(mo, f), E));
@@ -155,14 +159,19 @@ static json_t *sequence_fold_json(const ori_sequence_fold *f, int i)
 }
 
 json_t *studio_json_record(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
-                           int E)
+                           int E, const cli_collision *col)
 {
     json_t *o = json_object();
+    char hit[256];
+    cli_collision_describe(col, true, hit, sizeof hit);
+    bool collides = cli_collides(col);
     json_object_set_new(o, "sequence", json_string(sequence));
     json_object_set_new(o, "pattern", json_string(pattern));
-    json_object_set_new(o, "valid", json_boolean(ori_record_verdict(r) == ORI_MOTION_VALID));
-    json_object_set_new(o, "verdict", json_string(ori_motion_verdict_name(ori_record_verdict(r))));
-    json_object_set_new(o, "reason", ori_record_reason(r) ? json_string(ori_record_reason(r)) : json_null());
+    const char *why = collides ? hit : ori_record_reason(r);
+    json_object_set_new(o, "valid", json_boolean(ori_record_verdict(r) == ORI_MOTION_VALID && !collides));
+    json_object_set_new(o, "verdict", json_string(collides ? "collision" : ori_motion_verdict_name(ori_record_verdict(r))));
+    json_object_set_new(o, "reason", why ? json_string(why) : json_null());
+    json_object_set_new(o, "collision", cli_collision_json(col, true));
     int failed = ori_record_failed_fold(r);
     json_object_set_new(o, "failed_fold", failed >= 0 ? json_integer(failed + 1) : json_null());
     json_object_set_new(o, "duration", json_integer(ori_record_completed_folds(r)));
@@ -173,7 +182,7 @@ json_t *studio_json_record(const char *sequence, const char *pattern, const ori_
     }
     json_object_set_new(o, "folds", folds);
     json_t *frames = json_array();
-    for (int f = 0; f < ori_record_frame_count(r); ++f) {
+    for (int f = 0; f < cli_collide_frames(col, ori_record_frame_count(r)); ++f) {
         json_t *fr = json_object();
         json_object_set_new(fr, "t", json_real(ori_record_frame_time(r, f)));
         json_object_set_new(fr, "fold", json_integer(ori_record_frame_fold(r, f) + 1));
@@ -315,86 +324,6 @@ char *studio_state_binary(double t, int fold, double drive_rad, double residual,
     return (char *)b;
 }
 
-// --- orikin check --json ---------------------------------------------------------------------------
-
-static json_t *count_json(ori_mv_count c)
-{
-    if (c.overflow || c.count > (uint64_t)INT64_MAX) return json_null();
-    return json_integer((json_int_t)c.count);
-}
-
-static json_t *vertex_json(const ori_pattern *p, const ori_flat_report *rep, int i, int *edges, double *sectors)
-{
-    ori_vertex_report r = ori_flat_report_vertex(rep, i);
-    int n = ori_flat_report_vertex_creases(rep, i, edges, sectors, r.degree);
-    json_t *o = json_object();
-    json_object_set_new(o, "vertex", json_integer(r.vertex));
-    json_object_set_new(o, "degree", json_integer(r.degree));
-    json_t *cr = json_array(), *sd = json_array();
-    char *letters = malloc((size_t)n + 1);
-    for (int k = 0; k < n; ++k) {
-        json_array_append_new(cr, json_integer(edges[k]));
-        json_array_append_new(sd, json_real(ori_rad_to_deg_output(sectors[k])));
-        letters[k] = ori_assignment_to_char(ori_pattern_edge(p, edges[k]).assignment);
-    }
-    letters[n] = '\0';
-    json_object_set_new(o, "creases", cr);
-    json_object_set_new(o, "assignment", json_string(letters));
-    free(letters);
-    json_object_set_new(o, "sectors_deg", sd);
-    json_object_set_new(o, "sector_sum_deg", json_real(ori_rad_to_deg_output(r.sector_sum_rad)));
-    json_object_set_new(o, "kawasaki", json_boolean(r.kawasaki));
-    json_object_set_new(o, "maekawa", r.maekawa == ORI_FLAT_UNDETERMINED ? json_null() : json_boolean(r.maekawa == ORI_FLAT_YES));
-    json_object_set_new(o, "big_little_big", json_boolean(r.big_little_big));
-    json_object_set_new(o, "mv_count", count_json(r.mv_count));
-    if (r.mv_count.overflow) json_object_set_new(o, "mv_count_overflow", json_true());
-    json_object_set_new(o, "assignment_valid", json_boolean(r.assignment_valid));
-    if (r.unassigned > 0) {
-        json_object_set_new(o, "unassigned", json_integer(r.unassigned));
-        json_object_set_new(o, "unassigned_completions", count_json(r.completions));
-    }
-    json_object_set_new(o, "cone", json_boolean(r.cone));
-    json_object_set_new(o, "flat_foldable", json_boolean(r.flat_foldable));
-    return o;
-}
-
-json_t *studio_json_check(const char *file, int frame, const ori_pattern *p)
-{
-    ori_flat_report *rep = ori_flat_check_pattern(p, NULL);
-    int nv = ori_flat_report_vertex_count(rep);
-    int max_degree = 1;
-    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
-        int d = ori_pattern_vertex_degree(p, v);
-        if (d > max_degree) max_degree = d;
-    }
-    int *edges = malloc(sizeof(int) * (size_t)max_degree);
-    double *sectors = malloc(sizeof(double) * (size_t)max_degree);
-    json_t *out = json_object();
-    json_object_set_new(out, "file", json_string(file));
-    json_object_set_new(out, "frame", json_integer(frame));
-    json_object_set_new(out, "locally_flat_foldable", json_boolean(ori_flat_report_flat_foldable(rep)));
-    json_object_set_new(out, "interior_vertices", json_integer(ori_flat_report_interior_count(rep)));
-    json_object_set_new(out, "failed_vertices", json_integer(ori_flat_report_failed_count(rep)));
-    json_t *vs = json_array();
-    for (int i = 0; i < nv; ++i) json_array_append_new(vs, vertex_json(p, rep, i, edges, sectors));
-    json_object_set_new(out, "vertices", vs);
-    json_t *viol = json_array();
-    for (int i = 0; i < ori_flat_report_violation_count(rep); ++i) {
-        ori_flat_violation x = ori_flat_report_violation(rep, i);
-        json_t *o = json_object();
-        json_object_set_new(o, "vertex", json_integer(x.vertex));
-        json_object_set_new(o, "rule", json_string(ori_flat_rule_name(x.rule)));
-        if (x.edge != ORI_NULL_INDEX) json_object_set_new(o, "edge", json_integer(x.edge));
-        json_object_set_new(o, "detail", json_string(x.detail));
-        json_array_append_new(viol, o);
-    }
-    json_object_set_new(out, "violations", viol);
-    free(edges);
-    free(sectors);
-    ori_flat_report_destroy(rep);
-    return out;
-}
-
 // --- orikin dof, tree, info, axiom --json ----------------------------------------------------
 
 json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, int loops)
@@ -490,4 +419,75 @@ json_t *studio_json_axiom(int axiom, const ori_line_set *set)
         json_array_append_new(lines, json_pack("{s:[ff],s:[ff]}", "point", l.point.x, l.point.y, "dir", l.dir.x, l.dir.y));
     }
     return json_pack("{s:i,s:o}", "axiom", axiom, "lines", lines);
+}
+
+// --- orikin collide --json ---------------------------------------------------------------------
+
+static json_t *pairs_json(const ori_collider *c, bool colliding)
+{
+    json_t *arr = json_array();
+    for (int i = 0; i < ori_collider_contact_count(c); ++i) {
+        ori_contact k = ori_collider_contact(c, i);
+        bool take = colliding ? k.collides : k.kind == ORI_CONTACT_TOUCHING;
+        if (take) json_array_append_new(arr, json_pack("[ii]", k.face_a, k.face_b));
+    }
+    return arr;
+}
+
+static const char *contact_kind_name(ori_contact_kind k)
+{
+    return k == ORI_CONTACT_PENETRATING ? "penetrating" : k == ORI_CONTACT_TOUCHING ? "touching" : "near";
+}
+
+json_t *studio_json_collide(const char *file, int frame, bool posed, const ori_collider *c, const ori_collision_result *r,
+                            double clearance, const ori_cloud_result *cr, double cloud_spacing, double cloud_distance)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "file", json_string(file));
+    json_object_set_new(o, "frame", frame >= 0 ? json_integer(frame) : json_null());
+    json_object_set_new(o, "posed", json_boolean(posed));
+    json_object_set_new(o, "faces", json_integer(ori_collider_face_count(c)));
+    json_object_set_new(o, "collides", json_boolean(r->collides));
+    json_object_set_new(o, "pairs", pairs_json(c, true));
+    json_object_set_new(o, "touching", pairs_json(c, false));
+    json_object_set_new(o, "min_clearance", isfinite(r->min_clearance) ? json_real(r->min_clearance) : json_null());
+    json_object_set_new(o, "witness", r->has_witness ? v3_json(r->witness) : json_null());
+    json_object_set_new(o, "clearance_faces", r->clearance_faces[0] >= 0
+                                                  ? json_pack("[ii]", r->clearance_faces[0], r->clearance_faces[1])
+                                                  : json_null());
+    json_object_set_new(o, "clearance", json_real(clearance));
+    json_object_set_new(o, "tolerance", json_real(r->tolerance));
+    json_t *contacts = json_array();
+    for (int i = 0; i < ori_collider_contact_count(c); ++i) {
+        ori_contact k = ori_collider_contact(c, i);
+        json_t *x = json_object();
+        json_object_set_new(x, "faces", json_pack("[ii]", k.face_a, k.face_b));
+        json_object_set_new(x, "kind", json_string(contact_kind_name(k.kind)));
+        json_object_set_new(x, "adjacent", json_boolean(k.adjacent));
+        json_object_set_new(x, "stacked", json_boolean(k.stacked));
+        json_object_set_new(x, "point", v3_json(k.point));
+        if (k.kind == ORI_CONTACT_NEAR) json_object_set_new(x, "distance", json_real(k.distance));
+        json_array_append_new(contacts, x);
+    }
+    json_object_set_new(o, "contacts", contacts);
+    json_object_set_new(o, "candidate_pairs", json_integer(r->candidate_pairs));
+    if (cr) {
+        json_t *cl = json_object();
+        json_object_set_new(cl, "spacing", json_real(cloud_spacing));
+        json_object_set_new(cl, "distance", json_real(cloud_distance));
+        json_object_set_new(cl, "points", json_integer(cr->points));
+        json_object_set_new(cl, "point_pairs", json_integer(cr->point_pairs));
+        json_object_set_new(cl, "min_distance", isfinite(cr->min_distance) ? json_real(cr->min_distance) : json_null());
+        json_t *fp = json_array();
+        for (int i = 0; i < ori_collider_cloud_pair_count(c); ++i) {
+            ori_cloud_pair p = ori_collider_cloud_pair(c, i);
+            json_array_append_new(fp, json_pack("{s:[ii],s:I,s:f}", "faces", p.face_a, p.face_b, "point_pairs",
+                                                (json_int_t)p.point_pairs, "distance", p.distance));
+        }
+        json_object_set_new(cl, "faces", fp);
+        json_object_set_new(o, "cloud", cl);
+    } else {
+        json_object_set_new(o, "cloud", json_null());
+    }
+    return o;
 }

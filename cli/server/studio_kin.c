@@ -87,6 +87,118 @@ static bool start_pose(const ori_mechanism *m, int face, bool folded, const ori_
     return true;
 }
 
+// --- self-collision of a fold or a sequence (as orikin fold / sequence check it) --------------
+
+ori_collider *studio_collider(const ori_pattern *p, double clearance, studio_response *out)
+{
+    ori_collider_def cd = ori_default_collider_def();
+    cd.pattern = p;
+    cd.clearance = clearance;
+    ori_collider *c = NULL;
+    ori_error err;
+    if (ori_collider_create(&cd, &c, &err) != ORI_OK) {
+        if (err.status == ORI_ERR_RANGE) studio_fail(out, 400, "clearance: must be a length >= 0, got %g", clearance);
+        else studio_fail_error(out, 400, &err);
+        return NULL;
+    }
+    return c;
+}
+
+// no_collisions (true: the motion is not checked) and clearance (a length >= 0) of a JSON body.
+static bool collide_opts_json(json_t *o, studio_collide_opts *c, studio_response *out)
+{
+    c->skip = false;
+    c->clearance = 0.0;
+    if (!studio_get_bool(o, "no_collisions", &c->skip, out) ||
+        !studio_get_number(o, "clearance", false, &c->clearance, NULL, out))
+        return false;
+    if (!(c->clearance >= 0.0)) {
+        studio_fail(out, 400, "clearance: must be a length >= 0, got %g", c->clearance);
+        return false;
+    }
+    return true;
+}
+
+// The same as query arguments: no_collisions=1 (or true), clearance=D.
+static bool collide_opts_args(const studio_request *req, studio_collide_opts *c, studio_response *out)
+{
+    c->skip = false;
+    c->clearance = 0.0;
+    const char *v = studio_arg_get(req, "no_collisions");
+    if (v) {
+        if (strcmp(v, "1") == 0 || strcmp(v, "true") == 0) c->skip = true;
+        else if (strcmp(v, "0") != 0 && strcmp(v, "false") != 0) {
+            studio_fail(out, 400, "no_collisions: 1 or 0");
+            return false;
+        }
+    }
+    bool has;
+    if (!parse_number_arg(req, "clearance", &c->clearance, &has, out)) return false;
+    if (!(c->clearance >= 0.0)) {
+        studio_fail(out, 400, "clearance: must be a length >= 0, got %g", c->clearance);
+        return false;
+    }
+    return true;
+}
+
+static void contact_alloc(studio_contact *c, int E, int V)
+{
+    c->angles = calloc((size_t)E + 1, sizeof(double));
+    c->positions = calloc((size_t)V + 1, sizeof(ori_v3));
+}
+
+// The state at a fold's first contact: solved from the last clean state to the event's drive
+// angle in one step, as the collision check's bisection solves it.
+static void fold_contact(const ori_mechanism *m, const ori_motion_def *def, const ori_motion *mo, const cli_collision *col,
+                         studio_contact *c)
+{
+    int E = ori_mechanism_edge_count(m), V = ori_mechanism_vertex_count(m);
+    const ori_collision_event *ev = &col->ev;
+    const double *lo = ori_motion_frame_angles(mo, ev->frame > 0 ? ev->frame - 1 : 0);
+    ori_motion_def d = *def;
+    d.start_angles_rad = lo;
+    d.has_from = false;
+    d.to_rad = ev->drive_rad;
+    d.step_rad = fabs(ev->drive_rad - lo[d.driven_edge]);
+    contact_alloc(c, E, V);
+    if (!(d.step_rad > 0.0)) {
+        memcpy(c->angles, lo, sizeof(double) * (size_t)E);
+        ori_mechanism_vertex_positions(m, lo, d.fixed_face, d.fixed_pose, c->positions);
+        c->residual = ori_mechanism_residual(m, lo);
+    } else {
+        ori_motion *x = NULL;
+        ori_error err;
+        int n = 0;
+        if (ori_motion_solve(m, &d, &x, &err) != ORI_OK || (n = ori_motion_frame_count(x)) == 0 ||
+            ori_motion_frame_drive(x, n - 1) != ev->drive_rad) {
+            ori_motion_destroy(x);
+            studio_contact_free(c);
+            return;
+        }
+        memcpy(c->angles, ori_motion_frame_angles(x, n - 1), sizeof(double) * (size_t)E);
+        ori_motion_frame_vertices(x, n - 1, c->positions);
+        c->residual = ori_motion_frame_residual(x, n - 1);
+        ori_motion_destroy(x);
+    }
+    c->has = true;
+    c->t = ev->time;
+    c->fold = 0;
+    c->drive_rad = ev->drive_rad;
+}
+
+// The state at a sequence's first contact: restored at the event's time.
+static void record_contact(const ori_mechanism *m, const ori_record *r, const cli_collision *col, studio_contact *c)
+{
+    contact_alloc(c, ori_mechanism_edge_count(m), ori_mechanism_vertex_count(m));
+    ori_error err;
+    if (ori_record_at(r, col->ev.time, c->angles, c->positions, &c->drive_rad, &c->fold, &c->residual, &err) != ORI_OK) {
+        studio_contact_free(c);
+        return;
+    }
+    c->has = true;
+    c->t = col->ev.time;
+}
+
 // --- sequence states: the scrubbing cache, or an exact restore ----------------------------------
 
 static studio_seq *seq_ref(studio *s)
@@ -324,6 +436,7 @@ typedef struct fold_request {
     studio_fold_spec spec;
     int frame;
     bool after_sequence;
+    studio_collide_opts collide;
     ori_solver solver;
     ori_linear linear;
     json_t *fix_ref, *drive_ref, *lock_ref; // borrowed from the request body
@@ -383,7 +496,7 @@ static bool resolve_fold(const ori_pattern *p, fold_request *f, studio_response 
 static bool parse_fold(json_t *o, fold_request *f, studio_response *out)
 {
     static const char *const keys[] = {"fix", "drive", "to", "step", "from", "lock", "frame", "after_sequence", "solver",
-                                       "linear", NULL};
+                                       "linear", "no_collisions", "clearance", NULL};
     memset(f, 0, sizeof *f);
     f->spec.step_deg = 10.0;
     f->fix_ref = json_object_get(o, "fix");
@@ -398,7 +511,8 @@ static bool parse_fold(json_t *o, fold_request *f, studio_response *out)
         !studio_get_number(o, "step", false, &f->spec.step_deg, NULL, out) ||
         !studio_get_number(o, "from", false, &f->spec.from_deg, &f->spec.has_from, out) ||
         !studio_get_int(o, "frame", false, &f->frame, NULL, out) ||
-        !studio_get_bool(o, "after_sequence", &f->after_sequence, out) || !parse_solver(o, &f->solver, &f->linear, out))
+        !studio_get_bool(o, "after_sequence", &f->after_sequence, out) || !parse_solver(o, &f->solver, &f->linear, out) ||
+        !collide_opts_json(o, &f->collide, out))
         return false;
     if (!(fabs(f->spec.to_deg) <= 180.0)) {
         studio_fail(out, 400, "to: %g is outside [-180, 180] degrees", f->spec.to_deg);
@@ -441,13 +555,15 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
     long version = s->version;
     copy_string(file, sizeof file, s->file);
     if (f.after_sequence) {
-        // continue from where the sequence ends (the folding manager's "add a fold")
-        if (!s->seq || ori_record_frame_count(s->seq->record) == 0) {
+        // continue from where the sequence ends (the folding manager's "add a fold"): its last
+        // clean state when it collides
+        int frames = s->seq ? cli_collide_frames(&s->seq->collision, ori_record_frame_count(s->seq->record)) : 0;
+        if (frames == 0) {
             studio_fail(out, 409, "after_sequence: no sequence has run");
             ok = false;
         } else {
             const ori_record *r = s->seq->record;
-            int last = ori_record_frame_count(r) - 1;
+            int last = frames - 1;
             int E = ori_pattern_edge_count(model->pattern), V = ori_pattern_vertex_count(model->pattern);
             angles = malloc(sizeof(double) * (size_t)(E + 1));
             coords = malloc(sizeof(ori_v3) * (size_t)(V + 1));
@@ -499,12 +615,45 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
             ok = false;
         }
     }
+    cli_collision col;
+    memset(&col, 0, sizeof col);
+    studio_contact contact;
+    memset(&contact, 0, sizeof contact);
+    if (ok && !f.collide.skip) {
+        // every step checked for self-collision, the first contact located (as orikin fold)
+        ori_collider *c = studio_collider(model->pattern, f.collide.clearance, out);
+        ok = c != NULL;
+        if (ok) {
+            studio_job_phase(s, "fold: checking collisions");
+            ori_status st = cli_collision_check_motion(c, m, &def, mo, studio_job_progress, s, &col, &err);
+            ori_collider_destroy(c);
+            if (st != ORI_OK) {
+                studio_fail_error(out, studio_status_of(st), &err);
+                ok = false;
+            }
+        }
+        if (ok && cli_collides(&col)) fold_contact(m, &def, mo, &col, &contact);
+    }
     if (ok) {
-        studio_respond_json(out, 200, studio_json_fold(file, &f.spec, model->pattern, m, mo));
+        studio_respond_json(out, 200, studio_json_fold(file, &f.spec, model->pattern, m, mo, &col));
+        int E = ori_mechanism_edge_count(m);
         studio_fold *res = calloc(1, sizeof *res);
         atomic_init(&res->refs, 1);
         res->model = studio_model_ref(model);
         res->motion = mo;
+        mo = NULL;
+        res->def = def;
+        res->start_angles = malloc(sizeof(double) * (size_t)(E + 1));
+        memcpy(res->start_angles, angles, sizeof(double) * (size_t)E);
+        res->def.start_angles_rad = res->start_angles;
+        res->locks = malloc(sizeof(int) * (size_t)(f.spec.lock_count + 1));
+        memcpy(res->locks, f.spec.locks, sizeof(int) * (size_t)f.spec.lock_count);
+        res->def.locked_edges = res->locks;
+        res->start_drive_rad = f.spec.has_from ? def.from_rad : angles[f.spec.drive];
+        res->collision = col;
+        res->clean_frames = cli_collide_frames(&col, ori_motion_frame_count(res->motion));
+        res->contact = contact;
+        memset(&contact, 0, sizeof contact);
         pthread_mutex_lock(&s->lock);
         if (s->version == version) {
             studio_fold_unref(s->fold);
@@ -514,6 +663,8 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
         pthread_mutex_unlock(&s->lock);
         studio_fold_unref(res);
     }
+    studio_contact_free(&contact);
+    ori_motion_destroy(mo);
     free(angles);
     free(coords);
     studio_model_unref(model);
@@ -537,10 +688,11 @@ void studio_api_fold_frame(studio *s, const studio_request *req, studio_response
         studio_fail(out, 409, "no fold has been computed on this document");
         return;
     }
-    int n = ori_motion_frame_count(f->motion);
+    int n = f->clean_frames;
     if (!(k_d == floor(k_d) && k_d >= 0 && k_d < n)) {
         studio_fold_unref(f);
-        studio_fail(out, 400, "k: no frame %g (the fold has frames 0 to %d)", k_d, n - 1);
+        studio_fail(out, 400, "k: no frame %g (the fold has frames 0 to %d%s)", k_d, n - 1,
+                    cli_collides(&f->collision) ? ": it collides after them" : "");
         return;
     }
     int k = (int)k_d;
@@ -618,7 +770,8 @@ static ori_record *fine_record(const studio *s, const ori_sequence *seq, const o
     return fine;
 }
 
-void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, studio_response *out)
+void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const studio_collide_opts *opts,
+                         studio_response *out)
 {
     if (!studio_job_begin(s, "sequence", out)) {
         ori_sequence_destroy(seq);
@@ -674,6 +827,22 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, studio
             ok = false;
         }
     }
+    cli_collision col;
+    memset(&col, 0, sizeof col);
+    if (ok && !opts->skip) {
+        // every step checked for self-collision, the first contact located (as orikin sequence)
+        ori_collider *c = studio_collider(model->pattern, opts->clearance, out);
+        ok = c != NULL;
+        if (ok) {
+            studio_job_phase(s, "sequence: checking collisions");
+            ori_status st = cli_collision_check_record(c, r, studio_job_progress, s, &col, &err);
+            ori_collider_destroy(c);
+            if (st != ORI_OK) {
+                studio_fail_error(out, studio_status_of(st), &err);
+                ok = false;
+            }
+        }
+    }
     if (ok) {
         studio_seq *q = calloc(1, sizeof *q);
         atomic_init(&q->refs, 1);
@@ -681,8 +850,13 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, studio
         q->model = studio_model_ref(model);
         q->sequence = seq;
         q->record = r;
-        q->json = studio_json_text(studio_json_record(name, file, seq, r, ori_mechanism_edge_count(m)), &q->json_size);
-        q->fine = fine_record(s, seq, r, m, angles, pose, &q->grid);
+        r = NULL;
+        q->collision = col;
+        if (cli_collides(&col)) record_contact(m, q->record, &col, &q->contact);
+        q->json = studio_json_text(studio_json_record(name, file, seq, q->record, ori_mechanism_edge_count(m), &col),
+                                   &q->json_size);
+        studio_job_phase(s, "sequence: states for the slider");
+        q->fine = fine_record(s, seq, q->record, m, angles, pose, &q->grid);
         seq = NULL;
         studio_respond_text(out, 200, "application/json", q->json, q->json_size);
         pthread_mutex_lock(&s->lock);
@@ -694,6 +868,7 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, studio
         pthread_mutex_unlock(&s->lock);
         studio_seq_unref(q);
     }
+    ori_record_destroy(r);
     ori_sequence_destroy(seq);
     free(angles);
     free(coords);
@@ -707,13 +882,15 @@ void studio_api_sequence(studio *s, const studio_request *req, studio_response *
         studio_fail(out, 400, "the request needs a SEQ.json body");
         return;
     }
+    studio_collide_opts opts;
+    if (!collide_opts_args(req, &opts, out)) return;
     ori_sequence *seq = NULL;
     ori_error err;
     if (ori_sequence_parse(req->body, req->body_size, &seq, &err) != ORI_OK) {
         studio_fail_error(out, 400, &err);
         return;
     }
-    studio_run_sequence(s, seq, "studio", out);
+    studio_run_sequence(s, seq, "studio", &opts, out);
 }
 
 void studio_api_sequence_get(studio *s, const studio_request *req, studio_response *out)
@@ -746,6 +923,15 @@ void studio_api_sequence_at(studio *s, const studio_request *req, studio_respons
     if (!(t >= 0.0 && t <= duration) || duration == 0.0) {
         studio_seq_unref(q);
         studio_fail(out, 400, "t: time %g is outside [0, %g]", t, duration);
+        return;
+    }
+    if (cli_collides(&q->collision) && !(t < q->collision.ev.time)) {
+        // as orikin sequence --at T: an instant before the first contact is a clean state
+        char hit[256];
+        cli_collision_describe(&q->collision, true, hit, sizeof hit);
+        double tc = q->collision.ev.time;
+        studio_seq_unref(q);
+        studio_fail(out, 409, "t: the sequence collides at t = %.9g: %s (GET /api/contact shows it)", tc, hit);
         return;
     }
     const ori_mechanism *m = q->model->mech;

@@ -6,9 +6,10 @@
 /// Functions: ori_flat_kawasaki_sum, ori_flat_kawasaki, ori_flat_maekawa,
 /// ori_flat_big_little_big, ori_flat_count_assignments, ori_flat_enumerate,
 /// ori_flat_assignment_valid, ori_flat_count_completions, ori_flat_enumerate_completions,
-/// ori_flat_rule_name, ori_flat_vertex_creases, ori_flat_check_vertex,
+/// ori_flat_rule_name, ori_flat_vertex_creases, ori_flat_check_vertex, ori_flat_snap_sectors,
 /// ori_default_flat_check_def, ori_flat_check_pattern, ori_flat_report_destroy,
 /// ori_flat_report_flat_foldable, ori_flat_report_interior_count, ori_flat_report_failed_count,
+/// ori_flat_report_within_count, ori_flat_report_max_deviation,
 /// ori_flat_report_vertex_count, ori_flat_report_vertex, ori_flat_report_vertex_creases,
 /// ori_flat_report_violation_count, ori_flat_report_violation.
 ///
@@ -112,7 +113,12 @@ typedef struct ori_vertex_report {
     ori_mv_count mv_count;   ///< Hull's C of the sectors (0 when Kawasaki fails)
     bool assignment_valid;   ///< exact test; with U creases: some completion is valid
     ori_mv_count completions; ///< valid completions of the U creases (1/0 without U creases)
-    bool flat_foldable;      ///< locally flat-foldable: not a cone and assignment_valid
+    bool flat_foldable;      ///< locally flat-foldable: not a cone and assignment_valid (possibly
+                             ///< only within the check's tolerance, see within_tolerance)
+    bool within_tolerance;   ///< fails the exact test but passes once its sectors are moved by at
+                             ///< most the check's tolerance (ori_flat_snap_sectors); the rule
+                             ///< fields then describe the snapped sectors
+    double deviation_rad;    ///< largest sector change that snapping needed (0 when exact)
 } ori_vertex_report;
 
 /// The creases of a vertex as verification sees them: edges in counter-clockwise order with F
@@ -121,8 +127,17 @@ typedef struct ori_vertex_report {
 /// at most cap entries are written. Returns the number of creases. Needs a built pattern.
 ORI_API int ori_flat_vertex_creases(const ori_pattern *pattern, int vertex, int *edges,
                                     double *sectors_rad, int cap);
-/// Check one vertex (meant for interior vertices, ori_pattern_vertex_is_interior) into *out.
+/// Check one vertex (meant for interior vertices, ori_pattern_vertex_is_interior) into *out,
+/// exactly (tolerance 0).
 ORI_API void ori_flat_check_vertex(const ori_pattern *pattern, int vertex, ori_vertex_report *out);
+
+/// The exact vertex a rounded drawing most likely meant: sectors within tolerance_rad of each
+/// other (chained in sorted order) become equal, and Kawasaki (alternating sum 0) and the flat
+/// sum 2π hold exactly, with the least squared change (closed form: two Lagrange multipliers
+/// over the equality classes). Writes n sectors to out (may alias sectors_rad) and returns the
+/// largest change (radians); returns +inf when no such vertex exists (odd n, or the classes
+/// make the two conditions contradictory).
+ORI_API double ori_flat_snap_sectors(const double *sectors_rad, int n, double tolerance_rad, double *out);
 
 /// One broken rule at one vertex. detail is a readable sentence (angles in degrees, crease
 /// edges by FOLD index).
@@ -137,10 +152,13 @@ typedef struct ori_flat_violation {
 /// Pattern-check parameters; get them from ori_default_flat_check_def().
 typedef struct ori_flat_check_def {
     bool record_vertices; ///< keep a report (and crease list) per interior vertex
+    double tolerance_rad; ///< ≥ 0: a vertex that fails only because its sectors miss Kawasaki,
+                          ///< the 2π sum or an equality by at most this is "within tolerance"
+                          ///< (flat-foldable, with its deviation); 0 = exact (rounding only)
     int internal_value;   ///< set by ori_default_flat_check_def; do not change
 } ori_flat_check_def;
 
-/// Defaults: per-vertex reports recorded.
+/// Defaults: per-vertex reports recorded, exact check (tolerance 0).
 ORI_API ori_flat_check_def ori_default_flat_check_def(void);
 
 /// Opaque result of a pattern check.
@@ -158,6 +176,10 @@ ORI_API bool ori_flat_report_flat_foldable(const ori_flat_report *report);
 ORI_API int ori_flat_report_interior_count(const ori_flat_report *report);
 /// Number of interior vertices that are not locally flat-foldable.
 ORI_API int ori_flat_report_failed_count(const ori_flat_report *report);
+/// Number of interior vertices that pass only within the check's tolerance.
+ORI_API int ori_flat_report_within_count(const ori_flat_report *report);
+/// Largest deviation (radians) of the vertices that pass within tolerance (0 when none).
+ORI_API double ori_flat_report_max_deviation(const ori_flat_report *report);
 /// Number of recorded vertex reports (the interior count, or 0 without record_vertices).
 ORI_API int ori_flat_report_vertex_count(const ori_flat_report *report);
 /// Recorded vertex report i (0 ≤ i < ori_flat_report_vertex_count) by value.

@@ -2,11 +2,13 @@
 #ifndef ORIKIN_ORIKIN_H
 #define ORIKIN_ORIKIN_H
 
+#include "actuation.h"
 #include "arrangement.h"
 #include "authoring.h"
 #include "axioms.h"
 #include "base.h"
 #include "collection.h"
+#include "collision.h"
 #include "flat.h"
 #include "fold.h"
 #include "formats.h"
@@ -14,6 +16,8 @@
 #include "kinematics.h"
 #include "math.h"
 #include "pattern.h"
+#include "regularize.h"
+#include "render.h"
 #include "sequence.h"
 #include "tolerance.h"
 

@@ -144,4 +144,201 @@
 /// unit axes for vertex loops). The sparse least-squares corrector then takes over.
 #define ORI_KIN_SWEEP_PIVOT_REL 1e-6
 
+
+// --- regularization (check --tolerance, regularize) -----------------------------------------
+
+/// A regularized vertex satisfies Kawasaki to this (|alternating sector sum|, radians).
+#define ORI_TOL_REGULARIZE_KAWASAKI_RAD 1e-12
+
+/// The rigid conditions of a regularized pattern (first- and second-order closure of the fold
+/// rates, in units of the largest rate) hold to this. Unitless.
+#define ORI_TOL_REGULARIZE_RIGID 1e-12
+
+/// regularize refuses (exit 1) when a vertex would move farther than this × the sheet's
+/// bounding-box diagonal: beyond it the drawing is not a rounded exact pattern but a
+/// different one. Unitless (relative length); --max-move overrides it.
+#define ORI_REGULARIZE_MAX_MOVE_REL 1e-3
+
+/// Weight of the fold-rate changes against the coordinate changes in regularize --rigid's
+/// least squares: small, so that the rates adapt freely and the coordinates move the least.
+/// Unitless (rates in units of the largest rate, coordinates in units of the diagonal).
+#define ORI_REGULARIZE_RATE_WEIGHT 1e-6
+
+/// Tikhonov damping of regularize's normal equations, relative to their largest diagonal entry:
+/// lets dependent (consistent) conditions factor; the iteration removes its small bias.
+#define ORI_REGULARIZE_DAMPING_REL 1e-14
+
+/// A boundary vertex whose two boundary edges turn by at most this is on a straight side and
+/// slides along it; a larger turn is a corner, which stays. Radians (rounded drawings bend
+/// straight sides by ~1e-5).
+#define ORI_REGULARIZE_BOUNDARY_STRAIGHT_RAD 1e-4
+
+/// Gauss–Newton passes over the fold rates alone (coordinates held) that measure how far the
+/// input is from rigid before regularizing.
+#define ORI_REGULARIZE_RATE_PASSES 20
+
+/// regularize's Gauss–Newton iteration counts as progressing while each step divides the
+/// largest defect by at least 1 / this; it stops after ORI_REGULARIZE_STALL_STEPS steps without
+/// progress (inconsistent conditions), and halves a step at most ORI_REGULARIZE_BACKTRACK_MAX
+/// times when it would increase the defect.
+#define ORI_REGULARIZE_PROGRESS 0.5
+#define ORI_REGULARIZE_STALL_STEPS 5
+#define ORI_REGULARIZE_BACKTRACK_MAX 30
+
+/// Once regularize's largest defect is below this, the last Newton steps weight coordinates and
+/// rates alike and start from the current state (polish): the moves left are too small to
+/// change the answer, and the disparate weights would limit the precision. Radians.
+#define ORI_REGULARIZE_POLISH 1e-8
+
+/// check: without --tolerance, failures that would all pass within this are reported as the
+/// rounding of a drawing, with a hint to use --tolerance or regularize. Radians (0.01°).
+#define ORI_FLAT_ROUNDING_HINT_RAD 1.7453292519943295e-4
+// --- rendering and mesh export (src/render, src/io/mesh_write*) ---------------------------
+
+/// Depth order: two faces whose depths at a point of their overlap in the image differ by less
+/// than this × the scene's diagonal lie in one plane (folded flat onto each other), and are
+/// ordered by stacking instead; a depth difference that changes sign by more than it over the
+/// overlap means the faces cross (they are split). Unitless (relative length).
+#define ORI_TOL_RENDER_DEPTH_REL 1e-9
+
+/// Depth order: images of two triangles overlapping by less than this × the smaller one's image
+/// area only touch (a shared edge, a vertex): no order is needed between them. Unitless.
+#define ORI_TOL_RENDER_OVERLAP_REL 1e-9
+
+/// BSP splitting: a point within this × the scene's diagonal of a face's plane lies on it.
+/// Unitless (relative length).
+#define ORI_TOL_RENDER_PLANE_REL 1e-9
+
+/// Stacking: a crease whose two faces' normals are opposite within this angle is folded flat
+/// (the faces lie on each other and the fold angle's sign says which is on top). Radians.
+#define ORI_TOL_RENDER_FLAT_FOLD_RAD 1e-6
+
+/// Thick solid: two faces joined by a crease whose normals differ by at most this angle share
+/// their offset points, and belong to one slab (a flat region of the sheet). Radians.
+#define ORI_TOL_MESH_NORMAL_RAD 1e-9
+// --- self-collision (src/collision) -------------------------------------------------------
+
+/// Two faces closer than this × the pattern's diagonal touch (contact, not a collision unless a
+/// clearance is asked for), and two faces each within this of the other's plane are coplanar
+/// layers (stacked when they overlap by a width above it). Coarser than the penetration
+/// tolerance: a state solved near a singular flat fold (±180°) is only accurate to about the
+/// square root of the solver's tolerance, and its layers must still read as touching.
+/// Unitless (relative length).
+#define ORI_TOL_CONTACT_REL 1e-6
+
+/// Faces penetrate when they cross each other along a segment longer than this × the
+/// diagonal, and a vertex within this of the other face's plane lies on it (it touches, it does
+/// not cross); along a motion, a face is above or below another when it lies beyond this from
+/// its plane. Small, so that the first contact of a motion is located to well below 1e-6°.
+/// Unitless (relative length).
+#define ORI_TOL_PENETRATION_REL 1e-9
+
+/// A face whose vertices lie off their best plane by more than this × the diagonal is not
+/// planar: bad input. Admits folded forms written with 6 significant digits (the FOLD
+/// specification's square twist is off by 1.3e-7). Unitless (relative length).
+#define ORI_TOL_FACE_PLANAR_REL 1e-5
+
+/// The penetration and contact tolerances of a state are at least this × its faces' largest
+/// distance from their own planes: a rounded folded form cannot resolve contact more finely
+/// than its rounding, and adjacent faces must not cross at their shared vertices. Unitless.
+#define ORI_COLLISION_PLANAR_SLACK 4.0
+
+/// The first contact along a motion is located by bisection on the drive angle until the
+/// bracket is this narrow: 1e-6 degree. Radians.
+#define ORI_TOL_CONTACT_DRIVE_RAD (1e-6 * 3.14159265358979323846 / 180.0)
+
+/// Two faces whose unit normals have a cross product shorter than this are parallel planes
+/// (their intersection line is not computed; coplanar ones are handled as layers). Unitless.
+#define ORI_COLLISION_PARALLEL_SIN 1e-14
+// --- actuation and dynamics (src/mechanics) -----------------------------------------------
+
+/// Fibres through the thickness of an elastoplastic hinge (even). The section's elastic
+/// stiffness and fully plastic moment are exact; the yield transition is within about
+/// 1/ORI_HINGE_LAYERS of the continuum rectangular section.
+#define ORI_HINGE_LAYERS 64
+
+/// Default bending span of a hinge across its crease when the design gives none: this many
+/// hinge thicknesses. Unitless.
+#define ORI_HINGE_SPAN_PER_THICKNESS 20.0
+
+/// Gravity classification of a hinge by gravity moment / M_p: below MINOR it is negligible,
+/// at or above 1 it is decisive (the hinge cannot hold its panels). Unitless.
+#define ORI_ACT_GRAVITY_MINOR 0.1
+
+/// A wire's centre may lie this far (× the pattern diagonal) outside its panel: on its
+/// boundary counts as inside. Unitless.
+#define ORI_ACT_WIRE_INSIDE_REL 1e-9
+
+/// A hinge needs no moment at a frame where it turns slower than this (radians of crease per
+/// radian of drive) and gravity loads it by less than this × M_p.
+#define ORI_ACT_RATE_MIN 1e-9
+
+/// Sizing tangents: the exact tangent of a state (normal equations shifted by
+/// ORI_ACT_TANGENT_SHIFT × their largest diagonal entry) is used when its loop-closure residual
+/// is below ORI_ACT_TANGENT_RESIDUAL (radians per radian of drive) and it makes a cosine of at
+/// least ORI_ACT_TANGENT_AGREE with the finite difference of the recorded states; otherwise
+/// (singular states such as the flat sheet, where it is not unique) the finite difference.
+#define ORI_ACT_TANGENT_SHIFT 1e-9
+#define ORI_ACT_TANGENT_RESIDUAL 1e-6
+#define ORI_ACT_TANGENT_AGREE 0.9
+
+/// Field schedule: the minimum-norm point of a convex hull (Wolfe's algorithm) stops when no
+/// point improves the distance by more than this × the largest point norm squared. Unitless.
+#define ORI_ACT_MINNORM_TOL 1e-13
+
+/// Optimal hinge thickness and the width range: golden-section search and bisection to this
+/// relative width of the bracket. Unitless.
+#define ORI_ACT_THICKNESS_TOL 1e-10
+
+/// Linear systems with at most this many unknowns use dense LAPACK (Cholesky); larger ones
+/// sparse CHOLMOD.
+#define ORI_MECH_DENSE_MAX 64
+
+/// Automatic time step: this many steps per shortest natural period (hinge stiffness or
+/// Lorentz moment against the lightest panel's inertia).
+#define ORI_DYN_STEPS_PER_PERIOD 64
+
+/// Implicit midpoint iteration: converged when the change of the midpoint acceleration moves
+/// the velocity by less than this × (its size + the velocity scale). Unitless.
+#define ORI_DYN_ITER_TOL 1e-14
+/// With constraints the midpoint acceleration is only as exact as the constrained solve (about
+/// ORI_DYN_ALM_PENALTY × machine epsilon): an iteration that stops improving below this × the
+/// velocity scale has converged. Unitless.
+#define ORI_DYN_ITER_STALL 1e-8
+/// … "stops improving": the change shrank by less than this factor over the last iteration.
+#define ORI_DYN_ITER_STALL_RATIO 0.5
+/// Iteration budget per step; a step that does not converge is halved.
+#define ORI_DYN_ITER_MAX 60
+/// A step whose iteration does not converge is halved at most this many times; at the smallest
+/// step the iterate that changed least is taken (explicit midpoint), as at a singular start.
+#define ORI_DYN_MAX_HALVINGS 3
+
+/// Augmented Lagrangian: penalty = this × the largest diagonal entry of the mass matrix, and
+/// the multiplier iteration stops when the constraint residual is below
+/// ORI_DYN_ALM_TOL × (its right-hand side + 1) or after ORI_DYN_ALM_MAX iterations.
+#define ORI_DYN_ALM_PENALTY 1e6
+#define ORI_DYN_ALM_TOL 1e-13
+#define ORI_DYN_ALM_MAX 30
+
+/// Position projection onto the loop-closure manifold after each step: Gauss–Newton until the
+/// constraint residual (rotation vectors, radians) is below this.
+#define ORI_DYN_PROJECT_TOL 1e-14
+#define ORI_DYN_PROJECT_MAX 20
+/// Levenberg shift of that projection's normal equations, relative to their largest diagonal
+/// entry: small enough that the steps are minimum-norm wherever the Jacobian's singular values
+/// exceed 1e-6, large enough to keep the flat sheet's rank-deficient system solvable.
+#define ORI_DYN_PROJECT_SHIFT 1e-12
+
+/// A crease has reached its target (or a stop at ±180°) within this. Radians.
+#define ORI_DYN_TARGET_RAD 1e-9
+
+/// Settling for the latched angles: at most this many of the longest hinge periods, stopping
+/// once the kinetic energy is below ORI_DYN_SETTLE_KINETIC × the largest seen.
+#define ORI_DYN_SETTLE_PERIODS 40
+#define ORI_DYN_SETTLE_KINETIC 1e-16
+
+/// A simulation keeps at most this many values per history (output frames × edges): about 0.4 GB
+/// for its angles, currents and plastic rotations.
+#define ORI_DYN_MAX_FRAME_VALUES 2e7
+
 #endif

@@ -58,16 +58,102 @@ int ori_flat_vertex_creases(const ori_pattern *p, int v, int *out_edges, double 
     return count;
 }
 
+// --- snapping a rounded vertex to the exact one it means ----------------------------------
+
+double ori_flat_snap_sectors(const double *s, int n, double tol, double *out)
+{
+    ORI_ASSERT((s || n == 0) && out && n >= 0 && tol >= 0.0);
+    if (n == 0) return 0.0;
+    if (n % 2 != 0) return INFINITY;
+    _Alignas(16) unsigned char stack[ORI__FLAT_STACK_DEGREE * (3 * sizeof(int) + 3 * sizeof(double)) + 64];
+    ori__flat_ws ws;
+    ori__flat_ws_begin(&ws, stack, sizeof stack, (size_t)n * (3 * sizeof(int) + 3 * sizeof(double)) + 64);
+    int *order = ori__flat_ws_take(&ws, sizeof(int) * (size_t)n);
+    int *cls = ori__flat_ws_take(&ws, sizeof(int) * (size_t)n);
+    int *cn = ori__flat_ws_take(&ws, sizeof(int) * (size_t)n);  // class sizes
+    double *ce = ori__flat_ws_take(&ws, sizeof(double) * (size_t)n); // class sign sums e_c
+    double *ca = ori__flat_ws_take(&ws, sizeof(double) * (size_t)n); // class sector sums a_c
+    double *orig = ori__flat_ws_take(&ws, sizeof(double) * (size_t)n);
+    memcpy(orig, s, sizeof(double) * (size_t)n);
+    // Insertion sort of the sector indices by value (degrees are small).
+    for (int i = 0; i < n; ++i) {
+        int j = i;
+        while (j > 0 && orig[order[j - 1]] > orig[i]) {
+            order[j] = order[j - 1];
+            --j;
+        }
+        order[j] = i;
+    }
+    // Equality classes: a gap above tol in the sorted values starts a new class.
+    int classes = 0;
+    for (int k = 0; k < n; ++k) {
+        int i = order[k];
+        if (k == 0 || orig[i] - orig[order[k - 1]] > tol) {
+            cn[classes] = 0;
+            ce[classes] = 0.0;
+            ca[classes] = 0.0;
+            classes++;
+        }
+        int c = classes - 1;
+        cls[i] = c;
+        cn[c]++;
+        ce[c] += (i % 2 == 0) ? 1.0 : -1.0;
+        ca[c] += orig[i];
+    }
+    // β_c = m_c + p·e_c/n_c + q minimises Σ (β − α)² subject to Σ e_c β_c = 0 (Kawasaki) and
+    // Σ n_c β_c = 2π. The 2 × 2 system is singular exactly when e_c/n_c is the same for every
+    // class (integers: decided exactly); then Kawasaki either always holds (ratio 0) or never.
+    bool proportional = true;
+    for (int c = 1; c < classes && proportional; ++c)
+        proportional = (long)ce[c] * cn[0] == (long)ce[0] * cn[c];
+    double E2 = 0.0, E1 = 0.0, K = 0.0, S = 0.0;
+    for (int c = 0; c < classes; ++c) {
+        E2 += ce[c] * ce[c] / cn[c];
+        E1 += ce[c];
+        K += ce[c] * (ca[c] / cn[c]);
+        S += ca[c];
+    }
+    double p = 0.0, q = 0.0, worst = 0.0;
+    if (proportional) {
+        if (ce[0] != 0.0) {
+            worst = INFINITY;
+            goto done;
+        }
+        q = (2.0 * ORI_PI - S) / n;
+    } else {
+        double D = E2 * n - E1 * E1;
+        double r1 = -K, r2 = 2.0 * ORI_PI - S;
+        p = (r1 * n - E1 * r2) / D;
+        q = (E2 * r2 - E1 * r1) / D;
+    }
+    for (int i = 0; i < n; ++i) {
+        int c = cls[i];
+        double b = ca[c] / cn[c] + p * ce[c] / cn[c] + q;
+        if (!(b > 0.0)) {
+            worst = INFINITY;
+            goto done;
+        }
+        double d = fabs(b - orig[i]);
+        if (d > worst) worst = d;
+        out[i] = b;
+    }
+done:
+    if (!isfinite(worst)) memcpy(out, orig, sizeof(double) * (size_t)n);
+    ori__flat_ws_end(&ws);
+    return worst;
+}
+
 // Check vertex v; its creases and sectors are left in edges_out / sectors_out (capacity = the
-// vertex degree).
-static void check_vertex(const ori_pattern *p, int v, int *edges_out, double *sectors_out,
+// vertex degree). A vertex that fails exactly is checked again on its snapped sectors when
+// tol > 0 (within tolerance when that passes and the snap moved no sector by more than tol).
+static void check_vertex(const ori_pattern *p, int v, int *edges_out, double *sectors_out, double tol,
                          ori_vertex_report *r)
 {
     int n_all = ori_pattern_vertex_degree(p, v);
-    _Alignas(16) unsigned char stack[ORI__FLAT_STACK_DEGREE * (sizeof(int) + sizeof(double) + sizeof(ori_assignment)) + 64];
+    _Alignas(16) unsigned char stack[ORI__FLAT_STACK_DEGREE * (sizeof(int) + 2 * sizeof(double) + sizeof(ori_assignment)) + 96];
     ori__flat_ws ws;
     ori__flat_ws_begin(&ws, stack, sizeof stack,
-                       (size_t)n_all * (sizeof(int) + sizeof(double) + sizeof(ori_assignment)) + 64);
+                       (size_t)n_all * (sizeof(int) + 2 * sizeof(double) + sizeof(ori_assignment)) + 96);
     int *edges = ori__flat_ws_take(&ws, sizeof(int) * (size_t)n_all);
     double *sectors = ori__flat_ws_take(&ws, sizeof(double) * (size_t)n_all);
     ori_assignment *a = ori__flat_ws_take(&ws, sizeof(ori_assignment) * (size_t)n_all);
@@ -82,6 +168,26 @@ static void check_vertex(const ori_pattern *p, int v, int *edges_out, double *se
     }
     ori__flat_vertex_report(sectors_out, a, n, sum, r);
     r->vertex = v;
+    r->within_tolerance = false;
+    r->deviation_rad = 0.0;
+    if (!r->flat_foldable && tol > 0.0 && n <= n_all) {
+        double *snapped = ori__flat_ws_take(&ws, sizeof(double) * (size_t)(n + 1));
+        double dev = ori_flat_snap_sectors(sectors_out, n, tol, snapped);
+        if (dev <= tol) {
+            ori_vertex_report rs;
+            ori__flat_vertex_report(snapped, a, n, 2.0 * ORI_PI, &rs);
+            if (rs.flat_foldable) {
+                // Keep what was measured (sectors, alternating sum, sector sum) and the rule
+                // answers of the exact vertex the drawing means.
+                rs.vertex = v;
+                rs.kawasaki_rad = r->kawasaki_rad;
+                rs.sector_sum_rad = r->sector_sum_rad;
+                rs.within_tolerance = true;
+                rs.deviation_rad = dev;
+                *r = rs;
+            }
+        }
+    }
     ori__flat_ws_end(&ws);
 }
 
@@ -94,7 +200,7 @@ void ori_flat_check_vertex(const ori_pattern *p, int v, ori_vertex_report *out)
     ori__flat_ws_begin(&ws, stack, sizeof stack, (size_t)n * (sizeof(int) + sizeof(double)) + 32);
     int *edges = ori__flat_ws_take(&ws, sizeof(int) * (size_t)n);
     double *sectors = ori__flat_ws_take(&ws, sizeof(double) * (size_t)n);
-    check_vertex(p, v, edges, sectors, out);
+    check_vertex(p, v, edges, sectors, 0.0, out);
     ori__flat_ws_end(&ws);
 }
 
@@ -103,6 +209,8 @@ void ori_flat_check_vertex(const ori_pattern *p, int v, ori_vertex_report *out)
 struct ori_flat_report {
     int interior;
     int failed;
+    int within;                      // vertices flat-foldable only within the tolerance
+    double max_deviation;            // largest deviation among those
     int vertex_count;                // recorded vertex reports
     ori_vertex_report *vertices;
     int *crease_offsets;             // vertex_count + 1 entries (CSR into creases / sectors)
@@ -116,6 +224,7 @@ ori_flat_check_def ori_default_flat_check_def(void)
 {
     ori_flat_check_def def;
     def.record_vertices = true;
+    def.tolerance_rad = 0.0;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
@@ -208,6 +317,7 @@ ori_flat_report *ori_flat_check_pattern(const ori_pattern *p, const ori_flat_che
     ori_flat_check_def defaults = ori_default_flat_check_def();
     if (!def) def = &defaults;
     ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT(def->tolerance_rad >= 0.0);
     ori_flat_report *rep = ori__calloc(1, sizeof *rep);
     int max_degree = 0;
     for (int v = 0; v < p->vertex_count; ++v) {
@@ -235,8 +345,12 @@ ori_flat_report *ori_flat_check_pattern(const ori_pattern *p, const ori_flat_che
     for (int v = 0; v < p->vertex_count; ++v) {
         if (!ori_pattern_vertex_is_interior(p, v)) continue;
         ori_vertex_report r;
-        check_vertex(p, v, edges, sectors, &r);
+        check_vertex(p, v, edges, sectors, def->tolerance_rad, &r);
         rep->interior++;
+        if (r.within_tolerance) {
+            rep->within++;
+            if (r.deviation_rad > rep->max_deviation) rep->max_deviation = r.deviation_rad;
+        }
         if (!r.flat_foldable) {
             rep->failed++;
             record_violations(rep, p, &r, edges, sectors);
@@ -284,6 +398,18 @@ int ori_flat_report_failed_count(const ori_flat_report *rep)
 {
     ORI_ASSERT(rep);
     return rep->failed;
+}
+
+int ori_flat_report_within_count(const ori_flat_report *rep)
+{
+    ORI_ASSERT(rep);
+    return rep->within;
+}
+
+double ori_flat_report_max_deviation(const ori_flat_report *rep)
+{
+    ORI_ASSERT(rep);
+    return rep->max_deviation;
 }
 
 int ori_flat_report_vertex_count(const ori_flat_report *rep)

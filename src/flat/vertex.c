@@ -673,4 +673,6 @@ void ori__flat_vertex_report(const double *s, const ori_assignment *a, int n, do
         r->assignment_valid = r->completions.count > 0 || r->completions.overflow;
     }
     r->flat_foldable = !r->cone && r->assignment_valid;
+    r->within_tolerance = false;
+    r->deviation_rad = 0.0;
 }

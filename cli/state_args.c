@@ -1,0 +1,585 @@
+// State selection: the options naming a state (a FOLD frame, a fold, a sequence instant), the
+// posed sheet they give, and the frames of a motion. See state_args.h.
+#include "state_args.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "progress.h"
+
+static const char *const fold_options[] = {"--fix", "--drive", "--to", "--from", "--step", "--lock", "--solver", "--linear"};
+
+void cli_state_args_init(cli_state_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->frame = 0;
+    a->source = CLI_STATE_FRAME;
+}
+
+static bool is_fold_option(const char *o)
+{
+    for (size_t k = 0; k < sizeof fold_options / sizeof fold_options[0]; ++k)
+        if (strcmp(o, fold_options[k]) == 0) return true;
+    return false;
+}
+
+int cli_state_option(const char *cmd, int argc, char **argv, int *i, cli_state_args *a, int *rc)
+{
+    const char *o = argv[*i];
+    *rc = CLI_EXIT_OK;
+    if (strcmp(o, "--frame") == 0) {
+        if (a->has_frame) {
+            *rc = cli_usage(cmd, "--frame given twice");
+            return -1;
+        }
+        if ((*rc = cli_option_frame(cmd, argc, argv, i, &a->frame)) != CLI_EXIT_OK) return -1;
+        a->has_frame = true;
+        return 1;
+    }
+    if (strcmp(o, "--at") == 0) {
+        if (a->has_at) {
+            *rc = cli_usage(cmd, "--at given twice");
+            return -1;
+        }
+        const char *v = cli_option_value(cmd, argc, argv, i);
+        if (!v) {
+            *rc = CLI_EXIT_USAGE;
+            return -1;
+        }
+        if (!cli_parse_double(v, &a->at) || a->at < 0.0) {
+            *rc = cli_usage(cmd, "--at needs a sequence time T >= 0, got '%s'", v);
+            return -1;
+        }
+        a->has_at = true;
+        return 1;
+    }
+    if (is_fold_option(o)) {
+        for (int k = 2; k < a->fold_argc; k += 2)
+            if (strcmp(a->fold_argv[k], o) == 0) {
+                *rc = cli_usage(cmd, "%s given twice", o);
+                return -1;
+            }
+        const char *v = cli_option_value(cmd, argc, argv, i);
+        if (!v) {
+            *rc = CLI_EXIT_USAGE;
+            return -1;
+        }
+        if (a->fold_argc == 0) a->fold_argc = 2; // [0] = command, [1] = IN, filled by finish
+        if (a->fold_argc + 2 > CLI_STATE_MAX_FOLD_ARGS) {
+            *rc = cli_usage(cmd, "too many fold options");
+            return -1;
+        }
+        a->fold_argv[a->fold_argc++] = (char *)o;
+        a->fold_argv[a->fold_argc++] = (char *)v;
+        return 1;
+    }
+    if ((o[0] != '-' || o[1] == '\0') && !a->path) {
+        a->path = o;
+        return 1;
+    }
+    return 0;
+}
+
+static bool ends_with_ci(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    if (n < k) return false;
+    for (size_t i = 0; i < k; ++i)
+        if (tolower((unsigned char)s[n - k + i]) != suffix[i]) return false;
+    return true;
+}
+
+// A fold sequence is a JSON object with "folds"; anything else goes to the FOLD reader (which
+// reports what is wrong with it).
+static bool is_sequence_file(const char *path)
+{
+    if (ends_with_ci(path, ".fold")) return false;
+    json_error_t jerr;
+    json_t *root = json_load_file(path, 0, &jerr);
+    bool seq = root && json_is_object(root) && json_object_get(root, "folds") != NULL;
+    json_decref(root);
+    return seq;
+}
+
+int cli_state_finish(const char *cmd, cli_state_args *a)
+{
+    if (!a->path) return cli_usage(cmd, "missing IN (a FOLD file or a fold sequence SEQ.json)");
+    if (is_sequence_file(a->path)) {
+        if (a->has_frame) return cli_usage(cmd, "--frame is for FOLD files (a sequence names its own start frame)");
+        if (a->fold_argc) return cli_usage(cmd, "fold options are for FOLD files (a sequence lists its folds)");
+        a->source = CLI_STATE_SEQUENCE;
+        return CLI_EXIT_OK;
+    }
+    if (a->has_at) return cli_usage(cmd, "--at is for fold sequences (SEQ.json)");
+    if (!a->fold_argc) {
+        a->source = CLI_STATE_FRAME;
+        return CLI_EXIT_OK;
+    }
+    // The fold options as `orikin fold` takes them (with --frame: the fold's start frame).
+    a->fold_argv[0] = (char *)cmd;
+    a->fold_argv[1] = (char *)a->path;
+    int n = a->fold_argc;
+    if (a->has_frame) {
+        if (n + 2 > CLI_STATE_MAX_FOLD_ARGS) return cli_usage(cmd, "too many fold options");
+        snprintf(a->frame_text, sizeof a->frame_text, "%d", a->frame);
+        a->fold_argv[n++] = (char *)"--frame";
+        a->fold_argv[n++] = a->frame_text;
+    }
+    int rc = cli_fold_parse(cmd, n, a->fold_argv, false, &a->fold);
+    if (rc != CLI_EXIT_OK) return rc;
+    a->source = CLI_STATE_FOLD;
+    return CLI_EXIT_OK;
+}
+
+// --- loading ----------------------------------------------------------------------------------
+
+void cli_state_free(cli_state *s)
+{
+    ori_motion_destroy(s->motion);
+    ori_record_destroy(s->record);
+    ori_sequence_destroy(s->seq);
+    if (s->has_kin) {
+        // The pattern and the mechanism belong to kin.
+        cli_kin_free(&s->kin);
+    } else {
+        ori_mechanism_destroy(s->mech);
+        ori_pattern_destroy(s->pattern);
+        ori_fold_destroy(s->doc);
+    }
+    free(s->pattern_path);
+    free(s->positions);
+    free(s->poses);
+    free(s->angles);
+    memset(s, 0, sizeof *s);
+}
+
+ori_state_view cli_state_view(const cli_state *s)
+{
+    ori_state_view v = {s->pattern, s->positions, s->angles};
+    return v;
+}
+
+static void *xcalloc(size_t n, size_t size) { return calloc(n ? n : 1, size); }
+
+// Face poses from world positions (rigid fit of every face), or NULL when some face is not rigid.
+static ori_rigid *poses_from_positions(const ori_mechanism *m, const ori_v3 *pos)
+{
+    if (!m) return NULL;
+    int nf = ori_mechanism_face_count(m);
+    ori_rigid *p = xcalloc((size_t)nf, sizeof *p);
+    for (int f = 0; f < nf; ++f) {
+        ori_error err;
+        if (ori_mechanism_face_pose_from_coords(m, f, pos, &p[f], &err) != ORI_OK) {
+            free(p);
+            return NULL;
+        }
+    }
+    return p;
+}
+
+static bool same_topology(const ori_pattern *a, const ori_pattern *b)
+{
+    return ori_pattern_vertex_count(a) == ori_pattern_vertex_count(b) && ori_pattern_edge_count(a) == ori_pattern_edge_count(b) &&
+           ori_pattern_face_count(a) == ori_pattern_face_count(b);
+}
+
+static bool is_flat_pattern(const ori_pattern *p) { return !ori_pattern_is_folded_form(p) && !ori_pattern_is_3d(p); }
+
+static int frame_error(const char *cmd, const char *path, int frame, const ori_error *err)
+{
+    char buf[512];
+    ori_error_format(err, buf, sizeof buf);
+    return cli_input_fail(cmd, path, "frame %d: %s", frame, buf);
+}
+
+static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, cli_state *s)
+{
+    ori_error err;
+    if (ori_fold_load_file(a->path, &s->doc, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
+    s->frame_count = ori_fold_frame_count(s->doc);
+    int frame = a->frame;
+    if (frame >= s->frame_count)
+        return cli_input_fail(cmd, a->path, "frame %d does not exist (frames 0 to %d)", frame, s->frame_count - 1);
+    ori_pattern *p0 = NULL, *pf = NULL;
+    if (ori_fold_get_pattern(s->doc, 0, NULL, &p0, &err) != ORI_OK)
+        return frame == 0 ? cli_input_error(cmd, a->path, &err) : frame_error(cmd, a->path, 0, &err);
+    if (frame != 0) {
+        ori_build_def bd = ori_default_build_def();
+        bd.check_planarity = false;
+        if (ori_fold_get_pattern(s->doc, frame, &bd, &pf, &err) != ORI_OK) {
+            ori_pattern_destroy(p0);
+            return frame_error(cmd, a->path, frame, &err);
+        }
+    }
+    ori_pattern *p = pf ? pf : p0;
+    snprintf(s->label, sizeof s->label, "frame %d", frame);
+    if (is_flat_pattern(p)) {
+        // A crease-pattern frame: posed from its own fold angles.
+        if (pf) ori_pattern_destroy(p0);
+        s->pattern = p;
+        s->has_flat = true;
+        s->cp_frame = true;
+        int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p), nf = ori_pattern_face_count(p);
+        s->angles = xcalloc((size_t)ne, sizeof(double));
+        for (int e = 0; e < ne; ++e) {
+            s->angles[e] = ori_pattern_edge(p, e).fold_angle_rad;
+            if (s->angles[e] != 0.0) s->folded = true;
+        }
+        if (!need_pose) return CLI_EXIT_OK;
+        s->positions = xcalloc((size_t)nv, sizeof(ori_v3));
+        s->poses = xcalloc((size_t)nf, sizeof(ori_rigid));
+        if (!s->folded) {
+            for (int v = 0; v < nv; ++v) s->positions[v] = ori_pattern_vertex(p, v);
+            for (int f = 0; f < nf; ++f) s->poses[f] = ori_rigid_identity();
+            return CLI_EXIT_OK;
+        }
+        ori_mechanism_def md = ori_default_mechanism_def();
+        md.pattern = p;
+        if (ori_mechanism_create(&md, &s->mech, &err) != ORI_OK) return frame_error(cmd, a->path, frame, &err);
+        double *closed = xcalloc((size_t)ne, sizeof(double));
+        ori_status st = ori_mechanism_pose_state(s->mech, s->angles, 0, ori_rigid_identity(), closed, s->positions,
+                                                 s->poses, &err);
+        if (st == ORI_OK) memcpy(s->angles, closed, sizeof(double) * (size_t)ne);
+        free(closed);
+        if (st == ORI_ERR_ARGUMENT)
+            return cli_input_fail(cmd, a->path,
+                                  "frame %d: its edges_foldAngle are not a folded state (the loops around the vertices do "
+                                  "not close): draw the crease pattern with --view cp, or fold it with --fix, --drive and --to",
+                                  frame);
+        if (st != ORI_OK) return frame_error(cmd, a->path, frame, &err);
+        return CLI_EXIT_OK;
+    }
+    // A folded form: drawn on frame 0's crease pattern when it is a state of it.
+    s->folded = true;
+    int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p);
+    s->positions = xcalloc((size_t)nv, sizeof(ori_v3));
+    for (int v = 0; v < nv; ++v) s->positions[v] = ori_pattern_vertex(p, v);
+    if (ori_pattern_has_fold_angles(p)) {
+        s->angles = xcalloc((size_t)ne, sizeof(double));
+        for (int e = 0; e < ne; ++e) s->angles[e] = ori_pattern_edge(p, e).fold_angle_rad;
+    }
+    if (pf && is_flat_pattern(p0) && same_topology(p0, pf)) {
+        ori_pattern_destroy(pf);
+        s->pattern = p0;
+        s->has_flat = true;
+        ori_mechanism_def md = ori_default_mechanism_def();
+        md.pattern = p0;
+        if (ori_mechanism_create(&md, &s->mech, &err) != ORI_OK) s->mech = NULL;
+        s->poses = poses_from_positions(s->mech, s->positions);
+    } else {
+        if (pf) ori_pattern_destroy(p0);
+        s->pattern = p;
+        s->has_flat = false;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
+{
+    int rc = cli_kin_load(cmd, a->fold.path, a->fold.frame, &s->kin);
+    if (rc != CLI_EXIT_OK) return rc;
+    s->has_kin = true;
+    s->pattern = s->kin.flat;
+    s->mech = s->kin.mech;
+    s->has_flat = true;
+    s->frame_count = 1;
+    ori_motion_def def;
+    if ((rc = cli_fold_def(cmd, &a->fold, &s->kin, &def)) != CLI_EXIT_OK) return rc;
+    ori_error err;
+    ori_status st = ori_motion_solve(s->mech, &def, &s->motion, &err);
+    if (st != ORI_OK) {
+        rc = cli_input_error(cmd, a->path, &err);
+        return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
+    }
+    ori_motion_verdict v = ori_motion_verdict_of(s->motion);
+    int nf = ori_motion_frame_count(s->motion);
+    if (v != ORI_MOTION_VALID || nf < 1) {
+        const char *why = ori_motion_reason(s->motion);
+        fprintf(stderr, "orikin %s: %s: the fold is %s%s%s\n", cmd, a->path, ori_motion_verdict_name(v), why ? ": " : "",
+                why ? why : "");
+        return CLI_EXIT_NEGATIVE;
+    }
+    s->start_drive_rad = a->fold.has_from ? ori_deg_to_rad(a->fold.from_deg) : s->kin.angles[a->fold.drive];
+    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
+    s->positions = xcalloc((size_t)V, sizeof(ori_v3));
+    s->poses = xcalloc((size_t)F, sizeof(ori_rigid));
+    s->angles = xcalloc((size_t)E, sizeof(double));
+    ori_motion_frame_vertices(s->motion, nf - 1, s->positions);
+    ori_motion_frame_face_poses(s->motion, nf - 1, s->poses);
+    memcpy(s->angles, ori_motion_frame_angles(s->motion, nf - 1), sizeof(double) * (size_t)E);
+    s->folded = true;
+    snprintf(s->label, sizeof s->label, "crease %d folded to %g deg", a->fold.drive, a->fold.to_deg);
+    return CLI_EXIT_OK;
+}
+
+// The pattern path of a sequence, relative to the sequence file's folder.
+static char *resolve(const char *seq_path, const char *pattern)
+{
+    const char *slash = strrchr(seq_path, '/');
+    size_t dir = (pattern[0] == '/' || !slash) ? 0 : (size_t)(slash - seq_path) + 1;
+    char *p = malloc(dir + strlen(pattern) + 1);
+    memcpy(p, seq_path, dir);
+    strcpy(p + dir, pattern);
+    return p;
+}
+
+// Face poses of a sequence state: forward kinematics from the fixed face of its fold, placed
+// where the recorded positions have it.
+static void sequence_poses(const cli_state *s, int fold, const double *angles, const ori_v3 *pos, ori_rigid *poses)
+{
+    int f = ori_sequence_fold_at(s->seq, fold).fixed_face;
+    ori_rigid g = ori_rigid_identity();
+    ori_error err;
+    if (ori_mechanism_face_pose_from_coords(s->mech, f, pos, &g, &err) != ORI_OK) g = ori_rigid_identity();
+    ori_mechanism_face_poses(s->mech, angles, f, g, poses);
+}
+
+static int load_sequence(const char *cmd, const cli_state_args *a, cli_state *s)
+{
+    ori_error err;
+    if (ori_sequence_load_file(a->path, &s->seq, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
+    s->pattern_path = resolve(a->path, ori_sequence_pattern_path(s->seq));
+    int rc = cli_kin_load(cmd, s->pattern_path, ori_sequence_frame(s->seq), &s->kin);
+    if (rc != CLI_EXIT_OK) return rc;
+    s->has_kin = true;
+    s->pattern = s->kin.flat;
+    s->mech = s->kin.mech;
+    s->has_flat = true;
+    s->frame_count = 1;
+    ori_sequence_fold first = ori_sequence_fold_at(s->seq, 0);
+    if (first.fixed_face < 0 || first.fixed_face >= ori_mechanism_face_count(s->mech))
+        return cli_input_fail(cmd, a->path, "folds 0: fix: face %d does not exist (%d faces)", first.fixed_face,
+                              ori_mechanism_face_count(s->mech));
+    ori_rigid pose;
+    if ((rc = cli_kin_fixed_pose(cmd, s->pattern_path, &s->kin, first.fixed_face, &pose)) != CLI_EXIT_OK) return rc;
+    if (ori_sequence_run(s->seq, s->mech, s->kin.angles, pose, &s->record, &err) != ORI_OK)
+        return cli_input_error(cmd, a->path, &err);
+    if (ori_record_verdict(s->record) != ORI_MOTION_VALID) {
+        const char *why = ori_record_reason(s->record);
+        fprintf(stderr, "orikin %s: %s: fold %d is %s%s%s\n", cmd, a->path, ori_record_failed_fold(s->record) + 1,
+                ori_motion_verdict_name(ori_record_verdict(s->record)), why ? ": " : "", why ? why : "");
+        return CLI_EXIT_NEGATIVE;
+    }
+    double duration = ori_record_duration(s->record);
+    double t = a->has_at ? a->at : duration;
+    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
+    s->positions = xcalloc((size_t)V, sizeof(ori_v3));
+    s->poses = xcalloc((size_t)F, sizeof(ori_rigid));
+    s->angles = xcalloc((size_t)E, sizeof(double));
+    int fold = 0;
+    ori_status st = ori_record_at(s->record, t, s->angles, s->positions, NULL, &fold, NULL, &err);
+    if (st == ORI_ERR_RANGE) return cli_usage(cmd, "--at %g is outside the sequence's time, 0 to %g", t, duration);
+    if (st != ORI_OK) return cli_input_error(cmd, a->path, &err);
+    sequence_poses(s, fold, s->angles, s->positions, s->poses);
+    s->folded = true;
+    snprintf(s->label, sizeof s->label, "t = %g", t);
+    return CLI_EXIT_OK;
+}
+
+int cli_state_load(const char *cmd, const cli_state_args *a, bool need_pose, cli_state *s)
+{
+    memset(s, 0, sizeof *s);
+    s->source = a->source;
+    s->path = a->path;
+    s->args = a;
+    int rc;
+    switch (a->source) {
+    case CLI_STATE_FOLD: rc = load_fold(cmd, a, s); break;
+    case CLI_STATE_SEQUENCE: rc = load_sequence(cmd, a, s); break;
+    case CLI_STATE_FRAME:
+    default: rc = load_frame(cmd, a, need_pose, s); break;
+    }
+    if (rc != CLI_EXIT_OK) cli_state_free(s);
+    return rc;
+}
+
+// --- motions --------------------------------------------------------------------------------
+
+void cli_motion_free(cli_motion *m)
+{
+    free(m->times);
+    free(m->positions);
+    free(m->poses);
+    free(m->angles);
+    memset(m, 0, sizeof *m);
+}
+
+static void motion_alloc(cli_motion *m, int count, int V, int F, int E, bool poses, bool angles)
+{
+    m->count = count;
+    m->vertex_count = V;
+    m->face_count = F;
+    m->edge_count = E;
+    m->times = xcalloc((size_t)count, sizeof(double));
+    m->positions = xcalloc((size_t)count * (size_t)V, sizeof(ori_v3));
+    m->poses = poses ? xcalloc((size_t)count * (size_t)F, sizeof(ori_rigid)) : NULL;
+    m->angles = angles ? xcalloc((size_t)count * (size_t)E, sizeof(double)) : NULL;
+}
+
+// A FOLD file's states: after a crease-pattern frame 0, its folded frames; otherwise every frame.
+static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_motion *m)
+{
+    ori_error err;
+    ori_pattern *p0 = NULL;
+    if (ori_fold_get_pattern(s->doc, 0, NULL, &p0, &err) != ORI_OK) return cli_input_error(cmd, s->path, &err);
+    int first = is_flat_pattern(p0) && s->frame_count > 1 ? 1 : 0;
+    ori_pattern_destroy(p0);
+    int n = s->frame_count - first;
+    if (n < 2)
+        return cli_input_fail(cmd, s->path,
+                              "it holds one state: nothing to animate (give a FOLD file with several frames, a fold "
+                              "sequence SEQ.json, or fold options)");
+    int V = ori_pattern_vertex_count(s->pattern), E = ori_pattern_edge_count(s->pattern), F = ori_pattern_face_count(s->pattern);
+    cli_motion stored;
+    memset(&stored, 0, sizeof stored);
+    motion_alloc(&stored, n, V, F, E, s->mech != NULL, true);
+    bool all_timed = true, all_angles = true;
+    ori_build_def bd = ori_default_build_def();
+    bd.check_planarity = false;
+    for (int i = 0; i < n; ++i) {
+        int k = first + i;
+        ori_pattern *p = NULL;
+        if (ori_fold_get_pattern(s->doc, k, &bd, &p, &err) != ORI_OK) {
+            cli_motion_free(&stored);
+            return frame_error(cmd, s->path, k, &err);
+        }
+        if (!same_topology(p, s->pattern)) {
+            ori_pattern_destroy(p);
+            cli_motion_free(&stored);
+            return cli_input_fail(cmd, s->path, "frame %d is not a state of the same pattern (other vertices, edges or faces)", k);
+        }
+        for (int v = 0; v < V; ++v) stored.positions[(size_t)i * V + v] = ori_pattern_vertex(p, v);
+        if (ori_pattern_has_fold_angles(p))
+            for (int e = 0; e < E; ++e) stored.angles[(size_t)i * E + e] = ori_pattern_edge(p, e).fold_angle_rad;
+        else all_angles = false;
+        ori_pattern_destroy(p);
+        char *t = ori_fold_get_custom(s->doc, k, "orikin:time");
+        double tv;
+        if (t && cli_parse_double(t, &tv)) stored.times[i] = tv;
+        else all_timed = false;
+        ori_buffer_free(t);
+        if (stored.poses) {
+            ori_rigid *pp = poses_from_positions(s->mech, stored.positions + (size_t)i * V);
+            if (pp) {
+                memcpy(stored.poses + (size_t)i * F, pp, sizeof(ori_rigid) * (size_t)F);
+                free(pp);
+            } else {
+                free(stored.poses);
+                stored.poses = NULL;
+            }
+        }
+    }
+    for (int i = 1; i < n && all_timed; ++i) all_timed = stored.times[i] > stored.times[i - 1];
+    if (!all_timed)
+        for (int i = 0; i < n; ++i) stored.times[i] = (double)i / (n - 1);
+    if (!all_angles) {
+        free(stored.angles);
+        stored.angles = NULL;
+    }
+    stored.duration = stored.times[n - 1] - stored.times[0];
+    if (samples < 2) {
+        *m = stored;
+        return CLI_EXIT_OK;
+    }
+    // Evenly spaced times, each showing the stored frame nearest to it.
+    motion_alloc(m, samples, V, F, E, stored.poses != NULL, stored.angles != NULL);
+    m->duration = stored.duration;
+    int j = 0;
+    for (int i = 0; i < samples; ++i) {
+        double t = stored.times[0] + stored.duration * i / (samples - 1);
+        while (j + 1 < n && fabs(stored.times[j + 1] - t) <= fabs(stored.times[j] - t)) j++;
+        m->times[i] = t;
+        memcpy(m->positions + (size_t)i * V, stored.positions + (size_t)j * V, sizeof(ori_v3) * (size_t)V);
+        if (m->poses) memcpy(m->poses + (size_t)i * F, stored.poses + (size_t)j * F, sizeof(ori_rigid) * (size_t)F);
+        if (m->angles) memcpy(m->angles + (size_t)i * E, stored.angles + (size_t)j * E, sizeof(double) * (size_t)E);
+    }
+    cli_motion_free(&stored);
+    return CLI_EXIT_OK;
+}
+
+static int motion_of_fold(const char *cmd, cli_state *s, const cli_state_args *a, int samples, cli_motion *m)
+{
+    const ori_motion *mo = s->motion;
+    ori_motion *resolved = NULL;
+    double to = ori_deg_to_rad(a->fold.to_deg), from = s->start_drive_rad;
+    if (samples >= 2 && to != from) {
+        // Solve again with the output steps at the animation's frames: every frame exact.
+        ori_motion_def def;
+        int rc = cli_fold_def(cmd, &a->fold, &s->kin, &def);
+        if (rc != CLI_EXIT_OK) return rc;
+        def.step_rad = fabs(to - from) / (samples - 1);
+        ori_error err;
+        if (ori_motion_solve(s->mech, &def, &resolved, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
+        if (ori_motion_verdict_of(resolved) != ORI_MOTION_VALID) {
+            ori_motion_destroy(resolved);
+            return cli_input_fail(cmd, a->path, "the fold's motion at %d frames is not valid", samples);
+        }
+        mo = resolved;
+    }
+    int n = ori_motion_frame_count(mo);
+    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
+    motion_alloc(m, n, V, F, E, true, true);
+    for (int i = 0; i < n; ++i) {
+        double d = ori_motion_frame_drive(mo, i);
+        m->times[i] = to != from ? (d - from) / (to - from) : (double)i;
+        ori_motion_frame_vertices(mo, i, m->positions + (size_t)i * V);
+        ori_motion_frame_face_poses(mo, i, m->poses + (size_t)i * F);
+        memcpy(m->angles + (size_t)i * E, ori_motion_frame_angles(mo, i), sizeof(double) * (size_t)E);
+    }
+    m->duration = m->times[n - 1] - m->times[0];
+    ori_motion_destroy(resolved);
+    return CLI_EXIT_OK;
+}
+
+static int motion_of_sequence(const char *cmd, cli_state *s, int samples, cli_motion *m)
+{
+    const ori_record *r = s->record;
+    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
+    double duration = ori_record_duration(r);
+    if (samples < 2) {
+        int n = ori_record_frame_count(r);
+        motion_alloc(m, n, V, F, E, true, true);
+        for (int i = 0; i < n; ++i) {
+            m->times[i] = ori_record_frame_time(r, i);
+            memcpy(m->positions + (size_t)i * V, ori_record_frame_vertices(r, i), sizeof(ori_v3) * (size_t)V);
+            memcpy(m->angles + (size_t)i * E, ori_record_frame_angles(r, i), sizeof(double) * (size_t)E);
+            sequence_poses(s, ori_record_frame_fold(r, i), m->angles + (size_t)i * E, m->positions + (size_t)i * V,
+                           m->poses + (size_t)i * F);
+        }
+        m->duration = duration;
+        return CLI_EXIT_OK;
+    }
+    motion_alloc(m, samples, V, F, E, true, true);
+    m->duration = duration;
+    cli_progress pr;
+    cli_progress_begin(&pr, cmd, "solving frames");
+    for (int i = 0; i < samples; ++i) {
+        double t = i == samples - 1 ? duration : duration * i / (samples - 1);
+        int fold = 0;
+        ori_error err;
+        m->times[i] = t;
+        if (ori_record_at(r, t, m->angles + (size_t)i * E, m->positions + (size_t)i * V, NULL, &fold, NULL, &err) != ORI_OK) {
+            cli_progress_end(&pr);
+            cli_motion_free(m);
+            return cli_input_error(cmd, s->path, &err);
+        }
+        sequence_poses(s, fold, m->angles + (size_t)i * E, m->positions + (size_t)i * V, m->poses + (size_t)i * F);
+        cli_progress_update(&pr, (double)(i + 1) / samples);
+    }
+    cli_progress_end(&pr);
+    return CLI_EXIT_OK;
+}
+
+int cli_state_motion(const char *cmd, cli_state *s, int samples, cli_motion *m)
+{
+    memset(m, 0, sizeof *m);
+    switch (s->source) {
+    case CLI_STATE_FOLD: return motion_of_fold(cmd, s, s->args, samples, m);
+    case CLI_STATE_SEQUENCE: return motion_of_sequence(cmd, s, samples, m);
+    case CLI_STATE_FRAME:
+    default: return motion_of_frames(cmd, s, samples, m);
+    }
+}

@@ -1,0 +1,72 @@
+/// orikin regularize: the nearest exact crease pattern to a rounded drawing. Vertices move as
+/// little as possible (least squares on the coordinates, sparse Gauss–Newton with CHOLMOD) so
+/// that every interior vertex satisfies Kawasaki exactly and, on request, so that the pattern
+/// is rigidly foldable from the flat state to second order: a vector of fold rates exists,
+/// with the signs of the assignment, whose rotations close at every vertex to first order
+/// (Σ ρ'_i u_i = 0, a reciprocal diagram) and to second order (Σ_{i<j} ρ'_i ρ'_j u_i × u_j = 0,
+/// its zero signed area: Demaine, Demaine, Huffman, Hull, Koschitz, Tachi 2016). For quad
+/// meshes of flat-foldable degree-4 vertices this is the closure of the fold-angle multipliers
+/// around every face, and it makes the whole motion exist; for other vertices it is the
+/// general second-order form. docs/verification.md explains it.
+///
+/// Functions: ori_default_regularize_def, ori_regularize.
+#ifndef ORIKIN_REGULARIZE_H
+#define ORIKIN_REGULARIZE_H
+
+#include "base.h"
+#include "pattern.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// Parameters of ori_regularize; get them from ori_default_regularize_def().
+typedef struct ori_regularize_def {
+    bool rigid;             ///< also require second-order rigid foldability from the flat state
+    double max_move_rel;    ///< refuse (result.refused) when a vertex must move farther than this
+                            ///< × the sheet's bounding-box diagonal
+    int max_iterations;     ///< Gauss–Newton iterations at most (≥ 1)
+    int internal_value;     ///< set by ori_default_regularize_def; do not change
+} ori_regularize_def;
+
+/// Defaults: Kawasaki only, max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL, 100 iterations.
+ORI_API ori_regularize_def ori_default_regularize_def(void);
+
+/// What regularization did. Displacements are relative to the sheet's bounding-box diagonal.
+typedef struct ori_regularize_result {
+    bool converged;             ///< every condition holds to its tolerance
+    bool refused;               ///< the nearest exact pattern is farther than max_move_rel
+    int odd_vertex;             ///< an interior vertex of odd degree (no move helps), or ORI_NULL_INDEX
+    int interior_vertices;      ///< interior vertices constrained
+    int moved_vertices;         ///< vertices that moved at all
+    int unknowns, equations;    ///< size of the least-squares problem
+    int iterations;             ///< Gauss–Newton iterations done
+    double max_move_rel;        ///< largest vertex displacement
+    int max_move_vertex;        ///< the vertex that moved most (ORI_NULL_INDEX when none moved)
+    double rms_move_rel;        ///< root mean square displacement over all vertices
+    double kawasaki_before_rad; ///< largest |alternating sector sum| before
+    double kawasaki_after_rad;  ///< and after (≤ ORI_TOL_REGULARIZE_KAWASAKI_RAD when converged)
+    double rigid_before;        ///< rigid only: largest first/second-order closure defect of the
+                                ///< best fold rates for the input (radians; 0 without rigid)
+    double rigid_after;         ///< and after (≤ ORI_TOL_REGULARIZE_RIGID when converged)
+    int crossing_edge;          ///< an edge that the moves made cross another (no pattern was
+                                ///< built), or ORI_NULL_INDEX
+    char crossing[160];         ///< what crosses, when crossing_edge is set
+} ori_regularize_result;
+
+/// Regularize a built flat crease pattern: a new built pattern with the same vertices, edges,
+/// assignments, fold angles, faces and names, whose vertices are moved the least (interior
+/// and free vertices in the plane, boundary vertices along their straight boundary line,
+/// corners fixed). F and J edges are not creases (their sectors merge). Fold rates for the
+/// rigid conditions start from the assignment and the targets (edges_foldAngle, else ±π).
+/// *out receives the pattern only when the result is converged, not refused and the moves
+/// keep the edges from crossing (else NULL: the result says why); destroy it with
+/// ori_pattern_destroy. Fails with ORI_ERR_ARGUMENT for a folded form or an unbuilt pattern.
+ORI_API ori_status ori_regularize(const ori_pattern *pattern, const ori_regularize_def *def,
+                                  ori_pattern **out, ori_regularize_result *result, ori_error *error);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

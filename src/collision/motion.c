@@ -1,0 +1,599 @@
+// Collision along a motion: every step from a clean state A to the next state B is checked —
+// B itself (collider.c), and the layer order of every pair of faces whose boxes swept from A to
+// B meet: the side of one face relative to the other's front, over the part of it that lies
+// over the other (narrow.c, col_face_side). A pair above at A and below at B (or the reverse)
+// passed through each other in between even when neither state shows a crossing; stacked
+// layers (coplanar, no side) keep the order they had when they came together. The first
+// colliding step is then bisected on the drive: trial states are solved through the public API
+// (ori_motion_solve from the last clean state, or ori_record_at), clean midpoints advance A
+// and its remembered orders, colliding ones become B, until B − A is below the drive tolerance.
+#include "../core/hash.h"
+#include "collision_internal.h"
+
+ori_collision_motion_def ori_default_collision_motion_def(void)
+{
+    ori_collision_motion_def d;
+    memset(&d, 0, sizeof d);
+    d.drive_tol_rad = ORI_TOL_CONTACT_DRIVE_RAD;
+    d.progress = NULL;
+    d.progress_user = NULL;
+    d.internal_value = ORI__DEF_COOKIE;
+    return d;
+}
+
+// --- remembered orders of stacked pairs: pair key → COL_SIDE_ABOVE / BELOW ------------------
+
+#define MEMO_EMPTY UINT64_MAX
+
+typedef struct memo {
+    uint64_t *key;
+    unsigned char *val;
+    int cap, n;
+} memo;
+
+static void memo_free(memo *m)
+{
+    ori__free(m->key);
+    ori__free(m->val);
+    memset(m, 0, sizeof *m);
+}
+
+static void memo_clear(memo *m)
+{
+    for (int i = 0; i < m->cap; ++i) m->key[i] = MEMO_EMPTY;
+    m->n = 0;
+}
+
+static void memo_insert(memo *m, uint64_t k, unsigned char v)
+{
+    int mask = m->cap - 1, i = (int)(ori__mix64(k) & (uint64_t)mask);
+    while (m->key[i] != MEMO_EMPTY && m->key[i] != k) i = (i + 1) & mask;
+    if (m->key[i] == MEMO_EMPTY) m->n++;
+    m->key[i] = k;
+    m->val[i] = v;
+}
+
+static void memo_put(memo *m, uint64_t k, unsigned char v)
+{
+    if (2 * (m->n + 1) > m->cap) {
+        memo old = *m;
+        m->cap = ori__hash_capacity(m->n + 1);
+        m->key = ori__alloc(sizeof(uint64_t) * (size_t)m->cap);
+        m->val = ori__alloc((size_t)m->cap);
+        memo_clear(m);
+        for (int i = 0; i < old.cap; ++i)
+            if (old.key[i] != MEMO_EMPTY) memo_insert(m, old.key[i], old.val[i]);
+        memo_free(&old);
+    }
+    memo_insert(m, k, v);
+}
+
+static col_side memo_get(const memo *m, uint64_t k)
+{
+    if (m->cap == 0) return COL_SIDE_NONE;
+    int mask = m->cap - 1, i = (int)(ori__mix64(k) & (uint64_t)mask);
+    while (m->key[i] != MEMO_EMPTY) {
+        if (m->key[i] == k) return (col_side)m->val[i];
+        i = (i + 1) & mask;
+    }
+    return COL_SIDE_NONE;
+}
+
+// --- one step --------------------------------------------------------------------------------
+
+// The geometry of a prepared state, kept for the clean state A of a step.
+typedef struct col_geomset {
+    col_geom *geom;
+    col_box *boxes;
+    const ori_v3 *pos;
+    double tol_pen, tol_touch;
+    bool valid;
+} col_geomset;
+
+typedef struct col_step {
+    ori_collider *c;
+    col_bvh bvh;     // over the swept boxes
+    col_geomset a;   // state A (valid after the first clean state)
+    col_geomset tmp; // scratch for swapping
+    col_box *swept;
+    struct tracked {
+        int a, b;
+        bool crease;  // convex faces joined by a crease: they turn about its line, never through each other
+        col_side sa;  // side of a relative to b's front at the clean state (NONE when not needed)
+        col_side qb;  // side at B from a's vertices alone (col_face_side_quick)
+    } *pairs;
+    int npairs, pair_cap;
+    memo mem, next;  // orders at the clean state A, and at B when B is clean
+} col_step;
+
+static void step_init(col_step *s, ori_collider *c)
+{
+    memset(s, 0, sizeof *s);
+    s->c = c;
+    s->a.geom = ori__alloc(sizeof(col_geom) * (size_t)c->face_count);
+    s->a.boxes = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
+    s->tmp.geom = ori__alloc(sizeof(col_geom) * (size_t)c->face_count);
+    s->tmp.boxes = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
+    s->swept = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
+}
+
+static void step_free(col_step *s)
+{
+    col_bvh_free(&s->bvh);
+    ori__free(s->a.geom);
+    ori__free(s->a.boxes);
+    ori__free(s->tmp.geom);
+    ori__free(s->tmp.boxes);
+    ori__free(s->swept);
+    ori__free(s->pairs);
+    memo_free(&s->mem);
+    memo_free(&s->next);
+}
+
+static bool collect_pair(void *user, int a, int b)
+{
+    col_step *s = user;
+    ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
+    s->pairs[s->npairs].a = a;
+    s->pairs[s->npairs].b = b;
+    s->pairs[s->npairs].crease = col_adjacency_of(s->c, a, b) == COL_ADJ_CREASE;
+    s->pairs[s->npairs].sa = COL_SIDE_NONE;
+    s->npairs++;
+    return true;
+}
+
+// Copy the checker's prepared geometry into g.
+static void geom_save(const ori_collider *c, col_geomset *g)
+{
+    memcpy(g->geom, c->geom, sizeof(col_geom) * (size_t)c->face_count);
+    memcpy(g->boxes, c->boxes, sizeof(col_box) * (size_t)c->face_count);
+    g->pos = c->pos;
+    g->tol_pen = c->tol_pen;
+    g->tol_touch = c->tol_touch;
+    g->valid = true;
+}
+
+// Exchange the checker's prepared geometry with g's (pointers only).
+static void geom_swap(ori_collider *c, col_geomset *g)
+{
+    col_geom *gm = c->geom;
+    col_box *bx = c->boxes;
+    const ori_v3 *p = c->pos;
+    double tp = c->tol_pen, tt = c->tol_touch;
+    c->geom = g->geom;
+    c->boxes = g->boxes;
+    c->pos = g->pos;
+    c->tol_pen = g->tol_pen;
+    c->tol_touch = g->tol_touch;
+    g->geom = gm;
+    g->boxes = bx;
+    g->pos = p;
+    g->tol_pen = tp;
+    g->tol_touch = tt;
+}
+
+static ori_contact first_colliding(const ori_collider *c)
+{
+    int pick = -1;
+    for (int i = 0; i < c->contact_count; ++i)
+        if (c->contacts[i].kind == ORI_CONTACT_PENETRATING) {
+            pick = i;
+            break;
+        }
+    for (int i = 0; i < c->contact_count && pick < 0; ++i)
+        if (c->contacts[i].collides) pick = i;
+    ORI_ASSERT(pick >= 0);
+    return c->contacts[pick];
+}
+
+// Check the step from the clean state a (orders s->mem) to b. On a collision *hit is set and
+// *contact tells where; the checker is left prepared at b in every case, and when b is clean,
+// s->next holds the orders at b.
+static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool *hit, ori_contact *contact,
+                             ori_error *error)
+{
+    ori_collider *c = s->c;
+    *hit = false;
+    ori_status st;
+    // A's geometry is kept from the previous step (computed here only for the first one).
+    if (!s->a.valid) {
+        if ((st = col_state_prepare(c, a, error)) != ORI_OK) return st;
+        geom_save(c, &s->a);
+    }
+    if ((st = col_state_prepare(c, b, error)) != ORI_OK) return st;
+    // One traversal of the boxes swept from A to B gives both the candidates of B's check (the
+    // pairs whose boxes at B are near) and the pairs whose layer order is compared.
+    int F = c->face_count;
+    double near = c->tol_touch > c->clearance ? c->tol_touch : c->clearance;
+    double margin = near > s->a.tol_touch ? near : s->a.tol_touch;
+    for (int f = 0; f < F; ++f) {
+        const col_box *x = &s->a.boxes[f], *y = &c->boxes[f];
+        col_box *w = &s->swept[f];
+        w->lo.x = x->lo.x < y->lo.x ? x->lo.x : y->lo.x;
+        w->lo.y = x->lo.y < y->lo.y ? x->lo.y : y->lo.y;
+        w->lo.z = x->lo.z < y->lo.z ? x->lo.z : y->lo.z;
+        w->hi.x = x->hi.x > y->hi.x ? x->hi.x : y->hi.x;
+        w->hi.y = x->hi.y > y->hi.y ? x->hi.y : y->hi.y;
+        w->hi.z = x->hi.z > y->hi.z ? x->hi.z : y->hi.z;
+    }
+    s->npairs = 0;
+    col_bvh_build(&s->bvh, s->swept, F);
+    col_bvh_self_pairs(&s->bvh, margin, collect_pair, s);
+    ori_collision_result r;
+    col_check_begin(c, &r);
+    for (int i = 0; i < s->npairs; ++i)
+        if (col_box_near(&c->boxes[s->pairs[i].a], &c->boxes[s->pairs[i].b], near))
+            col_check_pair(c, &r, false, s->pairs[i].a, s->pairs[i].b);
+    col_check_end(c, false, &r);
+    if (r.collides) {
+        *hit = true;
+        *contact = first_colliding(c);
+        return ORI_OK;
+    }
+    // Sides from the vertices alone first: a face whose vertices all lie strictly on the same
+    // side of the other's plane at both ends of the step cannot have changed sides, nor be
+    // stacked; only the other pairs need the overlap.
+    for (int i = 0; i < s->npairs; ++i)
+        s->pairs[i].qb = s->pairs[i].crease ? COL_SIDE_NONE : col_face_side_quick(c, s->pairs[i].a, s->pairs[i].b);
+    geom_swap(c, &s->a); // the checker at A
+    for (int i = 0; i < s->npairs; ++i) {
+        struct tracked *t = &s->pairs[i];
+        t->sa = COL_SIDE_NONE;
+        if (t->crease) continue;
+        col_side qa = col_face_side_quick(c, t->a, t->b);
+        if ((qa == COL_SIDE_ABOVE || qa == COL_SIDE_BELOW) && qa == t->qb) continue;
+        t->sa = col_face_side(c, t->a, t->b, NULL);
+    }
+    geom_swap(c, &s->a); // back to B
+    memo_clear(&s->next);
+    int flip = -1;
+    ori_v3 flip_point = ori_v3_make(0.0, 0.0, 0.0);
+    for (int i = 0; i < s->npairs; ++i) {
+        uint64_t key = ori__pair_key(s->pairs[i].a, s->pairs[i].b);
+        col_side was = s->pairs[i].sa == COL_SIDE_FLAT ? memo_get(&s->mem, key) : s->pairs[i].sa;
+        if (was != COL_SIDE_ABOVE && was != COL_SIDE_BELOW) continue;
+        if (s->pairs[i].qb == was) continue; // still strictly on that side: no flip, not stacked
+        ori_v3 p;
+        col_side now = col_face_side(c, s->pairs[i].a, s->pairs[i].b, &p);
+        if (now == COL_SIDE_FLAT) memo_put(&s->next, key, (unsigned char)was);
+        bool flipped = (was == COL_SIDE_ABOVE && now == COL_SIDE_BELOW) || (was == COL_SIDE_BELOW && now == COL_SIDE_ABOVE);
+        // report the first flipped pair in (face_a, face_b) order
+        bool first = flip < 0 || s->pairs[i].a < s->pairs[flip].a ||
+                     (s->pairs[i].a == s->pairs[flip].a && s->pairs[i].b < s->pairs[flip].b);
+        if (flipped && first) {
+            flip = i;
+            flip_point = p;
+        }
+    }
+    if (flip >= 0) {
+        *hit = true;
+        memset(contact, 0, sizeof *contact);
+        contact->face_a = s->pairs[flip].a;
+        contact->face_b = s->pairs[flip].b;
+        contact->kind = ORI_CONTACT_PENETRATING;
+        contact->adjacent = col_adjacency_of(c, s->pairs[flip].a, s->pairs[flip].b) != COL_ADJ_NONE;
+        contact->stacked = s->pairs[flip].sa == COL_SIDE_FLAT;
+        contact->collides = true;
+        contact->point = flip_point;
+    }
+    return ORI_OK;
+}
+
+// The clean state b (the checker is prepared at it, its positions at pos) becomes A.
+static void step_advance(col_step *s, const ori_v3 *pos)
+{
+    memo t = s->mem;
+    s->mem = s->next;
+    s->next = t;
+    geom_save(s->c, &s->a);
+    s->a.pos = pos;
+}
+
+// --- bisection -------------------------------------------------------------------------------
+
+// Where trial states come from: solve(x) fills pos (and *drive) with the state at parameter x,
+// reached from the current clean state; commit() makes the last solved state the clean one.
+typedef struct col_source {
+    ori_status (*solve)(void *user, double x, ori_v3 *pos, double *drive, ori_error *error);
+    void (*commit)(void *user);
+    void *user;
+} col_source;
+
+typedef struct bisect_out {
+    double x, drive;
+    ori_contact contact;
+    int solved;
+} bisect_out;
+
+// Bisect [lo, hi] (lo clean at pos_a with orders s->mem, hi colliding with contact hit) until
+// the drive bracket |drive(hi) − drive(lo)| is at most tol; drive_per_x converts.
+static ori_status bisect(col_step *s, const col_source *src, ori_v3 *pos_a, ori_v3 *pos_t, ori_v3 *pos_hi, double lo,
+                         double hi, double drive_hi, double drive_per_x, double tol, ori_contact hit, bisect_out *out,
+                         ori_error *error)
+{
+    out->solved = 0;
+    while (fabs(hi - lo) * drive_per_x > tol) {
+        double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi) break;
+        double drive;
+        ori_status st = src->solve(src->user, mid, pos_t, &drive, error);
+        if (st != ORI_OK) return st;
+        out->solved++;
+        bool h;
+        ori_contact k;
+        st = step_check(s, pos_a, pos_t, &h, &k, error);
+        if (st != ORI_OK) return st;
+        if (h) {
+            hi = mid;
+            drive_hi = drive;
+            hit = k;
+            memcpy(pos_hi, pos_t, sizeof(ori_v3) * (size_t)s->c->vertex_count);
+        } else {
+            lo = mid;
+            memcpy(pos_a, pos_t, sizeof(ori_v3) * (size_t)s->c->vertex_count);
+            step_advance(s, pos_a);
+            src->commit(src->user);
+        }
+    }
+    // Leave the checker with the contacts of the colliding state.
+    ori_status st = col_state_prepare(s->c, pos_hi, error);
+    if (st != ORI_OK) return st;
+    ori_collision_result r;
+    col_check_prepared(s->c, false, &r);
+    out->x = hi;
+    out->drive = drive_hi;
+    out->contact = hit;
+    return ORI_OK;
+}
+
+// --- frames of a motion or a record ------------------------------------------------------------
+
+typedef struct frames {
+    int count;
+    void (*vertices)(const void *src, int k, ori_v3 *pos);
+    double (*drive)(const void *src, int k);
+    double (*param)(const void *src, int k); // the bisection parameter of frame k
+    const void *src;
+} frames;
+
+typedef struct run_out {
+    bool collides;
+    int frame;
+    double x, drive;
+    ori_contact contact;
+    int solved;
+} run_out;
+
+// Walk the frames; on the first colliding step call prepare_bisect(k) (which also gives the
+// drive's rate of change per unit of the parameter on that step) and bisect it.
+static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collision_motion_def *check,
+                             ori_status (*prepare_bisect)(void *user, int k, double *per, ori_error *error),
+                             const col_source *src, run_out *out, ori_error *error)
+{
+    memset(out, 0, sizeof *out);
+    int V = c->vertex_count;
+    size_t bytes = sizeof(ori_v3) * (size_t)(V + 1);
+    ori_v3 *pa = ori__alloc(bytes), *pb = ori__alloc(bytes), *pt = ori__alloc(bytes);
+    col_step s;
+    step_init(&s, c);
+    ori_status st = ORI_OK;
+    if (fr->count > 0) {
+        fr->vertices(fr->src, 0, pa);
+        st = col_state_prepare(c, pa, error);
+        ori_collision_result r;
+        if (st == ORI_OK) {
+            col_check_prepared(c, false, &r);
+            geom_save(c, &s.a);
+            if (r.collides) {
+                out->collides = true;
+                out->frame = 0;
+                out->x = fr->param(fr->src, 0);
+                out->drive = fr->drive(fr->src, 0);
+                out->contact = first_colliding(c);
+            }
+        }
+    }
+    for (int k = 1; st == ORI_OK && !out->collides && k < fr->count; ++k) {
+        if (check->progress && !check->progress((double)(k - 1) / (double)(fr->count - 1), check->progress_user)) {
+            st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+            break;
+        }
+        fr->vertices(fr->src, k, pb);
+        bool hit;
+        ori_contact contact;
+        st = step_check(&s, pa, pb, &hit, &contact, error);
+        if (st != ORI_OK) break;
+        if (!hit) {
+            ori_v3 *t = pa;
+            pa = pb;
+            pb = t;
+            step_advance(&s, pa);
+            continue;
+        }
+        double x0 = fr->param(fr->src, k - 1), x1 = fr->param(fr->src, k), d1 = fr->drive(fr->src, k);
+        double per = 0.0;
+        if ((st = prepare_bisect(src->user, k, &per, error)) != ORI_OK) break;
+        bisect_out bo;
+        st = bisect(&s, src, pa, pt, pb, x0, x1, d1, per, check->drive_tol_rad, contact, &bo, error);
+        if (st != ORI_OK) break;
+        out->collides = true;
+        out->frame = k;
+        out->x = bo.x;
+        out->drive = bo.drive;
+        out->contact = bo.contact;
+        out->solved = bo.solved;
+    }
+    if (st == ORI_OK && check->progress) check->progress(1.0, check->progress_user);
+    step_free(&s);
+    ori__free(pa);
+    ori__free(pb);
+    ori__free(pt);
+    return st;
+}
+
+// --- a fold (ori_motion) ---------------------------------------------------------------------
+
+typedef struct motion_src {
+    const ori_mechanism *m;
+    const ori_motion_def *def;
+    const ori_motion *mo;
+    int edges;
+    double *lo_angles, *trial_angles;
+} motion_src;
+
+static void motion_vertices(const void *src, int k, ori_v3 *pos)
+{
+    ori_motion_frame_vertices(((const motion_src *)src)->mo, k, pos);
+}
+
+static double motion_drive(const void *src, int k) { return ori_motion_frame_drive(((const motion_src *)src)->mo, k); }
+
+static ori_status motion_prepare(void *user, int k, double *per, ori_error *error)
+{
+    motion_src *ms = user;
+    (void)error;
+    *per = 1.0; // the parameter is the drive
+    memcpy(ms->lo_angles, ori_motion_frame_angles(ms->mo, k - 1), sizeof(double) * (size_t)ms->edges);
+    return ORI_OK;
+}
+
+static ori_status motion_solve(void *user, double x, ori_v3 *pos, double *drive, ori_error *error)
+{
+    motion_src *ms = user;
+    ori_motion_def d = *ms->def;
+    double from = ms->lo_angles[d.driven_edge];
+    d.start_angles_rad = ms->lo_angles;
+    d.has_from = false;
+    d.to_rad = x;
+    d.step_rad = fabs(x - from);
+    *drive = x;
+    if (!(d.step_rad > 0.0)) {
+        memcpy(ms->trial_angles, ms->lo_angles, sizeof(double) * (size_t)ms->edges);
+        ori_mechanism_vertex_positions(ms->m, ms->lo_angles, d.fixed_face, d.fixed_pose, pos);
+        return ORI_OK;
+    }
+    ori_motion *mo = NULL;
+    ori_status st = ori_motion_solve(ms->m, &d, &mo, error);
+    if (st != ORI_OK) return st;
+    int nf = ori_motion_frame_count(mo);
+    if (nf == 0 || ori_motion_frame_drive(mo, nf - 1) != x) {
+        ori_motion_destroy(mo);
+        return ori__fail_at(error, ORI_ERR_NOT_CONVERGED, "edges_vertices", d.driven_edge,
+                            "the state at drive %.9g rad between two steps could not be solved", x);
+    }
+    memcpy(ms->trial_angles, ori_motion_frame_angles(mo, nf - 1), sizeof(double) * (size_t)ms->edges);
+    ori_motion_frame_vertices(mo, nf - 1, pos);
+    ori_motion_destroy(mo);
+    return ORI_OK;
+}
+
+static void motion_commit(void *user)
+{
+    motion_src *ms = user;
+    memcpy(ms->lo_angles, ms->trial_angles, sizeof(double) * (size_t)ms->edges);
+}
+
+ori_status ori_collision_check_motion(ori_collider *c, const ori_mechanism *m, const ori_motion_def *def,
+                                      const ori_motion *motion, const ori_collision_motion_def *check,
+                                      ori_collision_event *out, ori_error *error)
+{
+    ORI_ASSERT(c && m && def && motion && check && out && check->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT(ori_mechanism_vertex_count(m) == c->vertex_count && ori_mechanism_face_count(m) == c->face_count);
+    ori_error_clear(error);
+    memset(out, 0, sizeof *out);
+    if (!(check->drive_tol_rad > 0.0))
+        return ori__fail(error, ORI_ERR_RANGE, "the drive tolerance must be positive, got %g", check->drive_tol_rad);
+    motion_src ms = {m, def, motion, ori_mechanism_edge_count(m), NULL, NULL};
+    ms.lo_angles = ori__alloc(sizeof(double) * (size_t)(ms.edges + 1));
+    ms.trial_angles = ori__alloc(sizeof(double) * (size_t)(ms.edges + 1));
+    frames fr = {ori_motion_frame_count(motion), motion_vertices, motion_drive, motion_drive, &ms};
+    col_source src = {motion_solve, motion_commit, &ms};
+    run_out ro;
+    ori_status st = run_frames(c, &fr, check, motion_prepare, &src, &ro, error);
+    ori__free(ms.lo_angles);
+    ori__free(ms.trial_angles);
+    if (st != ORI_OK) return st;
+    if (ro.collides) {
+        out->collides = true;
+        out->frame = out->step = ro.frame;
+        out->fold = 0;
+        out->drive_rad = ro.drive;
+        double d0 = ro.frame > 0 ? ori_motion_frame_drive(motion, ro.frame - 1) : ro.drive;
+        double d1 = ori_motion_frame_drive(motion, ro.frame);
+        out->time = ro.frame == 0 ? 0.0 : (double)(ro.frame - 1) + (d1 != d0 ? (ro.drive - d0) / (d1 - d0) : 1.0);
+        out->contact = ro.contact;
+        out->states_solved = ro.solved;
+    }
+    return ORI_OK;
+}
+
+// --- a sequence (ori_record) -----------------------------------------------------------------
+
+typedef struct record_src {
+    const ori_record *r;
+    int edges, vertices;
+    double *angles;
+} record_src;
+
+static void record_vertices(const void *src, int k, ori_v3 *pos)
+{
+    const record_src *rs = src;
+    memcpy(pos, ori_record_frame_vertices(rs->r, k), sizeof(ori_v3) * (size_t)rs->vertices);
+}
+
+static double record_drive(const void *src, int k) { return ori_record_frame_drive(((const record_src *)src)->r, k); }
+static double record_time(const void *src, int k) { return ori_record_frame_time(((const record_src *)src)->r, k); }
+// Within a fold the drive is linear in the time; frame k − 1 may end the previous fold (whose
+// drive is another crease), so the rate comes from the state halfway through the step.
+static ori_status record_prepare(void *user, int k, double *per, ori_error *error)
+{
+    record_src *rs = user;
+    double t0 = ori_record_frame_time(rs->r, k - 1), t1 = ori_record_frame_time(rs->r, k);
+    *per = 0.0;
+    if (!(t1 > t0)) return ORI_OK;
+    double tm = 0.5 * (t0 + t1), dm;
+    ori_status st = ori_record_at(rs->r, tm, rs->angles, NULL, &dm, NULL, NULL, error);
+    if (st != ORI_OK) return st;
+    *per = fabs(ori_record_frame_drive(rs->r, k) - dm) / (t1 - tm);
+    return ORI_OK;
+}
+
+static ori_status record_solve(void *user, double t, ori_v3 *pos, double *drive, ori_error *error)
+{
+    record_src *rs = user;
+    return ori_record_at(rs->r, t, rs->angles, pos, drive, NULL, NULL, error);
+}
+
+static void record_commit(void *user) { (void)user; }
+
+ori_status ori_collision_check_record(ori_collider *c, const ori_record *record, const ori_collision_motion_def *check,
+                                      ori_collision_event *out, ori_error *error)
+{
+    ORI_ASSERT(c && record && check && out && check->internal_value == ORI__DEF_COOKIE);
+    ori_error_clear(error);
+    memset(out, 0, sizeof *out);
+    if (!(check->drive_tol_rad > 0.0))
+        return ori__fail(error, ORI_ERR_RANGE, "the drive tolerance must be positive, got %g", check->drive_tol_rad);
+    record_src rs = {record, c->edge_count, c->vertex_count, NULL};
+    rs.angles = ori__alloc(sizeof(double) * (size_t)(rs.edges + 1));
+    frames fr = {ori_record_frame_count(record), record_vertices, record_drive, record_time, &rs};
+    col_source src = {record_solve, record_commit, &rs};
+    run_out ro;
+    ori_status st = run_frames(c, &fr, check, record_prepare, &src, &ro, error);
+    ori__free(rs.angles);
+    if (st != ORI_OK) return st;
+    if (ro.collides) {
+        out->collides = true;
+        out->frame = ro.frame;
+        out->fold = ori_record_frame_fold(record, ro.frame);
+        // step within the fold: frames of this fold counted from its first output step
+        int first = ro.frame;
+        while (first > 1 && ori_record_frame_fold(record, first - 1) == out->fold) first--;
+        out->step = ro.frame == 0 ? 0 : ro.frame - first + 1;
+        out->drive_rad = ro.drive;
+        out->time = ro.x;
+        out->contact = ro.contact;
+        out->states_solved = ro.solved;
+    }
+    return ORI_OK;
+}

@@ -1,0 +1,636 @@
+// Regularization: the nearest exact crease pattern to a rounded drawing (include/orikin/regularize.h).
+//
+// Unknowns: the coordinates of the vertices that may move (interior and free vertices: x and y;
+// a vertex on a straight stretch of the boundary: its position along that line; corners:
+// none), scaled by the sheet's diagonal L, and, for the rigid conditions, the fold rate ρ' of
+// every crease but one (which fixes the scale of the rates), scaled by their largest start value
+// R. Equations per interior vertex with creases u_0 … u_{n−1} (unit directions, counter-
+// clockwise; F and J edges dropped):
+//   Kawasaki      K = Σ_k (−1)^k α_k = 0                     (α_k the sector from u_k to u_{k+1})
+//   first order   F = Σ_k ρ̂_k u_k = 0                       (two rows: a reciprocal diagram)
+//   second order  Q = Σ_{i<j} ρ̂_i ρ̂_j (u_i × u_j)·z = 0     (its signed area; the start crease
+//                                                             does not matter once F = 0)
+// Each Gauss–Newton step solves min ‖x̂ − x̂₀‖² + w‖ρ̂ − ρ̂_k‖² subject to the linearised
+// equations: y = W⁻¹Aᵀλ with (A W⁻¹ Aᵀ + δI) λ = A_x (x̂_k − x̂₀) − c_k, factored by CHOLMOD
+// (AAᵀ of the column-scaled A, simplicial LDLᵀ). The tiny w makes the rates cheap, so the
+// coordinates move as little as the conditions allow; δ handles dependent (consistent) rows.
+#include <cholmod.h>
+#include <orikin/regularize.h>
+
+#include "flat_internal.h"
+
+#include "../pattern/pattern_internal.h"
+
+enum { VK_FIXED = 0, VK_SLIDE = 1, VK_FREE = 2 };
+
+typedef struct reg_vertex {
+    int v;        // FOLD vertex
+    int first;    // first crease in crease_nb / crease_edge
+    int count;    // creases (even count gets a Kawasaki row)
+    int row;      // first equation row
+} reg_vertex;
+
+typedef struct reg {
+    const ori_pattern *p;
+    int nv;
+    double L, R, w_rate;
+    ori_v2 *x0, *x;      // original and current coordinates (unscaled)
+    int *kind;           // VK_*
+    ori_v2 *slide;       // unit direction for VK_SLIDE
+    int *col_x;          // first column of a vertex, or −1
+    int *col_r;          // column of a crease's rate (edge-indexed), −1 when none or the fixed one
+    double *rate;        // current scaled rates (edge-indexed; 0 for non-creases)
+    bool *is_crease;     // edge is a rate unknown or the fixed crease
+    int fixed_edge;
+    reg_vertex *iv;
+    int niv;
+    int *crease_nb, *crease_edge;
+    bool rigid;
+    bool rates_only;     // pre-pass: coordinates held, only rates move
+    bool polish;         // last steps: plain minimum-norm Newton from the current state
+    int rows, cols;
+    // triplets (row, col, value), in a fixed order every assembly
+    int nt, ct;
+    int *ti, *tj;
+    double *tx;
+    double *c;           // equation values
+    ori_v2 *dx, *x_save; // Gauss–Newton step and the state it starts from
+    double *dr, *r_save;
+} reg;
+
+static void push(reg *g, int row, int col, double val)
+{
+    if (col < 0) return;
+    if (g->nt == g->ct) {
+        int nc = g->ct ? 2 * g->ct : 1024;
+        g->ti = ori__realloc(g->ti, sizeof(int) * (size_t)nc);
+        g->tj = ori__realloc(g->tj, sizeof(int) * (size_t)nc);
+        g->tx = ori__realloc(g->tx, sizeof(double) * (size_t)nc);
+        g->ct = nc;
+    }
+    g->ti[g->nt] = row;
+    g->tj[g->nt] = col;
+    g->tx[g->nt] = val;
+    g->nt++;
+}
+
+// Entries of a gradient gx (∂/∂x̂ of vertex v, already scaled by L) in its columns.
+static void push_vertex(reg *g, int row, int v, ori_v2 grad)
+{
+    if (g->rates_only) return;
+    int c = g->col_x[v];
+    if (c < 0) return;
+    if (g->kind[v] == VK_FREE) {
+        push(g, row, c, grad.x);
+        push(g, row, c + 1, grad.y);
+    } else {
+        push(g, row, c, grad.x * g->slide[v].x + grad.y * g->slide[v].y);
+    }
+}
+
+static double cross2(ori_v2 a, ori_v2 b) { return a.x * b.y - a.y * b.x; }
+
+// Assemble the equation values c and the triplets of the Jacobian at the current state. The
+// column scaling W^{-1/2} is applied here (rate columns × 1/√w).
+static void assemble(reg *g)
+{
+    g->nt = 0;
+    double rs = 1.0 / sqrt(g->w_rate);
+    for (int a = 0; a < g->niv; ++a) {
+        const reg_vertex *V = &g->iv[a];
+        int n = V->count, v = V->v, row = V->row;
+        ori_v2 pv = g->x[v];
+        ori_v2 d[ORI__FLAT_STACK_DEGREE], u[ORI__FLAT_STACK_DEGREE];
+        double len[ORI__FLAT_STACK_DEGREE];
+        ORI_ASSERT(n <= ORI__FLAT_STACK_DEGREE);
+        for (int k = 0; k < n; ++k) {
+            ori_v2 q = g->x[g->crease_nb[V->first + k]];
+            d[k] = ori_v2_make(q.x - pv.x, q.y - pv.y);
+            len[k] = sqrt(d[k].x * d[k].x + d[k].y * d[k].y);
+            u[k] = ori_v2_make(d[k].x / len[k], d[k].y / len[k]);
+        }
+        ori_v2 gsum = {0.0, 0.0};
+        if (n % 2 == 0) {
+            double K = 0.0;
+            for (int k = 0; k < n; ++k) {
+                int k1 = (k + 1) % n;
+                double al = atan2(cross2(d[k], d[k1]), d[k].x * d[k1].x + d[k].y * d[k1].y);
+                if (al <= 0.0) al += 2.0 * ORI_PI;
+                K += (k % 2 == 0) ? al : -al;
+                double wk = (k % 2 == 0) ? -2.0 : 2.0;
+                double s = wk * g->L / (len[k] * len[k]);
+                ori_v2 gk = ori_v2_make(-d[k].y * s, d[k].x * s);
+                push_vertex(g, row, g->crease_nb[V->first + k], gk);
+                gsum.x -= gk.x;
+                gsum.y -= gk.y;
+            }
+            push_vertex(g, row, v, gsum);
+            g->c[row] = K;
+            row++;
+        }
+        if (!g->rigid) continue;
+        // First order: F = Σ ρ̂_k u_k (rows row, row + 1); second order Q (row + 2).
+        ori_v2 F = {0.0, 0.0};
+        for (int k = 0; k < n; ++k) {
+            double r = g->rate[g->crease_edge[V->first + k]];
+            F.x += r * u[k].x;
+            F.y += r * u[k].y;
+        }
+        g->c[row] = F.x;
+        g->c[row + 1] = F.y;
+        double Q = 0.0;
+        ori_v2 before = {0.0, 0.0};
+        for (int k = 0; k < n; ++k) {
+            double r = g->rate[g->crease_edge[V->first + k]];
+            Q += r * cross2(before, u[k]);
+            before.x += r * u[k].x;
+            before.y += r * u[k].y;
+        }
+        g->c[row + 2] = Q;
+        ori_v2 sx = {0.0, 0.0}, sy = {0.0, 0.0}, sq = {0.0, 0.0};
+        ori_v2 after = F; // Σ_{j>k} ρ̂_j u_j after subtracting the prefix and u_k
+        before = ori_v2_make(0.0, 0.0);
+        for (int k = 0; k < n; ++k) {
+            int e = g->crease_edge[V->first + k], nb = g->crease_nb[V->first + k];
+            double r = g->rate[e];
+            after.x -= r * u[k].x;
+            after.y -= r * u[k].y;
+            ori_v2 B = ori_v2_make(after.x - before.x, after.y - before.y);
+            // rate columns
+            if (g->col_r[e] >= 0) {
+                push(g, row, g->col_r[e], u[k].x * rs);
+                push(g, row + 1, g->col_r[e], u[k].y * rs);
+                push(g, row + 2, g->col_r[e], cross2(u[k], B) * rs);
+            }
+            // coordinates: ∂u/∂d = (I − u uᵀ)/|d|, times L for scaled coordinates
+            double s = g->L / len[k];
+            double pxx = (1.0 - u[k].x * u[k].x) * s, pxy = -u[k].x * u[k].y * s, pyy = (1.0 - u[k].y * u[k].y) * s;
+            // F_x = Σ r u_x: gradient wrt d = r (pxx, pxy); F_y: r (pxy, pyy)
+            ori_v2 gfx = ori_v2_make(r * pxx, r * pxy), gfy = ori_v2_make(r * pxy, r * pyy);
+            ori_v2 du = ori_v2_make(r * B.y, -r * B.x); // ∂Q/∂u_k
+            ori_v2 gq = ori_v2_make(pxx * du.x + pxy * du.y, pxy * du.x + pyy * du.y);
+            push_vertex(g, row, nb, gfx);
+            push_vertex(g, row + 1, nb, gfy);
+            push_vertex(g, row + 2, nb, gq);
+            sx = ori_v2_make(sx.x - gfx.x, sx.y - gfx.y);
+            sy = ori_v2_make(sy.x - gfy.x, sy.y - gfy.y);
+            sq = ori_v2_make(sq.x - gq.x, sq.y - gq.y);
+            before.x += r * u[k].x;
+            before.y += r * u[k].y;
+        }
+        push_vertex(g, row, v, sx);
+        push_vertex(g, row + 1, v, sy);
+        push_vertex(g, row + 2, v, sq);
+    }
+}
+
+static void *ss_malloc(size_t n) { return ori__alloc(n ? n : 1); }
+static void *ss_calloc(size_t n, size_t s) { return ori__calloc(n ? n : 1, s ? s : 1); }
+static void *ss_realloc(void *p, size_t n) { return ori__realloc(p, n ? n : 1); }
+static void ss_free(void *p) { ori__free(p); }
+
+// Max-norm of the equations: Kawasaki rows in radians, rigid rows scaled (rates / R).
+static void defects(const reg *g, double *kaw, double *rig)
+{
+    *kaw = 0.0;
+    *rig = 0.0;
+    for (int a = 0; a < g->niv; ++a) {
+        const reg_vertex *V = &g->iv[a];
+        int row = V->row;
+        if (V->count % 2 == 0) {
+            if (fabs(g->c[row]) > *kaw) *kaw = fabs(g->c[row]);
+            row++;
+        }
+        if (g->rigid)
+            for (int k = 0; k < 3; ++k)
+                if (fabs(g->c[row + k]) > *rig) *rig = fabs(g->c[row + k]);
+    }
+}
+
+// One Gauss–Newton step (see the file comment): the change of the coordinates and rates into
+// g->dx, g->dr (not applied). Returns false when the factorization fails.
+static bool step(reg *g, cholmod_common *cm, cholmod_factor **L)
+{
+    assemble(g);
+    if (g->rows == 0 || g->cols == 0) return true;
+    cholmod_triplet *T = cholmod_allocate_triplet((size_t)g->rows, (size_t)g->cols, (size_t)(g->nt ? g->nt : 1), 0,
+                                                  CHOLMOD_REAL, cm);
+    int *Ti = T->i, *Tj = T->j;
+    double *Tx = T->x;
+    for (int t = 0; t < g->nt; ++t) {
+        Ti[t] = g->ti[t];
+        Tj[t] = g->tj[t];
+        Tx[t] = g->tx[t];
+    }
+    T->nnz = (size_t)g->nt;
+    cholmod_sparse *A = cholmod_triplet_to_sparse(T, (size_t)g->nt, cm);
+    cholmod_free_triplet(&T, cm);
+    if (!A) return false;
+    // b = A_x (x̂_k − x̂₀) − c (coordinate columns only; the rates are anchored at the current
+    // state). A's coordinate columns are unscaled (weight 1), so A (y) uses them directly.
+    cholmod_dense *b = cholmod_zeros((size_t)g->rows, 1, CHOLMOD_REAL, cm);
+    double *bx = b->x;
+    for (int r = 0; r < g->rows; ++r) bx[r] = -g->c[r];
+    if (!g->rates_only && !g->polish) {
+        cholmod_dense *dx = cholmod_zeros((size_t)g->cols, 1, CHOLMOD_REAL, cm);
+        double *dxx = dx->x;
+        for (int v = 0; v < g->nv; ++v) {
+            int c = g->col_x[v];
+            if (c < 0) continue;
+            double ex = (g->x[v].x - g->x0[v].x) / g->L, ey = (g->x[v].y - g->x0[v].y) / g->L;
+            if (g->kind[v] == VK_FREE) {
+                dxx[c] = ex;
+                dxx[c + 1] = ey;
+            } else {
+                dxx[c] = ex * g->slide[v].x + ey * g->slide[v].y;
+            }
+        }
+        double one[2] = {1.0, 0.0}, onep[2] = {1.0, 0.0};
+        cholmod_sdmult(A, 0, one, onep, dx, b, cm); // b = A dx + b
+        cholmod_free_dense(&dx, cm);
+    }
+    if (!*L) *L = cholmod_analyze(A, cm);
+    // δ: a tiny multiple of the largest diagonal of AAᵀ, so that dependent rows do not stop the
+    // factorization; the iteration converges all the same on consistent equations.
+    double dmax = 0.0;
+    {
+        double *rowsq = ori__calloc((size_t)g->rows, sizeof(double));
+        int *Ap = A->p, *Ai = A->i;
+        double *Ax = A->x;
+        for (int j = 0; j < g->cols; ++j)
+            for (int k = Ap[j]; k < Ap[j + 1]; ++k) rowsq[Ai[k]] += Ax[k] * Ax[k];
+        for (int r = 0; r < g->rows; ++r)
+            if (rowsq[r] > dmax) dmax = rowsq[r];
+        ori__free(rowsq);
+    }
+    double beta[2] = {ORI_REGULARIZE_DAMPING_REL * (dmax > 0.0 ? dmax : 1.0), 0.0};
+    bool ok = cholmod_factorize_p(A, beta, NULL, 0, *L, cm) && cm->status == CHOLMOD_OK;
+    if (ok) {
+        cholmod_dense *lam = cholmod_solve(CHOLMOD_A, *L, b, cm);
+        ok = lam != NULL;
+        if (ok) {
+            cholmod_dense *y = cholmod_zeros((size_t)g->cols, 1, CHOLMOD_REAL, cm);
+            double one[2] = {1.0, 0.0}, zero[2] = {0.0, 0.0};
+            cholmod_sdmult(A, 1, one, zero, lam, y, cm); // y = Aᵀ λ (scaled unknowns)
+            double *yx = y->x;
+            for (int v = 0; v < g->nv; ++v) g->dx[v] = ori_v2_make(0.0, 0.0);
+            if (!g->rates_only)
+                for (int v = 0; v < g->nv; ++v) {
+                    int c = g->col_x[v];
+                    if (c < 0) continue;
+                    ori_v2 target;
+                    if (g->kind[v] == VK_FREE) {
+                        target = ori_v2_make(g->x0[v].x + g->L * yx[c], g->x0[v].y + g->L * yx[c + 1]);
+                    } else {
+                        target = ori_v2_make(g->x0[v].x + g->L * yx[c] * g->slide[v].x,
+                                             g->x0[v].y + g->L * yx[c] * g->slide[v].y);
+                    }
+                    // Anchored steps aim at x₀ + L·y; polishing steps move by L·y from here.
+                    ori_v2 from = g->polish ? ori_v2_make(0.0, 0.0) : ori_v2_make(g->x0[v].x - g->x[v].x, g->x0[v].y - g->x[v].y);
+                    g->dx[v] = ori_v2_make(target.x - g->x0[v].x + from.x, target.y - g->x0[v].y + from.y);
+                }
+            for (int e = 0; e < g->p->edge_count; ++e) g->dr[e] = 0.0;
+            if (g->rigid) {
+                double rs = 1.0 / sqrt(g->w_rate);
+                for (int e = 0; e < g->p->edge_count; ++e)
+                    if (g->col_r[e] >= 0) g->dr[e] = rs * yx[g->col_r[e]];
+            }
+            cholmod_free_dense(&y, cm);
+            cholmod_free_dense(&lam, cm);
+        }
+    }
+    cholmod_free_dense(&b, cm);
+    cholmod_free_sparse(&A, cm);
+    return ok;
+}
+
+ori_regularize_def ori_default_regularize_def(void)
+{
+    ori_regularize_def def;
+    def.rigid = false;
+    def.max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL;
+    def.max_iterations = 100;
+    def.internal_value = ORI__DEF_COOKIE;
+    return def;
+}
+
+static bool is_boundary_edge(ori_assignment a) { return a == ORI_ASSIGN_BOUNDARY || a == ORI_ASSIGN_CUT; }
+
+// Largest |alternating sector sum| over the interior vertices of a built pattern.
+static double max_kawasaki(const ori_pattern *p)
+{
+    double worst = 0.0;
+    double sec[ORI__FLAT_STACK_DEGREE];
+    for (int v = 0; v < p->vertex_count; ++v) {
+        if (!ori_pattern_vertex_is_interior(p, v)) continue;
+        int n = ori_flat_vertex_creases(p, v, NULL, sec, ORI__FLAT_STACK_DEGREE);
+        if (n > ORI__FLAT_STACK_DEGREE || n % 2 != 0) continue;
+        double k = fabs(ori_flat_kawasaki_sum(sec, n));
+        if (k > worst) worst = k;
+    }
+    return worst;
+}
+
+// Iterate until the equations hold (or max_iterations); returns the iterations done.
+static int solve(reg *g, int max_iterations, double kaw_tol, double rig_tol, bool *converged)
+{
+    cholmod_common cm;
+    SuiteSparse_config.malloc_func = ss_malloc;
+    SuiteSparse_config.calloc_func = ss_calloc;
+    SuiteSparse_config.realloc_func = ss_realloc;
+    SuiteSparse_config.free_func = ss_free;
+    cholmod_start(&cm);
+    cm.print = 0;
+    cm.error_handler = NULL;
+    cm.supernodal = CHOLMOD_SIMPLICIAL;
+    cholmod_factor *L = NULL;
+    int it = 0;
+    *converged = false;
+    double best = INFINITY;
+    int stalled = 0;
+    int ne = g->p->edge_count;
+    for (; it < max_iterations; ++it) {
+        assemble(g);
+        double kaw, rig;
+        defects(g, &kaw, &rig);
+        if (kaw <= kaw_tol && rig <= rig_tol) {
+            *converged = true;
+            break;
+        }
+        double worst = fmax(kaw, rig);
+        // Close to the solution, weight coordinates and rates alike and anchor the step at the
+        // current state: the remaining moves are ~1e-9 and no longer shape the answer, while
+        // the disparate weights would cost six digits of the coordinate part.
+        if (!g->polish && worst <= ORI_REGULARIZE_POLISH) {
+            g->polish = true;
+            g->w_rate = 1.0;
+            best = INFINITY;
+            stalled = 0;
+        }
+        // Stop when the defect has not shrunk for a few steps (inconsistent equations).
+        if (worst < ORI_REGULARIZE_PROGRESS * best) {
+            best = worst;
+            stalled = 0;
+        } else if (++stalled >= ORI_REGULARIZE_STALL_STEPS) {
+            break;
+        }
+        if (!step(g, &cm, &L)) break;
+        // Backtracking: far from the solution a full step of the quadratic conditions can
+        // overshoot; halve it until the defect drops (the full step is taken near the solution).
+        memcpy(g->x_save, g->x, sizeof(ori_v2) * (size_t)g->nv);
+        memcpy(g->r_save, g->rate, sizeof(double) * (size_t)ne);
+        double t = 1.0;
+        for (int h = 0; h < ORI_REGULARIZE_BACKTRACK_MAX; ++h, t *= 0.5) {
+            for (int v = 0; v < g->nv; ++v)
+                g->x[v] = ori_v2_make(g->x_save[v].x + t * g->dx[v].x, g->x_save[v].y + t * g->dx[v].y);
+            for (int e = 0; e < ne; ++e) g->rate[e] = g->r_save[e] + t * g->dr[e];
+            assemble(g);
+            double k2, r2;
+            defects(g, &k2, &r2);
+            if (fmax(k2, r2) < worst) break;
+        }
+    }
+    if (!*converged && it == max_iterations) {
+        assemble(g);
+        double kaw, rig;
+        defects(g, &kaw, &rig);
+        *converged = kaw <= kaw_tol && rig <= rig_tol;
+    }
+    cholmod_free_factor(&L, &cm);
+    cholmod_finish(&cm);
+    return it;
+}
+
+ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, ori_pattern **out,
+                          ori_regularize_result *res, ori_error *error)
+{
+    ORI_ASSERT(p && def && out && res && def->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT(def->max_iterations >= 1 && def->max_move_rel >= 0.0);
+    *out = NULL;
+    memset(res, 0, sizeof *res);
+    res->odd_vertex = ORI_NULL_INDEX;
+    res->max_move_vertex = ORI_NULL_INDEX;
+    res->crossing_edge = ORI_NULL_INDEX;
+    if (!p->built) return ori__fail(error, ORI_ERR_ARGUMENT, "the pattern is not built");
+    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "regularize needs a flat crease pattern, not a folded form");
+
+    reg g;
+    memset(&g, 0, sizeof g);
+    g.p = p;
+    g.nv = p->vertex_count;
+    g.L = ori_pattern_diagonal(p);
+    g.rigid = def->rigid;
+    g.w_rate = ORI_REGULARIZE_RATE_WEIGHT;
+    g.polish = false;
+    g.fixed_edge = ORI_NULL_INDEX;
+    int ne = p->edge_count;
+    g.x0 = ori__alloc(sizeof(ori_v2) * (size_t)(g.nv + 1));
+    g.x = ori__alloc(sizeof(ori_v2) * (size_t)(g.nv + 1));
+    g.kind = ori__calloc((size_t)g.nv + 1, sizeof(int));
+    g.slide = ori__calloc((size_t)g.nv + 1, sizeof(ori_v2));
+    g.col_x = ori__alloc(sizeof(int) * (size_t)(g.nv + 1));
+    g.col_r = ori__alloc(sizeof(int) * (size_t)(ne + 1));
+    g.rate = ori__calloc((size_t)ne + 1, sizeof(double));
+    g.is_crease = ori__calloc((size_t)ne + 1, sizeof(bool));
+    for (int v = 0; v < g.nv; ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        g.x0[v] = g.x[v] = ori_v2_make(q.x, q.y);
+    }
+
+    // Vertex kinds: interior vertices and vertices off the boundary move freely; a boundary
+    // vertex between two collinear boundary edges slides along them; other boundary vertices
+    // (corners, ends of slits) stay.
+    for (int v = 0; v < g.nv; ++v) {
+        int deg = ori_pattern_vertex_degree(p, v);
+        int bnb[2], nb = 0;
+        int es[ORI__FLAT_STACK_DEGREE];
+        int *edges = deg <= ORI__FLAT_STACK_DEGREE ? es : ori__alloc(sizeof(int) * (size_t)deg);
+        ori_pattern_vertex_edges(p, v, edges, deg);
+        for (int k = 0; k < deg; ++k) {
+            ori_edge e = ori_pattern_edge(p, edges[k]);
+            if (!is_boundary_edge(e.assignment)) continue;
+            if (nb < 2) bnb[nb] = e.v[0] == v ? e.v[1] : e.v[0];
+            nb++;
+        }
+        if (edges != es) ori__free(edges);
+        if (nb == 0) {
+            g.kind[v] = VK_FREE;
+        } else if (nb == 2) {
+            ori_v2 a = ori_v2_make(g.x0[bnb[0]].x - g.x0[v].x, g.x0[bnb[0]].y - g.x0[v].y);
+            ori_v2 b = ori_v2_make(g.x0[bnb[1]].x - g.x0[v].x, g.x0[bnb[1]].y - g.x0[v].y);
+            double la = sqrt(a.x * a.x + a.y * a.y), lb = sqrt(b.x * b.x + b.y * b.y);
+            // Straight through: the two boundary edges point in opposite directions.
+            double sin_turn = cross2(a, b) / (la * lb), cos_turn = (a.x * b.x + a.y * b.y) / (la * lb);
+            if (cos_turn < 0.0 && fabs(sin_turn) <= ORI_REGULARIZE_BOUNDARY_STRAIGHT_RAD) {
+                g.kind[v] = VK_SLIDE;
+                ori_v2 t = ori_v2_make(b.x / lb - a.x / la, b.y / lb - a.y / la);
+                double lt = sqrt(t.x * t.x + t.y * t.y);
+                g.slide[v] = ori_v2_make(t.x / lt, t.y / lt);
+            }
+        }
+    }
+
+    // Interior vertices and their creases.
+    int total_creases = 0;
+    for (int v = 0; v < g.nv; ++v)
+        if (ori_pattern_vertex_is_interior(p, v)) {
+            g.niv++;
+            total_creases += ori_pattern_vertex_degree(p, v);
+        }
+    g.iv = ori__alloc(sizeof(reg_vertex) * (size_t)(g.niv + 1));
+    g.crease_nb = ori__alloc(sizeof(int) * (size_t)(total_creases + 1));
+    g.crease_edge = ori__alloc(sizeof(int) * (size_t)(total_creases + 1));
+    ori_status st = ORI_OK;
+    int a = 0, used = 0;
+    for (int v = 0; v < g.nv; ++v) {
+        if (!ori_pattern_vertex_is_interior(p, v)) continue;
+        int n = ori_flat_vertex_creases(p, v, g.crease_edge + used, NULL, total_creases - used);
+        if (n > ORI__FLAT_STACK_DEGREE) {
+            st = ori__fail_at(error, ORI_ERR_LIMIT, "vertices_coords", v, "vertex of degree %d (at most %d)", n,
+                              ORI__FLAT_STACK_DEGREE);
+            goto fail;
+        }
+        for (int k = 0; k < n; ++k) {
+            ori_edge e = ori_pattern_edge(p, g.crease_edge[used + k]);
+            g.crease_nb[used + k] = e.v[0] == v ? e.v[1] : e.v[0];
+            g.is_crease[g.crease_edge[used + k]] = true;
+        }
+        if (n % 2 != 0 && res->odd_vertex == ORI_NULL_INDEX) res->odd_vertex = v;
+        g.iv[a].v = v;
+        g.iv[a].first = used;
+        g.iv[a].count = n;
+        a++;
+        used += n;
+    }
+    g.niv = a;
+    res->interior_vertices = g.niv;
+
+    // Fold rates from the targets, and the crease that fixes their scale.
+    if (g.rigid) {
+        bool has = ori_pattern_has_fold_angles(p);
+        g.R = 0.0;
+        for (int e = 0; e < ne; ++e) {
+            if (!g.is_crease[e]) continue;
+            ori_edge ed = ori_pattern_edge(p, e);
+            double t = has ? ed.fold_angle_rad : 0.0;
+            if (!(fabs(t) > ORI_TOL_FOLD_SIGN_RAD))
+                t = ed.assignment == ORI_ASSIGN_VALLEY ? ORI_PI : ed.assignment == ORI_ASSIGN_MOUNTAIN ? -ORI_PI : 0.0;
+            g.rate[e] = t;
+            if (fabs(t) > g.R) {
+                g.R = fabs(t);
+                g.fixed_edge = e;
+            }
+        }
+        if (g.R > 0.0)
+            for (int e = 0; e < ne; ++e) g.rate[e] /= g.R;
+    }
+
+    // Columns and rows.
+    for (int v = 0; v < g.nv; ++v) {
+        g.col_x[v] = g.kind[v] == VK_FIXED ? -1 : g.cols;
+        g.cols += g.kind[v];
+    }
+    for (int e = 0; e < ne; ++e) g.col_r[e] = -1;
+    if (g.rigid)
+        for (int e = 0; e < ne; ++e)
+            if (g.is_crease[e] && e != g.fixed_edge) g.col_r[e] = g.cols++;
+    for (int i = 0; i < g.niv; ++i) {
+        g.iv[i].row = g.rows;
+        g.rows += (g.iv[i].count % 2 == 0 ? 1 : 0) + (g.rigid ? 3 : 0);
+    }
+    g.c = ori__calloc((size_t)g.rows + 1, sizeof(double));
+    g.dx = ori__calloc((size_t)g.nv + 1, sizeof(ori_v2));
+    g.x_save = ori__calloc((size_t)g.nv + 1, sizeof(ori_v2));
+    g.dr = ori__calloc((size_t)ne + 1, sizeof(double));
+    g.r_save = ori__calloc((size_t)ne + 1, sizeof(double));
+    res->unknowns = g.cols;
+    res->equations = g.rows;
+    res->kawasaki_before_rad = max_kawasaki(p);
+
+    bool converged = false;
+    if (g.rigid && g.fixed_edge != ORI_NULL_INDEX) {
+        // How far the input is from rigid: the best rates with the coordinates held.
+        g.rates_only = true;
+        solve(&g, ORI_REGULARIZE_RATE_PASSES, INFINITY, ORI_TOL_REGULARIZE_RIGID, &converged);
+        double kaw, rig;
+        assemble(&g);
+        defects(&g, &kaw, &rig);
+        res->rigid_before = rig;
+        g.rates_only = false;
+        g.polish = false;
+        g.w_rate = ORI_REGULARIZE_RATE_WEIGHT;
+    }
+    res->iterations = solve(&g, def->max_iterations, ORI_TOL_REGULARIZE_KAWASAKI_RAD,
+                            g.rigid ? ORI_TOL_REGULARIZE_RIGID : INFINITY, &converged);
+    if (g.rigid) {
+        double kaw, rig;
+        assemble(&g);
+        defects(&g, &kaw, &rig);
+        res->rigid_after = rig;
+        if (g.fixed_edge == ORI_NULL_INDEX) converged = false;
+    }
+    {
+        double kaw, rig;
+        assemble(&g);
+        defects(&g, &kaw, &rig);
+        res->kawasaki_after_rad = kaw;
+    }
+
+    // The new pattern: same topology, moved vertices, built (planarity checked).
+    ori_pattern *q = ori_pattern_clone(p);
+    double sum2 = 0.0;
+    for (int v = 0; v < g.nv; ++v) {
+        double dx = g.x[v].x - g.x0[v].x, dy = g.x[v].y - g.x0[v].y;
+        double d = sqrt(dx * dx + dy * dy) / g.L;
+        sum2 += d * d;
+        if (d > 0.0) res->moved_vertices++;
+        if (d > res->max_move_rel) {
+            res->max_move_rel = d;
+            res->max_move_vertex = v;
+        }
+        ori_pattern_set_vertex(q, v, ori_v3_make(g.x[v].x, g.x[v].y, 0.0));
+    }
+    res->rms_move_rel = g.nv > 0 ? sqrt(sum2 / g.nv) : 0.0;
+    res->refused = res->max_move_rel > def->max_move_rel;
+    if (res->refused || !converged || res->odd_vertex != ORI_NULL_INDEX) {
+        // No pattern to hand back: the result says why.
+        ori_pattern_destroy(q);
+        goto fail;
+    }
+    ori_build_def bd = ori_default_build_def();
+    bd.compute_faces = false;
+    ori_error berr;
+    if (ori_pattern_build(q, &bd, &berr) != ORI_OK) {
+        // Moving made edges cross (or vertices meet): no exact pattern this close keeps the
+        // drawing's topology. A domain answer, not an input error.
+        res->crossing_edge = berr.element;
+        ori__strlcpy(res->crossing, berr.message, sizeof res->crossing);
+        ori_pattern_destroy(q);
+        goto fail;
+    }
+    res->kawasaki_after_rad = max_kawasaki(q);
+    res->converged = res->kawasaki_after_rad <= ORI_TOL_REGULARIZE_KAWASAKI_RAD;
+    *out = q;
+fail:
+    ori__free(g.x0);
+    ori__free(g.x);
+    ori__free(g.kind);
+    ori__free(g.slide);
+    ori__free(g.col_x);
+    ori__free(g.col_r);
+    ori__free(g.rate);
+    ori__free(g.is_crease);
+    ori__free(g.iv);
+    ori__free(g.crease_nb);
+    ori__free(g.crease_edge);
+    ori__free(g.ti);
+    ori__free(g.tj);
+    ori__free(g.tx);
+    ori__free(g.c);
+    ori__free(g.dx);
+    ori__free(g.x_save);
+    ori__free(g.dr);
+    ori__free(g.r_save);
+    return st;
+}

@@ -1,0 +1,444 @@
+// Mesh export of a posed state: the exported surface (two-sided sheet or thick solid), the
+// format dispatch, and the text formats OBJ, STL and PLY (every coordinate in its shortest exact
+// decimal form, so that a file reads back to the posed vertex exactly).
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+
+#include "mesh_write_internal.h"
+
+// --- formats and defaults -------------------------------------------------------------------
+
+static bool ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    if (n < k) return false;
+    for (size_t i = 0; i < k; ++i)
+        if (tolower((unsigned char)s[n - k + i]) != suffix[i]) return false;
+    return true;
+}
+
+ori_mesh_format ori_mesh_format_from_path(const char *path)
+{
+    if (!path) return ORI_MESH_UNKNOWN;
+    if (ends_with(path, ".obj")) return ORI_MESH_OBJ;
+    if (ends_with(path, ".stl")) return ORI_MESH_STL;
+    if (ends_with(path, ".ply")) return ORI_MESH_PLY;
+    if (ends_with(path, ".gltf")) return ORI_MESH_GLTF;
+    if (ends_with(path, ".glb")) return ORI_MESH_GLB;
+    return ORI_MESH_UNKNOWN;
+}
+
+const char *ori_mesh_format_name(ori_mesh_format f)
+{
+    switch (f) {
+    case ORI_MESH_OBJ: return "obj";
+    case ORI_MESH_STL: return "stl";
+    case ORI_MESH_PLY: return "ply";
+    case ORI_MESH_GLTF: return "gltf";
+    case ORI_MESH_GLB: return "glb";
+    default: return "unknown";
+    }
+}
+
+ori_export_def ori_default_export_def(void)
+{
+    ori_export_def d;
+    memset(&d, 0, sizeof d);
+    ori_render_def r = ori_default_render_def();
+    d.format = ORI_MESH_GLTF;
+    d.thickness = 0.0;
+    d.front = r.front;
+    d.back = r.back;
+    d.edge = (ori_rgb){0.55, 0.55, 0.55};
+    d.keyframe_count = 0;
+    d.keyframe_times_s = NULL;
+    d.keyframe_poses = NULL;
+    d.internal_value = ORI__DEF_COOKIE;
+    return d;
+}
+
+// --- the exported surface -------------------------------------------------------------------
+
+typedef struct part_builder {
+    ori__xpart *p;
+    int cap_pos, cap_nrm, cap_uv, cap_fv, cap_tri, cap_face;
+} part_builder;
+
+static int part_vertex(part_builder *b, ori_v3 pos, ori_v3 nrm, ori_v2 uv, int fold_vertex)
+{
+    ori__xpart *p = b->p;
+    ORI__RESERVE(p->pos, b->cap_pos, p->vcount + 1);
+    ORI__RESERVE(p->nrm, b->cap_nrm, p->vcount + 1);
+    ORI__RESERVE(p->uv, b->cap_uv, p->vcount + 1);
+    ORI__RESERVE(p->fold_vertex, b->cap_fv, p->vcount + 1);
+    p->pos[p->vcount] = pos;
+    p->nrm[p->vcount] = nrm;
+    p->uv[p->vcount] = uv;
+    p->fold_vertex[p->vcount] = fold_vertex;
+    return p->vcount++;
+}
+
+static void part_tri(part_builder *b, int a, int c, int d, int face)
+{
+    ori__xpart *p = b->p;
+    ORI__RESERVE(p->tri, b->cap_tri, p->tcount + 1);
+    ORI__RESERVE(p->fold_face, b->cap_face, p->tcount + 1);
+    p->tri[p->tcount][0] = a;
+    p->tri[p->tcount][1] = c;
+    p->tri[p->tcount][2] = d;
+    p->fold_face[p->tcount] = face;
+    p->tcount++;
+}
+
+ori__uv_map ori__uv_of_mesh(const ori_mesh *m)
+{
+    ori__uv_map u = {INFINITY, INFINITY, 0, 0};
+    double x1 = -INFINITY, y1 = -INFINITY;
+    for (int v = 0; v < m->vertex_count; ++v) {
+        u.x0 = fmin(u.x0, m->ref[v].x);
+        u.y0 = fmin(u.y0, m->ref[v].y);
+        x1 = fmax(x1, m->ref[v].x);
+        y1 = fmax(y1, m->ref[v].y);
+    }
+    u.dx = x1 - u.x0;
+    u.dy = y1 - u.y0;
+    if (!(u.dx > 0.0)) u.dx = 1.0;
+    if (!(u.dy > 0.0)) u.dy = 1.0;
+    return u;
+}
+
+// Texture coordinates: the flat sheet's bounding box stretched over [0, 1]², v downwards (glTF).
+static ori_v2 uv_at(const ori__uv_map *u, ori_v3 ref) { return ori_v2_make((ref.x - u->x0) / u->dx, 1.0 - (ref.y - u->y0) / u->dy); }
+
+// Both sides of face f: vertices at positions pts (world or reference), the front with the
+// face's normal nf.
+static void sheet_face(const ori_mesh *m, int f, const ori_v3 *pts, ori_v3 nf, const ori__uv_map *u, part_builder *front,
+                       part_builder *back)
+{
+    int o = m->face_start[f], n = m->face_start[f + 1] - o;
+    int base_f = front->p->vcount, base_b = back->p->vcount;
+    for (int k = 0; k < n; ++k) {
+        int v = m->face_verts[o + k];
+        ori_v2 uv = uv_at(u, m->ref[v]);
+        part_vertex(front, pts[v], nf, uv, v);
+        part_vertex(back, pts[v], ori_v3_scale(nf, -1.0), uv, v);
+    }
+    for (int t = m->face_tri_start[f]; t < m->face_tri_start[f + 1]; ++t) {
+        int l[3];
+        for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < n; ++k)
+                if (m->face_verts[o + k] == m->tris[t].v[i]) l[i] = k;
+        part_tri(front, base_f + l[0], base_f + l[1], base_f + l[2], f);
+        part_tri(back, base_b + l[0], base_b + l[2], base_b + l[1], f);
+    }
+}
+
+// Unit normal of the reference face (for the reference sheet).
+static ori_v3 ref_normal(const ori_mesh *m, int f)
+{
+    ori_v3 s = {0, 0, 0};
+    for (int t = m->face_tri_start[f]; t < m->face_tri_start[f + 1]; ++t) {
+        ori_v3 a = m->ref[m->tris[t].v[0]], b = m->ref[m->tris[t].v[1]], c = m->ref[m->tris[t].v[2]];
+        s = ori_v3_add(s, ori_v3_cross(ori_v3_sub(b, a), ori_v3_sub(c, a)));
+    }
+    return ori_v3_normalize(s);
+}
+
+void ori__xmesh_face(const ori_mesh *m, int face, const ori__uv_map *u, ori__xmesh *x)
+{
+    memset(x, 0, sizeof *x);
+    x->has_uv = m->has_flat;
+    part_builder bf = {&x->part[ORI__PART_FRONT], 0, 0, 0, 0, 0, 0};
+    part_builder bb = {&x->part[ORI__PART_BACK], 0, 0, 0, 0, 0, 0};
+    sheet_face(m, face, m->ref, ref_normal(m, face), u, &bf, &bb);
+}
+
+void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__xmesh *x)
+{
+    memset(x, 0, sizeof *x);
+    x->has_uv = m->has_flat;
+    ori__uv_map u = ori__uv_of_mesh(m);
+    part_builder b[ORI__PART_COUNT];
+    for (int i = 0; i < ORI__PART_COUNT; ++i) {
+        memset(&b[i], 0, sizeof b[i]);
+        b[i].p = &x->part[i];
+    }
+    if (!(thickness > 0.0)) {
+        for (int f = 0; f < m->face_count; ++f)
+            sheet_face(m, f, reference ? m->ref : m->pos, reference ? ref_normal(m, f) : m->normal[f], &u,
+                       &b[ORI__PART_FRONT], &b[ORI__PART_BACK]);
+        return;
+    }
+    ori__solid s;
+    ori__solid_build(m, thickness, &s);
+    // Top and bottom share their points within a face (smooth per face); rim triangles get
+    // their own vertices (flat shading).
+    int *map = ori__alloc(sizeof(int) * (size_t)(s.point_count + 1));
+    int *map_face = ori__alloc(sizeof(int) * (size_t)(s.point_count + 1));
+    for (int i = 0; i < s.point_count; ++i) map_face[i] = -1;
+    for (int part = 0; part < 2; ++part) {
+        for (int i = 0; i < s.point_count; ++i) map_face[i] = -1;
+        for (int t = 0; t < s.tri_count; ++t) {
+            if (s.part[t] != part) continue;
+            int f = s.tri_face[t];
+            ori_v3 n = part == ORI__SOLID_TOP ? m->normal[f] : ori_v3_scale(m->normal[f], -1.0);
+            int idx[3];
+            for (int k = 0; k < 3; ++k) {
+                int q = s.tris[t][k];
+                if (map_face[q] != f) {
+                    map_face[q] = f;
+                    map[q] = part_vertex(&b[part], s.points[q], n, uv_at(&u, m->ref[s.point_vertex[q]]), s.point_vertex[q]);
+                }
+                idx[k] = map[q];
+            }
+            part_tri(&b[part], idx[0], idx[1], idx[2], f);
+        }
+    }
+    for (int t = 0; t < s.tri_count; ++t) {
+        if (s.part[t] != ORI__SOLID_RIM) continue;
+        ori_v3 a = s.points[s.tris[t][0]], c = s.points[s.tris[t][1]], d = s.points[s.tris[t][2]];
+        ori_v3 n = ori_v3_normalize(ori_v3_cross(ori_v3_sub(c, a), ori_v3_sub(d, a)));
+        int idx[3];
+        for (int k = 0; k < 3; ++k) {
+            int q = s.tris[t][k];
+            idx[k] = part_vertex(&b[ORI__PART_RIM], s.points[q], n, uv_at(&u, m->ref[s.point_vertex[q]]), s.point_vertex[q]);
+        }
+        part_tri(&b[ORI__PART_RIM], idx[0], idx[1], idx[2], s.tri_face[t]);
+    }
+    ori__free(map);
+    ori__free(map_face);
+    ori__solid_free(&s);
+}
+
+void ori__xmesh_free(ori__xmesh *x)
+{
+    for (int i = 0; i < ORI__PART_COUNT; ++i) {
+        ori__xpart *p = &x->part[i];
+        ori__free(p->pos);
+        ori__free(p->nrm);
+        ori__free(p->uv);
+        ori__free(p->fold_vertex);
+        ori__free(p->tri);
+        ori__free(p->fold_face);
+    }
+    memset(x, 0, sizeof *x);
+}
+
+// --- text formats ---------------------------------------------------------------------------
+
+static void put_v3(ori__text *t, ori_v3 v)
+{
+    ori__text_real(t, v.x);
+    ori__text_puts(t, " ");
+    ori__text_real(t, v.y);
+    ori__text_puts(t, " ");
+    ori__text_real(t, v.z);
+}
+
+static const char *part_name[ORI__PART_COUNT] = {"front", "back", "rim"};
+
+// OBJ. The sheet keeps FOLD's numbering: OBJ vertex i is FOLD vertex i − 1, with its flat-sheet
+// texture coordinate; normals are per face (front, then back); "g front" / "g back" groups use
+// materials of the same names, and "# face F" starts each face's triangles. The solid lists its
+// own points.
+static void write_obj(const ori_mesh *m, const ori_export_def *def, ori__text *t)
+{
+    ori__text_printf(t, "# orikin %s: posed sheet, %d faces\n", ori_version_string(), m->face_count);
+    if (!(def->thickness > 0.0)) {
+        ori__text_puts(t, "# two-sided sheet: vertex i is FOLD vertex i-1; groups front and back\no sheet\n");
+        for (int v = 0; v < m->vertex_count; ++v) {
+            ori__text_puts(t, "v ");
+            put_v3(t, m->pos[v]);
+            ori__text_puts(t, "\n");
+        }
+        ori__uv_map u = ori__uv_of_mesh(m);
+        if (m->has_flat)
+            for (int v = 0; v < m->vertex_count; ++v) {
+                ori_v2 uv = uv_at(&u, m->ref[v]);
+                // OBJ's v runs upwards.
+                ori__text_puts(t, "vt ");
+                ori__text_real(t, uv.x);
+                ori__text_puts(t, " ");
+                ori__text_real(t, 1.0 - uv.y);
+                ori__text_puts(t, "\n");
+            }
+        for (int side = 0; side < 2; ++side)
+            for (int f = 0; f < m->face_count; ++f) {
+                ori__text_puts(t, "vn ");
+                put_v3(t, side == 0 ? m->normal[f] : ori_v3_scale(m->normal[f], -1.0));
+                ori__text_puts(t, "\n");
+            }
+        for (int side = 0; side < 2; ++side) {
+            ori__text_printf(t, "g %s\nusemtl %s\n", part_name[side], part_name[side]);
+            for (int f = 0; f < m->face_count; ++f) {
+                ori__text_printf(t, "# face %d\n", f);
+                int nidx = side * m->face_count + f + 1;
+                for (int tr = m->face_tri_start[f]; tr < m->face_tri_start[f + 1]; ++tr) {
+                    int a = m->tris[tr].v[0] + 1, b = m->tris[tr].v[side ? 2 : 1] + 1, c = m->tris[tr].v[side ? 1 : 2] + 1;
+                    if (m->has_flat) ori__text_printf(t, "f %d/%d/%d %d/%d/%d %d/%d/%d\n", a, a, nidx, b, b, nidx, c, c, nidx);
+                    else ori__text_printf(t, "f %d//%d %d//%d %d//%d\n", a, nidx, b, nidx, c, nidx);
+                }
+            }
+        }
+        return;
+    }
+    ori__xmesh x;
+    ori__xmesh_build(m, def->thickness, false, &x);
+    ori__text_printf(t, "# closed solid, thickness %.17g; groups front, back and rim\no solid\n", def->thickness);
+    for (int i = 0; i < ORI__PART_COUNT; ++i)
+        for (int v = 0; v < x.part[i].vcount; ++v) {
+            ori__text_puts(t, "v ");
+            put_v3(t, x.part[i].pos[v]);
+            ori__text_puts(t, "\nvn ");
+            put_v3(t, x.part[i].nrm[v]);
+            ori__text_puts(t, "\n");
+        }
+    int base = 1;
+    for (int i = 0; i < ORI__PART_COUNT; ++i) {
+        if (x.part[i].tcount) ori__text_printf(t, "g %s\nusemtl %s\n", part_name[i], part_name[i]);
+        for (int tr = 0; tr < x.part[i].tcount; ++tr) {
+            int a = base + x.part[i].tri[tr][0], b = base + x.part[i].tri[tr][1], c = base + x.part[i].tri[tr][2];
+            ori__text_printf(t, "f %d//%d %d//%d %d//%d\n", a, a, b, b, c, c);
+        }
+        base += x.part[i].vcount;
+    }
+    ori__xmesh_free(&x);
+}
+
+// STL, text: a binary STL holds 32-bit floats only, which would round the posed vertices.
+static void write_stl(const ori_mesh *m, const ori_export_def *def, ori__text *t)
+{
+    ori__xmesh x;
+    ori__xmesh_build(m, def->thickness, false, &x);
+    ori__text_puts(t, "solid orikin\n");
+    for (int i = 0; i < ORI__PART_COUNT; ++i)
+        for (int tr = 0; tr < x.part[i].tcount; ++tr) {
+            ori_v3 a = x.part[i].pos[x.part[i].tri[tr][0]], b = x.part[i].pos[x.part[i].tri[tr][1]],
+                   c = x.part[i].pos[x.part[i].tri[tr][2]];
+            ori_v3 n = ori_v3_normalize(ori_v3_cross(ori_v3_sub(b, a), ori_v3_sub(c, a)));
+            ori__text_puts(t, "facet normal ");
+            put_v3(t, n);
+            ori__text_puts(t, "\n outer loop\n  vertex ");
+            put_v3(t, a);
+            ori__text_puts(t, "\n  vertex ");
+            put_v3(t, b);
+            ori__text_puts(t, "\n  vertex ");
+            put_v3(t, c);
+            ori__text_puts(t, "\n endloop\nendfacet\n");
+        }
+    ori__text_puts(t, "endsolid orikin\n");
+    ori__xmesh_free(&x);
+}
+
+static int byte_of(double c) { return (int)lround(fmin(1.0, fmax(0.0, c)) * 255.0); }
+
+// PLY, text: doubles, vertex normals and colours (the material of the part), and the FOLD
+// vertex of every vertex and FOLD face and side (0 front, 1 back, 2 rim) of every triangle.
+static void write_ply(const ori_mesh *m, const ori_export_def *def, ori__text *t)
+{
+    ori__xmesh x;
+    ori__xmesh_build(m, def->thickness, false, &x);
+    int nv = 0, nt = 0;
+    for (int i = 0; i < ORI__PART_COUNT; ++i) {
+        nv += x.part[i].vcount;
+        nt += x.part[i].tcount;
+    }
+    ori__text_printf(t,
+                     "ply\nformat ascii 1.0\ncomment orikin %s: posed sheet, %s\n"
+                     "element vertex %d\nproperty double x\nproperty double y\nproperty double z\n"
+                     "property double nx\nproperty double ny\nproperty double nz\n"
+                     "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty int fold_vertex\n"
+                     "element face %d\nproperty list uchar int vertex_indices\nproperty int fold_face\n"
+                     "property uchar side\nend_header\n",
+                     ori_version_string(), def->thickness > 0.0 ? "closed solid" : "two-sided sheet", nv, nt);
+    ori_rgb colour[ORI__PART_COUNT] = {def->front, def->back, def->edge};
+    for (int i = 0; i < ORI__PART_COUNT; ++i)
+        for (int v = 0; v < x.part[i].vcount; ++v) {
+            put_v3(t, x.part[i].pos[v]);
+            ori__text_puts(t, " ");
+            put_v3(t, x.part[i].nrm[v]);
+            ori__text_printf(t, " %d %d %d %d\n", byte_of(colour[i].r), byte_of(colour[i].g), byte_of(colour[i].b),
+                             x.part[i].fold_vertex[v]);
+        }
+    int base = 0;
+    for (int i = 0; i < ORI__PART_COUNT; ++i) {
+        for (int tr = 0; tr < x.part[i].tcount; ++tr)
+            ori__text_printf(t, "3 %d %d %d %d %d\n", base + x.part[i].tri[tr][0], base + x.part[i].tri[tr][1],
+                             base + x.part[i].tri[tr][2], x.part[i].fold_face[tr], i);
+        base += x.part[i].vcount;
+    }
+    ori__xmesh_free(&x);
+}
+
+// --- entry points ---------------------------------------------------------------------------
+
+static ori_status check_def(const ori_mesh *m, const ori_export_def *def, ori_error *error)
+{
+    if (def->format < ORI_MESH_OBJ || def->format > ORI_MESH_GLB)
+        return ori__fail(error, ORI_ERR_ARGUMENT, "unknown mesh format (obj, stl, ply, gltf or glb)");
+    if (!(def->thickness >= 0.0) || !isfinite(def->thickness))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "thickness must be a finite number >= 0");
+    if (def->keyframe_count < 0) return ori__fail(error, ORI_ERR_ARGUMENT, "negative keyframe count");
+    if (def->keyframe_count > 0) {
+        if (def->format != ORI_MESH_GLTF && def->format != ORI_MESH_GLB)
+            return ori__fail(error, ORI_ERR_ARGUMENT, "only glTF and GLB hold animations");
+        if (def->thickness > 0.0)
+            return ori__fail(error, ORI_ERR_ARGUMENT, "a thick solid is not rigid per face: it cannot be animated by face nodes");
+        if (!def->keyframe_times_s || !def->keyframe_poses)
+            return ori__fail(error, ORI_ERR_ARGUMENT, "keyframes need times and poses");
+        for (int k = 0; k < def->keyframe_count; ++k) {
+            double tk = def->keyframe_times_s[k];
+            if (!isfinite(tk) || (k > 0 && !(tk > def->keyframe_times_s[k - 1])))
+                return ori__fail(error, ORI_ERR_ARGUMENT, "keyframe times must be finite and increasing (keyframe %d)", k);
+        }
+        for (size_t i = 0; i < (size_t)def->keyframe_count * (size_t)m->face_count; ++i) {
+            ori_rigid g = def->keyframe_poses[i];
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                    if (!isfinite(g.r.m[r][c]))
+                        return ori__fail(error, ORI_ERR_ARGUMENT, "keyframe pose %zu is not finite", i);
+            if (!ori__coord_ok(g.t.x) || !ori__coord_ok(g.t.y) || !ori__coord_ok(g.t.z))
+                return ori__fail(error, ORI_ERR_ARGUMENT, "keyframe pose %zu is not finite", i);
+        }
+    }
+    return ORI_OK;
+}
+
+ori_status ori_mesh_export(const ori_mesh *m, const ori_export_def *def, void **data, size_t *size, ori_error *error)
+{
+    ORI_ASSERT(m && def && data && size);
+    ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
+    *data = NULL;
+    *size = 0;
+    ori_status st = check_def(m, def, error);
+    if (st != ORI_OK) return st;
+    ori__text t = {NULL, 0, 0};
+    ori__text_reserve(&t, 0);
+    switch (def->format) {
+    case ORI_MESH_OBJ: write_obj(m, def, &t); break;
+    case ORI_MESH_STL: write_stl(m, def, &t); break;
+    case ORI_MESH_PLY: write_ply(m, def, &t); break;
+    case ORI_MESH_GLTF: ori__gltf_write(m, def, false, &t); break;
+    case ORI_MESH_GLB: ori__gltf_write(m, def, true, &t); break;
+    default: break;
+    }
+    *data = t.data;
+    *size = t.len;
+    return ORI_OK;
+}
+
+ori_status ori_mesh_export_file(const ori_mesh *m, const ori_export_def *def, const char *path, ori_error *error)
+{
+    ORI_ASSERT(def && path);
+    ori_export_def d = *def;
+    ori_mesh_format by_path = ori_mesh_format_from_path(path);
+    if (by_path != ORI_MESH_UNKNOWN) d.format = by_path;
+    void *data = NULL;
+    size_t size = 0;
+    ori_status st = ori_mesh_export(m, &d, &data, &size, error);
+    if (st != ORI_OK) return st;
+    st = ori_file_write_atomic(path, data, size, error);
+    ori__free(data);
+    return st;
+}

@@ -1,0 +1,101 @@
+// Private pieces of src/render shared with the mesh writers of src/io: the posed mesh's
+// layout, the thick solid, the depth order of faces, and the Cairo drawing entry used by the
+// image and GIF writers.
+#ifndef ORI_RENDER_INTERNAL_H
+#define ORI_RENDER_INTERNAL_H
+
+#include <orikin/render.h>
+
+#include <cairo.h>
+
+#include "../core/core_internal.h"
+
+struct ori_mesh {
+    int vertex_count, edge_count, face_count, tri_count;
+    bool has_flat;           // the pattern is a flat crease pattern: ref is the flat sheet
+    ori_v3 *ref;             // reference positions (flat sheet, z = 0, or the first pose)
+    ori_v3 *pos;             // current world positions
+    int *face_start;         // face_count + 1 offsets into face_verts / face_side_edge
+    int *face_verts;         // vertex cycles, counter-clockwise seen from the front
+    int *face_side_edge;     // FOLD edge of side k (vertex k → k + 1) or -1
+    int *face_tri_start;     // face_count + 1 offsets into tris
+    ori_mesh_triangle *tris; // grouped by face
+    ori_v3 *normal;          // unit front normal per face, current pose
+    int (*edge_v)[2];        // edge endpoints
+    int (*edge_face)[2];     // face on the left / right of v0 → v1, or -1
+    ori_assignment *assign;  // edge assignments
+    double *angle;           // current fold angle per edge (radians), for layer stacking
+    double *pattern_angle;   // the pattern's fold angles
+    double ref_diag;         // bounding-box diagonal of ref (1 when degenerate)
+};
+
+// Copy n fold angles (or the pattern's when NULL) into the mesh's current angles.
+void ori__mesh_set_angles(ori_mesh *m, const double *fold_angles_rad);
+
+// --- camera fitting in steps (camera.c), for fitting to every frame of an animation ---------
+
+// Aim at the centre of the box lo–hi (perspective distance from its radius); scale 1, no offset.
+void ori__camera_fit_box(ori_camera *c, ori_v3 lo, ori_v3 hi);
+// Grow ext = {x0, x1, y0, y1} by the images of points under c.
+void ori__camera_extents_add(const ori_camera *c, const ori_v3 *points, int count, double ext[4]);
+// Scale and centre c so that ext (measured at scale 1, no offset) fits a width × height image.
+void ori__camera_fit_extents(ori_camera *c, const double ext[4], int width, int height, double margin_rel,
+                             double radius);
+
+// --- thick solid (solid.c) -----------------------------------------------------------------
+
+// Thick panels around the posed sheet: both sides offset by ±thickness/2 along the face normals,
+// one closed slab per flat region, walls where a slab ends (docs/render.md). Triangles are
+// counter-clockwise seen from outside.
+typedef enum ori__solid_part { ORI__SOLID_TOP = 0, ORI__SOLID_BOTTOM = 1, ORI__SOLID_RIM = 2 } ori__solid_part;
+typedef struct ori__solid {
+    int point_count, tri_count;
+    ori_v3 *points;
+    int *point_vertex;  // FOLD vertex a point was offset from
+    int (*tris)[3];
+    unsigned char *part; // ori__solid_part per triangle
+    int *tri_face;       // FOLD face of a top/bottom triangle; the face beside a rim triangle
+} ori__solid;
+void ori__solid_build(const ori_mesh *m, double thickness, ori__solid *out);
+void ori__solid_free(ori__solid *s);
+
+// --- depth order (order.c) -----------------------------------------------------------------
+
+// A polygon to fill, in image coordinates (x right, y down, z depth), with per-side edge tags.
+typedef struct ori__piece {
+    int face;        // FOLD face
+    int first, count; // its points in the order's point array
+} ori__piece;
+typedef struct ori__order {
+    int piece_count, point_count;
+    ori__piece *pieces;  // back to front
+    ori_v3 *points;      // image coordinates
+    int *side_edge;      // per point: FOLD edge of the side from this point to the next, or -1
+    int groups_split;    // groups of faces that needed splitting (cycles or intersections)
+    int fragments;       // pieces produced by splitting
+} ori__order;
+// Sort the faces of a posed mesh back to front for camera: overlapping faces in the image
+// are compared where they overlap; cycles and intersecting faces are split by a BSP of their
+// triangles; faces folded flat onto each other are stacked along the fold tree.
+void ori__order_build(const ori_mesh *m, const ori_camera *camera, ori__order *out);
+void ori__order_free(ori__order *o);
+
+// --- drawing (draw.c) ----------------------------------------------------------------------
+
+// Draw a state onto a Cairo context of def's size. scene_lo/hi (may be NULL) fix the box the
+// ground grid is drawn from (an animation's union of every frame). texture may be NULL.
+ori_status ori__draw(cairo_t *cr, const ori_mesh *mesh, const ori_pattern *pattern, const ori_render_def *def,
+                     const ori_camera *camera, cairo_surface_t *texture, const ori_v3 *scene_lo,
+                     const ori_v3 *scene_hi, ori_error *error);
+// Decode a PNG texture (ORI_ERR_PARSE when it is not one). *out is NULL when def has none.
+ori_status ori__texture_load(const ori_render_def *def, cairo_surface_t **out, ori_error *error);
+// Check def's size (ORI_ERR_ARGUMENT naming the limit).
+ori_status ori__render_check_size(const ori_render_def *def, ori_error *error);
+// The camera of def fitted to points (when def->fit_camera).
+ori_camera ori__render_fit(const ori_render_def *def, const ori_v3 *points, int count);
+// Points a 3D drawing must show: the mesh's vertices and, with a grid, the grid's corners
+// (from scene_lo/hi when given). Returns the count written into out (capacity vertex_count + 4).
+int ori__render_scene_points(const ori_mesh *m, const ori_render_def *def, const ori_v3 *scene_lo,
+                             const ori_v3 *scene_hi, ori_v3 *out);
+
+#endif

@@ -1,0 +1,36 @@
+#!/bin/sh
+# glTF and GLB files written by `orikin export` pass the Khronos glTF validator (npm
+# gltf-validator) with no errors: a static sheet, a thick solid, a sequence's and a fold's
+# animation, a folded Miura-ori. Skipped (exit 77) when node or node_modules is missing.
+#
+# usage: tests/gltf/run.sh ORIKIN ROOT
+set -u
+ORIKIN=$1
+ROOT=$2
+cd "$ROOT" || exit 1
+if ! command -v node >/dev/null 2>&1; then
+    echo "skipped: node is not installed (make deps installs it)"
+    exit 77
+fi
+if [ ! -f node_modules/gltf-validator/package.json ]; then
+    echo "skipped: node_modules/gltf-validator is missing (make deps runs npm ci)"
+    exit 77
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+export_to() {
+    if ! "$ORIKIN" export "$@" >/dev/null; then
+        echo "FAIL: orikin export $*"
+        fail=1
+    fi
+}
+export_to examples/open-corner.seq.json --at 0.5 -o "$tmp/corner.gltf"
+export_to examples/open-corner.seq.json --thickness 0.05 -o "$tmp/corner-thick.glb"
+export_to examples/open-corner.seq.json --animate -o "$tmp/corner-animated.gltf"
+export_to examples/open-corner.seq.json --animate -o "$tmp/corner-animated.glb"
+export_to examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --animate -o "$tmp/fold.glb"
+"$ORIKIN" generate miura --rows 6 --cols 6 -o "$tmp/miura.fold" >/dev/null || fail=1
+export_to "$tmp/miura.fold" --fix 0 --drive 66 --to -120 -o "$tmp/miura.glb"
+node tests/gltf/validate.js "$tmp"/*.gltf "$tmp"/*.glb || fail=1
+exit $fail

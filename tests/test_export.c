@@ -1,0 +1,677 @@
+// Meshes of states (src/io/mesh_write*): OBJ, STL, PLY, glTF and GLB read back to the posed
+// vertices, triangle areas sum to the sheet's, thick solids are watertight with volume =
+// area × thickness, and animated glTF reproduces every keyframe's vertices from its nodes.
+#define _POSIX_C_SOURCE 200809L
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "support.h"
+
+TestSuite(export, .init = test_leak_setup, .fini = test_leak_check);
+
+// --- states -------------------------------------------------------------------------------------
+
+typedef struct state {
+    ori_pattern *p;
+    ori_v3 *pos;
+    double *ang;
+} state;
+
+static void state_free(state *s)
+{
+    ori_pattern_destroy(s->p);
+    free(s->pos);
+    free(s->ang);
+}
+
+// The last frame of a fold of p driving edge `drive` to to_deg (face `fix` fixed, `lock` held).
+static state fold_state(ori_pattern *p, int fix, int drive, int lock, double to_deg)
+{
+    state s = {p, NULL, NULL};
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = fix;
+    d.driven_edge = drive;
+    d.to_rad = ori_deg_to_rad(to_deg);
+    d.step_rad = ori_deg_to_rad(fabs(to_deg) / 4);
+    d.locked_edges = lock >= 0 ? &lock : NULL;
+    d.locked_count = lock >= 0;
+    ori_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
+    int last = ori_motion_frame_count(mo) - 1;
+    int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p);
+    s.pos = malloc(sizeof(ori_v3) * (size_t)nv);
+    s.ang = malloc(sizeof(double) * (size_t)ne);
+    ori_motion_frame_vertices(mo, last, s.pos);
+    memcpy(s.ang, ori_motion_frame_angles(mo, last), sizeof(double) * (size_t)ne);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    return s;
+}
+
+// The open corner's first fold at 60° (diagonal driven, lower-left triangle fixed).
+static state corner_60(void)
+{
+    test_open_corner c = test_open_corner_load();
+    ori_mechanism_destroy(c.m);
+    return fold_state(c.p, c.t2, c.diag, c.down, 60.0);
+}
+
+// A 4 × 4 Miura-ori folded to 100° by its middle zig-zag crease.
+static state miura_100(void)
+{
+    ori_pattern *p = test_miura(4, 4, 1.0, 1.0, ori_deg_to_rad(60.0), NULL);
+    int drive = ori_pattern_find_edge(p, 2 * 5 + 2, 3 * 5 + 2);
+    double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    return fold_state(p, 0, drive, -1, sg * 100.0);
+}
+
+static state flat_state(ori_pattern *p)
+{
+    state s = {p, NULL, NULL};
+    int nv = ori_pattern_vertex_count(p);
+    s.pos = malloc(sizeof(ori_v3) * (size_t)nv);
+    for (int v = 0; v < nv; ++v) s.pos[v] = ori_pattern_vertex(p, v);
+    return s;
+}
+
+// A non-convex (comb-shaped) flat sheet with one face.
+static ori_pattern *comb_sheet(void)
+{
+    static const double comb[][2] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}, {5, 3}, {4, 3}, {4, 1}, {3, 1}, {3, 3},
+                                     {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+    int n = (int)(sizeof comb / sizeof comb[0]);
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    for (int i = 0; i < n; ++i) ori_pattern_add_vertex(p, ori_v3_make(comb[i][0], comb[i][1], 0));
+    for (int i = 0; i < n; ++i) ori_pattern_add_edge(p, i, (i + 1) % n, ORI_ASSIGN_BOUNDARY, 0.0);
+    ori_error err;
+    ori_build_def bd = ori_default_build_def();
+    cr_assert_eq(ori_pattern_build(p, &bd, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+static ori_mesh *mesh_of(const state *s)
+{
+    ori_state_view sv = {s->p, s->pos, s->ang};
+    ori_mesh *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_mesh_create(&sv, &m, &err), ORI_OK, "%s", err.message);
+    return m;
+}
+
+// Export into memory; the text is NUL-terminated for the text formats.
+static char *export_text(const ori_mesh *m, ori_mesh_format f, double thickness, size_t *size)
+{
+    ori_export_def d = ori_default_export_def();
+    d.format = f;
+    d.thickness = thickness;
+    void *data = NULL;
+    ori_error err;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, size, &err), ORI_OK, "%s", err.message);
+    char *t = malloc(*size + 1);
+    memcpy(t, data, *size);
+    t[*size] = '\0';
+    ori_buffer_free(data);
+    return t;
+}
+
+static double tri_area(ori_v3 a, ori_v3 b, ori_v3 c) { return 0.5 * ori_v3_norm(ori_v3_cross(ori_v3_sub(b, a), ori_v3_sub(c, a))); }
+
+static double diag_of(const state *s)
+{
+    ori_v3 lo = s->pos[0], hi = s->pos[0];
+    for (int v = 1; v < ori_pattern_vertex_count(s->p); ++v) {
+        lo = ori_v3_make(fmin(lo.x, s->pos[v].x), fmin(lo.y, s->pos[v].y), fmin(lo.z, s->pos[v].z));
+        hi = ori_v3_make(fmax(hi.x, s->pos[v].x), fmax(hi.y, s->pos[v].y), fmax(hi.z, s->pos[v].z));
+    }
+    return ori_v3_norm(ori_v3_sub(hi, lo));
+}
+
+// --- OBJ, STL, PLY ------------------------------------------------------------------------------
+
+// OBJ vertex i is FOLD vertex i − 1, exactly; the front and back groups each hold every
+// triangle once, and their areas sum to the sheet's (4).
+Test(export, obj_reads_back_to_the_posed_vertices)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    size_t size;
+    char *t = export_text(m, ORI_MESH_OBJ, 0.0, &size);
+    ori_v3 v[64];
+    int nv = 0, side = -1, tris[2] = {0, 0};
+    double area[2] = {0, 0};
+    for (char *line = strtok(t, "\n"); line; line = strtok(NULL, "\n")) {
+        if (line[0] == 'v' && line[1] == ' ') {
+            cr_assert_eq(sscanf(line + 2, "%lf %lf %lf", &v[nv].x, &v[nv].y, &v[nv].z), 3);
+            nv++;
+        } else if (strncmp(line, "g front", 7) == 0) side = 0;
+        else if (strncmp(line, "g back", 6) == 0) side = 1;
+        else if (line[0] == 'f' && line[1] == ' ') {
+            int a, b, c, x;
+            cr_assert_eq(sscanf(line + 2, "%d/%d/%d %d/%d/%d %d/%d/%d", &a, &x, &x, &b, &x, &x, &c, &x, &x), 9, "%s", line);
+            cr_assert_geq(side, 0);
+            area[side] += tri_area(v[a - 1], v[b - 1], v[c - 1]);
+            tris[side]++;
+        }
+    }
+    cr_assert_eq(nv, ori_pattern_vertex_count(s.p));
+    double diag = diag_of(&s);
+    for (int i = 0; i < nv; ++i) cr_assert_leq(ori_v3_norm(ori_v3_sub(v[i], s.pos[i])), 1e-9 * diag, "vertex %d", i);
+    for (int k = 0; k < 2; ++k) {
+        cr_assert_eq(tris[k], ori_mesh_triangle_count(m));
+        cr_assert_leq(fabs(area[k] - 4.0), 4.0 * 1e-9, "side %d area %.17g", k, area[k]);
+    }
+    free(t);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}
+
+typedef struct stl {
+    ori_v3 (*tri)[3];
+    int n;
+} stl;
+
+static stl parse_stl(char *t)
+{
+    stl s = {NULL, 0};
+    int cap = 0, k = 0;
+    cr_assert(strncmp(t, "solid", 5) == 0);
+    for (char *line = strtok(t, "\n"); line; line = strtok(NULL, "\n")) {
+        while (*line == ' ') line++;
+        if (strncmp(line, "vertex ", 7) != 0) continue;
+        if (k == 0) {
+            if (s.n == cap) {
+                cap = cap ? 2 * cap : 64;
+                s.tri = realloc(s.tri, sizeof *s.tri * (size_t)cap);
+            }
+        }
+        ori_v3 *q = &s.tri[s.n][k];
+        cr_assert_eq(sscanf(line + 7, "%lf %lf %lf", &q->x, &q->y, &q->z), 3);
+        if (++k == 3) {
+            k = 0;
+            s.n++;
+        }
+    }
+    return s;
+}
+
+// Every STL vertex is a posed vertex exactly; front and back each cover the sheet.
+Test(export, stl_reads_back_to_the_posed_vertices)
+{
+    state s = miura_100();
+    ori_mesh *m = mesh_of(&s);
+    size_t size;
+    char *t = export_text(m, ORI_MESH_STL, 0.0, &size);
+    stl st = parse_stl(t);
+    cr_assert_eq(st.n, 2 * ori_mesh_triangle_count(m));
+    double diag = diag_of(&s), area = 0.0;
+    int nv = ori_pattern_vertex_count(s.p);
+    for (int i = 0; i < st.n; ++i) {
+        area += tri_area(st.tri[i][0], st.tri[i][1], st.tri[i][2]);
+        for (int k = 0; k < 3; ++k) {
+            double best = INFINITY;
+            for (int v = 0; v < nv; ++v) best = fmin(best, ori_v3_norm(ori_v3_sub(st.tri[i][k], s.pos[v])));
+            cr_assert_leq(best, 1e-9 * diag, "triangle %d corner %d is %.3g from every posed vertex", i, k, best);
+        }
+    }
+    // Flat area of the Miura: 16 parallelograms 1 × sin 60°.
+    double sheet = 16.0 * sin(ori_deg_to_rad(60.0));
+    cr_assert_leq(fabs(area / 2 - sheet), sheet * 1e-9, "area %.17g vs %.17g", area / 2, sheet);
+    free(st.tri);
+    free(t);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}
+
+// PLY keeps the FOLD vertex of every vertex (its coordinates equal the posed vertex) and the
+// FOLD face and side of every triangle.
+Test(export, ply_keeps_fold_indices)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    size_t size;
+    char *t = export_text(m, ORI_MESH_PLY, 0.0, &size);
+    int nv = 0, nf = 0;
+    char *body = strstr(t, "end_header\n");
+    cr_assert_not_null(body);
+    cr_assert_eq(sscanf(strstr(t, "element vertex"), "element vertex %d", &nv), 1);
+    cr_assert_eq(sscanf(strstr(t, "element face"), "element face %d", &nf), 1);
+    cr_assert_eq(nf, 2 * ori_mesh_triangle_count(m));
+    char *line = strtok(body + strlen("end_header\n"), "\n");
+    ori_v3 *v = malloc(sizeof(ori_v3) * (size_t)nv);
+    double diag = diag_of(&s);
+    for (int i = 0; i < nv; ++i, line = strtok(NULL, "\n")) {
+        double n[3];
+        int r, g, b, fv;
+        cr_assert_eq(sscanf(line, "%lf %lf %lf %lf %lf %lf %d %d %d %d", &v[i].x, &v[i].y, &v[i].z, &n[0], &n[1], &n[2], &r, &g,
+                            &b, &fv),
+                     10);
+        cr_assert_leq(ori_v3_norm(ori_v3_sub(v[i], s.pos[fv])), 1e-9 * diag, "vertex %d (FOLD %d)", i, fv);
+        cr_assert_leq(fabs(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0), 1e-12);
+    }
+    double area[2] = {0, 0};
+    for (int i = 0; i < nf; ++i, line = strtok(NULL, "\n")) {
+        int k, a, b, c, face, side;
+        cr_assert_eq(sscanf(line, "%d %d %d %d %d %d", &k, &a, &b, &c, &face, &side), 6);
+        cr_assert_eq(k, 3);
+        cr_assert(face >= 0 && face < ori_pattern_face_count(s.p));
+        cr_assert(side == 0 || side == 1);
+        area[side] += tri_area(v[a], v[b], v[c]);
+    }
+    cr_assert_leq(fabs(area[0] - 4.0), 4e-9);
+    cr_assert_leq(fabs(area[1] - 4.0), 4e-9);
+    free(v);
+    free(t);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}
+
+// Directed edges of an STL keyed by their exact coordinates: every edge of every triangle
+// appears once, and once in the opposite direction (a closed, consistently oriented surface).
+static int unmatched_edges(const stl *st)
+{
+    int n = 3 * st->n, bad = 0;
+    for (int i = 0; i < n; ++i) {
+        ori_v3 a = st->tri[i / 3][i % 3], b = st->tri[i / 3][(i % 3 + 1) % 3];
+        int same = 0, reverse = 0;
+        for (int j = 0; j < n; ++j) {
+            ori_v3 c = st->tri[j / 3][j % 3], d = st->tri[j / 3][(j % 3 + 1) % 3];
+            same += a.x == c.x && a.y == c.y && a.z == c.z && b.x == d.x && b.y == d.y && b.z == d.z;
+            reverse += a.x == d.x && a.y == d.y && a.z == d.z && b.x == c.x && b.y == c.y && b.z == c.z;
+        }
+        bad += same != 1 || reverse != 1;
+    }
+    return bad;
+}
+
+static double volume(const stl *st)
+{
+    double v = 0.0;
+    for (int i = 0; i < st->n; ++i) {
+        ori_v3 a = st->tri[i][0], b = st->tri[i][1], c = st->tri[i][2];
+        v += ori_v3_dot(a, ori_v3_cross(b, c)) / 6.0;
+    }
+    return v;
+}
+
+// The thickened sheet is a closed, watertight solid whose volume is area × thickness to 1e-9:
+// a flat sheet, the open corner folded 60°, a folded Miura-ori, a non-convex sheet.
+Test(export, thick_stl_is_watertight_with_the_right_volume)
+{
+    state states[4] = {flat_state(test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0)), corner_60(),
+                       miura_100(), flat_state(comb_sheet())};
+    double areas[4] = {4.0, 4.0, 16.0 * sin(ori_deg_to_rad(60.0)), 11.0};
+    for (int i = 0; i < 4; ++i) {
+        ori_mesh *m = mesh_of(&states[i]);
+        double t = 0.05;
+        size_t size;
+        char *text = export_text(m, ORI_MESH_STL, t, &size);
+        stl st = parse_stl(text);
+        cr_assert_gt(st.n, 0);
+        cr_assert_eq(unmatched_edges(&st), 0, "state %d: the solid has open or non-manifold edges", i);
+        double vol = volume(&st);
+        cr_assert_leq(fabs(vol - areas[i] * t), 1e-9 * areas[i] * t, "state %d: volume %.17g, area × thickness %.17g", i, vol,
+                      areas[i] * t);
+        free(st.tri);
+        free(text);
+        ori_mesh_destroy(m);
+        state_free(&states[i]);
+    }
+}
+
+// --- glTF -----------------------------------------------------------------------------------------
+
+typedef struct gltf {
+    json_t *root;
+    unsigned char *bin;
+    size_t bin_len;
+} gltf;
+
+static int b64(int c)
+{
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    return c == '+' ? 62 : c == '/' ? 63 : -1;
+}
+
+static uint32_t le32(const unsigned char *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24; }
+
+// Parse a .gltf (buffer as a base64 data URI) or a .glb held in memory.
+static gltf gltf_parse(const unsigned char *data, size_t size)
+{
+    gltf g = {NULL, NULL, 0};
+    json_error_t je;
+    if (size >= 12 && le32(data) == 0x46546C67u) {
+        cr_assert_eq(le32(data + 4), 2);
+        cr_assert_eq(le32(data + 8), size, "GLB length");
+        uint32_t jlen = le32(data + 12);
+        cr_assert_eq(le32(data + 16), 0x4E4F534Au);
+        g.root = json_loadb((const char *)data + 20, jlen, 0, &je);
+        const unsigned char *b = data + 20 + jlen;
+        cr_assert_eq(le32(b + 4), 0x004E4942u);
+        g.bin_len = le32(b);
+        g.bin = malloc(g.bin_len);
+        memcpy(g.bin, b + 8, g.bin_len);
+    } else {
+        g.root = json_loadb((const char *)data, size, 0, &je);
+        cr_assert_not_null(g.root, "%s", je.text);
+        const char *uri = json_string_value(json_object_get(json_array_get(json_object_get(g.root, "buffers"), 0), "uri"));
+        const char *prefix = "data:application/octet-stream;base64,";
+        cr_assert(uri && strncmp(uri, prefix, strlen(prefix)) == 0);
+        const char *c = uri + strlen(prefix);
+        size_t n = strlen(c);
+        g.bin = malloc(n);
+        uint32_t acc = 0;
+        int bits = 0;
+        for (size_t i = 0; i < n && c[i] != '='; ++i) {
+            int v = b64(c[i]);
+            cr_assert_geq(v, 0);
+            acc = acc << 6 | (uint32_t)v;
+            bits += 6;
+            if (bits >= 8) {
+                bits -= 8;
+                g.bin[g.bin_len++] = (unsigned char)(acc >> bits);
+            }
+        }
+    }
+    cr_assert_not_null(g.root);
+    cr_assert_str_eq(json_string_value(json_object_get(json_object_get(g.root, "asset"), "version")), "2.0");
+    return g;
+}
+
+static void gltf_free(gltf *g)
+{
+    json_decref(g->root);
+    free(g->bin);
+}
+
+// An accessor's floats (or unsigned ints converted) as doubles, ncomp per element (malloc'd).
+static double *accessor(const gltf *g, int index, int *count, int *ncomp)
+{
+    json_t *a = json_array_get(json_object_get(g->root, "accessors"), (size_t)index);
+    cr_assert_not_null(a);
+    json_t *bv = json_array_get(json_object_get(g->root, "bufferViews"), (size_t)json_integer_value(json_object_get(a, "bufferView")));
+    const char *type = json_string_value(json_object_get(a, "type"));
+    int nc = strcmp(type, "SCALAR") == 0 ? 1 : strcmp(type, "VEC2") == 0 ? 2 : strcmp(type, "VEC3") == 0 ? 3 : 4;
+    int n = (int)json_integer_value(json_object_get(a, "count"));
+    int ct = (int)json_integer_value(json_object_get(a, "componentType"));
+    size_t off = (size_t)json_integer_value(json_object_get(bv, "byteOffset")) + (size_t)json_integer_value(json_object_get(a, "byteOffset"));
+    json_t *js = json_object_get(bv, "byteStride");
+    size_t stride = js ? (size_t)json_integer_value(js) : 4 * (size_t)nc;
+    double *out = malloc(sizeof(double) * (size_t)n * (size_t)nc + 1);
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < nc; ++k) {
+            const unsigned char *p = g->bin + off + (size_t)i * stride + 4 * (size_t)k;
+            cr_assert_leq((size_t)(p - g->bin) + 4, g->bin_len);
+            uint32_t u = le32(p);
+            if (ct == 5126) {
+                float f;
+                memcpy(&f, &u, 4);
+                out[(size_t)i * nc + k] = f;
+            } else {
+                out[(size_t)i * nc + k] = u;
+            }
+        }
+    *count = n;
+    *ncomp = nc;
+    return out;
+}
+
+// POSITION + _POSITION_LO of a primitive: the exact coordinates (malloc'd); POSITION alone
+// into hi when not NULL (malloc'd).
+static ori_v3 *positions_of(const gltf *g, json_t *prim, int *count, ori_v3 **hi)
+{
+    json_t *attr = json_object_get(prim, "attributes");
+    int n, nc, n2, nc2;
+    double *h = accessor(g, (int)json_integer_value(json_object_get(attr, "POSITION")), &n, &nc);
+    double *l = accessor(g, (int)json_integer_value(json_object_get(attr, "_POSITION_LO")), &n2, &nc2);
+    cr_assert_eq(n, n2);
+    ori_v3 *p = malloc(sizeof(ori_v3) * (size_t)n + 1);
+    if (hi) *hi = malloc(sizeof(ori_v3) * (size_t)n + 1);
+    for (int i = 0; i < n; ++i) {
+        p[i] = ori_v3_make(h[3 * i] + l[3 * i], h[3 * i + 1] + l[3 * i + 1], h[3 * i + 2] + l[3 * i + 2]);
+        if (hi) (*hi)[i] = ori_v3_make(h[3 * i], h[3 * i + 1], h[3 * i + 2]);
+    }
+    free(h);
+    free(l);
+    *count = n;
+    return p;
+}
+
+// glTF and GLB: POSITION + _POSITION_LO equals the posed FOLD vertex named in extras to 1e-9 of
+// the sheet (POSITION alone to float precision); each side's triangles cover the sheet; the
+// FOLD faces of the triangles are listed.
+Test(export, gltf_and_glb_read_back_to_the_posed_vertices)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    double diag = diag_of(&s);
+    for (int binary = 0; binary < 2; ++binary) {
+        ori_export_def d = ori_default_export_def();
+        d.format = binary ? ORI_MESH_GLB : ORI_MESH_GLTF;
+        void *data = NULL;
+        size_t size = 0;
+        ori_error err;
+        cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_OK, "%s", err.message);
+        gltf g = gltf_parse(data, size);
+        json_t *prims = json_object_get(json_array_get(json_object_get(g.root, "meshes"), 0), "primitives");
+        cr_assert_eq(json_array_size(prims), 2, "front and back");
+        for (size_t pi = 0; pi < 2; ++pi) {
+            json_t *prim = json_array_get(prims, pi);
+            int n;
+            ori_v3 *hi = NULL;
+            ori_v3 *p = positions_of(&g, prim, &n, &hi);
+            json_t *fv = json_object_get(json_object_get(prim, "extras"), "fold_vertices");
+            cr_assert_eq((int)json_array_size(fv), n);
+            for (int i = 0; i < n; ++i) {
+                int v = (int)json_integer_value(json_array_get(fv, (size_t)i));
+                cr_assert_leq(ori_v3_norm(ori_v3_sub(p[i], s.pos[v])), 1e-9 * diag, "vertex %d (FOLD %d)", i, v);
+                cr_assert_leq(ori_v3_norm(ori_v3_sub(hi[i], s.pos[v])), 1e-7 * diag, "float POSITION %d", i);
+            }
+            int ni, nc;
+            double *idx = accessor(&g, (int)json_integer_value(json_object_get(prim, "indices")), &ni, &nc);
+            json_t *ff = json_object_get(json_object_get(prim, "extras"), "fold_faces");
+            cr_assert_eq((int)json_array_size(ff) * 3, ni);
+            double area = 0.0;
+            for (int t = 0; t < ni; t += 3) area += tri_area(p[(int)idx[t]], p[(int)idx[t + 1]], p[(int)idx[t + 2]]);
+            cr_assert_leq(fabs(area - 4.0), 4e-9, "side %zu area %.17g", pi, area);
+            free(idx);
+            free(hi);
+            free(p);
+        }
+        gltf_free(&g);
+        ori_buffer_free(data);
+    }
+    ori_mesh_destroy(m);
+    state_free(&s);
+}
+
+// A quaternion (x, y, z, w) applied to p.
+static ori_v3 quat_apply(const double *q, ori_v3 p)
+{
+    ori_v3 u = ori_v3_make(q[0], q[1], q[2]);
+    double w = q[3];
+    ori_v3 t = ori_v3_scale(ori_v3_cross(u, p), 2.0);
+    return ori_v3_add(ori_v3_add(p, ori_v3_scale(t, w)), ori_v3_cross(u, t));
+}
+
+static void check_animation(const char *path, int keyframes, const double *times, const ori_v3 *const *frames, double diag)
+{
+    char *data = NULL;
+    size_t size = 0;
+    ori_error err;
+    cr_assert_eq(ori_file_read_all(path, 1 << 28, &data, &size, &err), ORI_OK, "%s", err.message);
+    gltf g = gltf_parse((unsigned char *)data, size);
+    json_t *anim = json_array_get(json_object_get(g.root, "animations"), 0);
+    cr_assert_not_null(anim);
+    json_t *nodes = json_object_get(g.root, "nodes"), *meshes = json_object_get(g.root, "meshes");
+    json_t *channels = json_object_get(anim, "channels"), *samplers = json_object_get(anim, "samplers");
+    int checked = 0;
+    for (size_t c = 0; c < json_array_size(channels); ++c) {
+        json_t *ch = json_array_get(channels, c);
+        if (strcmp(json_string_value(json_object_get(json_object_get(ch, "target"), "path")), "rotation") != 0) continue;
+        int node = (int)json_integer_value(json_object_get(json_object_get(ch, "target"), "node"));
+        // The node's translation channel.
+        json_t *tch = NULL;
+        for (size_t c2 = 0; c2 < json_array_size(channels); ++c2) {
+            json_t *x = json_array_get(channels, c2);
+            json_t *tg = json_object_get(x, "target");
+            if (json_integer_value(json_object_get(tg, "node")) == node && strcmp(json_string_value(json_object_get(tg, "path")), "translation") == 0)
+                tch = x;
+        }
+        cr_assert_not_null(tch);
+        json_t *rs = json_array_get(samplers, (size_t)json_integer_value(json_object_get(ch, "sampler")));
+        json_t *ts = json_array_get(samplers, (size_t)json_integer_value(json_object_get(tch, "sampler")));
+        int n, nc, nr, nt, nt2;
+        double *tin = accessor(&g, (int)json_integer_value(json_object_get(rs, "input")), &n, &nc);
+        double *rot = accessor(&g, (int)json_integer_value(json_object_get(rs, "output")), &nr, &nc);
+        double *tra = accessor(&g, (int)json_integer_value(json_object_get(ts, "output")), &nt, &nt2);
+        cr_assert_eq(n, keyframes);
+        cr_assert_eq(nr, keyframes);
+        cr_assert_eq(nt, keyframes);
+        for (int k = 0; k < n; ++k) cr_assert_leq(fabs(tin[k] - times[k]), 1e-6 * fmax(1.0, times[k]));
+        json_t *nd = json_array_get(nodes, (size_t)node);
+        json_t *mesh = json_array_get(meshes, (size_t)json_integer_value(json_object_get(nd, "mesh")));
+        json_t *prims = json_object_get(mesh, "primitives");
+        for (size_t pi = 0; pi < json_array_size(prims); ++pi) {
+            json_t *prim = json_array_get(prims, pi);
+            int nv;
+            ori_v3 *ref = positions_of(&g, prim, &nv, NULL);
+            json_t *fv = json_object_get(json_object_get(prim, "extras"), "fold_vertices");
+            for (int k = 0; k < keyframes; ++k)
+                for (int i = 0; i < nv; ++i) {
+                    int v = (int)json_integer_value(json_array_get(fv, (size_t)i));
+                    ori_v3 w = ori_v3_add(quat_apply(rot + 4 * k, ref[i]), ori_v3_make(tra[3 * k], tra[3 * k + 1], tra[3 * k + 2]));
+                    cr_assert_leq(ori_v3_norm(ori_v3_sub(w, frames[k][v])), 1e-6 * diag,
+                                  "node %d keyframe %d: FOLD vertex %d is %.3g away", node, k, v, ori_v3_norm(ori_v3_sub(w, frames[k][v])));
+                    checked++;
+                }
+            free(ref);
+        }
+        free(tin);
+        free(rot);
+        free(tra);
+    }
+    cr_assert_gt(checked, 0);
+    gltf_free(&g);
+    ori_buffer_free(data);
+}
+
+// `orikin export SEQ.json --animate`: one node per face whose rotation and translation at
+// keyframe k carry the face's flat-sheet vertices onto the sequence's recorded state k, to
+// 1e-6 of the sheet; keyframe times are the sequence times (one second per fold).
+Test(export, animated_gltf_reproduces_every_keyframe)
+{
+    test_open_corner c = test_open_corner_load();
+    ori_sequence *s = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_load_file(test_repo_path("examples/open-corner.seq.json"), &s, &err), ORI_OK);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, c.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    int K = ori_record_frame_count(r);
+    double times[64];
+    const ori_v3 *frames[64];
+    cr_assert_leq(K, 64);
+    for (int k = 0; k < K; ++k) {
+        times[k] = ori_record_frame_time(r, k);
+        frames[k] = ori_record_frame_vertices(r, k);
+    }
+    char *dir = test_tmpdir();
+    for (int binary = 0; binary < 2; ++binary) {
+        char args[1024], path[512];
+        snprintf(path, sizeof path, "%s/anim.%s", dir, binary ? "glb" : "gltf");
+        snprintf(args, sizeof args, "export examples/open-corner.seq.json --animate -o '%s'", path);
+        char *out = NULL;
+        cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+        free(out);
+        check_animation(path, K, times, frames, 2.0 * sqrt(2.0));
+    }
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    test_open_corner_free(&c);
+    test_tmpdir_remove(dir);
+}
+
+// The same through fold options: the keyframes are the fold's output steps.
+Test(export, animated_fold_reproduces_its_steps)
+{
+    test_open_corner c = test_open_corner_load();
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = 4;
+    d.driven_edge = 12;
+    d.to_rad = ori_deg_to_rad(90.0);
+    d.step_rad = ori_deg_to_rad(15.0);
+    int lock = 11;
+    d.locked_edges = &lock;
+    d.locked_count = 1;
+    ori_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_OK);
+    int K = ori_motion_frame_count(mo);
+    cr_assert_eq(K, 7);
+    ori_v3 pos[7][16];
+    const ori_v3 *frames[7];
+    double times[7];
+    for (int k = 0; k < K; ++k) {
+        ori_motion_frame_vertices(mo, k, pos[k]);
+        frames[k] = pos[k];
+        times[k] = k / 6.0;
+    }
+    char *dir = test_tmpdir(), args[1024], path[512], *out = NULL;
+    snprintf(path, sizeof path, "%s/fold.glb", dir);
+    snprintf(args, sizeof args,
+             "export examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --step 15 --animate -o '%s'", path);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    check_animation(path, K, times, frames, 2.0 * sqrt(2.0));
+    ori_motion_destroy(mo);
+    test_open_corner_free(&c);
+    test_tmpdir_remove(dir);
+}
+
+// --- bad input ---------------------------------------------------------------------------------
+
+Test(export, bad_parameters_are_refused_and_nothing_written)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    ori_export_def d = ori_default_export_def();
+    void *data = NULL;
+    size_t size = 0;
+    ori_error err;
+    d.format = ORI_MESH_UNKNOWN;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    d.format = ORI_MESH_STL;
+    d.thickness = -1.0;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    d.thickness = NAN;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    d.thickness = 0.0;
+    ori_rigid poses[2 * 5];
+    for (int i = 0; i < 10; ++i) poses[i] = ori_rigid_identity();
+    double times[2] = {0.0, 1.0};
+    d.keyframe_count = 2;
+    d.keyframe_times_s = times;
+    d.keyframe_poses = poses;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_ERR_ARGUMENT, "keyframes need glTF");
+    d.format = ORI_MESH_GLB;
+    d.thickness = 0.1;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_ERR_ARGUMENT, "a solid is not animated");
+    d.thickness = 0.0;
+    times[1] = 0.0;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_ERR_ARGUMENT, "times must increase");
+    cr_assert_null(data);
+    times[1] = 1.0;
+    cr_assert_eq(ori_mesh_export_file(m, &d, "/nonexistent-dir/x.glb", &err), ORI_ERR_IO);
+    cr_assert_eq(access("/nonexistent-dir/x.glb", F_OK), -1);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}

@@ -1,0 +1,310 @@
+// Rounded drawings: snapping a vertex to the exact one it means (check --tolerance) and moving
+// vertices the least so that a pattern is exactly flat-foldable and, with --rigid, rigidly
+// foldable (ori_regularize).
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "support.h"
+
+TestSuite(regularize, .init = test_leak_setup, .fini = test_leak_check);
+
+static double deg(double d) { return ori_deg_to_rad(d); }
+
+// A deterministic uniform number in [−1, 1] (LCG), so that the perturbations are reproducible.
+static double noise(unsigned *state)
+{
+    *state = *state * 1664525u + 1013904223u;
+    return ((double)(*state >> 8) / (double)(1u << 24)) * 2.0 - 1.0;
+}
+
+// The pattern with every vertex moved by up to amplitude × the diagonal (boundary vertices along
+// the x or y axis only, so the sheet stays a rectangle; corners kept), as a drawing tool's
+// rounding would; built.
+static ori_pattern *perturbed(const ori_pattern *p, double amplitude, unsigned seed)
+{
+    ori_pattern *q = ori_pattern_clone(p);
+    double L = ori_pattern_diagonal(p);
+    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 a = ori_pattern_vertex(p, v);
+        xmin = fmin(xmin, a.x), xmax = fmax(xmax, a.x), ymin = fmin(ymin, a.y), ymax = fmax(ymax, a.y);
+    }
+    unsigned s = seed;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 a = ori_pattern_vertex(p, v);
+        double dx = noise(&s) * amplitude * L, dy = noise(&s) * amplitude * L;
+        bool on_x = a.x == xmin || a.x == xmax, on_y = a.y == ymin || a.y == ymax;
+        if (on_x) dx = 0.0;
+        if (on_y) dy = 0.0;
+        ori_pattern_set_vertex(q, v, ori_v3_make(a.x + dx, a.y + dy, 0.0));
+    }
+    ori_error err;
+    cr_assert_eq(ori_pattern_build(q, NULL, &err), ORI_OK, "%s", err.message);
+    return q;
+}
+
+static double max_kawasaki(const ori_pattern *p)
+{
+    double worst = 0.0, sec[64];
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        if (!ori_pattern_vertex_is_interior(p, v)) continue;
+        int n = ori_flat_vertex_creases(p, v, NULL, sec, 64);
+        worst = fmax(worst, fabs(ori_flat_kawasaki_sum(sec, n)));
+    }
+    return worst;
+}
+
+// --- snapping one vertex --------------------------------------------------------------------
+
+// Sectors 100°, 80°, 80°, 100° rounded by up to 3e-6 rad: the snap makes the two classes exact
+// (equal within each class to the last bit), Kawasaki and the 360° sum hold to a few ulps, and
+// no sector moves more than the rounding.
+Test(regularize, snap_restores_the_exact_vertex)
+{
+    double s[4] = {deg(100) + 3e-6, deg(80) - 1e-6, deg(80) + 2.5e-6, deg(100) - 2e-6};
+    double out[4];
+    double dev = ori_flat_snap_sectors(s, 4, 1e-4, out);
+    cr_assert_leq(dev, 3.5e-6, "deviation %.3g", dev);
+    cr_assert_eq(out[0], out[3]);
+    cr_assert_eq(out[1], out[2]);
+    cr_assert_leq(fabs(ori_flat_kawasaki_sum(out, 4)), 1e-15);
+    cr_assert_leq(fabs(out[0] + out[1] + out[2] + out[3] - 2.0 * ORI_PI), 4e-15);
+    // The least-squares answer: each class takes its mean, shifted equally to close the sum.
+    double shift = (2.0 * ORI_PI - (s[0] + s[1] + s[2] + s[3])) / 4.0;
+    cr_assert_leq(fabs(out[0] - ((s[0] + s[3]) / 2.0 + shift)), 1e-15);
+    cr_assert_leq(fabs(out[1] - ((s[1] + s[2]) / 2.0 + shift)), 1e-15);
+}
+
+// With a tolerance below the rounding, 80° + 1e-5 and 80° stay apart: Kawasaki and the sum are
+// imposed by least squares, which moves the first by 0.75e-5 and the last by 0.25e-5 (making
+// them equal again); odd degree has no exact vertex.
+Test(regularize, snap_without_merging_and_odd_degree)
+{
+    double s[4] = {deg(80) + 1e-5, deg(100), deg(100), deg(80)};
+    double out[4];
+    double dev = ori_flat_snap_sectors(s, 4, 1e-7, out);
+    cr_assert_leq(fabs(ori_flat_kawasaki_sum(out, 4)), 1e-15);
+    cr_assert_leq(fabs(out[0] + out[1] + out[2] + out[3] - 2.0 * ORI_PI), 4e-15);
+    cr_assert_leq(fabs(dev - 0.75e-5), 1e-12, "dev %.17g", dev);
+    cr_assert_leq(fabs(out[0] - s[0] + 0.75e-5), 1e-12);
+    cr_assert_leq(fabs(out[3] - s[3] - 0.25e-5), 1e-12);
+    double odd[3] = {deg(120), deg(120), deg(120)};
+    cr_assert(isinf(ori_flat_snap_sectors(odd, 3, 1e-3, out)));
+}
+
+// --- check with a tolerance -------------------------------------------------------------------
+
+// A 6 × 6 Miura-ori rounded at 1e-6 of its size fails the exact check at some vertices; with a
+// tolerance of 0.01° every one of them passes "within tolerance", with a deviation above 0 and
+// at most the tolerance; an exact pattern has no within-tolerance vertex.
+Test(regularize, check_with_tolerance_explains_rounding)
+{
+    ori_pattern *m = test_miura(6, 6, 1.0, 1.0, deg(60), NULL);
+    ori_pattern *q = perturbed(m, 1e-6, 7);
+    ori_flat_report *exact = ori_flat_check_pattern(q, NULL);
+    int failed = ori_flat_report_failed_count(exact);
+    cr_assert_gt(failed, 0, "the rounding must break Kawasaki somewhere");
+    ori_flat_check_def d = ori_default_flat_check_def();
+    d.tolerance_rad = deg(0.01);
+    ori_flat_report *tol = ori_flat_check_pattern(q, &d);
+    cr_assert(ori_flat_report_flat_foldable(tol));
+    cr_assert_eq(ori_flat_report_within_count(tol), failed);
+    cr_assert_gt(ori_flat_report_max_deviation(tol), 0.0);
+    cr_assert_leq(ori_flat_report_max_deviation(tol), deg(0.01));
+    for (int i = 0; i < ori_flat_report_vertex_count(tol); ++i) {
+        ori_vertex_report r = ori_flat_report_vertex(tol, i);
+        cr_assert(r.flat_foldable);
+        if (r.within_tolerance) cr_assert_gt(r.deviation_rad, 0.0);
+    }
+    ori_flat_report *clean = ori_flat_check_pattern(m, &d);
+    cr_assert_eq(ori_flat_report_within_count(clean), 0);
+    ori_flat_report_destroy(exact);
+    ori_flat_report_destroy(tol);
+    ori_flat_report_destroy(clean);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(m);
+}
+
+// A tolerance never rescues a wrong assignment: a degree-4 vertex with Maekawa broken fails
+// with and without it.
+Test(regularize, tolerance_does_not_excuse_the_assignment)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/non-flat-foldable-vertex.fold"), 0);
+    ori_flat_check_def d = ori_default_flat_check_def();
+    d.tolerance_rad = deg(0.5);
+    ori_flat_report *r = ori_flat_check_pattern(p, &d);
+    cr_assert_not(ori_flat_report_flat_foldable(r));
+    ori_flat_report_destroy(r);
+    ori_pattern_destroy(p);
+}
+
+// --- regularize -------------------------------------------------------------------------------
+
+// Kawasaki only: the rounded Miura-ori becomes exact (≤ 1e-12 rad at every vertex, measured on
+// the new pattern), no vertex moves more than a few times the rounding, corners stay, boundary
+// vertices stay on their side, and the exact check passes. Topology and assignment are kept.
+Test(regularize, kawasaki_exact_with_least_moves)
+{
+    ori_pattern *m = test_miura(6, 6, 1.0, 1.0, deg(60), NULL);
+    ori_pattern *q = perturbed(m, 1e-6, 11);
+    cr_assert_gt(max_kawasaki(q), 1e-9);
+    ori_regularize_def d = ori_default_regularize_def();
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    ori_error err;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.converged);
+    cr_assert_not(r.refused);
+    cr_assert_not_null(out);
+    cr_assert_leq(r.kawasaki_after_rad, 1e-12);
+    cr_assert_leq(max_kawasaki(out), 1e-12);
+    cr_assert_gt(r.max_move_rel, 0.0);
+    cr_assert_leq(r.max_move_rel, 5e-6, "moved %.3g", r.max_move_rel);
+    cr_assert_leq(r.rms_move_rel, r.max_move_rel);
+    cr_assert_eq(ori_pattern_edge_count(out), ori_pattern_edge_count(q));
+    cr_assert_eq(ori_pattern_face_count(out), ori_pattern_face_count(q));
+    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+    for (int v = 0; v < ori_pattern_vertex_count(q); ++v) {
+        ori_v3 a = ori_pattern_vertex(q, v);
+        xmin = fmin(xmin, a.x), xmax = fmax(xmax, a.x), ymin = fmin(ymin, a.y), ymax = fmax(ymax, a.y);
+    }
+    for (int v = 0; v < ori_pattern_vertex_count(q); ++v) {
+        ori_v3 a = ori_pattern_vertex(q, v), b = ori_pattern_vertex(out, v);
+        bool on_x = a.x == xmin || a.x == xmax, on_y = a.y == ymin || a.y == ymax;
+        if (on_x) cr_assert_leq(fabs(b.x - a.x), 1e-15 * fabs(a.x) + 1e-300, "vertex %d left its side", v);
+        if (on_y) cr_assert_leq(fabs(b.y - a.y), 1e-15 * fabs(a.y) + 1e-300, "vertex %d left its side", v);
+        if (on_x && on_y) cr_assert(b.x == a.x && b.y == a.y, "corner %d moved", v);
+    }
+    for (int e = 0; e < ori_pattern_edge_count(q); ++e)
+        cr_assert_eq(ori_pattern_edge(out, e).assignment, ori_pattern_edge(q, e).assignment);
+    ori_flat_report *rep = ori_flat_check_pattern(out, NULL);
+    cr_assert(ori_flat_report_flat_foldable(rep));
+    ori_flat_report_destroy(rep);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(m);
+}
+
+// An exact pattern is left where it is.
+Test(regularize, exact_pattern_does_not_move)
+{
+    ori_pattern *m = test_miura(4, 4, 1.0, 1.0, deg(70), NULL);
+    ori_regularize_def d = ori_default_regularize_def();
+    d.rigid = true;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    cr_assert_eq(ori_regularize(m, &d, &out, &r, NULL), ORI_OK);
+    cr_assert(r.converged);
+    cr_assert_leq(r.max_move_rel, 1e-15);
+    cr_assert_leq(r.rigid_before, 1e-12);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(m);
+}
+
+// Fold a regularized Miura-ori from flat to 170° by driving one zig-zag crease with the
+// numeric solver; returns the verdict and the largest residual.
+static ori_motion_verdict fold_miura(const ori_pattern *p, double *max_res)
+{
+    ori_mechanism *mech = test_mechanism_of(p);
+    int drive = ORI_NULL_INDEX;
+    for (int e = 0; e < ori_pattern_edge_count(p) && drive == ORI_NULL_INDEX; ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        if (ed.assignment == ORI_ASSIGN_MOUNTAIN && ori_pattern_vertex_is_interior(p, ed.v[0]) &&
+            ori_pattern_vertex_is_interior(p, ed.v[1]))
+            drive = e;
+    }
+    cr_assert_neq(drive, ORI_NULL_INDEX);
+    int faces[2];
+    ori_pattern_edge_faces(p, drive, faces);
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = faces[0];
+    d.driven_edge = drive;
+    d.to_rad = deg(-170);
+    d.step_rad = deg(10);
+    ori_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(mech, &d, &mo, &err), ORI_OK, "%s", err.message);
+    ori_motion_verdict v = ori_motion_verdict_of(mo);
+    *max_res = 0.0;
+    for (int k = 0; k < ori_motion_frame_count(mo); ++k) *max_res = fmax(*max_res, ori_motion_frame_residual(mo, k));
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(mech);
+    return v;
+}
+
+// Rigid: the rounded Miura-ori does not fold at all (its vertices' fold-angle relations
+// contradict each other around the faces); after regularize --rigid it folds from flat to 170°
+// with every state closing to 1e-10, and the second-order conditions hold to 1e-12.
+Test(regularize, rigid_makes_a_rounded_miura_fold)
+{
+    ori_pattern *m = test_miura(5, 5, 1.0, 1.2, deg(55), NULL);
+    ori_pattern *q = perturbed(m, 1e-6, 3);
+    double res;
+    cr_assert_neq(fold_miura(q, &res), ORI_MOTION_VALID, "the rounded drawing should not fold");
+    ori_regularize_def d = ori_default_regularize_def();
+    d.rigid = true;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    ori_error err;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.converged);
+    cr_assert_gt(r.rigid_before, 1e-9);
+    cr_assert_leq(r.rigid_after, 1e-12);
+    cr_assert_leq(r.kawasaki_after_rad, 1e-12);
+    cr_assert_leq(r.max_move_rel, 1e-5, "moved %.3g", r.max_move_rel);
+    cr_assert_eq(fold_miura(out, &res), ORI_MOTION_VALID);
+    cr_assert_leq(res, 1e-10);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(m);
+}
+
+// Far from exact: a degree-4 vertex whose sectors miss Kawasaki by 20° needs a large move and is
+// refused at the default limit (no pattern handed back) but accepted with a generous one.
+Test(regularize, far_patterns_are_refused)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/non-flat-foldable-vertex.fold"), 0);
+    ori_regularize_def d = ori_default_regularize_def();
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+    cr_assert(r.kawasaki_before_rad > deg(1));
+    cr_assert(r.refused);
+    cr_assert_null(out);
+    cr_assert_gt(r.max_move_rel, ORI_REGULARIZE_MAX_MOVE_REL);
+    d.max_move_rel = 0.5;
+    cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+    cr_assert(r.converged);
+    cr_assert_not_null(out);
+    cr_assert_leq(max_kawasaki(out), 1e-12);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(p);
+}
+
+// Origami Simulator's Miura-ori drawings (shared): rounded by ~0.005°, they do not fold; after
+// regularize --rigid, with moves under 1e-4 of the sheet, both fold from flat to 170°.
+Test(regularize, origami_simulator_miura_drawings_fold)
+{
+    const char *names[2] = {"origamisimulator/Tessellations_miura-ori.svg",
+                            "origamisimulator/Tessellations_miura_sharpangle.svg"};
+    for (int i = 0; i < 2; ++i) {
+        const char *path = test_require_shared(names[i]);
+        ori_import_def id = ori_default_import_def();
+        ori_pattern *p = NULL;
+        ori_error err;
+        cr_assert_eq(ori_import_file(path, ORI_FORMAT_SVG, &id, &p, NULL, &err), ORI_OK, "%s", err.message);
+        ori_regularize_def d = ori_default_regularize_def();
+        d.rigid = true;
+        ori_regularize_result r;
+        ori_pattern *out = NULL;
+        cr_assert_eq(ori_regularize(p, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+        cr_assert(r.converged, "%s", names[i]);
+        cr_assert_lt(r.max_move_rel, 1e-4, "%s moved %.3g", names[i], r.max_move_rel);
+        double res;
+        cr_assert_eq(fold_miura(out, &res), ORI_MOTION_VALID, "%s", names[i]);
+        cr_assert_leq(res, 1e-10);
+        ori_pattern_destroy(out);
+        ori_pattern_destroy(p);
+    }
+}
