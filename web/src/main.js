@@ -44,6 +44,10 @@ const state = {
   playing: false,
   foldPlaying: false,
   shown: 'flat',
+  contactOf: null,   // the contact state shown: 'fold' or 'sequence'
+  collide: null,     // the last collide check of a state
+  regularize: null,  // the last regularize answer
+  seqLimit: 0,       // the sequence's clean time: its duration, or the first contact
   composites: [],
   work: 0,
   lastError: '',
@@ -107,6 +111,7 @@ function loadDocument(doc, changed) {
   v3.setDocument(doc);
   $('edges-toggle').checked = v3.linesVisible !== false;
   state.shown = 'flat';
+  clearCollision();
   $('state3d').textContent = doc.is3d ? 'frame 0 (3D)' : 'flat sheet';
   // keep the choices that still name something
   if (state.selectedFace >= doc.faces.length) state.selectedFace = -1;
@@ -139,13 +144,17 @@ function loadDocument(doc, changed) {
 }
 
 async function runCheck() {
-  const c = await api.get('check');
+  const tol = $('check-tolerance').value.trim();
+  const c = await api.get('check', tol === '' ? undefined : { tolerance_deg: tol });
   state.check = c;
-  const bad = [];
+  const bad = [], within = [];
   const reasons = new Map();
   for (const v of c.violations) reasons.set(v.vertex, (reasons.get(v.vertex) || []).concat(`${v.rule}: ${v.detail}`));
-  for (const v of c.vertices) if (!v.flat_foldable) bad.push({ vertex: v.vertex, reason: (reasons.get(v.vertex) || ['not flat-foldable']).join('; ') });
-  v2.setCheckMarks(bad);
+  for (const v of c.vertices) {
+    if (v.within_tolerance) within.push({ vertex: v.vertex, reason: `within tolerance: flat-foldable once its sectors move by ${fmt(v.deviation_deg, 6)}°` });
+    else if (!v.flat_foldable) bad.push({ vertex: v.vertex, reason: (reasons.get(v.vertex) || ['not flat-foldable']).join('; ') });
+  }
+  v2.setCheckMarks(bad, within);
   const box = $('check-summary');
   box.replaceChildren();
   const head = document.createElement('div');
@@ -158,6 +167,12 @@ async function runCheck() {
       : `not locally flat-foldable: ${c.failed_vertices} of ${c.interior_vertices} interior vert${c.interior_vertices === 1 ? 'ex fails' : 'ices fail'}`;
   }
   box.appendChild(head);
+  if (c.within_tolerance_vertices > 0) {
+    const w = document.createElement('div');
+    w.className = 'within';
+    w.textContent = `${c.within_tolerance_vertices} within ${fmt(c.tolerance_deg, 6)}° (largest deviation ${fmt(c.max_deviation_deg, 6)}°)`;
+    box.appendChild(w);
+  }
   if (c.violations.length) {
     const ul = document.createElement('ul');
     for (const v of c.violations.slice(0, 12)) {
@@ -172,6 +187,37 @@ async function runCheck() {
     }
     box.appendChild(ul);
   }
+  if (c.hint) {
+    const h = document.createElement('div');
+    h.className = 'hint';
+    h.textContent = c.hint;
+    box.appendChild(h);
+  }
+}
+
+// Regularize (orikin regularize): the nearest exact pattern replaces the document (undo
+// restores the drawing); the displacement is reported.
+async function regularize() {
+  const rigid = $('regularize-rigid').checked;
+  const r = await api.compute('regularize', () => api.post('regularize', { rigid }));
+  state.regularize = r;
+  const box = $('regularize-summary');
+  box.replaceChildren();
+  const d = document.createElement('div');
+  if (r.replaced) {
+    d.className = 'ok';
+    d.textContent = r.max_move_vertex === null
+      ? 'regularized: no vertex moved (the pattern is exact already)'
+      : `regularized${rigid ? ' (rigid)' : ''}: ${r.moved_vertices} vertices moved, the largest by ${r.max_move_rel.toExponential(2)} of the sheet (vertex ${r.max_move_vertex}), RMS ${r.rms_move_rel.toExponential(2)}; Kawasaki ${r.kawasaki_before_deg.toExponential(2)}° → ${r.kawasaki_after_deg.toExponential(2)}°`;
+    message(d.textContent + ' (undo restores the drawing)');
+  } else {
+    d.className = 'bad';
+    d.textContent = 'regularize refused: ' + r.reason;
+    message(d.textContent, true);
+  }
+  d.dataset.replaced = r.replaced;
+  box.appendChild(d);
+  await refresh();
 }
 
 async function maybeDof(force = false) {
@@ -582,11 +628,80 @@ function clearFold() {
   $('play-fold').disabled = true;
   for (const c of ['frame-a', 'frame-b', 'surround', 'offending']) v2.setHalos(c, []);
   v2.setLabels([]);
+  clearCollision();
+}
+
+// --- collisions ---------------------------------------------------------------------------------
+
+// How folds and sequences are checked (as --no-collisions and --clearance).
+function collideOptions() {
+  const o = {};
+  if (!$('check-collisions').checked) o.no_collisions = true;
+  const c = +$('clearance').value;
+  if (c > 0) o.clearance = c;
+  return o;
+}
+
+function clearCollision() {
+  if (v3) v3.setHighlight([], null);
+  if (v2) v2.setFaceClass('colliding', []);
+}
+
+// Colliding faces in 2D and 3D, and the witness point in 3D.
+function showCollision(faces, point) {
+  v3.setHighlight(faces, point);
+  v2.setFaceClass('colliding', faces);
+}
+
+// The state at the first contact of the fold or the sequence, its faces and witness shown.
+async function showContact(of) {
+  const st = decodeState(await api.binary('contact', { of, binary: 1 }));
+  const col = of === 'fold' ? state.fold.collision : state.sequence.collision;
+  v3.setPositions(st.positions);
+  state.shown = 'contact';
+  state.contactOf = of;
+  showCollision(col.faces, col.point);
+  const at = of === 'sequence' ? `T = ${fmt(st.t, 6)}, fold ${st.fold}, ` : '';
+  const label = `first contact of the ${of}: ${at}drive ${fmt(st.drive_deg, 6)}°, faces ${col.faces.join(' and ')}`;
+  $('state3d').textContent = label;
+  if (of === 'sequence') {
+    $('t-label').textContent = label;
+    plot.setCursor(st.t, st.angles);
+  }
+}
+
+// What the 3D view shows, as the API names a state.
+function shownStateRef() {
+  if (state.shown === 'fold') return { k: state.foldK };
+  if (state.shown === 'sequence' && state.shownT !== null) return { t: state.shownT };
+  if (state.shown === 'contact') return { contact: state.contactOf };
+  return { frame: 0 };
+}
+
+// Check the state shown for self-collision (orikin collide).
+async function collideShown() {
+  const body = shownStateRef();
+  const c = +$('clearance').value;
+  if (c > 0) body.clearance = c;
+  const r = await api.compute('collide', () => api.post('collide', body));
+  state.collide = r;
+  const box = $('collide-summary');
+  box.replaceChildren();
+  const d = document.createElement('div');
+  d.className = r.collides ? 'bad' : 'ok';
+  d.dataset.collides = r.collides;
+  const clear = r.min_clearance !== null ? `least clearance ${fmt(r.min_clearance, 6)} (faces ${r.clearance_faces.join(' and ')})` : 'every face pair shares a vertex';
+  d.textContent = r.collides
+    ? `${r.state}: collision: faces ${r.pairs.map((p) => p.join(' and ')).join('; ')} (${r.touching.length} touching pairs)`
+    : `${r.state}: clean, ${r.touching.length} touching pairs, ${clear}`;
+  box.appendChild(d);
+  const faces = [...new Set(r.pairs.flat())];
+  showCollision(faces, r.collides ? r.witness : null);
 }
 
 async function compute() {
   await action(async () => {
-    const body = foldBody();
+    const body = Object.assign(foldBody(), collideOptions());
     if (state.sequence && state.sequence.valid && state.folds.length && !body.frame) body.after_sequence = true;
     clearFold();
     const r = await api.compute('fold', () => api.post('fold', body));
@@ -594,6 +709,7 @@ async function compute() {
     showFold(r, body);
     if (r.frames.length) await showFoldFrame(r.frames.length - 1);
     await refresh();
+    if (r.collision) await showContact('fold');
   });
 }
 
@@ -610,6 +726,18 @@ function showFold(r, body) {
     why.className = 'reason';
     why.textContent = r.reason;
     box.appendChild(why);
+  }
+  if (r.collision) {
+    const c = document.createElement('div');
+    c.className = 'contact';
+    c.textContent = `the motion stops at state ${r.frames.length - 1}; first contact at drive ${fmt(r.collision.drive_deg, 6)}° (step ${r.collision.step}) `;
+    const b = document.createElement('button');
+    b.className = 'small';
+    b.id = 'show-fold-contact';
+    b.textContent = 'show contact';
+    b.onclick = () => action(() => showContact('fold'));
+    c.appendChild(b);
+    box.appendChild(c);
   }
   if (r.hint) {
     const h = document.createElement('div');
@@ -662,6 +790,7 @@ async function showFoldFrame(k) {
   }
   if (state.foldK !== k) return;
   v3.setPositions(st.positions);
+  if (state.shown === 'contact') clearCollision();
   state.shown = 'fold';
   $('state3d').textContent = `fold: state ${k} of ${state.fold.frames.length - 1}, drive ${fmt(st.drive_deg, 3)}°`;
 }
@@ -696,13 +825,15 @@ async function runSequence(folds, label) {
     setupTimeline();
     return;
   }
-  const r = await api.compute(label || 'sequence', () => api.post('sequence', sequenceJson(folds)));
+  const r = await api.compute(label || 'sequence', () => api.post('sequence', sequenceJson(folds), collideOptions()));
   state.folds = folds;
   state.sequence = r;
   await refresh();
   setupTimeline();
-  if (!r.valid) message(`fold ${r.failed_fold} is ${r.verdict}: ${r.reason}`, true);
-  await showTime(r.duration);
+  if (r.collision) message(`collision: ${r.reason} (the sequence stops before it)`, true);
+  else if (!r.valid) message(`fold ${r.failed_fold} is ${r.verdict}: ${r.reason}`, true);
+  await showTime(lastCleanT());
+  if (r.collision) await showContact('sequence');
 }
 
 function renderFolds() {
@@ -731,13 +862,17 @@ function setupTimeline() {
   const slider = $('t-slider'), tv = $('t-value');
   const duration = r ? r.duration : 0;
   const steps = state.grid > 0 ? state.grid : 200;
+  // a sequence that collides is clean before its first contact only (as orikin sequence --at)
+  const contactT = r && state.session && state.session.sequence ? state.session.sequence.collision_t : null;
+  state.seqLimit = contactT !== null && contactT !== undefined ? contactT : duration;
   slider.min = 0;
-  slider.max = Math.round(duration * steps);
+  slider.max = contactT !== null && contactT !== undefined ? Math.max(0, Math.ceil(contactT * steps) - 1) : Math.round(duration * steps);
   slider.disabled = !r || duration === 0;
   tv.disabled = slider.disabled;
-  tv.max = duration;
+  tv.max = state.seqLimit;
   $('play').disabled = slider.disabled;
-  plot.setRecord(r, state.doc ? state.doc.assignment : []);
+  $('show-seq-contact').hidden = !(r && r.collision);
+  plot.setRecord(r, state.doc ? state.doc.assignment : [], contactT);
   renderFolds();
   // the folds are kept when the pattern changes; their record is not (its indices may be stale)
   $('run-seq').hidden = !!r || state.folds.length === 0;
@@ -753,11 +888,15 @@ function sliderSteps() {
   return state.grid > 0 ? state.grid : 200;
 }
 
+// The last instant the slider reaches: the end, or the last grid point before the first contact.
+function lastCleanT() {
+  return +$('t-slider').max / sliderSteps();
+}
+
 // Show the state at time T (exact, from the server); requests never pile up: while one is in
 // flight only the latest wanted T is remembered.
 async function showTime(t) {
-  const duration = state.sequence ? state.sequence.duration : 0;
-  state.targetT = Math.min(Math.max(t, 0), duration);
+  state.targetT = Math.min(Math.max(t, 0), lastCleanT());
   if (state.inflight) return;
   state.inflight = true;
   try {
@@ -769,6 +908,7 @@ async function showTime(t) {
       state.stats.latency.push(performance.now() - t0);
       if (state.stats.latency.length > 500) state.stats.latency.shift();
       v3.setPositions(st.positions);
+      if (state.shown === 'contact') clearCollision();
       state.stats.states++;
       state.t = want;
       state.shownT = want;
@@ -805,7 +945,7 @@ function togglePlay() {
   state.playing = !state.playing;
   $('play').textContent = state.playing ? '❚❚' : '▶';
   if (!state.playing) return;
-  const duration = state.sequence.duration;
+  const duration = lastCleanT();
   let t = state.t >= duration ? 0 : state.t;
   let last = performance.now();
   const tick = (now) => {
@@ -837,13 +977,71 @@ function download(name, blob) {
   setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
 }
 
-async function exportAs(format) {
+// Export: the document (FOLD, SVG, .cp, .opx), a picture or mesh of the state shown (the
+// picture seen from the 3D view's camera, in its colours; the crease pattern when the flat
+// sheet is shown), or the motion of the sequence or the fold. Named "format" or "format:of".
+function exportParams(format, of) {
+  const f = state.session.export_formats.find((x) => x.format === format);
+  const params = { format };
+  if (!f || f.kind === 'document') return params;
+  if (of) {
+    params.of = of;
+  } else {
+    Object.assign(params, shownStateRef());
+  }
+  const flat = state.shown === 'flat' && !state.doc.is3d;
+  if ((f.kind === 'picture' && !flat) || f.kind === 'animation') {
+    const { eye, up } = v3.viewAxes();
+    params.eye = eye.map((x) => +x.toPrecision(12)).join(',');
+    params.up = up.map((x) => +x.toPrecision(12)).join(',');
+    params.perspective = 1;
+    params.front = $('color-front').value;
+    params.back = $('color-back').value;
+    if (v3.gridVisible !== false) params.grid = 1;
+    const c = $('gl');
+    let w = Math.max(1, Math.round(2 * c.clientWidth)), h = Math.max(1, Math.round(2 * c.clientHeight));
+    const k = Math.min(1, 4096 / w, 4096 / h, f.kind === 'animation' ? 800 / w : 1);
+    params.size = `${Math.max(1, Math.round(w * k))}x${Math.max(1, Math.round(h * k))}`;
+  } else if (f.kind === 'mesh') {
+    params.front = $('color-front').value;
+    params.back = $('color-back').value;
+  }
+  return params;
+}
+
+async function exportAs(format, of) {
   await action(async () => {
-    const res = await api.request('GET', 'export', { params: { format }, as: 'response' });
+    const params = exportParams(format, of);
+    const run = () => api.request('GET', 'export', { params, as: 'response' });
+    const res = params.format === 'fold' || params.format === 'svg' ? await run() : await api.compute('export', run);
     const cd = res.headers.get('Content-Disposition') || '';
     const m = /filename="([^"]+)"/.exec(cd);
-    download(m ? m[1] : 'pattern.' + format, await res.blob());
+    download(m ? m[1] : 'orikin.' + format, await res.blob());
   });
+}
+
+// The export menu: one group per what is written.
+function renderExportMenu() {
+  const sel = $('export-format');
+  sel.querySelectorAll('optgroup').forEach((g) => g.remove());
+  const groups = [
+    ['crease pattern', (f) => f.kind === 'document', null],
+    ['picture of the state shown', (f) => f.kind === 'picture', null],
+    ['mesh of the state shown', (f) => f.kind === 'mesh', null],
+    ['motion of the sequence', (f) => f.motion, 'sequence'],
+    ['motion of the fold', (f) => f.motion, 'fold'],
+  ];
+  for (const [label, take, of] of groups) {
+    const g = document.createElement('optgroup');
+    g.label = label;
+    for (const f of state.session.export_formats.filter(take)) {
+      const o = document.createElement('option');
+      o.value = of ? `${f.format}:${of}` : f.format;
+      o.textContent = f.label;
+      g.appendChild(o);
+    }
+    sel.appendChild(g);
+  }
 }
 
 async function openFile(file) {
@@ -927,7 +1125,11 @@ function wire() {
   });
   $('open-file').onchange = (ev) => { if (ev.target.files[0]) openFile(ev.target.files[0]); ev.target.value = ''; };
   $('download-fold').onclick = () => exportAs('fold');
-  $('export-format').onchange = (ev) => { if (ev.target.value) exportAs(ev.target.value); ev.target.value = ''; };
+  $('export-format').onchange = (ev) => {
+    const [format, of] = ev.target.value.split(':');
+    if (format) exportAs(format, of);
+    ev.target.value = '';
+  };
   $('save-back').onclick = () => action(async () => {
     if (!confirm(`Write the document to ${state.session.save_path}?`)) return;
     const r = await api.post('save', { what: 'document' });
@@ -953,6 +1155,10 @@ function wire() {
   $('axiom-number').onchange = () => { setTool('axiom'); };
   $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
   $('compute').onclick = compute;
+  $('check-tolerance').onchange = () => action(runCheck);
+  $('regularize').onclick = () => action(regularize);
+  $('collide').onclick = () => action(collideShown);
+  $('show-seq-contact').onclick = () => action(() => showContact('sequence'));
   $('fold-slider').oninput = (ev) => action(() => showFoldFrame(+ev.target.value));
   $('play-fold').onclick = playFold;
   $('add-fold').onclick = addFold;
@@ -960,7 +1166,7 @@ function wire() {
   $('play').onclick = togglePlay;
   $('t-slider').oninput = (ev) => showTime(+ev.target.value / sliderSteps());
   $('t-value').onchange = (ev) => {
-    const t = Math.min(Math.max(+ev.target.value, 0), state.sequence ? state.sequence.duration : 0);
+    const t = Math.min(Math.max(+ev.target.value, 0), lastCleanT());
     if (isFinite(t)) showTime(t);
   };
   for (const b of document.querySelectorAll('[data-rot]')) b.onclick = () => { const [k, s] = b.dataset.rot.split(','); v3.rotate(k, +s); };
@@ -1013,13 +1219,7 @@ async function start() {
   api = new Api(tok, progress);
   await action(async () => {
     await refresh(true);
-    for (const f of state.session.export_formats) {
-      const o = document.createElement('option');
-      o.value = f.format;
-      o.textContent = f.label;
-      o.disabled = f.state;
-      $('export-format').appendChild(o);
-    }
+    renderExportMenu();
     renderCollection();
     if (state.session.sequence) {
       const r = await api.get('sequence');
@@ -1032,6 +1232,7 @@ async function start() {
       });
       setupTimeline();
       await showTime(0);
+      if (r.collision) message(`collision: ${r.reason} (the sequence stops before it; "contact" shows it)`, true);
     } else {
       setupTimeline();
     }
@@ -1066,6 +1267,11 @@ window.studio = {
   setProgressDelay: (ms) => { api.progressDelay = ms; },
   fold: () => state.fold,
   sequence: () => state.sequence,
+  check: () => state.check,
+  collide: () => state.collide,
+  regularizeResult: () => state.regularize,
+  highlight: () => (v3 ? v3.highlighted : null),
+  exportParams: (format, of) => exportParams(format, of),
   spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, locks: [...state.spec.locks] }),
 };
 

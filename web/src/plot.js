@@ -1,5 +1,6 @@
 // The folding manager's plot: every crease angle that moves, against the sequence time T,
-// from the recorded states (exact), with the cursor at the current instant and its angles.
+// from the recorded states (exact), with the cursor at the current instant and its angles, and
+// the first contact of a sequence that collides.
 
 // Above this many moving creases the cursor shows no dots (they would hide each other anyway).
 const CURSOR_DOTS_MAX = 400;
@@ -15,8 +16,9 @@ export class Plot {
     new ResizeObserver(() => { this.base = null; this.draw(); }).observe(canvas);
   }
 
-  setRecord(record, assignment) {
+  setRecord(record, assignment, contactT = null) {
     this.record = record;
+    this.contactT = contactT;
     this.assignment = assignment || [];
     this.base = null;
     // creases whose angle changes anywhere
@@ -73,6 +75,14 @@ export class Plot {
           if (i === 0) ctx.moveTo(px, py); else ctx.lineTo(px, py);
         });
         ctx.stroke();
+      }
+      if (this.contactT !== null && this.contactT !== undefined) {
+        ctx.strokeStyle = '#c0392b';
+        ctx.setLineDash([4 * g.dpr, 3 * g.dpr]);
+        ctx.beginPath(); ctx.moveTo(g.x(this.contactT), g.pad.t); ctx.lineTo(g.x(this.contactT), g.h - g.pad.b); ctx.stroke();
+        ctx.setLineDash([]);
+        ctx.fillStyle = '#c0392b';
+        ctx.fillText('contact', g.x(this.contactT) + 3 * g.dpr, g.pad.t + 9 * g.dpr);
       }
     }
     return c;

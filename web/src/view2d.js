@@ -1,8 +1,9 @@
 // The 2D crease view (SVG): the crease pattern in the thesis' line styles (mountain dash-dot,
 // valley dashed, colours by assignment), every vertex, crease and face hoverable (its FOLD
 // index) and clickable, and the overlays of the other panels: selected and fixed faces, the
-// bone structure, driven and locked creases, Frame A / Frame B / surrounding, failing vertices,
-// offending creases, axiom inputs and solutions. Pan by dragging, zoom with the wheel.
+// bone structure, driven and locked creases, Frame A / Frame B / surrounding, failing vertices
+// and those within the check's tolerance, offending creases, colliding faces, axiom inputs and
+// solutions. Pan by dragging, zoom with the wheel.
 
 const SVGNS = 'http://www.w3.org/2000/svg';
 // Above this many edges the wide invisible hit lines are left out (the lines themselves take
@@ -290,17 +291,19 @@ export class View2D {
     this.refreshScale();
   }
 
-  // Failing vertices of the check, with their reasons (shown on hover).
-  setCheckMarks(bad) {
+  // Vertices of the check with their reasons (shown on hover): failing ones, and those that pass
+  // only within the check's tolerance.
+  setCheckMarks(bad, within = []) {
     const g = this.layers.marks;
     g.replaceChildren();
     this.markScale = this.markScale.filter(([el]) => el.isConnected);
-    for (const { vertex, reason } of bad) {
-      const [x, y] = this.doc.flat[vertex];
-      const c = svg('circle', { class: 'bad-vertex', cx: x, cy: -y, r: 9, 'data-bad-vertex': vertex }, g);
-      c.dataset.reason = reason;
-      this.markScale.push([c, 9, 'r']);
-    }
+    for (const [list, cls] of [[bad, 'bad-vertex'], [within, 'within-vertex']])
+      for (const { vertex, reason } of list) {
+        const [x, y] = this.doc.flat[vertex];
+        const c = svg('circle', { class: cls, cx: x, cy: -y, r: 9, 'data-bad-vertex': vertex }, g);
+        c.dataset.reason = reason;
+        this.markScale.push([c, 9, 'r']);
+      }
     this.refreshScale();
   }
 

@@ -1,6 +1,6 @@
 // The 3D view (three.js): the sheet at any state with two-sided colours or a texture on the
 // front, its creases, a ground grid; orbit, zoom and pan with the mouse, roll/pitch/yaw
-// buttons, preset views. The sheet lies in z = 0 before folding, so z is up here. Positions
+// buttons, preset views; the collision overlay (colliding faces and the witness point). The sheet lies in z = 0 before folding, so z is up here. Positions
 // arrive as float64 (exact, kept for inspection) and are drawn as float32.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
@@ -63,6 +63,12 @@ export class View3D {
     this.grid = null;
     this.material = sheetMaterial();
     this.lineMaterial = new THREE.LineBasicMaterial({ vertexColors: true });
+    // colliding faces: drawn over the sheet (pulled towards the viewer), both sides
+    this.highlightMaterial = new THREE.MeshBasicMaterial({ color: 0xd7263d, side: THREE.DoubleSide, transparent: true,
+      opacity: 0.6, polygonOffset: true, polygonOffsetFactor: -1, polygonOffsetUnits: -4, depthWrite: false });
+    // the witness point: always visible
+    this.markerMaterial = new THREE.MeshBasicMaterial({ color: 0x111111, depthTest: false });
+    this.highlighted = { faces: [], point: null };
     this.positions = null; // Float64Array 3V: the state shown
     this.frameCount = 0;
     this.pending = false;
@@ -75,11 +81,15 @@ export class View3D {
     for (const o of [this.mesh, this.lines]) if (o) { this.model.remove(o); o.geometry.dispose(); }
     const V = doc.vertices.length;
     const index = [];
+    this.faceTris = []; // per face: [first index, index count] in the sheet's index
     for (const f of doc.faces) {
       const contour = f.map((i) => new THREE.Vector2(doc.flat[i][0], doc.flat[i][1]));
       const tris = f.length === 3 ? [[0, 1, 2]] : THREE.ShapeUtils.triangulateShape(contour, []);
+      const first = index.length;
       for (const t of tris) index.push(f[t[0]], f[t[1]], f[t[2]]);
+      this.faceTris.push([first, index.length - first]);
     }
+    this.sheetIndex = index;
     this.geometry = new THREE.BufferGeometry();
     this.posAttr = new THREE.BufferAttribute(new Float32Array(3 * V), 3);
     this.posAttr.setUsage(THREE.DynamicDrawUsage);
@@ -110,9 +120,41 @@ export class View3D {
     if (this.linesChosen === undefined) this.linesVisible = E <= CREASE_LINES_AUTO_MAX;
     this.lines.visible = this.linesVisible !== false;
     this.model.add(this.lines);
+    this.setHighlight([], null);
     this.setPositions(Float64Array.from(doc.vertices.flat()));
     this.setGrid(this.gridVisible !== false);
     this.fit();
+  }
+
+  // The collision overlay: these faces drawn in red over the sheet (sharing its vertex
+  // positions, so they follow every state) and the witness point marked; [] and null clear it.
+  setHighlight(faces, point) {
+    if (this.highlight) { this.model.remove(this.highlight); this.highlight.geometry.dispose(); this.highlight = null; }
+    if (this.marker) { this.model.remove(this.marker); this.marker.geometry.dispose(); this.marker = null; }
+    this.highlighted = { faces: [...faces], point: point ? [...point] : null };
+    if (!this.doc) return;
+    const index = [];
+    for (const f of faces) {
+      if (!(f >= 0 && f < this.faceTris.length)) continue;
+      const [first, n] = this.faceTris[f];
+      for (let i = first; i < first + n; i++) index.push(this.sheetIndex[i]);
+    }
+    if (index.length) {
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', this.posAttr);
+      g.setIndex(index);
+      this.highlight = new THREE.Mesh(g, this.highlightMaterial);
+      this.highlight.renderOrder = 1;
+      this.model.add(this.highlight);
+    }
+    if (point) {
+      const r = 0.025 * this.doc.box.size;
+      this.marker = new THREE.Mesh(new THREE.SphereGeometry(r, 16, 12), this.markerMaterial);
+      this.marker.position.set(point[0], point[1], point[2]);
+      this.marker.renderOrder = 2;
+      this.model.add(this.marker);
+    }
+    this.render();
   }
 
   // Show a state: 3V coordinates (float64, kept as given).
@@ -181,6 +223,15 @@ export class View3D {
         resolve();
       }, undefined, () => reject(new Error('the image could not be read')));
     });
+  }
+
+  // The view as the render module's camera takes it (model coordinates, the roll/pitch/yaw
+  // buttons undone): the direction from the target towards the eye, and the image's up.
+  viewAxes() {
+    const inv = this.model.quaternion.clone().invert();
+    const eye = this.camera.position.clone().sub(this.controls.target).applyQuaternion(inv);
+    const up = new THREE.Vector3(0, 1, 0).applyQuaternion(this.camera.quaternion).applyQuaternion(inv);
+    return { eye: eye.toArray(), up: up.toArray() };
   }
 
   center() {
