@@ -1,6 +1,5 @@
 // orikin check: local flat-foldability of every interior vertex of a FOLD pattern.
 #include <orikin/flat.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 

@@ -730,7 +730,8 @@ function showFold(r, body) {
   if (r.collision) {
     const c = document.createElement('div');
     c.className = 'contact';
-    c.textContent = `the motion stops at state ${r.frames.length - 1}; first contact at drive ${fmt(r.collision.drive_deg, 6)}° (step ${r.collision.step}) `;
+    const stop = r.frames.length ? `the motion stops at state ${r.frames.length - 1}` : 'the start state collides';
+    c.textContent = `${stop}; first contact at drive ${fmt(r.collision.drive_deg, 6)}° (step ${r.collision.step}) `;
     const b = document.createElement('button');
     b.className = 'small';
     b.id = 'show-fold-contact';
