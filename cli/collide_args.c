@@ -152,16 +152,11 @@ int cli_collide_motion(const char *cmd, const char *path, const cli_collide_opts
     if (rc != CLI_EXIT_OK) return rc;
     cli_progress bar;
     cli_progress_begin(&bar, cmd, "checking collisions");
-    ori_collision_motion_def cd = ori_default_collision_motion_def();
-    cd.progress = cli_progress_fn;
-    cd.progress_user = &bar;
     ori_error err;
-    ori_status st = ori_collision_check_motion(c, m, def, mo, &cd, &out->ev, &err);
+    ori_status st = cli_collision_check_motion(c, m, def, mo, cli_progress_fn, &bar, out, &err);
     cli_progress_end(&bar);
     ori_collider_destroy(c);
-    if (st != ORI_OK) return check_failed(cmd, path, &err);
-    out->checked = true;
-    return CLI_EXIT_OK;
+    return st == ORI_OK ? CLI_EXIT_OK : check_failed(cmd, path, &err);
 }
 
 int cli_collide_record(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
@@ -174,52 +169,9 @@ int cli_collide_record(const char *cmd, const char *path, const cli_collide_opts
     if (rc != CLI_EXIT_OK) return rc;
     cli_progress bar;
     cli_progress_begin(&bar, cmd, "checking collisions");
-    ori_collision_motion_def cd = ori_default_collision_motion_def();
-    cd.progress = cli_progress_fn;
-    cd.progress_user = &bar;
     ori_error err;
-    ori_status st = ori_collision_check_record(c, r, &cd, &out->ev, &err);
+    ori_status st = cli_collision_check_record(c, r, cli_progress_fn, &bar, out, &err);
     cli_progress_end(&bar);
     ori_collider_destroy(c);
-    if (st != ORI_OK) return check_failed(cmd, path, &err);
-    out->checked = true;
-    return CLI_EXIT_OK;
-}
-
-bool cli_collides(const cli_collision *c) { return c->checked && c->ev.collides; }
-
-int cli_collide_frames(const cli_collision *c, int frames)
-{
-    if (!cli_collides(c)) return frames;
-    return c->ev.frame < frames ? c->ev.frame : frames;
-}
-
-json_t *cli_collision_json(const cli_collision *c, bool with_fold)
-{
-    if (!cli_collides(c)) return json_null();
-    const ori_collision_event *e = &c->ev;
-    json_t *o = json_object();
-    if (with_fold) json_object_set_new(o, "fold", json_integer(e->fold + 1));
-    json_object_set_new(o, "step", json_integer(e->step));
-    json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(e->drive_rad)));
-    json_object_set_new(o, "faces", json_pack("[ii]", e->contact.face_a, e->contact.face_b));
-    json_object_set_new(o, "point", json_pack("[fff]", e->contact.point.x, e->contact.point.y, e->contact.point.z));
-    return o;
-}
-
-static const char *verb(const ori_contact *k)
-{
-    if (k->kind == ORI_CONTACT_NEAR) return "come closer than the clearance";
-    if (k->kind == ORI_CONTACT_TOUCHING) return "touch (within the clearance)";
-    return k->stacked ? "pass through each other (stacked layers)" : "penetrate";
-}
-
-void cli_collision_describe(const cli_collision *c, bool with_fold, char *buf, size_t size)
-{
-    const ori_collision_event *e = &c->ev;
-    char fold[32] = "";
-    if (with_fold) snprintf(fold, sizeof fold, "fold %d, ", e->fold + 1);
-    snprintf(buf, size, "faces %d and %d %s at %sstep %d, drive %.6f deg, at (%.6g, %.6g, %.6g)", e->contact.face_a,
-             e->contact.face_b, verb(&e->contact), fold, e->step, ori_rad_to_deg(e->drive_rad), e->contact.point.x,
-             e->contact.point.y, e->contact.point.z);
+    return st == ORI_OK ? CLI_EXIT_OK : check_failed(cmd, path, &err);
 }

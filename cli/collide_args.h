@@ -7,6 +7,7 @@
 #include <orikin/collision.h>
 
 #include "cli.h"
+#include "report.h"
 
 // One state to check: the pattern whose faces are checked and the world vertex positions.
 typedef struct cli_collide_state {
@@ -38,12 +39,6 @@ int cli_collide_option(const char *cmd, int argc, char **argv, int *i, cli_colli
 // Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after printing the message.
 int cli_collide_strip(const char *cmd, int *argc, char **argv, cli_collide_opts *o);
 
-// The first collision of a checked motion.
-typedef struct cli_collision {
-    bool checked;            // the motion was checked (not --no-collisions)
-    ori_collision_event ev;  // ev.collides: frames 0 … ev.frame − 1 are clean
-} cli_collision;
-
 // Check a solved fold (def as solved) on the mechanism of `flat`. Prints the error and returns
 // its exit code on failure (bad clearance: CLI_EXIT_INPUT), else CLI_EXIT_OK with *out filled.
 int cli_collide_motion(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
@@ -52,14 +47,7 @@ int cli_collide_motion(const char *cmd, const char *path, const cli_collide_opts
 int cli_collide_record(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
                        const ori_record *r, cli_collision *out);
 
-// Number of frames to show and write: all of them, or those before the first collision.
-int cli_collide_frames(const cli_collision *c, int frames);
-// True when the motion collides (the verdict is then "collision").
-bool cli_collides(const cli_collision *c);
-// {"fold": k (1-based, with_fold only), "step": s, "drive_deg": x, "faces": [f, g], "point": [x, y, z]}
-// or null when clean or unchecked.
-json_t *cli_collision_json(const cli_collision *c, bool with_fold);
-// One line: "faces 3 and 9 penetrate at step 14, drive 131.810315 deg, at (x, y, z)".
-void cli_collision_describe(const cli_collision *c, bool with_fold, char *buf, size_t size);
+// cli_collision, cli_collides, cli_collide_frames, cli_collision_json and cli_collision_describe
+// are in report.h (shared with the studio's server).
 
 #endif

@@ -98,9 +98,34 @@ run 0 convert "$OUT/open-corner.fold" "$OUT/open-corner-labelled.svg" --labels a
 run 0 convert tests/data/formats/bird.cp "$OUT/bird.fold"
 run 0 generate miura --rows 4 --cols 6 -o "$OUT/miura.svg"
 
+# --- studio (orikin view) -----------------------------------------------------------------
+step "9. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
+echo "\$ orikin view examples/open-corner.seq.json --port 0 --no-browser"
+"$ORIKIN" view examples/open-corner.seq.json --port 0 --no-browser >"$OUT/view.out" 2>&1 &
+view_pid=$!
+i=0
+while [ $i -lt 100 ] && ! grep -q "^orikin view: http" "$OUT/view.out"; do
+    sleep 0.1
+    i=$((i + 1))
+done
+if grep -q "^orikin view: http" "$OUT/view.out"; then
+    echo "(it served the open corner's two folds; stopped)"
+else
+    cat "$OUT/view.out"
+    echo "demo: orikin view did not start" >&2
+    failed=1
+fi
+kill -INT "$view_pid" 2>/dev/null
+wait "$view_pid" || failed=1
+echo
+
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1
 fi
 echo "The folded open corner (every step as a FOLD frame) is in $OUT/open-corner-folded.fold."
 echo "The simulated foldings (frames with frame_time) are in $OUT/thesis-flap-folding.fold and $OUT/open-corner-gold-folding.fold."
+echo
+echo "Open the studio on the open corner (author, check, fold and scrub the sequence in your browser;"
+echo "Ctrl-C stops it):"
+echo "    $ORIKIN view examples/open-corner.seq.json"

@@ -77,6 +77,7 @@ for name in $targets; do
             done
             extra="-max_len=512"
             ;;
+        api) seeds="tests/data/server/*.req" ;;
         *) seeds="tests/data/formats/*.$name" ;;
     esac
     for f in fuzz/seeds/"$name"/* $seeds; do

@@ -1,0 +1,67 @@
+// Reports that the command-line tool and the studio's server (orikin view) both produce: one
+// builder each, so that `orikin CMD --json` and the studio's API answer with the same fields and
+// values by construction. Built as the static library orikin_cli_report, linked by the CLI and
+// by the server; it uses only the public <orikin/...> headers and jansson, and never prints.
+//
+// Functions: cli_collision_check_motion, cli_collision_check_record, cli_collides,
+// cli_collide_frames, cli_collision_json, cli_collision_describe, cli_check_run, cli_check_json,
+// cli_check_free.
+#ifndef ORI_CLI_REPORT_H
+#define ORI_CLI_REPORT_H
+
+#include <orikin/orikin.h>
+
+#include <jansson.h>
+#include <stdbool.h>
+#include <stddef.h>
+
+// --- self-collision along a fold or a sequence (orikin fold, orikin sequence; POST /api/fold,
+// POST /api/sequence) ------------------------------------------------------------------------
+
+// The first collision of a checked motion.
+typedef struct cli_collision {
+    bool checked;            // the motion was checked (not --no-collisions)
+    ori_collision_event ev;  // ev.collides: frames 0 … ev.frame − 1 are clean
+} cli_collision;
+
+// Check a solved fold (def as solved) with a collider of its flat pattern: *out filled (checked)
+// on success, else the library's failure (the collider then holds the contacts of the colliding
+// state). progress may be NULL.
+ori_status cli_collision_check_motion(ori_collider *c, const ori_mechanism *m, const ori_motion_def *def,
+                                      const ori_motion *mo, ori_progress_fn *progress, void *user, cli_collision *out,
+                                      ori_error *err);
+// Same for a recorded sequence.
+ori_status cli_collision_check_record(ori_collider *c, const ori_record *r, ori_progress_fn *progress, void *user,
+                                      cli_collision *out, ori_error *err);
+// True when the motion collides (the verdict is then "collision").
+bool cli_collides(const cli_collision *c);
+// Number of frames to show and write: all of them, or those before the first collision.
+int cli_collide_frames(const cli_collision *c, int frames);
+// {"fold": k (1-based, with_fold only), "step": s, "drive_deg": x, "faces": [f, g], "point": [x, y, z]}
+// or null when clean or unchecked.
+json_t *cli_collision_json(const cli_collision *c, bool with_fold);
+// One line: "faces 3 and 9 penetrate at step 14, drive 131.810315 deg, at (x, y, z)".
+void cli_collision_describe(const cli_collision *c, bool with_fold, char *buf, size_t size);
+
+// --- local flat-foldability (orikin check; GET /api/check) ----------------------------------
+
+// A pattern's check at a tolerance and, without one, whether rounding explains the failures.
+typedef struct cli_check {
+    ori_flat_report *report;  // every interior vertex at the tolerance
+    bool has_tolerance;       // a tolerance was asked for (then no rounding hint is computed)
+    double tolerance_deg;     // 0 … 1
+    int rounding_failures;    // without a tolerance: failures within ORI_FLAT_ROUNDING_HINT_RAD
+    double rounding_max_rad;  // the largest sector change they need
+    char hint[400];           // "" or the advice (naming file as the command to run)
+} cli_check;
+
+// Check pattern (built) at tolerance_deg (meaningful when has_tolerance); file names the pattern
+// in the hint. Free with cli_check_free.
+void cli_check_run(const ori_pattern *p, const char *file, bool has_tolerance, double tolerance_deg, cli_check *out);
+// {file, frame, locally_flat_foldable, interior_vertices, failed_vertices, tolerance_deg,
+// within_tolerance_vertices, max_deviation_deg, rounding_failures, hint, vertices: [...],
+// violations: [...]} (docs/verification.md).
+json_t *cli_check_json(const cli_check *c, const char *file, int frame, const ori_pattern *p);
+void cli_check_free(cli_check *c);
+
+#endif

@@ -1,0 +1,1279 @@
+// orikin studio: the page. It holds no geometry of its own: every edit, check, fold and state
+// comes from the server (liborikin); the page draws, picks and keeps the user's choices (the
+// tool, the fold specification, the folds of the sequence, the time T).
+import { Api, ApiError, decodeState } from './api.js';
+import { ASSIGNMENT_NAMES, faceLabel, fmt, isCrease, parseDocument } from './document.js';
+import { Plot } from './plot.js';
+import { View2D } from './view2d.js';
+import { View3D } from './view3d.js';
+
+const $ = (id) => document.getElementById(id);
+
+// DOF is computed automatically for patterns up to this many interior vertices (dense SVD,
+// milliseconds); larger ones get a button (the sparse method may take seconds).
+const DOF_AUTO_MAX_INTERIOR = 300;
+// Sequence time per second of playback at 1×.
+const PLAY_RATE = 0.25;
+// Inputs of each axiom, in the order they are picked.
+const AXIOM_INPUTS = { 1: ['p1', 'p2'], 2: ['p1', 'p2'], 3: ['l1', 'l2'], 4: ['p1', 'l1'], 5: ['p1', 'p2', 'l1'],
+  6: ['p1', 'l1', 'p2', 'l2'], 7: ['p1', 'l1', 'l2'] };
+const COLLECTION_LABELS = { 'diagonal-left': 'DiagonalL', 'diagonal-right': 'DiagonalR', 'middle-h': 'MiddleH',
+  'middle-v': 'MiddleV', cross: 'Cross', diagonals: 'Diagonals' };
+
+const state = {
+  session: null,
+  doc: null,
+  version: -1,
+  tool: 'select',
+  selectedFace: -1,
+  spec: { fix: -1, drive: -1, locks: new Set() },
+  bones: null,
+  axiom: { picks: [], solutions: null, lines: null },
+  move: { edge: -1, points: [] },
+  check: null,
+  fold: null,
+  foldFrames: new Map(),
+  foldK: 0,
+  sequence: null,
+  folds: [],
+  grid: 0,
+  t: 0,
+  shownT: null,
+  targetT: null,
+  inflight: false,
+  playing: false,
+  foldPlaying: false,
+  shown: 'flat',
+  contactOf: null,   // the contact state shown: 'fold' or 'sequence'
+  collide: null,     // the last collide check of a state
+  regularize: null,  // the last regularize answer
+  seqLimit: 0,       // the sequence's clean time: its duration, or the first contact
+  composites: [],
+  work: 0,
+  lastError: '',
+  stats: { states: 0, latency: [], since: performance.now() },
+};
+
+// --- messages and progress ----------------------------------------------------------------
+
+function message(text, error = false) {
+  const box = $('messages');
+  const d = document.createElement('div');
+  d.className = 'msg' + (error ? ' error' : '');
+  d.textContent = text;
+  box.prepend(d);
+  while (box.children.length > 30) box.lastChild.remove();
+  if (error) state.lastError = text;
+}
+
+const progress = {
+  show(text) { $('progress-text').textContent = text; $('progress').hidden = false; },
+  hide() { $('progress').hidden = true; },
+};
+
+let api = null;
+
+async function action(fn) {
+  try {
+    return await fn();
+  } catch (e) {
+    message(e instanceof ApiError || e instanceof Error ? e.message : String(e), true);
+    return undefined;
+  }
+}
+
+// --- document ----------------------------------------------------------------------------
+
+async function refresh(force = false) {
+  const session = await api.get('session');
+  state.session = session;
+  $('file-name').textContent = session.file;
+  $('file-name').title = session.file;
+  $('undo').disabled = session.undo === 0;
+  $('redo').disabled = session.redo === 0;
+  $('save-back').hidden = !session.save_path;
+  $('save-back').title = session.save_path ? 'Write the document back to ' + session.save_path : '';
+  $('save-seq').hidden = !session.sequence_path;
+  if (session.version !== state.version || force) {
+    const changed = state.version !== -1;
+    state.version = session.version;
+    const fold = JSON.parse(await api.text('document'));
+    loadDocument(parseDocument(fold), changed);
+    await Promise.all([runCheck(), maybeDof()]);
+  }
+  state.grid = session.sequence ? session.sequence.grid : 0;
+}
+
+function loadDocument(doc, changed) {
+  const old = state.doc;
+  state.doc = doc;
+  v2.setDocument(doc, old && old.box.size === doc.box.size);
+  v3.setDocument(doc);
+  $('edges-toggle').checked = v3.linesVisible !== false;
+  state.shown = 'flat';
+  clearCollision();
+  $('state3d').textContent = doc.is3d ? 'frame 0 (3D)' : 'flat sheet';
+  // keep the choices that still name something
+  if (state.selectedFace >= doc.faces.length) state.selectedFace = -1;
+  const E = doc.edges.length;
+  if (state.spec.fix >= doc.faces.length) state.spec.fix = -1;
+  if (state.spec.drive >= E) state.spec.drive = -1;
+  for (const e of [...state.spec.locks]) if (e >= E) state.spec.locks.delete(e);
+  if (changed) {
+    // results of the old document are gone (the server dropped them)
+    clearFold();
+    state.sequence = null;
+    state.bones = null;
+    setupTimeline();
+  }
+  state.axiom = { picks: [], solutions: null, lines: null };
+  state.move = { edge: -1, points: [] };
+  // a document with folded frames: a fold may start from any of them
+  const sf = $('start-frame');
+  sf.replaceChildren();
+  for (let k = 0; k < doc.frames; k++) {
+    const o = document.createElement('option');
+    o.value = k;
+    o.textContent = k === 0 ? 'frame 0 (flat)' : `frame ${k}`;
+    sf.appendChild(o);
+  }
+  $('start-frame-label').hidden = doc.frames < 2;
+  renderTree();
+  renderSpec();
+  if (state.spec.fix >= 0) loadBones();
+}
+
+async function runCheck() {
+  const tol = $('check-tolerance').value.trim();
+  const c = await api.get('check', tol === '' ? undefined : { tolerance_deg: tol });
+  state.check = c;
+  const bad = [], within = [];
+  const reasons = new Map();
+  for (const v of c.violations) reasons.set(v.vertex, (reasons.get(v.vertex) || []).concat(`${v.rule}: ${v.detail}`));
+  for (const v of c.vertices) {
+    if (v.within_tolerance) within.push({ vertex: v.vertex, reason: `within tolerance: flat-foldable once its sectors move by ${fmt(v.deviation_deg, 6)}°` });
+    else if (!v.flat_foldable) bad.push({ vertex: v.vertex, reason: (reasons.get(v.vertex) || ['not flat-foldable']).join('; ') });
+  }
+  v2.setCheckMarks(bad, within);
+  const box = $('check-summary');
+  box.replaceChildren();
+  const head = document.createElement('div');
+  if (c.interior_vertices === 0) {
+    head.textContent = 'no interior vertices: nothing to check locally';
+  } else {
+    head.className = c.locally_flat_foldable ? 'ok' : 'bad';
+    head.textContent = c.locally_flat_foldable
+      ? `locally flat-foldable (${c.interior_vertices} interior vert${c.interior_vertices === 1 ? 'ex' : 'ices'})`
+      : `not locally flat-foldable: ${c.failed_vertices} of ${c.interior_vertices} interior vert${c.interior_vertices === 1 ? 'ex fails' : 'ices fail'}`;
+  }
+  box.appendChild(head);
+  if (c.within_tolerance_vertices > 0) {
+    const w = document.createElement('div');
+    w.className = 'within';
+    w.textContent = `${c.within_tolerance_vertices} within ${fmt(c.tolerance_deg, 6)}° (largest deviation ${fmt(c.max_deviation_deg, 6)}°)`;
+    box.appendChild(w);
+  }
+  if (c.violations.length) {
+    const ul = document.createElement('ul');
+    for (const v of c.violations.slice(0, 12)) {
+      const li = document.createElement('li');
+      li.textContent = `vertex ${v.vertex}: ${v.rule}: ${v.detail}`;
+      ul.appendChild(li);
+    }
+    if (c.violations.length > 12) {
+      const li = document.createElement('li');
+      li.textContent = `… ${c.violations.length - 12} more (hover the marked vertices)`;
+      ul.appendChild(li);
+    }
+    box.appendChild(ul);
+  }
+  if (c.hint) {
+    const h = document.createElement('div');
+    h.className = 'hint';
+    h.textContent = c.hint;
+    box.appendChild(h);
+  }
+}
+
+// Regularize (orikin regularize): the nearest exact pattern replaces the document (undo
+// restores the drawing); the displacement is reported.
+async function regularize() {
+  const rigid = $('regularize-rigid').checked;
+  const r = await api.compute('regularize', () => api.post('regularize', { rigid }));
+  state.regularize = r;
+  const box = $('regularize-summary');
+  box.replaceChildren();
+  const d = document.createElement('div');
+  if (r.replaced) {
+    d.className = 'ok';
+    d.textContent = r.max_move_vertex === null
+      ? 'regularized: no vertex moved (the pattern is exact already)'
+      : `regularized${rigid ? ' (rigid)' : ''}: ${r.moved_vertices} vertices moved, the largest by ${r.max_move_rel.toExponential(2)} of the sheet (vertex ${r.max_move_vertex}), RMS ${r.rms_move_rel.toExponential(2)}; Kawasaki ${r.kawasaki_before_deg.toExponential(2)}° → ${r.kawasaki_after_deg.toExponential(2)}°`;
+    message(d.textContent + ' (undo restores the drawing)');
+  } else {
+    d.className = 'bad';
+    d.textContent = 'regularize refused: ' + r.reason;
+    message(d.textContent, true);
+  }
+  d.dataset.replaced = r.replaced;
+  box.appendChild(d);
+  await refresh();
+}
+
+async function maybeDof(force = false) {
+  const box = $('dof-summary');
+  const n = state.session ? state.session.interior_vertices : 0;
+  if (!force && n > DOF_AUTO_MAX_INTERIOR) {
+    box.replaceChildren();
+    const b = document.createElement('button');
+    b.className = 'small';
+    b.textContent = 'compute the DOF';
+    b.title = `${n} interior vertices: the sparse rank may take a while`;
+    b.onclick = () => action(() => maybeDof(true));
+    box.appendChild(b);
+    return;
+  }
+  let d;
+  try {
+    d = await api.compute('degrees of freedom', () => api.post('dof', { lock: [...state.spec.locks] }));
+  } catch (e) {
+    box.textContent = 'DOF: ' + e.message;
+    return;
+  }
+  const locks = state.spec.locks.size ? ` with ${state.spec.locks.size} locked` : '';
+  box.textContent = `DOF ${d.dof} at this state${locks}` + (d.generic_dof !== null && d.generic_dof !== d.dof ? ` (${d.generic_dof} nearby)` : '') +
+    ` · Grübler–Kutzbach ${d.grubler} · rank ${d.rank} of ${d.unknowns} unknowns`;
+  box.dataset.dof = d.dof;
+}
+
+// --- the face tree -----------------------------------------------------------------------
+
+// The tree lists at most this many faces (a generated tessellation has thousands; pick those
+// in the view).
+const TREE_FACES_MAX = 500;
+
+function renderTree() {
+  const doc = state.doc;
+  const root = $('tree');
+  root.replaceChildren();
+  const faceOf = new Map();
+  doc.names.forEach((n, f) => { if (n) faceOf.set(n, f); });
+  const node = (label, face, inner) => {
+    const li = document.createElement('li');
+    const d = document.createElement('div');
+    d.className = 'node ' + (face >= 0 ? 'leaf' : 'inner');
+    if (face >= 0) {
+      d.dataset.face = face;
+      if (face === state.selectedFace) d.classList.add('selected');
+      if (face === state.spec.fix) d.classList.add('fixed');
+      d.onclick = () => selectFace(face);
+      d.onmouseenter = () => v2.toggleFaceClass(face, 'hover', true);
+      d.onmouseleave = () => v2.toggleFaceClass(face, 'hover', false);
+    }
+    d.innerHTML = '';
+    const name = document.createElement('span');
+    name.textContent = label;
+    d.appendChild(name);
+    if (face >= 0) {
+      const s = document.createElement('small');
+      s.textContent = label === 'face ' + face ? '' : 'face ' + face;
+      d.appendChild(s);
+    }
+    li.appendChild(d);
+    if (inner) li.appendChild(inner);
+    return li;
+  };
+  const ul = document.createElement('ul');
+  if (doc.tree.length) {
+    const children = doc.tree.map(() => []);
+    const roots = [];
+    doc.tree.forEach((n, i) => (n.parent >= 0 && n.parent < doc.tree.length ? children[n.parent].push(i) : roots.push(i)));
+    const build = (i) => {
+      const sub = children[i].length ? document.createElement('ul') : null;
+      for (const c of children[i]) sub.appendChild(build(c));
+      const face = faceOf.has(doc.tree[i].name) ? faceOf.get(doc.tree[i].name) : -1;
+      return node(doc.tree[i].name, face, sub);
+    };
+    for (const r of roots) ul.appendChild(build(r));
+    // faces outside the tree
+    const inTree = new Set(doc.tree.map((n) => n.name));
+    doc.faces.forEach((_, f) => {
+      if (!doc.names[f] || !inTree.has(doc.names[f])) ul.appendChild(node(doc.names[f] || 'face ' + f, f, null));
+    });
+  } else {
+    for (let f = 0; f < Math.min(doc.faces.length, TREE_FACES_MAX); f++) ul.appendChild(node(doc.names[f] || `face ${f}`, f, null));
+    if (doc.faces.length > TREE_FACES_MAX) {
+      const li = document.createElement('li');
+      li.className = 'hint';
+      li.textContent = `… ${doc.faces.length - TREE_FACES_MAX} more faces: pick them in the crease view`;
+      ul.appendChild(li);
+    }
+  }
+  root.appendChild(ul);
+}
+
+function selectFace(f) {
+  state.selectedFace = state.selectedFace === f ? -1 : f;
+  v2.setFaceClass('selected', state.selectedFace >= 0 ? [state.selectedFace] : []);
+  for (const el of document.querySelectorAll('#tree .node')) el.classList.toggle('selected', +el.dataset.face === state.selectedFace && el.dataset.face !== undefined);
+  if (state.selectedFace >= 0) message(`selected ${faceLabel(state.doc, state.selectedFace)}: the collection and the axiom tool apply to it`);
+}
+
+// --- the crease collection -----------------------------------------------------------------
+
+function renderCollection() {
+  const box = $('collection');
+  box.querySelectorAll('button').forEach((b) => b.remove());
+  const add = (label, title, pattern) => {
+    const b = document.createElement('button');
+    b.textContent = label;
+    b.title = title;
+    b.dataset.pattern = typeof pattern === 'string' ? pattern : label;
+    b.onclick = () => applyPattern(pattern, label);
+    box.insertBefore(b, $('collection-assign'));
+  };
+  for (const c of state.session.collection) add(COLLECTION_LABELS[c.name] || c.name, c.summary, c.name);
+  for (const c of state.composites) add(c.name, 'composite ' + c.name, c.pattern);
+}
+
+async function applyPattern(pattern, label) {
+  if (state.selectedFace < 0) {
+    message(`${label}: select a face first (in the tree, or click it with the select tool)`, true);
+    return;
+  }
+  await action(async () => {
+    const r = await api.compute(label, () => api.post('apply', { pattern, face: state.selectedFace, assign: $('collection-assign').value }));
+    message(`${label} on ${r.applied_to}: new faces ${r.new_faces.map((f) => f.name).join(', ')}`);
+    state.selectedFace = -1;
+    await refresh();
+  });
+}
+
+// --- tools in the 2D view ------------------------------------------------------------------
+
+function setTool(tool) {
+  state.tool = tool;
+  for (const b of document.querySelectorAll('[data-tool]')) b.classList.toggle('on', b.dataset.tool === tool);
+  state.axiom = { picks: [], solutions: null, lines: null };
+  state.move = { edge: -1, points: [] };
+  v2.setAxiomOverlay([], null);
+  $('axiom-solutions').replaceChildren();
+  axiomStatus();
+  const hints = {
+    select: 'click a face to select it, hover anything to see its FOLD index',
+    fix: 'click the face held to the ground',
+    drive: 'click the driven crease',
+    lock: 'click creases to lock or unlock them',
+    flip: 'click a crease to flip it (mountain ↔ valley)',
+    move: 'click the crease to move, then the two points of its new line',
+    remove: 'click a crease to remove it',
+    axiom: 'click the inputs of the axiom: vertices for points, creases for lines',
+  };
+  if (hints[tool]) $('state3d').dataset.hint = hints[tool];
+  // vertices are picked only where they are inputs (and for inspection): elsewhere a click near a
+  // vertex of a dense pattern still reaches the face or crease under it
+  v2.pickVertices = tool === 'select' || tool === 'axiom' || tool === 'move';
+  v2.svg.style.cursor = tool === 'select' ? 'default' : 'crosshair';
+}
+
+function needCrease(hit, what) {
+  if (hit.kind !== 'edge' || !isCrease(state.doc.assignment[hit.index])) {
+    message(`${what}: click a crease`, true);
+    return false;
+  }
+  return true;
+}
+
+async function onClick(hit) {
+  const doc = state.doc;
+  switch (state.tool) {
+    case 'select':
+      if (hit.kind === 'face') selectFace(hit.index);
+      else if (hit.kind === 'check') message(`vertex ${hit.index}: ${v2.layers.marks.querySelector(`[data-bad-vertex="${hit.index}"]`).dataset.reason}`);
+      return;
+    case 'flip':
+      if (needCrease(hit, 'flip')) await edit({ op: 'flip', edge: hit.index });
+      return;
+    case 'assign-M': case 'assign-V': case 'assign-U':
+      if (needCrease(hit, 'assign')) await edit({ op: 'assign', edge: hit.index, to: state.tool.slice(-1) });
+      return;
+    case 'remove':
+      if (needCrease(hit, 'remove')) await edit({ op: 'remove', edge: hit.index });
+      return;
+    case 'move': {
+      const m = state.move;
+      if (m.edge < 0) {
+        if (needCrease(hit, 'move')) { m.edge = hit.index; message(`moving crease ${hit.index}: click the two points of its new line`); }
+        return;
+      }
+      m.points.push(hit.kind === 'vertex' ? doc.flat[hit.index] : hit.point);
+      v2.setMovePicks(m.points);
+      if (m.points.length === 2) {
+        const [[x1, y1], [x2, y2]] = m.points;
+        const edge = m.edge;
+        state.move = { edge: -1, points: [] };
+        v2.setMovePicks([]);
+        await edit({ op: 'move', edge, segment: [x1, y1, x2, y2] });
+      }
+      return;
+    }
+    case 'axiom':
+      return axiomClick(hit);
+    case 'fix':
+      if (hit.kind !== 'face') { message('fix: click a face', true); return; }
+      if (state.fold) clearFold(); // the result was for another specification
+      state.spec.fix = hit.index;
+      renderSpec();
+      renderTree();
+      await action(loadBones);
+      return;
+    case 'drive': {
+      if (!needCrease(hit, 'drive')) return;
+      if (state.fold) clearFold();
+      state.spec.drive = hit.index;
+      state.spec.locks.delete(hit.index);
+      // the target's sign follows the crease's assignment (valley > 0, mountain < 0)
+      const to = $('spec-to');
+      const a = doc.assignment[hit.index];
+      if ((a === 'M' && +to.value > 0) || (a === 'V' && +to.value < 0)) to.value = String(-to.value);
+      renderSpec();
+      return;
+    }
+    case 'lock':
+      if (!needCrease(hit, 'lock')) return;
+      if (state.fold) clearFold();
+      if (state.spec.locks.has(hit.index)) state.spec.locks.delete(hit.index);
+      else state.spec.locks.add(hit.index);
+      if (state.spec.drive === hit.index) state.spec.drive = -1;
+      renderSpec();
+      maybeDof();
+      return;
+  }
+}
+
+async function edit(op) {
+  await action(async () => {
+    const r = await api.compute(op.op, () => api.post('edit', { ops: [op] }));
+    for (const line of r.log) message(line);
+    await refresh();
+  });
+}
+
+function onHover(hit, ev) {
+  const tip = $('tooltip');
+  const info = $('hover-info');
+  if (!hit || hit.kind === 'none') {
+    tip.hidden = true;
+    return;
+  }
+  const doc = state.doc;
+  let text = '';
+  if (hit.kind === 'vertex') {
+    const [x, y] = doc.flat[hit.index];
+    text = `vertex ${hit.index} (${fmt(x)}, ${fmt(y)})`;
+  } else if (hit.kind === 'edge') {
+    const a = doc.assignment[hit.index];
+    text = `crease ${hit.index}: ${ASSIGNMENT_NAMES[a] || a}`;
+    if (a !== 'B') text += `, ${fmt(doc.foldAngle[hit.index] || 0, 4)}°`;
+    const off = state.fold && state.fold.offending_edges.find((o) => o.edge === hit.index);
+    if (off) text += ` — would fold to ${fmt(off.angle_deg, 4)}° against its assignment (${state.fold.verdict})`;
+    if (hit.index === state.spec.drive) text += ' · driven';
+    if (state.spec.locks.has(hit.index)) text += ' · locked';
+    const sp = state.fold && state.fold.split;
+    if (sp) {
+      if (state.fold.frame_a.includes(hit.index)) text += ' · Frame A';
+      if (state.fold.frame_b.includes(hit.index)) text += ' · Frame B';
+      if (state.fold.surrounding.includes(hit.index)) text += ' · surrounding';
+    }
+  } else if (hit.kind === 'face') {
+    text = faceLabel(doc, hit.index) + (hit.index === state.spec.fix ? ' · fixed to the ground' : '');
+  } else if (hit.kind === 'check') {
+    text = `vertex ${hit.index}: ` + v2.layers.marks.querySelector(`[data-bad-vertex="${hit.index}"]`).dataset.reason;
+  } else if (hit.kind === 'solution') {
+    text = `solution ${hit.index + 1}: click to crease it`;
+  }
+  info.textContent = text;
+  tip.textContent = text;
+  tip.hidden = false;
+  if (ev) {
+    tip.style.left = ev.clientX + 14 + 'px';
+    tip.style.top = ev.clientY + 12 + 'px';
+  }
+}
+
+// --- the axiom tool --------------------------------------------------------------------------
+
+function axiomStatus() {
+  const n = +$('axiom-number').value;
+  const need = AXIOM_INPUTS[n];
+  const k = state.axiom.picks.length;
+  $('axiom-status').textContent = state.tool !== 'axiom' ? '' : k < need.length
+    ? `pick ${need[k]} (${need[k][0] === 'p' ? 'a vertex or a point' : 'a crease'})`
+    : `${state.axiom.lines ? state.axiom.lines.length : 0} solution(s)`;
+}
+
+async function axiomClick(hit) {
+  const doc = state.doc;
+  const n = +$('axiom-number').value;
+  const need = AXIOM_INPUTS[n];
+  const ax = state.axiom;
+  if (hit.kind === 'solution' && ax.lines) return creaseSolution(hit.index);
+  if (ax.picks.length >= need.length) ax.picks = [];
+  const want = need[ax.picks.length];
+  if (want[0] === 'p') {
+    const [x, y] = hit.kind === 'vertex' ? doc.flat[hit.index] : hit.point;
+    ax.picks.push({ type: 'point', name: want, x, y });
+  } else {
+    if (hit.kind !== 'edge') { message(`axiom ${n}: ${want} is a line: click a crease or a side`, true); return; }
+    const [a, b] = doc.edges[hit.index];
+    const [x0, y0] = doc.flat[a], [x1, y1] = doc.flat[b];
+    ax.picks.push({ type: 'line', name: want, edge: hit.index, line: [x0, y0, x1 - x0, y1 - y0] });
+  }
+  ax.solutions = null;
+  ax.lines = null;
+  v2.setAxiomOverlay(ax.picks, null);
+  $('axiom-solutions').replaceChildren();
+  if (ax.picks.length === need.length) {
+    await action(async () => {
+      const r = await api.post('axiom', axiomBody(n));
+      ax.lines = r.lines;
+      ax.solutions = r.segments;
+      v2.setAxiomOverlay(ax.picks, r.segments);
+      const box = $('axiom-solutions');
+      box.replaceChildren();
+      if (!r.lines.length) message(`axiom ${n}: no solution for these inputs`, true);
+      r.lines.forEach((l, k) => {
+        const b = document.createElement('button');
+        b.textContent = `crease solution ${k + 1}`;
+        b.dataset.solution = k;
+        b.title = `through (${fmt(l.point[0])}, ${fmt(l.point[1])}), direction (${fmt(l.dir[0])}, ${fmt(l.dir[1])})`;
+        b.onclick = () => creaseSolution(k);
+        box.appendChild(b);
+      });
+    });
+  }
+  axiomStatus();
+}
+
+function axiomBody(n) {
+  const body = { axiom: n };
+  for (const p of state.axiom.picks) body[p.name] = p.type === 'point' ? [p.x, p.y] : p.line;
+  if (state.selectedFace >= 0) body.face = state.selectedFace;
+  return body;
+}
+
+async function creaseSolution(k) {
+  const n = +$('axiom-number').value;
+  const body = axiomBody(n);
+  body.solution = k + 1;
+  body.assign = $('collection-assign').value;
+  if (state.selectedFace < 0) body.all = true;
+  await action(async () => {
+    const r = await api.compute(`axiom ${n}`, () => api.post('crease', body));
+    message(`axiom ${n} solution ${k + 1} on ${r.applied_to}: ${r.faces_split} face(s) split`);
+    state.axiom = { picks: [], solutions: null, lines: null };
+    $('axiom-solutions').replaceChildren();
+    v2.setAxiomOverlay([], null);
+    state.selectedFace = -1;
+    await refresh();
+  });
+  axiomStatus();
+}
+
+// --- the fold specification -----------------------------------------------------------------
+
+function renderSpec() {
+  const s = state.spec;
+  $('spec-fix').textContent = s.fix >= 0 ? faceLabel(state.doc, s.fix) : '–';
+  $('spec-drive').textContent = s.drive >= 0 ? 'crease ' + s.drive : '–';
+  $('spec-lock').textContent = s.locks.size ? [...s.locks].sort((a, b) => a - b).join(', ') : '–';
+  v2.setFaceClass('fixed', s.fix >= 0 ? [s.fix] : []);
+  v2.setHalos('drive', s.drive >= 0 ? [s.drive] : []);
+  v2.setHalos('lock', [...s.locks]);
+  if (s.fix < 0) v2.setBones(null);
+}
+
+async function loadBones() {
+  if (state.spec.fix < 0) return;
+  try {
+    const m = await api.get('mechanism', { fix: state.spec.fix });
+    state.bones = m.bones;
+    v2.setBones(m.bones);
+  } catch (e) {
+    v2.setBones(null);
+    message('bone structure: ' + e.message, true);
+  }
+}
+
+function foldBody() {
+  const s = state.spec;
+  if (s.fix < 0) throw new Error('compute: fix a face first (folding properties: fix face)');
+  if (s.drive < 0) throw new Error('compute: choose the driven crease (folding properties: drive)');
+  const body = { fix: s.fix, drive: s.drive, to: +$('spec-to').value, step: +$('spec-step').value, lock: [...s.locks].sort((a, b) => a - b) };
+  const from = $('spec-from').value.trim();
+  if (from !== '') body.from = +from;
+  const frame = +$('start-frame').value;
+  if (frame > 0) body.frame = frame;
+  return body;
+}
+
+function clearFold() {
+  state.fold = null;
+  state.foldFrames.clear();
+  state.foldPlaying = false;
+  $('verdict').replaceChildren();
+  $('split').replaceChildren();
+  $('fold-slider').disabled = true;
+  $('fold-slider').max = 0;
+  $('play-fold').disabled = true;
+  for (const c of ['frame-a', 'frame-b', 'surround', 'offending']) v2.setHalos(c, []);
+  v2.setLabels([]);
+  clearCollision();
+}
+
+// --- collisions ---------------------------------------------------------------------------------
+
+// How folds and sequences are checked (as --no-collisions and --clearance).
+function collideOptions() {
+  const o = {};
+  if (!$('check-collisions').checked) o.no_collisions = true;
+  const c = +$('clearance').value;
+  if (c > 0) o.clearance = c;
+  return o;
+}
+
+function clearCollision() {
+  if (v3) v3.setHighlight([], null);
+  if (v2) v2.setFaceClass('colliding', []);
+}
+
+// Colliding faces in 2D and 3D, and the witness point in 3D.
+function showCollision(faces, point) {
+  v3.setHighlight(faces, point);
+  v2.setFaceClass('colliding', faces);
+}
+
+// The state at the first contact of the fold or the sequence, its faces and witness shown.
+async function showContact(of) {
+  const st = decodeState(await api.binary('contact', { of, binary: 1 }));
+  const col = of === 'fold' ? state.fold.collision : state.sequence.collision;
+  v3.setPositions(st.positions);
+  state.shown = 'contact';
+  state.contactOf = of;
+  showCollision(col.faces, col.point);
+  const at = of === 'sequence' ? `T = ${fmt(st.t, 6)}, fold ${st.fold}, ` : '';
+  const label = `first contact of the ${of}: ${at}drive ${fmt(st.drive_deg, 6)}°, faces ${col.faces.join(' and ')}`;
+  $('state3d').textContent = label;
+  if (of === 'sequence') {
+    $('t-label').textContent = label;
+    plot.setCursor(st.t, st.angles);
+  }
+}
+
+// What the 3D view shows, as the API names a state.
+function shownStateRef() {
+  if (state.shown === 'fold') return { k: state.foldK };
+  if (state.shown === 'sequence' && state.shownT !== null) return { t: state.shownT };
+  if (state.shown === 'contact') return { contact: state.contactOf };
+  return { frame: 0 };
+}
+
+// Check the state shown for self-collision (orikin collide).
+async function collideShown() {
+  const body = shownStateRef();
+  const c = +$('clearance').value;
+  if (c > 0) body.clearance = c;
+  const r = await api.compute('collide', () => api.post('collide', body));
+  state.collide = r;
+  const box = $('collide-summary');
+  box.replaceChildren();
+  const d = document.createElement('div');
+  d.className = r.collides ? 'bad' : 'ok';
+  d.dataset.collides = r.collides;
+  const clear = r.min_clearance !== null ? `least clearance ${fmt(r.min_clearance, 6)} (faces ${r.clearance_faces.join(' and ')})` : 'every face pair shares a vertex';
+  d.textContent = r.collides
+    ? `${r.state}: collision: faces ${r.pairs.map((p) => p.join(' and ')).join('; ')} (${r.touching.length} touching pairs)`
+    : `${r.state}: clean, ${r.touching.length} touching pairs, ${clear}`;
+  box.appendChild(d);
+  const faces = [...new Set(r.pairs.flat())];
+  showCollision(faces, r.collides ? r.witness : null);
+}
+
+async function compute() {
+  await action(async () => {
+    const body = Object.assign(foldBody(), collideOptions());
+    if (state.sequence && state.sequence.valid && state.folds.length && !body.frame) body.after_sequence = true;
+    clearFold();
+    const r = await api.compute('fold', () => api.post('fold', body));
+    state.fold = r;
+    showFold(r, body);
+    if (r.frames.length) await showFoldFrame(r.frames.length - 1);
+    await refresh();
+    if (r.collision) await showContact('fold');
+  });
+}
+
+function showFold(r, body) {
+  const box = $('verdict');
+  box.replaceChildren();
+  const v = document.createElement('div');
+  v.className = r.valid ? 'valid' : 'invalid';
+  v.textContent = r.valid ? `valid: ${r.frames.length} states, ${r.solver}` : `${r.verdict}`;
+  v.dataset.verdict = r.verdict;
+  box.appendChild(v);
+  if (r.reason) {
+    const why = document.createElement('div');
+    why.className = 'reason';
+    why.textContent = r.reason;
+    box.appendChild(why);
+  }
+  if (r.collision) {
+    const c = document.createElement('div');
+    c.className = 'contact';
+    const stop = r.frames.length ? `the motion stops at state ${r.frames.length - 1}` : 'the start state collides';
+    c.textContent = `${stop}; first contact at drive ${fmt(r.collision.drive_deg, 6)}° (step ${r.collision.step}) `;
+    const b = document.createElement('button');
+    b.className = 'small';
+    b.id = 'show-fold-contact';
+    b.textContent = 'show contact';
+    b.onclick = () => action(() => showContact('fold'));
+    c.appendChild(b);
+    box.appendChild(c);
+  }
+  if (r.hint) {
+    const h = document.createElement('div');
+    h.className = 'hint';
+    h.textContent = r.hint;
+    box.appendChild(h);
+  }
+  const meta = document.createElement('div');
+  meta.className = 'hint';
+  meta.textContent = `DOF at the last state ${r.dof} · Grübler–Kutzbach ${r.grubler}` + (body.after_sequence ? ' · after the sequence' : '');
+  box.appendChild(meta);
+  // the offending creases, named and marked
+  v2.setHalos('offending', r.offending_edges.map((o) => o.edge));
+  v2.setLabels(r.offending_edges.map((o) => {
+    const [a, b] = state.doc.edges[o.edge];
+    const P = state.doc.flat;
+    return { x: (P[a][0] + P[b][0]) / 2, y: (P[a][1] + P[b][1]) / 2, text: `${o.edge}: ${o.assignment} → ${fmt(o.angle_deg, 2)}°` };
+  }));
+  for (const o of r.offending_edges) message(`crease ${o.edge} (${ASSIGNMENT_NAMES[o.assignment]}) would fold to ${fmt(o.angle_deg, 6)}° at drive ${fmt(o.at_drive_deg, 4)}°`, true);
+  // Frame A, Frame B, surrounding of a single vertex (thesis fig. 9-8)
+  const sp = $('split');
+  sp.replaceChildren();
+  if (r.split) {
+    v2.setHalos('frame-a', r.frame_a);
+    v2.setHalos('frame-b', r.frame_b);
+    v2.setHalos('surround', r.surrounding);
+    sp.innerHTML = '';
+    const part = (cls, label, edges) => {
+      const s = document.createElement('span');
+      s.className = cls;
+      s.textContent = `${label} ${edges.join(', ') || 'none'}`;
+      return s;
+    };
+    sp.append(`vertex ${r.split.vertex}: `, part('a', 'Frame A', r.frame_a), ' · ', part('b', 'Frame B', r.frame_b), ' · ',
+      part('s', 'surrounding', r.surrounding));
+  }
+  const slider = $('fold-slider');
+  slider.max = Math.max(0, r.frames.length - 1);
+  slider.value = slider.max;
+  slider.disabled = r.frames.length < 2;
+  $('play-fold').disabled = r.frames.length < 2;
+}
+
+async function showFoldFrame(k) {
+  state.foldK = k;
+  let st = state.foldFrames.get(k);
+  if (!st) {
+    st = decodeState(await api.binary('fold/frame', { k, binary: 1 }));
+    state.foldFrames.set(k, st);
+  }
+  if (state.foldK !== k) return;
+  v3.setPositions(st.positions);
+  if (state.shown === 'contact') clearCollision();
+  state.shown = 'fold';
+  $('state3d').textContent = `fold: state ${k} of ${state.fold.frames.length - 1}, drive ${fmt(st.drive_deg, 3)}°`;
+}
+
+async function playFold() {
+  if (!state.fold || state.fold.frames.length < 2) return;
+  state.foldPlaying = !state.foldPlaying;
+  $('play-fold').textContent = state.foldPlaying ? 'pause' : 'play';
+  const slider = $('fold-slider');
+  if (+slider.value >= +slider.max) slider.value = 0;
+  while (state.foldPlaying && state.fold) {
+    const k = +slider.value;
+    await action(() => showFoldFrame(k));
+    await new Promise((r) => setTimeout(r, 80));
+    if (k >= +slider.max) break;
+    slider.value = k + 1;
+  }
+  state.foldPlaying = false;
+  $('play-fold').textContent = 'play';
+}
+
+// --- the folding manager ------------------------------------------------------------------------
+
+function sequenceJson(folds) {
+  return { pattern: state.session.file, folds };
+}
+
+async function runSequence(folds, label) {
+  if (!folds.length) {
+    state.folds = [];
+    state.sequence = null;
+    setupTimeline();
+    return;
+  }
+  const r = await api.compute(label || 'sequence', () => api.post('sequence', sequenceJson(folds), collideOptions()));
+  state.folds = folds;
+  state.sequence = r;
+  await refresh();
+  setupTimeline();
+  if (r.collision) message(`collision: ${r.reason} (the sequence stops before it)`, true);
+  else if (!r.valid) message(`fold ${r.failed_fold} is ${r.verdict}: ${r.reason}`, true);
+  await showTime(lastCleanT());
+  if (r.collision) await showContact('sequence');
+}
+
+function renderFolds() {
+  const ol = $('folds');
+  ol.replaceChildren();
+  const r = state.sequence;
+  state.folds.forEach((f, i) => {
+    const li = document.createElement('li');
+    const failed = r && r.failed_fold === i + 1;
+    li.className = failed ? 'failed' : '';
+    li.textContent = `${f.name ? f.name + ': ' : ''}fix ${f.fix}, drive ${f.drive} to ${fmt(f.to)}°, step ${fmt(f.step)}°` +
+      (f.lock && f.lock.length ? `, lock ${f.lock.join(',')}` : '') + (f.from !== undefined ? `, from ${fmt(f.from)}°` : '') +
+      (failed ? ` — ${r.verdict}` : '');
+    const x = document.createElement('button');
+    x.className = 'small';
+    x.textContent = '×';
+    x.title = 'Remove this fold (and run the sequence again)';
+    x.onclick = () => action(() => runSequence(state.folds.filter((_, k) => k !== i), 'sequence'));
+    li.appendChild(x);
+    ol.appendChild(li);
+  });
+}
+
+function setupTimeline() {
+  const r = state.sequence;
+  const slider = $('t-slider'), tv = $('t-value');
+  const duration = r ? r.duration : 0;
+  const steps = state.grid > 0 ? state.grid : 200;
+  // a sequence that collides is clean before its first contact only (as orikin sequence --at)
+  const contactT = r && state.session && state.session.sequence ? state.session.sequence.collision_t : null;
+  state.seqLimit = contactT !== null && contactT !== undefined ? contactT : duration;
+  slider.min = 0;
+  slider.max = contactT !== null && contactT !== undefined ? Math.max(0, Math.ceil(contactT * steps) - 1) : Math.round(duration * steps);
+  slider.disabled = !r || duration === 0;
+  tv.disabled = slider.disabled;
+  tv.max = state.seqLimit;
+  $('play').disabled = slider.disabled;
+  $('show-seq-contact').hidden = !(r && r.collision);
+  plot.setRecord(r, state.doc ? state.doc.assignment : [], contactT);
+  renderFolds();
+  // the folds are kept when the pattern changes; their record is not (its indices may be stale)
+  $('run-seq').hidden = !!r || state.folds.length === 0;
+  if (!r) {
+    $('t-label').textContent = 'no sequence: specify a fold above and add it';
+    $('t-value').value = '0';
+    slider.value = '0';
+    plot.setCursor(null);
+  }
+}
+
+function sliderSteps() {
+  return state.grid > 0 ? state.grid : 200;
+}
+
+// The last instant the slider reaches: the end, or the last grid point before the first contact.
+function lastCleanT() {
+  return +$('t-slider').max / sliderSteps();
+}
+
+// Show the state at time T (exact, from the server); requests never pile up: while one is in
+// flight only the latest wanted T is remembered.
+async function showTime(t) {
+  state.targetT = Math.min(Math.max(t, 0), lastCleanT());
+  if (state.inflight) return;
+  state.inflight = true;
+  try {
+    while (state.targetT !== null) {
+      const want = state.targetT;
+      state.targetT = null;
+      const t0 = performance.now();
+      const st = decodeState(await api.binary('sequence/at', { t: want, binary: 1 }));
+      state.stats.latency.push(performance.now() - t0);
+      if (state.stats.latency.length > 500) state.stats.latency.shift();
+      v3.setPositions(st.positions);
+      if (state.shown === 'contact') clearCollision();
+      state.stats.states++;
+      state.t = want;
+      state.shownT = want;
+      state.shown = 'sequence';
+      state.shownAngles = st.angles;
+      plot.setCursor(want, st.angles);
+      const label = `T = ${fmt(want, 4)}: fold ${st.fold}, drive ${fmt(st.drive_deg, 4)}°, residual ${st.residual.toExponential(1)}`;
+      $('t-label').textContent = label;
+      $('state3d').textContent = label;
+      $('t-value').value = String(+want.toFixed(10));
+      $('t-slider').value = String(Math.round(want * sliderSteps()));
+    }
+  } catch (e) {
+    message(e.message, true);
+    state.targetT = null;
+  } finally {
+    state.inflight = false;
+  }
+}
+
+async function addFold() {
+  await action(async () => {
+    const b = foldBody();
+    const fold = { name: `fold ${state.folds.length + 1}`, fix: b.fix, drive: b.drive, to: b.to, step: b.step, lock: b.lock };
+    if (b.from !== undefined) fold.from = b.from;
+    await runSequence(state.folds.concat([fold]), 'sequence');
+    clearFold();
+    message(`fold ${state.folds.length} added: the next fold starts where it ends`);
+  });
+}
+
+function togglePlay() {
+  if (!state.sequence) return;
+  state.playing = !state.playing;
+  $('play').textContent = state.playing ? '❚❚' : '▶';
+  if (!state.playing) return;
+  const duration = lastCleanT();
+  let t = state.t >= duration ? 0 : state.t;
+  let last = performance.now();
+  const tick = (now) => {
+    if (!state.playing) return;
+    // an animation frame's time may precede the moment play was pressed: never step back
+    t = Math.min(duration, Math.max(0, t + (Math.max(0, now - last) / 1000) * PLAY_RATE * +$('speed').value));
+    last = Math.max(last, now);
+    // on the grid of the scrubbing cache: every state is exact and served at once
+    const k = Math.round(t * sliderSteps());
+    showTime(k / sliderSteps());
+    if (t >= duration) {
+      state.playing = false;
+      $('play').textContent = '▶';
+      return;
+    }
+    requestAnimationFrame(tick);
+  };
+  requestAnimationFrame(tick);
+}
+
+// --- files ---------------------------------------------------------------------------------------
+
+function download(name, blob) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
+}
+
+// Export: the document (FOLD, SVG, .cp, .opx), a picture or mesh of the state shown (the
+// picture seen from the 3D view's camera, in its colours; the crease pattern when the flat
+// sheet is shown), or the motion of the sequence or the fold. Named "format" or "format:of".
+function exportParams(format, of) {
+  const f = state.session.export_formats.find((x) => x.format === format);
+  const params = { format };
+  if (!f || f.kind === 'document') return params;
+  if (of) {
+    params.of = of;
+  } else {
+    Object.assign(params, shownStateRef());
+  }
+  const flat = state.shown === 'flat' && !state.doc.is3d;
+  if ((f.kind === 'picture' && !flat) || f.kind === 'animation') {
+    const { eye, up } = v3.viewAxes();
+    params.eye = eye.map((x) => +x.toPrecision(12)).join(',');
+    params.up = up.map((x) => +x.toPrecision(12)).join(',');
+    params.perspective = 1;
+    params.front = $('color-front').value;
+    params.back = $('color-back').value;
+    if (v3.gridVisible !== false) params.grid = 1;
+    const c = $('gl');
+    let w = Math.max(1, Math.round(2 * c.clientWidth)), h = Math.max(1, Math.round(2 * c.clientHeight));
+    const k = Math.min(1, 4096 / w, 4096 / h, f.kind === 'animation' ? 800 / w : 1);
+    params.size = `${Math.max(1, Math.round(w * k))}x${Math.max(1, Math.round(h * k))}`;
+  } else if (f.kind === 'mesh') {
+    params.front = $('color-front').value;
+    params.back = $('color-back').value;
+  }
+  return params;
+}
+
+async function exportAs(format, of) {
+  await action(async () => {
+    const params = exportParams(format, of);
+    const run = () => api.request('GET', 'export', { params, as: 'response' });
+    const res = params.format === 'fold' || params.format === 'svg' ? await run() : await api.compute('export', run);
+    const cd = res.headers.get('Content-Disposition') || '';
+    const m = /filename="([^"]+)"/.exec(cd);
+    download(m ? m[1] : 'orikin.' + format, await res.blob());
+  });
+}
+
+// The export menu: one group per what is written.
+function renderExportMenu() {
+  const sel = $('export-format');
+  sel.querySelectorAll('optgroup').forEach((g) => g.remove());
+  const groups = [
+    ['crease pattern', (f) => f.kind === 'document', null],
+    ['picture of the state shown', (f) => f.kind === 'picture', null],
+    ['mesh of the state shown', (f) => f.kind === 'mesh', null],
+    ['motion of the sequence', (f) => f.motion, 'sequence'],
+    ['motion of the fold', (f) => f.motion, 'fold'],
+  ];
+  for (const [label, take, of] of groups) {
+    const g = document.createElement('optgroup');
+    g.label = label;
+    for (const f of state.session.export_formats.filter(take)) {
+      const o = document.createElement('option');
+      o.value = of ? `${f.format}:${of}` : f.format;
+      o.textContent = f.label;
+      g.appendChild(o);
+    }
+    sel.appendChild(g);
+  }
+}
+
+async function openFile(file) {
+  state.work++; // reading the file takes a moment before any request: count it as busy
+  try {
+    await openFileNow(file);
+  } finally {
+    state.work--;
+  }
+}
+
+async function openFileNow(file) {
+  const name = file.name;
+  const ext = (/\.[^.]+$/.exec(name.toLowerCase()) || [''])[0];
+  if (file.type.startsWith('image/')) {
+    const url = URL.createObjectURL(file);
+    await action(async () => {
+      await v3.setTexture(url);
+      $('texture-clear').hidden = false;
+      message(`texture: ${name} on the front side`);
+    });
+    return;
+  }
+  const text = await file.text();
+  if (ext === '.json') {
+    let j;
+    try { j = JSON.parse(text); } catch (e) { message(`${name}: malformed JSON: ${e.message}`, true); return; }
+    if (j && Array.isArray(j.folds)) {
+      await action(() => runSequence(j.folds, 'sequence'));
+      return;
+    }
+    if (j && Array.isArray(j.creases)) {
+      const label = j.name || name.replace(/\.json$/i, '');
+      state.composites.push({ name: label, pattern: j });
+      renderCollection();
+      message(`composite ${label} added to the collection`);
+      return;
+    }
+    message(`${name}: a JSON file here is a fold sequence ("folds") or a composite ("creases")`, true);
+    return;
+  }
+  await action(async () => {
+    await api.compute('opening ' + name, () => api.postText('open', text, { name }));
+    message(`opened ${name}`);
+    state.folds = [];
+    state.sequence = null;
+    state.spec = { fix: -1, drive: -1, locks: new Set() };
+    await refresh();
+    setupTimeline();
+  });
+}
+
+// --- start ---------------------------------------------------------------------------------------
+
+let v2, v3, plot;
+
+function token() {
+  const q = new URLSearchParams(location.search).get('token');
+  if (q) {
+    sessionStorage.setItem('orikin-token', q);
+    history.replaceState(null, '', location.pathname);
+    return q;
+  }
+  return sessionStorage.getItem('orikin-token');
+}
+
+function wire() {
+  $('new-sheet').onclick = () => $('new-dialog').showModal();
+  $('new-ok').addEventListener('click', (ev) => {
+    ev.preventDefault();
+    $('new-dialog').close('ok');
+    const kind = document.querySelector('input[name=kind]:checked').value;
+    const body = kind === 'square' ? { square: +$('new-side').value } : { rect: [+$('new-w').value, +$('new-h').value] };
+    action(async () => {
+      await api.post('new', body);
+      state.folds = [];
+      state.spec = { fix: -1, drive: -1, locks: new Set() };
+      await refresh();
+      setupTimeline();
+    });
+  });
+  $('open-file').onchange = (ev) => { if (ev.target.files[0]) openFile(ev.target.files[0]); ev.target.value = ''; };
+  $('download-fold').onclick = () => exportAs('fold');
+  $('export-format').onchange = (ev) => {
+    const [format, of] = ev.target.value.split(':');
+    if (format) exportAs(format, of);
+    ev.target.value = '';
+  };
+  $('save-back').onclick = () => action(async () => {
+    if (!confirm(`Write the document to ${state.session.save_path}?`)) return;
+    const r = await api.post('save', { what: 'document' });
+    message('saved ' + r.saved);
+  });
+  $('save-seq').onclick = () => action(async () => {
+    if (!confirm(`Write the sequence to ${state.session.sequence_path}?`)) return;
+    const r = await api.post('save', { what: 'sequence' });
+    message('saved ' + r.saved);
+  });
+  $('download-seq').onclick = () => {
+    if (!state.folds.length) { message('no folds to download', true); return; }
+    download('sequence.seq.json', new Blob([JSON.stringify(sequenceJson(state.folds), null, 2) + '\n'], { type: 'application/json' }));
+  };
+  $('undo').onclick = () => action(async () => { await api.compute('undo', () => api.post('undo')); await refresh(); });
+  $('redo').onclick = () => action(async () => { await api.compute('redo', () => api.post('redo')); await refresh(); });
+  for (const b of document.querySelectorAll('[data-layout]'))
+    b.onclick = () => {
+      $('main').className = 'layout-' + b.dataset.layout;
+      for (const o of document.querySelectorAll('[data-layout]')) o.classList.toggle('on', o === b);
+    };
+  for (const b of document.querySelectorAll('[data-tool]')) b.onclick = () => setTool(b.dataset.tool === state.tool ? 'select' : b.dataset.tool);
+  $('axiom-number').onchange = () => { setTool('axiom'); };
+  $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
+  $('compute').onclick = compute;
+  $('check-tolerance').onchange = () => action(runCheck);
+  $('regularize').onclick = () => action(regularize);
+  $('collide').onclick = () => action(collideShown);
+  $('show-seq-contact').onclick = () => action(() => showContact('sequence'));
+  $('fold-slider').oninput = (ev) => action(() => showFoldFrame(+ev.target.value));
+  $('play-fold').onclick = playFold;
+  $('add-fold').onclick = addFold;
+  $('run-seq').onclick = () => action(() => runSequence(state.folds, 'sequence'));
+  $('play').onclick = togglePlay;
+  $('t-slider').oninput = (ev) => showTime(+ev.target.value / sliderSteps());
+  $('t-value').onchange = (ev) => {
+    const t = Math.min(Math.max(+ev.target.value, 0), lastCleanT());
+    if (isFinite(t)) showTime(t);
+  };
+  for (const b of document.querySelectorAll('[data-rot]')) b.onclick = () => { const [k, s] = b.dataset.rot.split(','); v3.rotate(k, +s); };
+  for (const b of document.querySelectorAll('[data-zoom]')) b.onclick = () => v3.zoom(+b.dataset.zoom);
+  $('fit3d').onclick = () => v3.fit();
+  $('preset').onchange = (ev) => { v3.preset(ev.target.value); ev.target.value = ''; };
+  $('grid-toggle').onchange = (ev) => v3.setGrid(ev.target.checked);
+  $('edges-toggle').onchange = (ev) => v3.setCreasesVisible(ev.target.checked);
+  $('color-front').oninput = (ev) => v3.setColors(ev.target.value, null);
+  $('color-back').oninput = (ev) => v3.setColors(null, ev.target.value);
+  $('texture-file').onchange = (ev) => { if (ev.target.files[0]) openFile(ev.target.files[0]); ev.target.value = ''; };
+  $('texture-clear').onclick = () => { v3.setTexture(null); v3.setColors($('color-front').value, null); $('texture-clear').hidden = true; };
+  // drag and drop anywhere
+  let depth = 0;
+  window.addEventListener('dragenter', (ev) => { ev.preventDefault(); depth++; $('drop-overlay').hidden = false; });
+  window.addEventListener('dragleave', () => { if (--depth <= 0) { depth = 0; $('drop-overlay').hidden = true; } });
+  window.addEventListener('dragover', (ev) => ev.preventDefault());
+  window.addEventListener('drop', (ev) => {
+    ev.preventDefault();
+    depth = 0;
+    $('drop-overlay').hidden = true;
+    const f = ev.dataTransfer && ev.dataTransfer.files[0];
+    if (f) openFile(f);
+  });
+  window.addEventListener('keydown', (ev) => {
+    if (ev.target instanceof HTMLInputElement || ev.target instanceof HTMLSelectElement) return;
+    if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === 'z') { ev.preventDefault(); $(ev.shiftKey ? 'redo' : 'undo').click(); }
+    else if ((ev.ctrlKey || ev.metaKey) && ev.key.toLowerCase() === 'y') { ev.preventDefault(); $('redo').click(); }
+    else if (ev.key === 'Escape') setTool('select');
+  });
+  // the legend of line styles
+  const legend = $('legend2d');
+  for (const [a, label] of [['M', 'mountain'], ['V', 'valley'], ['U', 'unassigned'], ['B', 'boundary']]) {
+    const span = document.createElement('span');
+    span.innerHTML = `<svg width="26" height="8"><line class="edge ${a}" x1="1" y1="4" x2="25" y2="4"></line></svg> ${label}`;
+    legend.appendChild(span);
+  }
+}
+
+async function start() {
+  const tok = token();
+  v2 = new View2D($('cp'), { onHover, onClick: (hit) => onClick(hit) });
+  v3 = new View3D($('gl'));
+  plot = new Plot($('plot'));
+  wire();
+  if (!tok) {
+    message('this page needs the session token: open the URL that orikin view printed', true);
+    return;
+  }
+  api = new Api(tok, progress);
+  await action(async () => {
+    await refresh(true);
+    renderExportMenu();
+    renderCollection();
+    if (state.session.sequence) {
+      const r = await api.get('sequence');
+      state.sequence = r;
+      state.folds = r.folds.map((f) => {
+        const o = { fix: f.fix, drive: f.drive, to: f.to_deg, step: f.step_deg, lock: f.lock };
+        if (f.name) o.name = f.name;
+        if (f.from_deg !== null) o.from = f.from_deg;
+        return o;
+      });
+      setupTimeline();
+      await showTime(0);
+      if (r.collision) message(`collision: ${r.reason} (the sequence stops before it; "contact" shows it)`, true);
+    } else {
+      setupTimeline();
+    }
+  });
+  setTool('select');
+  window.studio.ready = true;
+}
+
+// For people and tests: read-only views of what the page shows.
+window.studio = {
+  ready: false,
+  positions: () => (v3 && v3.positions ? Array.from(v3.positions) : []),
+  shownT: () => state.shownT,
+  shown: () => state.shown,
+  version: () => state.version,
+  lastError: () => state.lastError,
+  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work,
+  stats: () => ({
+    states: state.stats.states,
+    framesDrawn: v3 ? v3.frameCount : 0,
+    latencyMs: state.stats.latency.length ? state.stats.latency.reduce((a, b) => a + b, 0) / state.stats.latency.length : null,
+  }),
+  clientOf: (x, y) => v2.clientOf(x, y),
+  faceClient: (f) => v2.clientOf(...state.doc.faceCentroid[f]),
+  edgeClient: (e) => {
+    const [a, b] = state.doc.edges[e];
+    const P = state.doc.flat;
+    return v2.clientOf((P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2);
+  },
+  vertexClient: (v) => v2.clientOf(...state.doc.flat[v]),
+  renderMs: (n = 10) => v3.timeRender(n),
+  setProgressDelay: (ms) => { api.progressDelay = ms; },
+  fold: () => state.fold,
+  sequence: () => state.sequence,
+  check: () => state.check,
+  collide: () => state.collide,
+  regularizeResult: () => state.regularize,
+  highlight: () => (v3 ? v3.highlighted : null),
+  exportParams: (format, of) => exportParams(format, of),
+  spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, locks: [...state.spec.locks] }),
+};
+
+start();
