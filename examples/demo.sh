@@ -99,7 +99,7 @@ run 0 convert tests/data/formats/bird.cp "$OUT/bird.fold"
 run 0 generate miura --rows 4 --cols 6 -o "$OUT/miura.svg"
 
 # --- studio (orikin view) -----------------------------------------------------------------
-step "9. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
+step "10. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
 echo "\$ orikin view examples/open-corner.seq.json --port 0 --no-browser"
 "$ORIKIN" view examples/open-corner.seq.json --port 0 --no-browser >"$OUT/view.out" 2>&1 &
 view_pid=$!
