@@ -144,4 +144,17 @@
 /// unit axes for vertex loops). The sparse least-squares corrector then takes over.
 #define ORI_KIN_SWEEP_PIVOT_REL 1e-6
 
+// --- global layer order (src/layers) ------------------------------------------------------
+
+/// Overlap structure of a folded state: folded points closer than this × the folded image's
+/// diagonal are one point, and a point closer than this to an edge's folded segment lies on
+/// it. It also bounds how far the images of one vertex through different faces may disagree
+/// (otherwise the sheet does not fold consistently). Unitless (relative length).
+#define ORI_TOL_LAYERS_SNAP_REL 1e-8
+
+/// Distances between ORI_TOL_LAYERS_SNAP_REL and this many times it are ambiguous: the
+/// coordinates do not say whether the two features meet, so the overlap structure is refused
+/// (naming the element) instead of guessed. Unitless factor.
+#define ORI_LAYERS_AMBIGUITY_FACTOR 10.0
+
 #endif
