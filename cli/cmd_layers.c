@@ -2,6 +2,7 @@
 // pattern, counted exactly, with the conflicting constraint named when there is none.
 #include <errno.h>
 #include <inttypes.h>
+#include <math.h>
 #include <orikin/layers.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -293,7 +294,8 @@ static int run(int argc, char **argv)
         if (unsat) {
             printf("states       0\n");
             printf("verdict: NO flat-folded state: %s\n", conf.detail);
-            if (conf.constraint == ORI_LAYERS_LOCAL && strstr(conf.detail, "(kawasaki)") && !seen_tol)
+            if (conf.constraint == ORI_LAYERS_LOCAL && fabs(conf.kawasaki_rad) > 0.0 &&
+                fabs(conf.kawasaki_rad) <= 1e-3 && !seen_tol)
                 printf("hint: a drawing with rounded coordinates may pass with --tolerance (e.g. 1e-5)\n");
             if (conf.face_count > 0) {
                 printf("constraint faces:");

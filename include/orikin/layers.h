@@ -121,6 +121,7 @@ typedef struct ori_layers_conflict {
     int face_count;      ///< 2, 3 or 4 (0 for LOCAL and EXHAUSTED)
     int vertex;          ///< LOCAL: the vertex; else ORI_NULL_INDEX
     int component;       ///< EXHAUSTED: the component; else -1
+    double kawasaki_rad; ///< LOCAL by Kawasaki: the vertex's alternating sector sum (radians); else 0
     char detail[200];    ///< one readable sentence
 } ori_layers_conflict;
 

@@ -143,6 +143,7 @@ static bool local_check(ori_layers *L, const ori_pattern *p)
             snprintf(detail, sizeof detail, "alternating sector sum is %g deg (%.3g rad), beyond %.3g rad",
                      ori_rad_to_deg_output(K), K, kaw_tol);
             local_fail(L, p, v, "kawasaki", detail);
+            L->conflict.kawasaki_rad = K;
             ok = false;
             break;
         }

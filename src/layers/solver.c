@@ -139,6 +139,9 @@ typedef struct solver {
     int set_id;
     int *seen;
     int seen_id;
+    int *vseen; // per variable: boundary variable already in the current component's key
+    int vseen_id;
+    int *score; // per class: live constraint incidences at its last split (branching)
     // cache
     cache_entry *cache;
     uint64_t cmask;
@@ -163,6 +166,8 @@ static void solver_init(solver *s, const ori_layers *L, bool with_cache)
     s->queue = ori__alloc(sizeof(int) * nv);
     s->in_set = ori__calloc(nc, sizeof(int));
     s->seen = ori__calloc(nc, sizeof(int));
+    s->vseen = ori__calloc(nv, sizeof(int));
+    s->score = ori__calloc(nc, sizeof(int));
     s->limit = L->limit;
     if (with_cache) {
         uint64_t cap = 1 << 12;
@@ -180,6 +185,8 @@ static void solver_free(solver *s)
     ori__free(s->queue);
     ori__free(s->in_set);
     ori__free(s->seen);
+    ori__free(s->vseen);
+    ori__free(s->score);
     ori__free(s->rkind);
     ori__free(s->rdata);
     if (s->cache) {
@@ -371,6 +378,13 @@ static int split(solver *s, const int *set, int n, int *out, int *starts, uint64
 {
     const ori_layers *L = s->L;
     const int8_t *val = s->val;
+    if (s->set_id > INT32_MAX - 2 || s->seen_id > INT32_MAX - 2 || s->vseen_id > INT32_MAX - 2 * (n + 1)) {
+        // Stamps wrap after 2^31 splits: start them over.
+        memset(s->in_set, 0, sizeof(int) * (size_t)(L->n_class ? L->n_class : 1));
+        memset(s->seen, 0, sizeof(int) * (size_t)(L->n_class ? L->n_class : 1));
+        memset(s->vseen, 0, sizeof(int) * (size_t)(L->nvar ? L->nvar : 1));
+        s->set_id = s->seen_id = s->vseen_id = 0;
+    }
     int sid = ++s->set_id, vid = ++s->seen_id;
     for (int i = 0; i < n; ++i) s->in_set[set[i]] = sid;
     int ncomp = 0, tail = 0;
@@ -379,21 +393,27 @@ static int split(solver *s, const int *set, int n, int *out, int *starts, uint64
         if (s->seen[c0] == vid) continue;
         starts[ncomp] = tail;
         uint64_t h[2] = {0, 0};
+        int bid = ++s->vseen_id;
         int head = tail;
         out[tail++] = c0;
         s->seen[c0] = vid;
         while (head < tail) {
             int c = out[head++];
-            hash_add(h, (uint64_t)c);
+            int live = 0;
+            if (hashes) hash_add(h, (uint64_t)c);
             for (int64_t m = L->class_vars.off[c]; m < L->class_vars.off[c + 1]; ++m) {
                 int v = L->class_vars.items[m];
                 for (int64_t k = L->var_tacos.off[v]; k < L->var_tacos.off[v + 1]; ++k) {
                     const ori__taco *t = &L->taco[L->var_tacos.items[k]];
                     if (L->table6[taco_code(val, t)] & ORI__TABLE_DEAD) continue;
+                    live += 3;
                     for (int j = 0; j < 6; ++j) {
                         int u = ORI__LIT_VAR(t->lit[j]);
                         if (val[u]) {
-                            hash_add(h, ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
+                            if (hashes && s->vseen[u] != bid) {
+                                s->vseen[u] = bid;
+                                hash_add(h, ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
+                            }
                             continue;
                         }
                         int cu = L->var_class[u];
@@ -416,10 +436,14 @@ static int split(solver *s, const int *set, int n, int *out, int *starts, uint64
                         if (s->ff_rule ? ff_tied(L, F[sl->ia], F[sl->ib], F[x], v, p, q)
                                        : triple_tied(L, v, q, sl->ib > x, p, sl->ia > x))
                             continue;
+                        live++;
                         for (int w = 0; w < 2; ++w) {
                             int u = w ? q : p;
                             if (val[u]) {
-                                hash_add(h, ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
+                                if (hashes && s->vseen[u] != bid) {
+                                    s->vseen[u] = bid;
+                                    hash_add(h, ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
+                                }
                                 continue;
                             }
                             int cu = L->var_class[u];
@@ -431,6 +455,7 @@ static int split(solver *s, const int *set, int n, int *out, int *starts, uint64
                     }
                 }
             }
+            s->score[c] = live;
         }
         if (hashes) {
             hashes[ncomp][0] = h[0] ^ ((uint64_t)(tail - starts[ncomp]) << 40);
@@ -444,16 +469,20 @@ static int split(solver *s, const int *set, int n, int *out, int *starts, uint64
 
 // --- counting -------------------------------------------------------------------------------
 
-// Branch on the class with the largest static weight (constraints it takes part in).
+// Branch on the class in the most live constraints (counted when the set was split off: those
+// still able to constrain something), the static weight breaking ties.
 static int choose(const solver *s, const int *set, int n)
 {
     int best = set[0];
+    int bs = -1;
     int64_t bw = -1;
     for (int i = 0; i < n; ++i) {
-        int64_t w = s->L->class_weight[set[i]];
-        if (w > bw) {
+        int c = set[i], sc = s->score[c];
+        int64_t w = s->L->class_weight[c];
+        if (sc > bs || (sc == bs && w > bw)) {
+            bs = sc;
             bw = w;
-            best = set[i];
+            best = c;
         }
     }
     return best;
@@ -467,6 +496,7 @@ static void report(solver *s)
 }
 
 static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exact);
+
 
 // Count component (set, n) with key h, through the cache.
 static void count_cached(solver *s, const int *set, int n, const uint64_t h[2], ori__nat *res, bool *exact)
