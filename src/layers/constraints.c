@@ -433,9 +433,14 @@ static ori_status build_stacks(ori_layers *L, ori_error *error)
         int c = cand[i], k = (int)CELL_SIZE(L, c);
         const int *F = CELL_FACES(L, c);
         ori__stack *S = &L->stacks[i];
+        if (k > 65535 && st == ORI_OK)
+            st = ori__fail_at(error, ORI_ERR_LIMIT, "faces_vertices", F[0], "%d faces over one cell (at most 65535)", k);
         S->k = k;
+        S->words = (k + 63) / 64;
         S->faces_at = fo;
         S->vars_at = vo;
+        S->bits_at = L->n_bitwords;
+        L->n_bitwords += 2 * (int64_t)k * S->words;
         memcpy(L->stack_faces + fo, F, sizeof(int) * (size_t)k);
         int *M = L->stack_vars + vo;
         for (int a = 0; a < k; ++a) {
@@ -470,6 +475,15 @@ static ori_status build_stacks(ori_layers *L, ori_error *error)
     }
     ori__free(fill);
     ori__free(cand);
+    // Every stack of each variable, compactly, before pruning (the bit rows need them all).
+    L->var_fslot_off = ori__alloc(sizeof(int64_t) * (size_t)(L->nvar + 1));
+    memcpy(L->var_fslot_off, cnt, sizeof(int64_t) * (size_t)(L->nvar + 1));
+    L->fslots = ori__alloc(sizeof(ori__fslot) * (size_t)(cnt[L->nvar] ? cnt[L->nvar] : 1));
+    for (int64_t i = 0; i < cnt[L->nvar]; ++i) {
+        L->fslots[i].stack = L->slots[i].stack;
+        L->fslots[i].ia = (uint16_t)L->slots[i].ia;
+        L->fslots[i].ib = (uint16_t)L->slots[i].ib;
+    }
     if (st == ORI_OK) L->count_kind[ORI_LAYERS_TRANSITIVITY] = prune_slots(L);
     return st;
 }

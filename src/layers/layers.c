@@ -57,6 +57,8 @@ void ori_layers_destroy(ori_layers *L)
     ori__free(L->stack_vars);
     ori__free(L->slots);
     ori__free(L->var_slot_off);
+    ori__free(L->fslots);
+    ori__free(L->var_fslot_off);
     ori__free(L->var_class);
     ori__free(L->var_par);
     ori__free(L->class_weight);

@@ -89,9 +89,18 @@ typedef struct ori__taco {
 // variable of faces i and j of the stack (faces sorted, so i < j ⇔ face i < face j).
 typedef struct ori__stack {
     int k;
+    int words;        // 64-bit words per bit row: ⌈k / 64⌉
     int64_t faces_at; // offset into ori_layers.stack_faces
     int64_t vars_at;  // offset into ori_layers.stack_vars (k·k ints, diagonal unused)
+    int64_t bits_at;  // offset into a solver's bit rows: above[i] (the faces known above face
+                      // i) at bits_at + i·words, below[i] at bits_at + (k + i)·words
 } ori__stack;
+
+// Every stack holding a variable, with the positions of its faces (for the bit rows).
+typedef struct ori__fslot {
+    int stack;
+    uint16_t ia, ib;
+} ori__fslot;
 
 // Where a variable sits in a stack: the stack and the positions of its two faces.
 typedef struct ori__slot {
@@ -140,8 +149,11 @@ struct ori_layers {
     ori__stack *stacks;
     int *stack_faces;
     int *stack_vars;
-    ori__slot *slots;          // per variable (var_slot_off), the stacks holding it
+    ori__slot *slots;          // per variable (var_slot_off), stacks covering its triples
     int64_t *var_slot_off;
+    ori__fslot *fslots;        // per variable (var_fslot_off), every stack holding it
+    int64_t *var_fslot_off;
+    int64_t n_bitwords;        // size of a solver's bit rows
 
     // Equivalence classes (union-find with parity) and the fixed part.
     int n_class;

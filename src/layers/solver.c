@@ -102,10 +102,21 @@ static void fill_table(uint16_t *table, int n, bool (*valid)(int))
     }
 }
 
+// The tables are the same for every problem: built once (thread-safe), copied per solver.
+static uint16_t g_table6[729], g_table3[27];
+static pthread_once_t g_tables_once = PTHREAD_ONCE_INIT;
+
+static void build_tables(void)
+{
+    fill_table(g_table6, 6, taco_valid);
+    fill_table(g_table3, 3, trans_valid);
+}
+
 void ori__layers_tables(ori_layers *L)
 {
-    fill_table(L->table6, 6, taco_valid);
-    fill_table(L->table3, 3, trans_valid);
+    pthread_once(&g_tables_once, build_tables);
+    memcpy(L->table6, g_table6, sizeof g_table6);
+    memcpy(L->table3, g_table3, sizeof g_table3);
 }
 
 // --- solver state -------------------------------------------------------------------------
@@ -122,6 +133,7 @@ typedef struct solver {
     const ori_layers *L;
     int8_t *val;  // per variable
     int8_t *cval; // per class
+    uint64_t *bits; // per stack: the faces known above / below each face (ori__stack.bits_at)
     int *trail;   // classes in assignment order
     int ntrail;
     int *queue;   // variables to propagate
@@ -162,6 +174,7 @@ static void solver_init(solver *s, const ori_layers *L, bool with_cache)
     size_t nv = (size_t)(L->nvar ? L->nvar : 1), nc = (size_t)(L->n_class ? L->n_class : 1);
     s->val = ori__calloc(nv, 1);
     s->cval = ori__calloc(nc, 1);
+    s->bits = ori__calloc((size_t)(L->n_bitwords ? L->n_bitwords : 1), sizeof(uint64_t));
     s->trail = ori__alloc(sizeof(int) * nc);
     s->queue = ori__alloc(sizeof(int) * nv);
     s->in_set = ori__calloc(nc, sizeof(int));
@@ -170,7 +183,7 @@ static void solver_init(solver *s, const ori_layers *L, bool with_cache)
     s->score = ori__calloc(nc, sizeof(int));
     s->limit = L->limit;
     if (with_cache) {
-        uint64_t cap = 1 << 12;
+        uint64_t cap = 64;
         while (cap < 4 * (uint64_t)L->n_class && cap < (1u << 20)) cap *= 2;
         s->cache = ori__calloc((size_t)cap, sizeof(cache_entry));
         s->cmask = cap - 1;
@@ -181,6 +194,7 @@ static void solver_free(solver *s)
 {
     ori__free(s->val);
     ori__free(s->cval);
+    ori__free(s->bits);
     ori__free(s->trail);
     ori__free(s->queue);
     ori__free(s->in_set);
@@ -205,6 +219,32 @@ static void set_conflict(solver *s, int kind, int a, int b, int c, int d, int n)
     s->conf_nfaces = n;
 }
 
+// Record variable v's value (x = ±1, 0 to forget it) in the bit rows of every stack holding
+// it: +1 puts its lower face above the other.
+static void set_bits(solver *s, int v, int x)
+{
+    const ori_layers *L = s->L;
+    for (int64_t k = L->var_fslot_off[v]; k < L->var_fslot_off[v + 1]; ++k) {
+        const ori__fslot *fs = &L->fslots[k];
+        const ori__stack *S = &L->stacks[fs->stack];
+        uint64_t *up = s->bits + S->bits_at, *down = up + (int64_t)S->k * S->words;
+        int a = fs->ia, b = fs->ib, w = S->words;
+        uint64_t ba = (uint64_t)1 << (a & 63), bb = (uint64_t)1 << (b & 63);
+        if (x == 0) {
+            up[b * w + (a >> 6)] &= ~ba;
+            down[a * w + (b >> 6)] &= ~bb;
+            up[a * w + (b >> 6)] &= ~bb;
+            down[b * w + (a >> 6)] &= ~ba;
+        } else if (x > 0) { // a above b
+            up[b * w + (a >> 6)] |= ba;
+            down[a * w + (b >> 6)] |= bb;
+        } else {
+            up[a * w + (b >> 6)] |= bb;
+            down[b * w + (a >> 6)] |= ba;
+        }
+    }
+}
+
 // Give class c value x (±1): every member variable follows with its parity.
 static void assign_class(solver *s, int c, int x)
 {
@@ -214,6 +254,7 @@ static void assign_class(solver *s, int c, int x)
     for (int64_t k = L->class_vars.off[c]; k < L->class_vars.off[c + 1]; ++k) {
         int v = L->class_vars.items[k];
         s->val[v] = (int8_t)(x * L->var_par[v]);
+        set_bits(s, v, s->val[v]);
         s->queue[s->qtail++] = v;
     }
 }
@@ -224,7 +265,11 @@ static void undo(solver *s, int mark)
     while (s->ntrail > mark) {
         int c = s->trail[--s->ntrail];
         s->cval[c] = 0;
-        for (int64_t k = L->class_vars.off[c]; k < L->class_vars.off[c + 1]; ++k) s->val[L->class_vars.items[k]] = 0;
+        for (int64_t k = L->class_vars.off[c]; k < L->class_vars.off[c + 1]; ++k) {
+            int v = L->class_vars.items[k];
+            s->val[v] = 0;
+            set_bits(s, v, 0);
+        }
     }
     s->qhead = s->qtail = 0;
 }
@@ -290,31 +335,47 @@ static bool propagate(solver *s)
                 }
             }
         }
-        int lab = ORI__LIT(v, 0);
-        int dab = digit(val, lab);
+        // Transitivity with bit rows: with t above u just decided, every face above t is above
+        // u and every face below u is below t; a face above t and below u closes a cycle.
         for (int64_t k = L->var_slot_off[v]; k < L->var_slot_off[v + 1]; ++k) {
             const ori__slot *sl = &L->slots[k];
             const ori__stack *S = &L->stacks[sl->stack];
             const int *F = L->stack_faces + S->faces_at;
-            const int *Ma = L->stack_vars + S->vars_at + (int64_t)sl->ia * S->k;
-            const int *Mb = L->stack_vars + S->vars_at + (int64_t)sl->ib * S->k;
-            for (int i = 0; i < S->k; ++i) {
-                if (i == sl->ia || i == sl->ib) continue;
-                int vac = Ma[i], vbc = Mb[i];
-                if (!val[vac] && !val[vbc]) continue;
-                int lbc = ORI__LIT(vbc, sl->ib > i), lac = ORI__LIT(vac, sl->ia > i);
-                uint16_t r = L->table3[dab + 3 * digit(val, lbc) + 9 * digit(val, lac)];
-                if (r == ORI__TABLE_CONFLICT) {
-                    set_conflict(s, ORI_LAYERS_TRANSITIVITY, F[sl->ia], F[sl->ib], F[i], -1, 3);
+            const int *M = L->stack_vars + S->vars_at;
+            int w = S->words, kk = S->k;
+            int t = val[v] > 0 ? sl->ia : sl->ib, u = val[v] > 0 ? sl->ib : sl->ia;
+            const uint64_t *up = s->bits + S->bits_at, *down = up + (int64_t)kk * w;
+            const uint64_t *up_t = up + (int64_t)t * w, *up_u = up + (int64_t)u * w;
+            const uint64_t *dn_t = down + (int64_t)t * w, *dn_u = down + (int64_t)u * w;
+            for (int q = 0; q < w; ++q)
+                if (up_t[q] & dn_u[q]) {
+                    int x = q * 64 + __builtin_ctzll(up_t[q] & dn_u[q]);
+                    set_conflict(s, ORI_LAYERS_TRANSITIVITY, F[t], F[u], F[x], -1, 3);
                     return false;
                 }
-                if (!(r & 0x0707)) continue;
-                int rf[4] = {F[sl->ia], F[sl->ib], F[i], -1};
-                int l = (r & 2) ? lbc : (r & 0x200) ? (lbc ^ 1) : (r & 4) ? lac : (r & 0x400) ? (lac ^ 1) : -1;
-                // (a, b) is assigned: only bc or ac can be forced, and at most one of them.
-                if (l >= 0 && !set_lit(s, l, R_TRANS, rf)) {
-                    set_conflict(s, ORI_LAYERS_TRANSITIVITY, F[sl->ia], F[sl->ib], F[i], -1, 3);
-                    return false;
+            for (int q = 0; q < w; ++q) {
+                // Faces above t not yet above u (u itself is below t, not above it).
+                uint64_t m = up_t[q] & ~up_u[q];
+                while (m) {
+                    int x = q * 64 + __builtin_ctzll(m);
+                    m &= m - 1;
+                    int vx = M[x * kk + u];
+                    int rf[4] = {F[t], F[u], F[x], -1};
+                    if (!set_lit(s, ORI__LIT(vx, x > u), R_TRANS, rf)) {
+                        set_conflict(s, ORI_LAYERS_TRANSITIVITY, F[t], F[u], F[x], -1, 3);
+                        return false;
+                    }
+                }
+                m = dn_u[q] & ~dn_t[q];
+                while (m) {
+                    int y = q * 64 + __builtin_ctzll(m);
+                    m &= m - 1;
+                    int vy = M[t * kk + y];
+                    int rf[4] = {F[t], F[u], F[y], -1};
+                    if (!set_lit(s, ORI__LIT(vy, t > y), R_TRANS, rf)) {
+                        set_conflict(s, ORI_LAYERS_TRANSITIVITY, F[t], F[u], F[y], -1, 3);
+                        return false;
+                    }
                 }
             }
         }
@@ -423,33 +484,44 @@ static int split(solver *s, const int *set, int n, int *out, int *starts, uint64
                         }
                     }
                 }
+                // Triples with v and another free variable: the faces free against a or b
+                // (neither above nor below it), from the bit rows.
                 for (int64_t k = L->var_slot_off[v]; k < L->var_slot_off[v + 1]; ++k) {
                     const ori__slot *sl = &L->slots[k];
                     const ori__stack *S = &L->stacks[sl->stack];
                     const int *F = L->stack_faces + S->faces_at;
-                    const int *Ma = L->stack_vars + S->vars_at + (int64_t)sl->ia * S->k;
-                    const int *Mb = L->stack_vars + S->vars_at + (int64_t)sl->ib * S->k;
-                    for (int x = 0; x < S->k; ++x) {
-                        if (x == sl->ia || x == sl->ib) continue;
-                        int p = Ma[x], q = Mb[x];
-                        if (val[p] && val[q]) continue; // one free variable: dead
-                        if (s->ff_rule ? ff_tied(L, F[sl->ia], F[sl->ib], F[x], v, p, q)
-                                       : triple_tied(L, v, q, sl->ib > x, p, sl->ia > x))
-                            continue;
-                        live++;
-                        for (int w = 0; w < 2; ++w) {
-                            int u = w ? q : p;
-                            if (val[u]) {
-                                if (hashes && s->vseen[u] != bid) {
-                                    s->vseen[u] = bid;
-                                    hash_add(h, ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
-                                }
+                    int kk = S->k, w = S->words;
+                    const int *Ma = L->stack_vars + S->vars_at + (int64_t)sl->ia * kk;
+                    const int *Mb = L->stack_vars + S->vars_at + (int64_t)sl->ib * kk;
+                    const uint64_t *up = s->bits + S->bits_at, *down = up + (int64_t)kk * w;
+                    const uint64_t *ua = up + (int64_t)sl->ia * w, *da = down + (int64_t)sl->ia * w;
+                    const uint64_t *ub = up + (int64_t)sl->ib * w, *db = down + (int64_t)sl->ib * w;
+                    for (int qw = 0; qw < w; ++qw) {
+                        uint64_t valid = qw == w - 1 && (kk & 63) ? (((uint64_t)1 << (kk & 63)) - 1) : ~(uint64_t)0;
+                        uint64_t fr = (~(ua[qw] | da[qw]) | ~(ub[qw] | db[qw])) & valid;
+                        while (fr) {
+                            int x = qw * 64 + __builtin_ctzll(fr);
+                            fr &= fr - 1;
+                            if (x == sl->ia || x == sl->ib) continue;
+                            int p = Ma[x], q = Mb[x];
+                            if (s->ff_rule ? ff_tied(L, F[sl->ia], F[sl->ib], F[x], v, p, q)
+                                           : triple_tied(L, v, q, sl->ib > x, p, sl->ia > x))
                                 continue;
-                            }
-                            int cu = L->var_class[u];
-                            if (s->in_set[cu] == sid && s->seen[cu] != vid) {
-                                s->seen[cu] = vid;
-                                out[tail++] = cu;
+                            live++;
+                            for (int ww = 0; ww < 2; ++ww) {
+                                int u = ww ? q : p;
+                                if (val[u]) {
+                                    if (hashes && s->vseen[u] != bid) {
+                                        s->vseen[u] = bid;
+                                        hash_add(h, ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
+                                    }
+                                    continue;
+                                }
+                                int cu = L->var_class[u];
+                                if (s->in_set[cu] == sid && s->seen[cu] != vid) {
+                                    s->seen[cu] = vid;
+                                    out[tail++] = cu;
+                                }
                             }
                         }
                     }
@@ -876,6 +948,8 @@ static void start_solver(solver *s, const ori_layers *L)
     solver_init(s, L, true);
     memcpy(s->val, L->var_val, (size_t)L->nvar);
     memcpy(s->cval, L->class_val, (size_t)L->n_class);
+    for (int v = 0; v < L->nvar; ++v)
+        if (s->val[v]) set_bits(s, v, s->val[v]);
 }
 
 static void count_component(solver *s, ori_layers *L, int j)
