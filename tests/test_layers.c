@@ -967,3 +967,213 @@ Test(layers, stamp_strips_match_brute_force)
         ori_pattern_destroy(p);
     }
 }
+
+// --- bad input, limits, threads, cancellation ----------------------------------------------
+
+Test(layers, bad_input_names_the_element)
+{
+    // Folded, two vertices land 2.1e-8 of the diagonal apart: neither one point nor clearly two.
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/layers/ambiguous-strip.fold"), 0);
+    ori_layers *L = NULL;
+    ori_error err;
+    ori_layers_def def = ori_default_layers_def();
+    cr_assert_eq(ori_layers_create(p, &def, &L, &err), ORI_ERR_DEGENERATE);
+    cr_assert_null(L);
+    cr_assert_str_eq(err.field, "vertices_coords");
+    cr_assert_eq(err.element, 3);
+    // A looser snapping length (an imprecise drawing) makes them one point: one state.
+    def.snap_rel = 1e-6;
+    L = solve_pattern(p, &def);
+    char *s = states_of(L);
+    cr_assert_str_eq(s, "1");
+    ori_buffer_free(s);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+
+    // Not locally flat-foldable: Kawasaki fails at vertex 0 by 40 degrees.
+    p = test_load_pattern(test_repo_path("examples/patterns/non-flat-foldable-vertex.fold"), 0);
+    L = solve_pattern(p, NULL);
+    ori_layers_conflict c;
+    cr_assert(ori_layers_get_conflict(L, &c));
+    cr_assert_eq(c.constraint, ORI_LAYERS_LOCAL);
+    cr_assert_eq(c.vertex, 0);
+    cr_assert_float_eq(fabs(c.kawasaki_rad), ori_deg_to_rad(40.0), 1e-9);
+    int faces[8];
+    cr_assert_eq(ori_layers_conflict_faces(L, faces, 8), 4);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+}
+
+static bool cancel_now(double fraction, void *user)
+{
+    (void)fraction;
+    (*(int *)user)++;
+    return false;
+}
+
+Test(layers, limit_threads_and_cancellation)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/layers/pleat-unassigned.fold"), 0);
+    // Flat-Folder's limit: at most 5 states per component.
+    ori_layers_def def = ori_default_layers_def();
+    def.limit = 5;
+    ori_layers *L = solve_pattern(p, &def);
+    char *s = states_of(L);
+    cr_assert_str_eq(s, "5");
+    ori_buffer_free(s);
+    cr_assert(ori_layers_get_info(L).limited);
+    ori_error err;
+    cr_assert_eq(ori_layers_select_state(L, "0", &err), ORI_ERR_UNSUPPORTED);
+    ori_layers_destroy(L);
+    // Two threads: the same count.
+    def = ori_default_layers_def();
+    def.threads = 2;
+    L = solve_pattern(p, &def);
+    s = states_of(L);
+    cr_assert_str_eq(s, "16");
+    ori_buffer_free(s);
+    cr_assert(!ori_layers_get_info(L).limited);
+    // States out of range or not numbers.
+    cr_assert_eq(ori_layers_select_state(L, "16", &err), ORI_ERR_RANGE);
+    cr_assert_eq(ori_layers_select_state(L, "x", &err), ORI_ERR_RANGE);
+    cr_assert_eq(ori_layers_select_state(L, "15", &err), ORI_OK);
+    ori_layers_destroy(L);
+    // A progress callback that cancels.
+    int calls = 0;
+    def = ori_default_layers_def();
+    def.progress = cancel_now;
+    def.progress_user = &calls;
+    cr_assert_eq(ori_layers_create(p, &def, &L, &err), ORI_OK);
+    cr_assert_eq(ori_layers_count(L, &err), ORI_ERR_LIMIT);
+    cr_assert_geq(calls, 1);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+}
+
+Test(layers, every_state_is_distinct_and_the_cell_stacks_agree)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/layers/pleat-unassigned.fold"), 0);
+    ori_layers *L = solve_pattern(p, NULL);
+    cr_assert_eq(ori_layers_cell_count(L), 1);
+    int seen_orders[16][4];
+    for (int k = 0; k < 16; ++k) {
+        char ks[16];
+        snprintf(ks, sizeof ks, "%d", k);
+        ori_error err;
+        cr_assert_eq(ori_layers_select_state(L, ks, &err), ORI_OK);
+        int stack[4];
+        cr_assert_eq(ori_layers_cell_stack(L, 0, stack, 4), 4);
+        // The stack is the order the pair relations give: each face above all later ones.
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) cr_assert_eq(ori_layers_face_above(L, stack[i], stack[j]), 1);
+        for (int m = 0; m < k; ++m) cr_assert_neq(memcmp(seen_orders[m], stack, sizeof stack), 0, "states %d and %d", m, k);
+        memcpy(seen_orders[k], stack, sizeof stack);
+        // Stamp 0 keeps its place and its front up.
+        cr_assert(!ori_layers_face_flipped(L, 0));
+    }
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+}
+
+// --- output and the command ----------------------------------------------------------------
+
+Test(layers, cli_writes_the_state_as_a_folded_frame_and_an_svg)
+{
+    char *dir = test_tmpdir();
+    char args[1024], *out = NULL;
+    snprintf(args, sizeof args, "layers tests/data/layers/pleat-unassigned.fold --state 5 -o %s/state.fold --svg %s/state.svg",
+             dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    char path[1024];
+    snprintf(path, sizeof path, "%s/state.fold", dir);
+    // Frame 1 is the state: folded coordinates, faceOrders, resolved assignments.
+    json_error_t jerr;
+    json_t *doc = json_load_file(path, 0, &jerr);
+    cr_assert(doc, "%s", jerr.text);
+    json_t *fr = json_array_get(json_object_get(doc, "file_frames"), 0);
+    cr_assert(fr);
+    cr_assert_str_eq(json_string_value(json_array_get(json_object_get(fr, "frame_classes"), 0)), "foldedForm");
+    json_t *fo = json_object_get(fr, "faceOrders");
+    cr_assert_eq(json_array_size(fo), 6);
+    json_t *asg = json_object_get(fr, "edges_assignment");
+    for (size_t i = 0; i < json_array_size(asg); ++i) cr_assert_str_neq(json_string_value(json_array_get(asg, i)), "U");
+    // The written orders are the library's state 5.
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/layers/pleat-unassigned.fold"), 0);
+    ori_layers *L = solve_pattern(p, NULL);
+    ori_error err;
+    cr_assert_eq(ori_layers_select_state(L, "5", &err), ORI_OK);
+    int orders[18];
+    cr_assert_eq(ori_layers_face_orders(L, orders, 6), 6);
+    for (int i = 0; i < 6; ++i) {
+        json_t *t = json_array_get(fo, (size_t)i);
+        for (int j = 0; j < 3; ++j) cr_assert_eq(json_integer_value(json_array_get(t, (size_t)j)), orders[3 * i + j]);
+    }
+    // Every folded vertex lies in the unit square the stamps fold onto (exact: reflections of
+    // integer coordinates).
+    json_t *vc = json_object_get(fr, "vertices_coords");
+    for (size_t v = 0; v < json_array_size(vc); ++v) {
+        double x = json_number_value(json_array_get(json_array_get(vc, v), 0));
+        cr_assert(x == 0.0 || x == 1.0, "folded x = %g", x);
+    }
+    json_decref(doc);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+    // The written folded form (U creases now resolved as state 5 folds them; its faces' winding
+    // gives their side) has state 5 among its states.
+    p = test_load_pattern(path, 1);
+    L = solve_pattern(p, NULL);
+    char *s = states_of(L);
+    int n = atoi(s);
+    ori_buffer_free(s);
+    bool found = false;
+    for (int k = 0; k < n && !found; ++k) {
+        char ks[16];
+        snprintf(ks, sizeof ks, "%d", k);
+        cr_assert_eq(ori_layers_select_state(L, ks, &err), ORI_OK);
+        int again[18];
+        cr_assert_eq(ori_layers_face_orders(L, again, 6), 6);
+        found = memcmp(again, orders, sizeof again) == 0;
+    }
+    cr_assert(found, "state 5 is not a state of the written folded form (%d states)", n);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+    // The picture.
+    snprintf(path, sizeof path, "%s/state.svg", dir);
+    char *svg = test_read_text(path);
+    cr_assert(svg);
+    cr_assert(strstr(svg, "<svg"));
+    cr_assert(strstr(svg, "<path"));
+    cr_assert_gt(strlen(svg), 2000);
+    free(svg);
+    test_tmpdir_remove(dir);
+}
+
+Test(layers, cli_json_has_exactly_the_documented_fields)
+{
+    char *out = NULL;
+    cr_assert_eq(test_run_cli("layers tests/data/layers/pleat-unassigned.fold --json", &out), 0);
+    json_error_t jerr;
+    json_t *o = json_loads(out, 0, &jerr);
+    cr_assert(o, "%s", out);
+    const char *keys[] = {"states", "components", "faces", "variables", "constraints", "unsatisfiable"};
+    cr_assert_eq(json_object_size(o), 6);
+    for (int i = 0; i < 6; ++i) cr_assert(json_object_get(o, keys[i]), "%s", keys[i]);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "states")), "16");
+    cr_assert(json_is_null(json_object_get(o, "unsatisfiable")));
+    json_t *c = json_object_get(o, "constraints");
+    cr_assert_eq(json_integer_value(json_object_get(c, "taco_taco")), 1);
+    cr_assert_eq(json_integer_value(json_object_get(c, "transitivity")), 4);
+    json_decref(o);
+    free(out);
+    // No state: exit 1 with the reason.
+    cr_assert_eq(test_run_cli("layers examples/patterns/non-flat-foldable-vertex.fold --json", &out), 1);
+    o = json_loads(out, 0, &jerr);
+    cr_assert(o, "%s", out);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "states")), "0");
+    json_t *u = json_object_get(o, "unsatisfiable");
+    cr_assert_str_eq(json_string_value(json_object_get(u, "constraint")), "local");
+    cr_assert_eq(json_integer_value(json_object_get(u, "vertex")), 0);
+    json_decref(o);
+    free(out);
+}

@@ -176,7 +176,8 @@ ORI_API int ori_layers_cell_stack(const ori_layers *layers, int c, int *out, int
 /// Append the selected state to doc as a "foldedForm" frame inheriting from frame parent:
 /// folded vertices_coords (z = 0), edges_foldAngle ±180 on folded creases (U creases take the
 /// direction the state gives them) and 0 elsewhere, edges_assignment likewise resolved,
-/// faces_flatFoldTransform and faceOrders. pattern is the one the solver was created from.
+/// faces_vertices, faces_flatFoldTransform (crease-pattern input), faces_flatFoldOrientation and
+/// faceOrders. pattern is the one the solver was created from.
 /// Returns the new frame number, or -1 (error set) when no state is selected.
 ORI_API int ori_layers_append_frame(const ori_layers *layers, const ori_pattern *pattern, ori_fold *doc, int parent,
                                     ori_error *error);

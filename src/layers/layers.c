@@ -561,6 +561,19 @@ int ori_layers_append_frame(const ori_layers *L, const ori_pattern *p, ori_fold 
     put(&t, "]");
     ori__free(letters);
     ori_status st = ori_fold_set_custom(doc, frame, "edges_assignment", t.s, error);
+    // The faces too: a folded form needs them (they cannot be traced from folded coordinates),
+    // and the parent may have had none (traced on load).
+    t.n = 0;
+    put(&t, "[");
+    int fv[1024];
+    for (int f = 0; f < L->nf; ++f) {
+        int n = ori_pattern_face_vertices(p, f, fv, 1024);
+        put(&t, "%s[", f ? "," : "");
+        for (int k = 0; k < n && k < 1024; ++k) put(&t, "%s%d", k ? "," : "", fv[k]);
+        put(&t, "]");
+    }
+    put(&t, "]");
+    if (st == ORI_OK) st = ori_fold_set_custom(doc, frame, "faces_vertices", t.s, error);
     t.n = 0;
     put(&t, "[");
     for (int v = 0; v < L->nvar; ++v) {
