@@ -32,21 +32,22 @@ typedef struct timing {
     double setup_cpu, solve_cpu, setup_wall, solve_wall;
     int64_t peak;
     char states[96];
-    char comps[160];
+    char comps[4096];
     ori_layers_info info;
     bool ok;
 } timing;
 
 // Set-up and solve, repeated (best of) until about 0.2 s of CPU time has run.
-static timing measure(const ori_pattern *p, int threads)
+static timing measure_limited(const ori_pattern *p, int threads, uint64_t limit, double budget)
 {
     timing t;
     memset(&t, 0, sizeof t);
     t.setup_cpu = t.solve_cpu = t.setup_wall = t.solve_wall = 1e300;
     double spent = 0.0;
-    for (int rep = 0; rep < 1000 && (rep == 0 || spent < 0.2); ++rep) {
+    for (int rep = 0; rep < 1000 && (rep == 0 || spent < budget); ++rep) {
         ori_layers_def def = ori_default_layers_def();
         def.threads = threads;
+        def.limit = limit;
         ori_layers *L = NULL;
         ori_error err;
         int64_t base = ori_alloc_live_bytes();
@@ -77,7 +78,7 @@ static timing measure(const ori_pattern *p, int threads)
             size_t n = 0;
             t.comps[0] = '\0';
             int nc = ori_layers_component_count(L);
-            for (int c = 0; c < nc && n + 24 < sizeof t.comps && t.info.satisfiable; ++c) {
+            for (int c = 0; c < nc && n + 40 < sizeof t.comps && t.info.satisfiable; ++c) {
                 char *x = ori_layers_component_states(L, c);
                 n += (size_t)snprintf(t.comps + n, sizeof t.comps - n, "|%.20s", x);
                 ori_buffer_free(x);
@@ -90,14 +91,23 @@ static timing measure(const ori_pattern *p, int threads)
     return t;
 }
 
+static timing measure(const ori_pattern *p, int threads)
+{
+    return measure_limited(p, threads, ORI_LAYERS_NO_LIMIT, 0.2);
+}
+
 // --- Flat-Folder's published rows -------------------------------------------------------------
 
 typedef struct ff_row {
     bool found;
+    uint64_t limit; // Flat-Folder's per-component limit for this row, or ORI_LAYERS_NO_LIMIT
+    char title[64];
     double setup, solve;
     char states[96];
-    char comps[256];
+    char comps[4096];
 } ff_row;
+
+static ff_row ff_row_of(const char *csv, const char *number);
 
 static ff_row ff_lookup(const char *dir, const char *file)
 {
@@ -109,9 +119,16 @@ static ff_row ff_lookup(const char *dir, const char *file)
     memcpy(number, file + strlen(set) + 1, 3);
     char path[4200];
     snprintf(path, sizeof path, "%s/%s_data.csv", dir, set);
+    return ff_row_of(path, number);
+}
+
+static ff_row ff_row_of(const char *path, const char *number)
+{
+    ff_row r;
+    memset(&r, 0, sizeof r);
     FILE *f = fopen(path, "r");
     if (!f) return r;
-    char line[8192];
+    char line[16384];
     while (fgets(line, sizeof line, f)) {
         char *field[64];
         int n = 0;
@@ -125,8 +142,10 @@ static ff_row ff_lookup(const char *dir, const char *file)
         if (n < 19 || strcmp(field[0], number) != 0) continue;
         int o = n - 19;
         r.found = true;
+        snprintf(r.title, sizeof r.title, "%.60s", field[2]);
+        r.limit = strcmp(field[14 + o], "no limit") == 0 ? ORI_LAYERS_NO_LIMIT : (uint64_t)atoll(field[14 + o]);
         snprintf(r.states, sizeof r.states, "%.90s", field[15 + o]);
-        snprintf(r.comps, sizeof r.comps, "%.250s", field[16 + o]);
+        snprintf(r.comps, sizeof r.comps, "%.4000s", field[16 + o]);
         r.setup = atof(field[17 + o]);
         r.solve = atof(field[18 + o]);
         break;
@@ -364,9 +383,149 @@ static int generated(void)
     return rc;
 }
 
+
+// --- Flat-Folder's whole example set (optional) ----------------------------------------------
+
+typedef struct slow_case {
+    double ff, ours;
+    char line[240];
+} slow_case;
+
+// With ORIKIN_FLAT_FOLDER_EXAMPLES pointing at a clone's examples/ folder (grids/, instagram/ and
+// the two CSVs), every published example: the same limit as the published row, identical states
+// and components required; the slowest published ones are listed, and the two slowest are also
+// counted exactly (no limit).
+static int flat_folder_corpus(void)
+{
+    const char *dir = getenv("ORIKIN_FLAT_FOLDER_EXAMPLES");
+    if (!dir) {
+        printf("   (set ORIKIN_FLAT_FOLDER_EXAMPLES to a Flat-Folder examples/ folder to run all 741 published "
+               "examples)\n");
+        return 0;
+    }
+    static const char *sets[] = {"grids", "instagram"};
+    int matched = 0, local = 0, refused = 0, mismatched = 0, total = 0;
+    double worst = 1e300, sum_ff = 0, sum_ours = 0;
+    char worst_name[96] = "";
+    slow_case slow[8];
+    int nslow = 0;
+    for (int si = 0; si < 2; ++si) {
+        char sub[4200], csv[4200];
+        snprintf(sub, sizeof sub, "%s/%s", dir, sets[si]);
+        snprintf(csv, sizeof csv, "%s/%s_data.csv", dir, sets[si]);
+        DIR *d = opendir(sub);
+        if (!d) continue;
+        char *files[1024];
+        int nf = 0;
+        struct dirent *e;
+        while ((e = readdir(d)) && nf < 1024) {
+            size_t l = strlen(e->d_name);
+            if (l > 8 && strcmp(e->d_name + l - 5, ".fold") == 0) files[nf++] = strdup(e->d_name);
+        }
+        closedir(d);
+        qsort(files, (size_t)nf, sizeof(char *), cmp_str);
+        for (int i = 0; i < nf; ++i) {
+            char number[4] = {0}, path[8400];
+            memcpy(number, files[i], 3);
+            snprintf(path, sizeof path, "%s/%s", sub, files[i]);
+            ff_row r = ff_row_of(csv, number);
+            free(files[i]);
+            if (!r.found) continue;
+            total++;
+            ori_fold *doc = NULL;
+            ori_pattern *p = NULL;
+            ori_error err;
+            if (ori_fold_load_file(path, &doc, &err) != ORI_OK || ori_fold_get_pattern(doc, 0, NULL, &p, &err) != ORI_OK) {
+                refused++;
+                ori_fold_destroy(doc);
+                continue;
+            }
+            timing t = measure_limited(p, 1, r.limit, 0.05);
+            ori_pattern_destroy(p);
+            ori_fold_destroy(doc);
+            if (!t.ok) {
+                refused++;
+                continue;
+            }
+            if (!t.info.satisfiable && t.info.variables == 0 && strcmp(r.states, "0") != 0) {
+                local++; // not locally flat-foldable at ORI_TOL_KAWASAKI_RAD (a rounded drawing)
+                continue;
+            }
+            if (strcmp(t.states, r.states) != 0 || strcmp(t.comps, r.comps) != 0) {
+                mismatched++;
+                printf("   MISMATCH %s %s: %s %s, published %s %s\n", sets[si], number, t.states, t.comps, r.states, r.comps);
+                continue;
+            }
+            matched++;
+            double ours = t.setup_cpu + t.solve_cpu, ff = r.setup + r.solve;
+            if (ff < 10.0 * ours)
+                printf("   under 10x: %s %s %.40s: %.4f + %.4f s against %.4f + %.4f s published (%s)\n", sets[si], number,
+                       r.title, t.setup_cpu, t.solve_cpu, r.setup, r.solve, t.states);
+            sum_ff += ff;
+            sum_ours += ours;
+            if (ff / fmax(ours, 1e-9) < worst) {
+                worst = ff / fmax(ours, 1e-9);
+                snprintf(worst_name, sizeof worst_name, "%s %s %.60s", sets[si], number, r.title);
+            }
+            // Keep the eight slowest published cases, slowest first.
+            if (nslow == 8 && slow[7].ff >= ff) continue;
+            int at = nslow < 8 ? nslow++ : 7;
+            slow[at].ff = ff;
+            slow[at].ours = ours;
+            snprintf(slow[at].line, sizeof slow[at].line,
+                     "%-28.28s %8d vars | FF %8.1f + %8.1f s | orikin %6.2f + %6.2f s (%5.0fx) | %s%s", r.title,
+                     t.info.variables, r.setup, r.solve, t.setup_cpu, t.solve_cpu, ff / fmax(ours, 1e-9),
+                     t.info.limited ? "limited " : "", t.states);
+            for (int k = at; k > 0 && slow[k].ff > slow[k - 1].ff; --k) {
+                slow_case tmp = slow[k];
+                slow[k] = slow[k - 1];
+                slow[k - 1] = tmp;
+            }
+        }
+    }
+    printf("   Flat-Folder's published examples: %d; identical states and components %d; refused as not locally\n"
+           "   flat-foldable at 1e-8 rad (rounded drawings; --tolerance) %d; unreadable %d; mismatched %d\n",
+           total, matched, local, refused, mismatched);
+    printf("   total CPU %.1f s against %.1f s published; slowest speed-up %.0fx (%s)\n", sum_ours, sum_ff, worst,
+           worst_name);
+    printf("   the slowest published cases (with the published limit of 10000 states per component):\n");
+    for (int k = 0; k < nslow; ++k) printf("     %s\n", slow[k].line);
+    fflush(stdout);
+    // The two slowest, counted exactly.
+    static const char *exact[] = {"149", "300"};
+    for (int k = 0; k < 2; ++k) {
+        char sub[4200], csv[4200];
+        snprintf(sub, sizeof sub, "%s/instagram", dir);
+        snprintf(csv, sizeof csv, "%s/instagram_data.csv", dir);
+        DIR *d = opendir(sub);
+        if (!d) break;
+        struct dirent *e;
+        char path[8400] = "";
+        while ((e = readdir(d)))
+            if (strncmp(e->d_name, exact[k], 3) == 0) snprintf(path, sizeof path, "%s/%s", sub, e->d_name);
+        closedir(d);
+        ff_row r = ff_row_of(csv, exact[k]);
+        ori_fold *doc = NULL;
+        ori_pattern *p = NULL;
+        ori_error err;
+        if (!path[0] || ori_fold_load_file(path, &doc, &err) != ORI_OK || ori_fold_get_pattern(doc, 0, NULL, &p, &err) != ORI_OK) {
+            ori_fold_destroy(doc);
+            continue;
+        }
+        timing t = measure_limited(p, 1, ORI_LAYERS_NO_LIMIT, 0.0);
+        printf("   %s exactly: %s states %s in %.1f + %.1f s CPU, %.0f MB (published: at least %s after %.0f + %.0f s)\n",
+               r.title, t.states, t.comps, t.setup_cpu, t.solve_cpu, t.peak / 1e6, r.states, r.setup, r.solve);
+        fflush(stdout);
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+    }
+    return mismatched ? 1 : 0;
+}
+
 static int run(void)
 {
     int rc = flat_folder_examples();
+    rc |= flat_folder_corpus();
     rc |= generated();
     return rc;
 }

@@ -57,6 +57,12 @@ run 0 mv-count 100 70 50 40 30 70 --list
 run 0 check examples/patterns/degree4-vertex.fold
 run 1 check examples/patterns/non-flat-foldable-vertex.fold
 
+# --- layers (global flat-foldability) ---------------------------------------------------------
+step "Global flat-foldability: every flat-folded state (layer order) of a Yoshimura pattern"
+run 0 generate yoshimura --rows 4 --cols 4 -o "$OUT/yoshimura.fold"
+run 0 layers "$OUT/yoshimura.fold" --svg "$OUT/yoshimura-layers.svg"
+run 1 layers examples/patterns/non-flat-foldable-vertex.fold
+
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1

@@ -62,6 +62,7 @@ void ori_layers_destroy(ori_layers *L)
     ori__free(L->var_class);
     ori__free(L->var_par);
     ori__free(L->class_weight);
+    ori__free(L->class_tied);
     ori__free(L->cc_node);
     ori__csr_free(&L->class_vars);
     ori__free(L->class_val);

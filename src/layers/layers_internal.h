@@ -160,6 +160,8 @@ struct ori_layers {
     int *var_class;            // class of each variable
     int8_t *var_par;           // x[var] = var_par · x[class]
     int64_t *class_weight;     // constraints each class takes part in (branching heuristic)
+    uint8_t *class_tied;       // a member variable sits in a stack holding two variables of one
+                               // class (triples there may be implied by the equivalences)
     ori__csr class_vars;
     int *cc_node;              // Flat-Folder's taco-tortilla graphs: node (t, x) is 2·var(t, x) + (t is
                                // the pair's larger face); cc_node[node] is its component

@@ -154,6 +154,15 @@ typedef struct solver {
     int *vseen; // per variable: boundary variable already in the current component's key
     int vseen_id;
     int *score; // per class: live constraint incidences at its last split (branching)
+    // scratch of the union-find split
+    int *uf;          // per class
+    int *face_stamp;  // per stack face (ori__stack.faces_at + i)
+    int *face_rep;    // the class first met at that face in this split
+    int face_id;
+    int *reg;         // stack face indices registered in this split (faces_at + i)
+    int nreg, regcap;
+    int *pend;        // taco boundaries: class, variable
+    int npend, pendcap;
     // cache
     cache_entry *cache;
     uint64_t cmask;
@@ -181,6 +190,10 @@ static void solver_init(solver *s, const ori_layers *L, bool with_cache)
     s->seen = ori__calloc(nc, sizeof(int));
     s->vseen = ori__calloc(nv, sizeof(int));
     s->score = ori__calloc(nc, sizeof(int));
+    s->uf = ori__alloc(sizeof(int) * nc);
+    int64_t nsf = L->n_stack ? L->stacks[L->n_stack - 1].faces_at + L->stacks[L->n_stack - 1].k : 0;
+    s->face_stamp = ori__calloc((size_t)(nsf ? nsf : 1), sizeof(int));
+    s->face_rep = ori__alloc(sizeof(int) * (size_t)(nsf ? nsf : 1));
     s->limit = L->limit;
     if (with_cache) {
         uint64_t cap = 64;
@@ -201,6 +214,11 @@ static void solver_free(solver *s)
     ori__free(s->seen);
     ori__free(s->vseen);
     ori__free(s->score);
+    ori__free(s->uf);
+    ori__free(s->face_stamp);
+    ori__free(s->face_rep);
+    ori__free(s->reg);
+    ori__free(s->pend);
     ori__free(s->rkind);
     ori__free(s->rdata);
     if (s->cache) {
@@ -386,10 +404,12 @@ static bool propagate(solver *s)
 
 // --- splitting into components ----------------------------------------------------------------
 
-static void hash_add(uint64_t h[2], uint64_t x)
+// Two independent order-free hashes of a multiset of 64-bit items (sums of mixed items).
+static inline void hash_add(uint64_t h[2], uint64_t x)
 {
-    h[0] += ori__mix64(x ^ 0x243F6A8885A308D3ULL);
-    h[1] += ori__mix64(x * 0x9E3779B97F4A7C15ULL + 0x13198A2E03707344ULL);
+    uint64_t y = ori__mix64(x ^ 0x243F6A8885A308D3ULL);
+    h[0] += y;
+    h[1] += (y ^ (y >> 31)) * 0xBF58476D1CE4E5B9ULL + x;
 }
 
 // Sign of literal l relative to its class: the literal is true when x[class] equals it.
@@ -539,6 +559,150 @@ static int split(solver *s, const int *set, int n, int *out, int *starts, uint64
     return ncomp;
 }
 
+
+static int uf_root(int *uf, int x)
+{
+    while (uf[x] != x) x = uf[x] = uf[uf[x]];
+    return x;
+}
+
+static int cmp_pair(const void *a, const void *b)
+{
+    const int *x = a, *y = b;
+    if (x[0] != y[0]) return (x[0] > y[0]) - (x[0] < y[0]);
+    return (x[1] > y[1]) - (x[1] < y[1]);
+}
+
+static void push_pair(int **arr, int *n, int *cap, int a, int b)
+{
+    if (*n + 2 > *cap) {
+        *cap = *cap ? 2 * *cap : 256;
+        *arr = ori__realloc(*arr, sizeof(int) * (size_t)*cap);
+    }
+    (*arr)[(*n)++] = a;
+    (*arr)[(*n)++] = b;
+}
+
+// The same split when no class of the set touches a stack with tied variables: then, inside a
+// stack, two free variables sharing a face are joined by their (live) triple, so union-find on
+// the faces of every stack holding each free variable finds the components in time linear in
+// the stack slots, instead of scanning every third face. The key's boundary is a superset, "the
+// fixed variables between faces of the component within one stack" (plus live tacos' fixed
+// literals): it holds every fixed variable a live triple of the component touches, and it is a
+// function of the set and the values alone, so equal keys still mean equal counts.
+static int split_fast(solver *s, const int *set, int n, int *out, int *starts, uint64_t (*hashes)[2])
+{
+    const ori_layers *L = s->L;
+    const int8_t *val = s->val;
+    if (s->set_id > INT32_MAX - 2 || s->face_id > INT32_MAX - 2) {
+        memset(s->in_set, 0, sizeof(int) * (size_t)(L->n_class ? L->n_class : 1));
+        int64_t nsf = L->n_stack ? L->stacks[L->n_stack - 1].faces_at + L->stacks[L->n_stack - 1].k : 0;
+        memset(s->face_stamp, 0, sizeof(int) * (size_t)(nsf ? nsf : 1));
+        s->set_id = s->face_id = 0;
+    }
+    int sid = ++s->set_id, fid = ++s->face_id;
+    for (int i = 0; i < n; ++i) {
+        s->in_set[set[i]] = sid;
+        s->uf[set[i]] = set[i];
+        s->score[set[i]] = 0;
+    }
+    s->nreg = 0;
+    s->npend = 0;
+    for (int i = 0; i < n; ++i) {
+        int c = set[i];
+        for (int64_t m = L->class_vars.off[c]; m < L->class_vars.off[c + 1]; ++m) {
+            int v = L->class_vars.items[m];
+            for (int64_t k = L->var_tacos.off[v]; k < L->var_tacos.off[v + 1]; ++k) {
+                const ori__taco *t = &L->taco[L->var_tacos.items[k]];
+                if (L->table6[taco_code(val, t)] & ORI__TABLE_DEAD) continue;
+                s->score[c] += 3;
+                for (int j = 0; j < 6; ++j) {
+                    int u = ORI__LIT_VAR(t->lit[j]);
+                    if (val[u]) {
+                        if (hashes) push_pair(&s->pend, &s->npend, &s->pendcap, c, u);
+                        continue;
+                    }
+                    int cu = L->var_class[u];
+                    if (s->in_set[cu] != sid) continue;
+                    int ra = uf_root(s->uf, c), rb = uf_root(s->uf, cu);
+                    if (ra != rb) s->uf[ra] = rb;
+                }
+            }
+            for (int64_t k = L->var_fslot_off[v]; k < L->var_fslot_off[v + 1]; ++k) {
+                const ori__fslot *fs = &L->fslots[k];
+                const ori__stack *S = &L->stacks[fs->stack];
+                for (int e = 0; e < 2; ++e) {
+                    int f = e ? fs->ib : fs->ia;
+                    int64_t idx = S->faces_at + f;
+                    if (s->face_stamp[idx] == fid) {
+                        s->score[c]++;
+                        int ra = uf_root(s->uf, c), rb = uf_root(s->uf, s->face_rep[idx]);
+                        if (ra != rb) s->uf[ra] = rb;
+                    } else {
+                        s->face_stamp[idx] = fid;
+                        s->face_rep[idx] = c;
+                        push_pair(&s->reg, &s->nreg, &s->regcap, fs->stack, f);
+                    }
+                }
+            }
+        }
+    }
+    // Components in the order of their first class. While numbering, in_set of a root holds
+    // −(component + 1); it is a plain set stamp again on return.
+    int ncomp = 0;
+    int *count = ori__calloc((size_t)n + 1, sizeof(int));
+    for (int i = 0; i < n; ++i) {
+        int r = uf_root(s->uf, set[i]);
+        if (s->in_set[r] == sid) s->in_set[r] = -(++ncomp);
+        count[-s->in_set[r]]++;
+    }
+    starts[0] = 0;
+    for (int j = 0; j < ncomp; ++j) starts[j + 1] = starts[j] + count[j + 1];
+    memset(count, 0, sizeof(int) * (size_t)(ncomp + 1));
+    uint64_t(*h)[2] = hashes;
+    if (h)
+        for (int j = 0; j < ncomp; ++j) h[j][0] = h[j][1] = 0;
+    for (int i = 0; i < n; ++i) {
+        int j = -s->in_set[uf_root(s->uf, set[i])] - 1;
+        out[starts[j] + count[j]++] = set[i];
+        if (h) hash_add(h[j], (uint64_t)set[i]);
+    }
+    if (h) {
+        for (int i = 0; i < s->npend; i += 2) {
+            int j = -s->in_set[uf_root(s->uf, s->pend[i])] - 1;
+            int u = s->pend[i + 1];
+            hash_add(h[j], ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
+        }
+        // Registered faces grouped by stack, then the fixed variables between faces of one
+        // component.
+        int nr = s->nreg / 2;
+        qsort(s->reg, (size_t)nr, 2 * sizeof(int), cmp_pair);
+        // The component of each registration, once (reusing the first half of pend's room).
+        int *comp = ori__alloc(sizeof(int) * (size_t)(nr ? nr : 1));
+        for (int a = 0; a < nr; ++a)
+            comp[a] = -s->in_set[uf_root(s->uf, s->face_rep[L->stacks[s->reg[2 * a]].faces_at + s->reg[2 * a + 1]])] - 1;
+        for (int a = 0; a < nr;) {
+            int st = s->reg[2 * a], e = a;
+            while (e < nr && s->reg[2 * e] == st) e++;
+            const ori__stack *S = &L->stacks[st];
+            for (int x = a; x < e; ++x) {
+                const int *Mrow = L->stack_vars + S->vars_at + (int64_t)s->reg[2 * x + 1] * S->k;
+                for (int y = x + 1; y < e; ++y) {
+                    if (comp[y] != comp[x]) continue;
+                    int u = Mrow[s->reg[2 * y + 1]];
+                    if (val[u]) hash_add(h[comp[x]], ((uint64_t)1 << 62) | ((uint64_t)u << 1) | (val[u] > 0));
+                }
+            }
+            a = e;
+        }
+        ori__free(comp);
+        for (int j = 0; j < ncomp; ++j) h[j][0] ^= (uint64_t)(starts[j + 1] - starts[j]) << 40;
+    }
+    for (int i = 0; i < n; ++i) s->in_set[set[i]] = sid;
+    ori__free(count);
+    return ncomp;
+}
+
 // --- counting -------------------------------------------------------------------------------
 
 // Branch on the class in the most live constraints (counted when the set was split off: those
@@ -567,11 +731,12 @@ static void report(solver *s)
     if (!L->progress(s->done_fraction, L->progress_user)) s->cancel = true;
 }
 
-static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exact);
+static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exact, int level, int skip);
 
 
 // Count component (set, n) with key h, through the cache.
-static void count_cached(solver *s, const int *set, int n, const uint64_t h[2], ori__nat *res, bool *exact)
+static void count_cached(solver *s, const int *set, int n, const uint64_t h[2], ori__nat *res, bool *exact, int level,
+                         int skip)
 {
     cache_entry *e = NULL;
     if (s->cache && n > 1) {
@@ -582,7 +747,7 @@ static void count_cached(solver *s, const int *set, int n, const uint64_t h[2], 
             return;
         }
     }
-    count_set(s, set, n, res, exact);
+    count_set(s, set, n, res, exact, level, skip);
     if (e && *exact && !s->cancel) {
         e->h1 = h[0];
         e->h2 = h[1];
@@ -607,7 +772,11 @@ static void make_parts(solver *s, const int *set, int n, parts *P)
     P->out = ori__alloc(sizeof(int) * (size_t)(P->n ? P->n : 1));
     P->starts = ori__alloc(sizeof(int) * (size_t)(P->n + 1));
     P->h = ori__alloc(sizeof(*P->h) * (size_t)(P->n ? P->n : 1));
-    P->ncomp = P->n ? split(s, P->rest, P->n, P->out, P->starts, P->h) : 0;
+    bool tied = false;
+    for (int i = 0; i < P->n && !tied; ++i) tied = s->L->class_tied[P->rest[i]];
+    P->ncomp = !P->n ? 0
+               : tied ? split(s, P->rest, P->n, P->out, P->starts, P->h)
+                      : split_fast(s, P->rest, P->n, P->out, P->starts, P->h);
 }
 
 static void free_parts(parts *P)
@@ -618,7 +787,12 @@ static void free_parts(parts *P)
     ori__free(P->h);
 }
 
-static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exact)
+// Backoff of the splitting: after a split that finds one component (a dense problem where the
+// decisions rarely disconnect anything), the next 2^level − 1 decisions count the remaining set
+// as one, without splitting or caching; a split that does disconnect resets the backoff.
+#define ORI__SPLIT_BACKOFF_MAX 3
+
+static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exact, int level, int skip)
 {
     ori__nat_set_u64(res, 0);
     *exact = true;
@@ -638,22 +812,33 @@ static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exa
             undo(s, mark);
             continue;
         }
-        parts P;
-        make_parts(s, set, n, &P);
-        ori__nat_set_u64(&prod, 1);
         bool pex = true;
-        for (int j = 0; j < P.ncomp && !s->cancel; ++j) {
-            bool sex;
-            count_cached(s, P.out + P.starts[j], P.starts[j + 1] - P.starts[j], P.h[j], &sub, &sex);
-            if (ori__nat_is_zero(&sub)) {
-                ori__nat_set_u64(&prod, 0);
-                pex = sex;
-                break;
+        if (skip > 0) {
+            int *rest = ori__alloc(sizeof(int) * (size_t)n);
+            int m = 0;
+            for (int i = 0; i < n; ++i)
+                if (!s->cval[set[i]]) rest[m++] = set[i];
+            if (m == 0) ori__nat_set_u64(&prod, 1);
+            else count_set(s, rest, m, &prod, &pex, level, skip - 1);
+            ori__free(rest);
+        } else {
+            parts P;
+            make_parts(s, set, n, &P);
+            int lv = P.ncomp == 1 && P.n > 1 ? (level < ORI__SPLIT_BACKOFF_MAX ? level + 1 : level) : 0;
+            ori__nat_set_u64(&prod, 1);
+            for (int j = 0; j < P.ncomp && !s->cancel; ++j) {
+                bool sex;
+                count_cached(s, P.out + P.starts[j], P.starts[j + 1] - P.starts[j], P.h[j], &sub, &sex, lv, (1 << lv) - 1);
+                if (ori__nat_is_zero(&sub)) {
+                    ori__nat_set_u64(&prod, 0);
+                    pex = sex;
+                    break;
+                }
+                ori__nat_mul(&prod, &sub);
+                pex = pex && sex;
             }
-            ori__nat_mul(&prod, &sub);
-            pex = pex && sex;
+            free_parts(&P);
         }
-        free_parts(&P);
         undo(s, mark);
         ori__nat_add(res, &prod);
         *exact = *exact && pex;
@@ -830,6 +1015,28 @@ ori_status ori__layers_presolve(ori_layers *L, ori_error *error)
         for (int64_t k = L->var_slot_off[v]; k < L->var_slot_off[v + 1]; ++k) w += L->stacks[L->slots[k].stack].k - 2;
         L->class_weight[L->var_class[v]] += w;
     }
+    // Stacks holding two variables of one class: their triples may be tied (split_fast avoids
+    // the classes that touch them).
+    L->class_tied = ori__calloc((size_t)(nc ? nc : 1), 1);
+    {
+        int *stamp = ori__alloc(sizeof(int) * (size_t)(nc ? nc : 1));
+        for (int c = 0; c < nc; ++c) stamp[c] = -1;
+        for (int st = 0; st < L->n_stack; ++st) {
+            const ori__stack *S = &L->stacks[st];
+            const int *M = L->stack_vars + S->vars_at;
+            bool tied = false;
+            for (int a = 0; a < S->k && !tied; ++a)
+                for (int b = a + 1; b < S->k && !tied; ++b) {
+                    int c = L->var_class[M[a * S->k + b]];
+                    if (stamp[c] == st) tied = true;
+                    stamp[c] = st;
+                }
+            if (!tied) continue;
+            for (int a = 0; a < S->k; ++a)
+                for (int b = a + 1; b < S->k; ++b) L->class_tied[L->var_class[M[a * S->k + b]]] = 1;
+        }
+        ori__free(stamp);
+    }
     L->class_val = ori__calloc((size_t)(nc ? nc : 1), 1);
     L->var_val = ori__calloc((size_t)(nvar ? nvar : 1), 1);
     if (L->unsat) return ORI_OK;
@@ -957,7 +1164,7 @@ static void count_component(solver *s, ori_layers *L, int j)
     const int *set = L->comp_classes.items + L->comp_classes.off[j];
     int n = (int)(L->comp_classes.off[j + 1] - L->comp_classes.off[j]);
     bool exact;
-    count_set(s, set, n, &L->comp_count[j], &exact);
+    count_set(s, set, n, &L->comp_count[j], &exact, 0, 0);
     if (!exact && !s->cancel) s->limited = true;
 }
 
@@ -1085,7 +1292,7 @@ static bool unrank_set(solver *s, const int *set, int n, ori__nat *k)
         for (int j = 0; j < P.ncomp; ++j) {
             bool ex;
             ori__nat_init(&counts[j]);
-            count_cached(s, P.out + P.starts[j], P.starts[j + 1] - P.starts[j], P.h[j], &counts[j], &ex);
+            count_cached(s, P.out + P.starts[j], P.starts[j + 1] - P.starts[j], P.h[j], &counts[j], &ex, 0, 0);
             ori__nat_mul(&prod, &counts[j]);
         }
         if (!ori__nat_is_zero(&prod) && ori__nat_cmp(k, &prod) < 0) {
