@@ -109,7 +109,7 @@ static ori_status build_variables(ori_layers *L)
     }
 #undef ADD_PAIR
     ori__imap_free(&pairs);
-    qsort(keys, (size_t)nkeys, sizeof(uint64_t), cmp_u64);
+    if (nkeys > 1) qsort(keys, (size_t)nkeys, sizeof(uint64_t), cmp_u64);
     L->nvar = nkeys;
     L->var_faces = ori__alloc(sizeof(*L->var_faces) * (size_t)(nkeys ? nkeys : 1));
     int64_t *off = ori__calloc((size_t)L->nf + 1, sizeof(int64_t));
@@ -383,7 +383,7 @@ static ori_status build_stacks(ori_layers *L, ori_error *error)
     pthread_mutex_lock(&g_sort_lock);
     g_sort_layers = L;
     g_sort_hash = hash;
-    qsort(cand, (size_t)ncand, sizeof(int), cmp_cells);
+    if (ncand > 1) qsort(cand, (size_t)ncand, sizeof(int), cmp_cells);
     pthread_mutex_unlock(&g_sort_lock);
     int nstack = 0;
     int64_t nfaces = 0, nvars = 0;

@@ -95,15 +95,6 @@ ori_status ori_layers_svg(const ori_layers *L, const ori_pattern *p, char **out,
     cairo_t *cr = cairo_create(surf);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, 14.0);
-    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    cairo_move_to(cr, margin, margin + 4);
-    cairo_show_text(cr, "crease pattern");
-    char label[160];
-    snprintf(label, sizeof label, "flat-folded state %.60s (seen from +z)", L->state_k ? L->state_k : "0");
-    cairo_move_to(cr, 2 * margin + side, margin + 4);
-    cairo_show_text(cr, label);
     cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
 
@@ -194,10 +185,30 @@ ori_status ori_layers_svg(const ori_layers *L, const ori_pattern *p, char **out,
         ori__free(s.data);
         return ori__fail(error, ORI_ERR_INTERNAL, "drawing failed: %s", cairo_status_to_string(cs));
     }
+    // The two captions as SVG text elements, inserted before the closing </svg> (on top of
+    // the drawing): Cairo's own text goes through fontconfig, whose caches outlive the call.
+    char captions[400];
+    int cn = snprintf(captions, sizeof captions,
+                      "\n<text x=\"%g\" y=\"%g\" font-family=\"sans-serif\" font-size=\"14\">crease pattern</text>"
+                      "\n<text x=\"%g\" y=\"%g\" font-family=\"sans-serif\" font-size=\"14\">flat-folded state %.60s "
+                      "(seen from +z)</text>\n",
+                      margin, margin + 4, 2 * margin + side, margin + 4, L->state_k ? L->state_k : "0");
     unsigned char nul = 0;
     write_sink(&s, &nul, 0);
     s.data[s.n] = '\0';
-    *out = (char *)s.data;
-    *size = s.n;
+    char *close = NULL;
+    for (char *q = strstr((char *)s.data, "</svg>"); q; q = strstr(q + 1, "</svg>")) close = q;
+    if (!close) {
+        ori__free(s.data);
+        return ori__fail(error, ORI_ERR_INTERNAL, "drawing failed: no </svg>");
+    }
+    size_t at = (size_t)(close - (char *)s.data);
+    char *text = ori__alloc(s.n + (size_t)cn + 1);
+    memcpy(text, s.data, at);
+    memcpy(text + at, captions, (size_t)cn);
+    memcpy(text + at + cn, s.data + at, s.n - at + 1);
+    ori__free(s.data);
+    *out = text;
+    *size = s.n + (size_t)cn;
     return ORI_OK;
 }

@@ -382,7 +382,7 @@ ori_status ori__layers_overlap(ori_layers *L, ori_error *error)
     }
 
     // 4. Segments: the pieces of the base segments between consecutive points.
-    qsort(w.inc, (size_t)w.ninc, sizeof *w.inc, cmp_inc);
+    if (w.ninc > 1) qsort(w.inc, (size_t)w.ninc, sizeof *w.inc, cmp_inc);
     int nseg = 0, segcap = w.nb + w.ninc + 1;
     int (*sp)[2] = ori__alloc(sizeof(*sp) * (size_t)segcap);
     int64_t *base_off = ori__alloc(sizeof(int64_t) * (size_t)(w.nb + 1));
@@ -641,7 +641,7 @@ ori_status ori__layers_overlap(ori_layers *L, ori_error *error)
                 ori__free(queue);
                 goto done;
             }
-            qsort(fitems + foff[f], (size_t)(nfi - foff[f]), sizeof(int), cmp_int);
+            if (nfi - foff[f] > 1) qsort(fitems + foff[f], (size_t)(nfi - foff[f]), sizeof(int), cmp_int);
             foff[f + 1] = nfi;
         }
         ori__free(stamp);

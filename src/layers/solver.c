@@ -676,7 +676,7 @@ static int split_fast(solver *s, const int *set, int n, int *out, int *starts, u
         // Registered faces grouped by stack, then the fixed variables between faces of one
         // component.
         int nr = s->nreg / 2;
-        qsort(s->reg, (size_t)nr, 2 * sizeof(int), cmp_pair);
+        if (nr > 1) qsort(s->reg, (size_t)nr, 2 * sizeof(int), cmp_pair);
         // The component of each registration, once (reusing the first half of pend's room).
         int *comp = ori__alloc(sizeof(int) * (size_t)(nr ? nr : 1));
         for (int a = 0; a < nr; ++a)
@@ -1113,7 +1113,7 @@ ori_status ori__layers_presolve(ori_layers *L, ori_error *error)
             if (v0 < cs[j].first) cs[j].first = v0;
         }
     }
-    qsort(cs, (size_t)ncomp, sizeof(comp_sort), cmp_comp);
+    if (ncomp > 1) qsort(cs, (size_t)ncomp, sizeof(comp_sort), cmp_comp);
     L->n_comp = ncomp + 1;
     L->comp_vars = ori__alloc(sizeof(int) * (size_t)(ncomp + 1));
     L->comp_classes.rows = ncomp + 1;
