@@ -19,6 +19,7 @@ for t in "$BUILD"/fuzz/fuzz_*; do
         composite) seeds="examples/composites/*.json tests/data/*composite*.json" ;;
         sequence) seeds="examples/*.seq.json" ;;
         arrangement) seeds="" ;;
+        layers) seeds="tests/data/layers/*.fold examples/patterns/*.fold" ;;
         *) seeds="tests/data/formats/*.$name" ;;
     esac
     for f in fuzz/seeds/"$name"/* $seeds; do
