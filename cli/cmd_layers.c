@@ -335,7 +335,7 @@ const cli_command cli_cmd_layers = {
     "layers",
     "global flat-foldability: count every flat-folded state (layer order), name the conflict",
     "usage: orikin layers FILE [--count] [--state K] [--limit N] [-o OUT.fold] [--svg OUT.svg]\n"
-    "                   [--frame N] [--threads N] [--json]\n"
+    "                   [--frame N] [--tolerance R] [--threads N] [--json]\n"
     "\n"
     "Fold the crease pattern flat (or take a flat folded form, or faces_flatFoldTransform when\n"
     "the frame has it), build the overlap structure of the folded faces, one variable per pair\n"
@@ -358,6 +358,9 @@ const cli_command cli_cmd_layers = {
     "                 faces_flatFoldTransform, faces_flatFoldOrientation\n"
     "  --svg OUT.svg  draw the crease pattern and state K seen from above\n"
     "  --frame N      frame to read (0 = top level, k = file_frames[k-1]); default 0\n"
+    "  --tolerance R  snapping length of the folded image relative to its diagonal, in (0, 0.01];\n"
+    "                 default 1e-8. A larger one also accepts Kawasaki up to R radians (for\n"
+    "                 drawings with rounded coordinates; use it knowingly)\n"
     "  --threads N    count independent components on N threads; default 1\n"
     "  --json         print {\"states\": \"N\", \"components\": [counts], \"faces\", \"variables\",\n"
     "                 \"constraints\": {\"taco_taco\", \"taco_tortilla\", \"tortilla_tortilla\",\n"
@@ -366,6 +369,6 @@ const cli_command cli_cmd_layers = {
     "                 for a vertex that is not locally flat-foldable}}; with --state\n"
     "                 also \"state\" and \"faceOrders\"\n"
     "\n"
-    "example: orikin layers examples/patterns/open-corner.fold --svg corner.svg\n",
+    "example: orikin layers examples/patterns/degree6-vertex.fold --state 1 --svg vertex.svg\n",
     run,
 };
