@@ -1289,10 +1289,11 @@ static bool unrank_set(solver *s, const int *set, int n, ori__nat *k)
         make_parts(s, set, n, &P);
         ori__nat *counts = ori__alloc(sizeof(ori__nat) * (size_t)(P.ncomp ? P.ncomp : 1));
         ori__nat_set_u64(&prod, 1);
+        int lv = P.ncomp == 1 && P.n > 1 ? 1 : 0; // the counting search's backoff, from level 0
         for (int j = 0; j < P.ncomp; ++j) {
             bool ex;
             ori__nat_init(&counts[j]);
-            count_cached(s, P.out + P.starts[j], P.starts[j + 1] - P.starts[j], P.h[j], &counts[j], &ex, 0, 0);
+            count_cached(s, P.out + P.starts[j], P.starts[j + 1] - P.starts[j], P.h[j], &counts[j], &ex, lv, (1 << lv) - 1);
             ori__nat_mul(&prod, &counts[j]);
         }
         if (!ori__nat_is_zero(&prod) && ori__nat_cmp(k, &prod) < 0) {
