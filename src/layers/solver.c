@@ -1176,8 +1176,9 @@ static void *worker(void *arg)
     start_solver(&s, L);
     for (;;) {
         if (atomic_load(&P->cancel)) break;
-        int j = atomic_fetch_add(&P->next, 1);
-        if (j >= L->n_comp) break;
+        // Largest components first (they are sorted by ascending size): better balance.
+        int j = L->n_comp - atomic_fetch_add(&P->next, 1);
+        if (j < 1) break;
         count_component(&s, L, j);
         if (s.cancel) atomic_store(&P->cancel, true);
         atomic_fetch_add(&P->done_vars, L->comp_vars[j]);
@@ -1214,8 +1215,8 @@ ori_status ori__layers_solve(ori_layers *L, ori_error *error)
     s.main_thread = true;
     for (;;) {
         if (atomic_load(&P.cancel)) break;
-        int j = atomic_fetch_add(&P.next, 1);
-        if (j >= L->n_comp) break;
+        int j = L->n_comp - atomic_fetch_add(&P.next, 1);
+        if (j < 1) break;
         s.done_fraction = P.total_vars ? (double)atomic_load(&P.done_vars) / (double)P.total_vars : 0.0;
         count_component(&s, L, j);
         if (s.cancel) atomic_store(&P.cancel, true);
