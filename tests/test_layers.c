@@ -333,8 +333,28 @@ Test(layers, fold_spec_diagonal_matches_the_folded_file)
                 cr_assert_float_eq(t[3 * r + c], json_number_value(json_array_get(json_array_get(json_array_get(xf, (size_t)f), (size_t)r), (size_t)c)), 1e-15);
         cr_assert_eq(ori_layers_face_flipped(L, f) ? -1 : 1, (int)json_integer_value(json_array_get(orient, (size_t)f)));
     }
+    // The file's transforms, given to the crease pattern, place the faces the same way; a
+    // transform that is not an isometry is refused, naming the face.
+    double given[12];
+    for (int f = 0; f < 2; ++f)
+        for (int r = 0; r < 2; ++r)
+            for (int c = 0; c < 3; ++c)
+                given[6 * f + 3 * r + c] = json_number_value(json_array_get(json_array_get(json_array_get(xf, (size_t)f), (size_t)r), (size_t)c));
     json_decref(doc);
     ori_layers_destroy(L);
+    ori_layers_def def = ori_default_layers_def();
+    def.face_transforms = given;
+    def.face_transform_count = 2;
+    L = solve_pattern(p, &def);
+    cr_assert_eq(ori_layers_select_state(L, "0", &err), ORI_OK);
+    cr_assert_eq(ori_layers_face_orders(L, fo, 1), 1);
+    cr_assert_eq(fo[2], 1);
+    cr_assert(ori_layers_face_flipped(L, 1));
+    ori_layers_destroy(L);
+    given[6 + 1] *= 1.5; // face 1 stretched: not an isometry
+    cr_assert_eq(ori_layers_create(p, &def, &L, &err), ORI_ERR_ARGUMENT);
+    cr_assert_str_eq(err.field, "faces_flatFoldTransform");
+    cr_assert_eq(err.element, 1);
     ori_pattern_destroy(p);
     // Solving the folded form itself gives the same single order.
     p = test_load_pattern(test_require_shared("fold-spec/diagonal-folded.fold"), 0);

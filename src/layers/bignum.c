@@ -167,13 +167,6 @@ void ori__nat_divmod(ori__nat *q, ori__nat *r, const ori__nat *a, const ori__nat
     ori__free(rd);
 }
 
-bool ori__nat_fits_u64(const ori__nat *x, uint64_t *out)
-{
-    if (x->n > 1) return false;
-    if (out) *out = x->n ? (uint64_t)ori__nat_limbs(x)[0] : 0;
-    return true;
-}
-
 char *ori__nat_to_decimal(const ori__nat *x)
 {
     if (x->n == 0) return ori__strdup("0");
@@ -220,12 +213,4 @@ bool ori__nat_from_decimal(ori__nat *x, const char *s)
     ori__free(t);
     ori__free(digits);
     return true;
-}
-
-double ori__nat_to_double(const ori__nat *x)
-{
-    const mp_limb_t *d = ori__nat_limbs(x);
-    double v = 0.0;
-    for (int i = x->n - 1; i >= 0; --i) v = v * 18446744073709551616.0 + (double)d[i];
-    return v;
 }

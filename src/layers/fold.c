@@ -93,17 +93,19 @@ ori_status ori__layers_fold(ori_layers *L, const ori_pattern *p, const ori_layer
     L->vf = ori__calloc((size_t)(L->nv ? L->nv : 1), sizeof(ori_v2));
     L->xf = ori__calloc((size_t)(nf ? nf : 1), sizeof(*L->xf));
     L->flip = ori__calloc((size_t)(nf ? nf : 1), 1);
-    L->root_face = 0;
     int *order = ori__alloc(sizeof(int) * (size_t)(nf ? nf : 1));
     ori_status st = ORI_OK;
 
     if (def->face_transforms) {
         for (int f = 0; f < nf; ++f) {
             memcpy(L->xf[f], def->face_transforms + 6 * f, sizeof(double) * 6);
-            double det = L->xf[f][0] * L->xf[f][4] - L->xf[f][1] * L->xf[f][3];
-            if (!(fabs(fabs(det) - 1.0) <= ORI_TOL_POSE_FIT_REL)) {
+            const double *t = L->xf[f];
+            double det = t[0] * t[4] - t[1] * t[3];
+            double err = fmax(fabs(t[0] * t[0] + t[3] * t[3] - 1.0),
+                              fmax(fabs(t[1] * t[1] + t[4] * t[4] - 1.0), fabs(t[0] * t[1] + t[3] * t[4])));
+            if (!(err <= ORI_TOL_LAYERS_TRANSFORM)) {
                 st = ori__fail_at(error, ORI_ERR_ARGUMENT, "faces_flatFoldTransform", f,
-                                  "not an isometry (determinant %g)", det);
+                                  "not an isometry (its columns miss orthonormal by %g)", err);
                 goto done;
             }
             L->flip[f] = det < 0.0;

@@ -35,10 +35,8 @@ void ori__nat_add(ori__nat *acc, const ori__nat *b);       // acc += b
 void ori__nat_sub(ori__nat *acc, const ori__nat *b);       // acc -= b (b ≤ acc)
 void ori__nat_mul(ori__nat *acc, const ori__nat *b);       // acc *= b
 void ori__nat_divmod(ori__nat *q, ori__nat *r, const ori__nat *a, const ori__nat *b); // b > 0
-bool ori__nat_fits_u64(const ori__nat *x, uint64_t *out);
 char *ori__nat_to_decimal(const ori__nat *x);              // ori__alloc'd, NUL-terminated
 bool ori__nat_from_decimal(ori__nat *x, const char *s);    // digits only
-double ori__nat_to_double(const ori__nat *x);
 
 // --- compressed sparse rows ----------------------------------------------------------------
 // Row r holds items[off[r] .. off[r + 1]).
@@ -108,8 +106,6 @@ typedef struct ori__slot {
     int ia, ib;
 } ori__slot;
 
-typedef struct ori__count_result ori__count_result;
-
 struct ori_layers {
     // Pattern data (copied) and folded geometry.
     int nv, ne, nf;
@@ -120,7 +116,6 @@ struct ori_layers {
     ori_v2 *vf;                // folded vertex positions
     double (*xf)[6];           // face transforms: x' = a x + b y + c, y' = d x + e y + f
     uint8_t *flip;             // face lies face-down (front side towards −z) when folded
-    int root_face;
 
     // Overlap structure (points, segments, cells of the arrangement of the folded edges).
     int np, ns, nc;
