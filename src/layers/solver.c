@@ -173,7 +173,7 @@ typedef struct solver {
     bool main_thread;
     bool cancel;
     int64_t nodes;
-    double done_fraction, span_fraction;
+    double done_fraction;
 } solver;
 
 static void solver_init(solver *s, const ori_layers *L, bool with_cache)
