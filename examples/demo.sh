@@ -98,8 +98,15 @@ run 0 convert "$OUT/open-corner.fold" "$OUT/open-corner-labelled.svg" --labels a
 run 0 convert tests/data/formats/bird.cp "$OUT/bird.fold"
 run 0 generate miura --rows 4 --cols 6 -o "$OUT/miura.svg"
 
+# --- layers (global flat-foldability) ---------------------------------------------------------
+step "10. Global flat-foldability: every flat-folded state (layer order) of a Yoshimura pattern"
+run 0 generate yoshimura --rows 4 --cols 4 -o "$OUT/yoshimura.fold"
+run 0 layers "$OUT/yoshimura.fold" --svg "$OUT/yoshimura-layers.svg"
+run 1 layers examples/patterns/non-flat-foldable-vertex.fold
+
+
 # --- studio (orikin view) -----------------------------------------------------------------
-step "10. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
+step "11. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
 echo "\$ orikin view examples/open-corner.seq.json --port 0 --no-browser"
 "$ORIKIN" view examples/open-corner.seq.json --port 0 --no-browser >"$OUT/view.out" 2>&1 &
 view_pid=$!
@@ -118,7 +125,6 @@ fi
 kill -INT "$view_pid" 2>/dev/null
 wait "$view_pid" || failed=1
 echo
-
 if [ "$failed" -ne 0 ]; then
     echo "demo: some step did not give the expected result" >&2
     exit 1

@@ -78,6 +78,7 @@ for name in $targets; do
             extra="-max_len=512"
             ;;
         api) seeds="tests/data/server/*.req" ;;
+        layers) seeds="tests/data/layers/*.fold examples/patterns/*.fold" ;;
         *) seeds="tests/data/formats/*.$name" ;;
     esac
     for f in fuzz/seeds/"$name"/* $seeds; do

@@ -14,6 +14,7 @@
 #include "formats.h"
 #include "generate.h"
 #include "kinematics.h"
+#include "layers.h"
 #include "math.h"
 #include "pattern.h"
 #include "regularize.h"

@@ -356,5 +356,23 @@
 /// value relative to its size, else with more digits, so a value just outside a bound is never
 /// shown as the bound. Unitless (4 ulps).
 #define ORI_TOL_MESSAGE_REL 8.881784197001252e-16
+// --- global layer order (src/layers) ------------------------------------------------------
+
+/// Overlap structure of a folded state: folded points closer than this × the folded image's
+/// diagonal are one point, and a point closer than this to an edge's folded segment lies on
+/// it. It also bounds how far the images of one vertex through different faces may disagree
+/// (otherwise the sheet does not fold consistently). When a caller loosens it (orikin layers
+/// --tolerance), the local Kawasaki check accepts the same number in radians instead of
+/// ORI_TOL_KAWASAKI_RAD. Unitless (relative length).
+#define ORI_TOL_LAYERS_SNAP_REL 1e-8
+
+/// Distances between ORI_TOL_LAYERS_SNAP_REL and this many times it are ambiguous: the
+/// coordinates do not say whether the two features meet, so the overlap structure is refused
+/// (naming the element) instead of guessed. Unitless factor.
+#define ORI_LAYERS_AMBIGUITY_FACTOR 10.0
+
+/// A given faces_flatFoldTransform row is an isometry when its 2 × 2 part has orthonormal
+/// columns within this (files may hold them rounded to 6 or more digits). Unitless.
+#define ORI_TOL_LAYERS_TRANSFORM 1e-6
 
 #endif

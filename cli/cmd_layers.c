@@ -1,0 +1,374 @@
+// orikin layers: global flat-foldability — every flat-folded state (layer order) of a crease
+// pattern, counted exactly, with the conflicting constraint named when there is none.
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <orikin/layers.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "progress.h"
+
+#define CMD "layers"
+
+// faces_flatFoldTransform of the frame when it is present and well-formed (6 numbers per
+// face), else NULL. *bad is set (with a message printed) when present but malformed.
+static double *read_transforms(ori_fold *doc, int frame, int nf, const char *path, bool *bad)
+{
+    *bad = false;
+    char *text = ori_fold_get_custom(doc, frame, "faces_flatFoldTransform");
+    if (!text) return NULL;
+    json_error_t jerr;
+    json_t *arr = json_loads(text, 0, &jerr);
+    ori_buffer_free(text);
+    double *t = NULL;
+    if (!json_is_array(arr) || (int)json_array_size(arr) != nf) {
+        cli_input_fail(CMD, path, "faces_flatFoldTransform: needs one transform per face (%d)", nf);
+        *bad = true;
+    } else {
+        t = malloc(sizeof(double) * 6 * (size_t)nf);
+        for (int f = 0; f < nf && !*bad; ++f) {
+            json_t *m = json_array_get(arr, (size_t)f);
+            for (int r = 0; r < 2 && !*bad; ++r) {
+                json_t *row = json_array_get(m, (size_t)r);
+                for (int c = 0; c < 3 && !*bad; ++c) {
+                    json_t *x = json_array_get(row, (size_t)c);
+                    if (!json_is_number(x)) {
+                        cli_input_fail(CMD, path, "faces_flatFoldTransform %d: needs [[a, b, c], [d, e, f]]", f);
+                        *bad = true;
+                    } else
+                        t[6 * f + 3 * r + c] = json_number_value(x);
+                }
+            }
+        }
+        if (*bad) {
+            free(t);
+            t = NULL;
+        }
+    }
+    json_decref(arr);
+    return t;
+}
+
+static bool parse_u64(const char *s, uint64_t *out)
+{
+    if (!s || !*s || *s == '-' || *s == '+') return false;
+    for (const char *p = s; *p; ++p)
+        if (*p < '0' || *p > '9') return false;
+    errno = 0;
+    char *end;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno || *end) return false;
+    *out = (uint64_t)v;
+    return true;
+}
+
+static bool is_decimal(const char *s)
+{
+    if (!s || !*s) return false;
+    for (const char *p = s; *p; ++p)
+        if (*p < '0' || *p > '9') return false;
+    return true;
+}
+
+static json_t *count_json(const char *decimal)
+{
+    uint64_t v;
+    if (parse_u64(decimal, &v) && v <= (uint64_t)INT64_MAX) return json_integer((json_int_t)v);
+    return json_string(decimal);
+}
+
+static int run(int argc, char **argv)
+{
+    const char *path = NULL, *out = NULL, *svg = NULL, *state = NULL;
+    bool json = false, count_only = false;
+    bool seen_frame = false, seen_limit = false, seen_threads = false, seen_tol = false;
+    double tol = ORI_TOL_LAYERS_SNAP_REL;
+    int frame = 0, threads = 1;
+    uint64_t limit = ORI_LAYERS_NO_LIMIT;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (strcmp(a, "--json") == 0) json = true;
+        else if (strcmp(a, "--count") == 0) count_only = true;
+        else if (strcmp(a, "--frame") == 0) {
+            if (seen_frame) return cli_usage(CMD, "--frame given twice");
+            seen_frame = true;
+            if (cli_option_frame(CMD, argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
+        } else if (strcmp(a, "--state") == 0) {
+            if (state) return cli_usage(CMD, "--state given twice");
+            state = cli_option_value(CMD, argc, argv, &i);
+            if (!state) return CLI_EXIT_USAGE;
+            if (!is_decimal(state)) return cli_usage(CMD, "--state needs a state number ≥ 0 (got '%s')", state);
+        } else if (strcmp(a, "--limit") == 0) {
+            if (seen_limit) return cli_usage(CMD, "--limit given twice");
+            seen_limit = true;
+            const char *v = cli_option_value(CMD, argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!parse_u64(v, &limit) || limit == 0 || limit == ORI_LAYERS_NO_LIMIT)
+                return cli_usage(CMD, "--limit needs a count ≥ 1 (got '%s')", v);
+        } else if (strcmp(a, "--threads") == 0) {
+            if (seen_threads) return cli_usage(CMD, "--threads given twice");
+            seen_threads = true;
+            const char *v = cli_option_value(CMD, argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &threads) || threads < 1 || threads > 256)
+                return cli_usage(CMD, "--threads needs a count from 1 to 256 (got '%s')", v);
+        } else if (strcmp(a, "--tolerance") == 0) {
+            if (seen_tol) return cli_usage(CMD, "--tolerance given twice");
+            seen_tol = true;
+            const char *v = cli_option_value(CMD, argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &tol) || !(tol > 0.0) || !(tol <= 1e-2))
+                return cli_usage(CMD, "--tolerance needs a relative length in (0, 0.01] (got '%s')", v);
+        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+            if (out) return cli_usage(CMD, "-o given twice");
+            out = cli_option_value(CMD, argc, argv, &i);
+            if (!out) return CLI_EXIT_USAGE;
+        } else if (strcmp(a, "--svg") == 0) {
+            if (svg) return cli_usage(CMD, "--svg given twice");
+            svg = cli_option_value(CMD, argc, argv, &i);
+            if (!svg) return CLI_EXIT_USAGE;
+        } else if (a[0] == '-' && a[1] != '\0') return cli_usage(CMD, "unknown option %s", a);
+        else if (!path) path = a;
+        else return cli_usage(CMD, "one FILE only");
+    }
+    if (!path) return cli_usage(CMD, "missing FILE");
+    if (limit != ORI_LAYERS_NO_LIMIT && (state || out || svg))
+        return cli_usage(CMD, "--limit counts only: states cannot be numbered (drop --state, -o and --svg)");
+    if (count_only && (state || out || svg)) return cli_usage(CMD, "--count prints the count only (drop --state, -o, --svg)");
+
+    ori_fold *doc;
+    ori_pattern *p;
+    int rc = cli_load_pattern(CMD, path, frame, false, &doc, &p);
+    if (rc != CLI_EXIT_OK) return rc;
+    // A crease pattern may carry its folded placement; a folded form's coordinates are folded
+    // already (its transforms would apply to the unfolded coordinates, which it lacks).
+    bool bad = false;
+    double *xf = ori_pattern_is_folded_form(p) ? NULL : read_transforms(doc, frame, ori_pattern_face_count(p), path, &bad);
+    if (bad) {
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+        return CLI_EXIT_INPUT;
+    }
+    ori_layers_def def = ori_default_layers_def();
+    def.face_transforms = xf;
+    def.face_transform_count = xf ? ori_pattern_face_count(p) : 0;
+    def.limit = limit;
+    def.threads = threads;
+    def.snap_rel = tol;
+    cli_progress prog;
+    cli_progress_begin(&prog, CMD, "counting layer orders");
+    def.progress = cli_progress_fn;
+    def.progress_user = &prog;
+    ori_layers *L = NULL;
+    ori_error err;
+    ori_error_clear(&err);
+    ori_status st = ori_layers_create(p, &def, &L, &err);
+    free(xf);
+    if (st == ORI_OK) st = ori_layers_count(L, &err);
+    cli_progress_end(&prog);
+    if (st != ORI_OK) {
+        rc = st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : cli_input_error(CMD, path, &err);
+        if (st == ORI_ERR_INTERNAL) cli_input_error(CMD, path, &err);
+        ori_layers_destroy(L);
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+        return rc;
+    }
+    ori_layers_info info = ori_layers_get_info(L);
+    char *states = ori_layers_state_count(L);
+    ori_layers_conflict conf;
+    bool unsat = ori_layers_get_conflict(L, &conf);
+    int nconf = unsat ? ori_layers_conflict_faces(L, NULL, 0) : 0;
+    int *conf_faces = malloc(sizeof(int) * (size_t)(nconf ? nconf : 1));
+    if (unsat) ori_layers_conflict_faces(L, conf_faces, nconf);
+
+    // A state for -o, --svg or --state.
+    const char *k = state ? state : "0";
+    bool want_state = !unsat && (state || out || svg);
+    if (want_state && (st = ori_layers_select_state(L, k, &err)) != ORI_OK) {
+        rc = st == ORI_ERR_RANGE ? cli_usage(CMD, "--state: %s", err.message) : cli_input_error(CMD, path, &err);
+        goto finish;
+    }
+    if (unsat && (out || svg)) {
+        fprintf(stderr, "orikin %s: %s: no flat-folded state to write (%s)\n", CMD, path, conf.detail);
+    }
+    if (want_state && out) {
+        int fr = ori_layers_append_frame(L, p, doc, frame, &err);
+        if (fr < 0 || (st = ori_fold_save_file(doc, out, &err)) != ORI_OK) {
+            rc = cli_input_error(CMD, out, &err);
+            goto finish;
+        }
+    }
+    if (want_state && svg) {
+        char *text = NULL;
+        size_t size = 0;
+        st = ori_layers_svg(L, p, &text, &size, &err);
+        if (st == ORI_OK) st = ori_file_write_atomic(svg, text, size, &err);
+        ori_buffer_free(text);
+        if (st != ORI_OK) {
+            rc = cli_input_error(CMD, svg, &err);
+            goto finish;
+        }
+    }
+
+    if (count_only && !json) {
+        printf("%s%s\n", states, info.limited ? " (at least: limited)" : "");
+    } else if (json) {
+        json_t *o = json_object();
+        json_object_set_new(o, "states", json_string(states));
+        json_t *comps = json_array();
+        if (!unsat || conf.constraint == ORI_LAYERS_EXHAUSTED)
+            for (int c = 0; c < ori_layers_component_count(L); ++c) {
+                char *n = ori_layers_component_states(L, c);
+                json_array_append_new(comps, count_json(n));
+                ori_buffer_free(n);
+            }
+        json_object_set_new(o, "components", comps);
+        json_object_set_new(o, "faces", json_integer(info.faces));
+        json_object_set_new(o, "variables", json_integer(info.variables));
+        json_t *cons = json_object();
+        json_object_set_new(cons, "taco_taco", json_integer(info.taco_taco));
+        json_object_set_new(cons, "taco_tortilla", json_integer(info.taco_tortilla));
+        json_object_set_new(cons, "tortilla_tortilla", json_integer(info.tortilla_tortilla));
+        json_object_set_new(cons, "transitivity", json_integer(info.transitivity));
+        json_object_set_new(o, "constraints", cons);
+        if (unsat) {
+            json_t *u = json_object();
+            json_object_set_new(u, "constraint", json_string(ori_layers_constraint_name(conf.constraint)));
+            json_t *fa = json_array();
+            if (conf.face_count > 0)
+                for (int i = 0; i < conf.face_count; ++i) json_array_append_new(fa, json_integer(conf.faces[i]));
+            else
+                for (int i = 0; i < nconf; ++i) json_array_append_new(fa, json_integer(conf_faces[i]));
+            json_object_set_new(u, "faces", fa);
+            json_t *inv = json_array();
+            for (int i = 0; i < nconf; ++i) json_array_append_new(inv, json_integer(conf_faces[i]));
+            json_object_set_new(u, "involved_faces", inv);
+            if (conf.vertex != ORI_NULL_INDEX) json_object_set_new(u, "vertex", json_integer(conf.vertex));
+            json_object_set_new(u, "detail", json_string(conf.detail));
+            json_object_set_new(o, "unsatisfiable", u);
+        } else
+            json_object_set_new(o, "unsatisfiable", json_null());
+        if (limit != ORI_LAYERS_NO_LIMIT) json_object_set_new(o, "limited", json_boolean(info.limited));
+        if (state && want_state) {
+            json_object_set_new(o, "state", json_string(k));
+            int nv = ori_layers_face_orders(L, NULL, 0);
+            int *fo = malloc(sizeof(int) * 3 * (size_t)(nv ? nv : 1));
+            ori_layers_face_orders(L, fo, nv);
+            json_t *arr = json_array();
+            for (int i = 0; i < nv; ++i) {
+                json_t *t = json_array();
+                for (int j = 0; j < 3; ++j) json_array_append_new(t, json_integer(fo[3 * i + j]));
+                json_array_append_new(arr, t);
+            }
+            free(fo);
+            json_object_set_new(o, "faceOrders", arr);
+        }
+        cli_print_json(o);
+    } else {
+        printf("file         %s (frame %d, %s)\n", path, frame,
+               ori_pattern_is_folded_form(p) ? "folded form" : "crease pattern");
+        if (!(unsat && conf.constraint == ORI_LAYERS_LOCAL)) {
+            printf("faces        %d; overlap: %d points, %d segments, %d cells\n", info.faces, info.points,
+                   info.segments, info.cells);
+            if (unsat) printf("variables    %d face pairs (%d classes)\n", info.variables, info.classes);
+            else
+                printf("variables    %d face pairs (%d classes; %d fixed by the M/V assignment)\n", info.variables,
+                       info.classes, info.fixed_variables);
+            printf("constraints  taco-taco %" PRId64 ", taco-tortilla %" PRId64 ", tortilla-tortilla %" PRId64
+                   ", transitivity %" PRId64 "\n",
+                   info.taco_taco, info.taco_tortilla, info.tortilla_tortilla, info.transitivity);
+        }
+        if (!unsat || conf.constraint == ORI_LAYERS_EXHAUSTED) {
+            printf("components   %d: |", info.components);
+            for (int c = 0; c < info.components; ++c) {
+                char *n = ori_layers_component_states(L, c);
+                printf("%s|", n);
+                ori_buffer_free(n);
+            }
+            printf("\n");
+        }
+        if (unsat) {
+            printf("states       0\n");
+            printf("verdict: NO flat-folded state: %s\n", conf.detail);
+            if (conf.constraint == ORI_LAYERS_LOCAL && fabs(conf.kawasaki_rad) > 0.0 &&
+                fabs(conf.kawasaki_rad) <= 1e-3 && !seen_tol)
+                printf("hint: a drawing with rounded coordinates may pass with --tolerance (e.g. 1e-5)\n");
+            if (conf.face_count > 0) {
+                printf("constraint faces:");
+                for (int i = 0; i < conf.face_count; ++i) printf(" %d", conf.faces[i]);
+                printf("\n");
+            }
+            printf("faces involved:");
+            for (int i = 0; i < nconf; ++i) printf(" %d", conf_faces[i]);
+            printf("\n");
+        } else {
+            printf("states       %s%s\n", states, info.limited ? " (at least: each component limited)" : "");
+            if (state) {
+                int nv = ori_layers_face_orders(L, NULL, 0);
+                int *fo = malloc(sizeof(int) * 3 * (size_t)(nv ? nv : 1));
+                ori_layers_face_orders(L, fo, nv);
+                printf("state %s faceOrders:", k);
+                for (int i = 0; i < nv; ++i) printf(" [%d,%d,%d]", fo[3 * i], fo[3 * i + 1], fo[3 * i + 2]);
+                printf("\n");
+                free(fo);
+            }
+            if (out) printf("wrote %s (state %s as a foldedForm frame with faceOrders)\n", out, k);
+            if (svg) printf("wrote %s\n", svg);
+            printf("verdict: flat-foldable, %s state%s\n", states, strcmp(states, "1") == 0 ? "" : "s");
+        }
+    }
+    rc = unsat ? CLI_EXIT_NEGATIVE : CLI_EXIT_OK;
+finish:
+    free(conf_faces);
+    ori_buffer_free(states);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    return cli_finish(rc);
+}
+
+const cli_command cli_cmd_layers = {
+    "layers",
+    "global flat-foldability: count every flat-folded state (layer order), name the conflict",
+    "usage: orikin layers FILE [--count] [--state K] [--limit N] [-o OUT.fold] [--svg OUT.svg]\n"
+    "                   [--frame N] [--tolerance R] [--threads N] [--json]\n"
+    "\n"
+    "Fold the crease pattern flat (or take a flat folded form, or faces_flatFoldTransform when\n"
+    "the frame has it), build the overlap structure of the folded faces, one variable per pair\n"
+    "of overlapping faces and Flat-Folder's taco-taco, taco-tortilla, tortilla-tortilla and\n"
+    "transitivity constraints, propagate the M/V assignment (U creases are free), split into\n"
+    "independent components and count the states of each exactly (a search that splits and\n"
+    "caches sub-components, never listing the states). Prints the sizes, the component counts\n"
+    "in Flat-Folder's order (|fixed part|smallest component|...|) and the number of states, or\n"
+    "the constraint that leaves none. A vertex that is not locally flat-foldable is named.\n"
+    "Exit 0 when a state exists, 1 when none does, 3 for an invalid file or coordinates that do\n"
+    "not determine the overlap structure. See docs/layers.md.\n"
+    "\n"
+    "options:\n"
+    "  --count        print only the number of states\n"
+    "  --state K      state to print (faceOrders), write and draw: 0 <= K < the count; default 0\n"
+    "  --limit N      count at most N states per component (Flat-Folder's limit; the count is then\n"
+    "                 a lower bound and --json adds \"limited\")\n"
+    "  -o OUT.fold    write the file with state K appended as a foldedForm frame: folded\n"
+    "                 vertices_coords, edges_foldAngle, resolved edges_assignment, faceOrders,\n"
+    "                 faces_flatFoldTransform, faces_flatFoldOrientation\n"
+    "  --svg OUT.svg  draw the crease pattern and state K seen from above\n"
+    "  --frame N      frame to read (0 = top level, k = file_frames[k-1]); default 0\n"
+    "  --tolerance R  snapping length of the folded image relative to its diagonal, in (0, 0.01];\n"
+    "                 default 1e-8. A larger one also accepts Kawasaki up to R radians (for\n"
+    "                 drawings with rounded coordinates; use it knowingly)\n"
+    "  --threads N    count independent components on N threads; default 1\n"
+    "  --json         print {\"states\": \"N\", \"components\": [counts], \"faces\", \"variables\",\n"
+    "                 \"constraints\": {\"taco_taco\", \"taco_tortilla\", \"tortilla_tortilla\",\n"
+    "                 \"transitivity\"}, \"unsatisfiable\": null | {\"constraint\", \"faces\" (the constraint's),\n"
+    "                 \"involved_faces\" (with those whose orders forced it), \"detail\", and \"vertex\"\n"
+    "                 for a vertex that is not locally flat-foldable}}; with --state\n"
+    "                 also \"state\" and \"faceOrders\"\n"
+    "\n"
+    "example: orikin layers examples/patterns/degree6-vertex.fold --state 1 --svg vertex.svg\n",
+    run,
+};
