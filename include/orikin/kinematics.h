@@ -16,7 +16,7 @@
 /// ori_motion_violation, ori_motion_frame_count, ori_motion_frame_drive,
 /// ori_motion_frame_angles, ori_motion_frame_residual, ori_motion_frame_face_poses,
 /// ori_motion_frame_vertices, ori_motion_frame_other_branch, ori_motion_frame_end_effector, ori_motion_fixed_face,
-/// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats_of, ori_motion_dof,
+/// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats_of, ori_motion_block_of, ori_motion_dof,
 /// ori_default_fit_def, ori_fit_solve, ori_fit_destroy, ori_fit_crease_count,
 /// ori_fit_crease_of, ori_fit_sample_count, ori_fit_coefficients, ori_fit_eval.
 ///
@@ -296,6 +296,23 @@ typedef struct ori_motion_stats {
     double max_residual;      ///< largest residual over the output frames
 } ori_motion_stats;
 
+/// What stopped a BLOCKED fold.
+typedef enum ori_block_kind {
+    ORI_BLOCK_NONE = 0,        ///< not blocked
+    ORI_BLOCK_CREASE_LIMIT,    ///< a moving crease reached ±180° (its faces would pass through each other beyond)
+    ORI_BLOCK_SINGULAR,        ///< no state beyond: a limit of the drive or a bifurcation (singular Jacobian)
+} ori_block_kind;
+
+/// Where and why a fold stopped before its target (ori_motion_block).
+typedef struct ori_motion_block {
+    ori_block_kind kind;
+    double drive_rad;        ///< driven-crease angle at the stop (the last output frame)
+    int edge;                ///< CREASE_LIMIT: the crease at ±180°, else ORI_NULL_INDEX
+    double edge_angle_rad;   ///< CREASE_LIMIT: its angle at the stop
+    int singular_count;      ///< SINGULAR: creases that move without the drive there (the null vector), 0 when unknown
+    int singular_edges[32];  ///< the first (at most 32) of them, by edge index
+} ori_motion_block;
+
 /// Opaque result of a fold.
 typedef struct ori_motion ori_motion;
 
@@ -319,8 +336,9 @@ ORI_API int ori_motion_violation_count(const ori_motion *motion);
 /// A violation by value (index < ori_motion_violation_count).
 ORI_API ori_crease_violation ori_motion_violation(const ori_motion *motion, int index);
 
-/// Output frames: the start (from) state, one per step, the last at to_rad. May be fewer when
-/// the verdict is BLOCKED, and 0 for NOT_RIGIDLY_FOLDABLE and UNDERDETERMINED.
+/// Output frames: the start (from) state, one per step, the last at to_rad. When the verdict is
+/// BLOCKED they run up to the stop, the last frame at the stop itself (partial, see
+/// ori_motion_block); 0 for NOT_RIGIDLY_FOLDABLE and UNDERDETERMINED. Every angle lies in [−π, π].
 ORI_API int ori_motion_frame_count(const ori_motion *motion);
 /// Driven-crease angle of a frame (radians).
 ORI_API double ori_motion_frame_drive(const ori_motion *motion, int frame);
@@ -347,6 +365,9 @@ ORI_API ori_rigid ori_motion_fixed_pose(const ori_motion *motion);
 ORI_API bool ori_motion_split(const ori_motion *motion, ori_vertex_split *out);
 /// Solver statistics.
 ORI_API ori_motion_stats ori_motion_stats_of(const ori_motion *motion);
+/// Where and why the motion stopped: true (and *out filled, may be NULL) when the fold was
+/// stopped before its target (verdict BLOCKED, or an invalid fold that also stops).
+ORI_API bool ori_motion_block_of(const ori_motion *motion, ori_motion_block *out);
 /// DOF of the free mechanism (no locks, no drive) at the last frame (dense or sparse rank);
 /// −1 when there is no frame.
 ORI_API int ori_motion_dof(const ori_motion *motion);

@@ -184,6 +184,18 @@ int ori__kin_solver_nullity(kin_solver *s, const double *th);
 bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                             double *th_out);
 
+// Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
+// at most this many times, down to this interval (radians); a stop with a moving crease within
+// ORI_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point.
+#define ORI_KIN_STOP_BISECTIONS 200
+#define ORI_KIN_STOP_DRIVE_RAD 1e-13
+#define ORI_KIN_STOP_LIMIT_RAD 1e-6
+// Creases whose component in the null vector at a singular stop is at least this fraction of
+// the largest are named as the singular set (the Jacobian is decomposed densely up to
+// ORI_KIN_SINGULAR_SET_MAX_COLS free creases).
+#define ORI_KIN_SINGULAR_SET_REL 0.1
+#define ORI_KIN_SINGULAR_SET_MAX_COLS 2000
+
 // Output frames reserved up front at most (more grow the arrays by doubling).
 #define ORI_KIN_RESERVE_FRAMES 4096
 
@@ -231,10 +243,17 @@ typedef struct kin_spherical {
 // joints, and no other joint is free. Fills *sp.
 bool ori__kin_spherical_applicable(const ori_mechanism *m, const int *col_of_joint, int drive_joint,
                                    kin_spherical *sp);
+// Newton iterations polishing each closed-form candidate on the loop equation itself.
+#define ORI_KIN_SPHERICAL_POLISH_MAX 4
+
 // All (≤ 2) closed-form solutions for the drive value: cand[k][0..2] = angles of the three free
 // joints. pred supplies values where the closed form is indeterminate (degenerate axes).
 // Returns the number of solutions.
 int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th,
                              double drive, const double pred[3], double cand[2][3]);
+// Newton polish (minimum-norm steps) of the three free angles x at the drive value on the loop
+// equation; returns the final max-norm of P − I.
+double ori__kin_spherical_polish(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
+                                 double x[3]);
 
 #endif

@@ -11,6 +11,7 @@
 // branch); easy steps (≤ 3 iterations) double the step up to ORI_KIN_MAX_STEP_RAD. Output
 // states land exactly on the requested drive values. At a singular start (the flat sheet) the
 // tangent comes from the second-order cone analysis (cone.c), which also selects the branch.
+#include <lapacke.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -37,6 +38,7 @@ struct ori_motion {
     ori_v3 *ee_a, *ee_b;
     ori_motion_stats stats;
     int dof;
+    ori_motion_block block;
 };
 
 ori_motion_def ori_default_motion_def(void)
@@ -96,6 +98,8 @@ typedef struct ctx {
     bool incompatible;    // NONE because the vertices' assigned branches contradict each other
     bool has_alt;         // closed form: the other branch at the current drive value
     double alt[3];
+    ori_block_kind block_kind; // what stopped a BLOCKED leg
+    int block_joint;           // ORI_BLOCK_CREASE_LIMIT: the crease at ±π
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -140,15 +144,24 @@ static void record(ctx *c)
     if (mo->nframes == mo->frame_cap) reserve_frames(c, mo->frame_cap ? 2 * mo->frame_cap : 16);
     int k = mo->nframes++;
     mo->drive[k] = c->th[c->jd];
-    ori__kin_joints_to_edges(m, c->th, mo->angles + (size_t)k * (size_t)(m->edge_count + 1));
+    double *ang = mo->angles + (size_t)k * (size_t)(m->edge_count + 1);
+    ori__kin_joints_to_edges(m, c->th, ang);
+    // A crease may end a hair beyond ±π (a fully folded state, within ORI_TOL_FOLD_SIGN_RAD):
+    // stored exactly at ±π so that every output stays in [−π, π] and reads back.
+    for (int e = 0; e < m->edge_count; ++e)
+        if (fabs(ang[e]) > ORI_PI) ang[e] = ang[e] > 0.0 ? ORI_PI : -ORI_PI;
     mo->has_alt[k] = c->analytic && c->has_alt;
     if (mo->has_alt[k]) {
         double *th = ori__alloc(sizeof(double) * (size_t)(m->joint_count + 1));
         memcpy(th, c->th, sizeof(double) * (size_t)m->joint_count);
         const kin_loop *L = &m->loops[c->sp.loop];
         for (int i = 0; i < 3; ++i) th[m->entries[L->first + c->sp.free_entry[i]].joint] = c->alt[i];
-        ori__kin_joints_to_edges(m, th, mo->alt + (size_t)k * (size_t)(m->edge_count + 1));
+        double *alt = mo->alt + (size_t)k * (size_t)(m->edge_count + 1);
+        ori__kin_joints_to_edges(m, th, alt);
         ori__free(th);
+        // The other branch as angles in [−π, π] (the closed form tracks representatives near
+        // the prediction, which may lie a turn away).
+        for (int e = 0; e < m->edge_count; ++e) alt[e] = ori_wrap_angle(alt[e]);
     }
     // The corrector measured the accepted state's residual; the closed form is measured here.
     double r = c->last_residual >= 0.0 ? c->last_residual : ori__kin_residual(m, c->th);
@@ -177,16 +190,148 @@ static void lagrange_weights(const double *xs, int n, double x, double *w)
     }
 }
 
-// Numeric leg from the current drive value to s1, recording at each output value.
+// --- where a motion stops ------------------------------------------------------------------
+
+// The largest |angle| over the moving (free) creases of th; *joint receives which.
+static double max_free_angle(const ctx *c, const double *th, int *joint)
+{
+    double best = -1.0;
+    int bj = -1;
+    for (int j = 0; j < c->m->joint_count; ++j)
+        if (c->col[j] >= 0 && fabs(th[j]) > best) {
+            best = fabs(th[j]);
+            bj = j;
+        }
+    if (joint) *joint = bj;
+    return best;
+}
+
+// Some moving crease has turned past ±π: its faces would pass through each other.
+static bool beyond_limit(const ctx *c, const double *th)
+{
+    return max_free_angle(c, th, NULL) > ORI_PI + ORI_TOL_FOLD_SIGN_RAD;
+}
+
+static double cand_distance(const double a[3], const double b[3])
+{
+    return fmax(fabs(a[0] - b[0]), fmax(fabs(a[1] - b[1]), fabs(a[2] - b[2])));
+}
+
+// The state at drive value s_new continued from the accepted state c->th by a short step: the
+// closed-form branch nearest to it, or a tangent prediction and the corrector. False when there
+// is none (or the corrector jumped to another branch).
+static bool state_at(ctx *c, double s_new, double *out)
+{
+    const ori_mechanism *m = c->m;
+    int J = m->joint_count;
+    double s = c->th[c->jd];
+    memcpy(out, c->th, sizeof(double) * (size_t)J);
+    out[c->jd] = s_new;
+    if (c->analytic) {
+        const kin_loop *L = &m->loops[c->sp.loop];
+        int fj[3];
+        double pred[3], cand[2][3];
+        for (int i = 0; i < 3; ++i) {
+            fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
+            pred[i] = c->th[fj[i]];
+        }
+        int nc = ori__kin_spherical_solve(m, &c->sp, c->th, s_new, pred, cand);
+        if (nc == 0) return false;
+        int k = nc == 2 && cand_distance(cand[1], pred) < cand_distance(cand[0], pred) ? 1 : 0;
+        for (int i = 0; i < 3; ++i) out[fj[i]] = cand[k][i];
+        return true;
+    }
+    double *t = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    bool ok = ori__kin_tangent(c->solver, c->th, t);
+    if (ok) {
+        double tn = 1.0;
+        for (int j = 0; j < J; ++j)
+            if (c->col[j] >= 0) {
+                out[j] = c->th[j] + (s_new - s) * t[j];
+                tn = fmax(tn, fabs(t[j]));
+            }
+        memcpy(pred, out, sizeof(double) * (size_t)J);
+        int its = 0;
+        double res = 0.0;
+        ok = ori__kin_correct(c->solver, out, ORI_KIN_NEWTON_MAX, &its, &res);
+        c->mo->stats.newton_iterations += its;
+        double move = 0.0;
+        for (int j = 0; j < J; ++j) move = fmax(move, fabs(out[j] - pred[j]));
+        ok = ok && move <= ORI_KIN_MAX_CORRECTION * fabs(s_new - s) * tn + ORI_KIN_CORRECTION_SLACK_RAD;
+    }
+    ori__free(t);
+    ori__free(pred);
+    return ok;
+}
+
+// A step from the accepted state c->th towards s_out failed: it took a moving crease past ±π,
+// or found no state (a limit of the drive, a singular point). Bisect the drive between the two
+// for the last state that exists within [−π, π]; c->th ends there and the stop is classified:
+// ORI_BLOCK_CREASE_LIMIT when a moving crease is then at ±π, else ORI_BLOCK_SINGULAR. The same
+// search serves both solvers, so that they stop at the same place.
+static void locate_stop(ctx *c, double s_out)
+{
+    int J = c->m->joint_count;
+    double lo = c->th[c->jd], hi = s_out;
+    double *x = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    for (int it = 0; it < ORI_KIN_STOP_BISECTIONS && fabs(hi - lo) > ORI_KIN_STOP_DRIVE_RAD; ++it) {
+        double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi) break;
+        if (!state_at(c, mid, x) || beyond_limit(c, x)) {
+            hi = mid;
+            continue;
+        }
+        memcpy(c->th, x, sizeof(double) * (size_t)J);
+        c->last_residual = -1.0;
+        check_signs(c);
+        lo = mid;
+    }
+    ori__free(x);
+    c->blocked_at = lo;
+    int j;
+    double a = max_free_angle(c, c->th, &j);
+    c->block_kind = a >= ORI_PI - ORI_KIN_STOP_LIMIT_RAD ? ORI_BLOCK_CREASE_LIMIT : ORI_BLOCK_SINGULAR;
+    c->block_joint = c->block_kind == ORI_BLOCK_CREASE_LIMIT ? j : -1;
+}
+
+// The start state is singular when the constrained Jacobian has a null space, the ordinary
+// tangent does not move the drive (defect), or some loop's equations are rank deficient (a flat
+// vertex, a hole loop): then only the second-order analysis can tell the motion. *t receives
+// the regular tangent when it is not singular.
+static bool start_singular(ctx *c, double *t)
+{
+    int nul = ori__kin_solver_nullity(c->solver, c->th);
+    if (nul == 0 && ori__kin_tangent(c->solver, c->th, t) && ori__kin_tangent_defect(c->solver, c->th, t) > ORI_TOL_CONE_REL)
+        nul = 1;
+    if (nul == 0 && ori__kin_loops_deficient(c->m, c->th, c->col, c->jd)) nul = 1;
+    return nul > 0;
+}
+
+// The escape from a singular start: the start (s0, th0, its cone tangent t0 per unit drive)
+// and a regular state a fixed distance away (s1, th1, t1), found before any output. States in
+// between are the cubic Hermite interpolation of the two, corrected: close to the start the
+// residual no longer tells a state on the branch from one beside it (every state within δ of
+// a flat vertex closes to O(δ²)), so the branch there is fixed by the escape, not by the
+// output step.
+typedef struct kin_escape {
+    double s0, s1;
+    double *th0, *t0, *th1, *t1;
+} kin_escape;
+
+// Numeric walk from the current drive value to s1, recording at each output value.
 //
 // Predictor: with fewer than ORI_KIN_HISTORY accepted states, the tangent (one linear solve)
 // with a cubic Hermite extrapolation through the previous state and tangent; then a quintic
 // Lagrange extrapolation through the last six states, which needs no linear solve and is
 // accurate enough (≈ 1e-9 on the Miura sheet at 1.7° steps) for one corrector iteration to
 // reach ORI_TOL_NEWTON. The history is a ring: slot (hist0 + i) % ORI_KIN_HISTORY holds the
-// i-th oldest state.
+// i-th oldest state. t_first (per unit drive, in the direction of motion) replaces the tangent
+// of the first step out of a singular start; esc (may be NULL) supplies the states up to the
+// escape.
 #define ORI_KIN_HISTORY 6
-static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
+static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, const double *t_first,
+                               const kin_escape *esc)
 {
     const ori_mechanism *m = c->m;
     int J = m->joint_count;
@@ -205,35 +350,8 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
     double sp = 0.0;
     bool have_prev = false;
     leg_result result = LEG_OK;
-    bool singular_first = false;
-    // A regular start has a unique first-order motion of the drive and loops whose equations
-    // are independent there. Otherwise (rank-deficient, the drive cannot move at first order,
-    // or some loop has equations that first order cannot satisfy — a flat vertex, a hole loop)
-    // the second-order analysis decides.
-    int nul = ori__kin_solver_nullity(c->solver, c->th);
-    if (nul == 0 && ori__kin_tangent(c->solver, c->th, t) &&
-        ori__kin_tangent_defect(c->solver, c->th, t) > ORI_TOL_CONE_REL)
-        nul = 1;
-    if (nul == 0 && ori__kin_loops_deficient(m, c->th, c->col, c->jd)) nul = 1;
-    if (nul > 0) {
-        int extra = 0;
-        kin_cone_result cr = ori__kin_cone(m, c->th, c->col, c->ncols, c->jd, sg, false, t, &extra);
-
-        if (cr == KIN_CONE_NONE || cr == KIN_CONE_INCOMPATIBLE) {
-            c->incompatible = cr == KIN_CONE_INCOMPATIBLE;
-            result = LEG_NONE;
-            goto done;
-        }
-        if (cr == KIN_CONE_UNDERDETERMINED) {
-            c->extra_dof = extra;
-            result = LEG_UNDER;
-            goto done;
-        }
-        if (cr == KIN_CONE_VIOLATING) c->cone_violating = true;
-        // Per unit drive: v has v[jd] = ±1.
-        for (int j = 0; j < J; ++j) t[j] *= sg;
-        singular_first = true;
-    }
+    bool singular_first = t_first != NULL && esc == NULL;
+    if (t_first) memcpy(t, t_first, sizeof(double) * (size_t)J);
     memcpy(HIST(0), c->th, sizeof(double) * (size_t)J);
     hs[0] = s;
     nh = 1;
@@ -248,13 +366,25 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
         s = c->th[c->jd];
         if (s == s1 && (!rec || target == s1)) break;
         double dist = fabs(target - s);
-        double hh = fmin(h, dist);
+        // Within the escape the prediction does not depend on the step: go straight to the
+        // next output value, but through the escape's end (beyond it the tangent takes over).
+        bool in_esc = esc && (s - esc->s1) * sg < 0.0;
+        double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
         // A near-complete remainder is taken whole rather than left as a sliver.
-        if (dist - hh < 0.25 * hh) hh = dist;
-        double snew = hh == dist ? target : s + sg * hh;
-        bool secant = nh >= ORI_KIN_HISTORY && fabs(snew - s) <= 2.0 * fabs(s - hs[nh - 2]);
+        if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
+        double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
+        bool secant = !in_esc && nh >= ORI_KIN_HISTORY && fabs(snew - s) <= 2.0 * fabs(s - hs[nh - 2]);
         double tn = 1.0;
-        if (secant) {
+        if (in_esc) {
+            for (int j = 0; j < J; ++j) {
+                if (c->col[j] < 0) {
+                    pred[j] = c->th[j];
+                    continue;
+                }
+                pred[j] = hermite(esc->s0, esc->th0[j], esc->t0[j], esc->s1, esc->th1[j], esc->t1[j], snew);
+                tn = fmax(tn, fmax(fabs(esc->t0[j]), fabs(esc->t1[j])));
+            }
+        } else if (secant) {
             double w[ORI_KIN_HISTORY];
             lagrange_weights(hs, nh, snew, w);
             const double *hp[ORI_KIN_HISTORY];
@@ -273,9 +403,9 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
             }
         } else {
             if (!(singular_first && first) && !ori__kin_tangent(c->solver, c->th, t)) {
-                bool at_start = singular_first && fabs(s - s_start) < ORI_KIN_ESCAPE_RAD;
-                result = first || at_start ? LEG_NONE : LEG_BLOCKED;
-                c->blocked_at = s;
+                // No tangent: the state is singular (a limit of the drive, a bifurcation).
+                locate_stop(c, snew);
+                result = LEG_BLOCKED;
                 break;
             }
             for (int j = 0; j < J; ++j) {
@@ -296,8 +426,9 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
         double move = 0.0;
         for (int j = 0; j < J; ++j) move = fmax(move, fabs(trial[j] - pred[j]));
         bool accept = ok && move <= ORI_KIN_MAX_CORRECTION * hh * tn + ORI_KIN_CORRECTION_SLACK_RAD;
-        for (int j = 0; j < J && accept; ++j)
-            if (!(fabs(trial[j]) <= ORI_PI + ORI_TOL_FOLD_SIGN_RAD) && c->col[j] >= 0) accept = false;
+        // A moving crease turned past ±π within this step (or only seems to, near a fully folded
+        // state): halve; a stop there is located by locate_stop.
+        if (accept && beyond_limit(c, trial)) accept = false;
         if (!accept) {
             c->mo->stats.rejected_steps++;
             h = 0.5 * hh;
@@ -306,17 +437,14 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
             memcpy(HIST(0), c->th, sizeof(double) * (size_t)J);
             hs[0] = s;
             if (h < ORI_KIN_MIN_STEP_RAD) {
-                // Stuck right at a singular start: the second-order tangent was spurious (the
-                // motion does not exist beyond second order), so there is no motion at all.
-                bool at_start = singular_first && fabs(s - s_start) < ORI_KIN_ESCAPE_RAD;
-                result = first || at_start ? LEG_NONE : LEG_BLOCKED;
-                c->blocked_at = s;
+                locate_stop(c, snew);
+                result = LEG_BLOCKED;
                 break;
             }
             continue;
         }
         // Accepted.
-        if (!secant) {
+        if (!secant && !in_esc) {
             for (int j = 0; j < J; ++j) {
                 thp[j] = c->th[j];
                 tp[j] = t[j];
@@ -335,16 +463,6 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
         c->mo->stats.steps++;
         c->last_residual = res;
         check_signs(c);
-        if (first && singular_first) {
-            // Out of the singular start: the constrained Jacobian must now be regular, else
-            // the fold leaves freedom the drive does not fix.
-            int n2 = ori__kin_solver_nullity(c->solver, c->th);
-            if (n2 > 0) {
-                c->extra_dof = n2;
-                result = LEG_UNDER;
-                break;
-            }
-        }
         first = false;
         if (its <= 3) h = fmin(2.0 * h, h_max);
         if (snew == target) {
@@ -355,7 +473,6 @@ static leg_result numeric_leg(ctx *c, double s1, double step_out, bool rec)
             if ((target - s1) * sg >= 0.0 || fabs(target - s1) < ORI_KIN_GRID_MERGE * step_out) target = s1;
         }
     }
-done:
     ori__free(t);
     ori__free(tp);
     ori__free(thp);
@@ -390,14 +507,19 @@ static int choose_candidate(const ctx *c, double cand[2][3], int nc, const doubl
     return near;
 }
 
-static leg_result analytic_leg(ctx *c, double s1, double step_out, bool rec)
+// Closed-form walk from the current drive value to s1, recording at each output value; esc
+// (may be NULL) supplies the states up to the escape from a singular start (there the closed
+// form loses half its digits: the state is the escape's interpolation, polished on the loop).
+static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, const kin_escape *esc)
 {
     const ori_mechanism *m = c->m;
     const kin_loop *L = &m->loops[c->sp.loop];
+    int J = m->joint_count;
     int fj[3];
     for (int i = 0; i < 3; ++i) fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
     double s = c->th[c->jd];
     if (s1 == s) return LEG_OK;
+    double *scratch = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double sg = s1 > s ? 1.0 : -1.0;
     double prev[3], prev_s = s;
     bool have_prev = false;
@@ -406,31 +528,53 @@ static leg_result analytic_leg(ctx *c, double s1, double step_out, bool rec)
     double target = s + sg * step_out;
     if ((target - s1) * sg >= 0.0 || !rec) target = s1;
     double h = ORI_KIN_TRACK_STEP_RAD;
-    bool first = true;
+    leg_result result = LEG_OK;
     for (;;) {
         s = c->th[c->jd];
         if (s == s1 && (!rec || target == s1)) break;
         double dist = fabs(target - s);
-        double hh = fmin(h, dist);
-        if (dist - hh < 0.25 * hh) hh = dist;
-        double snew = hh == dist ? target : s + sg * hh;
+        bool in_esc = esc && (s - esc->s1) * sg < 0.0;
+        double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
+        if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
+        double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
         double pred[3];
         for (int i = 0; i < 3; ++i) {
             pred[i] = c->th[fj[i]];
-            if (have_prev && s != prev_s) pred[i] += (c->th[fj[i]] - prev[i]) * (snew - s) / (s - prev_s);
+            if (in_esc)
+                pred[i] = hermite(esc->s0, esc->th0[fj[i]], esc->t0[fj[i]], esc->s1, esc->th1[fj[i]], esc->t1[fj[i]], snew);
+            else if (have_prev && s != prev_s)
+                pred[i] += (c->th[fj[i]] - prev[i]) * (snew - s) / (s - prev_s);
         }
         double cand[2][3];
         int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, pred, cand);
-        if (nc == 0) {
+        int k = nc > 0 ? choose_candidate(c, cand, nc, pred, hh) : 0;
+        if (in_esc) {
+            // The branch is the escape's: its interpolation, polished.
+            double x[3] = {pred[0], pred[1], pred[2]};
+            if (ori__kin_spherical_polish(m, &c->sp, c->th, snew, x) <= ORI_TOL_RESIDUAL) {
+                if (nc == 0) nc = 1;
+                if (nc == 2 && cand_distance(cand[1 - k], x) < cand_distance(cand[k], x)) k = 1 - k;
+                for (int i = 0; i < 3; ++i) cand[k][i] = x[i];
+            } else {
+                nc = 0;
+            }
+        }
+        if (nc > 0) {
+            memcpy(scratch, c->th, sizeof(double) * (size_t)J);
+            for (int i = 0; i < 3; ++i) scratch[fj[i]] = cand[k][i];
+        }
+        // No solution, or a moving crease turned past ±π within this step (or only seems to,
+        // near a fully folded state): halve; a stop there is located by locate_stop.
+        if (nc == 0 || beyond_limit(c, scratch)) {
             h = 0.5 * hh;
             c->mo->stats.rejected_steps++;
             if (h < ORI_KIN_MIN_STEP_RAD) {
-                c->blocked_at = s;
-                return first ? LEG_NONE : LEG_BLOCKED;
+                locate_stop(c, snew);
+                result = LEG_BLOCKED;
+                break;
             }
             continue;
         }
-        int k = choose_candidate(c, cand, nc, pred, hh);
         c->has_alt = nc == 2;
         if (nc == 2)
             for (int i = 0; i < 3; ++i) c->alt[i] = cand[1 - k][i];
@@ -440,7 +584,6 @@ static leg_result analytic_leg(ctx *c, double s1, double step_out, bool rec)
         for (int i = 0; i < 3; ++i) c->th[fj[i]] = cand[k][i];
         c->th[c->jd] = snew;
         c->mo->stats.steps++;
-        first = false;
         check_signs(c);
         h = ORI_KIN_TRACK_STEP_RAD;
         if (snew == target) {
@@ -451,13 +594,102 @@ static leg_result analytic_leg(ctx *c, double s1, double step_out, bool rec)
             if ((target - s1) * sg >= 0.0 || fabs(target - s1) < ORI_KIN_GRID_MERGE * step_out) target = s1;
         }
     }
-    return LEG_OK;
+    ori__free(scratch);
+    return result;
 }
 
+static leg_result walk(ctx *c, double s1, double step_out, bool rec, const double *t_first, const kin_escape *esc)
+{
+    return c->analytic ? analytic_walk(c, s1, step_out, rec, esc) : numeric_walk(c, s1, step_out, rec, t_first, esc);
+}
+
+// A stop within ORI_KIN_ESCAPE_RAD of a singular start (or before any step) is no motion at all.
+static leg_result classify_stop(const ctx *c, leg_result r, double s_start, bool singular)
+{
+    if (r != LEG_BLOCKED) return r;
+    double moved = fabs(c->blocked_at - s_start);
+    if (moved == 0.0 || (singular && moved < ORI_KIN_ESCAPE_RAD)) return LEG_NONE;
+    return LEG_BLOCKED;
+}
+
+// A leg from the current drive value to s1 (closed form or numeric). At a singular start, the cone analysis gives
+// the branch's tangent; the walk first escapes silently a fixed ORI_KIN_SINGULAR_STEP_RAD
+// along it (whatever the output step and the target), the rank is judged there, and the
+// output walk then interpolates the escape: the verdict depends on neither --step nor a tiny
+// target.
 static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
 {
-    return c->analytic ? analytic_leg(c, s1, step_out, rec) : numeric_leg(c, s1, step_out, rec);
+    const ori_mechanism *m = c->m;
+    int J = m->joint_count;
+    double s = c->th[c->jd];
+    if (s1 == s) return LEG_OK;
+    double sg = s1 > s ? 1.0 : -1.0;
+    double *t = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    leg_result r;
+    if (!start_singular(c, t)) {
+        r = classify_stop(c, walk(c, s1, step_out, rec, NULL, NULL), s, false);
+        ori__free(t);
+        return r;
+    }
+    int extra = 0;
+    kin_cone_result cr = ori__kin_cone(m, c->th, c->col, c->ncols, c->jd, sg, false, t, &extra);
+    if (cr == KIN_CONE_NONE || cr == KIN_CONE_INCOMPATIBLE) {
+        c->incompatible = cr == KIN_CONE_INCOMPATIBLE;
+        ori__free(t);
+        return LEG_NONE;
+    }
+    if (cr == KIN_CONE_UNDERDETERMINED) {
+        c->extra_dof = extra;
+        ori__free(t);
+        return LEG_UNDER;
+    }
+    if (cr == KIN_CONE_VIOLATING) c->cone_violating = true;
+    for (int j = 0; j < J; ++j) t[j] *= sg; // per unit drive: v has v[jd] = ±1
+    kin_escape esc;
+    esc.s0 = s;
+    esc.t0 = t;
+    esc.th0 = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    esc.th1 = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    esc.t1 = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    memcpy(esc.th0, c->th, sizeof(double) * (size_t)J);
+    double se = s + sg * ORI_KIN_SINGULAR_STEP_RAD;
+    if (fabs(se) > ORI_PI) se = sg * ORI_PI;
+    // The worst wrong-sign angles of the escape count only where the output reaches.
+    double *worst = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *worst_at = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    memcpy(worst, c->worst, sizeof(double) * (size_t)J);
+    memcpy(worst_at, c->worst_at, sizeof(double) * (size_t)J);
+    r = classify_stop(c, walk(c, se, ORI_KIN_SINGULAR_STEP_RAD, false, t, NULL), s, true);
+    memcpy(c->worst, worst, sizeof(double) * (size_t)J);
+    memcpy(c->worst_at, worst_at, sizeof(double) * (size_t)J);
+    ori__free(worst);
+    ori__free(worst_at);
+    if (r == LEG_OK) {
+        // Out of the singular start the constrained Jacobian must be regular, else the fold
+        // leaves freedom the drive does not fix.
+        int n2 = ori__kin_solver_nullity(c->solver, c->th);
+        if (n2 > 0) {
+            c->extra_dof = n2;
+            r = LEG_UNDER;
+        }
+    }
+    if (r == LEG_OK || r == LEG_BLOCKED) {
+        esc.s1 = c->th[c->jd];
+        memcpy(esc.th1, c->th, sizeof(double) * (size_t)J);
+        if (r != LEG_OK || !ori__kin_tangent(c->solver, c->th, esc.t1))
+            for (int j = 0; j < J; ++j) esc.t1[j] = (esc.th1[j] - esc.th0[j]) / (esc.s1 - esc.s0);
+        memcpy(c->th, esc.th0, sizeof(double) * (size_t)J);
+        c->block_kind = ORI_BLOCK_NONE;
+        c->block_joint = -1;
+        r = classify_stop(c, walk(c, s1, step_out, rec, t, &esc), s, true);
+    }
+    ori__free(esc.th0);
+    ori__free(esc.th1);
+    ori__free(esc.t1);
+    ori__free(t);
+    return r;
 }
+
 
 // --- the single-vertex split ---------------------------------------------------------------
 
@@ -574,14 +806,81 @@ static ori_status check_crease(const ori_mechanism *m, int e, const char *role, 
     return ORI_OK;
 }
 
-static void append_reason(ori_motion *mo, const char *fmt, double a, double b)
+static double deg(double rad) { return ori_rad_to_deg_output(rad); }
+
+// The creases that move without the drive at a singular stop: the right singular vector of the
+// smallest singular value of the Jacobian over the free creases (dense SVD; skipped above
+// ORI_KIN_SINGULAR_SET_MAX_COLS free creases or ORI_DOF_DENSE_MAX_ENTRIES entries).
+static void singular_set(const ctx *c, ori_motion_block *b)
 {
-    size_t len = strlen(mo->reason);
-    if (len + 1 >= sizeof mo->reason) return;
-    snprintf(mo->reason + len, sizeof mo->reason - len, fmt, a, b);
+    const ori_mechanism *m = c->m;
+    int n = c->ncols, rows = m->rows;
+    b->singular_count = 0;
+    if (n == 0 || rows == 0 || n > ORI_KIN_SINGULAR_SET_MAX_COLS ||
+        (size_t)rows * (size_t)n > (size_t)ORI_DOF_DENSE_MAX_ENTRIES)
+        return;
+    double *blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
+    ori__kin_eval(m, c->th, NULL, blocks, NULL);
+    int ld = rows > n ? rows : n; // at least n rows so that every right singular vector exists
+    double *a = ori__calloc((size_t)ld * (size_t)n, sizeof(double));
+    for (int l = 0; l < m->loop_count; ++l) {
+        const kin_loop *L = &m->loops[l];
+        for (int k = 0; k < L->col_count; ++k) {
+            int col = c->col[m->loop_cols[L->col_first + k]];
+            if (col < 0) continue;
+            for (int r = 0; r < L->rows; ++r) a[(size_t)(L->row0 + r) + (size_t)ld * (size_t)col] = blocks[6 * (L->col_first + k) + r];
+        }
+    }
+    double *sv = ori__alloc(sizeof(double) * (size_t)(n + 1));
+    double *vt = ori__alloc(sizeof(double) * (size_t)n * (size_t)n);
+    double *sup = ori__alloc(sizeof(double) * (size_t)(n + 1));
+    lapack_int info = LAPACKE_dgesvd(LAPACK_COL_MAJOR, 'N', 'A', ld, n, a, ld, sv, NULL, 1, vt, n, sup);
+    if (info == 0) {
+        // Row n − 1 of Vᵀ: the direction of the smallest singular value.
+        double big = 0.0;
+        for (int k = 0; k < n; ++k) big = fmax(big, fabs(vt[(n - 1) + (size_t)n * (size_t)k]));
+        for (int j = 0; j < m->joint_count && big > 0.0; ++j) {
+            int k = c->col[j];
+            if (k < 0 || fabs(vt[(n - 1) + (size_t)n * (size_t)k]) < ORI_KIN_SINGULAR_SET_REL * big) continue;
+            if (b->singular_count < 32) b->singular_edges[b->singular_count] = m->joints[j].edge;
+            b->singular_count++;
+        }
+        if (b->singular_count > 32) b->singular_count = 32;
+    }
+    ori__free(blocks);
+    ori__free(a);
+    ori__free(sv);
+    ori__free(vt);
+    ori__free(sup);
 }
 
-static double deg(double rad) { return ori_rad_to_deg_output(rad); }
+// The reason of a stop: "the motion stops at crease D = X°: …".
+static void describe_stop(ori_motion *mo, const ori_motion_block *b, int driven_edge)
+{
+    size_t len = strlen(mo->reason);
+    char *p = mo->reason + len;
+    size_t room = sizeof mo->reason - len;
+    if (b->kind == ORI_BLOCK_CREASE_LIMIT) {
+        snprintf(p, room,
+                 "the motion stops at crease %d = %.10g°, where crease %d reaches %s180° (beyond, its faces would "
+                 "pass through each other)",
+                 driven_edge, deg(b->drive_rad), b->edge, b->edge_angle_rad < 0 ? "-" : "");
+        return;
+    }
+    int w = snprintf(p, room, "the motion stops at crease %d = %.10g°, a singular point (a limit of the drive or a "
+                              "bifurcation)",
+                     driven_edge, deg(b->drive_rad));
+    if (w < 0 || (size_t)w >= room || b->singular_count == 0) return;
+    p += w;
+    room -= (size_t)w;
+    w = snprintf(p, room, " where crease%s", b->singular_count == 1 ? "" : "s");
+    for (int i = 0; i < b->singular_count && w >= 0 && (size_t)w < room; ++i) {
+        p += w;
+        room -= (size_t)w;
+        w = snprintf(p, room, "%s%d", i == 0 ? " " : i + 1 == b->singular_count ? " and " : ", ", b->singular_edges[i]);
+    }
+    if (w >= 0 && (size_t)w < room) snprintf(p + w, room - (size_t)w, " can move with the drive held");
+}
 
 ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, ori_motion **out, ori_error *error)
 {
@@ -690,6 +989,21 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         record(&c);
         lr = run_leg(&c, def->to_rad, def->step_rad, true);
     }
+    mo->block.kind = ORI_BLOCK_NONE;
+    mo->block.edge = ORI_NULL_INDEX;
+    if (lr == LEG_BLOCKED) {
+        // The stop itself closes the output (partial: up to the stop).
+        if (mo->nframes > 0 && mo->drive[mo->nframes - 1] != c.th[jd]) record(&c);
+        ori_motion_block *b = &mo->block;
+        b->kind = c.block_kind == ORI_BLOCK_NONE ? ORI_BLOCK_SINGULAR : c.block_kind;
+        b->drive_rad = c.th[jd];
+        if (b->kind == ORI_BLOCK_CREASE_LIMIT) {
+            b->edge = m->joints[c.block_joint].edge;
+            b->edge_angle_rad = c.th[c.block_joint] < 0.0 ? -ORI_PI : ORI_PI;
+        } else {
+            singular_set(&c, b);
+        }
+    }
     mo->stats.factorizations = c.analytic ? 0 : ori__kin_solver_factorizations(c.solver);
     mo->stats.sweep_iterations = c.analytic ? 0 : ori__kin_solver_sweep_iterations(c.solver);
 
@@ -751,14 +1065,15 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
             size_t len = strlen(mo->reason);
             if (len + strlen(buf) + 1 < sizeof mo->reason) memcpy(mo->reason + len, buf, strlen(buf) + 1);
         }
-        if (lr == LEG_BLOCKED)
-            append_reason(mo, "; the motion also stops at %.10g°%.0s", deg(c.blocked_at), 0.0);
+        if (lr == LEG_BLOCKED) {
+            size_t len = strlen(mo->reason);
+            if (len + 3 < sizeof mo->reason) memcpy(mo->reason + len, "; ", 3);
+            describe_stop(mo, &mo->block, def->driven_edge);
+        }
     } else if (lr == LEG_BLOCKED) {
         mo->verdict = ORI_MOTION_BLOCKED;
-        snprintf(mo->reason, sizeof mo->reason,
-                 "the motion stops at crease %d = %.10g°: no rigid configuration beyond (a limit of the motion or a "
-                 "singular point)",
-                 def->driven_edge, deg(c.blocked_at));
+        mo->reason[0] = '\0';
+        describe_stop(mo, &mo->block, def->driven_edge);
     } else {
         mo->verdict = ORI_MOTION_VALID;
     }
@@ -936,4 +1251,12 @@ bool ori_motion_split(const ori_motion *mo, ori_vertex_split *out)
 }
 
 ori_motion_stats ori_motion_stats_of(const ori_motion *mo) { ORI_ASSERT(mo); return mo->stats; }
+
+bool ori_motion_block_of(const ori_motion *mo, ori_motion_block *out)
+{
+    ORI_ASSERT(mo);
+    if (mo->block.kind == ORI_BLOCK_NONE) return false;
+    if (out) *out = mo->block;
+    return true;
+}
 int ori_motion_dof(const ori_motion *mo) { ORI_ASSERT(mo); return mo->dof; }

@@ -17,6 +17,7 @@
 // (R(u1,x1) R(u2,x2))ᵀ G about u3. Where a step is indeterminate (A = B = 0: u1 ∥ u2 or
 // p ∥ u2; or R(u2,x2) p ∥ u1: a hinge family through the flat state) the predicted value
 // stands in; every candidate is verified by its loop residual.
+#include <lapacke.h>
 #include <math.h>
 
 #include "kinematics_internal.h"
@@ -85,15 +86,58 @@ static double near_to(double x, double reference)
     return reference + ori_wrap_angle(x - reference);
 }
 
-int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
-                             const double pred[3], double cand[2][3])
+// Loop product R(a0, drive) C0 R(a1, x1) C1 R(a2, x2) C2 R(a3, x3) C3 and, when w is not NULL,
+// the spatial axes of the three free rotations (the Jacobian columns of its rotation vector).
+static ori_m3 loop_product(const ori_v3 a[4], const ori_m3 C[4], double drive, const double x[3], ori_v3 w[3])
+{
+    ori_m3 P = ori_m3_mul(ori_m3_rotation(a[0], drive), C[0]);
+    for (int k = 0; k < 3; ++k) {
+        if (w) w[k] = ori_m3_apply(P, a[k + 1]);
+        P = ori_m3_mul(ori_m3_mul(P, ori_m3_rotation(a[k + 1], x[k])), C[k + 1]);
+    }
+    return P;
+}
+
+static double loop_deviation(ori_m3 P)
+{
+    double dev = 0.0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) dev = fmax(dev, fabs(P.m[i][j] - (i == j ? 1.0 : 0.0)));
+    return dev;
+}
+
+// Newton polish of a candidate (minimum-norm steps: near the flat state the three free axes
+// are almost coplanar). The input–output equation loses half the digits where its two roots
+// merge (acos near ±1: the flat state, a turning point), so the closed form is the start and
+// the loop equation itself the judge. Returns the final deviation of P from I.
+static double polish(const ori_v3 a[4], const ori_m3 C[4], double drive, double x[3])
+{
+    ori_v3 w[3];
+    double dev = loop_deviation(loop_product(a, C, drive, x, w));
+    for (int it = 0; it < ORI_KIN_SPHERICAL_POLISH_MAX && dev > ORI_TOL_NEWTON; ++it) {
+        ori_v3 r = ori__kin_rotvec(loop_product(a, C, drive, x, w));
+        double A[9] = {w[0].x, w[0].y, w[0].z, w[1].x, w[1].y, w[1].z, w[2].x, w[2].y, w[2].z};
+        double b[3] = {-r.x, -r.y, -r.z}, sv[3];
+        lapack_int rank;
+        if (LAPACKE_dgelss(LAPACK_COL_MAJOR, 3, 3, 1, A, 3, b, 3, sv, ORI_TOL_RANK_REL, &rank) != 0) break;
+        double y[3] = {x[0] + b[0], x[1] + b[1], x[2] + b[2]};
+        double d2 = loop_deviation(loop_product(a, C, drive, y, NULL));
+        if (!(d2 < dev)) break;
+        dev = d2;
+        x[0] = y[0];
+        x[1] = y[1];
+        x[2] = y[2];
+    }
+    return dev;
+}
+
+// The loop's axes (drive, free 1–3) and the constant rotations between them (locked creases
+// at their angle in th), in loop order from the drive.
+static void loop_setup(const ori_mechanism *m, const kin_spherical *sp, const double *th, ori_v3 a[4], ori_m3 C[4])
 {
     const kin_loop *L = &m->loops[sp->loop];
     int n = L->count;
-    // Rotation of each entry (locked ones at their current angle) in loop order from the drive.
-    ori_m3 C[4];
     for (int k = 0; k < 4; ++k) C[k] = ori_m3_identity();
-    ori_v3 a[4];
     a[0] = m->entries[L->first + sp->drive_entry].axis;
     int seg = 0; // constants between drive (0) and free 1 → C[0]; free1..free2 → C[1]; …
     for (int k = 1; k < n; ++k) {
@@ -106,6 +150,23 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         }
         C[seg] = ori_m3_mul(C[seg], ori_m3_rotation(en->axis, th[en->joint]));
     }
+}
+
+double ori__kin_spherical_polish(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
+                                 double x[3])
+{
+    ori_v3 a[4];
+    ori_m3 C[4];
+    loop_setup(m, sp, th, a, C);
+    return polish(a, C, drive, x);
+}
+
+int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
+                             const double pred[3], double cand[2][3])
+{
+    ori_m3 C[4];
+    ori_v3 a[4];
+    loop_setup(m, sp, th, a, C);
     // R(a0,xd) C0 R(a1,x1) C1 R(a2,x2) C2 R(a3,x3) C3 = I.
     ori_m3 C12 = ori_m3_mul(C[1], C[2]);
     ori_v3 u1 = a[1];
@@ -147,21 +208,16 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         ori_v3 w = any_perp(u3);
         double x3 = angle_about(u3, w, ori_m3_apply(H, w), &ok);
         x3 = near_to(ok ? x3 : pred[2], pred[2]);
+        double x[3] = {x1, x2, x3};
+        // Verify the loop with every crease at its value (after the polish).
+        double dev = polish(a, C, drive, x);
+        if (!(dev <= ORI_TOL_RESIDUAL)) continue;
+        x1 = x[0];
+        x2 = x[1];
+        x3 = x[2];
         cand[count][0] = x1;
         cand[count][1] = x2;
         cand[count][2] = x3;
-        // Verify the loop with every crease at its value.
-        ori_m3 P = ori_m3_mul(ori_m3_rotation(a[0], drive), C[0]);
-        P = ori_m3_mul(P, ori_m3_rotation(a[1], x1));
-        P = ori_m3_mul(P, C[1]);
-        P = ori_m3_mul(P, ori_m3_rotation(a[2], x2));
-        P = ori_m3_mul(P, C[2]);
-        P = ori_m3_mul(P, ori_m3_rotation(a[3], x3));
-        P = ori_m3_mul(P, C[3]);
-        double dev = 0.0;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) dev = fmax(dev, fabs(P.m[i][j] - (i == j ? 1.0 : 0.0)));
-        if (!(dev <= ORI_TOL_RESIDUAL)) continue;
         // Drop an exact duplicate (double root).
         if (count == 1 && fabs(cand[0][0] - x1) + fabs(cand[0][1] - x2) + fabs(cand[0][2] - x3) == 0.0) continue;
         count++;
