@@ -186,10 +186,12 @@ bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int 
 
 // Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
 // at most this many times, down to this interval (radians); a stop with a moving crease within
-// ORI_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point.
+// ORI_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point. (A crease folded
+// flat onto its neighbour is often also a turning point of the drive, where the numeric
+// corrector reaches the stop only to about √ of the drive's resolution.)
 #define ORI_KIN_STOP_BISECTIONS 200
 #define ORI_KIN_STOP_DRIVE_RAD 1e-13
-#define ORI_KIN_STOP_LIMIT_RAD 1e-6
+#define ORI_KIN_STOP_LIMIT_RAD 1e-2
 // Creases whose component in the null vector at a singular stop is at least this fraction of
 // the largest are named as the singular set (the Jacobian is decomposed densely up to
 // ORI_KIN_SINGULAR_SET_MAX_COLS free creases).

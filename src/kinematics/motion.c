@@ -217,6 +217,14 @@ static double cand_distance(const double a[3], const double b[3])
     return fmax(fabs(a[0] - b[0]), fmax(fabs(a[1] - b[1]), fabs(a[2] - b[2])));
 }
 
+// Choose among closed-form candidates: the one nearest to the prediction, i.e. the smooth
+// continuation of the branch followed so far (as the numeric corrector does). Where the branch
+// starts (a singular start) the cone analysis chose it (by_cone below).
+static int choose_candidate(double cand[2][3], int nc, const double pred[3])
+{
+    return nc == 2 && cand_distance(cand[1], pred) < cand_distance(cand[0], pred) ? 1 : 0;
+}
+
 // The state at drive value s_new continued from the accepted state c->th by a short step: the
 // closed-form branch nearest to it, or a tangent prediction and the corrector. False when there
 // is none (or the corrector jumped to another branch).
@@ -237,7 +245,7 @@ static bool state_at(ctx *c, double s_new, double *out)
         }
         int nc = ori__kin_spherical_solve(m, &c->sp, c->th, s_new, pred, cand);
         if (nc == 0) return false;
-        int k = nc == 2 && cand_distance(cand[1], pred) < cand_distance(cand[0], pred) ? 1 : 0;
+        int k = choose_candidate(cand, nc, pred);
         for (int i = 0; i < 3; ++i) out[fj[i]] = cand[k][i];
         return true;
     }
@@ -302,8 +310,10 @@ static void locate_stop(ctx *c, double s_out)
 static bool start_singular(ctx *c, double *t)
 {
     int nul = ori__kin_solver_nullity(c->solver, c->th);
-    if (nul == 0 && ori__kin_tangent(c->solver, c->th, t) && ori__kin_tangent_defect(c->solver, c->th, t) > ORI_TOL_CONE_REL)
-        nul = 1;
+    if (nul == 0) {
+        if (!ori__kin_tangent(c->solver, c->th, t)) memset(t, 0, sizeof(double) * (size_t)c->m->joint_count);
+        else if (ori__kin_tangent_defect(c->solver, c->th, t) > ORI_TOL_CONE_REL) nul = 1;
+    }
     if (nul == 0 && ori__kin_loops_deficient(c->m, c->th, c->col, c->jd)) nul = 1;
     return nul > 0;
 }
@@ -483,34 +493,11 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
     return result;
 }
 
-// Choose among closed-form candidates: nearest to the prediction; among candidates about as
-// near (branches crossing, e.g. at the flat state), the one the assignment admits.
-static int choose_candidate(const ctx *c, double cand[2][3], int nc, const double pred[3], double dh)
-{
-    const kin_loop *L = &c->m->loops[c->sp.loop];
-    double d[2];
-    int bad[2];
-    for (int k = 0; k < nc; ++k) {
-        d[k] = 0.0;
-        bad[k] = 0;
-        for (int i = 0; i < 3; ++i) {
-            d[k] = fmax(d[k], fabs(cand[k][i] - pred[i]));
-            int j = c->m->entries[L->first + c->sp.free_entry[i]].joint;
-            int s = assigned_sign(c->m, j);
-            if (s != 0 && fabs(cand[k][i]) > ORI_TOL_FOLD_SIGN_RAD && cand[k][i] * s < 0.0) bad[k]++;
-        }
-    }
-    if (nc == 1) return 0;
-    int near = d[0] <= d[1] ? 0 : 1, other = 1 - near;
-    bool both_near = d[other] <= fmax(3.0 * d[near], 4.0 * dh);
-    if (both_near && bad[other] < bad[near]) return other;
-    return near;
-}
-
 // Closed-form walk from the current drive value to s1, recording at each output value; esc
 // (may be NULL) supplies the states up to the escape from a singular start (there the closed
 // form loses half its digits: the state is the escape's interpolation, polished on the loop).
-static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, const kin_escape *esc)
+static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, const double *t_first,
+                                const kin_escape *esc)
 {
     const ori_mechanism *m = c->m;
     const kin_loop *L = &m->loops[c->sp.loop];
@@ -529,11 +516,15 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
     if ((target - s1) * sg >= 0.0 || !rec) target = s1;
     double h = ORI_KIN_TRACK_STEP_RAD;
     leg_result result = LEG_OK;
+    bool first = true;
     for (;;) {
         s = c->th[c->jd];
         if (s == s1 && (!rec || target == s1)) break;
         double dist = fabs(target - s);
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
+        // Out of the start the branch is the tangent's (the cone's at a singular start), as for
+        // the numeric solver.
+        bool by_cone = first && t_first && !esc;
         double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
@@ -542,16 +533,18 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
             pred[i] = c->th[fj[i]];
             if (in_esc)
                 pred[i] = hermite(esc->s0, esc->th0[fj[i]], esc->t0[fj[i]], esc->s1, esc->th1[fj[i]], esc->t1[fj[i]], snew);
+            else if (by_cone)
+                pred[i] += (snew - s) * t_first[fj[i]];
             else if (have_prev && s != prev_s)
                 pred[i] += (c->th[fj[i]] - prev[i]) * (snew - s) / (s - prev_s);
         }
         double cand[2][3];
         int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, pred, cand);
-        int k = nc > 0 ? choose_candidate(c, cand, nc, pred, hh) : 0;
+        int k = choose_candidate(cand, nc, pred);
         if (in_esc) {
             // The branch is the escape's: its interpolation, polished.
             double x[3] = {pred[0], pred[1], pred[2]};
-            if (ori__kin_spherical_polish(m, &c->sp, c->th, snew, x) <= ORI_TOL_RESIDUAL) {
+            if (ori__kin_spherical_polish(m, &c->sp, c->th, snew, x) <= 0.5 * ORI_TOL_RESIDUAL) {
                 if (nc == 0) nc = 1;
                 if (nc == 2 && cand_distance(cand[1 - k], x) < cand_distance(cand[k], x)) k = 1 - k;
                 for (int i = 0; i < 3; ++i) cand[k][i] = x[i];
@@ -585,6 +578,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         c->th[c->jd] = snew;
         c->mo->stats.steps++;
         check_signs(c);
+        first = false;
         h = ORI_KIN_TRACK_STEP_RAD;
         if (snew == target) {
             if (rec) record(c);
@@ -600,7 +594,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
 
 static leg_result walk(ctx *c, double s1, double step_out, bool rec, const double *t_first, const kin_escape *esc)
 {
-    return c->analytic ? analytic_walk(c, s1, step_out, rec, esc) : numeric_walk(c, s1, step_out, rec, t_first, esc);
+    return c->analytic ? analytic_walk(c, s1, step_out, rec, t_first, esc) : numeric_walk(c, s1, step_out, rec, t_first, esc);
 }
 
 // A stop within ORI_KIN_ESCAPE_RAD of a singular start (or before any step) is no motion at all.
@@ -627,7 +621,9 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
     double *t = ori__alloc(sizeof(double) * (size_t)(J + 1));
     leg_result r;
     if (!start_singular(c, t)) {
-        r = classify_stop(c, walk(c, s1, step_out, rec, NULL, NULL), s, false);
+        // The closed form takes its first step along the tangent too (its own candidates are
+        // told apart by nearness to the prediction).
+        r = classify_stop(c, c->analytic ? analytic_walk(c, s1, step_out, rec, t, NULL) : walk(c, s1, step_out, rec, NULL, NULL), s, false);
         ori__free(t);
         return r;
     }
@@ -862,9 +858,9 @@ static void describe_stop(ori_motion *mo, const ori_motion_block *b, int driven_
     size_t room = sizeof mo->reason - len;
     if (b->kind == ORI_BLOCK_CREASE_LIMIT) {
         snprintf(p, room,
-                 "the motion stops at crease %d = %.10g°, where crease %d reaches %s180° (beyond, its faces would "
-                 "pass through each other)",
-                 driven_edge, deg(b->drive_rad), b->edge, b->edge_angle_rad < 0 ? "-" : "");
+                 "the motion stops at crease %d = %.10g°, where crease %d reaches %.10g° (the limit %s180°: beyond, "
+                 "its faces would pass through each other)",
+                 driven_edge, deg(b->drive_rad), b->edge, deg(b->edge_angle_rad), b->edge_angle_rad < 0 ? "-" : "");
         return;
     }
     int w = snprintf(p, room, "the motion stops at crease %d = %.10g°, a singular point (a limit of the drive or a "
@@ -999,7 +995,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         b->drive_rad = c.th[jd];
         if (b->kind == ORI_BLOCK_CREASE_LIMIT) {
             b->edge = m->joints[c.block_joint].edge;
-            b->edge_angle_rad = c.th[c.block_joint] < 0.0 ? -ORI_PI : ORI_PI;
+            b->edge_angle_rad = fmax(-ORI_PI, fmin(ORI_PI, c.th[c.block_joint]));
         } else {
             singular_set(&c, b);
         }
@@ -1021,7 +1017,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
                 ori_crease_violation v;
                 v.edge = m->joints[j].edge;
                 v.assignment = m->joints[j].assignment;
-                v.angle_rad = c.worst[j];
+                v.angle_rad = fmax(-ORI_PI, fmin(ORI_PI, c.worst[j]));
                 v.drive_rad = c.worst_at[j];
                 mo->viol[k++] = v;
             }

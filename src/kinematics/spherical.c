@@ -211,7 +211,7 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         double x[3] = {x1, x2, x3};
         // Verify the loop with every crease at its value (after the polish).
         double dev = polish(a, C, drive, x);
-        if (!(dev <= ORI_TOL_RESIDUAL)) continue;
+        if (!(dev <= 0.5 * ORI_TOL_RESIDUAL)) continue; // half: the mechanism measures the loop its own way
         x1 = x[0];
         x2 = x[1];
         x3 = x[2];

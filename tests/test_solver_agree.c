@@ -1,0 +1,333 @@
+// The two fold solvers agree (issue 14): random single vertices of degree 4–8 with random
+// assignments, random fold specifications (fixed face, driven crease, locks leaving a spherical
+// 4R, target, step; flat or folded starts), solved in closed form and by numeric continuation:
+// the same verdict, the same frames to 1e-9°, the same stop, and no crease ever outside
+// [−180°, 180°]. And the verdict of a fold from the flat sheet does not depend on the output
+// step or on how small the target is (issue 7 §3).
+#define _DEFAULT_SOURCE
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support.h"
+
+TestSuite(solver_agree, .init = test_leak_setup, .fini = test_leak_check);
+
+#define DEG (ORI_PI / 180.0)
+
+// The last vertex built, quoted when the solvers disagree on it.
+static char last_text[4096];
+
+// A single vertex at the origin with n creases to the unit circle at the given angles
+// (increasing, consecutive gaps below 180°) and boundary chords between their ends.
+static ori_pattern *vertex_pattern(int n, const double *theta, const char *assign)
+{
+    char text[4096];
+    size_t len = 0;
+    len += (size_t)snprintf(text + len, sizeof text - len, "{\"vertices_coords\":[[0,0]");
+    for (int i = 0; i < n; ++i)
+        len += (size_t)snprintf(text + len, sizeof text - len, ",[%.17g,%.17g]", cos(theta[i]), sin(theta[i]));
+    len += (size_t)snprintf(text + len, sizeof text - len, "],\"edges_vertices\":[");
+    for (int i = 0; i < n; ++i) len += (size_t)snprintf(text + len, sizeof text - len, "%s[0,%d]", i ? "," : "", i + 1);
+    for (int i = 0; i < n; ++i) len += (size_t)snprintf(text + len, sizeof text - len, ",[%d,%d]", i + 1, (i + 1) % n + 1);
+    len += (size_t)snprintf(text + len, sizeof text - len, "],\"edges_assignment\":[");
+    for (int i = 0; i < n; ++i) len += (size_t)snprintf(text + len, sizeof text - len, "%s\"%c\"", i ? "," : "", assign[i]);
+    for (int i = 0; i < n; ++i) len += (size_t)snprintf(text + len, sizeof text - len, ",\"B\"");
+    snprintf(text + len, sizeof text - len, "]}");
+    snprintf(last_text, sizeof last_text, "%s", text);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    ori_fold_destroy(doc);
+    return p;
+}
+
+static double frand(double lo, double hi) { return lo + (hi - lo) * drand48(); }
+
+// Both solvers on one specification; fails the test with the case described on disagreement.
+static void compare(const ori_mechanism *m, ori_motion_def d, const char *what)
+{
+    ori_motion *mo[2] = {NULL, NULL};
+    ori_solver solver[2] = {ORI_SOLVER_ANALYTIC, ORI_SOLVER_NUMERIC};
+    for (int k = 0; k < 2; ++k) {
+        d.solver = solver[k];
+        ori_error err;
+        cr_assert_eq(ori_motion_solve(m, &d, &mo[k], &err), ORI_OK, "%s: %s", what, err.message);
+    }
+    cr_assert(ori_motion_stats_of(mo[0]).analytic && !ori_motion_stats_of(mo[1]).analytic, "%s", what);
+    ori_motion_verdict v = ori_motion_verdict_of(mo[0]);
+    cr_assert_eq(v, ori_motion_verdict_of(mo[1]), "%s (%s): closed form %s (%s), numeric %s (%s)", what,
+                 last_text, ori_motion_verdict_name(v), ori_motion_reason(mo[0]) ? ori_motion_reason(mo[0]) : "",
+                 ori_motion_verdict_name(ori_motion_verdict_of(mo[1])),
+                 ori_motion_reason(mo[1]) ? ori_motion_reason(mo[1]) : "");
+    int n = ori_motion_frame_count(mo[0]);
+    cr_assert_eq(n, ori_motion_frame_count(mo[1]), "%s (%s): %d frames vs %d", what, last_text, n, ori_motion_frame_count(mo[1]));
+    ori_motion_block b[2];
+    bool blocked = ori_motion_block_of(mo[0], &b[0]);
+    cr_assert_eq(blocked, ori_motion_block_of(mo[1], &b[1]), "%s (%s): one solver stops, the other not: %s / %s", what, last_text, ori_motion_reason(mo[0]) ? ori_motion_reason(mo[0]) : "-", ori_motion_reason(mo[1]) ? ori_motion_reason(mo[1]) : "-");
+    if (blocked) {
+        cr_assert_eq(b[0].kind, b[1].kind, "%s (%s): stops of different kinds (%d, %d)", what, last_text, b[0].kind, b[1].kind);
+        // Both bisect the drive to ORI_KIN_STOP_DRIVE_RAD, but where the stop is a singular point
+        // (a limit of the drive, also where a crease reaches ±180° at a turning point) the
+        // corrector only keeps about √ε there: the stop is compared to 1e-6 rad, its frame to 1e-3.
+        cr_assert(fabs(b[0].drive_rad - b[1].drive_rad) <= 1e-6, "%s (%s): stops at %.12g° and %.12g°", what, last_text,
+                  b[0].drive_rad / DEG, b[1].drive_rad / DEG);
+        if (b[0].kind == ORI_BLOCK_CREASE_LIMIT) cr_assert_eq(b[0].edge, b[1].edge, "%s: limit crease", what);
+    }
+    int E = ori_mechanism_edge_count(m);
+    for (int f = 0; f < n; ++f) {
+        // The stop frame is compared at its own accuracy (above).
+        bool stop = blocked && f == n - 1;
+        const double *a0 = ori_motion_frame_angles(mo[0], f), *a1 = ori_motion_frame_angles(mo[1], f);
+        // Within 1° of the flat state or of ±180° (singular configurations: the numeric
+        // corrector's residual 1e-13 then leaves about 1e-13 / σ_min in the angles) 1e-7°,
+        // elsewhere 1e-9°.
+        bool near_singular = fabs(ori_motion_frame_drive(mo[0], f)) < 1.0 * DEG;
+        for (int e = 0; e < E; ++e) near_singular = near_singular || fabs(a0[e]) > 179.0 * DEG;
+        double tol = stop ? 1e-3 : near_singular ? 1e-7 * DEG : 1e-9 * DEG;
+        for (int e = 0; e < E; ++e) {
+            cr_assert(fabs(a0[e]) <= ORI_PI && fabs(a1[e]) <= ORI_PI, "%s: frame %d crease %d at %.17g° / %.17g°", what,
+                      f, e, a0[e] / DEG, a1[e] / DEG);
+            cr_assert(fabs(a0[e] - a1[e]) <= tol, "%s (%s): frame %d crease %d: %.15g° vs %.15g°", what, last_text, f, e, a0[e] / DEG,
+                      a1[e] / DEG);
+        }
+        cr_assert(ori_motion_frame_residual(mo[0], f) <= ORI_TOL_RESIDUAL, "%s: frame %d residual", what, f);
+        cr_assert(ori_motion_frame_residual(mo[1], f) <= ORI_TOL_RESIDUAL, "%s: frame %d residual", what, f);
+        double alt[64];
+        if (ori_motion_frame_other_branch(mo[0], f, alt))
+            for (int e = 0; e < E; ++e) cr_assert(fabs(alt[e]) <= ORI_PI, "%s: other branch outside", what);
+    }
+    ori_motion_destroy(mo[0]);
+    ori_motion_destroy(mo[1]);
+}
+
+Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angles)
+{
+    srand48(14);
+    int verdicts[5] = {0};
+    int cases = 0;
+    for (int trial = 0; trial < 160; ++trial) {
+        int n = 4 + (int)(drand48() * 5); // 4 … 8
+        double theta[8], gaps[8], sum = 0.0;
+        for (int i = 0; i < n; ++i) sum += gaps[i] = frand(0.3, 1.0);
+        double t = frand(0.0, 2.0 * ORI_PI), scale = 2.0 * ORI_PI / sum;
+        bool ok = true;
+        for (int i = 0; i < n; ++i) {
+            theta[i] = t;
+            t += gaps[i] * scale;
+            ok = ok && gaps[i] * scale < 170.0 * DEG && gaps[i] * scale > 12.0 * DEG;
+        }
+        if (!ok) continue;
+        char assign[8];
+        for (int i = 0; i < n; ++i) assign[i] = drand48() < 0.5 ? 'M' : 'V';
+        ori_pattern *p = vertex_pattern(n, theta, assign);
+        ori_mechanism *m = test_mechanism_of(p);
+        int E = ori_mechanism_edge_count(m);
+        for (int spec = 0; spec < 3; ++spec) {
+            // Creases are edges 0 … n−1 (the file's order); the faces are the n sectors.
+            int drive = (int)(drand48() * n);
+            int locks[8], nl = 0;
+            int perm[8];
+            for (int i = 0; i < n; ++i) perm[i] = i;
+            for (int i = n - 1; i > 0; --i) {
+                int j = (int)(drand48() * (i + 1));
+                int x = perm[i];
+                perm[i] = perm[j];
+                perm[j] = x;
+            }
+            for (int i = 0; i < n && nl < n - 4; ++i)
+                if (perm[i] != drive) locks[nl++] = perm[i];
+            ori_motion_def d = ori_default_motion_def();
+            d.fixed_face = (int)(drand48() * ori_mechanism_face_count(m));
+            d.driven_edge = drive;
+            d.locked_edges = locks;
+            d.locked_count = nl;
+            d.to_rad = frand(-180.0, 180.0) * DEG;
+            d.step_rad = frand(3.0, 60.0) * DEG;
+            double start[16] = {0};
+            if (spec == 2) {
+                // A folded start: where a numeric fold of the same vertex got to.
+                ori_motion_def s = d;
+                s.solver = ORI_SOLVER_NUMERIC;
+                s.to_rad = frand(-120.0, 120.0) * DEG;
+                s.step_rad = 30 * DEG;
+                ori_motion *mo = NULL;
+                ori_error err;
+                cr_assert_eq(ori_motion_solve(m, &s, &mo, &err), ORI_OK, "%s", err.message);
+                // Not the stop of a blocked fold: a start at a singular point (a turning point of
+                // the drive) has two ways on, and which one a solver takes is not defined.
+                int k = ori_motion_frame_count(mo) - (ori_motion_block_of(mo, NULL) ? 1 : 0);
+                if (k > 1) memcpy(start, ori_motion_frame_angles(mo, k - 1), sizeof(double) * (size_t)E);
+                // Nor through the flat state (a bifurcation, where the branches cross: each solver
+                // continues smoothly, but "smoothly" is not defined at the crossing): the target
+                // on the start's side.
+                if (k > 1 && d.to_rad * start[drive] < 0.0) d.to_rad = -d.to_rad;
+                ori_motion_destroy(mo);
+                d.start_angles_rad = start;
+            }
+            char what[256];
+            int w = snprintf(what, sizeof what, "trial %d spec %d: degree %d, fix %d, drive %d to %.17g° step %.17g°, locked",
+                             trial, spec, n, d.fixed_face, drive, d.to_rad / DEG, d.step_rad / DEG);
+            for (int i = 0; i < nl; ++i) w += snprintf(what + w, sizeof what - (size_t)w, " %d", locks[i]);
+            if (spec == 2) {
+                w += snprintf(what + w, sizeof what - (size_t)w, " (folded start");
+                for (int e = 0; e < n; ++e) w += snprintf(what + w, sizeof what - (size_t)w, " %.17g", start[e] / DEG);
+                snprintf(what + w, sizeof what - (size_t)w, ")");
+            }
+            compare(m, d, what);
+            ori_motion *mo = NULL;
+            ori_error err;
+            cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK);
+            verdicts[ori_motion_verdict_of(mo)]++;
+            ori_motion_destroy(mo);
+            cases++;
+        }
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+    cr_assert_gt(cases, 300);
+    // The sample exercises the verdicts that matter here.
+    cr_assert_gt(verdicts[ORI_MOTION_VALID], 20);
+    cr_assert_gt(verdicts[ORI_MOTION_BLOCKED], 5);
+    cr_assert_gt(verdicts[ORI_MOTION_INVALID_ASSIGNMENT], 20);
+}
+
+// The issue's vertex: the closed form folded crease 9 to −294.4° and called it valid.
+Test(solver_agree, the_issue_vertex_stops_where_crease_9_reaches_minus_180)
+{
+    const char *text =
+        "{\"vertices_coords\":[[-0.026,0.298],[-1,-0.184],[-0.181,-1],[1,0.936],[-0.817,1],[1,1],[-1,1],[-1,-1],[1,-1]],"
+        "\"edges_vertices\":[[1,7],[7,2],[2,8],[8,3],[3,5],[5,4],[4,6],[6,1],[0,1],[0,2],[0,3],[0,4]],"
+        "\"edges_assignment\":[\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"V\",\"M\",\"M\",\"M\"]}";
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK);
+    ori_fold_destroy(doc);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = 3;
+    d.driven_edge = 10;
+    d.to_rad = -ORI_PI;
+    d.step_rad = 60 * DEG;
+    compare(m, d, "issue 14 vertex");
+    for (int k = 0; k < 2; ++k) {
+        d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+        ori_motion *mo = NULL;
+        cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK);
+        cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_BLOCKED);
+        ori_motion_block b;
+        cr_assert(ori_motion_block_of(mo, &b));
+        cr_assert_eq(b.kind, ORI_BLOCK_CREASE_LIMIT);
+        cr_assert_eq(b.edge, 9);
+        // The numeric solver used to stop at −120.6797404° (within its minimum step, 1e-7 rad).
+        cr_assert(fabs(b.drive_rad / DEG + 120.67975) < 1e-4, "stop at %.10g°", b.drive_rad / DEG);
+        // Frames: 0, −60, −120 and the stop, where crease 9 is at −180° (to the bisection).
+        int n = ori_motion_frame_count(mo);
+        cr_assert_eq(n, 4);
+        cr_assert_eq(ori_motion_frame_drive(mo, n - 1), b.drive_rad);
+        const double *a = ori_motion_frame_angles(mo, n - 1);
+        cr_assert(fabs(a[9] + ORI_PI) < 1e-9, "crease 9 at %.12g°", a[9] / DEG);
+        cr_assert(strstr(ori_motion_reason(mo), "where crease 9 reaches") && strstr(ori_motion_reason(mo), "the limit -180°"), "%s", ori_motion_reason(mo));
+        ori_motion_destroy(mo);
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+static ori_motion_verdict verdict_of(const ori_mechanism *m, ori_motion_def d, int *frames, double *last)
+{
+    ori_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+    ori_motion_verdict v = ori_motion_verdict_of(mo);
+    *frames = ori_motion_frame_count(mo);
+    int E = ori_mechanism_edge_count(m);
+    if (*frames) memcpy(last, ori_motion_frame_angles(mo, *frames - 1), sizeof(double) * (size_t)E);
+    ori_motion_destroy(mo);
+    return v;
+}
+
+// A 4 × 4 Miura-ori from the flat sheet was "underdetermined", "not rigidly foldable" or valid
+// depending on the step (1e-9°, 1e-6°, 0.01°): now valid at every step and every target, and the
+// state at a target does not depend on the step.
+Test(solver_agree, miura_from_flat_is_valid_whatever_the_step_and_target)
+{
+    ori_edge_class *cls = NULL;
+    ori_pattern *p = test_miura(4, 4, 1.0, 1.0, 60 * DEG, &cls);
+    ori_buffer_free(cls);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m), drive = -1;
+    for (int e = 0; e < E && drive < 0; ++e)
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY) drive = e;
+    double targets[] = {1e-7, 1e-5, 1e-3, 0.5, 30, 180};
+    double steps[] = {1e-9, 1e-6, 0.01, 1, 10};
+    double *ref = calloc((size_t)E, sizeof(double)), *last = calloc((size_t)E, sizeof(double));
+    for (size_t ti = 0; ti < sizeof targets / sizeof *targets; ++ti) {
+        bool have_ref = false;
+        for (size_t si = 0; si < sizeof steps / sizeof *steps; ++si) {
+            // At most ~20,000 frames per case.
+            if (targets[ti] / steps[si] > 2e4) continue;
+            ori_motion_def d = ori_default_motion_def();
+            d.driven_edge = drive;
+            d.to_rad = targets[ti] * DEG;
+            d.step_rad = steps[si] * DEG;
+            int frames;
+            ori_motion_verdict v = verdict_of(m, d, &frames, last);
+            cr_assert_eq(v, ORI_MOTION_VALID, "to %g° step %g°: %s", targets[ti], steps[si], ori_motion_verdict_name(v));
+            cr_assert_gt(frames, 1);
+            if (!have_ref) {
+                memcpy(ref, last, sizeof(double) * (size_t)E);
+                have_ref = true;
+            }
+            // The same state at the target, to the corrector's accuracy relative to the angle.
+            for (int e = 0; e < E; ++e)
+                cr_assert(fabs(last[e] - ref[e]) <= 1e-9 * fmax(fabs(ref[e]), 1e-6), "to %g° step %g°: crease %d",
+                          targets[ti], steps[si], e);
+            for (int e = 0; e < E; ++e) cr_assert(fabs(last[e]) <= ORI_PI);
+        }
+        cr_assert(have_ref);
+    }
+    free(ref);
+    free(last);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// The open corner (one crease locked, a spherical 4R) driven from the flat sheet to a tiny target
+// was "not rigidly foldable" at 1e-5° and valid at 1e-4°: valid at every target, both solvers,
+// and the state is the first-order one (the fold angles proportional to the drive).
+Test(solver_agree, open_corner_tiny_targets_are_valid_with_both_solvers)
+{
+    test_open_corner c = test_open_corner_load();
+    int lock = c.down;
+    double big[64], small[64];
+    for (int k = 0; k < 2; ++k) {
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = c.t2;
+        d.driven_edge = c.diag;
+        d.locked_edges = &lock;
+        d.locked_count = 1;
+        d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+        d.to_rad = 1.0 * DEG;
+        int frames;
+        cr_assert_eq(verdict_of(c.m, d, &frames, big), ORI_MOTION_VALID);
+        for (double t = 1e-9; t < 1.0; t *= 10.0) {
+            d.to_rad = t * DEG;
+            cr_assert_eq(verdict_of(c.m, d, &frames, small), ORI_MOTION_VALID, "to %g°", t);
+            cr_assert_eq(frames, 2);
+            // Near the flat state the fold angles grow linearly with the drive (the cone
+            // tangent): the ratio at t matches the one at 1° to O(t).
+            for (int e = 0; e < ori_mechanism_edge_count(c.m); ++e) {
+                double r_small = small[e] / d.to_rad, r_big = big[e] / (1.0 * DEG);
+                cr_assert(fabs(r_small - r_big) <= 0.05 * fmax(fabs(r_big), 1e-3) + 1e-6, "to %g°: crease %d ratio %g vs %g",
+                          t, e, r_small, r_big);
+            }
+        }
+    }
+    test_open_corner_free(&c);
+}
