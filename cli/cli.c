@@ -120,6 +120,14 @@ int cli_parse_int_list(const char *s, int *out, int cap)
     }
 }
 
+int cli_int_list_usage(const char *cmd, const char *opt, const char *value, int cap)
+{
+    int n = 1;
+    for (const char *q = value; *q; ++q) n += *q == ',';
+    if (n > cap) return cli_usage(cmd, "%s takes at most %d edges, got %d", opt, cap, n);
+    return cli_usage(cmd, "%s needs comma-separated edge indices, got '%s'", opt, value);
+}
+
 const char *cli_option_value(const char *cmd, int argc, char **argv, int *i)
 {
     if (*i + 1 >= argc) {

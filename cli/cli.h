@@ -44,6 +44,9 @@ bool cli_parse_int(const char *s, int *out);
 // Exactly n comma-separated numbers ("x,y" or "x,y,dx,dy").
 bool cli_parse_doubles(const char *s, double *out, int n);
 // A comma-separated list of integers; returns the count (≤ cap) or -1 on a bad list.
+// The usage error for a --lock-style list cli_parse_int_list refused: names the limit when
+// the list has more than cap entries, else the expected form. Returns CLI_EXIT_USAGE.
+int cli_int_list_usage(const char *cmd, const char *opt, const char *value, int cap);
 int cli_parse_int_list(const char *s, int *out, int cap);
 // The assignment of a new crease: one letter, M, V, F or U.
 bool cli_parse_crease_assignment(const char *s, ori_assignment *out);

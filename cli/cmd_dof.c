@@ -21,7 +21,7 @@ static int run(int argc, char **argv)
             const char *v = cli_option_value("dof", argc, argv, &i);
             if (!v) return CLI_EXIT_USAGE;
             nlock = cli_parse_int_list(v, locks, 256);
-            if (nlock < 0) return cli_usage("dof", "--lock needs comma-separated edge indices, got '%s'", v);
+            if (nlock < 0) return cli_int_list_usage("dof", "--lock", v, 256);
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             return cli_usage("dof", "unknown option %s", argv[i]);
         } else if (!path) {

@@ -6,6 +6,47 @@
 
 #include "kin_args.h"
 
+// -o: the exact samples the fit was made from, as folded-form frames of the pattern (as orikin
+// fold writes them), with the transfer functions under "orikin:fit".
+static int write_samples(const cli_fold_args *a, const cli_kin *k, const ori_fit_def *fd, const ori_fit *fit)
+{
+    ori_motion *mo = NULL;
+    ori_error err;
+    if (ori_motion_solve(k->mech, &fd->motion, &mo, &err) != ORI_OK) return cli_input_error("fit", a->path, &err);
+    const ori_mechanism *m = k->mech;
+    int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
+    for (int f = 0; f < ori_motion_frame_count(mo); ++f) {
+        ori_motion_frame_vertices(mo, f, pos);
+        char title[128];
+        snprintf(title, sizeof title, "fit sample: crease %d at %g deg", a->drive, ori_rad_to_deg_output(ori_motion_frame_drive(mo, f)));
+        ori_fold_append_state(k->doc, 0, V, pos, E, ori_motion_frame_angles(mo, f), title);
+    }
+    free(pos);
+    ori_motion_destroy(mo);
+    json_t *o = json_object();
+    json_object_set_new(o, "drive", json_integer(a->drive));
+    json_object_set_new(o, "degree", json_integer(a->degree));
+    json_object_set_new(o, "variable", json_string("driven angle in degrees; coefficients c0 first"));
+    json_t *arr = json_array();
+    double coef[13];
+    for (int i = 0; i < ori_fit_crease_count(fit); ++i) {
+        ori_fit_crease c = ori_fit_crease_of(fit, i);
+        ori_fit_coefficients(fit, i, coef, 13);
+        json_t *cs = json_array();
+        for (int q = 0; q <= a->degree; ++q) json_array_append_new(cs, json_real(ori_rad_to_deg(coef[q]) * pow(ORI_PI / 180.0, q)));
+        json_array_append_new(arr, json_pack("{s:i,s:o,s:f}", "edge", c.edge, "coefficients", cs, "max_error_deg",
+                                             ori_rad_to_deg(c.max_error_rad)));
+    }
+    json_object_set_new(o, "creases", arr);
+    char *text = json_dumps(o, JSON_COMPACT);
+    json_decref(o);
+    ori_status st = ori_fold_set_custom(k->doc, 0, "orikin:fit", text, &err);
+    free(text);
+    if (st != ORI_OK || ori_fold_save_file(k->doc, a->out, &err) != ORI_OK) return cli_input_error("fit", a->out, &err);
+    return CLI_EXIT_OK;
+}
+
 static int run(int argc, char **argv)
 {
     cli_fold_args a;
@@ -82,9 +123,10 @@ static int run(int argc, char **argv)
         }
         printf("max error measured against exact solutions on a grid %d times finer\n", a.refine);
     }
+    if (a.out) rc = write_samples(&a, &k, &fd, fit);
     ori_fit_destroy(fit);
     cli_kin_free(&k);
-    return CLI_EXIT_OK;
+    return rc;
 }
 
 const cli_command cli_cmd_fit = {
@@ -92,6 +134,7 @@ const cli_command cli_cmd_fit = {
     "transfer functions: polynomials of the constrained crease angles in the driven angle",
     "usage: orikin fit FILE --fix FACE --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
     "                  [--lock E1,E2,...] [--degree D] [--refine R] [--frame N] [--json]\n"
+    "                  [-o OUT.fold]\n"
     "\n"
     "Solve the fold exactly at every --step (as orikin fold), fit each constrained crease angle\n"
     "by a polynomial of degree D in the driven angle (the thesis' transfer functions, degree 4),\n"
@@ -106,6 +149,9 @@ const cli_command cli_cmd_fit = {
     "  --refine R    error grid: step / R; default 10\n"
     "  --json        print {degree, drive, from_deg, to_deg, step_deg, samples, creases:\n"
     "                [{edge, coefficients, max_error_deg}]}\n"
+    "  -o OUT.fold   write FILE with the exact samples as folded-form frames (as orikin fold)\n"
+    "                and the transfer functions under \"orikin:fit\" {drive, degree,\n"
+    "                variable, creases}\n"
     "\n"
     "example: orikin fit examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --step 10\n",
     run,

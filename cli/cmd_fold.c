@@ -65,6 +65,28 @@ static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, si
     return buf;
 }
 
+// What stopped a blocked fold, as JSON (null when it was not stopped).
+static json_t *cli_fold_block_json(const ori_motion *mo)
+{
+    ori_motion_block b;
+    if (!ori_motion_block_of(mo, &b)) return json_null();
+    json_t *o = json_object();
+    bool limit = b.kind == ORI_BLOCK_CREASE_LIMIT;
+    json_object_set_new(o, "kind", json_string(limit ? "crease_limit" : "singular"));
+    json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(b.drive_rad)));
+    json_object_set_new(o, "edge", limit ? json_integer(b.edge) : json_null());
+    json_object_set_new(o, "edge_angle_deg", limit ? json_real(ori_rad_to_deg_output(b.edge_angle_rad)) : json_null());
+    json_object_set_new(o, "singular_edges", limit ? json_array() : edges_json(b.singular_edges, b.singular_count));
+    return o;
+}
+
+// The frames end before the target: at the stop of a blocked fold, or at the last clean step
+// of a colliding one.
+static bool cli_fold_partial(const ori_motion *mo, const cli_collision *col)
+{
+    return cli_collides(col) || ori_motion_block_of(mo, NULL);
+}
+
 static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
 {
     const ori_mechanism *m = k->mech;
@@ -84,7 +106,7 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     const char *h = rounding_hint(k, mo, hint, sizeof hint);
     json_object_set_new(out, "hint", h ? json_string(h) : json_null());
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
-    json_object_set_new(out, "dof", json_integer(ori_motion_dof(mo)));
+    json_object_set_new(out, "dof", ori_motion_dof(mo) >= 0 ? json_integer(ori_motion_dof(mo)) : json_null());
     json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
     json_object_set_new(out, "solver", json_string(solver_name(st)));
     json_object_set_new(out, "fixed_face", json_integer(a->fix));
@@ -116,6 +138,8 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
                                              ori_rad_to_deg_output(fv.angle_rad), "at_drive_deg", ori_rad_to_deg_output(fv.drive_rad)));
     }
     json_object_set_new(out, "offending_edges", off);
+    json_object_set_new(out, "blocked", cli_fold_block_json(mo));
+    json_object_set_new(out, "partial", json_boolean(cli_fold_partial(mo, col)));
     json_t *frames = json_array();
     for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
         json_t *fr = json_object();
@@ -206,6 +230,8 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
     char hint[512];
     if (rounding_hint(k, mo, hint, sizeof hint)) printf("note: %s\n", hint);
     if (F > 0) printf("dof at the last frame %d (Grübler-Kutzbach count %d)\n", ori_motion_dof(mo), ori_mechanism_grubler(m));
+    if (F > 0 && cli_fold_partial(mo, col) && a->out)
+        printf("%s: the motion up to the stop (%d frames), marked \"orikin:partial\"\n", a->out, F);
 }
 
 // Every output frame as a folded form inheriting from frame 0.
@@ -222,6 +248,27 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     }
     free(pos);
     ori_error err;
+    if (cli_fold_partial(mo, col)) {
+        // A top-level marker: the frames run up to the stop, not to the target.
+        json_t *p = json_object();
+        char hit[256];
+        cli_collision_describe(col, false, hit, sizeof hit);
+        bool collides = cli_collides(col);
+        ori_motion_verdict v = ori_motion_verdict_of(mo);
+        json_object_set_new(p, "verdict", json_string(collides ? "collision" : ori_motion_verdict_name(v)));
+        const char *why = collides ? hit : ori_motion_reason(mo);
+        json_object_set_new(p, "reason", json_string(why ? why : ""));
+        json_object_set_new(p, "to_deg", json_real(a->to_deg));
+        int F = cli_collide_frames(col, ori_motion_frame_count(mo));
+        json_object_set_new(p, "reached_deg", F > 0 ? json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, F - 1))) : json_null());
+        json_object_set_new(p, "frames", json_integer(F));
+        json_object_set_new(p, "blocked", cli_fold_block_json(mo));
+        char *text = json_dumps(p, JSON_COMPACT);
+        json_decref(p);
+        ori_status st = ori_fold_set_custom(k->doc, 0, "orikin:partial", text, &err);
+        free(text);
+        if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
+    }
     if (ori_fold_save_file(k->doc, a->out, &err) != ORI_OK) return cli_input_error("fold", a->out, &err);
     return CLI_EXIT_OK;
 }
@@ -263,7 +310,9 @@ static int run(int argc, char **argv)
     else print_text(&a, &k, mo, &col);
     bool valid = ori_motion_verdict_of(mo) == ORI_MOTION_VALID;
     rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
-    if (a.out && valid) {
+    // A blocked fold writes its motion up to the stop, marked "orikin:partial".
+    bool blocked = ori_motion_verdict_of(mo) == ORI_MOTION_BLOCKED && ori_motion_frame_count(mo) > 0;
+    if (a.out && (valid || blocked)) {
         int wr = write_frames(&a, &k, mo, &col);
         if (wr != CLI_EXIT_OK) rc = wr;
     }
@@ -290,6 +339,10 @@ const cli_command cli_cmd_fold = {
     "thesis' Frame A, Frame B and surrounding; other patterns by numeric continuation.\n"
     "Every step is checked for self-collision (orikin collide); a motion that collides stops\n"
     "at the last clean step, with the first contact located to 1e-6 deg (verdict collision).\n"
+    "A motion stops (verdict blocked) where a moving crease reaches +-180 deg (beyond, its faces\n"
+    "would pass through each other) or at a singular point (the creases that can move there are\n"
+    "named); no crease ever leaves [-180, 180] deg. From the flat sheet the branch is found once,\n"
+    "a fixed 1 deg out: the verdict depends on neither --step nor how small --to is.\n"
     "Exit 0 valid, 1 invalid / not foldable / underdetermined / blocked / collision, 3 bad input.\n"
     "\n"
     "options:\n"
@@ -304,13 +357,18 @@ const cli_command cli_cmd_fold = {
     "  --linear L      numeric solver's linear algebra: auto (default), dense, sparse or sweep\n"
     "  --no-collisions do not check the motion for self-collision\n"
     "  --clearance D   faces sharing no vertex closer than D collide too (a length >= 0)\n"
-    "  --json          print {valid, verdict, reason, collision: {step, drive_deg, faces, point}\n"
-    "                  | null, rigidly_foldable, dof, grubler, solver,\n"
-    "                  frame_a, frame_b, surrounding, split, offending_edges, frames:\n"
-    "                  [{drive_deg, fold_angles_deg, residual, other_branch_deg, end_effector}],\n"
-    "                  stats}\n"
-    "  -o OUT.fold     write FILE with every step appended as a folded-form frame (only when\n"
-    "                  the fold is valid; up to the last clean step when it collides)\n"
+    "  --json          print {file, valid, verdict, reason, collision: {step, drive_deg, faces,\n"
+    "                  point} | null, hint, rigidly_foldable, dof (null without frames),\n"
+    "                  grubler, solver, fixed_face, drive, to_deg, step_deg, locked, frame_a,\n"
+    "                  frame_b, surrounding, split, offending_edges, blocked: {kind\n"
+    "                  (crease_limit | singular), drive_deg, edge, edge_angle_deg,\n"
+    "                  singular_edges} | null, partial, frames: [{drive_deg, fold_angles_deg,\n"
+    "                  residual, other_branch_deg, end_effector}], stats}; every field in\n"
+    "                  docs/kinematics.md\n"
+    "  -o OUT.fold     write FILE with every step appended as a folded-form frame: when the\n"
+    "                  fold is valid; when it is blocked, up to the stop, and when it collides,\n"
+    "                  up to the last clean step, both marked by a top-level \"orikin:partial\"\n"
+    "                  {verdict, reason, to_deg, reached_deg, frames, blocked}\n"
     "\n"
     "example: orikin fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90\n",
     run,

@@ -83,6 +83,7 @@ static void print_record_json(const seq_args *a, const char *pattern, const ori_
     int failed = ori_record_failed_fold(r);
     json_object_set_new(o, "failed_fold", failed >= 0 ? json_integer(failed + 1) : json_null());
     json_object_set_new(o, "duration", json_integer(ori_record_completed_folds(r)));
+    json_object_set_new(o, "partial_frames", json_integer(ori_record_partial_frames(r)));
     json_t *folds = json_array();
     for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
         ori_sequence_fold f = ori_sequence_fold_at(s, i);
@@ -209,6 +210,25 @@ static int write_record(const seq_args *a, const cli_kin *k, const ori_sequence 
     ori_error err;
     ori_fold_set_custom(k->doc, 0, "orikin:sequence", json, NULL);
     ori_buffer_free(json);
+    if (cli_collides(col) || ori_record_partial_frames(r) > 0) {
+        // A top-level marker: the frames run up to a stop (a blocked fold) or a contact.
+        json_t *p = json_object();
+        bool collides = cli_collides(col);
+        char hit[256];
+        cli_collision_describe(col, true, hit, sizeof hit);
+        int failed = ori_record_failed_fold(r);
+        json_object_set_new(p, "verdict", json_string(collides ? "collision" : ori_motion_verdict_name(ori_record_verdict(r))));
+        json_object_set_new(p, "reason", json_string(collides ? hit : ori_record_reason(r) ? ori_record_reason(r) : ""));
+        json_object_set_new(p, "failed_fold", !collides && failed >= 0 ? json_integer(failed + 1) : json_null());
+        int F = cli_collide_frames(col, ori_record_frame_count(r));
+        json_object_set_new(p, "reached_t", F > 0 ? json_real(ori_record_frame_time(r, F - 1)) : json_null());
+        json_object_set_new(p, "frames", json_integer(F));
+        char *text = json_dumps(p, JSON_COMPACT);
+        json_decref(p);
+        ori_status st = ori_fold_set_custom(k->doc, 0, "orikin:partial", text, &err);
+        free(text);
+        if (st != ORI_OK) return cli_input_error("sequence", a->out, &err);
+    }
     if (ori_fold_save_file(k->doc, a->out, &err) != ORI_OK) return cli_input_error("sequence", a->out, &err);
     return CLI_EXIT_OK;
 }
@@ -276,7 +296,8 @@ static int run(int argc, char **argv)
             if (a.json) print_record_json(&a, pattern, s, r, E, &col);
             else print_record_text(pattern, s, r, E, &col);
             rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
-            if (valid && a.out) {
+            // A blocked fold writes the sequence up to its stop, marked "orikin:partial".
+            if ((valid || ori_record_partial_frames(r) > 0) && a.out) {
                 int wr = write_record(&a, &k, s, r, &col);
                 if (wr != CLI_EXIT_OK) rc = wr;
             }
@@ -314,12 +335,15 @@ const cli_command cli_cmd_sequence = {
     "  --no-collisions  do not check the motion for self-collision\n"
     "  --clearance D    faces sharing no vertex closer than D collide too (a length >= 0)\n"
     "  --json        print {sequence, pattern, valid, verdict, reason, collision: {fold, step,\n"
-    "                drive_deg, faces, point} | null, failed_fold, duration, folds: [...],\n"
+    "                drive_deg, faces, point} | null, failed_fold, duration, partial_frames\n"
+    "                (frames of a blocked fold, up to its stop), folds: [...],\n"
     "                frames: [{t, fold, drive_deg, fold_angles_deg, residual}]}\n"
     "  -o OUT.fold   write the pattern with every recorded state (or the one at --at) as a\n"
     "                folded-form frame (with \"orikin:time\"), and the sequence under\n"
-    "                \"orikin:sequence\"; only when every fold is valid (up to the last clean\n"
-    "                step when the motion collides)\n"
+    "                \"orikin:sequence\"; when every fold is valid, or up to the stop of a\n"
+    "                blocked fold or the last clean step of a collision, both marked by a\n"
+    "                top-level \"orikin:partial\" {verdict, reason, failed_fold, reached_t,\n"
+    "                frames}\n"
     "\n"
     "example: orikin sequence examples/open-corner.seq.json -o open-corner-folded.fold\n",
     run,

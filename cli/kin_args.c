@@ -111,7 +111,7 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
         bool takes = strcmp(o, "--fix") == 0 || strcmp(o, "--drive") == 0 || strcmp(o, "--to") == 0 ||
                      strcmp(o, "--from") == 0 || strcmp(o, "--step") == 0 || strcmp(o, "--lock") == 0 ||
                      strcmp(o, "--frame") == 0 || strcmp(o, "--solver") == 0 || strcmp(o, "--linear") == 0 ||
-                     (!fit && strcmp(o, "-o") == 0) || (fit && (strcmp(o, "--degree") == 0 || strcmp(o, "--refine") == 0));
+                     strcmp(o, "-o") == 0 || (fit && (strcmp(o, "--degree") == 0 || strcmp(o, "--refine") == 0));
         if (takes) {
             v = cli_option_value(cmd, argc, argv, &i);
             if (!v) return CLI_EXIT_USAGE;
@@ -131,8 +131,9 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
         } else if (strcmp(o, "--step") == 0) {
             if ((rc = parse_angle(cmd, o, v, &a->step_deg)) != CLI_EXIT_OK) return rc;
         } else if (strcmp(o, "--lock") == 0) {
-            a->lock_count = cli_parse_int_list(v, a->locks, 256);
-            if (a->lock_count < 0) return cli_usage(cmd, "--lock needs comma-separated edge indices, got '%s'", v);
+            int cap = (int)(sizeof a->locks / sizeof *a->locks);
+            a->lock_count = cli_parse_int_list(v, a->locks, cap);
+            if (a->lock_count < 0) return cli_int_list_usage(cmd, "--lock", v, cap);
         } else if (strcmp(o, "--frame") == 0) {
             if (!cli_parse_int(v, &a->frame) || a->frame < 0) return cli_usage(cmd, "--frame needs a frame number >= 0");
         } else if (strcmp(o, "-o") == 0) {

@@ -6,7 +6,7 @@
 /// Functions: ori_sequence_parse, ori_sequence_load_file, ori_sequence_destroy,
 /// ori_sequence_pattern_path, ori_sequence_frame, ori_sequence_fold_count,
 /// ori_sequence_fold_at, ori_sequence_to_json, ori_sequence_run, ori_record_destroy,
-/// ori_record_fold_count, ori_record_completed_folds, ori_record_verdict, ori_record_reason,
+/// ori_record_fold_count, ori_record_completed_folds, ori_record_partial_frames, ori_record_verdict, ori_record_reason,
 /// ori_record_failed_fold, ori_record_frame_count, ori_record_frame_time,
 /// ori_record_frame_fold, ori_record_frame_drive, ori_record_frame_angles,
 /// ori_record_frame_residual, ori_record_frame_vertices, ori_record_duration, ori_record_at.
@@ -89,8 +89,12 @@ ORI_API const char *ori_record_reason(const ori_record *record);
 ORI_API int ori_record_failed_fold(const ori_record *record);
 
 /// Recorded states: the start state, then every output step of every completed fold (the
-/// first state of a fold, equal to the last of the previous one, is not repeated).
+/// first state of a fold, equal to the last of the previous one, is not repeated), and when
+/// the failing fold is BLOCKED its states up to the stop (ori_record_partial_frames).
 ORI_API int ori_record_frame_count(const ori_record *record);
+/// The number of trailing recorded states that belong to a blocked fold (its motion up to the
+/// stop, times as fractions of the planned fold), 0 when there are none.
+ORI_API int ori_record_partial_frames(const ori_record *record);
 /// Sequence time T of a recorded state.
 ORI_API double ori_record_frame_time(const ori_record *record, int frame);
 /// Fold (0-based) a recorded state belongs to (0 for the start state).

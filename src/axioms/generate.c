@@ -2,6 +2,7 @@
 // arithmetic (vertices by formula, edges appended in a documented order, faces counter-
 // clockwise), then validated once by ori_pattern_build. docs/generators.md derives the
 // geometry and the mountain/valley assignments and lists the edge index ranges.
+#include <float.h>
 #include <orikin/generate.h>
 
 #include "../pattern/pattern_internal.h"
@@ -84,7 +85,7 @@ double ori_kresling_bistable_height(int sides, double width, double angle_rad)
 static ori_status check_positive(double x, const char *field, ori_error *error)
 {
     if (!(x > 0.0) || !isfinite(x))
-        return ori__fail_at(error, ORI_ERR_ARGUMENT, field, ORI_NULL_INDEX, "must be a finite number > 0 (got %g)", x);
+        return ori__fail_at(error, ORI_ERR_ARGUMENT, field, ORI_NULL_INDEX, "must be a finite number > 0 (got %.17g)", x);
     return ORI_OK;
 }
 
@@ -103,10 +104,21 @@ static ori_status check_angle(double a, double lo, double hi, bool hi_closed, or
 {
     const double tol = ORI_TOL_ANGLE_EQUAL_RAD;
     bool ok = isfinite(a) && a > lo + tol && (hi_closed ? a <= hi + tol : a < hi - tol);
-    if (!ok)
-        return ori__fail_at(error, ORI_ERR_ARGUMENT, "angle", ORI_NULL_INDEX, "%g° is outside (%g°, %g°%c",
-                            ori_rad_to_deg(a), ori_rad_to_deg(lo), ori_rad_to_deg(hi), hi_closed ? ']' : ')');
-    return ORI_OK;
+    if (ok) return ORI_OK;
+    // Inside the range as typed but within the tolerance of an open bound: say so, or the
+    // message would contradict itself ("89.9999999° is outside (0°, 90°)").
+    // (A value that is the bound up to rounding, e.g. 60° typed for π/3, is just outside.)
+    double ulps = 16.0 * DBL_EPSILON * fmax(fabs(lo), fabs(hi));
+    bool at_lo = isfinite(a) && a > lo + ulps && a <= lo + tol;
+    bool at_hi = isfinite(a) && !hi_closed && a < hi - ulps && a >= hi - tol;
+    if (at_lo || at_hi)
+        return ori__fail_at(error, ORI_ERR_ARGUMENT, "angle", ORI_NULL_INDEX,
+                            "%.10g° is within %.2g° of the open bound %.10g° of (%.10g°, %.10g°%c, which counts as the "
+                            "bound",
+                            ori_rad_to_deg(a), ori_rad_to_deg(tol), ori_rad_to_deg(at_lo ? lo : hi), ori_rad_to_deg(lo),
+                            ori_rad_to_deg(hi), hi_closed ? ']' : ')');
+    return ori__fail_at(error, ORI_ERR_ARGUMENT, "angle", ORI_NULL_INDEX, "%.10g° is outside (%.10g°, %.10g°%c",
+                        ori_rad_to_deg(a), ori_rad_to_deg(lo), ori_rad_to_deg(hi), hi_closed ? ']' : ')');
 }
 
 // Kresling storey: polygon side a, lateral b, diagonal c, developed shift s and strip height H.

@@ -245,6 +245,10 @@ typedef struct kin_spherical {
 // joints, and no other joint is free. Fills *sp.
 bool ori__kin_spherical_applicable(const ori_mechanism *m, const int *col_of_joint, int drive_joint,
                                    kin_spherical *sp);
+// |c| of the input–output equation within this of 1 is a double root (acos(c) ≈ √(2(1 − |c|))
+// magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad).
+#define ORI_KIN_DOUBLE_ROOT 1e-12
+
 // Newton iterations polishing each closed-form candidate on the loop equation itself.
 #define ORI_KIN_SPHERICAL_POLISH_MAX 4
 

@@ -508,8 +508,13 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
     if (s1 == s) return LEG_OK;
     double *scratch = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double sg = s1 > s ? 1.0 : -1.0;
-    double prev[3], prev_s = s;
-    bool have_prev = false;
+    // The last accepted states (drive, three free angles), oldest first: the prediction is their
+    // Lagrange extrapolation (as the numeric solver's), which also stands in where the closed
+    // form is indeterminate (a family of states at one drive value, e.g. a branch crossing).
+    double hs[ORI_KIN_HISTORY], hx[ORI_KIN_HISTORY][3];
+    int nh = 1;
+    hs[0] = s;
+    for (int i = 0; i < 3; ++i) hx[0][i] = c->th[fj[i]];
     double s_start = s;
     int k_out = 1;
     double target = s + sg * step_out;
@@ -529,14 +534,25 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
         double pred[3];
+        // One state known (the escape's end; a start without a tangent): the tangent there.
+        bool by_tangent = !in_esc && !by_cone && nh == 1 && ori__kin_tangent(c->solver, c->th, scratch);
+        double tan_here[3] = {0.0, 0.0, 0.0};
+        if (by_tangent)
+            for (int i = 0; i < 3; ++i) tan_here[i] = scratch[fj[i]];
         for (int i = 0; i < 3; ++i) {
             pred[i] = c->th[fj[i]];
-            if (in_esc)
+            if (by_tangent)
+                pred[i] += (snew - s) * tan_here[i];
+            else if (in_esc)
                 pred[i] = hermite(esc->s0, esc->th0[fj[i]], esc->t0[fj[i]], esc->s1, esc->th1[fj[i]], esc->t1[fj[i]], snew);
             else if (by_cone)
                 pred[i] += (snew - s) * t_first[fj[i]];
-            else if (have_prev && s != prev_s)
-                pred[i] += (c->th[fj[i]] - prev[i]) * (snew - s) / (s - prev_s);
+            else if (nh > 1) {
+                double w[ORI_KIN_HISTORY];
+                lagrange_weights(hs, nh, snew, w);
+                pred[i] = 0.0;
+                for (int q = 0; q < nh; ++q) pred[i] += w[q] * hx[q][i];
+            }
         }
         double cand[2][3];
         int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, pred, cand);
@@ -556,11 +572,27 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
             memcpy(scratch, c->th, sizeof(double) * (size_t)J);
             for (int i = 0; i < 3; ++i) scratch[fj[i]] = cand[k][i];
         }
-        // No solution, or a moving crease turned past ±π within this step (or only seems to,
-        // near a fully folded state): halve; a stop there is located by locate_stop.
-        if (nc == 0 || beyond_limit(c, scratch)) {
+        // The chosen solution is far from the prediction (the branch turns faster than the step
+        // resolves, and the nearest candidate may be the other branch): the numeric solver's
+        // test of a jump, then halve as it does.
+        bool jump = false;
+        if (nc > 0 && !in_esc) {
+            double tn = 1.0, move = 0.0;
+            for (int i = 0; i < 3; ++i) {
+                tn = fmax(tn, fabs(pred[i] - c->th[fj[i]]) / hh);
+                move = fmax(move, fabs(cand[k][i] - pred[i]));
+            }
+            jump = move > ORI_KIN_MAX_CORRECTION * hh * tn + ORI_KIN_CORRECTION_SLACK_RAD;
+        }
+        // No solution, a jump, or a moving crease turned past ±π within this step (or only seems
+        // to, near a fully folded state): halve; a stop there is located by locate_stop.
+        if (nc == 0 || jump || beyond_limit(c, scratch)) {
             h = 0.5 * hh;
             c->mo->stats.rejected_steps++;
+            // Restart the history from the current state (the tangent predicts the next try).
+            hs[0] = s;
+            for (int i = 0; i < 3; ++i) hx[0][i] = c->th[fj[i]];
+            nh = 1;
             if (h < ORI_KIN_MIN_STEP_RAD) {
                 locate_stop(c, snew);
                 result = LEG_BLOCKED;
@@ -571,15 +603,27 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         c->has_alt = nc == 2;
         if (nc == 2)
             for (int i = 0; i < 3; ++i) c->alt[i] = cand[1 - k][i];
-        for (int i = 0; i < 3; ++i) prev[i] = c->th[fj[i]];
-        prev_s = s;
-        have_prev = true;
         for (int i = 0; i < 3; ++i) c->th[fj[i]] = cand[k][i];
         c->th[c->jd] = snew;
+        if (nh == ORI_KIN_HISTORY) {
+            memmove(hs, hs + 1, sizeof(double) * (ORI_KIN_HISTORY - 1));
+            memmove(hx, hx + 1, sizeof(hx[0]) * (ORI_KIN_HISTORY - 1));
+            nh--;
+        }
+        hs[nh] = snew;
+        for (int i = 0; i < 3; ++i) hx[nh][i] = cand[k][i];
+        nh++;
+        // The singular start is no point to extrapolate through (the branch need not be smooth
+        // there): out of the escape the history starts afresh.
+        if (in_esc && snew == esc->s1) {
+            hs[0] = snew;
+            for (int i = 0; i < 3; ++i) hx[0][i] = cand[k][i];
+            nh = 1;
+        }
         c->mo->stats.steps++;
         check_signs(c);
         first = false;
-        h = ORI_KIN_TRACK_STEP_RAD;
+        h = fmin(2.0 * h, ORI_KIN_TRACK_STEP_RAD);
         if (snew == target) {
             if (rec) record(c);
             if (target == s1) break;

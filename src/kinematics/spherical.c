@@ -192,6 +192,10 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         if (c > 1.0 + ORI_TOL_BRANCH_MERGE || c < -1.0 - ORI_TOL_BRANCH_MERGE) return 0; // unreachable
         if (c > 1.0) c = 1.0;
         if (c < -1.0) c = -1.0;
+        // Within rounding of a double root (the branches crossing, e.g. at the flat state of a
+        // flat-foldable vertex) the computed acos(c) is √ of the rounding, not 0: the root is
+        // double.
+        if (1.0 - fabs(c) <= ORI_KIN_DOUBLE_ROOT) c = c > 0.0 ? 1.0 : -1.0;
         double psi = atan2(B, A), delta = acos(c);
         x2s[0] = psi + delta;
         x2s[1] = psi - delta;

@@ -24,6 +24,7 @@ struct ori_record {
     ori_sequence_fold *folds;
     record_fold *run;
     int fold_count, completed, failed;
+    int partial_frames; // trailing frames of a blocked fold (up to its stop)
     ori_motion_verdict verdict;
     char *reason;
     int vertex_count, edge_count;
@@ -338,19 +339,25 @@ ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const
             break;
         }
         ori_motion_verdict v = ori_motion_verdict_of(mo);
+        int nf = ori_motion_frame_count(mo);
+        // A blocked fold is recorded up to its stop (the frames of a partial fold, times as
+        // fractions of the planned one); any other failure records nothing of its fold.
+        bool partial = v == ORI_MOTION_BLOCKED && nf > 0;
         if (v != ORI_MOTION_VALID) {
             r->verdict = v;
             r->failed = i;
             const char *why = ori_motion_reason(mo);
             r->reason = ori__strdup(why ? why : ori_motion_verdict_name(v));
-            ori_motion_destroy(mo);
-            break;
+            if (!partial) {
+                ori_motion_destroy(mo);
+                break;
+            }
         }
-        int nf = ori_motion_frame_count(mo);
         record_fold *rf = &r->run[i];
         rf->fixed_pose = pose;
         rf->from_rad = ori_motion_frame_drive(mo, 0);
-        rf->to_rad = ori_motion_frame_drive(mo, nf - 1);
+        rf->to_rad = partial ? d.to_rad : ori_motion_frame_drive(mo, nf - 1);
+        if (partial && rf->to_rad == rf->from_rad) rf->to_rad = ori_motion_frame_drive(mo, nf - 1);
         rf->first_frame = r->frame_count;
         for (int k = 0; k < nf; ++k) {
             // the first state of a fold repeats the last of the previous one (unless "from" jumps)
@@ -364,6 +371,10 @@ ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const
         memcpy(angles, ori_motion_frame_angles(mo, nf - 1), sizeof(double) * (size_t)r->edge_count);
         ori_motion_frame_face_poses(mo, nf - 1, poses);
         ori_motion_destroy(mo);
+        if (partial) {
+            r->partial_frames = r->frame_count - rf->first_frame - (i > 0 && !f->has_from ? 1 : 0);
+            break;
+        }
         r->completed = i + 1;
     }
     ori__free(angles);
@@ -398,6 +409,7 @@ ori_motion_verdict ori_record_verdict(const ori_record *r) { ORI_ASSERT(r); retu
 const char *ori_record_reason(const ori_record *r) { ORI_ASSERT(r); return r->reason; }
 int ori_record_failed_fold(const ori_record *r) { ORI_ASSERT(r); return r->failed; }
 int ori_record_frame_count(const ori_record *r) { ORI_ASSERT(r); return r->frame_count; }
+int ori_record_partial_frames(const ori_record *r) { ORI_ASSERT(r); return r->partial_frames; }
 double ori_record_duration(const ori_record *r) { ORI_ASSERT(r); return (double)r->completed; }
 
 double ori_record_frame_time(const ori_record *r, int i)
