@@ -5,6 +5,7 @@
 // [−180°, 180°]. And the verdict of a fold from the flat sheet does not depend on the output
 // step or on how small the target is (issue 7 §3).
 #define _DEFAULT_SOURCE
+#include <jansson.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -107,7 +108,7 @@ static void compare(const ori_mechanism *m, ori_motion_def d, const char *what)
 Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angles)
 {
     srand48(14);
-    int verdicts[5] = {0};
+    int verdicts[5] = {0}, stops[3] = {0};
     int cases = 0;
     for (int trial = 0; trial < 160; ++trial) {
         int n = 4 + (int)(drand48() * 5); // 4 … 8
@@ -126,7 +127,7 @@ Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angl
         ori_pattern *p = vertex_pattern(n, theta, assign);
         ori_mechanism *m = test_mechanism_of(p);
         int E = ori_mechanism_edge_count(m);
-        for (int spec = 0; spec < 3; ++spec) {
+        for (int spec = 0; spec < (n >= 5 ? 4 : 3); ++spec) {
             // Creases are edges 0 … n−1 (the file's order); the faces are the n sectors.
             int drive = (int)(drand48() * n);
             int locks[8], nl = 0;
@@ -168,11 +169,50 @@ Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angl
                 ori_motion_destroy(mo);
                 d.start_angles_rad = start;
             }
-            char what[256];
+            if (spec == 3) {
+                // A locked crease at a folded angle (the links of the 4R are then no longer those
+                // of a flat vertex: limits of the drive, turning points): fold one crease with
+                // the others as above, then lock it there and drive another.
+                ori_motion_def s = d;
+                s.solver = ORI_SOLVER_NUMERIC;
+                s.to_rad = frand(-90.0, 90.0) * DEG;
+                s.step_rad = 30 * DEG;
+                ori_motion *mo = NULL;
+                ori_error err;
+                cr_assert_eq(ori_motion_solve(m, &s, &mo, &err), ORI_OK, "%s", err.message);
+                int k = ori_motion_frame_count(mo) - (ori_motion_block_of(mo, NULL) ? 1 : 0);
+                if (k > 1) memcpy(start, ori_motion_frame_angles(mo, k - 1), sizeof(double) * (size_t)E);
+                ori_motion_destroy(mo);
+                d.start_angles_rad = start;
+                // The old drive is locked, a free crease (one not locked) becomes the drive.
+                int next = -1;
+                for (int i = 0; i < n && next < 0; ++i) {
+                    int e = perm[i];
+                    bool locked = e == drive;
+                    for (int q = 0; q < nl; ++q) locked = locked || locks[q] == e;
+                    if (!locked) next = e;
+                }
+                locks[nl++] = drive;
+                // One lock too many now: free the first of the others (it keeps its angle).
+                for (int q = 0; q + 1 < nl; ++q) locks[q] = locks[q + 1];
+                nl--;
+                drive = next;
+                d.driven_edge = drive;
+                d.locked_count = nl;
+                if (k > 1 && d.to_rad * start[drive] < 0.0) d.to_rad = -d.to_rad;
+            }
+            // A folded start near the flat state is next to the branches' crossing: which branch
+            // a first step lands on is not defined there either.
+            if (spec >= 2) {
+                double big = 0.0;
+                for (int e = 0; e < E; ++e) big = fmax(big, fabs(start[e]));
+                if (big < 10.0 * DEG) continue;
+            }
+            char what[512];
             int w = snprintf(what, sizeof what, "trial %d spec %d: degree %d, fix %d, drive %d to %.17g° step %.17g°, locked",
                              trial, spec, n, d.fixed_face, drive, d.to_rad / DEG, d.step_rad / DEG);
             for (int i = 0; i < nl; ++i) w += snprintf(what + w, sizeof what - (size_t)w, " %d", locks[i]);
-            if (spec == 2) {
+            if (spec >= 2) {
                 w += snprintf(what + w, sizeof what - (size_t)w, " (folded start");
                 for (int e = 0; e < n; ++e) w += snprintf(what + w, sizeof what - (size_t)w, " %.17g", start[e] / DEG);
                 snprintf(what + w, sizeof what - (size_t)w, ")");
@@ -182,6 +222,12 @@ Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angl
             ori_error err;
             cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK);
             verdicts[ori_motion_verdict_of(mo)]++;
+            ori_motion_block blk;
+            if (ori_motion_block_of(mo, &blk)) {
+                stops[blk.kind]++;
+                // A singular stop names the creases that move there without the drive.
+                if (blk.kind == ORI_BLOCK_SINGULAR) cr_assert_gt(blk.singular_count, 0, "%s", what);
+            }
             ori_motion_destroy(mo);
             cases++;
         }
@@ -190,9 +236,13 @@ Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angl
     }
     cr_assert_gt(cases, 300);
     // The sample exercises the verdicts that matter here.
-    cr_assert_gt(verdicts[ORI_MOTION_VALID], 20);
+    cr_assert_gt(verdicts[ORI_MOTION_VALID], 10);
     cr_assert_gt(verdicts[ORI_MOTION_BLOCKED], 5);
     cr_assert_gt(verdicts[ORI_MOTION_INVALID_ASSIGNMENT], 20);
+    cr_log_info("verdicts: valid %d, invalid %d, not foldable %d, blocked %d; stops: crease limit %d, singular %d",
+                verdicts[0], verdicts[1], verdicts[2], verdicts[4], stops[ORI_BLOCK_CREASE_LIMIT], stops[ORI_BLOCK_SINGULAR]);
+    cr_assert_gt(stops[ORI_BLOCK_CREASE_LIMIT], 5);
+    cr_assert_gt(stops[ORI_BLOCK_SINGULAR], 5);
 }
 
 // The issue's vertex: the closed form folded crease 9 to −294.4° and called it valid.
@@ -330,4 +380,124 @@ Test(solver_agree, open_corner_tiny_targets_are_valid_with_both_solvers)
         }
     }
     test_open_corner_free(&c);
+}
+
+// --- everything the kinematics commands write reads back (issue 14 item 2) ----------------
+
+// Every frame of a file orikin wrote loads as a pattern, every fold angle lies in [−180°, 180°],
+// and the mechanism closes at every folded frame. Returns the frame count.
+static int assert_reads_back(const char *path)
+{
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s: %s", path, err.message);
+    int frames = ori_fold_frame_count(doc);
+    ori_pattern *flat = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &flat, &err), ORI_OK, "%s", err.message);
+    ori_mechanism *m = test_mechanism_of(flat);
+    int E = ori_pattern_edge_count(flat);
+    double *ang = calloc((size_t)E + 1, sizeof(double));
+    for (int f = 1; f < frames; ++f) {
+        ori_pattern *p = NULL;
+        ori_build_def bd = ori_default_build_def();
+        bd.check_planarity = false;
+        cr_assert_eq(ori_fold_get_pattern(doc, f, &bd, &p, &err), ORI_OK, "%s frame %d: %s", path, f, err.message);
+        for (int e = 0; e < E; ++e) {
+            ang[e] = ori_pattern_edge(p, e).fold_angle_rad;
+            cr_assert(fabs(ang[e]) <= ORI_PI, "%s frame %d crease %d at %.17g°", path, f, e, ang[e] / DEG);
+        }
+        cr_assert(ori_mechanism_residual(m, ang) <= 1e-9, "%s frame %d does not close", path, f);
+        ori_pattern_destroy(p);
+    }
+    free(ang);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(flat);
+    ori_fold_destroy(doc);
+    return frames;
+}
+
+// The Miura-ori folded to 180° wrote −180.00000000286695 (orikin's reader then refused its own
+// file); now every angle is clamped to ±180° exactly, and check, dof, info and fold --frame read
+// the output.
+Test(solver_agree, fold_to_180_output_reads_back_everywhere)
+{
+    char *dir = test_tmpdir();
+    char args[2048], *out = NULL;
+    snprintf(args, sizeof args, "generate miura -o %s/m.fold", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "fold %s/m.fold --fix 0 --drive 4 --to 180 --no-collisions -o %s/f.fold", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "%s/f.fold", dir);
+    int frames = assert_reads_back(args);
+    cr_assert_eq(frames, 20);
+    char *text = test_read_text(args);
+    cr_assert_null(strstr(text, "180.0000000"), "an angle beyond 180° was written");
+    free(text);
+    const char *cmds[] = {"check %s/f.fold", "dof %s/f.fold --angles-from-frame 19", "info %s/f.fold --frame 19",
+                          "fold %s/f.fold --frame 18 --fix 0 --drive 4 --to 120 --no-collisions"};
+    for (size_t i = 0; i < sizeof cmds / sizeof *cmds; ++i) {
+        snprintf(args, sizeof args, cmds[i], dir);
+        cr_assert_eq(test_run_cli(args, &out), 0, "%s: %s", args, out);
+        free(out);
+    }
+    test_tmpdir_remove(dir);
+}
+
+// A blocked fold writes its motion up to the stop, marked "orikin:partial"; so does a sequence
+// whose second fold is blocked; fit -o writes its samples. All read back.
+Test(solver_agree, partial_and_fit_outputs_read_back)
+{
+    char *dir = test_tmpdir();
+    char args[2048], path[1024], *out = NULL;
+    snprintf(args, sizeof args,
+             "fold tests/data/kin-issue14-vertex.fold --fix 3 --drive 10 --to -180 --step 60 -o %s/b.fold", dir);
+    cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+    cr_assert(strstr(out, "verdict: blocked"), "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/b.fold", dir);
+    cr_assert_eq(assert_reads_back(path), 5);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    char *partial = ori_fold_get_custom(doc, 0, "orikin:partial");
+    cr_assert_not_null(partial);
+    json_error_t je;
+    json_t *pj = json_loads(partial, 0, &je);
+    cr_assert_str_eq(json_string_value(json_object_get(pj, "verdict")), "blocked");
+    cr_assert_eq(json_integer_value(json_object_get(pj, "frames")), 4);
+    cr_assert(fabs(json_real_value(json_object_get(pj, "reached_deg")) + 120.67975) < 1e-4);
+    json_t *b = json_object_get(pj, "blocked");
+    cr_assert_str_eq(json_string_value(json_object_get(b, "kind")), "crease_limit");
+    cr_assert_eq(json_integer_value(json_object_get(b, "edge")), 9);
+    json_decref(pj);
+    ori_buffer_free(partial);
+    ori_fold_destroy(doc);
+    snprintf(args, sizeof args, "info %s/b.fold --frame 4", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+
+    snprintf(args, sizeof args, "sequence tests/data/kin-issue14-blocked.seq.json -o %s/s.fold", dir);
+    cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/s.fold", dir);
+    cr_assert_eq(assert_reads_back(path), 7); // flat + 6 states: 0, −30, −60, −90, −120, the stop
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    partial = ori_fold_get_custom(doc, 0, "orikin:partial");
+    cr_assert_not_null(partial);
+    cr_assert(strstr(partial, "\"failed_fold\":2"), "%s", partial);
+    ori_buffer_free(partial);
+    ori_fold_destroy(doc);
+
+    snprintf(args, sizeof args, "fit tests/data/kin-open-corner.fold --fix 0 --drive 8 --lock 9 --to 90 -o %s/t.fold", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/t.fold", dir);
+    cr_assert_eq(assert_reads_back(path), 11);
+    snprintf(args, sizeof args, "fold %s/t.fold --frame 10 --fix 0 --drive 8 --lock 9 --to 0", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "verdict: valid"), "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
 }

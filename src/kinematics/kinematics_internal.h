@@ -192,6 +192,9 @@ bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int 
 #define ORI_KIN_STOP_BISECTIONS 200
 #define ORI_KIN_STOP_DRIVE_RAD 1e-13
 #define ORI_KIN_STOP_LIMIT_RAD 1e-2
+// States found by that bisection fold a crease against its assignment only beyond this (radians):
+// near a turning point they are accurate to about √ORI_KIN_STOP_DRIVE_RAD.
+#define ORI_KIN_STOP_SIGN_RAD 1e-6
 // Creases whose component in the null vector at a singular stop is at least this fraction of
 // the largest are named as the singular set (the Jacobian is decomposed densely up to
 // ORI_KIN_SINGULAR_SET_MAX_COLS free creases).

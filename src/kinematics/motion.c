@@ -108,14 +108,18 @@ static int assigned_sign(const ori_mechanism *m, int j)
     return a == ORI_ASSIGN_VALLEY ? 1 : a == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
 }
 
-static void check_signs(ctx *c)
+static void check_signs_within(ctx *c, double tol);
+static void check_signs(ctx *c) { check_signs_within(c, ORI_TOL_FOLD_SIGN_RAD); }
+
+// Record the creases folded against their assignment by more than tol at the current state.
+static void check_signs_within(ctx *c, double tol)
 {
     const ori_mechanism *m = c->m;
     for (int j = 0; j < m->joint_count; ++j) {
         if (j == c->jd || c->col[j] < 0) continue;
         int s = assigned_sign(m, j);
         double t = c->th[j];
-        if (s == 0 || !(fabs(t) > ORI_TOL_FOLD_SIGN_RAD) || t * s > 0.0) continue;
+        if (s == 0 || !(fabs(t) > tol) || t * s > 0.0) continue;
         if (fabs(t) > fabs(c->worst[j])) {
             c->worst[j] = t;
             c->worst_at[j] = c->th[c->jd];
@@ -292,7 +296,9 @@ static void locate_stop(ctx *c, double s_out)
         }
         memcpy(c->th, x, sizeof(double) * (size_t)J);
         c->last_residual = -1.0;
-        check_signs(c);
+        // Close to a singular stop the states are accurate to about √ of the drive's resolution
+        // only: a crease touching 0 there is not a violation.
+        check_signs_within(c, ORI_KIN_STOP_SIGN_RAD);
         lo = mid;
     }
     ori__free(x);
@@ -1018,6 +1024,9 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         }
     }
     compute_split(&c, mo);
+    // The start is a state of the motion: a crease already against its assignment there counts
+    // (else whether it is caught would depend on where the first steps land).
+    check_signs(&c);
 
     // Leg 1 (silent) to from, leg 2 from → to with output.
     leg_result lr = LEG_OK;
