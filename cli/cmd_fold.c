@@ -65,28 +65,6 @@ static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, si
     return buf;
 }
 
-// What stopped a blocked fold, as JSON (null when it was not stopped).
-static json_t *cli_fold_block_json(const ori_motion *mo)
-{
-    ori_motion_block b;
-    if (!ori_motion_block_of(mo, &b)) return json_null();
-    json_t *o = json_object();
-    bool limit = b.kind == ORI_BLOCK_CREASE_LIMIT;
-    json_object_set_new(o, "kind", json_string(limit ? "crease_limit" : "singular"));
-    json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(b.drive_rad)));
-    json_object_set_new(o, "edge", limit ? json_integer(b.edge) : json_null());
-    json_object_set_new(o, "edge_angle_deg", limit ? json_real(ori_rad_to_deg_output(b.edge_angle_rad)) : json_null());
-    json_object_set_new(o, "singular_edges", limit ? json_array() : edges_json(b.singular_edges, b.singular_count));
-    return o;
-}
-
-// The frames end before the target: at the stop of a blocked fold, or at the last clean step
-// of a colliding one.
-static bool cli_fold_partial(const ori_motion *mo, const cli_collision *col)
-{
-    return cli_collides(col) || ori_motion_block_of(mo, NULL);
-}
-
 static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
 {
     const ori_mechanism *m = k->mech;
@@ -106,7 +84,7 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     const char *h = rounding_hint(k, mo, hint, sizeof hint);
     json_object_set_new(out, "hint", h ? json_string(h) : json_null());
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
-    json_object_set_new(out, "dof", ori_motion_dof(mo) >= 0 ? json_integer(ori_motion_dof(mo)) : json_null());
+    json_object_set_new(out, "dof", cli_motion_dof_json(mo));
     json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
     json_object_set_new(out, "solver", json_string(solver_name(st)));
     json_object_set_new(out, "fixed_face", json_integer(a->fix));
@@ -138,8 +116,8 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
                                              ori_rad_to_deg_output(fv.angle_rad), "at_drive_deg", ori_rad_to_deg_output(fv.drive_rad)));
     }
     json_object_set_new(out, "offending_edges", off);
-    json_object_set_new(out, "blocked", cli_fold_block_json(mo));
-    json_object_set_new(out, "partial", json_boolean(cli_fold_partial(mo, col)));
+    json_object_set_new(out, "blocked", cli_motion_block_json(mo));
+    json_object_set_new(out, "partial", json_boolean(cli_motion_partial(mo, col)));
     json_t *frames = json_array();
     for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
         json_t *fr = json_object();
@@ -230,7 +208,7 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
     char hint[512];
     if (rounding_hint(k, mo, hint, sizeof hint)) printf("note: %s\n", hint);
     if (F > 0) printf("dof at the last frame %d (Grübler-Kutzbach count %d)\n", ori_motion_dof(mo), ori_mechanism_grubler(m));
-    if (F > 0 && cli_fold_partial(mo, col) && a->out)
+    if (F > 0 && cli_motion_partial(mo, col) && a->out)
         printf("%s: the motion up to the stop (%d frames), marked \"orikin:partial\"\n", a->out, F);
 }
 
@@ -248,7 +226,7 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     }
     free(pos);
     ori_error err;
-    if (cli_fold_partial(mo, col)) {
+    if (cli_motion_partial(mo, col)) {
         // A top-level marker: the frames run up to the stop, not to the target.
         json_t *p = json_object();
         char hit[256];
@@ -262,7 +240,7 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
         int F = cli_collide_frames(col, ori_motion_frame_count(mo));
         json_object_set_new(p, "reached_deg", F > 0 ? json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, F - 1))) : json_null());
         json_object_set_new(p, "frames", json_integer(F));
-        json_object_set_new(p, "blocked", cli_fold_block_json(mo));
+        json_object_set_new(p, "blocked", cli_motion_block_json(mo));
         char *text = json_dumps(p, JSON_COMPACT);
         json_decref(p);
         ori_status st = ori_fold_set_custom(k->doc, 0, "orikin:partial", text, &err);

@@ -5,7 +5,7 @@
 //
 // Functions: cli_collision_check_motion, cli_collision_check_record, cli_collides,
 // cli_collide_frames, cli_collision_json, cli_collision_describe, cli_check_run, cli_check_json,
-// cli_check_free.
+// cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -42,6 +42,16 @@ int cli_collide_frames(const cli_collision *c, int frames);
 json_t *cli_collision_json(const cli_collision *c, bool with_fold);
 // One line: "faces 3 and 9 penetrate at step 14, drive 131.810315 deg, at (x, y, z)".
 void cli_collision_describe(const cli_collision *c, bool with_fold, char *buf, size_t size);
+
+// --- where a fold stops (orikin fold; POST /api/fold) ---------------------------------------
+
+// {"kind": "crease_limit"|"singular", "drive_deg", "edge" (or null), "edge_angle_deg" (or null),
+// "singular_edges": [...]}, or null when the motion did not stop (ori_motion_block_of).
+json_t *cli_motion_block_json(const ori_motion *mo);
+// The frames end before the target: at the stop of a blocked fold, or before a collision.
+bool cli_motion_partial(const ori_motion *mo, const cli_collision *col);
+// The free mechanism's DOF at the last frame, or null when there is no frame.
+json_t *cli_motion_dof_json(const ori_motion *mo);
 
 // --- local flat-foldability (orikin check; GET /api/check) ----------------------------------
 

@@ -88,7 +88,7 @@ json_t *studio_json_fold(const char *file, const studio_fold_spec *a, const ori_
     json_object_set_new(out, "collision", cli_collision_json(col, false));
     json_object_set_new(out, "hint", rounding_hint(flat, mo));
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
-    json_object_set_new(out, "dof", json_integer(ori_motion_dof(mo)));
+    json_object_set_new(out, "dof", cli_motion_dof_json(mo));
     json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
     json_object_set_new(out, "solver", json_string(solver_name(st)));
     json_object_set_new(out, "fixed_face", json_integer(a->fix));
@@ -120,6 +120,8 @@ json_t *studio_json_fold(const char *file, const studio_fold_spec *a, const ori_
                                              ori_rad_to_deg_output(fv.drive_rad)));
     }
     json_object_set_new(out, "offending_edges", off);
+    json_object_set_new(out, "blocked", cli_motion_block_json(mo));
+    json_object_set_new(out, "partial", json_boolean(cli_motion_partial(mo, col)));
     json_t *frames = json_array();
     double *alt = malloc(sizeof(double) * (size_t)(E + 1));
     for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
@@ -175,6 +177,7 @@ json_t *studio_json_record(const char *sequence, const char *pattern, const ori_
     int failed = ori_record_failed_fold(r);
     json_object_set_new(o, "failed_fold", failed >= 0 ? json_integer(failed + 1) : json_null());
     json_object_set_new(o, "duration", json_integer(ori_record_completed_folds(r)));
+    json_object_set_new(o, "partial_frames", json_integer(ori_record_partial_frames(r)));
     json_t *folds = json_array();
     for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
         ori_sequence_fold f = ori_sequence_fold_at(s, i);
