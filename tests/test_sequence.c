@@ -2,6 +2,7 @@
 // as a recorded motion, exact restoration of any instant, invalid sequences, the CLI.
 #define _POSIX_C_SOURCE 200809L
 #include <jansson.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -275,6 +276,41 @@ Test(sequence, a_fold_against_the_assignment_stops_the_sequence)
     cr_assert(strstr(ori_record_reason(r), want), "reason '%s' names crease %d", ori_record_reason(r), c.down);
     cr_assert_eq(ori_record_frame_count(r), 19); // fold 1 only
     corner_run_free(&x);
+}
+
+// A blocked fold is recorded up to its stop (issue 7 §3): issue 14's vertex, fold 1 to −60°, fold
+// 2 to −180° stops where crease 9 reaches −180° (crease 10 at −120.6797509°).
+Test(sequence, a_blocked_fold_is_recorded_up_to_its_stop)
+{
+    ori_sequence *s = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_load_file(test_repo_path("tests/data/kin-issue14-blocked.seq.json"), &s, &err), ORI_OK, "%s",
+                 err.message);
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/kin-issue14-vertex.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_BLOCKED);
+    cr_assert_eq(ori_record_failed_fold(r), 1);
+    cr_assert_eq(ori_record_completed_folds(r), 1);
+    // 0, −30, −60 (fold 1), then −90, −120 and the stop (fold 2, partial)
+    cr_assert_eq(ori_record_frame_count(r), 6);
+    cr_assert_eq(ori_record_partial_frames(r), 3);
+    int last = ori_record_frame_count(r) - 1;
+    cr_assert_eq(ori_record_frame_fold(r, last), 1);
+    cr_assert(fabs(ori_record_frame_drive(r, last) / DEG + 120.6797509) < 1e-6, "%.10g", ori_record_frame_drive(r, last) / DEG);
+    cr_assert(fabs(ori_record_frame_angles(r, last)[9] + ORI_PI) < 1e-9);
+    // times: fractions of the planned fold (−60° → −180°)
+    cr_assert(fabs(ori_record_frame_time(r, last) - (1.0 + 60.6797509 / 120.0)) < 1e-8, "%.12g", ori_record_frame_time(r, last));
+    for (int f = 1; f <= last; ++f) cr_assert_gt(ori_record_frame_time(r, f), ori_record_frame_time(r, f - 1));
+    // the instants of the completed fold are still restored; the partial one is not a completed fold
+    double ang[16];
+    cr_assert_eq(ori_record_at(r, 1.0, ang, NULL, NULL, NULL, NULL, &err), ORI_OK);
+    cr_assert_neq(ori_record_at(r, 1.4, ang, NULL, NULL, NULL, NULL, &err), ORI_OK);
+    ori_record_destroy(r);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    ori_sequence_destroy(s);
 }
 
 Test(sequence, bad_indices_are_run_time_errors_naming_the_fold)
