@@ -199,7 +199,7 @@ bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int 
 // the largest are named as the singular set (the Jacobian is decomposed densely up to
 // ORI_KIN_SINGULAR_SET_MAX_COLS free creases).
 #define ORI_KIN_SINGULAR_SET_REL 0.1
-#define ORI_KIN_SINGULAR_SET_MAX_COLS 2000
+#define ORI_KIN_SINGULAR_SET_MAX_COLS 500
 
 // Output frames reserved up front at most (more grow the arrays by doubling).
 #define ORI_KIN_RESERVE_FRAMES 4096
