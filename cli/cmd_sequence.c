@@ -32,6 +32,7 @@ static char *resolve(const char *seq_path, const char *pattern)
 static int moving_creases(const ori_record *r, int edges, int *out, int cap)
 {
     int n = 0, total = 0;
+    if (ori_record_frame_count(r) == 0) return 0; // the first fold failed: nothing recorded
     for (int e = 0; e < edges; ++e) {
         double a0 = ori_record_frame_angles(r, 0)[e];
         bool moves = false;
