@@ -208,8 +208,6 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
     char hint[512];
     if (rounding_hint(k, mo, hint, sizeof hint)) printf("note: %s\n", hint);
     if (F > 0) printf("dof at the last frame %d (Grübler-Kutzbach count %d)\n", ori_motion_dof(mo), ori_mechanism_grubler(m));
-    if (F > 0 && cli_motion_partial(mo, col) && a->out)
-        printf("%s: the motion up to the stop (%d frames), marked \"orikin:partial\"\n", a->out, F);
 }
 
 // Every output frame as a folded form inheriting from frame 0.
@@ -293,6 +291,9 @@ static int run(int argc, char **argv)
     if (a.out && (valid || blocked)) {
         int wr = write_frames(&a, &k, mo, &col);
         if (wr != CLI_EXIT_OK) rc = wr;
+        else if (!a.json && cli_motion_partial(mo, &col))
+            printf("%s: the motion up to the stop (%d frames), marked \"orikin:partial\"\n", a.out,
+                   cli_collide_frames(&col, ori_motion_frame_count(mo)));
     }
     ori_motion_destroy(mo);
     cli_kin_free(&k);
