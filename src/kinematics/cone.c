@@ -696,6 +696,13 @@ bool ori__kin_loops_deficient(const ori_mechanism *m, const double *th, const in
 kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                               int drive_joint, double sign, bool probe, double *v, int *extra_dof)
 {
+    return ori__kin_cone_budget(m, th, col_of_joint, ncols, drive_joint, sign, probe, v, extra_dof, NULL);
+}
+
+kin_cone_result ori__kin_cone_budget(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
+                                     int drive_joint, double sign, bool probe, double *v, int *extra_dof,
+                                     long *budget)
+{
     cone_sys c;
     memset(&c, 0, sizeof c);
     c.m = m;
@@ -724,8 +731,11 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
     if (ncols > ORI_MOTION_DENSE_MAX_UNKNOWNS) flip = 0;
     long combos = 1L << flip;
     bool found_consistent = false;
-    for (int phase = 0; phase < 2 && result != KIN_CONE_FOUND && result != KIN_CONE_UNDERDETERMINED; ++phase) {
+    bool exhausted = false;
+    for (int phase = 0; phase < 2 && result != KIN_CONE_FOUND && result != KIN_CONE_UNDERDETERMINED && !exhausted;
+         ++phase) {
         if (phase == 1 && all_local && !probe) break;
+        if (phase == 1 && probe) break; // a probe skips nothing in phase A: phase B would repeat it
         for (long mask = 0; mask < combos; ++mask) {
             bool skip = false;
             for (int h = 0; h < k; ++h) {
@@ -743,6 +753,11 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
                 pick[h] = line;
             }
             if (skip) continue;
+            if (budget && *budget <= 0) {
+                exhausted = true;
+                break;
+            }
+            if (budget) --*budget;
             int extra = 0;
             if (!solve_choice(&c, pick, x, &extra)) continue;
             found_consistent = true;
@@ -766,6 +781,8 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
     // only with some loop reversed): the assignment is not rigidly foldable.
     if (!probe && all_local && result != KIN_CONE_FOUND && result != KIN_CONE_UNDERDETERMINED && k > 0)
         result = KIN_CONE_INCOMPATIBLE;
+    // The budget ran out before a motion was found: nothing is proved.
+    if (exhausted && result == KIN_CONE_NONE) result = KIN_CONE_EXHAUSTED;
     (void)found_consistent;
     for (int j = 0; j < m->joint_count; ++j) {
         int col = col_of_joint[j];

@@ -14,6 +14,9 @@ ori_dof_def ori_default_dof_def(void)
     def.locked_edges = NULL;
     def.locked_count = 0;
     def.probe_generic = true;
+    def.probe_budget = 0;
+    def.progress = NULL;
+    def.progress_user = NULL;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
@@ -52,37 +55,59 @@ ori_status ori_mechanism_dof(const ori_mechanism *m, const ori_dof_def *def, ori
                          "the fold angles do not close the loops (residual %.3g above %.0e)", res,
                          ORI_TOL_START_RESIDUAL);
     }
+    if (def->progress && !def->progress(0.0, def->progress_user)) {
+        ori__free(col);
+        ori__free(th);
+        return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    }
     ori_status st = ori__kin_nullity(m, th, col, n, out, error);
     out->grubler = m->grubler;
     out->generic_dof = -1;
-    if (st == ORI_OK && def->probe_generic && out->dof > 0 && m->rows > 0) {
+    bool probe = st == ORI_OK && def->probe_generic && out->dof > 0 && m->rows > 0;
+    // Fractions: the rank at the state, then each probe round with its rank.
+    if (st == ORI_OK && def->progress &&
+        !def->progress(probe ? 1.0 / (ORI_KIN_PROBE_ROUNDS + 1) : 1.0, def->progress_user))
+        st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    if (st == ORI_OK && probe) {
         // Step along a motion and measure there; a single step may leave some vertices flat
-        // (still singular), so step again from the new state while the nullity drops.
+        // (still singular), so step again from the new state while the nullity drops. The
+        // branch enumeration of the probe is bounded by the budget (exponential otherwise).
+        long budget = def->probe_budget > 0 ? def->probe_budget : ORI_KIN_PROBE_BUDGET;
+        long start_budget = budget;
         double *cur = ori__alloc(sizeof(double) * (size_t)(J + 1));
         double *next = ori__alloc(sizeof(double) * (size_t)(J + 1));
         memcpy(cur, th, sizeof(double) * (size_t)J);
         int best = -1;
+        kin_probe_result pr = KIN_PROBE_RIGID;
         for (int round = 0; round < ORI_KIN_PROBE_ROUNDS && st == ORI_OK; ++round) {
-            if (!ori__kin_probe_generic(m, cur, col, n, next)) break;
+            pr = ori__kin_probe_generic(m, cur, col, n, next, &budget);
+            if (pr != KIN_PROBE_MOVED) break;
             ori_dof_result near;
             st = ori__kin_nullity(m, next, col, n, &near, error);
+            if (st == ORI_OK && def->progress &&
+                !def->progress((double)(round + 2) / (ORI_KIN_PROBE_ROUNDS + 1), def->progress_user))
+                st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
             if (st != ORI_OK || (best >= 0 && near.dof >= best)) break;
             best = near.dof;
             memcpy(cur, next, sizeof(double) * (size_t)J);
             if (best == 0) break;
         }
-        if (best < 0) {
+        out->probe_solves = (int)(start_budget - budget);
+        if (best >= 0) {
+            out->generic_dof = best;
+        } else if (pr == KIN_PROBE_EXHAUSTED) {
+            out->undetermined = true; // neither a motion nor a proof that there is none
+        } else {
             out->generic_dof = 0;
             out->rigid = true;
-        } else {
-            out->generic_dof = best;
         }
         ori__free(cur);
         ori__free(next);
-        if (st == ORI_OK) out->singular = out->dof > out->generic_dof;
+        if (st == ORI_OK) out->singular = out->generic_dof >= 0 && out->dof > out->generic_dof;
     } else if (st == ORI_OK && out->dof == 0) {
         out->generic_dof = 0;
     }
+    if (st == ORI_OK && def->progress) def->progress(1.0, def->progress_user);
     ori__free(col);
     ori__free(th);
     return st;

@@ -24,6 +24,12 @@ double *ori__kin_jacobian_dense(const ori_mechanism *m, const int *col_of_joint,
 
 kin_sls *ori__kin_jacobian_sls(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th)
 {
+    return ori__kin_jacobian_sls_parts(m, col_of_joint, ncols, th, NULL, NULL, NULL);
+}
+
+kin_sls *ori__kin_jacobian_sls_parts(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th,
+                                     int **colptr_out, int **rowind_out, double **vals_out)
+{
     double *blocks = ori__calloc((size_t)(6 * m->loop_col_total) + 1, sizeof(double));
     ori__kin_eval(m, th, NULL, blocks, NULL);
     int *colptr = ori__alloc(sizeof(int) * ((size_t)m->rows + 1));
@@ -65,9 +71,15 @@ kin_sls *ori__kin_jacobian_sls(const ori_mechanism *m, const int *col_of_joint, 
     double *v = ori__sls_values(s);
     for (int k = 0; k < pos; ++k) v[k] = vals[k];
     ori__free(blocks);
-    ori__free(colptr);
-    ori__free(rowind);
-    ori__free(vals);
     ori__free(order);
+    if (colptr_out) {
+        *colptr_out = colptr;
+        *rowind_out = rowind;
+        *vals_out = vals;
+    } else {
+        ori__free(colptr);
+        ori__free(rowind);
+        ori__free(vals);
+    }
     return s;
 }

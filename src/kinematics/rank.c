@@ -211,13 +211,145 @@ ori_status ori__kin_nullity(const ori_mechanism *m, const double *th, const int 
     return ori__kin_nullity_sparse(m, th, col_of_joint, ncols, out, error);
 }
 
+// σ_max of J by power iteration on JᵀJ (sls holds Jᵀ: n × m).
+static double sigma_max_of(kin_sls *sls, int n, int m)
+{
+    uint64_t seed = 0x2545F4914F6CDD1DULL;
+    double *x = ori__alloc(sizeof(double) * ((size_t)n + 1));
+    double *y = ori__alloc(sizeof(double) * ((size_t)m + 1));
+    for (int k = 0; k < n; ++k) x[k] = lcg(&seed);
+    double lam = 0.0;
+    for (int it = 0; it < 40; ++it) {
+        double nr = 0.0;
+        for (int k = 0; k < n; ++k) nr += x[k] * x[k];
+        nr = sqrt(nr);
+        if (!(nr > 0.0)) break;
+        for (int k = 0; k < n; ++k) x[k] /= nr;
+        ori__sls_mult(sls, x, y);
+        double yy = 0.0;
+        for (int k = 0; k < m; ++k) yy += y[k] * y[k];
+        lam = yy;
+        ori__sls_mult_t(sls, y, x);
+    }
+    ori__free(x);
+    ori__free(y);
+    return sqrt(lam);
+}
+
+// Smallest singular value of a matrix S stored in s (p × q, q ≥ p, compressed columns: s was
+// created with n = p "unknowns" and m = q "equations"), when S Sᵀ is positive definite: inverse
+// iteration with the Cholesky factor of S Sᵀ, Rayleigh quotient |Sᵀx|² of the unit iterate.
+// Returns -1 when S Sᵀ is not positive definite (S is rank deficient to working precision).
+static double sigma_min_full(kin_sls *s, int p, int q)
+{
+    if (!ori__sls_factor(s, 0.0)) return -1.0;
+    uint64_t seed = 0x9E3779B97F4A7C15ULL;
+    double *x = ori__alloc(sizeof(double) * ((size_t)p + 1));
+    double *y = ori__alloc(sizeof(double) * ((size_t)p + 1));
+    double *z = ori__alloc(sizeof(double) * ((size_t)q + 1));
+    for (int k = 0; k < p; ++k) x[k] = lcg(&seed);
+    double sigma = -1.0, prev = INFINITY;
+    for (int it = 0; it < ORI_KIN_INVERSE_ITERATIONS; ++it) {
+        double nr = 0.0;
+        for (int k = 0; k < p; ++k) nr += x[k] * x[k];
+        nr = sqrt(nr);
+        if (!(nr > 0.0)) break;
+        for (int k = 0; k < p; ++k) x[k] /= nr;
+        ori__sls_mult(s, x, z); // Sᵀx
+        double zz = 0.0;
+        for (int k = 0; k < q; ++k) zz += z[k] * z[k];
+        sigma = sqrt(zz);
+        if (fabs(prev - sigma) <= 1e-3 * sigma) break;
+        prev = sigma;
+        if (!ori__sls_solve(s, x, y)) {
+            sigma = -1.0;
+            break;
+        }
+        for (int k = 0; k < p; ++k) x[k] = y[k];
+    }
+    ori__free(x);
+    ori__free(y);
+    ori__free(z);
+    return sigma;
+}
+
+// Full-rank shortcut of the sparse nullity. Rows of J whose norm is below a thousandth of the
+// rank tolerance (exactly zero at the flat state: the normal component of every vertex loop)
+// are dropped; then J' (the rest) has full row rank when J'J'ᵀ has a Cholesky factor and its
+// smallest singular value is at least the tolerance (nullity n − rows), or full column rank
+// when JᵀJ does (nullity 0). Returns the nullity, or -1 when neither holds.
+static int full_rank_nullity(kin_sls *sls, int n, int m, const int *colptr, const int *rowind, const double *vals,
+                             double smax, double *sigma_cut)
+{
+    double tau = ORI_TOL_RANK_REL_SPARSE * smax;
+    int *keep = ori__alloc(sizeof(int) * ((size_t)m + 1)); // equation → kept row index or -1
+    int mk = 0;
+    for (int r = 0; r < m; ++r) {
+        double nr = 0.0;
+        for (int k = colptr[r]; k < colptr[r + 1]; ++k) nr += vals[k] * vals[k];
+        keep[r] = sqrt(nr) > 1e-3 * tau ? mk++ : -1;
+    }
+    int result = -1;
+    if (mk <= n) {
+        // J' as an mk × n matrix in compressed columns (one column per unknown).
+        int *cp = ori__calloc((size_t)n + 2, sizeof(int));
+        for (int r = 0; r < m; ++r)
+            if (keep[r] >= 0)
+                for (int k = colptr[r]; k < colptr[r + 1]; ++k) cp[rowind[k] + 2]++;
+        for (int c = 0; c < n; ++c) cp[c + 2] += cp[c + 1];
+        int nnz = cp[n + 1];
+        int *ri = ori__alloc(sizeof(int) * ((size_t)nnz + 1));
+        double *vv = ori__alloc(sizeof(double) * ((size_t)nnz + 1));
+        for (int r = 0; r < m; ++r) // rows ascending: each column's row indices come out sorted
+            if (keep[r] >= 0)
+                for (int k = colptr[r]; k < colptr[r + 1]; ++k) {
+                    int at = cp[rowind[k] + 1]++;
+                    ri[at] = keep[r];
+                    vv[at] = vals[k];
+                }
+        kin_sls *rs = ori__sls_create(mk, n, cp, ri);
+        double *x = ori__sls_values(rs);
+        for (int k = 0; k < nnz; ++k) x[k] = vv[k];
+        double smin = mk > 0 ? sigma_min_full(rs, mk, n) : INFINITY;
+        if (smin >= tau) {
+            result = n - mk;
+            *sigma_cut = mk > 0 ? smin : 0.0;
+        }
+        ori__sls_destroy(rs);
+        ori__free(cp);
+        ori__free(ri);
+        ori__free(vv);
+    } else {
+        double smin = sigma_min_full(sls, n, m);
+        if (smin >= tau) {
+            result = 0;
+            *sigma_cut = smin;
+        }
+    }
+    ori__free(keep);
+    return result;
+}
+
 ori_status ori__kin_nullity_sparse(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                                    ori_dof_result *out, ori_error *error)
 {
     out->unknowns = ncols;
     out->equations = m->rows;
-    kin_sls *sls = ori__kin_jacobian_sls(m, col_of_joint, ncols, th);
-    int nul = sparse_nullity(sls, ncols, m->rows, &out->sigma_max, &out->sigma_cut);
+    int *colptr, *rowind;
+    double *vals;
+    kin_sls *sls = ori__kin_jacobian_sls_parts(m, col_of_joint, ncols, th, &colptr, &rowind, &vals);
+    double smax = sigma_max_of(sls, ncols, m->rows);
+    int nul = -1;
+    if (smax > 0.0) nul = full_rank_nullity(sls, ncols, m->rows, colptr, rowind, vals, smax, &out->sigma_cut);
+    if (nul >= 0) {
+        out->sigma_max = smax;
+    } else {
+        for (int k = 0; k < colptr[m->rows]; ++k) ori__sls_values(sls)[k] = vals[k];
+        nul = sparse_nullity(sls, ncols, m->rows, &out->sigma_max, &out->sigma_cut);
+    }
+    ori__free(colptr);
+    ori__free(rowind);
+    ori__free(vals);
     ori__sls_destroy(sls);
     if (nul < 0) return ori__fail(error, ORI_ERR_INTERNAL, "sparse rank estimation failed");
     out->dense = false;
