@@ -490,10 +490,14 @@ typedef struct lsq {
     kin_sls *sls;
 } lsq;
 
-static void lsq_init(lsq *L, const eqset *E)
+// Dense (minimum-norm SVD steps, exact nullity) for small systems; a probe, which needs neither
+// the minimum norm nor the nullity, goes sparse above ORI_MOTION_DENSE_MAX_UNKNOWNS (an SVD per
+// Gauss–Newton iteration made the probe of a few hundred creases take seconds per try).
+static void lsq_init(lsq *L, const eqset *E, bool probe)
 {
     int m = E->m, n = E->n;
-    L->dense = (size_t)m * (size_t)n <= (size_t)ORI_DOF_DENSE_MAX_ENTRIES / 4 || n <= ORI_MOTION_DENSE_MAX_UNKNOWNS;
+    L->dense = (!probe && (size_t)m * (size_t)n <= (size_t)ORI_DOF_DENSE_MAX_ENTRIES / 4) ||
+               n <= ORI_MOTION_DENSE_MAX_UNKNOWNS;
     L->jac = L->rhs = L->sv = NULL;
     L->sls = NULL;
     if (L->dense) {
@@ -569,7 +573,7 @@ static int lsq_nullity(lsq *L, const eqset *E)
 
 // Solve the cone equations of one line choice from a seed whose signs follow the assignment.
 // Returns true with x when the equations are consistent; *extra = excess freedom.
-static bool solve_choice(const cone_sys *c, const int *pick, double *x, int *extra)
+static bool solve_choice(const cone_sys *c, const int *pick, double *x, int *extra, bool probe)
 {
     eqset E;
     eq_build(c, pick, &E);
@@ -580,7 +584,7 @@ static bool solve_choice(const cone_sys *c, const int *pick, double *x, int *ext
         if (col >= 0 && j != c->drive) x[col] = 0.5 * assigned_sign(c->m, j);
     }
     lsq L;
-    lsq_init(&L, &E);
+    lsq_init(&L, &E, probe);
     double *dx = ori__alloc(sizeof(double) * ((size_t)n + 1));
     double *trial = ori__alloc(sizeof(double) * ((size_t)n + 1));
     bool ok = false;
@@ -759,7 +763,7 @@ kin_cone_result ori__kin_cone_budget(const ori_mechanism *m, const double *th, c
             }
             if (budget) --*budget;
             int extra = 0;
-            if (!solve_choice(&c, pick, x, &extra)) continue;
+            if (!solve_choice(&c, pick, x, &extra, probe)) continue;
             found_consistent = true;
             if (extra > 0 && !probe) {
                 *extra_dof = extra;
