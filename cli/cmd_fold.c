@@ -6,6 +6,7 @@
 
 #include "collide_args.h"
 #include "kin_args.h"
+#include "output_guard.h"
 
 static json_t *v3_json(ori_v3 v)
 {
@@ -226,11 +227,25 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     return CLI_EXIT_OK;
 }
 
+// The frames a fold will output (start, one per step, the end) and the bytes they take as
+// FOLD frames (-o: 3 coordinates per vertex and an angle per edge) and JSON (an angle per
+// edge), about 20 characters a number: asks for --force beyond the guard (output_guard.h).
+static int guard_output(const cli_fold_args *a, const cli_kin *k, const ori_motion_def *def, bool force)
+{
+    double from = def->has_from ? def->from_rad : def->start_angles_rad ? def->start_angles_rad[a->drive] : 0.0;
+    double frames = floor(fabs(def->to_rad - from) / def->step_rad) + 2.0;
+    double V = ori_mechanism_vertex_count(k->mech), E = ori_mechanism_edge_count(k->mech);
+    double bytes = (a->out ? frames * (3.0 * V + E) * 20.0 : 0.0) + (a->json ? frames * E * 20.0 : 0.0);
+    return cli_guard_check("fold", frames, bytes, force);
+}
+
 static int run(int argc, char **argv)
 {
     cli_collide_opts co;
     int rc = cli_collide_strip("fold", &argc, argv, &co);
     if (rc != CLI_EXIT_OK) return rc;
+    bool force;
+    if ((rc = cli_guard_strip("fold", &argc, argv, &force)) != CLI_EXIT_OK) return rc;
     cli_fold_args a;
     rc = cli_fold_parse("fold", argc, argv, false, &a);
     if (rc != CLI_EXIT_OK) return rc;
@@ -239,6 +254,11 @@ static int run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     ori_motion_def def;
     rc = cli_fold_def("fold", &a, &k, &def);
+    if (rc != CLI_EXIT_OK) {
+        cli_kin_free(&k);
+        return rc;
+    }
+    rc = guard_output(&a, &k, &def, force);
     if (rc != CLI_EXIT_OK) {
         cli_kin_free(&k);
         return rc;
@@ -277,7 +297,7 @@ const cli_command cli_cmd_fold = {
     "fold rigidly: fix a face, lock creases, drive a crease; motion, branch and validity",
     "usage: orikin fold FILE --fix FACE --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
     "                   [--lock E1,E2,...] [--frame N] [--solver S] [--linear L]\n"
-    "                   [--no-collisions] [--clearance D] [--json] [-o OUT]\n"
+    "                   [--no-collisions] [--clearance D] [--force] [--json] [-o OUT]\n"
     "\n"
     "Treat the crease pattern as a mechanism (faces = rigid bodies, creases = revolute joints),\n"
     "hold face FACE fixed and the locked creases at their current angle, and turn crease EDGE\n"
@@ -304,6 +324,7 @@ const cli_command cli_cmd_fold = {
     "  --linear L      numeric solver's linear algebra: auto (default), dense, sparse or sweep\n"
     "  --no-collisions do not check the motion for self-collision\n"
     "  --clearance D   faces sharing no vertex closer than D collide too (a length >= 0)\n"
+    "  --force         write even when the run would output more than 10000 frames or 1 GB\n"
     "  --json          print {valid, verdict, reason, collision: {step, drive_deg, faces, point}\n"
     "                  | null, rigidly_foldable, dof, grubler, solver,\n"
     "                  frame_a, frame_b, surrounding, split, offending_edges, frames:\n"

@@ -73,3 +73,23 @@ Test(output, shortest_format_edge_cases)
     ori__format_double(INFINITY, a, sizeof a);
     cr_assert_str_eq(a, "inf");
 }
+
+// A fold that would write more than 1 GB asks for --force before solving anything (usage
+// error, exit 2, naming the option): a 100 × 100 Miura-ori in 1 802 frames of 30 603
+// coordinates and 20 200 angles.
+Test(output, fold_over_a_gigabyte_asks_for_force)
+{
+    char *dir = test_tmpdir();
+    char args[4300];
+    snprintf(args, sizeof args, "generate miura --rows 100 --cols 100 -o '%s/m.fold'", dir);
+    cr_assert_eq(test_run_cli(args, NULL), 0);
+    char *out = NULL, *err = NULL;
+    snprintf(args, sizeof args, "fold '%s/m.fold' --fix 0 --drive 100 --to 90 --step 0.05 -o '%s/o.fold'", dir, dir);
+    cr_assert_eq(test_run_cli_split(args, &out, &err), 2, "%s", err);
+    cr_assert(strstr(err, "about 1.8 GB (more than 1 GB): add --force"), "%s", err);
+    snprintf(args, sizeof args, "%s/o.fold", dir);
+    cr_assert_null(test_read_text(args));
+    free(out);
+    free(err);
+    test_tmpdir_remove(dir);
+}
