@@ -104,14 +104,14 @@ static bool jacobi_eigenvalues(double *a, int b, double *w)
 // (JᵀJ + μI)⁻¹, μ = τ², τ = ORI_TOL_RANK_REL_SPARSE·σ_max, and Rayleigh–Ritz on the block:
 // the Ritz values σ_i = |J x_i| below τ count as null directions. The block grows (×2) while
 // all its Ritz values are null. Accurate while the smallest nonzero σ is well above τ.
-static int sparse_nullity(kin_sls *sls, int n, int m, double *sigma_max, double *sigma_cut)
+static int sparse_nullity(kin_sls *sls, int n, int m, double smax_known, double *sigma_max, double *sigma_cut)
 {
     uint64_t seed = 0x9E3779B97F4A7C15ULL;
     double *x = ori__alloc(sizeof(double) * (size_t)n);
     double *y = ori__alloc(sizeof(double) * (size_t)(m > 0 ? m : 1));
     for (int k = 0; k < n; ++k) x[k] = lcg(&seed);
-    double lam = 0.0;
-    for (int it = 0; it < 40; ++it) {
+    double lam = smax_known * smax_known;
+    for (int it = 0; it < 40 && !(smax_known > 0.0); ++it) {
         double nr = 0.0;
         for (int k = 0; k < n; ++k) nr += x[k] * x[k];
         nr = sqrt(nr);
@@ -276,8 +276,8 @@ static double sigma_min_full(kin_sls *s, int p, int q)
 // Full-rank shortcut of the sparse nullity. Rows of J whose norm is below a thousandth of the
 // rank tolerance (exactly zero at the flat state: the normal component of every vertex loop)
 // are dropped; then J' (the rest) has full row rank when J'J'ᵀ has a Cholesky factor and its
-// smallest singular value is at least the tolerance (nullity n − rows), or full column rank
-// when JᵀJ does (nullity 0). Returns the nullity, or -1 when neither holds.
+// smallest singular value is at least the tolerance (nullity n − rows). Returns the nullity,
+// or -1 when that does not hold (or J′ has more rows than columns).
 static int full_rank_nullity(kin_sls *sls, int n, int m, const int *colptr, const int *rowind, const double *vals,
                              double smax, double *sigma_cut)
 {
@@ -319,13 +319,10 @@ static int full_rank_nullity(kin_sls *sls, int n, int m, const int *colptr, cons
         ori__free(cp);
         ori__free(ri);
         ori__free(vv);
-    } else {
-        double smin = sigma_min_full(sls, n, m);
-        if (smin >= tau) {
-            result = 0;
-            *sigma_cut = smin;
-        }
     }
+    // More rows than columns: a full-column-rank test would cost the same factorization of JᵀJ
+    // as the subspace iteration, which settles nullity 0 in its first block anyway.
+    (void)sls;
     ori__free(keep);
     return result;
 }
@@ -345,7 +342,7 @@ ori_status ori__kin_nullity_sparse(const ori_mechanism *m, const double *th, con
         out->sigma_max = smax;
     } else {
         for (int k = 0; k < colptr[m->rows]; ++k) ori__sls_values(sls)[k] = vals[k];
-        nul = sparse_nullity(sls, ncols, m->rows, &out->sigma_max, &out->sigma_cut);
+        nul = sparse_nullity(sls, ncols, m->rows, smax, &out->sigma_max, &out->sigma_cut);
     }
     ori__free(colptr);
     ori__free(rowind);
