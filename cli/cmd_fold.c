@@ -7,6 +7,7 @@
 #include "collide_args.h"
 #include "kin_args.h"
 #include "output_guard.h"
+#include "progress.h"
 
 static json_t *v3_json(ori_v3 v)
 {
@@ -215,7 +216,11 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     const ori_mechanism *m = k->mech;
     int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
-    for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
+    int F = cli_collide_frames(col, ori_motion_frame_count(mo));
+    cli_progress bar; // the frames (half the work), then the text and the file
+    cli_progress_begin(&bar, "fold", "writing frames");
+    for (int f = 0; f < F; ++f) {
+        cli_progress_update(&bar, 0.5 * f / F);
         ori_motion_frame_vertices(mo, f, pos);
         char title[128];
         snprintf(title, sizeof title, "fold crease %d: %g deg", a->drive, ori_rad_to_deg_output(ori_motion_frame_drive(mo, f)));
@@ -223,7 +228,10 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     }
     free(pos);
     ori_error err;
-    if (ori_fold_save_file(k->doc, a->out, &err) != ORI_OK) return cli_input_error("fold", a->out, &err);
+    cli_progress_update(&bar, 0.5);
+    ori_status st = ori_fold_save_file(k->doc, a->out, &err);
+    cli_progress_end(&bar);
+    if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
     return CLI_EXIT_OK;
 }
 
