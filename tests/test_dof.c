@@ -248,3 +248,28 @@ Test(dof, cli_output_independent_of_blas_threads, .timeout = 120)
     free(files[1]);
     test_tmpdir_remove(dir);
 }
+
+// --frame chooses the state: a folded frame of the open corner (written by fold -o) is
+// regular, DOF 2 (1 with crease 11 locked), where the flat frame 0 has 3.
+Test(dof, cli_frame_is_the_state, .timeout = 60)
+{
+    char *dir = test_tmpdir();
+    char args[4300], *out = NULL;
+    snprintf(args, sizeof args,
+             "fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 -o '%s/oc.fold'", dir);
+    cr_assert_eq(test_run_cli(args, NULL), 0);
+    snprintf(args, sizeof args, "dof '%s/oc.fold' --frame 5 --json", dir);
+    cr_assert_eq(test_run_cli_split(args, &out, NULL), 0);
+    cr_assert(strstr(out, "\"frame\":5,"), "%s", out);
+    cr_assert(strstr(out, "\"rank\":3,\"dof\":2,\"generic_dof\":2,\"singular\":false"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "dof '%s/oc.fold' --frame 5 --lock 11 --json", dir);
+    cr_assert_eq(test_run_cli_split(args, &out, NULL), 0);
+    cr_assert(strstr(out, "\"dof\":1,\"generic_dof\":1"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "dof '%s/oc.fold' --json", dir);
+    cr_assert_eq(test_run_cli_split(args, &out, NULL), 0);
+    cr_assert(strstr(out, "\"dof\":3,\"generic_dof\":2,\"singular\":true"), "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
+}
