@@ -488,7 +488,23 @@ typedef struct lsq {
     bool dense;
     double *jac, *rhs, *sv;
     kin_sls *sls;
+    int factor_state; // sparse: 0 none, 1 a factor of JᵀJ (λ = 0), 2 of JᵀJ + λI, for the values in sls
 } lsq;
+
+// Copy the equations' derivatives into the sparse object; false when they equal the values
+// already there (the factor, if any, still applies: the line and linear rows of the cone never
+// change, so on a pattern of degree-4 vertices one factorization serves every iteration).
+static bool lsq_load(lsq *L, const eqset *E)
+{
+    double *v = ori__sls_values(L->sls);
+    int nnz = E->ptr[E->m];
+    bool same = L->factor_state != 0;
+    for (int q = 0; q < nnz && same; ++q) same = v[q] == E->val[q];
+    if (same) return false;
+    for (int q = 0; q < nnz; ++q) v[q] = E->val[q];
+    L->factor_state = 0;
+    return true;
+}
 
 // Dense (minimum-norm SVD steps, exact nullity) for small systems; a probe, which needs neither
 // the minimum norm nor the nullity, goes sparse above ORI_MOTION_DENSE_MAX_UNKNOWNS (an SVD per
@@ -500,6 +516,7 @@ static void lsq_init(lsq *L, const eqset *E, bool probe)
                n <= ORI_MOTION_DENSE_MAX_UNKNOWNS;
     L->jac = L->rhs = L->sv = NULL;
     L->sls = NULL;
+    L->factor_state = 0;
     if (L->dense) {
         L->jac = ori__alloc(sizeof(double) * ((size_t)m * (size_t)n + 1));
         L->rhs = ori__alloc(sizeof(double) * ((size_t)(m > n ? m : n) + 1));
@@ -534,14 +551,13 @@ static bool lsq_step(lsq *L, const eqset *E, double *dx)
         for (int k = 0; k < n; ++k) dx[k] = L->rhs[k];
         return true;
     }
-    double *v = ori__sls_values(L->sls);
-    double tr = 0.0;
-    for (int q = 0; q < E->ptr[m]; ++q) {
-        v[q] = E->val[q];
-        tr += v[q] * v[q];
+    if (lsq_load(L, E)) {
+        double tr = 0.0;
+        for (int q = 0; q < E->ptr[m]; ++q) tr += E->val[q] * E->val[q];
+        if (ori__sls_factor(L->sls, 0.0)) L->factor_state = 1;
+        else if (ori__sls_factor(L->sls, ORI_TOL_RANK_REL * (n > 0 ? tr / n : 1.0))) L->factor_state = 2;
+        else return false;
     }
-    if (!ori__sls_factor(L->sls, 0.0) && !ori__sls_factor(L->sls, ORI_TOL_RANK_REL * (n > 0 ? tr / n : 1.0)))
-        return false;
     double *neg = ori__alloc(sizeof(double) * ((size_t)m + 1));
     double *rhs = ori__alloc(sizeof(double) * ((size_t)n + 1));
     for (int e = 0; e < m; ++e) neg[e] = -E->g[e];
@@ -565,9 +581,11 @@ static int lsq_nullity(lsq *L, const eqset *E)
         int rank = ori__dense_rank(L->jac, m, n, ORI_TOL_RANK_REL, &smax, &scut);
         return rank < 0 ? 0 : n - rank;
     }
-    double *v = ori__sls_values(L->sls);
-    for (int q = 0; q < E->ptr[m]; ++q) v[q] = E->val[q];
-    if (!ori__sls_factor(L->sls, 0.0)) return 1;
+    if (lsq_load(L, E) || L->factor_state != 1) {
+        L->factor_state = 0;
+        if (!ori__sls_factor(L->sls, 0.0)) return 1;
+        L->factor_state = 1;
+    }
     return ori__sls_rcond(L->sls) < ORI_TOL_RANK_REL_SPARSE ? 1 : 0;
 }
 
