@@ -278,8 +278,8 @@ static double sigma_min_full(kin_sls *s, int p, int q)
 // are dropped; then J' (the rest) has full row rank when J'J'ᵀ has a Cholesky factor and its
 // smallest singular value is at least the tolerance (nullity n − rows). Returns the nullity,
 // or -1 when that does not hold (or J′ has more rows than columns).
-static int full_rank_nullity(kin_sls *sls, int n, int m, const int *colptr, const int *rowind, const double *vals,
-                             double smax, double *sigma_cut)
+static int full_rank_nullity(int n, int m, const int *colptr, const int *rowind, const double *vals, double smax,
+                             double *sigma_cut)
 {
     double tau = ORI_TOL_RANK_REL_SPARSE * smax;
     int *keep = ori__alloc(sizeof(int) * ((size_t)m + 1)); // equation → kept row index or -1
@@ -322,7 +322,6 @@ static int full_rank_nullity(kin_sls *sls, int n, int m, const int *colptr, cons
     }
     // More rows than columns: a full-column-rank test would cost the same factorization of JᵀJ
     // as the subspace iteration, which settles nullity 0 in its first block anyway.
-    (void)sls;
     ori__free(keep);
     return result;
 }
@@ -337,16 +336,12 @@ ori_status ori__kin_nullity_sparse(const ori_mechanism *m, const double *th, con
     kin_sls *sls = ori__kin_jacobian_sls_parts(m, col_of_joint, ncols, th, &colptr, &rowind, &vals);
     double smax = sigma_max_of(sls, ncols, m->rows);
     int nul = -1;
-    if (smax > 0.0) nul = full_rank_nullity(sls, ncols, m->rows, colptr, rowind, vals, smax, &out->sigma_cut);
-    if (nul >= 0) {
-        out->sigma_max = smax;
-    } else {
-        for (int k = 0; k < colptr[m->rows]; ++k) ori__sls_values(sls)[k] = vals[k];
-        nul = sparse_nullity(sls, ncols, m->rows, smax, &out->sigma_max, &out->sigma_cut);
-    }
-    ori__free(colptr);
+    if (smax > 0.0) nul = full_rank_nullity(ncols, m->rows, colptr, rowind, vals, smax, &out->sigma_cut);
+    ori__free(colptr); // (before the subspace iteration's factorization: less at the peak)
     ori__free(rowind);
     ori__free(vals);
+    if (nul >= 0) out->sigma_max = smax;
+    else nul = sparse_nullity(sls, ncols, m->rows, smax, &out->sigma_max, &out->sigma_cut);
     ori__sls_destroy(sls);
     if (nul < 0) return ori__fail(error, ORI_ERR_INTERNAL, "sparse rank estimation failed");
     out->dense = false;
