@@ -32,7 +32,7 @@ bench: build
 	@$(BUILD)/bench/orikin_bench
 
 fuzz:
-	@CC=clang cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=Debug -DORI_FUZZ=ON -DORI_TESTS=OFF >/dev/null
+	@CC=clang CXX=clang++ cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=Debug -DORI_FUZZ=ON -DORI_TESTS=OFF >/dev/null
 	@cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzzers
 
 fuzz-run: fuzz

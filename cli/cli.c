@@ -169,17 +169,89 @@ int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, or
     return CLI_EXIT_OK;
 }
 
+// Compact JSON of v on f, numbers by ori_format_real: the text ori_json_normalize makes of
+// jansson's dump, written directly (no %.17g printing and no re-parse: a fold of 2 M angles
+// prints in a fraction of the time).
+static void write_json_string(FILE *f, const char *s, size_t n)
+{
+    putc('"', f);
+    size_t run = 0; // bytes copied as they are, flushed before each escape
+    for (size_t i = 0; i < n; ++i) {
+        unsigned char c = (unsigned char)s[i];
+        const char *esc = NULL;
+        char u[8];
+        switch (c) {
+        case '"': esc = "\\\""; break;
+        case '\\': esc = "\\\\"; break;
+        case '\n': esc = "\\n"; break;
+        case '\r': esc = "\\r"; break;
+        case '\t': esc = "\\t"; break;
+        case '\b': esc = "\\b"; break;
+        case '\f': esc = "\\f"; break;
+        default:
+            if (c < 0x20) {
+                snprintf(u, sizeof u, "\\u%04x", c);
+                esc = u;
+            }
+        }
+        if (!esc) {
+            run++;
+            continue;
+        }
+        fwrite(s + i - run, 1, run, f);
+        run = 0;
+        fputs(esc, f);
+    }
+    fwrite(s + n - run, 1, run, f);
+    putc('"', f);
+}
+
+static void write_json(FILE *f, const json_t *v)
+{
+    char num[40];
+    switch (json_typeof(v)) {
+    case JSON_OBJECT: {
+        putc('{', f);
+        const char *key;
+        json_t *val;
+        bool first = true;
+        json_object_foreach((json_t *)v, key, val)
+        {
+            if (!first) putc(',', f);
+            first = false;
+            write_json_string(f, key, strlen(key));
+            putc(':', f);
+            write_json(f, val);
+        }
+        putc('}', f);
+        break;
+    }
+    case JSON_ARRAY:
+        putc('[', f);
+        for (size_t i = 0; i < json_array_size(v); ++i) {
+            if (i) putc(',', f);
+            write_json(f, json_array_get(v, i));
+        }
+        putc(']', f);
+        break;
+    case JSON_STRING: write_json_string(f, json_string_value(v), json_string_length(v)); break;
+    case JSON_INTEGER: fprintf(f, "%" JSON_INTEGER_FORMAT, json_integer_value(v)); break;
+    case JSON_REAL:
+        ori_format_real(json_real_value(v), num, sizeof num);
+        fputs(num, f);
+        break;
+    case JSON_TRUE: fputs("true", f); break;
+    case JSON_FALSE: fputs("false", f); break;
+    case JSON_NULL: fputs("null", f); break;
+    }
+}
+
 void cli_print_json(json_t *value)
 {
-    char *raw = json_dumps(value, JSON_ENCODE_ANY | JSON_COMPACT | JSON_REAL_PRECISION(17));
+    if (!value) return;
+    write_json(stdout, value);
+    putchar('\n');
     json_decref(value);
-    if (!raw) return;
-    char *text = ori_json_normalize(raw, false, NULL);
-    free(raw);
-    if (text) {
-        fputs(text, stdout);
-        ori_buffer_free(text);
-    }
 }
 
 static const char *finishing_command = NULL;

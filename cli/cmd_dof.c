@@ -3,59 +3,136 @@
 #include <string.h>
 
 #include "kin_args.h"
+#include "progress.h"
+
+// The mechanism of frame 0 (FOLD, with --weld) or of a drawing (SVG, OPX, CP, with the import
+// options), and the fold angles of --frame N (a folded frame gives its edges_foldAngle; a flat
+// crease-pattern frame is the flat state, as for fold). Prints the error and returns its exit
+// code on failure, with everything released.
+static int load(const char *cmd, const char *path, cli_input *in, ori_fold **doc, ori_pattern **flat,
+                ori_mechanism **mech, double **angles)
+{
+    *doc = NULL;
+    *flat = NULL;
+    *mech = NULL;
+    *angles = NULL;
+    int frame = in->frame;
+    in->frame = 0; // the mechanism is frame 0's; --frame only chooses the state
+    int rc = cli_input_load(cmd, path, in, doc, flat);
+    in->frame = frame;
+    if (rc != CLI_EXIT_OK) return rc;
+    ori_error err;
+    ori_pattern *state = NULL;
+    if (ori_pattern_is_folded_form(*flat) || ori_pattern_is_3d(*flat)) {
+        rc = cli_input_fail(cmd, path, "frame 0 is a folded form: the kinematics needs the flat crease pattern there");
+        goto fail;
+    }
+    if (frame != 0) {
+        int frames = ori_fold_frame_count(*doc);
+        if (frame >= frames) {
+            rc = cli_value_fail(cmd, path, "--frame", "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
+            goto fail;
+        }
+        ori_build_def bd = ori_default_build_def();
+        bd.check_planarity = false;
+        bd.weld = in->weld;
+        if (ori_fold_get_pattern(*doc, frame, &bd, &state, &err) != ORI_OK) {
+            char buf[512];
+            ori_error_format(&err, buf, sizeof buf);
+            rc = cli_input_fail(cmd, path, "frame %d: %s", frame, buf);
+            goto fail;
+        }
+        if (ori_pattern_edge_count(state) != ori_pattern_edge_count(*flat) ||
+            ori_pattern_vertex_count(state) != ori_pattern_vertex_count(*flat)) {
+            rc = cli_input_fail(cmd, path, "frame %d has different vertices or edges from frame 0: not a state of the "
+                                "same pattern", frame);
+            goto fail;
+        }
+    }
+    ori_mechanism_def md = ori_default_mechanism_def();
+    md.pattern = *flat;
+    if (ori_mechanism_create(&md, mech, &err) != ORI_OK) {
+        rc = cli_input_error(cmd, path, &err);
+        goto fail;
+    }
+    int ne = ori_pattern_edge_count(*flat);
+    *angles = calloc((size_t)ne + 1, sizeof(double));
+    // A flat crease-pattern frame is the flat state whatever its edges_foldAngle say (targets).
+    bool folded = state && (ori_pattern_is_folded_form(state) || ori_pattern_is_3d(state));
+    for (int e = 0; e < ne && folded; ++e) (*angles)[e] = ori_pattern_edge(state, e).fold_angle_rad;
+    ori_pattern_destroy(state);
+    return CLI_EXIT_OK;
+fail:
+    ori_pattern_destroy(state);
+    ori_mechanism_destroy(*mech);
+    ori_pattern_destroy(*flat);
+    ori_fold_destroy(*doc);
+    *mech = NULL;
+    *flat = NULL;
+    *doc = NULL;
+    return rc;
+}
 
 static int run(int argc, char **argv)
 {
-    const char *path = NULL;
-    int frame = 0;
+    const char *cmd = "dof", *path = NULL;
     bool json = false;
     int locks[256], nlock = 0;
+    cli_input in;
+    cli_input_init(&in);
+    cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
+        int r = cli_input_option(cmd, argc, argv, &i, &in, &seen);
+        if (r < 0) return -r;
+        if (r > 0) continue;
         if (strcmp(argv[i], "--json") == 0) {
+            if (!cli_once(cmd, &seen, "--json")) return CLI_EXIT_USAGE;
             json = true;
         } else if (strcmp(argv[i], "--angles-from-frame") == 0) {
-            const char *v = cli_option_value("dof", argc, argv, &i);
-            if (!v) return CLI_EXIT_USAGE;
-            if (!cli_parse_int(v, &frame) || frame < 0) return cli_usage("dof", "--angles-from-frame needs a frame number >= 0");
+            return cli_usage(cmd, "--angles-from-frame is now --frame N (the state to analyse)");
         } else if (strcmp(argv[i], "--lock") == 0) {
-            const char *v = cli_option_value("dof", argc, argv, &i);
+            const char *v = cli_option_once(cmd, argc, argv, &i, &seen);
             if (!v) return CLI_EXIT_USAGE;
             nlock = cli_parse_int_list(v, locks, 256);
-            if (nlock < 0) return cli_int_list_usage("dof", "--lock", v, 256);
+            if (nlock < 0) return cli_int_list_usage(cmd, "--lock", v, 256);
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_usage("dof", "unknown option %s", argv[i]);
+            return cli_usage(cmd, "unknown option %s", argv[i]);
         } else if (!path) {
             path = argv[i];
         } else {
-            return cli_usage("dof", "one FILE only");
+            return cli_usage(cmd, "one FILE only");
         }
     }
-    if (!path) return cli_usage("dof", "missing FILE");
-    cli_kin k;
-    int rc = cli_kin_load("dof", path, frame, &k);
+    if (!path) return cli_usage(cmd, "missing FILE");
+    ori_fold *doc;
+    ori_pattern *flat;
+    ori_mechanism *mech;
+    double *angles;
+    int rc = load(cmd, path, &in, &doc, &flat, &mech, &angles);
     if (rc != CLI_EXIT_OK) return rc;
-    int E = ori_mechanism_edge_count(k.mech);
-    for (int i = 0; i < nlock; ++i)
-        if (locks[i] < 0 || locks[i] >= E) {
-            cli_kin_free(&k);
-            return cli_input_fail("dof", path, "edges_vertices %d: no edge %d to lock (the pattern has edges 0 to %d)",
-                                  locks[i], locks[i], E - 1);
-        }
-    ori_dof_def def = ori_default_dof_def();
-    def.angles_rad = k.angles;
-    def.locked_edges = locks;
-    def.locked_count = nlock;
+    int E = ori_mechanism_edge_count(mech);
+    for (int i = 0; i < nlock && rc == CLI_EXIT_OK; ++i)
+        if (locks[i] < 0 || locks[i] >= E)
+            rc = cli_value_fail(cmd, path, "--lock", "edge %d does not exist (edges 0 to %d)", locks[i], E - 1);
     ori_dof_result r;
-    ori_error err;
-    if (ori_mechanism_dof(k.mech, &def, &r, &err) != ORI_OK) {
-        rc = cli_input_error("dof", path, &err);
-        cli_kin_free(&k);
-        return rc;
+    if (rc == CLI_EXIT_OK) {
+        ori_dof_def def = ori_default_dof_def();
+        def.angles_rad = angles;
+        def.locked_edges = locks;
+        def.locked_count = nlock;
+        cli_progress bar;
+        cli_progress_begin(&bar, cmd, "ranking the Jacobian");
+        def.progress = cli_progress_fn;
+        def.progress_user = &bar;
+        ori_error err;
+        ori_status st = ori_mechanism_dof(mech, &def, &r, &err);
+        cli_progress_end(&bar);
+        if (st != ORI_OK) rc = cli_input_error(cmd, path, &err);
     }
-    if (json) {
+    if (rc == CLI_EXIT_OK && json) {
         json_t *out = json_object();
         json_object_set_new(out, "file", json_string(path));
-        json_object_set_new(out, "frame", json_integer(frame));
+        json_object_set_new(out, "frame", json_integer(in.frame));
         json_object_set_new(out, "grubler", json_integer(r.grubler));
         json_object_set_new(out, "unknowns", json_integer(r.unknowns));
         json_object_set_new(out, "equations", json_integer(r.equations));
@@ -64,44 +141,64 @@ static int run(int argc, char **argv)
         json_object_set_new(out, "generic_dof", r.generic_dof >= 0 ? json_integer(r.generic_dof) : json_null());
         json_object_set_new(out, "singular", json_boolean(r.singular));
         json_object_set_new(out, "rigid", json_boolean(r.rigid));
+        json_object_set_new(out, "undetermined", json_boolean(r.undetermined));
+        json_object_set_new(out, "probe_solves", json_integer(r.probe_solves));
         json_object_set_new(out, "method", json_string(r.dense ? "dense-svd" : "sparse-cholmod"));
         json_object_set_new(out, "sigma_max", json_real(r.sigma_max));
         json_object_set_new(out, "sigma_cut", json_real(r.sigma_cut));
-        json_object_set_new(out, "loops", json_integer(ori_mechanism_loop_count(k.mech)));
+        json_object_set_new(out, "loops", json_integer(ori_mechanism_loop_count(mech)));
         cli_print_json(out);
-    } else {
-        printf("file               %s (angles from frame %d)\n", path, frame);
-        printf("bodies, joints     %d faces, %d creases, %d loops\n", ori_mechanism_face_count(k.mech),
-               ori_mechanism_joint_count(k.mech), ori_mechanism_loop_count(k.mech));
+    } else if (rc == CLI_EXIT_OK) {
+        printf("file               %s (state of frame %d)\n", path, in.frame);
+        printf("bodies, joints     %d faces, %d creases, %d loops\n", ori_mechanism_face_count(mech),
+               ori_mechanism_joint_count(mech), ori_mechanism_loop_count(mech));
         printf("Grübler-Kutzbach   %d\n", r.grubler);
         printf("Jacobian           %d equations x %d unknowns, rank %d (%s)\n", r.equations, r.unknowns, r.rank,
                r.dense ? "dense SVD" : "sparse CHOLMOD");
         printf("dof at this state  %d\n", r.dof);
         if (r.generic_dof >= 0)
             printf("dof nearby         %d%s\n", r.generic_dof, r.rigid ? " (no motion found: rigid)" : "");
-        printf("singular           %s\n", r.singular ? "yes (the state inflates the nullity, e.g. the flat sheet)" : "no");
+        else if (r.undetermined)
+            printf("dof nearby         undetermined (no motion found in %d branch combinations, none ruled out)\n",
+                   r.probe_solves);
+        printf("singular           %s\n", r.singular ? "yes (the state inflates the nullity, e.g. the flat sheet)"
+                                          : r.undetermined ? "unknown" : "no");
     }
-    cli_kin_free(&k);
-    return CLI_EXIT_OK;
+    free(angles);
+    ori_mechanism_destroy(mech);
+    ori_pattern_destroy(flat);
+    ori_fold_destroy(doc);
+    return rc;
 }
 
 const cli_command cli_cmd_dof = {
     "dof",
     "degrees of freedom: Grubler-Kutzbach count and loop-closure Jacobian rank",
-    "usage: orikin dof FILE [--angles-from-frame N] [--lock E1,E2,...] [--json]\n"
+    "usage: orikin dof FILE [--frame N] [--lock E1,E2,...] [--json]\n"
     "\n"
     "Count the mobility of the pattern's mechanism (faces = rigid bodies, creases = revolute\n"
     "joints): the Grubler-Kutzbach formula (wrong for overconstrained origami: the open corner\n"
     "gives -1) and the true DOF, the nullity of the loop-closure Jacobian by SVD (relative rank\n"
     "tolerance 1e-9; patterns beyond 4e6 Jacobian entries use a sparse CHOLMOD method with\n"
     "tolerance 1e-7). At a singular state such as the flat sheet the nullity is inflated; the\n"
-    "DOF at a nearby regular state on the motion is reported beside it.\n"
+    "DOF at a nearby regular state on the motion is reported beside it. That probe tries at\n"
+    "most 256 branch combinations of the singular vertices; when none gives a motion and not\n"
+    "all were tried, the nearby DOF is \"undetermined\" (never a guess). FILE is FOLD (the\n"
+    "mechanism is frame 0) or a drawing (SVG, OPX, CP: the flat state).\n"
     "\n"
     "options:\n"
-    "  --angles-from-frame N  evaluate at the fold angles of frame N (default 0)\n"
-    "  --lock E1,...          creases held fixed\n"
-    "  --json                 print {file, frame, grubler, unknowns, equations, rank, dof,\n"
-    "                         generic_dof, singular, rigid, method, sigma_max, sigma_cut, loops}\n"
+    "  --frame N          the state: fold angles of frame N (0 = top level, k = file_frames[k-1];\n"
+    "                     default 0). A flat crease-pattern frame is the flat state.\n"
+    "  --lock E1,...      creases held fixed (removed from the unknowns)\n"
+    "  --json             print one object: file, frame; grubler (Grubler-Kutzbach count);\n"
+    "                     unknowns (unlocked creases), equations (3 per interior vertex, 6 per\n"
+    "                     hole), rank and dof (= unknowns - rank) at the state; generic_dof (DOF\n"
+    "                     at a nearby regular state, null when not found); singular (dof >\n"
+    "                     generic_dof); rigid (no motion at all); undetermined (the probe's\n"
+    "                     budget ran out: generic_dof null); probe_solves (branch combinations\n"
+    "                     tried); method (dense-svd or sparse-cholmod); sigma_max, sigma_cut\n"
+    "                     (largest singular value, smallest one counted in the rank); loops\n"
+    CLI_INPUT_HELP
     "\n"
     "example: orikin dof examples/patterns/open-corner.fold\n",
     run,

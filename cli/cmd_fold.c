@@ -6,6 +6,8 @@
 
 #include "collide_args.h"
 #include "kin_args.h"
+#include "output_guard.h"
+#include "progress.h"
 
 static json_t *v3_json(ori_v3 v)
 {
@@ -216,7 +218,11 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
     const ori_mechanism *m = k->mech;
     int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
-    for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
+    int F = cli_collide_frames(col, ori_motion_frame_count(mo));
+    cli_progress bar; // the frames (half the work), then the text and the file
+    cli_progress_begin(&bar, "fold", "writing frames");
+    for (int f = 0; f < F; ++f) {
+        cli_progress_update(&bar, 0.5 * f / F);
         ori_motion_frame_vertices(mo, f, pos);
         char title[128];
         snprintf(title, sizeof title, "fold crease %d: %g deg", a->drive, ori_rad_to_deg_output(ori_motion_frame_drive(mo, f)));
@@ -235,7 +241,6 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
         const char *why = collides ? hit : ori_motion_reason(mo);
         json_object_set_new(p, "reason", json_string(why ? why : ""));
         json_object_set_new(p, "to_deg", json_real(a->to_deg));
-        int F = cli_collide_frames(col, ori_motion_frame_count(mo));
         json_object_set_new(p, "reached_deg", F > 0 ? json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, F - 1))) : json_null());
         json_object_set_new(p, "frames", json_integer(F));
         json_object_set_new(p, "blocked", cli_motion_block_json(mo));
@@ -243,10 +248,28 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
         json_decref(p);
         ori_status st = ori_fold_set_custom(k->doc, 0, "orikin:partial", text, &err);
         free(text);
-        if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
+        if (st != ORI_OK) {
+            cli_progress_end(&bar);
+            return cli_input_error("fold", a->out, &err);
+        }
     }
-    if (ori_fold_save_file(k->doc, a->out, &err) != ORI_OK) return cli_input_error("fold", a->out, &err);
+    cli_progress_update(&bar, 0.5);
+    ori_status st = ori_fold_save_file(k->doc, a->out, &err);
+    cli_progress_end(&bar);
+    if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
     return CLI_EXIT_OK;
+}
+
+// The frames a fold will output (start, one per step, the end) and the bytes they take as
+// FOLD frames (-o: 3 coordinates per vertex and an angle per edge) and JSON (an angle per
+// edge), about 20 characters a number: asks for --force beyond the guard (output_guard.h).
+static int guard_output(const cli_fold_args *a, const cli_kin *k, const ori_motion_def *def, bool force)
+{
+    double from = def->has_from ? def->from_rad : def->start_angles_rad ? def->start_angles_rad[a->drive] : 0.0;
+    double frames = floor(fabs(def->to_rad - from) / def->step_rad) + 2.0;
+    double V = ori_mechanism_vertex_count(k->mech), E = ori_mechanism_edge_count(k->mech);
+    double bytes = (a->out ? frames * (3.0 * V + E) * 20.0 : 0.0) + (a->json ? frames * E * 20.0 : 0.0);
+    return cli_guard_check("fold", frames, bytes, force);
 }
 
 static int run(int argc, char **argv)
@@ -254,6 +277,8 @@ static int run(int argc, char **argv)
     cli_collide_opts co;
     int rc = cli_collide_strip("fold", &argc, argv, &co);
     if (rc != CLI_EXIT_OK) return rc;
+    bool force;
+    if ((rc = cli_guard_strip("fold", &argc, argv, &force)) != CLI_EXIT_OK) return rc;
     cli_fold_args a;
     rc = cli_fold_parse("fold", argc, argv, false, &a);
     if (rc != CLI_EXIT_OK) return rc;
@@ -262,6 +287,11 @@ static int run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     ori_motion_def def;
     rc = cli_fold_def("fold", &a, &k, &def);
+    if (rc != CLI_EXIT_OK) {
+        cli_kin_free(&k);
+        return rc;
+    }
+    rc = guard_output(&a, &k, &def, force);
     if (rc != CLI_EXIT_OK) {
         cli_kin_free(&k);
         return rc;
@@ -305,7 +335,7 @@ const cli_command cli_cmd_fold = {
     "fold rigidly: fix a face, lock creases, drive a crease; motion, branch and validity",
     "usage: orikin fold FILE --fix FACE --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
     "                   [--lock E1,E2,...] [--frame N] [--solver S] [--linear L]\n"
-    "                   [--no-collisions] [--clearance D] [--json] [-o OUT]\n"
+    "                   [--no-collisions] [--clearance D] [--force] [--json] [-o OUT]\n"
     "\n"
     "Treat the crease pattern as a mechanism (faces = rigid bodies, creases = revolute joints),\n"
     "hold face FACE fixed and the locked creases at their current angle, and turn crease EDGE\n"
@@ -336,6 +366,7 @@ const cli_command cli_cmd_fold = {
     "  --linear L      numeric solver's linear algebra: auto (default), dense, sparse or sweep\n"
     "  --no-collisions do not check the motion for self-collision\n"
     "  --clearance D   faces sharing no vertex closer than D collide too (a length >= 0)\n"
+    "  --force         write even when the run would output more than 10000 frames or 1 GB\n"
     "  --json          print {file, valid, verdict, reason, collision: {step, drive_deg, faces,\n"
     "                  point} | null, hint, rigidly_foldable, dof (null without frames),\n"
     "                  grubler, solver, fixed_face, drive, to_deg, step_deg, locked, frame_a,\n"

@@ -4,6 +4,8 @@
 #include <signal.h>
 #include <string.h>
 
+#include <cblas.h>
+
 #include "cli.h"
 
 #define ORI_CLI_COMMAND(id) extern const cli_command cli_cmd_##id;
@@ -72,6 +74,9 @@ static void install_signal_handlers(void)
 int main(int argc, char **argv)
 {
     install_signal_handlers();
+    // Output must not depend on the machine: OpenBLAS splits dense products (the SVDs of dof,
+    // the dense corrector) over its threads in an order that changes the last digits.
+    openblas_set_num_threads(1);
     if (argc < 2) {
         print_overview(stderr);
         return CLI_EXIT_USAGE;

@@ -24,6 +24,7 @@ libgif-dev
 libmicrohttpd-dev
 libgmp-dev
 libqhull-dev
+libdouble-conversion-dev
 poppler-utils
 chromium
 "

@@ -342,6 +342,8 @@ json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, in
     json_object_set_new(out, "generic_dof", r->generic_dof >= 0 ? json_integer(r->generic_dof) : json_null());
     json_object_set_new(out, "singular", json_boolean(r->singular));
     json_object_set_new(out, "rigid", json_boolean(r->rigid));
+    json_object_set_new(out, "undetermined", json_boolean(r->undetermined));
+    json_object_set_new(out, "probe_solves", json_integer(r->probe_solves));
     json_object_set_new(out, "method", json_string(r->dense ? "dense-svd" : "sparse-cholmod"));
     json_object_set_new(out, "sigma_max", json_real(r->sigma_max));
     json_object_set_new(out, "sigma_cut", json_real(r->sigma_cut));

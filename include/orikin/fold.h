@@ -6,7 +6,7 @@
 /// ori_fold_frame_count, ori_fold_frame_is_folded_form, ori_fold_get_pattern,
 /// ori_fold_set_pattern, ori_fold_extract_frame, ori_fold_append_frame, ori_fold_append_state,
 /// ori_fold_get_custom, ori_fold_set_custom, ori_fold_set_string, ori_fold_to_string,
-/// ori_json_normalize, ori_fold_save_file.
+/// ori_json_normalize, ori_format_real, ori_fold_save_file.
 ///
 /// Frame numbers follow FOLD: frame 0 is the top level, frame k ≥ 1 is file_frames[k − 1].
 #ifndef ORIKIN_FOLD_H
@@ -93,6 +93,9 @@ ORI_API char *ori_fold_to_string(const ori_fold *doc);
 /// or, with pretty, one key per line. Returns NULL (and sets error) for invalid JSON. Free with
 /// ori_buffer_free. The CLI uses it for --json output.
 ORI_API char *ori_json_normalize(const char *json_text, bool pretty, ori_error *error);
+/// A number as every orikin writer prints it: the shortest decimal that reads back as exactly x
+/// (the first of %.15g, %.16g, %.17g that does; ±0 as "0"). size ≥ 32; buf is terminated.
+ORI_API void ori_format_real(double x, char *buf, size_t size);
 
 /// Write the document to path atomically (temporary file, then rename).
 ORI_API ori_status ori_fold_save_file(const ori_fold *doc, const char *path, ori_error *error);

@@ -173,10 +173,13 @@ typedef struct ori_dof_def {
     const int *locked_edges;  ///< creases held fixed (removed from the unknowns), may be NULL
     int locked_count;
     bool probe_generic;       ///< at a singular state, also find the nullity at a nearby regular state
+    int probe_budget;         ///< branch combinations the probe may try (≤ 0: 256); beyond it "undetermined"
+    ori_progress_fn *progress; ///< called with the fraction done (may be NULL); returning false cancels
+    void *progress_user;      ///< passed to progress
     int internal_value;       ///< set by ori_default_dof_def; do not change
 } ori_dof_def;
 
-/// Defaults: flat state, nothing locked, generic probe on.
+/// Defaults: flat state, nothing locked, generic probe on with the default budget, no progress.
 ORI_API ori_dof_def ori_default_dof_def(void);
 
 /// Degrees of freedom of the mechanism at a state.
@@ -189,6 +192,8 @@ typedef struct ori_dof_result {
     int generic_dof;   ///< DOF at a nearby regular state on the motion; −1 when not probed
     bool singular;     ///< dof > generic_dof: the state inflates the nullity (e.g. the flat state)
     bool rigid;        ///< the probe found no motion at all from this state (generic_dof = 0)
+    bool undetermined; ///< the probe ran out of its budget first: generic_dof is −1, nothing proved
+    int probe_solves;  ///< branch combinations the probe tried (each one least-squares solve)
     bool dense;        ///< dense SVD (true) or sparse CHOLMOD inverse iteration (false)
     double sigma_max;  ///< largest singular value of the Jacobian
     double sigma_cut;  ///< smallest singular value counted in the rank (0 when rank is 0)
@@ -197,8 +202,10 @@ typedef struct ori_dof_result {
 /// Rank and nullity of the loop-closure Jacobian (one column per unlocked revolute crease,
 /// 3 rows per vertex loop, 6 per hole loop) at a state; rank tolerance ORI_TOL_RANK_REL
 /// relative to the largest singular value (dense, up to ORI_DOF_DENSE_MAX_ENTRIES entries)
-/// or ORI_TOL_RANK_REL_SPARSE (sparse). Fails on NaN angles or when the state does not close
-/// (residual above ORI_TOL_START_RESIDUAL).
+/// or ORI_TOL_RANK_REL_SPARSE (sparse: a full-rank certificate by Cholesky of J'J'ᵀ or JᵀJ,
+/// J' without its zero rows, else inverse subspace iteration). The generic probe's work is
+/// bounded by probe_budget. Fails on NaN angles or when the state does not close (residual
+/// above ORI_TOL_START_RESIDUAL), ORI_ERR_LIMIT when progress cancels.
 ORI_API ori_status ori_mechanism_dof(const ori_mechanism *mechanism, const ori_dof_def *def,
                                      ori_dof_result *out, ori_error *error);
 

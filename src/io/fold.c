@@ -890,6 +890,12 @@ char *ori_json_normalize(const char *json_text, bool pretty, ori_error *error)
     return out;
 }
 
+void ori_format_real(double x, char *buf, size_t size)
+{
+    ORI_ASSERT(buf && size >= 32);
+    ori__format_double(x, buf, size);
+}
+
 ori_status ori_fold_save_file(const ori_fold *doc, const char *path, ori_error *error)
 {
     char *text = ori_fold_to_string(doc);

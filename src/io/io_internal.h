@@ -28,6 +28,10 @@ void ori__text_json_string(ori__text *t, const char *s, size_t n);
 
 // Shortest decimal text that reads back as exactly x (at most 17 significant digits; ±0 is "0").
 void ori__format_double(double x, char *buf, size_t size);
+// The shortest digits of a finite nonzero x that read back exactly (shortest.cc, double-
+// conversion): digits (18 bytes, not terminated) d1…dn with *length = n, x = ±0.d1…dn × 10^*point.
+// Returns 1 when x is negative.
+int ori__shortest_digits(double x, char *digits, int *length, int *point);
 
 // A JSON real for a finite double (−0 written as 0).
 json_t *ori__json_number(double x);

@@ -488,14 +488,35 @@ typedef struct lsq {
     bool dense;
     double *jac, *rhs, *sv;
     kin_sls *sls;
+    int factor_state; // sparse: 0 none, 1 a factor of JᵀJ (λ = 0), 2 of JᵀJ + λI, for the values in sls
 } lsq;
 
-static void lsq_init(lsq *L, const eqset *E)
+// Copy the equations' derivatives into the sparse object; false when they equal the values
+// already there (the factor, if any, still applies: the line and linear rows of the cone never
+// change, so on a pattern of degree-4 vertices one factorization serves every iteration).
+static bool lsq_load(lsq *L, const eqset *E)
+{
+    double *v = ori__sls_values(L->sls);
+    int nnz = E->ptr[E->m];
+    bool same = L->factor_state != 0;
+    for (int q = 0; q < nnz && same; ++q) same = v[q] == E->val[q];
+    if (same) return false;
+    for (int q = 0; q < nnz; ++q) v[q] = E->val[q];
+    L->factor_state = 0;
+    return true;
+}
+
+// Dense (minimum-norm SVD steps, exact nullity) for small systems; a probe, which needs neither
+// the minimum norm nor the nullity, goes sparse above ORI_MOTION_DENSE_MAX_UNKNOWNS (an SVD per
+// Gauss–Newton iteration made the probe of a few hundred creases take seconds per try).
+static void lsq_init(lsq *L, const eqset *E, bool probe)
 {
     int m = E->m, n = E->n;
-    L->dense = (size_t)m * (size_t)n <= (size_t)ORI_DOF_DENSE_MAX_ENTRIES / 4 || n <= ORI_MOTION_DENSE_MAX_UNKNOWNS;
+    L->dense = (!probe && (size_t)m * (size_t)n <= (size_t)ORI_DOF_DENSE_MAX_ENTRIES / 4) ||
+               n <= ORI_MOTION_DENSE_MAX_UNKNOWNS;
     L->jac = L->rhs = L->sv = NULL;
     L->sls = NULL;
+    L->factor_state = 0;
     if (L->dense) {
         L->jac = ori__alloc(sizeof(double) * ((size_t)m * (size_t)n + 1));
         L->rhs = ori__alloc(sizeof(double) * ((size_t)(m > n ? m : n) + 1));
@@ -530,14 +551,13 @@ static bool lsq_step(lsq *L, const eqset *E, double *dx)
         for (int k = 0; k < n; ++k) dx[k] = L->rhs[k];
         return true;
     }
-    double *v = ori__sls_values(L->sls);
-    double tr = 0.0;
-    for (int q = 0; q < E->ptr[m]; ++q) {
-        v[q] = E->val[q];
-        tr += v[q] * v[q];
+    if (lsq_load(L, E)) {
+        double tr = 0.0;
+        for (int q = 0; q < E->ptr[m]; ++q) tr += E->val[q] * E->val[q];
+        if (ori__sls_factor(L->sls, 0.0)) L->factor_state = 1;
+        else if (ori__sls_factor(L->sls, ORI_TOL_RANK_REL * (n > 0 ? tr / n : 1.0))) L->factor_state = 2;
+        else return false;
     }
-    if (!ori__sls_factor(L->sls, 0.0) && !ori__sls_factor(L->sls, ORI_TOL_RANK_REL * (n > 0 ? tr / n : 1.0)))
-        return false;
     double *neg = ori__alloc(sizeof(double) * ((size_t)m + 1));
     double *rhs = ori__alloc(sizeof(double) * ((size_t)n + 1));
     for (int e = 0; e < m; ++e) neg[e] = -E->g[e];
@@ -561,15 +581,17 @@ static int lsq_nullity(lsq *L, const eqset *E)
         int rank = ori__dense_rank(L->jac, m, n, ORI_TOL_RANK_REL, &smax, &scut);
         return rank < 0 ? 0 : n - rank;
     }
-    double *v = ori__sls_values(L->sls);
-    for (int q = 0; q < E->ptr[m]; ++q) v[q] = E->val[q];
-    if (!ori__sls_factor(L->sls, 0.0)) return 1;
+    if (lsq_load(L, E) || L->factor_state != 1) {
+        L->factor_state = 0;
+        if (!ori__sls_factor(L->sls, 0.0)) return 1;
+        L->factor_state = 1;
+    }
     return ori__sls_rcond(L->sls) < ORI_TOL_RANK_REL_SPARSE ? 1 : 0;
 }
 
 // Solve the cone equations of one line choice from a seed whose signs follow the assignment.
 // Returns true with x when the equations are consistent; *extra = excess freedom.
-static bool solve_choice(const cone_sys *c, const int *pick, double *x, int *extra)
+static bool solve_choice(const cone_sys *c, const int *pick, double *x, int *extra, bool probe)
 {
     eqset E;
     eq_build(c, pick, &E);
@@ -580,7 +602,7 @@ static bool solve_choice(const cone_sys *c, const int *pick, double *x, int *ext
         if (col >= 0 && j != c->drive) x[col] = 0.5 * assigned_sign(c->m, j);
     }
     lsq L;
-    lsq_init(&L, &E);
+    lsq_init(&L, &E, probe);
     double *dx = ori__alloc(sizeof(double) * ((size_t)n + 1));
     double *trial = ori__alloc(sizeof(double) * ((size_t)n + 1));
     bool ok = false;
@@ -696,6 +718,13 @@ bool ori__kin_loops_deficient(const ori_mechanism *m, const double *th, const in
 kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                               int drive_joint, double sign, bool probe, double *v, int *extra_dof)
 {
+    return ori__kin_cone_budget(m, th, col_of_joint, ncols, drive_joint, sign, probe, v, extra_dof, NULL);
+}
+
+kin_cone_result ori__kin_cone_budget(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
+                                     int drive_joint, double sign, bool probe, double *v, int *extra_dof,
+                                     long *budget)
+{
     cone_sys c;
     memset(&c, 0, sizeof c);
     c.m = m;
@@ -724,8 +753,11 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
     if (ncols > ORI_MOTION_DENSE_MAX_UNKNOWNS) flip = 0;
     long combos = 1L << flip;
     bool found_consistent = false;
-    for (int phase = 0; phase < 2 && result != KIN_CONE_FOUND && result != KIN_CONE_UNDERDETERMINED; ++phase) {
+    bool exhausted = false;
+    for (int phase = 0; phase < 2 && result != KIN_CONE_FOUND && result != KIN_CONE_UNDERDETERMINED && !exhausted;
+         ++phase) {
         if (phase == 1 && all_local && !probe) break;
+        if (phase == 1 && probe) break; // a probe skips nothing in phase A: phase B would repeat it
         for (long mask = 0; mask < combos; ++mask) {
             bool skip = false;
             for (int h = 0; h < k; ++h) {
@@ -743,8 +775,13 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
                 pick[h] = line;
             }
             if (skip) continue;
+            if (budget && *budget <= 0) {
+                exhausted = true;
+                break;
+            }
+            if (budget) --*budget;
             int extra = 0;
-            if (!solve_choice(&c, pick, x, &extra)) continue;
+            if (!solve_choice(&c, pick, x, &extra, probe)) continue;
             found_consistent = true;
             if (extra > 0 && !probe) {
                 *extra_dof = extra;
@@ -766,6 +803,8 @@ kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const in
     // only with some loop reversed): the assignment is not rigidly foldable.
     if (!probe && all_local && result != KIN_CONE_FOUND && result != KIN_CONE_UNDERDETERMINED && k > 0)
         result = KIN_CONE_INCOMPATIBLE;
+    // The budget ran out before a motion was found: nothing is proved.
+    if (exhausted && result == KIN_CONE_NONE) result = KIN_CONE_EXHAUSTED;
     (void)found_consistent;
     for (int j = 0; j < m->joint_count; ++j) {
         int col = col_of_joint[j];

@@ -1,6 +1,10 @@
-// Kinematics internals shared by mechanism.c (model, poses, loop evaluation), dof.c (rank),
-// cone.c (branch analysis at singular states), spherical.c (closed-form 4R), continuation.c
-// (numeric predictor–corrector), motion.c (fold orchestration) and fit.c.
+// Kinematics internals. Layers, each calling only those below it:
+//   motion.c (fold orchestration), dof.c (ori_mechanism_dof), fit.c, pose.c
+//   probe.c (generic-DOF probe: follows the free mechanism off a singular state)
+//   cone.c (branch analysis at singular states), solver.c (corrector), spherical.c (closed-form 4R)
+//   rank.c (dense SVD rank, sparse nullity)
+//   jacobian.c (loop-closure Jacobian assembly, dense or sparse)
+//   mechanism.c (model, poses, loop evaluation), sparse.c (CHOLMOD least squares)
 #ifndef ORI_KINEMATICS_INTERNAL_H
 #define ORI_KINEMATICS_INTERNAL_H
 
@@ -90,7 +94,13 @@ void ori__kin_face_poses(const ori_mechanism *m, const double *th, int fixed_fac
 // Breadth-first order of faces from root with parent face/joint; order has face_count entries.
 void ori__kin_bfs(const ori_mechanism *m, int root, int *order, int *parent_face, int *parent_joint);
 
-// --- dense / sparse rank ---------------------------------------------------------------
+// --- Jacobian assembly (jacobian.c) ------------------------------------------------------
+
+// The loop-closure Jacobian at joint state th restricted to the columns col_of_joint ≥ 0, dense
+// column-major (m->rows × ncols, zeros outside the loops' blocks); caller frees (ori__free).
+double *ori__kin_jacobian_dense(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th);
+
+// --- dense / sparse rank (rank.c) --------------------------------------------------------
 
 // Numerical rank of a dense column-major rows × cols matrix (destroyed) by SVD; fills
 // sigma_max and the smallest singular value kept (sigma_cut). Returns -1 on LAPACK failure.
@@ -123,6 +133,14 @@ void ori__sls_mult(const kin_sls *s, const double *v, double *out);   // out = J
 double ori__sls_rcond(kin_sls *s);              // CHOLMOD's min(diag L)/max(diag L) estimate
 int ori__sls_factorizations(const kin_sls *s);
 size_t ori__sls_factor_nnz(const kin_sls *s);
+
+// (jacobian.c) The loop-closure Jacobian restricted to the columns col_of_joint ≥ 0, at th, as a
+// sparse least-squares object in Jᵀ form (for products J x, Jᵀ y and factorizations of JᵀJ + λI).
+kin_sls *ori__kin_jacobian_sls(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th);
+// The same, also handing over the compressed Jᵀ it was made from (colptr m->rows + 1 entries,
+// rowind and vals colptr[m->rows]); the caller frees the three arrays (ori__free).
+kin_sls *ori__kin_jacobian_sls_parts(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th,
+                                     int **colptr, int **rowind, double **vals);
 
 // --- numeric continuation -------------------------------------------------------------
 
@@ -171,18 +189,10 @@ bool ori__kin_solver_sparse(const kin_solver *s);
 // The sweep ordering exists (and is used first by the corrector and the tangent).
 bool ori__kin_solver_sweep(const kin_solver *s);
 int ori__kin_solver_sweep_iterations(const kin_solver *s);
-// The loop-closure Jacobian restricted to the columns col_of_joint ≥ 0, at th, as a sparse
-// least-squares object in Jᵀ form (for products J x, Jᵀ y and factorizations of JᵀJ + λI).
-kin_sls *ori__kin_jacobian_sls(const ori_mechanism *m, const int *col_of_joint, int ncols, const double *th);
 // Smallest singular value / rank test of the constrained Jacobian (free columns) at th:
 // returns the nullity (dense: SVD; sparse: 0 or 1 from the factorization's condition).
 int ori__kin_solver_nullity(kin_solver *s, const double *th);
 
-// Follow the free mechanism (drive any crease a little along a second-order tangent, minimum-
-// norm corrections) from a singular state to a nearby regular one; th_out receives it. False
-// when no motion is found (the state is rigid).
-bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
-                            double *th_out);
 
 // Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
 // at most this many times, down to this interval (radians); a stop with a moving crease within
@@ -208,6 +218,10 @@ bool ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int 
 // LAPACK's dsyev.
 #define ORI_KIN_JACOBI_MAX 32
 
+// Inverse iterations at most for the smallest singular value of a full-rank sparse Jacobian
+// (the sparse nullity's full-rank shortcut); they stop once it changes by under 0.1 %.
+#define ORI_KIN_INVERSE_ITERATIONS 30
+
 // Successive probe steps of the generic DOF (each from the state the previous one reached).
 #define ORI_KIN_PROBE_ROUNDS 4
 
@@ -223,6 +237,7 @@ typedef enum kin_cone_result {
     KIN_CONE_NONE,         // no tangent moves the drive: not rigidly foldable from here
     KIN_CONE_INCOMPATIBLE, // each vertex can fold as assigned, but not all of them together
     KIN_CONE_UNDERDETERMINED, // tangents form a family of dimension > 1 (more DOF than the drive)
+    KIN_CONE_EXHAUSTED,    // the solve budget ran out before a tangent was found (nothing proved)
 } kin_cone_result;
 
 // True when some loop's equations restricted to the moving creases (free and driven) are rank
@@ -235,6 +250,30 @@ bool ori__kin_loops_deficient(const ori_mechanism *m, const double *th, const in
 // excess dimension when UNDERDETERMINED.
 kin_cone_result ori__kin_cone(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
                               int drive_joint, double sign, bool probe, double *v, int *extra_dof);
+// The same with a budget: each line combination tried costs one from *budget (NULL: no limit);
+// KIN_CONE_EXHAUSTED when it reaches 0 before a tangent was found.
+kin_cone_result ori__kin_cone_budget(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
+                                     int drive_joint, double sign, bool probe, double *v, int *extra_dof,
+                                     long *budget);
+
+// --- generic-DOF probe (probe.c) --------------------------------------------------------
+
+// Follow the free mechanism (drive any crease a little along a second-order tangent, minimum-
+// norm corrections) from a singular state to a nearby regular one; th_out receives it. False
+// when no motion is found (the state is rigid).
+typedef enum kin_probe_result {
+    KIN_PROBE_MOVED = 0, // th_out is a state reached along a motion
+    KIN_PROBE_RIGID,     // every crease tried, both ways: no motion (the state is rigid)
+    KIN_PROBE_EXHAUSTED, // the budget ran out first: undetermined
+} kin_probe_result;
+// budget: cone line combinations the probe may still try (decremented; NULL: no limit).
+kin_probe_result ori__kin_probe_generic(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols,
+                                        double *th_out, long *budget);
+
+// Cone line combinations one ori_mechanism_dof call may try in its generic probe by default:
+// the enumeration is exponential in the branching loops (2^ORI_KIN_CONE_ENUMERATE_MAX per
+// crease and sign), so the probe stops there and answers "undetermined".
+#define ORI_KIN_PROBE_BUDGET 256
 
 // --- closed-form single vertex -----------------------------------------------------------
 
