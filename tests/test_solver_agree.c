@@ -435,7 +435,7 @@ Test(solver_agree, fold_to_180_output_reads_back_everywhere)
     char *text = test_read_text(args);
     cr_assert_null(strstr(text, "180.0000000"), "an angle beyond 180° was written");
     free(text);
-    const char *cmds[] = {"check %s/f.fold", "dof %s/f.fold --angles-from-frame 19", "info %s/f.fold --frame 19",
+    const char *cmds[] = {"check %s/f.fold", "dof %s/f.fold --frame 19", "info %s/f.fold --frame 19",
                           "fold %s/f.fold --frame 18 --fix 0 --drive 4 --to 120 --no-collisions"};
     for (size_t i = 0; i < sizeof cmds / sizeof *cmds; ++i) {
         snprintf(args, sizeof args, cmds[i], dir);
