@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "collide_args.h"
+#include "fold_modes.h"
 #include "kin_args.h"
 
 static json_t *v3_json(ori_v3 v)
@@ -228,6 +229,7 @@ static int write_frames(const cli_fold_args *a, const cli_kin *k, const ori_moti
 
 static int run(int argc, char **argv)
 {
+    if (cli_fold_modes_wanted(argc, argv)) return cli_fold_modes_run(argc, argv);
     cli_collide_opts co;
     int rc = cli_collide_strip("fold", &argc, argv, &co);
     if (rc != CLI_EXIT_OK) return rc;
@@ -311,6 +313,8 @@ const cli_command cli_cmd_fold = {
     "                  stats}\n"
     "  -o OUT.fold     write FILE with every step appended as a folded-form frame (only when\n"
     "                  the fold is valid; up to the last clean step when it collides)\n"
+    "\n"
+    CLI_FOLD_MODES_HELP
     "\n"
     "example: orikin fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90\n",
     run,
