@@ -66,7 +66,8 @@ static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, si
     return buf;
 }
 
-static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
+static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col,
+                       json_t *suggested_locks)
 {
     const ori_mechanism *m = k->mech;
     int E = ori_mechanism_edge_count(m);
@@ -84,6 +85,7 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     char hint[512];
     const char *h = rounding_hint(k, mo, hint, sizeof hint);
     json_object_set_new(out, "hint", h ? json_string(h) : json_null());
+    json_object_set_new(out, "suggested_locks", suggested_locks ? suggested_locks : json_null());
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
     json_object_set_new(out, "dof", json_integer(ori_motion_dof(mo)));
     json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
@@ -261,8 +263,14 @@ static int run(int argc, char **argv)
         cli_kin_free(&k);
         return rc;
     }
-    if (a.json) print_json(&a, &k, mo, &col);
+    // An underdetermined fold names a lock set that leaves one degree of freedom (fold_modes.c).
+    char locks_hint[1024] = "";
+    json_t *locks = NULL;
+    if (ori_motion_verdict_of(mo) == ORI_MOTION_UNDERDETERMINED)
+        cli_fold_modes_suggest(&k, &def, locks_hint, sizeof locks_hint, &locks);
+    if (a.json) print_json(&a, &k, mo, &col, locks);
     else print_text(&a, &k, mo, &col);
+    if (!a.json && locks_hint[0]) printf("hint: %s\n", locks_hint);
     bool valid = ori_motion_verdict_of(mo) == ORI_MOTION_VALID;
     rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
     if (a.out && valid) {

@@ -396,6 +396,9 @@
 /// Several drives: the minimum-norm tangent must satisfy J t = −J_drive ṙ to this relative
 /// defect, else the drives cannot move together (overdetermined). Unitless.
 #define ORI_TOL_DRIVES_DEFECT 1e-6
+/// Several drives: the freedom left to the solved creases is judged once the drives have moved
+/// by this (the first steps from the flat sheet are too near its singularity to tell). Radians.
+#define ORI_DRIVES_CHECK_RAD 0.0873
 /// Rank decisions of the lock set (dgeqp3): |R_kk| ≤ this × |R_11| counts as dependent. Unitless.
 #define ORI_TOL_LOCKSET_RANK_REL 1e-9
 /// Symmetries of the flat sheet map vertices onto vertices within this × the diagonal. Unitless.

@@ -143,6 +143,8 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     double *jx = ori__alloc(sizeof(double) * (size_t)(R + 1));
     double *trial = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *sgn = ori__alloc(sizeof(double) * (size_t)(nfree + 1));
+    double *nx = ori__alloc(sizeof(double) * (size_t)(nfree + 1));
     if (mo) {
         memcpy(th0, th, sizeof(double) * (size_t)J);
         ori__mf_record(mo, th, ori__kin_residual(m, th), 0.0);
@@ -175,6 +177,20 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
             } else {
                 for (int v = 0; v < nfree; ++v) x[v] = 0.0;
             }
+            // At the start, which may be singular (the flat sheet, where many branches meet), add the
+            // part of the assignment's direction that the first-order motions allow: the predictor
+            // then heads for the branch that folds the creases as assigned.
+            if (ok && t == 0.0) {
+                for (int v = 0; v < nfree; ++v) sgn[v] = 0.0;
+                for (int j = 0; j < J; ++j) {
+                    ori_assignment as = m->joints[j].assignment;
+                    if (sys_var[j] >= 0)
+                        sgn[sys_var[j]] += as == ORI_ASSIGN_VALLEY ? rmax : as == ORI_ASSIGN_MOUNTAIN ? -rmax : 0.0;
+                }
+                ori__mf_jv(&s, sgn, jx);
+                if (ori__mf_minnorm(&s, jx, nx))
+                    for (int v = 0; v < nfree; ++v) x[v] += sgn[v] - nx[v];
+            }
             double tn = fmin(t_next, t + h);
             if (t_next - tn < 0.25 * h) tn = t_next;
             double dt = tn - t;
@@ -206,10 +222,10 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
                     snprintf(mo->reason, sizeof mo->reason,
                              "crease %d reached %.6g° at %.6g %% of the way and the drives would fold it beyond",
                              mo->stop_edge, th[why_joint] >= 0.0 ? 180.0 : -180.0, 100.0 * t);
-                } else if (defect > ORI_TOL_DRIVES_DEFECT || t == 0.0) {
+                } else if (defect > ORI_TOL_DRIVES_DEFECT || t * rmax < ORI_DRIVES_CHECK_RAD) {
                     mo->verdict = ORI_MULTIFOLD_OVERDETERMINED;
                     snprintf(mo->reason, sizeof mo->reason,
-                             t == 0.0 ? "no rigid motion moves the drives together as prescribed from the start (too "
+                             t * rmax < ORI_DRIVES_CHECK_RAD ? "no rigid motion moves the drives together as prescribed from the start (too "
                                         "many creases driven or locked, or the ratio is not one the pattern allows)"
                                       : "the drives cannot keep moving together beyond %.6g %% of the way: no rigid "
                                         "motion follows the prescribed ratio further",
@@ -226,7 +242,9 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
             memcpy(th, trial, sizeof(double) * (size_t)J);
             t = tn;
             mo->steps++;
-            if (first) {
+            // Freedom left to the solved creases: judged once the drives have moved by
+            // ORI_DRIVES_CHECK_RAD (nearer the flat start the singular values are too small to tell).
+            if (first && (t * rmax >= ORI_DRIVES_CHECK_RAD || t >= 1.0)) {
                 first = false;
                 int nul = free_nullity(m, sys_var, nfree, th);
                 if (nul > 0) {
@@ -277,6 +295,8 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     ori__free(jx);
     ori__free(trial);
     ori__free(pred);
+    ori__free(sgn);
+    ori__free(nx);
     if (!mo) return st;
     *out = mo;
     return ORI_OK;

@@ -6,8 +6,12 @@
 // exactly one solution. A rank-revealing QR with column pivoting (LAPACK dgeqp3) of the
 // non-driven columns picks such a basis greedily, best conditioned first; the columns it leaves
 // out are the lock set. The flat sheet is singular (its out-of-plane rows vanish), so the rank
-// is taken at the flat state and at a nearby regular state reached along the assignment's
-// direction (the first step of a fold toward the targets), and the higher one is used.
+// is taken at a nearby state on the motion: the drives moved a little (in the direction their
+// assignment folds them) with the locked creases held at their angles, the others solved with
+// minimum-norm corrections. The columns are weighted by how fast their creases move there, so
+// that the creases the motion uses stay free and those it barely moves are locked; then the
+// probe is repeated with the new locks, until the drives leave no freedom (at most
+// LOCKSET_ROUNDS rounds).
 #include <lapacke.h>
 #include <math.h>
 #include <string.h>
@@ -36,44 +40,38 @@ static int qr_rank(double *a, int rows, int cols, int *jpvt)
     return r;
 }
 
-// Step from th along the assignment's direction projected onto the first-order motions, and
-// close the loops: a nearby state on the free motion (false when none is found).
-static bool probe(const ori_mechanism *m, const int *joint_var, int nvar, const double *th, double *out)
+#define LOCKSET_ROUNDS 6
+
+// Move the drives by δ from th (rate: +1 or −1 per driven joint) with the joints that have no
+// solved variable held; the others solved. out receives the state, vel (per variable of
+// sys_var) the velocity estimate. False when no δ gives a closed state.
+static bool drive_probe(const ori_mechanism *m, const int *sys_var, int nsys, const double *rate, const double *th,
+                        double *out, double *vel)
 {
+    int J = m->joint_count;
     mf_system s;
-    ori__mf_init(&s, m, joint_var, nvar);
-    double *d = ori__calloc((size_t)nvar + 1, sizeof(double));
-    double *p = ori__alloc(sizeof(double) * (size_t)(nvar + 1));
-    double *jd = ori__alloc(sizeof(double) * (size_t)(m->rows + 1));
-    for (int j = 0; j < m->joint_count; ++j) {
-        int v = joint_var[j];
-        if (v < 0) continue;
-        ori_assignment a = m->joints[j].assignment;
-        // The assignment's sign; unassigned creases get a small deterministic pseudo-random value.
-        d[v] += a == ORI_ASSIGN_VALLEY ? 1.0 : a == ORI_ASSIGN_MOUNTAIN ? -1.0 : 0.1 * sin(1.0 + j);
-    }
+    ori__mf_init(&s, m, sys_var, nsys);
+    double *b = ori__alloc(sizeof(double) * (size_t)(m->rows + 1));
+    double *x = ori__alloc(sizeof(double) * (size_t)(nsys + 1));
     bool found = false;
     if (ori__mf_linearize(&s, th)) {
-        ori__mf_jv(&s, d, jd);
-        if (ori__mf_minnorm(&s, jd, p)) {
-            double pmax = 0.0;
-            for (int v = 0; v < nvar; ++v) {
-                p[v] = d[v] - p[v];
-                pmax = fmax(pmax, fabs(p[v]));
-            }
-            for (double h = 0.05; pmax > 0.0 && h > 1e-4 && !found; h *= 0.5) {
-                memcpy(out, th, sizeof(double) * (size_t)m->joint_count);
-                for (int j = 0; j < m->joint_count; ++j)
-                    if (joint_var[j] >= 0) out[j] += h / pmax * p[joint_var[j]];
+        ori__mf_joint_rate(&s, rate, b);
+        for (int r = 0; r < m->rows; ++r) b[r] = -b[r];
+        if (ori__mf_minnorm(&s, b, x))
+            for (double h = 0.02; h > 1e-4 && !found; h *= 0.25) {
+                for (int j = 0; j < J; ++j)
+                    out[j] = th[j] + h * (sys_var[j] >= 0 ? x[sys_var[j]] : rate[j]);
                 int its;
                 double res;
-                found = ori__mf_correct(&s, out, &its, &res);
+                if (ori__mf_correct(&s, out, &its, &res)) {
+                    found = true;
+                    for (int j = 0; j < J; ++j)
+                        if (sys_var[j] >= 0) vel[sys_var[j]] = (out[j] - th[j]) / h;
+                }
             }
-        }
     }
-    ori__free(d);
-    ori__free(p);
-    ori__free(jd);
+    ori__free(b);
+    ori__free(x);
     ori__mf_free(&s);
     return found;
 }
@@ -97,6 +95,7 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
                   ORI_LOCKSET_DENSE_MAX_ENTRIES);
         return -1;
     }
+    double *rate = ori__calloc((size_t)J + 1, sizeof(double));
     bool *is_drive = ori__calloc((size_t)nvar + 1, sizeof(bool));
     for (int i = 0; i < drive_count; ++i) {
         int e = drive_edges[i];
@@ -104,82 +103,104 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
         if (j == ORI_NULL_INDEX || joint_var[j] < 0) {
             ori__free(joint_var);
             ori__free(is_drive);
+            ori__free(rate);
             ori__fail_at(error, ORI_ERR_ARGUMENT, "edges_vertices", e, "edge %d is not a free crease to drive", e);
             return -1;
         }
         is_drive[joint_var[j]] = true;
     }
+    for (int j = 0; j < J; ++j)
+        if (joint_var[j] >= 0 && is_drive[joint_var[j]])
+            rate[j] = m->joints[j].assignment == ORI_ASSIGN_MOUNTAIN ? -1.0 : 1.0;
     double *th = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double *th2 = ori__alloc(sizeof(double) * (size_t)(J + 1));
     ori__kin_edges_to_joints(m, angles, th);
-    // Columns: the non-driven variables first (candidates), then the drives.
-    int *col = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
+    bool *lock = ori__calloc((size_t)nvar + 1, sizeof(bool)); // variables locked by the set
+    int *sys_var = ori__alloc(sizeof(int) * (size_t)(J + 1));
+    int *sys_of_var = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
     int *var_of_col = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
-    int nc = 0;
-    for (int v = 0; v < nvar; ++v)
-        if (!is_drive[v]) {
-            var_of_col[nc] = v;
-            col[v] = nc++;
-        }
-    int ncand = nc;
-    for (int v = 0; v < nvar; ++v)
-        if (is_drive[v]) {
-            var_of_col[nc] = v;
-            col[v] = nc++;
-        }
     int *col_of_joint = ori__alloc(sizeof(int) * (size_t)(J + 1));
-    for (int j = 0; j < J; ++j) col_of_joint[j] = joint_var[j] >= 0 ? col[joint_var[j]] : -1;
-    double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)(nc > 0 ? nc : 1) + 1));
-    int *jpvt = ori__alloc(sizeof(int) * (size_t)(nc + 1));
-    // The state with the higher rank of the whole Jacobian (the regular one).
-    const double *state = th;
-    ori__mf_dense_jacobian(m, th, col_of_joint, nc, a);
-    int r0 = qr_rank(a, R, nc, jpvt);
-    if (probe(m, joint_var, nvar, th, th2)) {
-        ori__mf_dense_jacobian(m, th2, col_of_joint, nc, a);
-        int r1 = qr_rank(a, R, nc, jpvt);
-        if (r1 > r0) state = th2;
-    }
+    double *vel = ori__alloc(sizeof(double) * (size_t)(nvar + 1));
+    double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)(nvar > 0 ? nvar : 1) + 1));
+    int *jpvt = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
     int n = -1;
-    ori__mf_dense_jacobian(m, state, col_of_joint, nc, a);
-    int rall = qr_rank(a, R, nc, jpvt);
-    ori__mf_dense_jacobian(m, state, col_of_joint, nc, a);
-    int rc = qr_rank(a, R, ncand, jpvt); // the candidates alone: their columns come first
-    if (rall < 0 || rc < 0) {
-        ori__fail(error, ORI_ERR_INTERNAL, "LAPACK dgeqp3 failed");
-    } else if (rc < rall) {
-        ori__fail(error, ORI_ERR_ARGUMENT,
-                  "the driven creases cannot move at first order however the others are locked (their columns of the "
-                  "loop-closure Jacobian are independent of the others')");
-    } else {
-        n = 0;
-        for (int k = rc; k < ncand; ++k) {
-            int v = var_of_col[jpvt[k] - 1];
-            if (n < cap) {
-                for (int j = 0; j < J; ++j)
-                    if (joint_var[j] == v) {
-                        out[n] = m->joints[j].edge;
-                        break;
-                    }
-            }
-            n++;
+    for (int round = 0; round < LOCKSET_ROUNDS; ++round) {
+        int nsys = 0;
+        for (int v = 0; v < nvar; ++v) sys_of_var[v] = is_drive[v] || lock[v] ? -1 : nsys++;
+        for (int j = 0; j < J; ++j) sys_var[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
+        if (!drive_probe(m, sys_var, nsys, rate, th, th2, vel)) {
+            ori__fail(error, ORI_ERR_ARGUMENT,
+                      round == 0 ? "no rigid motion moves the driven creases from this state: no lock set helps"
+                                 : "no lock set found that keeps the motion: lock creases by hand");
+            break;
         }
-        if (n > cap) n = cap;
-        // Ascending edge order reads better.
-        for (int i = 1; i < n; ++i)
-            for (int k = i; k > 0 && out[k - 1] > out[k]; --k) {
-                int t = out[k];
-                out[k] = out[k - 1];
-                out[k - 1] = t;
+        // Columns: the solved variables (weighted by their speed), then the drives.
+        double vmax = 0.0;
+        for (int k = 0; k < nsys; ++k) vmax = fmax(vmax, fabs(vel[k]));
+        int nc = 0;
+        for (int v = 0; v < nvar; ++v)
+            if (sys_of_var[v] >= 0) var_of_col[nc++] = v;
+        int ncand = nc;
+        for (int v = 0; v < nvar; ++v)
+            if (is_drive[v]) var_of_col[nc++] = v;
+        for (int j = 0; j < J; ++j) col_of_joint[j] = -1;
+        for (int c = 0; c < nc; ++c)
+            for (int j = 0; j < J; ++j)
+                if (joint_var[j] == var_of_col[c]) col_of_joint[j] = c;
+        ori__mf_dense_jacobian(m, th2, col_of_joint, nc, a);
+        int rall = qr_rank(a, R, nc, jpvt);
+        ori__mf_dense_jacobian(m, th2, col_of_joint, nc, a);
+        for (int c = 0; c < ncand; ++c) {
+            double w = fabs(vel[sys_of_var[var_of_col[c]]]) + 1e-3 * vmax;
+            for (int r = 0; r < R; ++r) a[(size_t)c * (size_t)R + (size_t)r] *= w;
+        }
+        int rc = qr_rank(a, R, ncand, jpvt);
+        if (rall < 0 || rc < 0) {
+            ori__fail(error, ORI_ERR_INTERNAL, "LAPACK dgeqp3 failed");
+            break;
+        }
+        if (rc < rall) {
+            ori__fail(error, ORI_ERR_ARGUMENT,
+                      "the driven creases cannot move at first order however the others are locked (their columns of "
+                      "the loop-closure Jacobian are independent of the others')");
+            break;
+        }
+        if (rc == ncand) { // no freedom left beside the drives
+            n = 0;
+            for (int v = 0; v < nvar; ++v) {
+                if (!lock[v]) continue;
+                if (n < cap)
+                    for (int j = 0; j < J; ++j)
+                        if (joint_var[j] == v) {
+                            out[n] = m->joints[j].edge;
+                            break;
+                        }
+                n++;
             }
+            if (n > cap) n = cap;
+            for (int i = 1; i < n; ++i) // ascending edge order
+                for (int k = i; k > 0 && out[k - 1] > out[k]; --k) {
+                    int t = out[k];
+                    out[k] = out[k - 1];
+                    out[k - 1] = t;
+                }
+            break;
+        }
+        for (int k = rc; k < ncand; ++k) lock[var_of_col[jpvt[k] - 1]] = true;
+        if (round == LOCKSET_ROUNDS - 1)
+            ori__fail(error, ORI_ERR_ARGUMENT, "no lock set found that keeps the motion: lock creases by hand");
     }
     ori__free(joint_var);
     ori__free(is_drive);
+    ori__free(rate);
     ori__free(th);
     ori__free(th2);
-    ori__free(col);
+    ori__free(lock);
+    ori__free(sys_var);
+    ori__free(sys_of_var);
     ori__free(var_of_col);
     ori__free(col_of_joint);
+    ori__free(vel);
     ori__free(a);
     ori__free(jpvt);
     return n;
