@@ -8,6 +8,8 @@
 
 #define MODES_MAX_LIST 256
 #define MODES_LOCK_EXAMPLE 12 // creases named in a lock suggestion
+// Kawasaki misses below this (radians) look like rounded coordinates (as in cmd_fold.c).
+#define MODES_NEAR_KAWASAKI_RAD 1e-3
 
 typedef struct modes_args {
     const char *path;
@@ -440,7 +442,26 @@ static int solve(modes_run *r)
         rc = cli_input_error("fold", a->path, &err);
         return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
     }
-    if (ori_multifold_verdict_of(r->mf) == ORI_MULTIFOLD_UNDERDETERMINED) {
+    // A drawing with rounded coordinates is rigid where its exact design folds: say so.
+    ori_multifold_verdict v = ori_multifold_verdict_of(r->mf);
+    if (v == ORI_MULTIFOLD_SINGULAR || v == ORI_MULTIFOLD_OVERDETERMINED) {
+        int near = 0;
+        double worst = 0.0;
+        for (int x = 0; x < ori_pattern_vertex_count(r->k.flat); ++x) {
+            if (!ori_pattern_vertex_is_interior(r->k.flat, x)) continue;
+            ori_vertex_report vr;
+            ori_flat_check_vertex(r->k.flat, x, &vr);
+            if (vr.degree % 2 || vr.kawasaki || fabs(vr.kawasaki_rad) > MODES_NEAR_KAWASAKI_RAD) continue;
+            near++;
+            worst = fmax(worst, fabs(vr.kawasaki_rad));
+        }
+        if (near)
+            snprintf(r->hint, sizeof r->hint,
+                     "%d interior vertices miss Kawasaki by up to %.2g rad (rounded coordinates?): rigid folding is "
+                     "exact; see orikin check --tolerance, and orikin regularize --rigid to make the drawing exact",
+                     near, worst);
+    }
+    if (v == ORI_MULTIFOLD_UNDERDETERMINED) {
         int *sugg = malloc(sizeof(int) * (size_t)(E + 1));
         int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, sugg,
                                        E + 1, &err);

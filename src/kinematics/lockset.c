@@ -121,7 +121,7 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
     int *var_of_col = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
     int *col_of_joint = ori__alloc(sizeof(int) * (size_t)(J + 1));
     double *vel = ori__alloc(sizeof(double) * (size_t)(nvar + 1));
-    double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)(nvar > 0 ? nvar : 1) + 1));
+    double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)(nvar + 2) + 1));
     int *jpvt = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
     int n = -1;
     for (int round = 0; round < LOCKSET_ROUNDS; ++round) {
@@ -134,35 +134,22 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
                                  : "no lock set found that keeps the motion: lock creases by hand");
             break;
         }
-        // Columns: the solved variables (weighted by their speed), then the drives.
+        // Columns: the solved variables, weighted by their speed on the probe's motion.
         double vmax = 0.0;
         for (int k = 0; k < nsys; ++k) vmax = fmax(vmax, fabs(vel[k]));
-        int nc = 0;
+        int ncand = 0;
         for (int v = 0; v < nvar; ++v)
-            if (sys_of_var[v] >= 0) var_of_col[nc++] = v;
-        int ncand = nc;
-        for (int v = 0; v < nvar; ++v)
-            if (is_drive[v]) var_of_col[nc++] = v;
-        for (int j = 0; j < J; ++j) col_of_joint[j] = -1;
-        for (int c = 0; c < nc; ++c)
-            for (int j = 0; j < J; ++j)
-                if (joint_var[j] == var_of_col[c]) col_of_joint[j] = c;
-        ori__mf_dense_jacobian(m, th2, col_of_joint, nc, a);
-        int rall = qr_rank(a, R, nc, jpvt);
-        ori__mf_dense_jacobian(m, th2, col_of_joint, nc, a);
+            if (sys_of_var[v] >= 0) var_of_col[ncand++] = v;
+        for (int j = 0; j < J; ++j) col_of_joint[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
+        ori__mf_dense_jacobian(m, th2, col_of_joint, ncand, a);
         for (int c = 0; c < ncand; ++c) {
             double w = fabs(vel[sys_of_var[var_of_col[c]]]) + 1e-3 * vmax;
             for (int r = 0; r < R; ++r) a[(size_t)c * (size_t)R + (size_t)r] *= w;
         }
         int rc = qr_rank(a, R, ncand, jpvt);
-        if (rall < 0 || rc < 0) {
+        // (That the drives can move at all was shown by the probe.)
+        if (rc < 0) {
             ori__fail(error, ORI_ERR_INTERNAL, "LAPACK dgeqp3 failed");
-            break;
-        }
-        if (rc < rall) {
-            ori__fail(error, ORI_ERR_ARGUMENT,
-                      "the driven creases cannot move at first order however the others are locked (their columns of "
-                      "the loop-closure Jacobian are independent of the others')");
             break;
         }
         if (rc == ncand) { // no freedom left beside the drives
