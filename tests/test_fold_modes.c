@@ -360,3 +360,61 @@ Test(fold_modes, origami_simulator_drawings, .init = test_leak_setup, .fini = te
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
+
+// A sequence step of the percent kind: parsed, written back, run, recorded (progress as the
+// drive), and any instant restored exactly (closed, between the recorded states).
+Test(fold_modes, sequence_percent_step, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *text = "{\"pattern\": \"waterbomb-base.fold\", \"folds\": [{\"fix\": 0, \"percent\": 100, \"step\": 20}]}";
+    ori_sequence *s = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_parse(text, strlen(text), &s, &err), ORI_OK);
+    ori_sequence_fold f = ori_sequence_fold_at(s, 0);
+    cr_assert(f.targets);
+    cr_assert_float_eq(f.fraction, 1.0, 0.0);
+    cr_assert_eq(f.driven_edge, ORI_NULL_INDEX);
+    char *json = ori_sequence_to_json(s);
+    cr_assert_not_null(strstr(json, "\"percent\":100"));
+    ori_sequence *s2 = NULL;
+    cr_assert_eq(ori_sequence_parse(json, strlen(json), &s2, &err), ORI_OK);
+    cr_assert(ori_sequence_fold_at(s2, 0).targets);
+    ori_sequence_destroy(s2);
+    ori_buffer_free(json);
+    const char *bad = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 0, \"percent\": 50, \"drive\": 3}]}";
+    cr_assert_neq(ori_sequence_parse(bad, strlen(bad), &s2, &err), ORI_OK);
+    const char *range = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 0, \"percent\": 101}]}";
+    cr_assert_eq(ori_sequence_parse(range, strlen(range), &s2, &err), ORI_ERR_RANGE);
+
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
+    int n = ori_record_frame_count(r), E = ori_mechanism_edge_count(m), V = ori_mechanism_vertex_count(m);
+    cr_assert_gt(n, 2);
+    cr_assert_float_eq(ori_record_frame_time(r, n - 1), 1.0, 1e-12);
+    double *ang = malloc(sizeof(double) * (size_t)E);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)V);
+    for (double t = 0.0; t <= 1.0; t += 0.125) {
+        double res;
+        cr_assert_eq(ori_record_at(r, t, ang, pos, NULL, NULL, &res, &err), ORI_OK);
+        cr_assert_leq(ori_mechanism_residual(m, ang), 1e-10, "t = %g", t);
+        // Between the recorded states around t (each crease monotone on this fold).
+        int k = 0;
+        while (k + 1 < n && ori_record_frame_time(r, k + 1) < t) k++;
+        int k1 = k + 1 < n ? k + 1 : k;
+        for (int e = 0; e < E; ++e) {
+            double lo = fmin(ori_record_frame_angles(r, k)[e], ori_record_frame_angles(r, k1)[e]);
+            double hi = fmax(ori_record_frame_angles(r, k)[e], ori_record_frame_angles(r, k1)[e]);
+            cr_assert(ang[e] >= lo - 1e-3 && ang[e] <= hi + 1e-3, "t = %g crease %d: %g not in [%g, %g]", t, e, ang[e], lo, hi);
+        }
+    }
+    const double *last = ori_record_frame_angles(r, n - 1);
+    cr_assert_float_eq(last[test_edge_at(p, 1, 1, 0, 0)], -ORI_PI, 1e-9);
+    free(ang);
+    free(pos);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

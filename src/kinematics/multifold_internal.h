@@ -88,6 +88,11 @@ ori_status ori__mf_check_start(const ori_mechanism *m, int fixed_face, const dou
 ori_status ori__mf_group_start(const ori_mechanism *m, const int *joint_var, int nvar, const double *th, double *phi,
                                ori_error *error);
 
+// Close edge angles (edge_count entries, in place) onto the loop-closure manifold by minimum-norm
+// Newton on the revolute creases that are not locked: ORI_OK, or ORI_ERR_NOT_CONVERGED.
+ori_status ori__mf_close(const ori_mechanism *m, const int *locked_edges, int locked_count, double *edge_angles,
+                         ori_error *error);
+
 // Dense loop-closure Jacobian at joint angles th restricted to the columns col_of_joint ≥ 0
 // (ncols columns; joints sharing a column are summed), column-major rows × ncols.
 void ori__mf_dense_jacobian(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols, double *a);

@@ -245,6 +245,29 @@ int ori__mf_variables(const ori_mechanism *m, const int *locked_edges, int locke
     return n;
 }
 
+ori_status ori__mf_close(const ori_mechanism *m, const int *locked_edges, int locked_count, double *edge_angles,
+                         ori_error *error)
+{
+    int J = m->joint_count;
+    int *var = ori__alloc(sizeof(int) * (size_t)(J + 1));
+    double *th = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    int n = ori__mf_variables(m, locked_edges, locked_count, NULL, var, error);
+    ori_status st = n < 0 ? ORI_ERR_RANGE : ORI_OK;
+    if (st == ORI_OK) {
+        mf_system s;
+        ori__mf_init(&s, m, var, n);
+        ori__kin_edges_to_joints(m, edge_angles, th);
+        int its;
+        double res;
+        if (ori__mf_correct(&s, th, &its, &res)) ori__kin_joints_to_edges(m, th, edge_angles);
+        else st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "the state could not be closed (residual %.3g)", res);
+        ori__mf_free(&s);
+    }
+    ori__free(var);
+    ori__free(th);
+    return st;
+}
+
 // --- result ----------------------------------------------------------------------------------
 
 ori_multifold *ori__mf_result_create(const ori_mechanism *m, int fixed_face, ori_rigid fixed_pose)
