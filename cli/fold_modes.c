@@ -240,6 +240,33 @@ static int crease_rows(const modes_run *r, crease_row *rows)
     return n;
 }
 
+// Creases that fold against their assignment on some frame (worst angle each), as in the
+// ordinary fold's invalid-assignment check: the modes report them without stopping.
+typedef struct against_row {
+    int edge;
+    char assignment;
+    double angle;
+} against_row;
+
+static int against_assignment(const modes_run *r, against_row *rows)
+{
+    const ori_mechanism *m = r->k.mech;
+    const ori_multifold *mf = r->mf;
+    int E = ori_mechanism_edge_count(m), F = ori_multifold_frame_count(mf), n = 0;
+    for (int e = 0; e < E; ++e) {
+        ori_assignment as = ori_pattern_edge(r->k.flat, e).assignment;
+        int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+        if (!sg) continue;
+        double worst = 0.0;
+        for (int f = 0; f < F; ++f) {
+            double x = ori_multifold_frame_angles(mf, f)[e];
+            if (x * sg < 0.0 && fabs(x) > ORI_TOL_FOLD_SIGN_RAD && fabs(x) > fabs(worst)) worst = x;
+        }
+        if (worst != 0.0) rows[n++] = (against_row){e, ori_assignment_to_char(as), worst};
+    }
+    return n;
+}
+
 static void print_json(const modes_run *r)
 {
     const modes_args *a = &r->a;
@@ -280,6 +307,16 @@ static void print_json(const modes_run *r)
                                             ori_rad_to_deg_output(rows[i].reached), "fraction", rows[i].fraction));
     free(rows);
     json_object_set_new(out, "creases", cr);
+    against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
+    int na = against_assignment(r, ag);
+    json_t *aj = json_array();
+    for (int i = 0; i < na; ++i) {
+        char as[2] = {ag[i].assignment, '\0'};
+        json_array_append_new(aj, json_pack("{s:i,s:s,s:f}", "edge", ag[i].edge, "assignment", as, "angle_deg",
+                                            ori_rad_to_deg_output(ag[i].angle)));
+    }
+    free(ag);
+    json_object_set_new(out, "against_assignment", aj);
     json_t *frames = json_array();
     double maxres = 0.0;
     for (int f = 0; f < F; ++f) {
@@ -336,6 +373,17 @@ static void print_text(const modes_run *r)
     ori_multifold_verdict v = ori_multifold_verdict_of(mf);
     printf("verdict: %s: %s\n", ori_multifold_verdict_name(v), ori_multifold_reason(mf));
     if (r->hint[0]) printf("hint: %s\n", r->hint);
+    against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
+    int na = against_assignment(r, ag);
+    if (na) {
+        printf("note: %d crease%s fold%s against %s assignment:", na, na == 1 ? "" : "s", na == 1 ? "s" : "",
+               na == 1 ? "its" : "their");
+        for (int i = 0; i < na && i < 8; ++i)
+            printf("%s crease %d (%c) to %.6g deg", i ? "," : "", ag[i].edge, ag[i].assignment,
+                   ori_rad_to_deg_output(ag[i].angle));
+        printf("%s\n", na > 8 ? ", ... (--json)" : "");
+    }
+    free(ag);
     crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
     int nr = crease_rows(r, rows), at = 0, worst = -1;
     for (int i = 0; i < nr; ++i) {
