@@ -519,6 +519,42 @@ static int solve(modes_run *r)
     return CLI_EXIT_OK;
 }
 
+extern const cli_command cli_cmd_fold;
+
+// One drive with --lock auto (and nothing else of the modes): the lock set, then the ordinary
+// fold (its branch analysis at a flat start, collision checks and output) with "auto" replaced.
+static int single_drive_auto(modes_run *r, int argc, char **argv)
+{
+    int E = ori_mechanism_edge_count(r->k.mech);
+    int *locks = malloc(sizeof(int) * (size_t)(E + r->a.nlocks + 1));
+    memcpy(locks, r->a.locks, sizeof(int) * (size_t)r->a.nlocks);
+    ori_error err;
+    int rc = check_edge(r, "--drive", r->a.drives[0]);
+    int n = rc == CLI_EXIT_OK ? ori_mechanism_lock_set(r->k.mech, r->k.angles, r->a.drives, 1, r->a.locks, r->a.nlocks,
+                                                       NULL, locks + r->a.nlocks, E, &err)
+                              : -1;
+    if (rc == CLI_EXIT_OK && n < 0) rc = cli_input_error("fold", r->a.path, &err);
+    if (rc == CLI_EXIT_OK) {
+        size_t len = 16;
+        for (int i = 0; i < r->a.nlocks + n; ++i) len += 12;
+        char *list = malloc(len);
+        list[0] = '\0';
+        size_t w = 0;
+        for (int i = 0; i < r->a.nlocks + n; ++i) w += (size_t)snprintf(list + w, len - w, "%s%d", i ? "," : "", locks[i]);
+        char **av = malloc(sizeof(char *) * (size_t)(argc + 1));
+        for (int i = 0; i < argc; ++i) av[i] = argv[i];
+        av[argc] = NULL;
+        for (int i = 1; i + 1 < argc; ++i)
+            if (strcmp(argv[i], "--lock") == 0 && strcmp(argv[i + 1], "auto") == 0) av[i + 1] = list;
+        if (r->a.nlocks + n > 0) rc = cli_cmd_fold.run(argc, av);
+        else rc = cli_usage("fold", "--lock auto: nothing to lock, the drive leaves no freedom");
+        free(av);
+        free(list);
+    }
+    free(locks);
+    return rc;
+}
+
 int cli_fold_modes_run(int argc, char **argv)
 {
     modes_run r;
@@ -528,6 +564,11 @@ int cli_fold_modes_run(int argc, char **argv)
     rc = cli_kin_load("fold", r.a.path, r.a.frame, &r.k);
     if (rc != CLI_EXIT_OK) return rc;
     rc = cli_find_face_option("fold", r.a.path, r.k.flat, "--fix", r.a.fix_spec, &r.a.fix);
+    if (rc == CLI_EXIT_OK && r.a.lock_auto && r.a.ndrives == 1 && !r.a.symmetric && !r.a.has_percent) {
+        rc = single_drive_auto(&r, argc, argv);
+        cli_kin_free(&r.k);
+        return rc;
+    }
     if (rc == CLI_EXIT_OK) rc = solve(&r);
     if (rc == CLI_EXIT_OK) {
         if (r.a.json) print_json(&r);

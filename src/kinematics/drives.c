@@ -151,6 +151,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
         double dt_out = rmax > 0.0 ? fmin(1.0, def->step_rad / rmax) : 1.0;
         double dt_max = rmax > 0.0 ? ORI_MULTIFOLD_MAX_STEP_RAD / rmax : 1.0;
         double h = fmin(dt_out, dt_max), t = 0.0, defect = 0.0;
+        bool bias = true; // the assignment's direction at the start; dropped when it leads nowhere
         int k_out = 1;
         double t_next = fmin(1.0, dt_out);
         bool first = true;
@@ -180,7 +181,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
             // At the start, which may be singular (the flat sheet, where many branches meet), add the
             // part of the assignment's direction that the first-order motions allow: the predictor
             // then heads for the branch that folds the creases as assigned.
-            if (ok && t == 0.0) {
+            if (ok && t == 0.0 && bias) {
                 for (int v = 0; v < nfree; ++v) sgn[v] = 0.0;
                 for (int j = 0; j < J; ++j) {
                     ori_assignment as = m->joints[j].assignment;
@@ -216,6 +217,11 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
                 mo->rejected++;
                 h *= 0.5;
                 if (h * rmax >= ORI_MULTIFOLD_MIN_STEP_RAD) continue;
+                if (t == 0.0 && bias) { // the assigned branch does not exist: any motion of the drives
+                    bias = false;
+                    h = fmin(dt_out, dt_max);
+                    continue;
+                }
                 if (why_joint >= 0) {
                     mo->verdict = ORI_MULTIFOLD_LIMIT;
                     mo->stop_edge = m->joints[why_joint].edge;
@@ -258,7 +264,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
                     break;
                 }
             }
-            if (its <= 3) h = fmin(2.0 * h, dt_max);
+            if (its <= 5) h = fmin(2.0 * h, dt_max);
             if (t == t_next) {
                 ori__mf_record(mo, th, res, t);
                 if (t >= 1.0) {

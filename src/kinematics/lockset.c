@@ -11,7 +11,10 @@
 // minimum-norm corrections. The columns are weighted by how fast their creases move there, so
 // that the creases the motion uses stay free and those it barely moves are locked; then the
 // probe is repeated with the new locks, until the drives leave no freedom (at most
-// LOCKSET_ROUNDS rounds).
+// LOCKSET_ROUNDS rounds). The set is verified by folding the drives 0.3 rad with it (the
+// ordinary fold for one drive, else the several-drive solver); other probe lengths and
+// unweighted columns are tried until a set folds every crease as assigned, else the best one
+// that moves at all is returned.
 #include <lapacke.h>
 #include <math.h>
 #include <string.h>
@@ -42,38 +45,121 @@ static int qr_rank(double *a, int rows, int cols, int *jpvt)
 
 #define LOCKSET_ROUNDS 6
 
-// Move the drives by δ from th (rate: +1 or −1 per driven joint) with the joints that have no
-// solved variable held; the others solved. out receives the state, vel (per variable of
-// sys_var) the velocity estimate. False when no δ gives a closed state.
+// Move the drives by `total` from th (rate: +1 or −1 per driven joint) in substeps of at most
+// 0.02 rad, the joints without a solved variable held, the others solved (minimum-norm tangent;
+// on the first substep plus the part of the assignment's direction that first order allows, to
+// leave a singular start on the assigned branch). out receives the state, vel (per variable of
+// sys_var) the minimum-norm tangent there. False when some substep cannot be closed without a
+// jump.
 static bool drive_probe(const ori_mechanism *m, const int *sys_var, int nsys, const double *rate, const double *th,
-                        double *out, double *vel)
+                        double total, double *out, double *vel)
 {
     int J = m->joint_count;
     mf_system s;
     ori__mf_init(&s, m, sys_var, nsys);
     double *b = ori__alloc(sizeof(double) * (size_t)(m->rows + 1));
+    double *jx = ori__alloc(sizeof(double) * (size_t)(m->rows + 1));
     double *x = ori__alloc(sizeof(double) * (size_t)(nsys + 1));
-    bool found = false;
-    if (ori__mf_linearize(&s, th)) {
-        ori__mf_joint_rate(&s, rate, b);
-        for (int r = 0; r < m->rows; ++r) b[r] = -b[r];
-        if (ori__mf_minnorm(&s, b, x))
-            for (double h = 0.02; h > 1e-4 && !found; h *= 0.25) {
-                for (int j = 0; j < J; ++j)
-                    out[j] = th[j] + h * (sys_var[j] >= 0 ? x[sys_var[j]] : rate[j]);
-                int its;
-                double res;
-                if (ori__mf_correct(&s, out, &its, &res)) {
-                    found = true;
-                    for (int j = 0; j < J; ++j)
-                        if (sys_var[j] >= 0) vel[sys_var[j]] = (out[j] - th[j]) / h;
-                }
+    double *sg = ori__alloc(sizeof(double) * (size_t)(nsys + 1));
+    double *nx = ori__alloc(sizeof(double) * (size_t)(nsys + 1));
+    double *cur = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    memcpy(cur, th, sizeof(double) * (size_t)J);
+    int steps = (int)ceil(total / 0.02);
+    bool ok = true;
+    for (int k = 0; k <= steps && ok; ++k) {
+        ok = ori__mf_linearize(&s, cur);
+        if (ok) {
+            ori__mf_joint_rate(&s, rate, b);
+            for (int r = 0; r < m->rows; ++r) b[r] = -b[r];
+            ok = ori__mf_minnorm(&s, b, x);
+        }
+        if (!ok || k == steps) break; // the last pass only computes the tangent
+        if (k == 0) {
+            for (int v = 0; v < nsys; ++v) sg[v] = 0.0;
+            for (int j = 0; j < J; ++j) {
+                ori_assignment as = m->joints[j].assignment;
+                if (sys_var[j] >= 0) sg[sys_var[j]] += as == ORI_ASSIGN_VALLEY ? 1.0 : as == ORI_ASSIGN_MOUNTAIN ? -1.0 : 0.0;
             }
+            ori__mf_jv(&s, sg, jx);
+            if (ori__mf_minnorm(&s, jx, nx))
+                for (int v = 0; v < nsys; ++v) x[v] += sg[v] - nx[v];
+        }
+        double xmax = 1.0;
+        for (int v = 0; v < nsys; ++v) xmax = fmax(xmax, fabs(x[v]));
+        bool found = false;
+        for (double h = total / steps; h > 1e-5 && !found; h *= 0.25) {
+            for (int j = 0; j < J; ++j) out[j] = cur[j] + h * (sys_var[j] >= 0 ? x[sys_var[j]] : rate[j]);
+            int its;
+            double res, move = 0.0;
+            bool conv = ori__mf_correct(&s, out, &its, &res);
+            for (int j = 0; j < J && conv; ++j)
+                if (sys_var[j] >= 0) move = fmax(move, fabs(out[j] - cur[j] - h * x[sys_var[j]]));
+            // A correction much larger than the step is a jump, not the motion.
+            found = conv && move <= ORI_MULTIFOLD_MAX_CORRECTION * h * xmax;
+        }
+        ok = ok && found;
+        if (ok) memcpy(cur, out, sizeof(double) * (size_t)J);
+    }
+    if (ok) {
+        memcpy(out, cur, sizeof(double) * (size_t)J);
+        for (int v = 0; v < nsys; ++v) vel[v] = x[v];
     }
     ori__free(b);
+    ori__free(jx);
     ori__free(x);
+    ori__free(sg);
+    ori__free(nx);
+    ori__free(cur);
     ori__mf_free(&s);
-    return found;
+    return ok;
+}
+
+// Does the lock set let the drives move 0.3 rad? 2: yes, folding every crease as assigned; 1:
+// yes, against the assignment somewhere; 0: no. One drive without groups is checked by the
+// ordinary fold (ori_motion_solve: its second-order analysis leaves a flat start reliably),
+// otherwise by the several-drive solver.
+static int verify(const ori_mechanism *m, const double *angles, const int *drives, int count, const double *to,
+                  const int *locks, int nlocks, const int *edge_group)
+{
+    ori_error e;
+    if (count == 1 && !edge_group) {
+        ori_motion_def d = ori_default_motion_def();
+        d.start_angles_rad = angles;
+        d.driven_edge = drives[0];
+        d.to_rad = to[0];
+        d.step_rad = 0.1;
+        d.locked_edges = locks;
+        d.locked_count = nlocks;
+        ori_motion *mo = NULL;
+        if (ori_motion_solve(m, &d, &mo, &e) != ORI_OK) return 0;
+        ori_motion_verdict v = ori_motion_verdict_of(mo);
+        int score = v == ORI_MOTION_VALID ? 2 : v == ORI_MOTION_INVALID_ASSIGNMENT && ori_motion_frame_count(mo) > 1 ? 1 : 0;
+        ori_motion_destroy(mo);
+        return score;
+    }
+    ori_drives_fold_def d = ori_default_drives_fold_def();
+    d.start_angles_rad = angles;
+    d.driven_edges = drives;
+    d.to_rad = to;
+    d.driven_count = count;
+    d.locked_edges = locks;
+    d.locked_count = nlocks;
+    d.edge_group = edge_group;
+    ori_multifold *mf = NULL;
+    if (ori_drives_fold_solve(m, &d, &mf, &e) != ORI_OK) return 0;
+    int score = 0;
+    if (ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_REACHED) {
+        score = 2;
+        for (int f = 0; f < ori_multifold_frame_count(mf) && score == 2; ++f) {
+            const double *a = ori_multifold_frame_angles(mf, f);
+            for (int x = 0; x < m->edge_count; ++x) {
+                int sg = m->edges[x].assignment == ORI_ASSIGN_VALLEY ? 1 : m->edges[x].assignment == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+                if (sg && a[x] * sg < 0.0 && fabs(a[x]) > ORI_TOL_FOLD_SIGN_RAD) score = 1;
+            }
+        }
+    }
+    ori_multifold_destroy(mf);
+    return score;
 }
 
 int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const int *drive_edges, int drive_count,
@@ -124,59 +210,77 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
     double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)(nvar + 2) + 1));
     int *jpvt = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
     int n = -1;
-    for (int round = 0; round < LOCKSET_ROUNDS; ++round) {
-        int nsys = 0;
-        for (int v = 0; v < nvar; ++v) sys_of_var[v] = is_drive[v] || lock[v] ? -1 : nsys++;
-        for (int j = 0; j < J; ++j) sys_var[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
-        if (!drive_probe(m, sys_var, nsys, rate, th, th2, vel)) {
-            ori__fail(error, ORI_ERR_ARGUMENT,
-                      round == 0 ? "no rigid motion moves the driven creases from this state: no lock set helps"
-                                 : "no lock set found that keeps the motion: lock creases by hand");
-            break;
-        }
-        // Columns: the solved variables, weighted by their speed on the probe's motion.
-        double vmax = 0.0;
-        for (int k = 0; k < nsys; ++k) vmax = fmax(vmax, fabs(vel[k]));
-        int ncand = 0;
-        for (int v = 0; v < nvar; ++v)
-            if (sys_of_var[v] >= 0) var_of_col[ncand++] = v;
-        for (int j = 0; j < J; ++j) col_of_joint[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
-        ori__mf_dense_jacobian(m, th2, col_of_joint, ncand, a);
-        for (int c = 0; c < ncand; ++c) {
-            double w = fabs(vel[sys_of_var[var_of_col[c]]]) + 1e-3 * vmax;
-            for (int r = 0; r < R; ++r) a[(size_t)c * (size_t)R + (size_t)r] *= w;
-        }
-        int rc = qr_rank(a, R, ncand, jpvt);
-        // (That the drives can move at all was shown by the probe.)
-        if (rc < 0) {
-            ori__fail(error, ORI_ERR_INTERNAL, "LAPACK dgeqp3 failed");
-            break;
-        }
-        if (rc == ncand) { // no freedom left beside the drives
-            n = 0;
-            for (int v = 0; v < nvar; ++v) {
-                if (!lock[v]) continue;
-                if (n < cap)
+    int *cand = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
+    int *all_locks = ori__alloc(sizeof(int) * (size_t)(locked_count + nvar + 1));
+    double *to = ori__alloc(sizeof(double) * (size_t)(drive_count + 1));
+    bool probed = false;
+    // Strategies (tried until one verifies): the probe 0.1 or 0.3 rad from the start, columns
+    // weighted by the creases' speed or unweighted.
+    int best = 0;
+    for (int strategy = 0; strategy < 4 && best < 2; ++strategy) {
+        double total = strategy < 2 ? 0.1 : 0.3;
+        for (int v = 0; v < nvar; ++v) lock[v] = false;
+        for (int round = 0; round < LOCKSET_ROUNDS; ++round) {
+            int nsys = 0;
+            for (int v = 0; v < nvar; ++v) sys_of_var[v] = is_drive[v] || lock[v] ? -1 : nsys++;
+            for (int j = 0; j < J; ++j) sys_var[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
+            if (!drive_probe(m, sys_var, nsys, rate, th, total, th2, vel)) break;
+            probed = true;
+            double vmax = 0.0;
+            for (int k = 0; k < nsys; ++k) vmax = fmax(vmax, fabs(vel[k]));
+            int ncand = 0;
+            for (int v = 0; v < nvar; ++v)
+                if (sys_of_var[v] >= 0) var_of_col[ncand++] = v;
+            for (int j = 0; j < J; ++j) col_of_joint[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
+            ori__mf_dense_jacobian(m, th2, col_of_joint, ncand, a);
+            for (int c = 0; c < ncand && strategy % 2 == 0; ++c) {
+                double w = fabs(vel[sys_of_var[var_of_col[c]]]) + 1e-3 * vmax;
+                for (int r = 0; r < R; ++r) a[(size_t)c * (size_t)R + (size_t)r] *= w;
+            }
+            int rc = qr_rank(a, R, ncand, jpvt);
+            if (rc < 0) break;
+            if (rc < ncand) { // lock the columns the basis leaves out, and probe again
+                for (int k = rc; k < ncand; ++k) lock[var_of_col[jpvt[k] - 1]] = true;
+                continue;
+            }
+            // No freedom left beside the drives: verify by folding the drives by 0.3 rad.
+            int nc = 0;
+            for (int v = 0; v < nvar; ++v)
+                if (lock[v])
                     for (int j = 0; j < J; ++j)
                         if (joint_var[j] == v) {
-                            out[n] = m->joints[j].edge;
+                            cand[nc++] = m->joints[j].edge;
                             break;
                         }
-                n++;
+            for (int i = 0; i < locked_count; ++i) all_locks[i] = locked_edges[i];
+            for (int i = 0; i < nc; ++i) all_locks[locked_count + i] = cand[i];
+            for (int i = 0; i < drive_count; ++i) {
+                int j = m->edge_joint[drive_edges[i]];
+                to[i] = fmax(-ORI_PI, fmin(ORI_PI, th[j] + 0.3 * rate[j]));
             }
-            if (n > cap) n = cap;
-            for (int i = 1; i < n; ++i) // ascending edge order
-                for (int k = i; k > 0 && out[k - 1] > out[k]; --k) {
-                    int t = out[k];
-                    out[k] = out[k - 1];
-                    out[k - 1] = t;
-                }
+            int score = verify(m, angles, drive_edges, drive_count, to, all_locks, locked_count + nc, edge_group);
+            if (score > best) {
+                best = score;
+                n = nc < cap ? nc : cap;
+                for (int i = 0; i < n; ++i) out[i] = cand[i];
+                for (int i = 1; i < n; ++i) // ascending edge order
+                    for (int k = i; k > 0 && out[k - 1] > out[k]; --k) {
+                        int t = out[k];
+                        out[k] = out[k - 1];
+                        out[k - 1] = t;
+                    }
+            }
             break;
         }
-        for (int k = rc; k < ncand; ++k) lock[var_of_col[jpvt[k] - 1]] = true;
-        if (round == LOCKSET_ROUNDS - 1)
-            ori__fail(error, ORI_ERR_ARGUMENT, "no lock set found that keeps the motion: lock creases by hand");
     }
+    if (n < 0)
+        ori__fail(error, ORI_ERR_ARGUMENT,
+                  probed ? "no lock set found that keeps the motion (each candidate left the drives stuck or free): "
+                           "lock creases by hand"
+                         : "no rigid motion moves the driven creases from this state: no lock set helps");
+    ori__free(cand);
+    ori__free(all_locks);
+    ori__free(to);
     ori__free(joint_var);
     ori__free(is_drive);
     ori__free(rate);

@@ -28,6 +28,7 @@ typedef struct mf_system {
     double *y;     // rows scratch
     double *x;     // nvar scratch
     double worst;  // residual of the last evaluation
+    bool factored; // the CHOLMOD factor holds a linearization (the chord corrector may reuse it)
     int newton_iterations;
 } mf_system;
 
@@ -45,6 +46,8 @@ void ori__mf_jv(const mf_system *s, const double *v, double *out);
 // (rate per joint; used for driven joints that are not variables).
 void ori__mf_joint_rate(const mf_system *s, const double *rate, double *out);
 // Newton (minimum-norm) corrector on the variables, fixed joints held: th updated in place.
+// Starts from the last factor when there is one (chord iterations), and refactors when an
+// iteration contracts the residual by less than ORI_KIN_CHORD_RATE.
 // True when the residual reaches ORI_TOL_RESIDUAL; *residual the final max-norm of P − I.
 bool ori__mf_correct(mf_system *s, double *th, int *iterations, double *residual);
 // Joint angles from variables (free joints) over th.

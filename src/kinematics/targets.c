@@ -120,7 +120,8 @@ bool ori__mf_linearize(mf_system *s, const double *th)
             for (int r = 0; r < rows; ++r) v[r] += c[r];
         }
     }
-    return isfinite(s->worst) && ori__sls_factor(s->sls, ORI_MULTIFOLD_LAMBDA);
+    s->factored = isfinite(s->worst) && ori__sls_factor(s->sls, ORI_MULTIFOLD_LAMBDA);
+    return s->factored;
 }
 
 bool ori__mf_minnorm(mf_system *s, const double *b, double *x)
@@ -158,21 +159,40 @@ bool ori__mf_correct(mf_system *s, double *th, int *iterations, double *residual
     const ori_mechanism *m = s->m;
     double first = -1.0, prev = INFINITY, r = INFINITY;
     int it = 0;
+    // Chord iterations: the factor of the last linearization (the projection's, at the state the
+    // step left) is reused while it contracts the residual by ORI_KIN_CHORD_RATE or better.
+    bool fresh = !s->factored;
     for (;; ++it) {
-        bool ok = ori__mf_linearize(s, th);
-        r = s->worst;
+        bool ok = true;
+        if (fresh) {
+            ok = ori__mf_linearize(s, th);
+            r = s->worst;
+        } else {
+            r = ori__kin_eval(m, th, s->res, NULL, s->half);
+        }
         if (first < 0.0) first = r;
         if (!isfinite(r)) break;
         if (r <= ORI_TOL_NEWTON) break;
         // Converged as far as rounding allows: no more progress below the residual tolerance.
-        if (r <= ORI_TOL_RESIDUAL && r > 0.25 * prev) break;
-        if (it >= ORI_KIN_NEWTON_MAX || !ok) break;
-        if (r > ORI_KIN_GROWTH_STEP * prev || r > ORI_KIN_GROWTH_TOTAL * fmax(first, ORI_TOL_RESIDUAL)) break;
+        if (r <= ORI_TOL_RESIDUAL && r > 0.25 * prev && fresh) break;
+        if (it >= 2 * ORI_KIN_NEWTON_MAX || !ok) break;
+        if (r > ORI_KIN_GROWTH_STEP * prev || r > ORI_KIN_GROWTH_TOTAL * fmax(first, ORI_TOL_RESIDUAL)) {
+            if (fresh) break;
+            fresh = true; // the old factor diverges: retry from here with a new one
+            continue;
+        }
+        bool next_fresh = prev < INFINITY && r > ORI_KIN_CHORD_RATE * prev;
+        if (next_fresh && !fresh) {
+            fresh = true; // slow chord: linearize here and solve again
+            prev = INFINITY;
+            continue;
+        }
         prev = r;
         for (int k = 0; k < m->rows; ++k) s->res[k] = -s->res[k];
         if (!ori__mf_minnorm(s, s->res, s->x)) break;
         for (int j = 0; j < m->joint_count; ++j)
             if (s->var_of_joint[j] >= 0) th[j] += s->x[s->var_of_joint[j]];
+        fresh = next_fresh;
     }
     s->newton_iterations += it;
     if (iterations) *iterations = it;
@@ -656,7 +676,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                     since = 0.0;
                     recorded = true;
                 }
-                if (its <= 3) h = fmin(2.0 * h, hmax);
+                if (its <= 5) h = fmin(2.0 * h, hmax);
                 break;
             }
             mo->rejected++;
