@@ -67,7 +67,7 @@ static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, si
 }
 
 static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col,
-                       json_t *suggested_locks)
+                       const char *lock_hint)
 {
     const ori_mechanism *m = k->mech;
     int E = ori_mechanism_edge_count(m);
@@ -84,8 +84,8 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     json_object_set_new(out, "collision", cli_collision_json(col, false));
     char hint[512];
     const char *h = rounding_hint(k, mo, hint, sizeof hint);
+    if (!h && lock_hint && lock_hint[0]) h = lock_hint; // underdetermined: a lock set (fold_modes.c)
     json_object_set_new(out, "hint", h ? json_string(h) : json_null());
-    json_object_set_new(out, "suggested_locks", suggested_locks ? suggested_locks : json_null());
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
     json_object_set_new(out, "dof", json_integer(ori_motion_dof(mo)));
     json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
@@ -265,10 +265,9 @@ static int run(int argc, char **argv)
     }
     // An underdetermined fold names a lock set that leaves one degree of freedom (fold_modes.c).
     char locks_hint[1024] = "";
-    json_t *locks = NULL;
     if (ori_motion_verdict_of(mo) == ORI_MOTION_UNDERDETERMINED)
-        cli_fold_modes_suggest(&k, &def, locks_hint, sizeof locks_hint, &locks);
-    if (a.json) print_json(&a, &k, mo, &col, locks);
+        cli_fold_modes_suggest(&k, &def, locks_hint, sizeof locks_hint, NULL);
+    if (a.json) print_json(&a, &k, mo, &col, locks_hint);
     else print_text(&a, &k, mo, &col);
     if (!a.json && locks_hint[0]) printf("hint: %s\n", locks_hint);
     bool valid = ori_motion_verdict_of(mo) == ORI_MOTION_VALID;

@@ -57,7 +57,7 @@ static json_t *fold_json(const ori_sequence_fold *f, int i)
     json_object_set_new(o, "name", f->name[0] ? json_string(f->name) : json_null());
     json_object_set_new(o, "fix", json_integer(f->fixed_face));
     json_object_set_new(o, "drive", f->targets ? json_null() : json_integer(f->driven_edge));
-    json_object_set_new(o, "percent", f->targets ? json_real(100.0 * f->fraction) : json_null());
+    if (f->targets) json_object_set_new(o, "percent", json_real(100.0 * f->fraction)); // folds toward the targets only
     json_t *lock = json_array();
     for (int k = 0; k < f->locked_count; ++k) json_array_append_new(lock, json_integer(f->locked[k]));
     json_object_set_new(o, "lock", lock);
