@@ -331,8 +331,9 @@ static void print_json(const modes_run *r)
     json_object_set_new(out, "frames", frames);
     int steps, rejected, newton;
     ori_multifold_stats(mf, &steps, &rejected, &newton);
-    json_object_set_new(out, "stats", json_pack("{s:i,s:i,s:i,s:f}", "steps", steps, "rejected_steps", rejected,
-                                                "newton_iterations", newton, "max_residual", maxres));
+    json_object_set_new(out, "stats", json_pack("{s:i,s:i,s:i,s:i,s:f}", "steps", steps, "rejected_steps", rejected,
+                                                "newton_iterations", newton, "held_at_180", ori_multifold_held_count(mf),
+                                                "max_residual", maxres));
     cli_print_json(out);
 }
 
@@ -372,6 +373,10 @@ static void print_text(const modes_run *r)
     }
     ori_multifold_verdict v = ori_multifold_verdict_of(mf);
     printf("verdict: %s: %s\n", ori_multifold_verdict_name(v), ori_multifold_reason(mf));
+    if (ori_multifold_held_count(mf))
+        printf("note: %d crease%s reached 180 deg (%s target) first and %s held there\n", ori_multifold_held_count(mf),
+               ori_multifold_held_count(mf) == 1 ? "" : "s", ori_multifold_held_count(mf) == 1 ? "its" : "their",
+               ori_multifold_held_count(mf) == 1 ? "was" : "were");
     if (r->hint[0]) printf("hint: %s\n", r->hint);
     against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
     int na = against_assignment(r, ag);

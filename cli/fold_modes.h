@@ -34,7 +34,8 @@ int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *bu
     "  with a mode, --json prints {mode, verdict, reason, stop_edge, symmetry, locked, drives,\n"           \
     "                  creases: [{edge, start_deg, target_deg, goal_deg, reached_deg, fraction}],\n"         \
     "                  against_assignment: [{edge, assignment, angle_deg}],\n"                            \
-    "                  frames: [{progress, fold_angles_deg, residual}], stats}; -o writes the\n"            \
+    "                  frames: [{progress, fold_angles_deg, residual}], stats: {steps, rejected_steps,\n"   \
+    "                  newton_iterations, held_at_180, max_residual}}; -o writes the\n"                    \
     "                  motion up to where it stops (titled partial when the goal is not reached)\n"
 
 #endif

@@ -500,6 +500,8 @@ ORI_API void ori_multifold_frame_vertices(const ori_multifold *fold, int k, ori_
 /// The goal angles (edge_count entries, radians; owned): targets scaled by the fraction, or the
 /// drives' final angles (other creases: their start angle).
 ORI_API const double *ori_multifold_goal(const ori_multifold *fold);
+/// Creases a target fold held at ±180° (their own target) when they reached it first.
+ORI_API int ori_multifold_held_count(const ori_multifold *fold);
 /// Corrector iterations and accepted / rejected steps over the whole fold.
 ORI_API void ori_multifold_stats(const ori_multifold *fold, int *steps, int *rejected, int *newton_iterations);
 

@@ -388,6 +388,9 @@
 /// Tikhonov term λ of the minimum-norm solves with J Jᵀ + λI (CHOLMOD): rows the state makes
 /// zero (the flat sheet's out-of-plane rows) or dependent get no weight. Unitless (J has unit-axis columns).
 #define ORI_MULTIFOLD_LAMBDA 1e-12
+/// A crease within this of ±180° when the motion stops at that limit, and whose target is ±180°,
+/// is held at ±180° exactly while the other creases go on toward theirs. Radians.
+#define ORI_MULTIFOLD_PIN_RAD 1e-6
 /// A target fold gives up after this many continuation steps (the verdict is then stationary).
 #define ORI_MULTIFOLD_MAX_STEPS 200000
 /// A corrector step that moves the prediction by more than this × the step (plus 1e-9 rad) is

@@ -71,6 +71,7 @@ struct ori_multifold {
     double *progress;
     double *goal;   // edge_count + 1
     int steps, rejected, newton;
+    int pinned; // creases held at ±180° (their own target) while the others went on
 };
 
 ori_multifold *ori__mf_result_create(const ori_mechanism *m, int fixed_face, ori_rigid fixed_pose);

@@ -10,8 +10,9 @@
 // out-of-plane rows) or dependent then carry no weight, and Jᵀ removes their components.
 // Since d · p = |p|² ≥ 0, each step brings the state nearer to the goal to first order; the fold
 // ends when the goal is reached, when p vanishes (stationary: what remains is normal to every
-// rigid motion), when a crease would pass ±180° (limit), or when no step, however small, can be
-// corrected (singular).
+// rigid motion), when a crease would pass ±180° (limit; a crease whose own target is ±180° is
+// held there instead, and the others go on), or when no step, however small, can be corrected
+// (singular).
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -400,6 +401,12 @@ const double *ori_multifold_goal(const ori_multifold *mo)
     return mo->goal;
 }
 
+int ori_multifold_held_count(const ori_multifold *mo)
+{
+    ORI_ASSERT(mo);
+    return mo->pinned;
+}
+
 void ori_multifold_stats(const ori_multifold *mo, int *steps, int *rejected, int *newton_iterations)
 {
     ORI_ASSERT(mo);
@@ -590,6 +597,9 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     int why_joint = -1;
     bool recorded = true, done = false;
     double last_res = 0.0;
+    int *all_locks = ori__alloc(sizeof(int) * (size_t)(def->locked_count + m->edge_count + 1));
+    int nlocks = def->locked_count;
+    for (int i = 0; i < nlocks; ++i) all_locks[i] = def->locked_edges[i];
     while (!done) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
@@ -686,6 +696,43 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 break;
             }
         }
+        // A crease stopped at ±180° that is its own goal is held there, and the others go on.
+        if (done && why == WHY_LIMIT && fabs(goal[why_joint]) >= ORI_PI - ORI_TOL_TARGET_RAD &&
+            fabs(th[why_joint]) >= ORI_PI - ORI_MULTIFOLD_PIN_RAD) {
+            int v0 = joint_var[why_joint];
+            all_locks[nlocks++] = m->joints[why_joint].edge;
+            memcpy(trial, th, sizeof(double) * (size_t)J);
+            for (int j = 0; j < J; ++j)
+                if (joint_var[j] == v0) trial[j] = goal[j] > 0.0 ? ORI_PI : -ORI_PI;
+            int nv2 = ori__mf_variables(m, all_locks, nlocks, def->edge_group, joint_var, NULL);
+            mo->newton += sys.newton_iterations;
+            ori__mf_free(&sys);
+            ori__mf_init(&sys, m, joint_var, nv2);
+            if (nv2 >= 0 && ori__mf_correct(&sys, trial, &its, &res)) {
+                memcpy(th, trial, sizeof(double) * (size_t)J);
+                nvar = nv2;
+                for (int v = 0; v < nvar; ++v) {
+                    gvar[v] = 0.0;
+                    nj[v] = 0;
+                }
+                for (int j = 0; j < J; ++j)
+                    if (joint_var[j] >= 0) {
+                        gvar[joint_var[j]] += goal[j];
+                        nj[joint_var[j]]++;
+                    }
+                for (int v = 0; v < nvar; ++v) gvar[v] /= nj[v] ? nj[v] : 1;
+                mo->pinned++;
+                last_res = res;
+                recorded = false;
+                done = false;
+                why = WHY_NONE;
+                h = hmax;
+                continue;
+            }
+            // The others cannot close with it at ±180°: stop here (the state before the pin).
+            nlocks--;
+            ori__mf_variables(m, all_locks, nlocks, def->edge_group, joint_var, NULL);
+        }
         if (done) {
             // Classify the stop by why the last, smallest steps failed.
             if (why == WHY_LIMIT) {
@@ -711,8 +758,9 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
         }
     }
     if (!recorded) ori__mf_record(mo, th, last_res, D0 > 0.0 ? 1.0 - goal_distance(m, joint_var, th, goal) / D0 : 1.0);
-    mo->newton = sys.newton_iterations;
+    mo->newton += sys.newton_iterations;
     ori__mf_free(&sys);
+    ori__free(all_locks);
     ori__free(th);
     ori__free(target);
     ori__free(joint_var);
