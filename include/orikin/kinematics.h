@@ -505,15 +505,17 @@ ORI_API int ori_multifold_held_count(const ori_multifold *fold);
 /// Corrector iterations and accepted / rejected steps over the whole fold.
 ORI_API void ori_multifold_stats(const ori_multifold *fold, int *steps, int *rejected, int *newton_iterations);
 
-/// A lock set that leaves one degree of freedom per driven crease: the unlocked revolute creases
-/// (other than the drives and the already locked ones) whose columns the rank-revealing QR
-/// (LAPACK dgeqp3, column pivoting) of the loop-closure Jacobian leaves out of a basis of its
-/// column space, at the state angles_rad (NULL = flat) or, when that state is singular (the flat
-/// sheet), at a nearby regular state on the free motion. Locking them makes the drives' motion
-/// unique at first order. edge_group (NULL or edge_count entries) ties creases as in
-/// ori_target_fold_def: one edge per group is named. Writes up to cap edges to out and returns
-/// the count (≥ 0), or −1 with *error set: ORI_ERR_UNSUPPORTED above ORI_LOCKSET_DENSE_MAX_ENTRIES
-/// Jacobian entries, ORI_ERR_ARGUMENT when no motion exists or the drives cannot move.
+/// A lock set that leaves one degree of freedom per driven crease: the drives are moved a little
+/// from angles_rad (NULL = flat; toward their assignment) with the others solved, and at the state
+/// reached the rank-revealing QR (LAPACK dgeqp3, column pivoting) of the loop-closure Jacobian's
+/// free columns (weighted by their creases' speed) picks a basis of its column space; the other
+/// creases are locked, and the probe is repeated with them until no freedom is left. Each set is
+/// verified by folding the drives 0.3 rad with it; the first that folds every crease as assigned
+/// is returned, else the best that moves. edge_group (NULL or edge_count entries) ties creases as
+/// in ori_target_fold_def (one edge per group is named). Writes up to cap edges (ascending) to
+/// out and returns the count (≥ 0), or −1 with *error set: ORI_ERR_UNSUPPORTED above
+/// ORI_LOCKSET_DENSE_MAX_ENTRIES Jacobian entries, ORI_ERR_ARGUMENT when a drive is not a free
+/// crease or no set lets the drives move.
 ORI_API int ori_mechanism_lock_set(const ori_mechanism *mechanism, const double *angles_rad, const int *drive_edges,
                                    int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
                                    int *out, int cap, ori_error *error);
