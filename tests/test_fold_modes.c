@@ -3,6 +3,7 @@
 // closure (ori_mechanism_residual ≤ 1e-10), the paths for continuity, and end states against the
 // goals or, where the motion stops, against the optimality of the stop.
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -425,4 +426,53 @@ Test(fold_modes, sequence_percent_step, .init = test_leak_setup, .fini = test_le
     ori_sequence_destroy(s);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
+}
+
+// --percent with --symmetric keeps every orbit at one angle on every frame; the motion of a fold
+// that stops early is written up to the stop, its frames titled partial.
+Test(fold_modes, symmetric_targets_and_partial_output, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m);
+    int orbit[16];
+    ori_mechanism_symmetry_orbits(m, orbit);
+    ori_multifold *mf = fold_targets(m, 1.0, orbit);
+    check_reached(p, m, mf, 1.0);
+    for (int f = 0; f < ori_multifold_frame_count(mf); ++f)
+        for (int e = 0; e < E; ++e)
+            cr_assert_float_eq(ori_multifold_frame_angles(mf, f)[e], ori_multifold_frame_angles(mf, f)[orbit[e]], 1e-12);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+
+    char *dir = test_tmpdir();
+    char args[1024], path[900];
+    snprintf(path, sizeof path, "%s/half.fold", dir);
+    snprintf(args, sizeof args, "fold tests/data/waterbomb-base.fold --fix 0 --percent 50 -o '%s'", path);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+    cr_assert_not_null(strstr(out, "verdict: stationary"));
+    free(out);
+    char *text = test_read_text(path);
+    cr_assert_not_null(text);
+    cr_assert_not_null(strstr(text, "(partial: stationary)"));
+    free(text);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    int frames = ori_fold_frame_count(doc);
+    cr_assert_gt(frames, 2);
+    ori_fold_destroy(doc);
+    // The last written frame is a closed state.
+    ori_pattern *last = test_load_pattern(path, frames - 1);
+    ori_pattern *flat = test_load_pattern(path, 0);
+    ori_mechanism *m2 = test_mechanism_of(flat);
+    double a[16];
+    for (int e = 0; e < ori_pattern_edge_count(last); ++e) a[e] = ori_pattern_edge(last, e).fold_angle_rad;
+    cr_assert_leq(ori_mechanism_residual(m2, a), 1e-9);
+    ori_mechanism_destroy(m2);
+    ori_pattern_destroy(flat);
+    ori_pattern_destroy(last);
+    test_tmpdir_remove(dir);
 }
