@@ -492,6 +492,9 @@ static int solve(modes_run *r)
         st = ori_drives_fold_solve(m, &d, &r->mf, &err);
     }
     if (st != ORI_OK) {
+        // A driven or locked crease the fold cannot use is a command-line value: usage error.
+        for (int i = 0; i < a->ndrives && strcmp(err.field, "edges_vertices") == 0; ++i)
+            if (err.element == a->drives[i]) return cli_value_fail("fold", a->path, "--drive", "%s", err.message);
         rc = cli_input_error("fold", a->path, &err);
         return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
     }
