@@ -10,6 +10,8 @@
 #define MODES_LOCK_EXAMPLE 12 // creases named in a lock suggestion
 // Kawasaki misses below this (radians) look like rounded coordinates (as in cmd_fold.c).
 #define MODES_NEAR_KAWASAKI_RAD 1e-3
+// A crease within this of its goal counts as at its goal in the text summary (radians).
+#define MODES_AT_GOAL_RAD 1e-7
 
 typedef struct modes_args {
     const char *path;
@@ -392,7 +394,7 @@ static void print_text(const modes_run *r)
     crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
     int nr = crease_rows(r, rows), at = 0, worst = -1;
     for (int i = 0; i < nr; ++i) {
-        if (fabs(rows[i].reached - rows[i].goal) <= 1e-7) at++;
+        if (fabs(rows[i].reached - rows[i].goal) <= MODES_AT_GOAL_RAD) at++;
         if (worst < 0 || fabs(rows[i].reached - rows[i].goal) > fabs(rows[worst].reached - rows[worst].goal)) worst = i;
     }
     if (nr > 0) {

@@ -402,6 +402,21 @@
 /// Several drives: the freedom left to the solved creases is judged once the drives have moved
 /// by this (the first steps from the flat sheet are too near its singularity to tell). Radians.
 #define ORI_DRIVES_CHECK_RAD 0.0873
+/// Output frames of a target or several-drive fold lie on a grid; a grid value within this
+/// (relative to the spacing) of the end or of the distance travelled merges with it. Unitless.
+#define ORI_MULTIFOLD_GRID_REL 1e-9
+/// Lock sets: the probe moves the drives ORI_LOCKSET_PROBE_RAD (then ORI_LOCKSET_VERIFY_RAD) in
+/// substeps of at most ORI_LOCKSET_SUBSTEP_RAD, shortened down to ORI_LOCKSET_MIN_SUBSTEP_RAD;
+/// a set is verified by folding the drives ORI_LOCKSET_VERIFY_RAD (output every
+/// ORI_LOCKSET_VERIFY_STEP_RAD). Radians.
+#define ORI_LOCKSET_PROBE_RAD 0.1
+#define ORI_LOCKSET_VERIFY_RAD 0.3
+#define ORI_LOCKSET_VERIFY_STEP_RAD 0.1
+#define ORI_LOCKSET_SUBSTEP_RAD 0.02
+#define ORI_LOCKSET_MIN_SUBSTEP_RAD 1e-5
+/// Lock-set columns are weighted by their crease's speed plus this × the fastest (a crease at
+/// rest still counts a little). Unitless.
+#define ORI_LOCKSET_SPEED_FLOOR 1e-3
 /// Rank decisions of the lock set (dgeqp3): |R_kk| ≤ this × |R_11| counts as dependent. Unitless.
 #define ORI_TOL_LOCKSET_RANK_REL 1e-9
 /// Symmetries of the flat sheet map vertices onto vertices within this × the diagonal. Unitless.

@@ -274,7 +274,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
                 }
                 k_out++;
                 t_next = fmin(1.0, k_out * dt_out);
-                if (1.0 - t_next < 1e-9) t_next = 1.0;
+                if (1.0 - t_next < ORI_MULTIFOLD_GRID_REL) t_next = 1.0;
             }
         }
         if (mo->verdict != ORI_MULTIFOLD_REACHED && mo->verdict != ORI_MULTIFOLD_UNDERDETERMINED && mo->nframes > 0) {

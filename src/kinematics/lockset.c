@@ -46,7 +46,7 @@ static int qr_rank(double *a, int rows, int cols, int *jpvt)
 #define LOCKSET_ROUNDS 6
 
 // Move the drives by `total` from th (rate: +1 or −1 per driven joint) in substeps of at most
-// 0.02 rad, the joints without a solved variable held, the others solved (minimum-norm tangent;
+// ORI_LOCKSET_SUBSTEP_RAD, the joints without a solved variable held, the others solved (minimum-norm tangent;
 // on the first substep plus the part of the assignment's direction that first order allows, to
 // leave a singular start on the assigned branch). out receives the state, vel (per variable of
 // sys_var) the minimum-norm tangent there. False when some substep cannot be closed without a
@@ -64,7 +64,7 @@ static bool drive_probe(const ori_mechanism *m, const int *sys_var, int nsys, co
     double *nx = ori__alloc(sizeof(double) * (size_t)(nsys + 1));
     double *cur = ori__alloc(sizeof(double) * (size_t)(J + 1));
     memcpy(cur, th, sizeof(double) * (size_t)J);
-    int steps = (int)ceil(total / 0.02);
+    int steps = (int)ceil(total / ORI_LOCKSET_SUBSTEP_RAD);
     bool ok = true;
     for (int k = 0; k <= steps && ok; ++k) {
         ok = ori__mf_linearize(&s, cur);
@@ -87,7 +87,7 @@ static bool drive_probe(const ori_mechanism *m, const int *sys_var, int nsys, co
         double xmax = 1.0;
         for (int v = 0; v < nsys; ++v) xmax = fmax(xmax, fabs(x[v]));
         bool found = false;
-        for (double h = total / steps; h > 1e-5 && !found; h *= 0.25) {
+        for (double h = total / steps; h > ORI_LOCKSET_MIN_SUBSTEP_RAD && !found; h *= 0.25) {
             for (int j = 0; j < J; ++j) out[j] = cur[j] + h * (sys_var[j] >= 0 ? x[sys_var[j]] : rate[j]);
             int its;
             double res, move = 0.0;
@@ -127,7 +127,7 @@ static int verify(const ori_mechanism *m, const double *angles, const int *drive
         d.start_angles_rad = angles;
         d.driven_edge = drives[0];
         d.to_rad = to[0];
-        d.step_rad = 0.1;
+        d.step_rad = ORI_LOCKSET_VERIFY_STEP_RAD;
         d.locked_edges = locks;
         d.locked_count = nlocks;
         ori_motion *mo = NULL;
@@ -218,7 +218,7 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
     // weighted by the creases' speed or unweighted.
     int best = 0;
     for (int strategy = 0; strategy < 4 && best < 2; ++strategy) {
-        double total = strategy < 2 ? 0.1 : 0.3;
+        double total = strategy < 2 ? ORI_LOCKSET_PROBE_RAD : ORI_LOCKSET_VERIFY_RAD;
         for (int v = 0; v < nvar; ++v) lock[v] = false;
         for (int round = 0; round < LOCKSET_ROUNDS; ++round) {
             int nsys = 0;
@@ -234,7 +234,7 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
             for (int j = 0; j < J; ++j) col_of_joint[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
             ori__mf_dense_jacobian(m, th2, col_of_joint, ncand, a);
             for (int c = 0; c < ncand && strategy % 2 == 0; ++c) {
-                double w = fabs(vel[sys_of_var[var_of_col[c]]]) + 1e-3 * vmax;
+                double w = fabs(vel[sys_of_var[var_of_col[c]]]) + ORI_LOCKSET_SPEED_FLOOR * vmax;
                 for (int r = 0; r < R; ++r) a[(size_t)c * (size_t)R + (size_t)r] *= w;
             }
             int rc = qr_rank(a, R, ncand, jpvt);
@@ -256,7 +256,7 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
             for (int i = 0; i < nc; ++i) all_locks[locked_count + i] = cand[i];
             for (int i = 0; i < drive_count; ++i) {
                 int j = m->edge_joint[drive_edges[i]];
-                to[i] = fmax(-ORI_PI, fmin(ORI_PI, th[j] + 0.3 * rate[j]));
+                to[i] = fmax(-ORI_PI, fmin(ORI_PI, th[j] + ORI_LOCKSET_VERIFY_RAD * rate[j]));
             }
             int score = verify(m, angles, drive_edges, drive_count, to, all_locks, locked_count + nc, edge_group);
             if (score > best) {

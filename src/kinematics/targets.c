@@ -681,7 +681,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 last_res = res;
                 since += moved;
                 recorded = false;
-                if (since >= def->step_rad * (1.0 - 1e-9)) {
+                if (since >= def->step_rad * (1.0 - ORI_MULTIFOLD_GRID_REL)) {
                     ori__mf_record(mo, th, res, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0);
                     since = 0.0;
                     recorded = true;
