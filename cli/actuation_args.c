@@ -216,6 +216,9 @@ int act_run_sequence(const char *cmd, act_input *in, ori_record **out)
     ori_error err;
     *out = NULL;
     ori_sequence_fold first = ori_sequence_fold_at(in->seq, 0);
+    for (int i = 0; i < ori_sequence_fold_count(in->seq); ++i) // folds toward the targets have no driven crease
+        if (ori_sequence_fold_at(in->seq, i).targets)
+            return cli_input_fail(cmd, in->path, "folds %d: a fold toward the targets (\"percent\") has no driven crease to actuate", i);
     if (first.fixed_face < 0 || first.fixed_face >= ori_mechanism_face_count(in->k.mech))
         return cli_input_fail(cmd, in->path, "folds 0: fix: face %d does not exist (%d faces)", first.fixed_face,
                               ori_mechanism_face_count(in->k.mech));

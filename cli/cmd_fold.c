@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "collide_args.h"
+#include "fold_modes.h"
 #include "kin_args.h"
 #include "output_guard.h"
 #include "progress.h"
@@ -67,7 +68,8 @@ static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, si
     return buf;
 }
 
-static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
+static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col,
+                       const char *lock_hint)
 {
     const ori_mechanism *m = k->mech;
     int E = ori_mechanism_edge_count(m);
@@ -84,6 +86,7 @@ static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motio
     json_object_set_new(out, "collision", cli_collision_json(col, false));
     char hint[512];
     const char *h = rounding_hint(k, mo, hint, sizeof hint);
+    if (!h && lock_hint && lock_hint[0]) h = lock_hint; // underdetermined: a lock set (fold_modes.c)
     json_object_set_new(out, "hint", h ? json_string(h) : json_null());
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
     json_object_set_new(out, "dof", cli_motion_dof_json(mo));
@@ -274,6 +277,7 @@ static int guard_output(const cli_fold_args *a, const cli_kin *k, const ori_moti
 
 static int run(int argc, char **argv)
 {
+    if (cli_fold_modes_wanted(argc, argv)) return cli_fold_modes_run(argc, argv);
     cli_collide_opts co;
     int rc = cli_collide_strip("fold", &argc, argv, &co);
     if (rc != CLI_EXIT_OK) return rc;
@@ -312,8 +316,13 @@ static int run(int argc, char **argv)
         cli_kin_free(&k);
         return rc;
     }
-    if (a.json) print_json(&a, &k, mo, &col);
+    // An underdetermined fold names a lock set that leaves one degree of freedom (fold_modes.c).
+    char locks_hint[1024] = "";
+    if (ori_motion_verdict_of(mo) == ORI_MOTION_UNDERDETERMINED)
+        cli_fold_modes_suggest(&k, &def, locks_hint, sizeof locks_hint, NULL);
+    if (a.json) print_json(&a, &k, mo, &col, locks_hint);
     else print_text(&a, &k, mo, &col);
+    if (!a.json && locks_hint[0]) printf("hint: %s\n", locks_hint);
     bool valid = ori_motion_verdict_of(mo) == ORI_MOTION_VALID;
     rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
     // A blocked fold writes its motion up to the stop, marked "orikin:partial".
@@ -379,6 +388,8 @@ const cli_command cli_cmd_fold = {
     "                  fold is valid; when it is blocked, up to the stop, and when it collides,\n"
     "                  up to the last clean step, both marked by a top-level \"orikin:partial\"\n"
     "                  {verdict, reason, to_deg, reached_deg, frames, blocked}\n"
+    "\n"
+    CLI_FOLD_MODES_HELP
     "\n"
     "example: orikin fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90\n",
     run,

@@ -57,7 +57,8 @@ static json_t *fold_json(const ori_sequence_fold *f, int i)
     json_object_set_new(o, "fold", json_integer(i + 1));
     json_object_set_new(o, "name", f->name[0] ? json_string(f->name) : json_null());
     json_object_set_new(o, "fix", json_integer(f->fixed_face));
-    json_object_set_new(o, "drive", json_integer(f->driven_edge));
+    json_object_set_new(o, "drive", f->targets ? json_null() : json_integer(f->driven_edge));
+    if (f->targets) json_object_set_new(o, "percent", json_real(100.0 * f->fraction)); // folds toward the targets only
     json_t *lock = json_array();
     for (int k = 0; k < f->locked_count; ++k) json_array_append_new(lock, json_integer(f->locked[k]));
     json_object_set_new(o, "lock", lock);
@@ -96,7 +97,8 @@ static void print_record_json(const seq_args *a, const char *pattern, const ori_
         json_t *fr = json_object();
         json_object_set_new(fr, "t", json_real(ori_record_frame_time(r, f)));
         json_object_set_new(fr, "fold", json_integer(ori_record_frame_fold(r, f) + 1));
-        json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_record_frame_drive(r, f))));
+        bool tg = ori_sequence_fold_at(s, ori_record_frame_fold(r, f)).targets; // progress, not an angle
+        json_object_set_new(fr, "drive_deg", tg ? json_null() : json_real(ori_rad_to_deg_output(ori_record_frame_drive(r, f))));
         json_object_set_new(fr, "fold_angles_deg", angles_json(ori_record_frame_angles(r, f), E));
         json_object_set_new(fr, "residual", json_real(ori_record_frame_residual(r, f)));
         json_array_append_new(frames, fr);
@@ -114,6 +116,11 @@ static void print_record_text(const char *pattern, const ori_sequence *s, const 
     printf("%s: %d folds\n", pattern, ori_sequence_fold_count(s));
     for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
         ori_sequence_fold f = ori_sequence_fold_at(s, i);
+        if (f.targets) // a fold toward the targets (fold_modes)
+            printf("  fold %d%s%s%s: fix face %d, every crease %g %% toward its target (step %g)", i + 1,
+                   f.name[0] ? " (" : "", f.name, f.name[0] ? ")" : "", f.fixed_face, 100.0 * f.fraction,
+                   ori_rad_to_deg_output(f.step_rad));
+        else
         printf("  fold %d%s%s%s: fix face %d, drive crease %d to %g deg (step %g)", i + 1, f.name[0] ? " (" : "", f.name,
                f.name[0] ? ")" : "", f.fixed_face, f.driven_edge, ori_rad_to_deg_output(f.to_rad), ori_rad_to_deg_output(f.step_rad));
         if (f.locked_count) {
@@ -144,7 +151,7 @@ static void print_record_text(const char *pattern, const ori_sequence *s, const 
                ori_record_reason(r) ? ori_record_reason(r) : "");
 }
 
-static int print_at(const seq_args *a, const cli_kin *k, const ori_record *r)
+static int print_at(const seq_args *a, const cli_kin *k, const ori_sequence *s, const ori_record *r)
 {
     int E = ori_mechanism_edge_count(k->mech), V = ori_mechanism_vertex_count(k->mech);
     double *ang = malloc(sizeof(double) * (size_t)(E + 1));
@@ -164,7 +171,8 @@ static int print_at(const seq_args *a, const cli_kin *k, const ori_record *r)
         json_t *o = json_object();
         json_object_set_new(o, "t", json_real(a->at));
         json_object_set_new(o, "fold", json_integer(fold + 1));
-        json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(drive)));
+        bool tg = ori_sequence_fold_at(s, fold).targets; // progress, not an angle
+        json_object_set_new(o, "drive_deg", tg ? json_null() : json_real(ori_rad_to_deg_output(drive)));
         json_object_set_new(o, "fold_angles_deg", angles_json(ang, E));
         json_object_set_new(o, "residual", json_real(residual));
         json_t *coords = json_array();
@@ -172,6 +180,10 @@ static int print_at(const seq_args *a, const cli_kin *k, const ori_record *r)
         json_object_set_new(o, "vertices_coords", coords);
         cli_print_json(o);
     } else {
+        if (ori_sequence_fold_at(s, fold).targets)
+            printf("t = %g: fold %d, %.6g %% of the way to the targets, residual %.1e\n", a->at, fold + 1, 100.0 * drive,
+                   residual);
+        else
         printf("t = %g: fold %d, drive %.6f deg, residual %.1e\n", a->at, fold + 1, ori_rad_to_deg_output(drive), residual);
         for (int e = 0; e < E; ++e) {
             ori_edge ed = ori_pattern_edge(k->flat, e);
@@ -199,6 +211,10 @@ static int write_record(const seq_args *a, const cli_kin *k, const ori_sequence 
     int E = ori_mechanism_edge_count(k->mech), V = ori_mechanism_vertex_count(k->mech);
     for (int f = 0; f < cli_collide_frames(col, ori_record_frame_count(r)); ++f) {
         char title[128];
+        if (ori_sequence_fold_at(s, ori_record_frame_fold(r, f)).targets)
+            snprintf(title, sizeof title, "t = %.4g: fold %d, %.6g %% of the way to the targets", ori_record_frame_time(r, f),
+                     ori_record_frame_fold(r, f) + 1, 100.0 * ori_record_frame_drive(r, f));
+        else
         snprintf(title, sizeof title, "t = %.4g: fold %d, crease %d at %g deg", ori_record_frame_time(r, f),
                  ori_record_frame_fold(r, f) + 1, ori_sequence_fold_at(s, ori_record_frame_fold(r, f)).driven_edge,
                  ori_rad_to_deg_output(ori_record_frame_drive(r, f)));
@@ -285,7 +301,7 @@ static int run(int argc, char **argv)
         if (a.has_at) {
             // an instant before the first contact is still a clean state of the sequence
             bool clean = !cli_collides(&col) || a.at < col.ev.time;
-            rc = valid && clean ? print_at(&a, &k, r) : CLI_EXIT_NEGATIVE;
+            rc = valid && clean ? print_at(&a, &k, s, r) : CLI_EXIT_NEGATIVE;
             char hit[256];
             cli_collision_describe(&col, true, hit, sizeof hit);
             if (!valid)

@@ -18,7 +18,10 @@
 /// ori_motion_frame_vertices, ori_motion_frame_other_branch, ori_motion_frame_end_effector, ori_motion_fixed_face,
 /// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats_of, ori_motion_block_of, ori_motion_dof,
 /// ori_default_fit_def, ori_fit_solve, ori_fit_destroy, ori_fit_crease_count,
-/// ori_fit_crease_of, ori_fit_sample_count, ori_fit_coefficients, ori_fit_eval.
+/// ori_fit_crease_of, ori_fit_sample_count, ori_fit_coefficients, ori_fit_eval,
+/// ori_default_target_fold_def, ori_target_angles_default, ori_target_fold_solve,
+/// ori_default_drives_fold_def, ori_drives_fold_solve, ori_multifold_* (result getters),
+/// ori_mechanism_lock_set, ori_mechanism_symmetries, ori_mechanism_symmetry_orbits.
 ///
 /// Frames and signs. The reference configuration is the flat sheet in z = 0 with faces
 /// counter-clockwise seen from +z. Joint angles are FOLD fold angles in radians (positive =
@@ -421,6 +424,148 @@ ORI_API int ori_fit_sample_count(const ori_fit *fit);
 ORI_API int ori_fit_coefficients(const ori_fit *fit, int index, double *out, int cap);
 /// Evaluate the fitted angle (radians) of crease index at driven angle drive_rad.
 ORI_API double ori_fit_eval(const ori_fit *fit, int index, double drive_rad);
+
+// --- folding patterns with several degrees of freedom (targets, drives, lock sets, symmetry) --
+
+/// How a fold toward targets or with several drives ended.
+typedef enum ori_multifold_verdict {
+    ORI_MULTIFOLD_REACHED = 0,      ///< every crease reached its goal (targets) / the drives reached theirs
+    ORI_MULTIFOLD_STATIONARY,       ///< targets: the rigid motion gets no nearer to the goals (what remains is normal to every motion)
+    ORI_MULTIFOLD_LIMIT,            ///< a crease reached ±180° and the motion would take it beyond (stop_edge)
+    ORI_MULTIFOLD_SINGULAR,         ///< the corrector fails at every step size: a singular configuration (or no motion at all)
+    ORI_MULTIFOLD_UNDERDETERMINED,  ///< drives: the free creases keep freedom the drives do not fix (lock or drive more)
+    ORI_MULTIFOLD_OVERDETERMINED,   ///< drives: the drives cannot move together as prescribed (no rigid motion does it)
+} ori_multifold_verdict;
+
+/// Opaque result of ori_target_fold_solve or ori_drives_fold_solve: frames of fold angles on the
+/// loop-closure manifold (residual ≤ ORI_TOL_RESIDUAL each), verdict, reason, stop crease.
+typedef struct ori_multifold ori_multifold;
+
+/// A fold toward target angles (Origami Simulator's "fold percent", rigid and exact): every
+/// unlocked crease is driven from its start angle θ0 toward the goal θ0 + fraction·(target − θ0)
+/// by projecting the remaining change onto the null space of the loop-closure Jacobian
+/// (Δθ = (I − J⁺J) Δθ_goal, Tachi 2009) and correcting back onto the manifold by Newton.
+/// Get it from ori_default_target_fold_def().
+typedef struct ori_target_fold_def {
+    int fixed_face;                  ///< face held in place (FOLD index)
+    ori_rigid fixed_pose;            ///< world pose of the fixed face
+    const double *start_angles_rad;  ///< start state, edge_count angles (NULL = flat); copied
+    const double *target_angles_rad; ///< targets at 100 %, edge_count angles (NULL: ori_target_angles_default of the mechanism's pattern); copied
+    double fraction;                 ///< how far toward the targets, 0 … 1 (percent / 100)
+    double step_rad;                 ///< output spacing: largest crease change between frames (> 0)
+    const int *locked_edges;         ///< creases held at their start angle, may be NULL
+    int locked_count;
+    const int *edge_group;           ///< NULL, or edge_count entries: creases with the same group ≥ 0 are kept at equal angles (e.g. symmetry orbits)
+    int internal_value;              ///< set by ori_default_target_fold_def; do not change
+} ori_target_fold_def;
+
+/// Defaults: face 0 fixed at identity, flat start, file targets, fraction 1, step 10°.
+ORI_API ori_target_fold_def ori_default_target_fold_def(void);
+
+/// Target angles of a flat crease pattern (edge_count entries, radians): the pattern's fold angle
+/// (FOLD edges_foldAngle, SVG opacity) where it is not 0, else +π for a valley, −π for a
+/// mountain and 0 for other edges. Returns how many creases had a target of their own.
+ORI_API int ori_target_angles_default(const ori_pattern *pattern, double *out);
+
+/// Fold toward the targets until the goal is reached, the motion reaches a crease limit (±π) or a
+/// singularity, or it gets no nearer (the verdict says which; the frames go up to the stop).
+/// Fails (*out NULL) with ORI_ERR_RANGE for a bad face, crease, fraction, step or angle, and
+/// ORI_ERR_ARGUMENT when the start state does not close. Destroy with ori_multifold_destroy.
+ORI_API ori_status ori_target_fold_solve(const ori_mechanism *mechanism, const ori_target_fold_def *def,
+                                         ori_multifold **out, ori_error *error);
+
+/// Several creases driven together: crease driven_edges[i] moves linearly from its start angle
+/// to to_rad[i] (all reach their targets at the same time); the other unlocked creases are
+/// solved. Get it from ori_default_drives_fold_def().
+typedef struct ori_drives_fold_def {
+    int fixed_face;                 ///< face held in place
+    ori_rigid fixed_pose;           ///< world pose of the fixed face
+    const double *start_angles_rad; ///< start state (NULL = flat); copied
+    const int *driven_edges;        ///< the driven creases
+    const double *to_rad;           ///< their final angles, |to| ≤ π
+    int driven_count;
+    double step_rad;                ///< output spacing: largest drive change between frames (> 0)
+    const int *locked_edges;        ///< creases held at their start angle, may be NULL
+    int locked_count;
+    const int *edge_group;          ///< as in ori_target_fold_def (a driven crease drives its group)
+    int internal_value;             ///< set by ori_default_drives_fold_def; do not change
+} ori_drives_fold_def;
+
+/// Defaults: face 0 fixed, flat start, no drives, step 10°.
+ORI_API ori_drives_fold_def ori_default_drives_fold_def(void);
+
+/// Move the drives together (predictor along the minimum-norm tangent, Newton corrector on the
+/// free creases). Verdicts: REACHED, UNDERDETERMINED (free creases left with freedom at the
+/// first regular state; no frames), OVERDETERMINED (the drives cannot move together), LIMIT,
+/// SINGULAR. Fails like ori_target_fold_solve, and with ORI_ERR_ARGUMENT for a driven crease
+/// that is locked, driven twice or not a crease.
+ORI_API ori_status ori_drives_fold_solve(const ori_mechanism *mechanism, const ori_drives_fold_def *def,
+                                         ori_multifold **out, ori_error *error);
+
+/// Destroy a result; NULL is a no-op.
+ORI_API void ori_multifold_destroy(ori_multifold *fold);
+/// The verdict.
+ORI_API ori_multifold_verdict ori_multifold_verdict_of(const ori_multifold *fold);
+/// Short name of a verdict ("reached", "stationary", "limit", "singular", "underdetermined", "overdetermined").
+ORI_API const char *ori_multifold_verdict_name(ori_multifold_verdict verdict);
+/// One-sentence explanation of the verdict (owned by the result).
+ORI_API const char *ori_multifold_reason(const ori_multifold *fold);
+/// The crease that stopped the motion (LIMIT), or ORI_NULL_INDEX.
+ORI_API int ori_multifold_stop_edge(const ori_multifold *fold);
+/// Additional freedom when UNDERDETERMINED (0 otherwise).
+ORI_API int ori_multifold_extra_dof(const ori_multifold *fold);
+/// Number of frames (the start state first; 0 when UNDERDETERMINED or OVERDETERMINED at the start).
+ORI_API int ori_multifold_frame_count(const ori_multifold *fold);
+/// Fold angles of frame k (edge_count entries, radians; owned by the result).
+ORI_API const double *ori_multifold_frame_angles(const ori_multifold *fold, int k);
+/// Loop-closure residual of frame k (max-norm of P − I, ≤ ORI_TOL_RESIDUAL).
+ORI_API double ori_multifold_frame_residual(const ori_multifold *fold, int k);
+/// Progress of frame k, 0 at the start and 1 at the goal: for targets 1 − |θ − θ_goal| / |θ0 − θ_goal|
+/// (2-norm over the moving creases), for drives the common drive parameter.
+ORI_API double ori_multifold_frame_progress(const ori_multifold *fold, int k);
+/// World vertex positions of frame k (vertex_count entries).
+ORI_API void ori_multifold_frame_vertices(const ori_multifold *fold, int k, ori_v3 *positions);
+/// The goal angles (edge_count entries, radians; owned): targets scaled by the fraction, or the
+/// drives' final angles (other creases: their start angle).
+ORI_API const double *ori_multifold_goal(const ori_multifold *fold);
+/// Creases a target fold held at ±180° (their own target) when they reached it first.
+ORI_API int ori_multifold_held_count(const ori_multifold *fold);
+/// Corrector iterations and accepted / rejected steps over the whole fold.
+ORI_API void ori_multifold_stats(const ori_multifold *fold, int *steps, int *rejected, int *newton_iterations);
+
+/// A lock set that leaves one degree of freedom per driven crease: the drives are moved a little
+/// from angles_rad (NULL = flat; toward their assignment) with the others solved, and at the state
+/// reached the rank-revealing QR (LAPACK dgeqp3, column pivoting) of the loop-closure Jacobian's
+/// free columns (weighted by their creases' speed) picks a basis of its column space; the other
+/// creases are locked, and the probe is repeated with them until no freedom is left. Each set is
+/// verified by folding the drives 0.3 rad with it; the first that folds every crease as assigned
+/// is returned, else the best that moves. edge_group (NULL or edge_count entries) ties creases as
+/// in ori_target_fold_def (one edge per group is named). Writes up to cap edges (ascending) to
+/// out and returns the count (≥ 0), or −1 with *error set: ORI_ERR_UNSUPPORTED above
+/// ORI_LOCKSET_DENSE_MAX_ENTRIES Jacobian entries, ORI_ERR_ARGUMENT when a drive is not a free
+/// crease or no set lets the drives move.
+ORI_API int ori_mechanism_lock_set(const ori_mechanism *mechanism, const double *angles_rad, const int *drive_edges,
+                                   int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
+                                   int *out, int cap, ori_error *error);
+
+/// The dense rank-revealing QR of ori_mechanism_lock_set is used up to this many Jacobian entries.
+#define ORI_LOCKSET_DENSE_MAX_ENTRIES 4000000
+
+/// A symmetry of the flat sheet: x ↦ R x + t in the plane (R a rotation or a reflection).
+typedef struct ori_symmetry {
+    double r[2][2];  ///< orthogonal 2 × 2 matrix
+    double t[2];     ///< translation
+    bool reflection; ///< det R = −1
+} ori_symmetry;
+
+/// The symmetry group of the flat pattern: the reflections and rotations of the plane (identity
+/// included) that map vertices onto vertices and edges onto edges of the same assignment, within
+/// ORI_TOL_SYMMETRY_REL × the pattern diagonal. Writes up to cap of them; returns the group order.
+ORI_API int ori_mechanism_symmetries(const ori_mechanism *mechanism, ori_symmetry *out, int cap);
+
+/// Orbits of the edges under the symmetry group: orbit[e] = the smallest edge index the group
+/// maps e to (edge_count entries). Returns the number of orbits that hold a revolute crease.
+ORI_API int ori_mechanism_symmetry_orbits(const ori_mechanism *mechanism, int *orbit);
 
 #ifdef __cplusplus
 }

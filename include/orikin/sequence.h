@@ -38,6 +38,8 @@ typedef struct ori_sequence_fold {
     double step_rad;                   ///< output spacing (> 0)
     int locked_count;
     int locked[ORI_SEQUENCE_MAX_LOCKS]; ///< creases held at their current angle
+    bool targets;                      ///< a fold toward the targets ("percent"; ori_target_fold_solve): driven_edge is ORI_NULL_INDEX, from/to unused
+    double fraction;                   ///< targets: how far toward them, 0 … 1
 } ori_sequence_fold;
 
 /// Opaque fold sequence (as read from a SEQ.json file).
@@ -45,7 +47,9 @@ typedef struct ori_sequence ori_sequence;
 
 /// Parse a sequence: {"pattern": "FILE.fold", "frame": N (optional), "folds": [{"fix": F,
 /// "drive": E, "to": DEG, "step": DEG (default 10), "from": DEG (optional), "lock": [E…]
-/// (optional), "name": "…" (optional)}, …]}. Angles in degrees in [−180, 180]. Errors carry
+/// (optional), "name": "…" (optional)}, …]}; a fold {"fix": F, "percent": P, "step", "lock",
+/// "name"} folds every crease toward its target instead (docs/kinematics.md §16; its record
+/// "drive" is the progress 0 … 1). Angles in degrees in [−180, 180]. Errors carry
 /// the JSON line/column (syntax) or field "folds" and the fold index. Destroy with
 /// ori_sequence_destroy.
 ORI_API ori_status ori_sequence_parse(const char *json, size_t size, ori_sequence **out, ori_error *error);

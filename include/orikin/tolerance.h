@@ -375,4 +375,51 @@
 /// columns within this (files may hold them rounded to 6 or more digits). Unitless.
 #define ORI_TOL_LAYERS_TRANSFORM 1e-6
 
+// --- folding with several degrees of freedom (src/kinematics/targets.c, drives.c, lockset.c, symmetry.c)
+
+/// A fold toward targets has reached its goal when every moving crease is within this of it;
+/// it is stationary when the projected change (what the rigid motion can still do toward the
+/// goal) is below this. Radians.
+#define ORI_TOL_TARGET_RAD 1e-9
+/// Largest change of any crease in one continuation step of a target or several-drive fold;
+/// steps shrink by halves to ORI_MULTIFOLD_MIN_STEP_RAD before the fold is declared stopped. Radians.
+#define ORI_MULTIFOLD_MAX_STEP_RAD 0.035
+#define ORI_MULTIFOLD_MIN_STEP_RAD 1e-9
+/// Tikhonov term λ of the minimum-norm solves with J Jᵀ + λI (CHOLMOD): rows the state makes
+/// zero (the flat sheet's out-of-plane rows) or dependent get no weight. Unitless (J has unit-axis columns).
+#define ORI_MULTIFOLD_LAMBDA 1e-12
+/// A crease within this of ±180° when the motion stops at that limit, and whose target is ±180°,
+/// is held at ±180° exactly while the other creases go on toward theirs. Radians.
+#define ORI_MULTIFOLD_PIN_RAD 1e-6
+/// A target fold gives up after this many continuation steps (the verdict is then stationary).
+#define ORI_MULTIFOLD_MAX_STEPS 200000
+/// A corrector step that moves the prediction by more than this × the step (plus 1e-9 rad) is
+/// rejected as a jump to another branch. Unitless.
+#define ORI_MULTIFOLD_MAX_CORRECTION 2.0
+/// Several drives: the minimum-norm tangent must satisfy J t = −J_drive ṙ to this relative
+/// defect, else the drives cannot move together (overdetermined). Unitless.
+#define ORI_TOL_DRIVES_DEFECT 1e-6
+/// Several drives: the freedom left to the solved creases is judged once the drives have moved
+/// by this (the first steps from the flat sheet are too near its singularity to tell). Radians.
+#define ORI_DRIVES_CHECK_RAD 0.0873
+/// Output frames of a target or several-drive fold lie on a grid; a grid value within this
+/// (relative to the spacing) of the end or of the distance travelled merges with it. Unitless.
+#define ORI_MULTIFOLD_GRID_REL 1e-9
+/// Lock sets: the probe moves the drives ORI_LOCKSET_PROBE_RAD (then ORI_LOCKSET_VERIFY_RAD) in
+/// substeps of at most ORI_LOCKSET_SUBSTEP_RAD, shortened down to ORI_LOCKSET_MIN_SUBSTEP_RAD;
+/// a set is verified by folding the drives ORI_LOCKSET_VERIFY_RAD (output every
+/// ORI_LOCKSET_VERIFY_STEP_RAD). Radians.
+#define ORI_LOCKSET_PROBE_RAD 0.1
+#define ORI_LOCKSET_VERIFY_RAD 0.3
+#define ORI_LOCKSET_VERIFY_STEP_RAD 0.1
+#define ORI_LOCKSET_SUBSTEP_RAD 0.02
+#define ORI_LOCKSET_MIN_SUBSTEP_RAD 1e-5
+/// Lock-set columns are weighted by their crease's speed plus this × the fastest (a crease at
+/// rest still counts a little). Unitless.
+#define ORI_LOCKSET_SPEED_FLOOR 1e-3
+/// Rank decisions of the lock set (dgeqp3): |R_kk| ≤ this × |R_11| counts as dependent. Unitless.
+#define ORI_TOL_LOCKSET_RANK_REL 1e-9
+/// Symmetries of the flat sheet map vertices onto vertices within this × the diagonal. Unitless.
+#define ORI_TOL_SYMMETRY_REL 1e-8
+
 #endif

@@ -4,6 +4,7 @@
 #include <orikin/sequence.h>
 
 #include "../core/json_internal.h"
+#include "../kinematics/multifold_internal.h" // ori__mf_close: restoring a fold toward the targets
 
 struct ori_sequence {
     char *pattern;
@@ -37,7 +38,7 @@ struct ori_record {
 
 // --- parsing -----------------------------------------------------------------------------
 
-static const char *const fold_keys[] = {"fix", "drive", "to", "from", "step", "lock", "name"};
+static const char *const fold_keys[] = {"fix", "drive", "to", "from", "step", "lock", "name", "percent"};
 static const char *const top_keys[] = {"pattern", "frame", "folds", "title", "description"};
 
 static bool known_key(const char *key, const char *const *keys, size_t n)
@@ -86,15 +87,26 @@ static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, ori_error
     json_object_foreach(obj, key, val)
     {
         if (!known_key(key, fold_keys, sizeof fold_keys / sizeof fold_keys[0]))
-            return fold_fail(error, i, "unknown field \"%s\" (fix, drive, to, from, step, lock, name)", key);
+            return fold_fail(error, i, "unknown field \"%s\" (fix, drive, to, from, step, lock, name, percent)", key);
     }
     ori_status st;
     if ((st = read_index_field(obj, "fix", i, true, &f->fixed_face, error)) != ORI_OK) return st;
-    if ((st = read_index_field(obj, "drive", i, true, &f->driven_edge, error)) != ORI_OK) return st;
     bool has_to, has_step;
-    if ((st = read_angle_field(obj, "to", i, &has_to, &f->to_rad, error)) != ORI_OK) return st;
-    if (!has_to) return fold_fail(error, i, "missing \"%s\"", "to");
-    if ((st = read_angle_field(obj, "from", i, &f->has_from, &f->from_rad, error)) != ORI_OK) return st;
+    json_t *percent = json_object_get(obj, "percent"); // a fold toward the targets (targets.c)
+    if (percent) {
+        if (!json_is_number(percent) || !(json_number_value(percent) >= 0.0 && json_number_value(percent) <= 100.0))
+            return ori__fail_at(error, ORI_ERR_RANGE, "folds", i, "\"percent\" must be a number from 0 to 100");
+        if (json_object_get(obj, "drive") || json_object_get(obj, "to") || json_object_get(obj, "from"))
+            return fold_fail(error, i, "%s", "\"percent\" folds every crease toward its target: no drive, to or from");
+        f->targets = true;
+        f->fraction = json_number_value(percent) / 100.0;
+        f->driven_edge = ORI_NULL_INDEX;
+    } else {
+        if ((st = read_index_field(obj, "drive", i, true, &f->driven_edge, error)) != ORI_OK) return st;
+        if ((st = read_angle_field(obj, "to", i, &has_to, &f->to_rad, error)) != ORI_OK) return st;
+        if (!has_to) return fold_fail(error, i, "missing \"%s\"", "to");
+        if ((st = read_angle_field(obj, "from", i, &f->has_from, &f->from_rad, error)) != ORI_OK) return st;
+    }
     json_t *step = json_object_get(obj, "step");
     has_step = step != NULL;
     f->step_rad = ori_deg_to_rad(10.0);
@@ -225,9 +237,13 @@ char *ori_sequence_to_json(const ori_sequence *s)
         json_t *o = json_object();
         if (f->name[0]) json_object_set_new(o, "name", json_string(f->name));
         json_object_set_new(o, "fix", json_integer(f->fixed_face));
-        json_object_set_new(o, "drive", json_integer(f->driven_edge));
-        if (f->has_from) json_object_set_new(o, "from", degrees(f->from_rad));
-        json_object_set_new(o, "to", degrees(f->to_rad));
+        if (f->targets) {
+            json_object_set_new(o, "percent", json_real(100.0 * f->fraction));
+        } else {
+            json_object_set_new(o, "drive", json_integer(f->driven_edge));
+            if (f->has_from) json_object_set_new(o, "from", degrees(f->from_rad));
+            json_object_set_new(o, "to", degrees(f->to_rad));
+        }
         json_object_set_new(o, "step", degrees(f->step_rad));
         json_t *lock = json_array();
         for (int k = 0; k < f->locked_count; ++k) json_array_append_new(lock, json_integer(f->locked[k]));
@@ -293,6 +309,53 @@ static double fold_time(int fold, double from, double to, double x)
     return (double)fold + s;
 }
 
+// A fold toward the targets: its frames recorded with the progress (0 … 1) as the "drive";
+// angles and poses updated to its end. Not reaching the goal fails the sequence (blocked).
+static ori_status ori__sequence_target_fold(ori_record *r, int i, const ori_sequence_fold *f, double *angles,
+                                            ori_rigid pose, ori_rigid *poses, ori_v3 *pos, ori_error *error)
+{
+    ori_target_fold_def td = ori_default_target_fold_def();
+    td.fixed_face = f->fixed_face;
+    td.fixed_pose = pose;
+    td.start_angles_rad = angles;
+    td.fraction = f->fraction;
+    td.step_rad = f->step_rad;
+    td.locked_edges = f->locked;
+    td.locked_count = f->locked_count;
+    ori_multifold *mf = NULL;
+    ori_error e;
+    ori_status st = ori_target_fold_solve(r->mechanism, &td, &mf, &e);
+    if (st != ORI_OK) {
+        char msg[256];
+        ori_error_format(&e, msg, sizeof msg);
+        return ori__fail_at(error, st, "folds", i, "%s", msg);
+    }
+    if (ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED) {
+        r->verdict = ORI_MOTION_BLOCKED;
+        r->failed = i;
+        r->reason = ori__strdup(ori_multifold_reason(mf));
+        ori_multifold_destroy(mf);
+        return ORI_OK;
+    }
+    int nf = ori_multifold_frame_count(mf);
+    record_fold *rf = &r->run[i];
+    rf->fixed_pose = pose;
+    rf->from_rad = 0.0;
+    rf->to_rad = 1.0;
+    rf->first_frame = r->frame_count;
+    for (int k = i > 0 ? 1 : 0; k < nf; ++k) {
+        double pr = ori_multifold_frame_progress(mf, k);
+        ori_multifold_frame_vertices(mf, k, pos);
+        record_state(r, fold_time(i, 0.0, 1.0, pr), i, pr, ori_multifold_frame_angles(mf, k), pos,
+                     ori_multifold_frame_residual(mf, k));
+    }
+    if (i > 0) rf->first_frame -= 1;
+    memcpy(angles, ori_multifold_frame_angles(mf, nf - 1), sizeof(double) * (size_t)r->edge_count);
+    ori_mechanism_face_poses(r->mechanism, angles, f->fixed_face, pose, poses);
+    ori_multifold_destroy(mf);
+    return ORI_OK;
+}
+
 ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const double *start,
                             ori_rigid fixed_pose, ori_record **out, ori_error *error)
 {
@@ -327,6 +390,12 @@ ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const
                 break;
             }
             pose = poses[f->fixed_face];
+        }
+        if (f->targets) { // a fold toward the targets (src/kinematics/targets.c)
+            if ((st = ori__sequence_target_fold(r, i, f, angles, pose, poses, pos, error)) != ORI_OK) break;
+            if (r->failed != ORI_NULL_INDEX) break;
+            r->completed = i + 1;
+            continue;
         }
         ori_motion_def d = fold_def(f, angles, pose);
         ori_motion *mo = NULL;
@@ -448,6 +517,31 @@ const ori_v3 *ori_record_frame_vertices(const ori_record *r, int i)
     return r->positions + (size_t)i * (size_t)r->vertex_count;
 }
 
+// A fold toward the targets at time t: the recorded states around t interpolated linearly in
+// time, then closed exactly onto the loop-closure manifold (minimum-norm Newton, targets.c).
+static ori_status record_at_targets(const ori_record *r, int j, int base, double t, double *angles, ori_v3 *positions,
+                                    double *drive_out, int *fold_out, double *residual_out, ori_error *error)
+{
+    int next = base + 1 < r->frame_count && r->frame_folds[base + 1] == j ? base + 1 : base;
+    double t0 = r->times[base], t1 = r->times[next];
+    double w = t1 > t0 ? (t - t0) / (t1 - t0) : 0.0;
+    const double *a0 = ori_record_frame_angles(r, base), *a1 = ori_record_frame_angles(r, next);
+    double *mix = ori__alloc(sizeof(double) * (size_t)(r->edge_count + 1));
+    for (int e = 0; e < r->edge_count; ++e) mix[e] = a0[e] + w * (a1[e] - a0[e]);
+    ori_status st = ori__mf_close(r->mechanism, r->folds[j].locked, r->folds[j].locked_count, mix, error);
+    if (st == ORI_OK) {
+        memcpy(angles, mix, sizeof(double) * (size_t)r->edge_count);
+        if (positions)
+            ori_mechanism_vertex_positions(r->mechanism, angles, r->folds[j].fixed_face, r->run[j].fixed_pose, positions);
+    }
+    ori__free(mix);
+    if (st != ORI_OK) return st;
+    if (drive_out) *drive_out = r->drives[base] + w * (r->drives[next] - r->drives[base]);
+    if (fold_out) *fold_out = j;
+    if (residual_out) *residual_out = ori_mechanism_residual(r->mechanism, angles);
+    return ORI_OK;
+}
+
 ori_status ori_record_at(const ori_record *r, double t, double *angles, ori_v3 *positions, double *drive_out,
                          int *fold_out, double *residual_out, ori_error *error)
 {
@@ -468,6 +562,7 @@ ori_status ori_record_at(const ori_record *r, double t, double *angles, ori_v3 *
     for (int k = base; k <= last && k < r->frame_count; ++k)
         if (r->times[k] <= t && (r->frame_folds[k] == j || k == rf->first_frame)) base = k;
     const double *start = ori_record_frame_angles(r, base);
+    if (r->folds[j].targets) return record_at_targets(r, j, base, t, angles, positions, drive_out, fold_out, residual_out, error);
     double start_drive = start[r->folds[j].driven_edge];
     if (drive_out) *drive_out = target;
     if (fold_out) *fold_out = j;

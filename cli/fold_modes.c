@@ -1,0 +1,598 @@
+// orikin fold for patterns with several degrees of freedom: toward the targets (--percent),
+// several drives, an automatic lock set and symmetry. See fold_modes.h.
+#include "fold_modes.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MODES_MAX_LIST 256
+#define MODES_LOCK_EXAMPLE 12 // creases named in a lock suggestion
+// Kawasaki misses below this (radians) look like rounded coordinates (as in cmd_fold.c).
+#define MODES_NEAR_KAWASAKI_RAD 1e-3
+// A crease within this of its goal counts as at its goal in the text summary (radians).
+#define MODES_AT_GOAL_RAD 1e-7
+
+typedef struct modes_args {
+    const char *path;
+    const char *fix_spec;
+    int fix;
+    bool has_percent;
+    double percent;
+    int drives[MODES_MAX_LIST], ndrives;
+    double to[MODES_MAX_LIST];
+    int nto;
+    double ratio[MODES_MAX_LIST];
+    int nratio;
+    int locks[MODES_MAX_LIST], nlocks;
+    bool lock_auto, symmetric, json;
+    double step_deg;
+    int frame;
+    const char *out;
+} modes_args;
+
+bool cli_fold_modes_wanted(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const char *o = argv[i];
+        if (strcmp(o, "--percent") == 0 || strcmp(o, "--symmetric") == 0 || strcmp(o, "--ratio") == 0) return true;
+        if (i + 1 < argc && strcmp(o, "--lock") == 0 && strcmp(argv[i + 1], "auto") == 0) return true;
+        if (i + 1 < argc && (strcmp(o, "--drive") == 0 || strcmp(o, "--to") == 0) && strchr(argv[i + 1], ','))
+            return true;
+    }
+    return false;
+}
+
+// A comma-separated list of numbers; returns the count or -1.
+static int parse_double_list(const char *s, double *out, int cap)
+{
+    int n = 0;
+    const char *p = s;
+    for (;;) {
+        const char *c = strchr(p, ',');
+        size_t len = c ? (size_t)(c - p) : strlen(p);
+        char buf[64];
+        if (len == 0 || len >= sizeof buf || n >= cap) return -1;
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        if (!cli_parse_double(buf, &out[n++])) return -1;
+        if (!c) return n;
+        p = c + 1;
+    }
+}
+
+static int parse(int argc, char **argv, modes_args *a)
+{
+    const char *cmd = "fold";
+    memset(a, 0, sizeof *a);
+    a->step_deg = 10.0;
+    cli_seen seen = {0};
+    for (int i = 1; i < argc; ++i) {
+        const char *o = argv[i];
+        const char *v = NULL;
+        if (strcmp(o, "--json") == 0) {
+            a->json = true;
+        } else if (strcmp(o, "--symmetric") == 0) {
+            a->symmetric = true;
+        } else if (strcmp(o, "--frame") == 0) {
+            int rc = cli_option_frame_once(cmd, argc, argv, &i, &seen, &a->frame);
+            if (rc != CLI_EXIT_OK) return rc;
+        } else if (strcmp(o, "--fix") == 0 || strcmp(o, "--percent") == 0 || strcmp(o, "--drive") == 0 ||
+                   strcmp(o, "--to") == 0 || strcmp(o, "--ratio") == 0 || strcmp(o, "--lock") == 0 ||
+                   strcmp(o, "--step") == 0 || strcmp(o, "-o") == 0) {
+            if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (strcmp(o, "--fix") == 0) {
+                a->fix_spec = v;
+            } else if (strcmp(o, "--percent") == 0) {
+                if (!cli_parse_double(v, &a->percent) || a->percent < 0.0 || a->percent > 100.0)
+                    return cli_usage(cmd, "--percent needs a number from 0 to 100, got '%s'", v);
+                a->has_percent = true;
+            } else if (strcmp(o, "--drive") == 0) {
+                a->ndrives = cli_parse_int_list(v, a->drives, MODES_MAX_LIST);
+                if (a->ndrives <= 0) return cli_usage(cmd, "--drive needs comma-separated edge indices, got '%s'", v);
+            } else if (strcmp(o, "--to") == 0) {
+                a->nto = parse_double_list(v, a->to, MODES_MAX_LIST);
+                if (a->nto <= 0) return cli_usage(cmd, "--to needs comma-separated angles in degrees, got '%s'", v);
+                for (int k = 0; k < a->nto; ++k)
+                    if (!(fabs(a->to[k]) <= 180.0))
+                        return cli_usage(cmd, "--to %g is outside [-180, 180] degrees", a->to[k]);
+            } else if (strcmp(o, "--ratio") == 0) {
+                a->nratio = parse_double_list(v, a->ratio, MODES_MAX_LIST);
+                if (a->nratio <= 0) return cli_usage(cmd, "--ratio needs comma-separated numbers, got '%s'", v);
+            } else if (strcmp(o, "--lock") == 0) {
+                if (strcmp(v, "auto") == 0) {
+                    a->lock_auto = true;
+                } else {
+                    a->nlocks = cli_parse_int_list(v, a->locks, MODES_MAX_LIST);
+                    if (a->nlocks < 0) return cli_usage(cmd, "--lock needs comma-separated edge indices or auto, got '%s'", v);
+                }
+            } else if (strcmp(o, "--step") == 0) {
+                if (!cli_parse_double(v, &a->step_deg) || !(a->step_deg > 0.0))
+                    return cli_usage(cmd, "--step needs a positive angle in degrees, got '%s'", v);
+            } else {
+                a->out = v;
+            }
+        } else if (strcmp(o, "--from") == 0 || strcmp(o, "--solver") == 0 || strcmp(o, "--linear") == 0) {
+            return cli_usage(cmd, "%s applies to a single drive, not with --percent, several drives, --ratio, "
+                                  "--symmetric or --lock auto", o);
+        } else if (o[0] == '-' && o[1] != '\0') {
+            return cli_usage(cmd, "unknown option %s", o);
+        } else if (!a->path) {
+            a->path = o;
+        } else {
+            return cli_usage(cmd, "one FILE only");
+        }
+    }
+    if (!a->path) return cli_usage(cmd, "missing FILE");
+    if (!a->fix_spec) return cli_usage(cmd, "missing --fix FACE");
+    if (a->has_percent) {
+        if (a->ndrives || a->nto || a->nratio)
+            return cli_usage(cmd, "--percent folds every crease toward its target: no --drive, --to or --ratio with it");
+        if (a->lock_auto) return cli_usage(cmd, "--lock auto applies to drives: --percent needs no lock set");
+        return CLI_EXIT_OK;
+    }
+    if (!a->ndrives) return cli_usage(cmd, "missing --drive EDGE (or --percent P)");
+    if (!a->nto) return cli_usage(cmd, "missing --to DEG");
+    if (a->nratio) {
+        if (a->nto != 1) return cli_usage(cmd, "--ratio takes one --to angle (crease Ei goes to Ri x that angle)");
+        if (a->nratio != a->ndrives)
+            return cli_usage(cmd, "--ratio has %d values for %d driven creases", a->nratio, a->ndrives);
+        double base = a->to[0];
+        for (int k = 0; k < a->ndrives; ++k) {
+            a->to[k] = a->ratio[k] * base;
+            if (!(fabs(a->to[k]) <= 180.0))
+                return cli_usage(cmd, "--ratio %g x --to %g = %g is outside [-180, 180] degrees", a->ratio[k], base,
+                                 a->to[k]);
+        }
+        a->nto = a->ndrives;
+    } else if (a->nto != a->ndrives) {
+        return cli_usage(cmd, "--to has %d angles for %d driven creases", a->nto, a->ndrives);
+    }
+    return CLI_EXIT_OK;
+}
+
+static json_t *int_array(const int *v, int n)
+{
+    json_t *a = json_array();
+    for (int i = 0; i < n; ++i) json_array_append_new(a, json_integer(v[i]));
+    return a;
+}
+
+// "e.g. --lock a,b,c,..." text of a lock set.
+static void lock_text(const int *locks, int n, char *buf, size_t size)
+{
+    int w = snprintf(buf, size, "lock %d more crease%s, e.g. --lock ", n, n == 1 ? "" : "s");
+    for (int i = 0; i < n && i < MODES_LOCK_EXAMPLE && w > 0 && (size_t)w < size; ++i)
+        w += snprintf(buf + w, size - (size_t)w, "%s%d", i ? "," : "", locks[i]);
+    if (n > MODES_LOCK_EXAMPLE && w > 0 && (size_t)w < size) snprintf(buf + w, size - (size_t)w, ",...");
+    if (w > 0 && (size_t)w < size) snprintf(buf + w, size - (size_t)w, " (or --lock auto)");
+}
+
+int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *buf, size_t size, json_t **locks)
+{
+    buf[0] = '\0';
+    int cap = ori_mechanism_edge_count(k->mech) + 1;
+    int *out = malloc(sizeof(int) * (size_t)cap);
+    ori_error err;
+    int n = ori_mechanism_lock_set(k->mech, def->start_angles_rad, &def->driven_edge, 1, def->locked_edges,
+                                   def->locked_count, NULL, out, cap, &err);
+    if (n > 0) {
+        lock_text(out, n, buf, size);
+        if (locks) *locks = int_array(out, n);
+    }
+    free(out);
+    return n;
+}
+
+typedef struct modes_run {
+    modes_args a;
+    cli_kin k;
+    int *group;      // symmetry orbits (edge_count) or NULL
+    int sym_order, sym_groups;
+    int *locks;      // the lock set used (given or automatic)
+    int nlocks;
+    ori_multifold *mf;
+    char hint[1024]; // an underdetermined fold's lock suggestion
+} modes_run;
+
+// The creases whose angle changes (at most cap), for the text table.
+static int moving_creases(const modes_run *r, int *cols, int cap, int *total)
+{
+    const ori_multifold *mf = r->mf;
+    int E = ori_mechanism_edge_count(r->k.mech), F = ori_multifold_frame_count(mf), n = 0;
+    *total = 0;
+    if (F < 2) return 0;
+    const double *a0 = ori_multifold_frame_angles(mf, 0), *a1 = ori_multifold_frame_angles(mf, F - 1);
+    for (int e = 0; e < E; ++e)
+        if (fabs(a1[e] - a0[e]) > ORI_TOL_FOLD_SIGN_RAD) {
+            (*total)++;
+            if (n < cap) cols[n++] = e;
+        }
+    return n;
+}
+
+// Per crease: start, target, goal, reached, fraction of the way from start to goal.
+typedef struct crease_row {
+    int edge;
+    double start, target, goal, reached, fraction;
+} crease_row;
+
+static int crease_rows(const modes_run *r, crease_row *rows)
+{
+    const ori_mechanism *m = r->k.mech;
+    const ori_multifold *mf = r->mf;
+    int E = ori_mechanism_edge_count(m), F = ori_multifold_frame_count(mf), n = 0;
+    if (F == 0) return 0;
+    double *target = malloc(sizeof(double) * (size_t)(E + 1));
+    ori_target_angles_default(r->k.flat, target);
+    const double *a0 = ori_multifold_frame_angles(mf, 0), *a1 = ori_multifold_frame_angles(mf, F - 1);
+    const double *goal = ori_multifold_goal(mf);
+    for (int e = 0; e < E; ++e) {
+        int j = ori_mechanism_edge_joint(m, e);
+        if (j == ORI_NULL_INDEX || ori_mechanism_joint(m, j).kind != ORI_JOINT_REVOLUTE) continue;
+        // Drives: the driven creases only (the others have no goal of their own).
+        if (!r->a.has_percent && fabs(goal[e] - a0[e]) <= ORI_TOL_TARGET_RAD) continue;
+        crease_row c = {e, a0[e], r->a.has_percent ? target[e] : goal[e], goal[e], a1[e], 1.0};
+        double span = c.goal - c.start;
+        if (fabs(span) > ORI_TOL_TARGET_RAD) c.fraction = (c.reached - c.start) / span;
+        else c.fraction = fabs(c.reached - c.start) <= ORI_TOL_FOLD_SIGN_RAD ? 1.0 : 0.0;
+        rows[n++] = c;
+    }
+    free(target);
+    return n;
+}
+
+// Creases that fold against their assignment on some frame (worst angle each), as in the
+// ordinary fold's invalid-assignment check: the modes report them without stopping.
+typedef struct against_row {
+    int edge;
+    char assignment;
+    double angle;
+} against_row;
+
+static int against_assignment(const modes_run *r, against_row *rows)
+{
+    const ori_mechanism *m = r->k.mech;
+    const ori_multifold *mf = r->mf;
+    int E = ori_mechanism_edge_count(m), F = ori_multifold_frame_count(mf), n = 0;
+    for (int e = 0; e < E; ++e) {
+        ori_assignment as = ori_pattern_edge(r->k.flat, e).assignment;
+        int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+        if (!sg) continue;
+        double worst = 0.0;
+        for (int f = 0; f < F; ++f) {
+            double x = ori_multifold_frame_angles(mf, f)[e];
+            if (x * sg < 0.0 && fabs(x) > ORI_TOL_FOLD_SIGN_RAD && fabs(x) > fabs(worst)) worst = x;
+        }
+        if (worst != 0.0) rows[n++] = (against_row){e, ori_assignment_to_char(as), worst};
+    }
+    return n;
+}
+
+static void print_json(const modes_run *r)
+{
+    const modes_args *a = &r->a;
+    const ori_multifold *mf = r->mf;
+    int E = ori_mechanism_edge_count(r->k.mech), F = ori_multifold_frame_count(mf);
+    ori_multifold_verdict v = ori_multifold_verdict_of(mf);
+    json_t *out = json_object();
+    json_object_set_new(out, "file", json_string(a->path));
+    json_object_set_new(out, "mode", json_string(a->has_percent ? "targets" : "drives"));
+    json_object_set_new(out, "valid", json_boolean(v == ORI_MULTIFOLD_REACHED));
+    json_object_set_new(out, "verdict", json_string(ori_multifold_verdict_name(v)));
+    json_object_set_new(out, "reason", json_string(ori_multifold_reason(mf)));
+    json_object_set_new(out, "hint", r->hint[0] ? json_string(r->hint) : json_null());
+    int se = ori_multifold_stop_edge(mf);
+    json_object_set_new(out, "stop_edge", se == ORI_NULL_INDEX ? json_null() : json_integer(se));
+    json_object_set_new(out, "fixed_face", json_integer(a->fix));
+    json_object_set_new(out, "percent", a->has_percent ? json_real(a->percent) : json_null());
+    json_object_set_new(out, "step_deg", json_real(a->step_deg));
+    if (r->group)
+        json_object_set_new(out, "symmetry",
+                            json_pack("{s:i,s:i}", "order", r->sym_order, "crease_groups", r->sym_groups));
+    else
+        json_object_set_new(out, "symmetry", json_null());
+    json_object_set_new(out, "locked", int_array(r->locks, r->nlocks));
+    json_object_set_new(out, "lock_auto", json_boolean(a->lock_auto));
+    json_t *dr = json_array();
+    for (int i = 0; !a->has_percent && i < a->ndrives; ++i)
+        json_array_append_new(dr, json_pack("{s:i,s:f}", "edge", a->drives[i], "to_deg", a->to[i]));
+    json_object_set_new(out, "drives", dr);
+    crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
+    int nr = crease_rows(r, rows);
+    json_t *cr = json_array();
+    for (int i = 0; i < nr; ++i)
+        json_array_append_new(cr, json_pack("{s:i,s:f,s:f,s:f,s:f,s:f}", "edge", rows[i].edge, "start_deg",
+                                            ori_rad_to_deg_output(rows[i].start), "target_deg",
+                                            ori_rad_to_deg_output(rows[i].target), "goal_deg",
+                                            ori_rad_to_deg_output(rows[i].goal), "reached_deg",
+                                            ori_rad_to_deg_output(rows[i].reached), "fraction", rows[i].fraction));
+    free(rows);
+    json_object_set_new(out, "creases", cr);
+    against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
+    int na = against_assignment(r, ag);
+    json_t *aj = json_array();
+    for (int i = 0; i < na; ++i) {
+        char as[2] = {ag[i].assignment, '\0'};
+        json_array_append_new(aj, json_pack("{s:i,s:s,s:f}", "edge", ag[i].edge, "assignment", as, "angle_deg",
+                                            ori_rad_to_deg_output(ag[i].angle)));
+    }
+    free(ag);
+    json_object_set_new(out, "against_assignment", aj);
+    json_t *frames = json_array();
+    double maxres = 0.0;
+    for (int f = 0; f < F; ++f) {
+        const double *ang = ori_multifold_frame_angles(mf, f);
+        json_t *angs = json_array();
+        for (int e = 0; e < E; ++e) json_array_append_new(angs, json_real(ori_rad_to_deg_output(ang[e])));
+        double res = ori_multifold_frame_residual(mf, f);
+        maxres = fmax(maxres, res);
+        json_array_append_new(frames, json_pack("{s:f,s:o,s:f}", "progress", ori_multifold_frame_progress(mf, f),
+                                                "fold_angles_deg", angs, "residual", res));
+    }
+    json_object_set_new(out, "frames", frames);
+    int steps, rejected, newton;
+    ori_multifold_stats(mf, &steps, &rejected, &newton);
+    json_object_set_new(out, "stats", json_pack("{s:i,s:i,s:i,s:i,s:f}", "steps", steps, "rejected_steps", rejected,
+                                                "newton_iterations", newton, "held_at_180", ori_multifold_held_count(mf),
+                                                "max_residual", maxres));
+    cli_print_json(out);
+}
+
+static void print_text(const modes_run *r)
+{
+    const modes_args *a = &r->a;
+    const ori_multifold *mf = r->mf;
+    int E = ori_mechanism_edge_count(r->k.mech), F = ori_multifold_frame_count(mf);
+    if (a->has_percent) {
+        printf("%s: fold toward the targets, %g %% of the way (step %g deg), face %d fixed", a->path, a->percent,
+               a->step_deg, a->fix);
+    } else {
+        printf("%s: drive", a->path);
+        for (int i = 0; i < a->ndrives; ++i) printf("%s crease %d to %g deg", i ? "," : "", a->drives[i], a->to[i]);
+        printf(" together (step %g deg), face %d fixed", a->step_deg, a->fix);
+    }
+    if (r->nlocks) {
+        printf(", locked%s", a->lock_auto ? " (auto)" : "");
+        for (int i = 0; i < r->nlocks; ++i) printf("%s%d", i ? "," : " ", r->locks[i]);
+    }
+    printf("\n");
+    if (r->group)
+        printf("symmetry: %d symmetries of the flat pattern; %d groups of creases kept at equal angles\n", r->sym_order,
+               r->sym_groups);
+    int cols[8], total;
+    int nc = moving_creases(r, cols, 8, &total);
+    if (F > 0) {
+        printf("%9s", "progress");
+        for (int i = 0; i < nc; ++i) printf(" %11s%-4d", "crease ", cols[i]);
+        printf("  residual\n");
+        for (int f = 0; f < F; ++f) {
+            printf("%9.4f", ori_multifold_frame_progress(mf, f));
+            for (int i = 0; i < nc; ++i) printf(" %15.6f", ori_rad_to_deg_output(ori_multifold_frame_angles(mf, f)[cols[i]]));
+            printf("  %.1e\n", ori_multifold_frame_residual(mf, f));
+        }
+        if (total > nc) printf("(%d more moving creases: see --json)\n", total - nc);
+    }
+    ori_multifold_verdict v = ori_multifold_verdict_of(mf);
+    printf("verdict: %s: %s\n", ori_multifold_verdict_name(v), ori_multifold_reason(mf));
+    if (ori_multifold_held_count(mf))
+        printf("note: %d crease%s reached 180 deg (%s target) first and %s held there\n", ori_multifold_held_count(mf),
+               ori_multifold_held_count(mf) == 1 ? "" : "s", ori_multifold_held_count(mf) == 1 ? "its" : "their",
+               ori_multifold_held_count(mf) == 1 ? "was" : "were");
+    if (r->hint[0]) printf("hint: %s\n", r->hint);
+    against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
+    int na = against_assignment(r, ag);
+    if (na) {
+        printf("note: %d crease%s fold%s against %s assignment:", na, na == 1 ? "" : "s", na == 1 ? "s" : "",
+               na == 1 ? "its" : "their");
+        for (int i = 0; i < na && i < 8; ++i)
+            printf("%s crease %d (%c) to %.6g deg", i ? "," : "", ag[i].edge, ag[i].assignment,
+                   ori_rad_to_deg_output(ag[i].angle));
+        printf("%s\n", na > 8 ? ", ... (--json)" : "");
+    }
+    free(ag);
+    crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
+    int nr = crease_rows(r, rows), at = 0, worst = -1;
+    for (int i = 0; i < nr; ++i) {
+        if (fabs(rows[i].reached - rows[i].goal) <= MODES_AT_GOAL_RAD) at++;
+        if (worst < 0 || fabs(rows[i].reached - rows[i].goal) > fabs(rows[worst].reached - rows[worst].goal)) worst = i;
+    }
+    if (nr > 0) {
+        printf("creases: %d of %d at their goal", at, nr);
+        if (worst >= 0 && at < nr)
+            printf("; farthest: crease %d at %.6g deg, goal %.6g deg (fraction %.4f)", rows[worst].edge,
+                   ori_rad_to_deg_output(rows[worst].reached), ori_rad_to_deg_output(rows[worst].goal),
+                   rows[worst].fraction);
+        printf(" (per crease: --json)\n");
+    }
+    free(rows);
+}
+
+static int write_frames(const modes_run *r)
+{
+    const ori_mechanism *m = r->k.mech;
+    const ori_multifold *mf = r->mf;
+    int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
+    bool partial = ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED;
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
+    for (int f = 0; f < ori_multifold_frame_count(mf); ++f) {
+        ori_multifold_frame_vertices(mf, f, pos);
+        char title[160];
+        snprintf(title, sizeof title, "%s: %.6g %% of the way%s%s", r->a.has_percent ? "fold toward the targets" : "drives",
+                 100.0 * ori_multifold_frame_progress(mf, f), partial ? " (partial: " : "",
+                 partial ? ori_multifold_verdict_name(ori_multifold_verdict_of(mf)) : "");
+        if (partial) strncat(title, ")", sizeof title - strlen(title) - 1);
+        ori_fold_append_state(r->k.doc, 0, V, pos, E, ori_multifold_frame_angles(mf, f), title);
+    }
+    free(pos);
+    ori_error err;
+    if (ori_fold_save_file(r->k.doc, r->a.out, &err) != ORI_OK) return cli_input_error("fold", r->a.out, &err);
+    return CLI_EXIT_OK;
+}
+
+static int check_edge(const modes_run *r, const char *option, int e)
+{
+    int E = ori_mechanism_edge_count(r->k.mech);
+    if (e < 0 || e >= E)
+        return cli_value_fail("fold", r->a.path, option, "no edge %d (the pattern has edges 0 to %d)", e, E - 1);
+    return CLI_EXIT_OK;
+}
+
+static int solve(modes_run *r)
+{
+    const modes_args *a = &r->a;
+    const ori_mechanism *m = r->k.mech;
+    int E = ori_mechanism_edge_count(m);
+    ori_rigid pose;
+    int rc = cli_kin_fixed_pose("fold", a->path, &r->k, a->fix, &pose);
+    if (rc != CLI_EXIT_OK) return rc;
+    for (int i = 0; i < a->nlocks; ++i)
+        if ((rc = check_edge(r, "--lock", a->locks[i])) != CLI_EXIT_OK) return rc;
+    for (int i = 0; i < a->ndrives; ++i)
+        if ((rc = check_edge(r, "--drive", a->drives[i])) != CLI_EXIT_OK) return rc;
+    if (a->symmetric) {
+        r->group = malloc(sizeof(int) * (size_t)(E + 1));
+        r->sym_groups = ori_mechanism_symmetry_orbits(m, r->group);
+        r->sym_order = ori_mechanism_symmetries(m, NULL, 0);
+    }
+    r->locks = malloc(sizeof(int) * (size_t)(E + 1));
+    memcpy(r->locks, a->locks, sizeof(int) * (size_t)a->nlocks);
+    r->nlocks = a->nlocks;
+    ori_error err;
+    if (a->lock_auto) {
+        int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, a->locks, a->nlocks, r->group,
+                                       r->locks + r->nlocks, E + 1 - r->nlocks, &err);
+        if (n < 0) return cli_input_error("fold", a->path, &err);
+        r->nlocks += n;
+    }
+    ori_status st;
+    if (a->has_percent) {
+        ori_target_fold_def d = ori_default_target_fold_def();
+        d.fixed_face = a->fix;
+        d.fixed_pose = pose;
+        d.start_angles_rad = r->k.angles;
+        d.fraction = a->percent / 100.0;
+        d.step_rad = ori_deg_to_rad(a->step_deg);
+        d.locked_edges = r->locks;
+        d.locked_count = r->nlocks;
+        d.edge_group = r->group;
+        st = ori_target_fold_solve(m, &d, &r->mf, &err);
+    } else {
+        double to[MODES_MAX_LIST];
+        for (int i = 0; i < a->ndrives; ++i) to[i] = ori_deg_to_rad(a->to[i]);
+        ori_drives_fold_def d = ori_default_drives_fold_def();
+        d.fixed_face = a->fix;
+        d.fixed_pose = pose;
+        d.start_angles_rad = r->k.angles;
+        d.driven_edges = a->drives;
+        d.to_rad = to;
+        d.driven_count = a->ndrives;
+        d.step_rad = ori_deg_to_rad(a->step_deg);
+        d.locked_edges = r->locks;
+        d.locked_count = r->nlocks;
+        d.edge_group = r->group;
+        st = ori_drives_fold_solve(m, &d, &r->mf, &err);
+    }
+    if (st != ORI_OK) {
+        // A driven or locked crease the fold cannot use is a command-line value: usage error.
+        for (int i = 0; i < a->ndrives && strcmp(err.field, "edges_vertices") == 0; ++i)
+            if (err.element == a->drives[i]) return cli_value_fail("fold", a->path, "--drive", "%s", err.message);
+        rc = cli_input_error("fold", a->path, &err);
+        return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
+    }
+    // A drawing with rounded coordinates is rigid where its exact design folds: say so.
+    ori_multifold_verdict v = ori_multifold_verdict_of(r->mf);
+    if (v == ORI_MULTIFOLD_SINGULAR || v == ORI_MULTIFOLD_OVERDETERMINED) {
+        int near = 0;
+        double worst = 0.0;
+        for (int x = 0; x < ori_pattern_vertex_count(r->k.flat); ++x) {
+            if (!ori_pattern_vertex_is_interior(r->k.flat, x)) continue;
+            ori_vertex_report vr;
+            ori_flat_check_vertex(r->k.flat, x, &vr);
+            if (vr.degree % 2 || vr.kawasaki || fabs(vr.kawasaki_rad) > MODES_NEAR_KAWASAKI_RAD) continue;
+            near++;
+            worst = fmax(worst, fabs(vr.kawasaki_rad));
+        }
+        if (near)
+            snprintf(r->hint, sizeof r->hint,
+                     "%d interior vertices miss Kawasaki by up to %.2g rad (rounded coordinates?): rigid folding is "
+                     "exact; see orikin check --tolerance, and orikin regularize --rigid to make the drawing exact",
+                     near, worst);
+    }
+    if (v == ORI_MULTIFOLD_UNDERDETERMINED) {
+        int *sugg = malloc(sizeof(int) * (size_t)(E + 1));
+        int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, sugg,
+                                       E + 1, &err);
+        if (n > 0) lock_text(sugg, n, r->hint, sizeof r->hint);
+        free(sugg);
+    }
+    return CLI_EXIT_OK;
+}
+
+extern const cli_command cli_cmd_fold;
+
+// One drive with --lock auto (and nothing else of the modes): the lock set, then the ordinary
+// fold (its branch analysis at a flat start, collision checks and output) with "auto" replaced.
+static int single_drive_auto(modes_run *r, int argc, char **argv)
+{
+    int E = ori_mechanism_edge_count(r->k.mech);
+    int *locks = malloc(sizeof(int) * (size_t)(E + r->a.nlocks + 1));
+    memcpy(locks, r->a.locks, sizeof(int) * (size_t)r->a.nlocks);
+    ori_error err;
+    int rc = check_edge(r, "--drive", r->a.drives[0]);
+    int n = rc == CLI_EXIT_OK ? ori_mechanism_lock_set(r->k.mech, r->k.angles, r->a.drives, 1, r->a.locks, r->a.nlocks,
+                                                       NULL, locks + r->a.nlocks, E, &err)
+                              : -1;
+    if (rc == CLI_EXIT_OK && n < 0) rc = cli_input_error("fold", r->a.path, &err);
+    if (rc == CLI_EXIT_OK) {
+        size_t len = 16;
+        for (int i = 0; i < r->a.nlocks + n; ++i) len += 12;
+        char *list = malloc(len);
+        list[0] = '\0';
+        size_t w = 0;
+        for (int i = 0; i < r->a.nlocks + n; ++i) w += (size_t)snprintf(list + w, len - w, "%s%d", i ? "," : "", locks[i]);
+        char **av = malloc(sizeof(char *) * (size_t)(argc + 1));
+        for (int i = 0; i < argc; ++i) av[i] = argv[i];
+        av[argc] = NULL;
+        for (int i = 1; i + 1 < argc; ++i)
+            if (strcmp(argv[i], "--lock") == 0 && strcmp(argv[i + 1], "auto") == 0) av[i + 1] = list;
+        if (r->a.nlocks + n > 0) rc = cli_cmd_fold.run(argc, av);
+        else rc = cli_usage("fold", "--lock auto: nothing to lock, the drive leaves no freedom");
+        free(av);
+        free(list);
+    }
+    free(locks);
+    return rc;
+}
+
+int cli_fold_modes_run(int argc, char **argv)
+{
+    modes_run r;
+    memset(&r, 0, sizeof r);
+    int rc = parse(argc, argv, &r.a);
+    if (rc != CLI_EXIT_OK) return rc;
+    rc = cli_kin_load("fold", r.a.path, r.a.frame, &r.k);
+    if (rc != CLI_EXIT_OK) return rc;
+    rc = cli_find_face_option("fold", r.a.path, r.k.flat, "--fix", r.a.fix_spec, &r.a.fix);
+    if (rc == CLI_EXIT_OK && r.a.lock_auto && r.a.ndrives == 1 && !r.a.symmetric && !r.a.has_percent) {
+        rc = single_drive_auto(&r, argc, argv);
+        cli_kin_free(&r.k);
+        return rc;
+    }
+    if (rc == CLI_EXIT_OK) rc = solve(&r);
+    if (rc == CLI_EXIT_OK) {
+        if (r.a.json) print_json(&r);
+        else print_text(&r);
+        ori_multifold_verdict v = ori_multifold_verdict_of(r.mf);
+        rc = v == ORI_MULTIFOLD_REACHED ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
+        if (r.a.out && ori_multifold_frame_count(r.mf) > 0) {
+            int wr = write_frames(&r);
+            if (wr != CLI_EXIT_OK) rc = wr;
+        }
+    }
+    ori_multifold_destroy(r.mf);
+    free(r.group);
+    free(r.locks);
+    cli_kin_free(&r.k);
+    return rc;
+}

@@ -1,0 +1,41 @@
+// The folding modes of `orikin fold` for patterns with several degrees of freedom: toward the
+// targets (--percent), several drives (--drive E1,E2 --to A1,A2 / --ratio), an automatic lock
+// set (--lock auto) and symmetry (--symmetric). cmd_fold.c hands a command line over when
+// cli_fold_modes_wanted says so; its ordinary single-drive fold asks for a lock suggestion when
+// the fold is underdetermined.
+#ifndef ORI_CLI_FOLD_MODES_H
+#define ORI_CLI_FOLD_MODES_H
+
+#include "kin_args.h"
+
+// True when the fold command line uses one of the modes (--percent, --symmetric, --ratio,
+// --lock auto, or several comma-separated --drive creases).
+bool cli_fold_modes_wanted(int argc, char **argv);
+// Run `orikin fold` in one of the modes; returns the exit code.
+int cli_fold_modes_run(int argc, char **argv);
+
+// A lock set that leaves the single-drive fold `def` one degree of freedom, as the text
+// "lock N more creases, e.g. --lock a,b,c" into buf (empty when none is found), and as a JSON
+// array when locks is not NULL (NULL stays NULL then). Returns the count, or -1.
+int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *buf, size_t size, json_t **locks);
+
+// The help lines of the modes, appended to fold's help.
+#define CLI_FOLD_MODES_HELP                                                                                   \
+    "\n"                                                                                                      \
+    "Patterns with several degrees of freedom (docs/kinematics.md, 'Several degrees of freedom'):\n"         \
+    "  --percent P     fold every crease toward its target (edges_foldAngle or SVG opacity; +-180 by\n"       \
+    "                  assignment where absent), P percent of the way from the start (0-100), by\n"          \
+    "                  projecting onto the rigid motions; reports how far each crease got\n"             \
+    "  --drive E1,E2,... --to A1,A2,...   drive several creases together (the rest solved)\n"               \
+    "  --ratio R1,R2,...  with one --to A: crease Ei goes to Ri x A degrees\n"                               \
+    "  --lock auto     lock the creases a rank-revealing QR of the Jacobian leaves over (one degree\n"       \
+    "                  of freedom per drive); an underdetermined fold suggests such a set\n"                \
+    "  --symmetric     keep creases that the pattern's symmetries map onto each other at equal angles\n"    \
+    "  with a mode, --json prints {mode, verdict, reason, stop_edge, symmetry, locked, drives,\n"           \
+    "                  creases: [{edge, start_deg, target_deg, goal_deg, reached_deg, fraction}],\n"         \
+    "                  against_assignment: [{edge, assignment, angle_deg}],\n"                            \
+    "                  frames: [{progress, fold_angles_deg, residual}], stats: {steps, rejected_steps,\n"   \
+    "                  newton_iterations, held_at_180, max_residual}}; -o writes the\n"                    \
+    "                  motion up to where it stops (titled partial when the goal is not reached)\n"
+
+#endif

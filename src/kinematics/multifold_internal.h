@@ -1,0 +1,104 @@
+// Internals shared by the folding modes for patterns with several degrees of freedom:
+// targets.c (fold toward target angles, and the engine below), drives.c (several drives),
+// lockset.c (rank-revealing lock sets) and symmetry.c (symmetry orbits).
+//
+// The engine works on variables: each free revolute joint belongs to one variable (joints of
+// one symmetry orbit share it), the others are fixed (locked, flat-locked, rigid, or driven
+// and set by the caller). The loop-closure Jacobian restricted to the variables, J (rows ×
+// variables, a variable's column the sum of its joints' columns), is kept as a CHOLMOD object
+// that factors J Jᵀ + λI, the normal matrix of minimum-norm solves: x = Jᵀ (J Jᵀ + λI)⁻¹ b.
+#ifndef ORI_MULTIFOLD_INTERNAL_H
+#define ORI_MULTIFOLD_INTERNAL_H
+
+#include "kinematics_internal.h"
+
+typedef struct mf_system {
+    const ori_mechanism *m;
+    const int *var_of_joint; // joint_count entries: variable ≥ 0, or < 0 (fixed)
+    int nvar;
+    int ngroups;     // (variable, loop) pairs
+    int *group_pos;  // first value of each group in the CSC values
+    int *group_loop; // its loop
+    int *group_lc0;  // lc_list[group_lc0[g] .. group_lc0[g + 1]): the loop columns summed
+    int *lc_list;
+    kin_sls *sls;
+    double *res;   // rows
+    double *cols;  // 6 × loop_col_total
+    double *half;  // 2 × joint_count
+    double *y;     // rows scratch
+    double *x;     // nvar scratch
+    double worst;  // residual of the last evaluation
+    bool factored; // the CHOLMOD factor holds a linearization (the chord corrector may reuse it)
+    int newton_iterations;
+} mf_system;
+
+// Build the sparse structure for the given variable map (var_of_joint is kept, not copied).
+void ori__mf_init(mf_system *s, const ori_mechanism *m, const int *var_of_joint, int nvar);
+void ori__mf_free(mf_system *s);
+// Evaluate residual and Jacobian at joint angles th and factor J Jᵀ + λI. Returns false when
+// the factorization fails.
+bool ori__mf_linearize(mf_system *s, const double *th);
+// After ori__mf_linearize: minimum-norm x (nvar) with J x = b (rows).
+bool ori__mf_minnorm(mf_system *s, const double *b, double *x);
+// After ori__mf_linearize: out (rows) = J v for a variable vector v.
+void ori__mf_jv(const mf_system *s, const double *v, double *out);
+// After ori__mf_linearize: out (rows) = Σ over joints of the full Jacobian column × rate[joint]
+// (rate per joint; used for driven joints that are not variables).
+void ori__mf_joint_rate(const mf_system *s, const double *rate, double *out);
+// Newton (minimum-norm) corrector on the variables, fixed joints held: th updated in place.
+// Starts from the last factor when there is one (chord iterations), and refactors when an
+// iteration contracts the residual by less than ORI_KIN_CHORD_RATE.
+// True when the residual reaches ORI_TOL_RESIDUAL; *residual the final max-norm of P − I.
+bool ori__mf_correct(mf_system *s, double *th, int *iterations, double *residual);
+// Joint angles from variables (free joints) over th.
+void ori__mf_apply(const mf_system *s, const double *phi, double *th);
+// Number of residual rows.
+static inline int ori__mf_rows(const mf_system *s) { return s->m->rows; }
+
+// The result object shared by targets.c and drives.c.
+struct ori_multifold {
+    const ori_mechanism *m;
+    int edge_count;
+    int fixed_face;
+    ori_rigid fixed_pose;
+    ori_multifold_verdict verdict;
+    char reason[1024];
+    int stop_edge;
+    int extra_dof;
+    int nframes, cap;
+    double *angles; // nframes × (edge_count + 1)
+    double *residual;
+    double *progress;
+    double *goal;   // edge_count + 1
+    int steps, rejected, newton;
+    int pinned; // creases held at ±180° (their own target) while the others went on
+};
+
+ori_multifold *ori__mf_result_create(const ori_mechanism *m, int fixed_face, ori_rigid fixed_pose);
+// Append a frame from joint angles.
+void ori__mf_record(ori_multifold *mo, const double *th, double residual, double progress);
+
+// Variable map of a fold: revolute joints not locked get a variable (edges of one group share
+// one); returns the variable count, or -1 with *error set for a bad lock or group entry.
+// joint_var receives joint_count entries.
+int ori__mf_variables(const ori_mechanism *m, const int *locked_edges, int locked_count, const int *edge_group,
+                      int *joint_var, ori_error *error);
+
+// Validate a fold's fixed face and start angles (edge angles, NULL = flat) and convert them to
+// joint angles th; the start must close within ORI_TOL_START_RESIDUAL.
+ori_status ori__mf_check_start(const ori_mechanism *m, int fixed_face, const double *start, double *th,
+                               ori_error *error);
+// Variable values phi from joint angles th; the joints of one variable must start at equal angles.
+ori_status ori__mf_group_start(const ori_mechanism *m, const int *joint_var, int nvar, const double *th, double *phi,
+                               ori_error *error);
+
+// Close edge angles (edge_count entries, in place) onto the loop-closure manifold by minimum-norm
+// Newton on the revolute creases that are not locked: ORI_OK, or ORI_ERR_NOT_CONVERGED.
+ori_status ori__mf_close(const ori_mechanism *m, const int *locked_edges, int locked_count, double *edge_angles,
+                         ori_error *error);
+
+// Dense loop-closure Jacobian at joint angles th restricted to the columns col_of_joint ≥ 0
+// (ncols columns; joints sharing a column are summed), column-major rows × ncols.
+void ori__mf_dense_jacobian(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols, double *a);
+
+#endif

@@ -1,0 +1,478 @@
+// Folding patterns with several degrees of freedom: toward the targets (null-space projection +
+// Newton), several drives, lock sets and symmetry. Every frame is checked independently for loop
+// closure (ori_mechanism_residual ≤ 1e-10), the paths for continuity, and end states against the
+// goals or, where the motion stops, against the optimality of the stop.
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support.h"
+
+#define DEG (ORI_PI / 180.0)
+
+static ori_pattern *waterbomb(int n)
+{
+    ori_generate_def d = ori_default_generate_def(ORI_TESS_WATERBOMB);
+    d.rows = d.cols = n;
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_generate(&d, &p, NULL, &err), ORI_OK);
+    return p;
+}
+
+static ori_pattern *import_shared(const char *rel)
+{
+    const char *path = test_require_shared(rel);
+    ori_pattern *p = NULL;
+    ori_error err;
+    char msg[512];
+    cr_assert_eq(ori_import_file(path, ORI_FORMAT_UNKNOWN, NULL, &p, NULL, &err), ORI_OK, "%s",
+                 ori_error_format(&err, msg, sizeof msg));
+    return p;
+}
+
+// Every frame closes (measured afresh), the angles stay in [−π, π], and consecutive frames
+// differ by at most the step (+ one continuation step of slack); for drives the step bounds the
+// drives only, and the other creases may turn faster (step_rad is then given × 4).
+static void check_frames(const ori_mechanism *m, const ori_multifold *mf, double step_rad)
+{
+    int E = ori_mechanism_edge_count(m), F = ori_multifold_frame_count(mf);
+    cr_assert_gt(F, 0);
+    for (int f = 0; f < F; ++f) {
+        const double *a = ori_multifold_frame_angles(mf, f);
+        double r = ori_mechanism_residual(m, a);
+        cr_assert_leq(r, 1e-10, "frame %d residual %g", f, r);
+        cr_assert_leq(ori_multifold_frame_residual(mf, f), 1e-10);
+        for (int e = 0; e < E; ++e) cr_assert_leq(fabs(a[e]), ORI_PI + 1e-12);
+        if (f > 0) {
+            const double *b = ori_multifold_frame_angles(mf, f - 1);
+            double d = 0.0;
+            for (int e = 0; e < E; ++e) d = fmax(d, fabs(a[e] - b[e]));
+            cr_assert_leq(d, step_rad + ORI_MULTIFOLD_MAX_STEP_RAD + 1e-9, "frame %d jumps %g rad", f, d);
+        }
+    }
+}
+
+static ori_multifold *fold_targets(const ori_mechanism *m, double fraction, const int *group)
+{
+    ori_target_fold_def d = ori_default_target_fold_def();
+    d.fraction = fraction;
+    d.edge_group = group;
+    ori_multifold *mf = NULL;
+    ori_error err;
+    char msg[512];
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    check_frames(m, mf, d.step_rad);
+    return mf;
+}
+
+// Reached: the last frame is the goal, which is the targets scaled by the fraction.
+static void check_reached(const ori_pattern *p, const ori_mechanism *m, const ori_multifold *mf, double fraction)
+{
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+    int E = ori_mechanism_edge_count(m);
+    double *target = malloc(sizeof(double) * (size_t)E);
+    ori_target_angles_default(p, target);
+    const double *last = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+    for (int e = 0; e < E; ++e) {
+        int j = ori_mechanism_edge_joint(m, e);
+        if (j == ORI_NULL_INDEX || ori_mechanism_joint(m, j).kind != ORI_JOINT_REVOLUTE) continue;
+        cr_assert_float_eq(last[e], fraction * target[e], 1e-9, "crease %d: %g, target %g", e, last[e], target[e]);
+    }
+    cr_assert_float_eq(ori_multifold_frame_progress(mf, ori_multifold_frame_count(mf) - 1), 1.0, 1e-9);
+    free(target);
+}
+
+Test(fold_modes, waterbomb_tessellations_fold_flat, .init = test_leak_setup, .fini = test_leak_check)
+{
+    // 10 x 10 passes through states where creases reach 180° (their target) first: they are held.
+    for (int n = 1; n <= 10; n += n < 3 ? 1 : 7) {
+        ori_pattern *p = waterbomb(n);
+        ori_mechanism *m = test_mechanism_of(p);
+        ori_multifold *mf = fold_targets(m, 1.0, NULL);
+        check_reached(p, m, mf, 1.0);
+        if (n == 10) cr_assert_gt(ori_multifold_held_count(mf), 0);
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+}
+
+Test(fold_modes, waterbomb_base_targets_and_half_way, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_multifold *mf = fold_targets(m, 1.0, NULL);
+    check_reached(p, m, mf, 1.0);
+    ori_multifold_destroy(mf);
+    // Half way (diagonals −90°, axes 45°) is no state of the vertex: the fold stops nearer.
+    mf = fold_targets(m, 0.5, NULL);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_STATIONARY, "%s", ori_multifold_reason(mf));
+    double pr = ori_multifold_frame_progress(mf, ori_multifold_frame_count(mf) - 1);
+    cr_assert(pr > 0.8 && pr < 1.0, "progress %g", pr);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// The symmetry group of the waterbomb base is D4 (order 8): two orbits of creases (diagonals,
+// axes). Folding with --symmetric keeps each orbit at one angle on every frame; one driven crease
+// then determines the symmetric collapse.
+Test(fold_modes, waterbomb_base_symmetry, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_symmetry g[16];
+    int order = ori_mechanism_symmetries(m, g, 16);
+    cr_assert_eq(order, 8);
+    int refl = 0;
+    for (int i = 0; i < order; ++i) {
+        double det = g[i].r[0][0] * g[i].r[1][1] - g[i].r[0][1] * g[i].r[1][0];
+        cr_assert_float_eq(fabs(det), 1.0, 1e-12);
+        refl += g[i].reflection;
+        cr_assert_eq(g[i].reflection, det < 0.0);
+    }
+    cr_assert_eq(refl, 4);
+    int E = ori_mechanism_edge_count(m);
+    int orbit[16];
+    cr_assert_eq(ori_mechanism_symmetry_orbits(m, orbit), 2);
+    int diag = test_edge_at(p, 1, 1, 0, 0), axis = test_edge_at(p, 1, 1, 1, 0);
+    for (int e = 0; e < E; ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        if (ed.assignment == ORI_ASSIGN_MOUNTAIN) cr_assert_eq(orbit[e], orbit[diag]);
+        if (ed.assignment == ORI_ASSIGN_VALLEY) cr_assert_eq(orbit[e], orbit[axis]);
+    }
+    // One drive with symmetry: determined (a free waterbomb base has 5 degrees of freedom).
+    ori_drives_fold_def d = ori_default_drives_fold_def();
+    int drive = axis;
+    double to = 60.0 * DEG;
+    d.driven_edges = &drive;
+    d.to_rad = &to;
+    d.driven_count = 1;
+    d.edge_group = orbit;
+    ori_multifold *mf = NULL;
+    ori_error err;
+    cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_OK);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+    check_frames(m, mf, 4.0 * d.step_rad);
+    for (int f = 0; f < ori_multifold_frame_count(mf); ++f) {
+        const double *a = ori_multifold_frame_angles(mf, f);
+        for (int e = 0; e < E; ++e)
+            if (orbit[e] != e) cr_assert_float_eq(a[e], a[orbit[e]], 1e-12);
+        cr_assert_float_eq(a[axis], ori_multifold_frame_progress(mf, f) * to, 1e-12);
+    }
+    const double *last = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+    // The symmetric collapse folds the diagonals (mountains) by more than the axes.
+    cr_assert_lt(last[diag], -fabs(last[axis]));
+    ori_multifold_destroy(mf);
+    // Without symmetry the single drive is underdetermined: the verdict says by how much.
+    d.edge_group = NULL;
+    cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_OK);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_UNDERDETERMINED);
+    cr_assert_eq(ori_multifold_extra_dof(mf), 4);
+    cr_assert_eq(ori_multifold_frame_count(mf), 0);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// A single degree-4 vertex (Miura cell) cannot put every crease at ±90°: the fold stops where
+// the remaining change is normal to the motion: the stop is a regular 1-DOF state nearer the
+// goal than the frame before it.
+Test(fold_modes, stationary_stop_is_optimal, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_miura(2, 2, 1.0, 1.0, 60.0 * DEG, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_multifold *mf = fold_targets(m, 0.5, NULL);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_STATIONARY, "%s", ori_multifold_reason(mf));
+    int E = ori_mechanism_edge_count(m);
+    const double *last = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+    const double *goal = ori_multifold_goal(mf);
+    ori_dof_def dd = ori_default_dof_def();
+    dd.angles_rad = last;
+    ori_dof_result dr;
+    ori_error err;
+    cr_assert_eq(ori_mechanism_dof(m, &dd, &dr, &err), ORI_OK);
+    cr_assert_eq(dr.dof, 1);
+    double dl = 0.0, dp = 0.0;
+    const double *prev = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 2);
+    for (int e = 0; e < E; ++e) {
+        dl += (last[e] - goal[e]) * (last[e] - goal[e]);
+        dp += (prev[e] - goal[e]) * (prev[e] - goal[e]);
+    }
+    cr_assert_lt(dl, dp);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// Several drives: a Miura sheet has one degree of freedom; two creases that stay equal (images
+// under a translation) can be driven together, every frame on the line of the drives; two
+// creases driven at a ratio the motion does not have are overdetermined.
+Test(fold_modes, miura_drives, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/miura-4x4.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    // Two parallel valley creases of one zig-zag column at the same height in the cells.
+    int E = ori_mechanism_edge_count(m);
+    int va = -1, vb = -1, mo = -1;
+    ori_multifold *ref = fold_targets(m, 0.5, NULL); // any motion of the sheet, to find equal creases
+    const double *a = ori_multifold_frame_angles(ref, 1);
+    for (int e = 0; e < E && vb < 0; ++e) {
+        if (ori_pattern_edge(p, e).assignment != ORI_ASSIGN_VALLEY) continue;
+        if (va < 0) va = e;
+        else if (e != va && fabs(a[e] - a[va]) < 1e-9) vb = e;
+    }
+    for (int e = 0; e < E && mo < 0; ++e)
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_MOUNTAIN) mo = e;
+    ori_multifold_destroy(ref);
+    cr_assert(va >= 0 && vb >= 0 && mo >= 0);
+    ori_drives_fold_def d = ori_default_drives_fold_def();
+    int drives[2] = {va, vb};
+    double to[2] = {100.0 * DEG, 100.0 * DEG};
+    d.driven_edges = drives;
+    d.to_rad = to;
+    d.driven_count = 2;
+    ori_multifold *mf = NULL;
+    ori_error err;
+    cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_OK);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+    check_frames(m, mf, 4.0 * d.step_rad);
+    for (int f = 0; f < ori_multifold_frame_count(mf); ++f) {
+        const double *x = ori_multifold_frame_angles(mf, f);
+        double t = ori_multifold_frame_progress(mf, f);
+        cr_assert_float_eq(x[va], t * to[0], 1e-12);
+        cr_assert_float_eq(x[vb], t * to[1], 1e-12);
+    }
+    cr_assert_eq(ori_multifold_frame_count(mf), 11); // 0, 10, …, 100°
+    ori_multifold_destroy(mf);
+    // A valley and a mountain at 100° and −20°: not a ratio of the motion.
+    drives[1] = mo;
+    to[1] = -20.0 * DEG;
+    cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_OK);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_OVERDETERMINED, "%s", ori_multifold_reason(mf));
+    ori_multifold_destroy(mf);
+    // Driving a locked crease is an error.
+    d.locked_edges = &va;
+    d.locked_count = 1;
+    cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_ERR_ARGUMENT);
+    cr_assert_null(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// The lock set turns an underdetermined single-drive fold into a one-degree-of-freedom fold that
+// moves (by the ordinary solver: ori_motion_solve), on the waterbomb base and tessellations.
+Test(fold_modes, lock_set_makes_one_dof, .init = test_leak_setup, .fini = test_leak_check)
+{
+    for (int n = 0; n <= 2; ++n) {
+        ori_pattern *p = n == 0 ? test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0) : waterbomb(n);
+        ori_mechanism *m = test_mechanism_of(p);
+        int E = ori_mechanism_edge_count(m);
+        int drive = -1;
+        for (int e = 0; e < E && drive < 0; ++e)
+            if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY) drive = e;
+        ori_motion_def md = ori_default_motion_def();
+        md.fixed_face = 0;
+        md.driven_edge = drive;
+        md.to_rad = 60.0 * DEG;
+        ori_motion *mo = NULL;
+        ori_error err;
+        cr_assert_eq(ori_motion_solve(m, &md, &mo, &err), ORI_OK);
+        cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_UNDERDETERMINED);
+        ori_motion_destroy(mo);
+        int *locks = malloc(sizeof(int) * (size_t)E);
+        int nl = ori_mechanism_lock_set(m, NULL, &drive, 1, NULL, 0, NULL, locks, E, &err);
+        cr_assert_gt(nl, 0, "waterbomb %d", n);
+        for (int i = 0; i < nl; ++i) cr_assert_neq(locks[i], drive);
+        // The ordinary fold with these locks: determined, it moves the drive to the target (on
+        // the base and the 1 x 1 tessellation as assigned; the 2 x 2's motion folds some
+        // creases against their assignment, and says so).
+        md.locked_edges = locks;
+        md.locked_count = nl;
+        cr_assert_eq(ori_motion_solve(m, &md, &mo, &err), ORI_OK);
+        ori_motion_verdict v = ori_motion_verdict_of(mo);
+        cr_assert(v == ORI_MOTION_VALID || (n == 2 && v == ORI_MOTION_INVALID_ASSIGNMENT), "waterbomb %d: %s", n,
+                  ori_motion_reason(mo));
+        int F = ori_motion_frame_count(mo);
+        cr_assert_float_eq(ori_motion_frame_drive(mo, F - 1), md.to_rad, 1e-12);
+        for (int f = 0; f < F; ++f) {
+            cr_assert_leq(ori_mechanism_residual(m, ori_motion_frame_angles(mo, f)), 1e-10);
+            for (int i = 0; i < nl; ++i) cr_assert_eq(ori_motion_frame_angles(mo, f)[locks[i]], 0.0);
+        }
+        ori_motion_destroy(mo);
+        free(locks);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+}
+
+Test(fold_modes, bad_definitions, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_target_fold_def d = ori_default_target_fold_def();
+    ori_multifold *mf = NULL;
+    ori_error err;
+    d.fraction = 1.5;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_ERR_RANGE);
+    d.fraction = 1.0;
+    d.fixed_face = 99;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_ERR_RANGE);
+    d.fixed_face = 0;
+    int E = ori_mechanism_edge_count(m);
+    double *start = calloc((size_t)E, sizeof(double));
+    start[test_edge_at(p, 1, 1, 0, 0)] = 0.5; // one crease folded alone: the loop does not close
+    d.start_angles_rad = start;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_ERR_ARGUMENT);
+    cr_assert_null(mf);
+    free(start);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// Origami Simulator's drawings (../shared/patterns; skipped when absent): the waterbomb base,
+// the map fold and the brochure fold reach their targets (SVG opacity); the waterbomb
+// tessellation (a rounded drawing) folds to within 1 % of every target, then stops.
+Test(fold_modes, origami_simulator_drawings, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *reached[] = {"origamisimulator/Bases_waterbombBase.svg", "origamisimulator/SimpleFolds_mapfold.svg",
+                             "origamisimulator/SimpleFolds_brochurefold.svg"};
+    for (int i = 0; i < 3; ++i) {
+        ori_pattern *p = import_shared(reached[i]);
+        ori_mechanism *m = test_mechanism_of(p);
+        ori_multifold *mf = fold_targets(m, 1.0, NULL);
+        check_reached(p, m, mf, 1.0);
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+    ori_pattern *p = import_shared("origamisimulator/Tessellations_waterbomb.svg");
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_multifold *mf = fold_targets(m, 1.0, NULL);
+    ori_multifold_verdict v = ori_multifold_verdict_of(mf);
+    cr_assert(v == ORI_MULTIFOLD_REACHED || v == ORI_MULTIFOLD_LIMIT || v == ORI_MULTIFOLD_STATIONARY, "%s",
+              ori_multifold_reason(mf));
+    if (v == ORI_MULTIFOLD_LIMIT) {
+        int se = ori_multifold_stop_edge(mf);
+        const double *last = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+        cr_assert_float_eq(fabs(last[se]), ORI_PI, 1e-8);
+    }
+    cr_assert_geq(ori_multifold_frame_progress(mf, ori_multifold_frame_count(mf) - 1), 0.99);
+    // Every crease at least 99 % of its way.
+    const double *last = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+    const double *goal = ori_multifold_goal(mf);
+    for (int e = 0; e < ori_mechanism_edge_count(m); ++e)
+        if (fabs(goal[e]) > 0.0) cr_assert_geq(last[e] / goal[e], 0.99, "crease %d: %g of %g", e, last[e], goal[e]);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// A sequence step of the percent kind: parsed, written back, run, recorded (progress as the
+// drive), and any instant restored exactly (closed, between the recorded states).
+Test(fold_modes, sequence_percent_step, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *text = "{\"pattern\": \"waterbomb-base.fold\", \"folds\": [{\"fix\": 0, \"percent\": 100, \"step\": 20}]}";
+    ori_sequence *s = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_parse(text, strlen(text), &s, &err), ORI_OK);
+    ori_sequence_fold f = ori_sequence_fold_at(s, 0);
+    cr_assert(f.targets);
+    cr_assert_float_eq(f.fraction, 1.0, 0.0);
+    cr_assert_eq(f.driven_edge, ORI_NULL_INDEX);
+    char *json = ori_sequence_to_json(s);
+    cr_assert_not_null(strstr(json, "\"percent\":100"));
+    ori_sequence *s2 = NULL;
+    cr_assert_eq(ori_sequence_parse(json, strlen(json), &s2, &err), ORI_OK);
+    cr_assert(ori_sequence_fold_at(s2, 0).targets);
+    ori_sequence_destroy(s2);
+    ori_buffer_free(json);
+    const char *bad = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 0, \"percent\": 50, \"drive\": 3}]}";
+    cr_assert_neq(ori_sequence_parse(bad, strlen(bad), &s2, &err), ORI_OK);
+    const char *range = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 0, \"percent\": 101}]}";
+    cr_assert_eq(ori_sequence_parse(range, strlen(range), &s2, &err), ORI_ERR_RANGE);
+
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
+    int n = ori_record_frame_count(r), E = ori_mechanism_edge_count(m), V = ori_mechanism_vertex_count(m);
+    cr_assert_gt(n, 2);
+    cr_assert_float_eq(ori_record_frame_time(r, n - 1), 1.0, 1e-12);
+    double *ang = malloc(sizeof(double) * (size_t)E);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)V);
+    for (double t = 0.0; t <= 1.0; t += 0.125) {
+        double res;
+        cr_assert_eq(ori_record_at(r, t, ang, pos, NULL, NULL, &res, &err), ORI_OK);
+        cr_assert_leq(ori_mechanism_residual(m, ang), 1e-10, "t = %g", t);
+        // Between the recorded states around t (each crease monotone on this fold).
+        int k = 0;
+        while (k + 1 < n && ori_record_frame_time(r, k + 1) < t) k++;
+        int k1 = k + 1 < n ? k + 1 : k;
+        for (int e = 0; e < E; ++e) {
+            double lo = fmin(ori_record_frame_angles(r, k)[e], ori_record_frame_angles(r, k1)[e]);
+            double hi = fmax(ori_record_frame_angles(r, k)[e], ori_record_frame_angles(r, k1)[e]);
+            cr_assert(ang[e] >= lo - 1e-3 && ang[e] <= hi + 1e-3, "t = %g crease %d: %g not in [%g, %g]", t, e, ang[e], lo, hi);
+        }
+    }
+    const double *last = ori_record_frame_angles(r, n - 1);
+    cr_assert_float_eq(last[test_edge_at(p, 1, 1, 0, 0)], -ORI_PI, 1e-9);
+    free(ang);
+    free(pos);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// --percent with --symmetric keeps every orbit at one angle on every frame; the motion of a fold
+// that stops early is written up to the stop, its frames titled partial.
+Test(fold_modes, symmetric_targets_and_partial_output, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m);
+    int orbit[16];
+    ori_mechanism_symmetry_orbits(m, orbit);
+    ori_multifold *mf = fold_targets(m, 1.0, orbit);
+    check_reached(p, m, mf, 1.0);
+    for (int f = 0; f < ori_multifold_frame_count(mf); ++f)
+        for (int e = 0; e < E; ++e)
+            cr_assert_float_eq(ori_multifold_frame_angles(mf, f)[e], ori_multifold_frame_angles(mf, f)[orbit[e]], 1e-12);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+
+    char *dir = test_tmpdir();
+    char args[1024], path[900];
+    snprintf(path, sizeof path, "%s/half.fold", dir);
+    snprintf(args, sizeof args, "fold tests/data/waterbomb-base.fold --fix 0 --percent 50 -o '%s'", path);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+    cr_assert_not_null(strstr(out, "verdict: stationary"));
+    free(out);
+    char *text = test_read_text(path);
+    cr_assert_not_null(text);
+    cr_assert_not_null(strstr(text, "(partial: stationary)"));
+    free(text);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    int frames = ori_fold_frame_count(doc);
+    cr_assert_gt(frames, 2);
+    ori_fold_destroy(doc);
+    // The last written frame is a closed state.
+    ori_pattern *last = test_load_pattern(path, frames - 1);
+    ori_pattern *flat = test_load_pattern(path, 0);
+    ori_mechanism *m2 = test_mechanism_of(flat);
+    double a[16];
+    for (int e = 0; e < ori_pattern_edge_count(last); ++e) a[e] = ori_pattern_edge(last, e).fold_angle_rad;
+    cr_assert_leq(ori_mechanism_residual(m2, a), 1e-9);
+    ori_mechanism_destroy(m2);
+    ori_pattern_destroy(flat);
+    ori_pattern_destroy(last);
+    test_tmpdir_remove(dir);
+}
