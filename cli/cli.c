@@ -13,6 +13,7 @@ bool cli_is_help(const char *arg) { return strcmp(arg, "-h") == 0 || strcmp(arg,
 int cli_print_help(const cli_command *cmd)
 {
     fputs(cmd->help, stdout);
+    if (cmd->help_more) fputs(cmd->help_more, stdout);
     return CLI_EXIT_OK;
 }
 

@@ -24,6 +24,7 @@ typedef struct cli_command {
     const char *summary;  // one line for `orikin -h`
     const char *help;     // full help: synopsis, paragraph, options, example
     int (*run)(int argc, char **argv); // argv[0] is the command name
+    const char *help_more; // more help printed after help, or NULL (C99 caps a literal at 4095)
 } cli_command;
 
 // True for -h / --help.

@@ -288,4 +288,5 @@ const cli_command cli_cmd_actuate = {
     "\n"
     "example: orikin actuate examples/patterns/thesis-flap.fold --fix 0 --drive 0 --to 180\n",
     run,
+    NULL,
 };

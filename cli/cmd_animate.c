@@ -179,4 +179,5 @@ const cli_command cli_cmd_animate = {
     "\n"
     "example: orikin animate examples/open-corner.seq.json --yaw 90 --grid -o open-corner.gif\n",
     run,
+    NULL,
 };

@@ -151,4 +151,5 @@ const cli_command cli_cmd_apply = {
     "misses the face), 3 bad file or composite (nothing written)\n"
     "example: orikin apply sheet.fold --pattern middle-h --face Obj1 --assign V -o step1.fold\n",
     run,
+    NULL,
 };

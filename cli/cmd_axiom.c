@@ -72,4 +72,5 @@ const cli_command cli_cmd_axiom = {
     "exit codes: 0 solutions found, 1 no solution, 2 bad command line\n"
     "example: orikin axiom 6 --p1 0,-1 --l1 0,1,1,0 --p2 2,0 --l2 -2,0,0,1   (slope = cube root of 2)\n",
     run,
+    NULL,
 };

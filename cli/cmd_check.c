@@ -156,4 +156,5 @@ const cli_command cli_cmd_check = {
     "\n"
     "example: orikin check examples/patterns/degree4-vertex.fold\n",
     run,
+    NULL,
 };

@@ -245,4 +245,5 @@ const cli_command cli_cmd_collide = {
     "\n"
     "example: orikin collide examples/patterns/two-flaps.fold --frame 1 --cloud 0.25\n",
     run,
+    NULL,
 };

@@ -155,4 +155,5 @@ const cli_command cli_cmd_convert = {
     "\n"
     "example: orikin convert birdBase.svg bird.fold\n",
     run,
+    NULL,
 };

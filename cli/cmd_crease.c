@@ -171,4 +171,5 @@ const cli_command cli_cmd_crease = {
     "a line that misses the face), 3 bad file (nothing written)\n"
     "example: orikin crease sheet.fold --axiom 2 --p1 0,0 --p2 2,2 --face Obj1 --assign V -o d.fold\n",
     run,
+    NULL,
 };

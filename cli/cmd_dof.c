@@ -202,4 +202,5 @@ const cli_command cli_cmd_dof = {
     "\n"
     "example: orikin dof examples/patterns/open-corner.fold\n",
     run,
+    NULL,
 };

@@ -279,4 +279,5 @@ const cli_command cli_cmd_edit = {
     "exit codes: 0 written, 2 bad command line (an unknown edge, a boundary edge), 3 bad file\n"
     "example: orikin edit corner.fold --assign @0.5,1=M --flip 8 -o corner2.fold\n",
     run,
+    NULL,
 };

@@ -169,4 +169,5 @@ const cli_command cli_cmd_export = {
     "\n"
     "example: orikin export examples/open-corner.seq.json --animate -o open-corner.glb\n",
     run,
+    NULL,
 };

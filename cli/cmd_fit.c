@@ -155,4 +155,5 @@ const cli_command cli_cmd_fit = {
     "\n"
     "example: orikin fit examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --step 10\n",
     run,
+    NULL,
 };

@@ -388,9 +388,9 @@ const cli_command cli_cmd_fold = {
     "                  fold is valid; when it is blocked, up to the stop, and when it collides,\n"
     "                  up to the last clean step, both marked by a top-level \"orikin:partial\"\n"
     "                  {verdict, reason, to_deg, reached_deg, frames, blocked}\n"
-    "\n"
+    "\n",
+    run,
     CLI_FOLD_MODES_HELP
     "\n"
     "example: orikin fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90\n",
-    run,
 };

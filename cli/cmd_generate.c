@@ -226,4 +226,5 @@ const cli_command cli_cmd_generate = {
     "\n"
     "example: orikin generate miura --rows 10 --cols 10 --angle 70 -o miura.fold\n",
     run,
+    NULL,
 };

@@ -214,4 +214,5 @@ const cli_command cli_cmd_info = {
     "\n"
     "example: orikin info examples/patterns/open-corner.fold --faces\n",
     run,
+    NULL,
 };

@@ -371,4 +371,5 @@ const cli_command cli_cmd_layers = {
     "\n"
     "example: orikin layers examples/patterns/degree6-vertex.fold --state 1 --svg vertex.svg\n",
     run,
+    NULL,
 };

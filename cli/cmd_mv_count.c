@@ -177,4 +177,5 @@ const cli_command cli_cmd_mv_count = {
     "\n"
     "example: orikin mv-count 100 70 50 40 30 70 --list\n",
     run,
+    NULL,
 };

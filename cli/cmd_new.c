@@ -149,4 +149,5 @@ const cli_command cli_cmd_new = {
     "exit codes: 0 written, 2 bad command line (a degenerate or non-simple sheet too)\n"
     "example: orikin new --square 2 -o sheet.fold\n",
     run,
+    NULL,
 };

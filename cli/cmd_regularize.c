@@ -179,4 +179,5 @@ const cli_command cli_cmd_regularize = {
     "\n"
     "example: orikin regularize miura.fold --rigid -o miura-exact.fold\n",
     run,
+    NULL,
 };

@@ -156,4 +156,5 @@ const cli_command cli_cmd_render = {
     "\n"
     "example: orikin render examples/open-corner.seq.json --yaw 90 -o corner-cube.png\n",
     run,
+    NULL,
 };

@@ -364,4 +364,5 @@ const cli_command cli_cmd_sequence = {
     "\n"
     "example: orikin sequence examples/open-corner.seq.json -o open-corner-folded.fold\n",
     run,
+    NULL,
 };

@@ -375,4 +375,5 @@ const cli_command cli_cmd_simulate = {
     "\n"
     "example: orikin simulate examples/patterns/thesis-flap.fold --fix 0 --current 0.02 --duration 0.01\n",
     run,
+    NULL,
 };

@@ -112,4 +112,5 @@ const cli_command cli_cmd_tree = {
     "\n"
     "example: orikin tree examples/patterns/open-corner.fold\n",
     run,
+    NULL,
 };

@@ -141,4 +141,5 @@ const cli_command cli_cmd_view = {
     "assets were not built\n"
     "example: orikin view examples/open-corner.seq.json\n",
     run,
+    NULL,
 };
