@@ -247,8 +247,8 @@ static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, 
         if (st == ORI_ERR_ARGUMENT)
             return cli_input_fail(cmd, a->path,
                                   "frame %d: its edges_foldAngle are not a folded state (the loops around the vertices do "
-                                  "not close): draw the crease pattern with --view cp, or fold it with --fix, --drive and --to",
-                                  frame);
+                                  "not close): %sfold it with --fix, --drive and --to",
+                                  frame, strcmp(cmd, "render") == 0 ? "draw the crease pattern with --view cp, or " : "");
         if (st != ORI_OK) return frame_error(cmd, a->path, frame, &err);
         return CLI_EXIT_OK;
     }
