@@ -375,4 +375,9 @@
 /// columns within this (files may hold them rounded to 6 or more digits). Unitless.
 #define ORI_TOL_LAYERS_TRANSFORM 1e-6
 
+/// Along a motion, a step whose sweep leaves a pair of faces undecided (near each other, not
+/// lying over each other on one side at both ends) is checked in halves down to a drive bracket
+/// of this: 1e-3 degree. Radians.
+#define ORI_TOL_SWEEP_SPLIT_RAD (1e-3 * 3.14159265358979323846 / 180.0)
+
 #endif
