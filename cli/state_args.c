@@ -396,6 +396,18 @@ int cli_state_load(const char *cmd, const cli_state_args *a, bool need_pose, cli
     return rc;
 }
 
+int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_opts *o, cli_collision *out)
+{
+    memset(out, 0, sizeof *out);
+    if (s->source == CLI_STATE_SEQUENCE)
+        return cli_collide_record(cmd, s->path, o, s->pattern, s->record, out);
+    if (s->source != CLI_STATE_FOLD) return CLI_EXIT_OK;
+    ori_motion_def def;
+    int rc = cli_fold_def(cmd, &s->args->fold, &s->kin, &def);
+    if (rc != CLI_EXIT_OK) return rc;
+    return cli_collide_motion(cmd, s->path, o, s->pattern, s->mech, &def, s->motion, out);
+}
+
 // --- motions --------------------------------------------------------------------------------
 
 void cli_motion_free(cli_motion *m)

@@ -17,6 +17,7 @@
 #ifndef ORI_CLI_STATE_ARGS_H
 #define ORI_CLI_STATE_ARGS_H
 
+#include "collide_args.h"
 #include "kin_args.h"
 
 #define CLI_STATE_MAX_FOLD_ARGS 64
@@ -87,6 +88,11 @@ int cli_state_load(const char *cmd, const cli_state_args *a, bool need_pose, cli
 // The library's view of the state.
 ori_state_view cli_state_view(const cli_state *s);
 void cli_state_free(cli_state *s);
+
+// Check the motion of a fold or a sequence for self-collision as `orikin fold` and `orikin
+// sequence` do (o: --no-collisions, --clearance D); a FOLD frame is not checked (out->checked
+// false). Prints the error and returns its exit code on failure, else CLI_EXIT_OK.
+int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_opts *o, cli_collision *out);
 
 // A motion as frames: its natural keyframes (samples = 0: the frames of a multi-frame FOLD, a
 // fold's output steps, a sequence's recorded states) or samples ≥ 2 frames evenly spaced in
