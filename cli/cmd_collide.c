@@ -195,12 +195,15 @@ static int run(int argc, char **argv)
                               "check (fold it with --fix, --drive and --to)",
                               a.state.frame);
     }
-    if (ori_pattern_face_count(s.pattern) == 0) {
+    // A folded-form frame is checked on its own pattern (its size sets the tolerances), as the
+    // studio's POST /api/collide does.
+    const ori_pattern *checked = s.frame_pattern ? s.frame_pattern : s.pattern;
+    if (ori_pattern_face_count(checked) == 0) {
         cli_state_free(&s);
         return cli_input_fail("collide", path, "faces_vertices: frame %d is a folded form without faces", a.state.frame);
     }
     ori_collider_def cd = ori_default_collider_def();
-    cd.pattern = s.pattern;
+    cd.pattern = checked;
     cd.clearance = a.clearance;
     ori_collider *c = NULL;
     ori_error err;

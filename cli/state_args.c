@@ -149,6 +149,7 @@ void cli_state_free(cli_state *s)
         ori_pattern_destroy(s->pattern);
         ori_fold_destroy(s->doc);
     }
+    ori_pattern_destroy(s->frame_pattern);
     free(s->pattern_path);
     free(s->positions);
     free(s->poses);
@@ -262,7 +263,7 @@ static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, 
         for (int e = 0; e < ne; ++e) s->angles[e] = ori_pattern_edge(p, e).fold_angle_rad;
     }
     if (pf && is_flat_pattern(p0) && same_topology(p0, pf)) {
-        ori_pattern_destroy(pf);
+        s->frame_pattern = pf;
         s->pattern = p0;
         s->has_flat = true;
         ori_mechanism_def md = ori_default_mechanism_def();

@@ -60,6 +60,8 @@ typedef struct cli_state {
     const char *path;        // IN as given
     char *pattern_path;      // the FOLD file (a sequence's pattern, resolved against SEQ.json's folder)
     ori_pattern *pattern;    // topology to draw: the flat crease pattern when there is one, else the folded form
+    ori_pattern *frame_pattern; // a folded-form frame drawn on frame 0's crease pattern: the frame's own
+                                // pattern (its size sets the collision tolerances, as the studio's), else NULL
     bool has_flat;           // pattern is a flat crease pattern (texture coordinates, the crease view)
     ori_mechanism *mech;     // the crease pattern's mechanism, or NULL
     ori_v3 *positions;       // world position of every vertex (NULL: not posed, need_pose was false)
