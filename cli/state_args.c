@@ -469,7 +469,9 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
             for (int e = 0; e < E; ++e) stored.angles[(size_t)i * E + e] = ori_pattern_edge(p, e).fold_angle_rad;
         else all_angles = false;
         ori_pattern_destroy(p);
+        // orikin sequence writes "orikin:time"; orikin simulate "frame_time" (seconds).
         char *t = ori_fold_get_custom(s->doc, k, "orikin:time");
+        if (!t) t = ori_fold_get_custom(s->doc, k, "frame_time");
         double tv;
         if (t && cli_parse_double(t, &tv)) stored.times[i] = tv;
         else all_timed = false;
