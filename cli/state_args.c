@@ -199,14 +199,25 @@ static int frame_error(const char *cmd, const char *path, int frame, const ori_e
 static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, cli_state *s)
 {
     ori_error err;
-    if (ori_fold_load_file(a->path, &s->doc, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
-    s->frame_count = ori_fold_frame_count(s->doc);
-    int frame = a->frame;
-    if (frame >= s->frame_count)
-        return cli_input_fail(cmd, a->path, "frame %d does not exist (frames 0 to %d)", frame, s->frame_count - 1);
     ori_pattern *p0 = NULL, *pf = NULL;
-    if (ori_fold_get_pattern(s->doc, 0, NULL, &p0, &err) != ORI_OK)
-        return frame == 0 ? cli_input_error(cmd, a->path, &err) : frame_error(cmd, a->path, 0, &err);
+    int frame = a->frame;
+    ori_format fmt = ori_format_from_path(a->path);
+    if (fmt == ORI_FORMAT_SVG || fmt == ORI_FORMAT_OPX || fmt == ORI_FORMAT_CP) {
+        // A drawing: its crease pattern, read as every command reads it (one frame).
+        if (a->has_frame) return cli_usage(cmd, "--frame applies to .fold input, not to %s", a->path);
+        cli_input in;
+        cli_input_init(&in);
+        int rc = cli_input_load(cmd, a->path, &in, &s->doc, &p0);
+        if (rc != CLI_EXIT_OK) return rc;
+        s->frame_count = 1;
+    } else {
+        if (ori_fold_load_file(a->path, &s->doc, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
+        s->frame_count = ori_fold_frame_count(s->doc);
+        if (frame >= s->frame_count)
+            return cli_input_fail(cmd, a->path, "frame %d does not exist (frames 0 to %d)", frame, s->frame_count - 1);
+        if (ori_fold_get_pattern(s->doc, 0, NULL, &p0, &err) != ORI_OK)
+            return frame == 0 ? cli_input_error(cmd, a->path, &err) : frame_error(cmd, a->path, 0, &err);
+    }
     if (frame != 0) {
         ori_build_def bd = ori_default_build_def();
         bd.check_planarity = false;

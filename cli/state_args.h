@@ -4,6 +4,7 @@
 //
 //   IN.fold [--frame N]               a frame: a folded form (3D vertices_coords), or a crease
 //                                     pattern posed from its edges_foldAngle (the loops must close)
+//   IN.svg | IN.opx | IN.cp           a drawing's crease pattern (read as every command reads it)
 //   IN.fold --fix F --drive E --to D  a fold (the kinematics options of `orikin fold`); the state
 //     [--from --step --lock --solver --linear --frame N]     is the fold's last frame
 //   SEQ.json [--at T]                 a fold sequence at time T (default: its end)
