@@ -36,12 +36,17 @@ static int run(int argc, char **argv)
     const char *out = NULL;
     bool json = false, has_fps = false, has_duration = false;
     double fps = 15.0, duration = 3.0;
+    cli_collide_opts co;
+    memset(&co, 0, sizeof co);
     int rc;
     for (int i = 1; i < argc; ++i) {
         int took = cli_state_option(cmd, argc, argv, &i, &sa, &rc);
         if (took < 0) return rc;
         if (took) continue;
         if (strcmp(argv[i], "--view") == 0) return cli_usage(cmd, "an animation shows the 3D view (no --view)");
+        took = cli_collide_option(cmd, argc, argv, &i, &co);
+        if (took < 0) return CLI_EXIT_USAGE;
+        if (took) continue;
         took = cli_render_option(cmd, argc, argv, &i, &ra, false, &rc);
         if (took < 0) return rc;
         if (took) continue;
@@ -87,6 +92,13 @@ static int run(int argc, char **argv)
 
     cli_state st;
     if ((rc = cli_state_load(cmd, &sa, false, &st)) != CLI_EXIT_OK) return rc;
+    // The motion is drawn whole; a collision along it is noted (orikin fold and orikin sequence
+    // stop there instead).
+    cli_collision coll;
+    if ((rc = cli_state_collisions(cmd, &st, &co, &coll)) != CLI_EXIT_OK) {
+        cli_state_free(&st);
+        return rc;
+    }
     cli_motion m;
     if ((rc = cli_state_motion(cmd, &st, frames, &m)) != CLI_EXIT_OK) {
         cli_state_free(&st);
@@ -137,10 +149,20 @@ static int run(int argc, char **argv)
         json_object_set_new(o, "width", json_integer(def.render.width));
         json_object_set_new(o, "height", json_integer(def.render.height));
         json_object_set_new(o, "bytes", json_integer((json_int_t)size));
+        json_object_set_new(o, "collision", cli_collision_json(&coll, st.source == CLI_STATE_SEQUENCE));
         cli_print_json(o);
     } else {
         printf("wrote %s: %d frames of %s over %g s (%dx%d gif, %zu bytes)\n", out, m.count, sa.path, duration,
                def.render.width, def.render.height, size);
+        if (cli_collides(&coll)) {
+            char why[256];
+            cli_collision_describe(&coll, st.source == CLI_STATE_SEQUENCE, why, sizeof why);
+            double t = coll.ev.time;
+            if (st.source == CLI_STATE_FOLD && m.count > 1) t = coll.ev.time / (ori_motion_frame_count(st.motion) - 1);
+            printf("note: the motion collides: %s, %.3g s into the animation; the frames after it show faces "
+                   "passing through each other (orikin %s stops there)\n",
+                   why, duration * t / (m.duration > 0.0 ? m.duration : 1.0), st.source == CLI_STATE_SEQUENCE ? "sequence" : "fold");
+        }
     }
     ori_buffer_free(data);
     ori_buffer_free(texture);
@@ -174,7 +196,11 @@ const cli_command cli_cmd_animate = {
     "  --size WxH           image size in pixels (default 800x600)\n"
     "  --camera, --yaw, --pitch, --roll, --perspective, --front, --back, --texture, --edges,\n"
     "  --grid               as for orikin render\n"
-    "  --json               print {output, frames, fps, duration_s, width, height, bytes}\n"
+    "  --no-collisions      do not check the motion for self-collision (a fold or a sequence\n"
+    "                       is checked as by orikin fold; a collision is noted, the motion drawn)\n"
+    "  --clearance D        faces sharing no vertex closer than D collide too\n"
+    "  --json               print {output, frames, fps, duration_s, width, height, bytes,\n"
+    "                       collision: {fold, step, drive_deg, faces, point} | null}\n"
     "  -o OUT.gif           the animation\n"
     "\n"
     "example: orikin animate examples/open-corner.seq.json --yaw 90 --grid -o open-corner.gif\n",

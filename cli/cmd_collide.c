@@ -5,13 +5,13 @@
 #include <string.h>
 
 #include "collide_args.h"
+#include "state_args.h"
 
 #define MAX_LISTED 20
 
 typedef struct collide_args {
-    const char *path;
-    int frame;
-    bool has_frame, has_clearance, has_cloud, json;
+    cli_state_args state;
+    bool has_clearance, has_cloud, json;
     double clearance, spacing;
     const char *clearance_raw, *cloud_raw;
 } collide_args;
@@ -19,17 +19,17 @@ typedef struct collide_args {
 static int parse(int argc, char **argv, collide_args *a)
 {
     memset(a, 0, sizeof *a);
+    cli_state_args_init(&a->state);
+    int rc;
     for (int i = 1; i < argc; ++i) {
         const char *o = argv[i];
+        int took = cli_state_option("collide", argc, argv, &i, &a->state, &rc);
+        if (took < 0) return rc;
+        if (took) continue;
         if (strcmp(o, "--json") == 0) {
             a->json = true;
-        } else if (strcmp(o, "--frame") == 0) {
-            if (a->has_frame) return cli_usage("collide", "--frame given twice");
-            int rc = cli_option_frame("collide", argc, argv, &i, &a->frame);
-            if (rc != CLI_EXIT_OK) return rc;
-            a->has_frame = true;
         } else if (strcmp(o, "--clearance") == 0 || strcmp(o, "--cloud") == 0) {
-            bool cloud = o[2] == 'c' && o[3] == 'l' && o[4] == 'o';
+            bool cloud = strcmp(o, "--cloud") == 0;
             if (cloud ? a->has_cloud : a->has_clearance) return cli_usage("collide", "%s given twice", o);
             const char *v = cli_option_value("collide", argc, argv, &i);
             if (!v) return CLI_EXIT_USAGE;
@@ -46,14 +46,11 @@ static int parse(int argc, char **argv, collide_args *a)
             }
         } else if (o[0] == '-' && o[1] != '\0') {
             return cli_usage("collide", "unknown option %s", o);
-        } else if (!a->path) {
-            a->path = o;
         } else {
-            return cli_usage("collide", "one FILE only");
+            return cli_usage("collide", "one IN only");
         }
     }
-    if (!a->path) return cli_usage("collide", "missing FILE");
-    return CLI_EXIT_OK;
+    return cli_state_finish("collide", &a->state);
 }
 
 static json_t *v3_json(ori_v3 v) { return json_pack("[fff]", v.x, v.y, v.z); }
@@ -74,13 +71,14 @@ static const char *kind_name(ori_contact_kind k)
     return k == ORI_CONTACT_PENETRATING ? "penetrating" : k == ORI_CONTACT_TOUCHING ? "touching" : "near";
 }
 
-static void print_json(const collide_args *a, const cli_collide_state *s, const ori_collider *c, const ori_collision_result *r,
+static void print_json(const collide_args *a, const cli_state *s, const ori_collider *c, const ori_collision_result *r,
                        const ori_cloud_result *cr, double cloud_distance)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "file", json_string(a->path));
-    json_object_set_new(o, "frame", json_integer(a->frame));
-    json_object_set_new(o, "posed", json_boolean(s->posed));
+    json_object_set_new(o, "file", json_string(s->path));
+    json_object_set_new(o, "frame", s->source == CLI_STATE_FRAME ? json_integer(a->state.frame) : json_null());
+    json_object_set_new(o, "state", json_string(s->label));
+    json_object_set_new(o, "posed", json_boolean(s->source != CLI_STATE_FRAME || s->cp_frame));
     json_object_set_new(o, "faces", json_integer(ori_collider_face_count(c)));
     json_object_set_new(o, "collides", json_boolean(r->collides));
     json_object_set_new(o, "pairs", pairs_json(c, true));
@@ -141,12 +139,16 @@ static void list_pairs(const ori_collider *c, ori_contact_kind kind)
     if (n > MAX_LISTED) printf("  (%d more: see --json)\n", n - MAX_LISTED);
 }
 
-static void print_text(const collide_args *a, const cli_collide_state *s, const ori_collider *c, const ori_collision_result *r,
+static void print_text(const collide_args *a, const cli_state *s, const ori_collider *c, const ori_collision_result *r,
                        const ori_cloud_result *cr, double cloud_distance)
 {
     int nf = ori_collider_face_count(c);
-    printf("%s (frame %d): %d faces, %s\n", a->path, a->frame, nf,
-           s->posed ? "posed from its fold angles" : "folded form");
+    const char *how = s->source == CLI_STATE_FOLD       ? "posed by the fold"
+                      : s->source == CLI_STATE_SEQUENCE ? "posed by the sequence"
+                      : s->cp_frame                     ? "posed from its fold angles"
+                                                        : "folded form";
+    (void)a;
+    printf("%s (%s): %d faces, %s\n", s->path, s->label, nf, how);
     printf("penetrating        %d pairs\n", r->penetrating);
     list_pairs(c, ORI_CONTACT_PENETRATING);
     printf("touching           %d pairs\n", r->touching);
@@ -179,15 +181,29 @@ static int run(int argc, char **argv)
     collide_args a;
     int rc = parse(argc, argv, &a);
     if (rc != CLI_EXIT_OK) return rc;
+    const char *path = a.state.path;
     if (a.has_clearance && !(a.clearance >= 0.0))
-        return cli_input_fail("collide", a.path, "--clearance must be a length >= 0, got %s", a.clearance_raw);
+        return cli_input_fail("collide", path, "--clearance must be a length >= 0, got %s", a.clearance_raw);
     if (a.has_cloud && !(a.spacing > 0.0))
-        return cli_input_fail("collide", a.path, "--cloud needs a sample spacing > 0, got %s", a.cloud_raw);
-    cli_collide_state s;
-    rc = cli_collide_state_load("collide", a.path, a.frame, &s);
-    if (rc != CLI_EXIT_OK) return rc;
+        return cli_input_fail("collide", path, "--cloud needs a sample spacing > 0, got %s", a.cloud_raw);
+    cli_state s;
+    if ((rc = cli_state_load("collide", &a.state, true, &s)) != CLI_EXIT_OK) return rc;
+    if (s.cp_frame && !ori_pattern_has_fold_angles(s.pattern)) {
+        cli_state_free(&s);
+        return cli_input_fail("collide", path,
+                              "frame %d has neither 3D vertices_coords nor edges_foldAngle: there is no folded state to "
+                              "check (fold it with --fix, --drive and --to)",
+                              a.state.frame);
+    }
+    // A folded-form frame is checked on its own pattern (its size sets the tolerances), as the
+    // studio's POST /api/collide does.
+    const ori_pattern *checked = s.frame_pattern ? s.frame_pattern : s.pattern;
+    if (ori_pattern_face_count(checked) == 0) {
+        cli_state_free(&s);
+        return cli_input_fail("collide", path, "faces_vertices: frame %d is a folded form without faces", a.state.frame);
+    }
     ori_collider_def cd = ori_default_collider_def();
-    cd.pattern = s.pattern;
+    cd.pattern = checked;
     cd.clearance = a.clearance;
     ori_collider *c = NULL;
     ori_error err;
@@ -195,16 +211,16 @@ static int run(int argc, char **argv)
     ori_cloud_result cr;
     double cloud_distance = a.clearance > 0.0 ? a.clearance : a.spacing;
     if (ori_collider_create(&cd, &c, &err) != ORI_OK || ori_collider_check(c, s.positions, &r, &err) != ORI_OK) {
-        rc = cli_input_error("collide", a.path, &err);
+        rc = cli_input_error("collide", path, &err);
     } else if (a.has_cloud) {
         ori_cloud_def cl = ori_default_cloud_def();
         cl.spacing = a.spacing;
         cl.distance = cloud_distance;
         if (ori_collider_cloud(c, s.positions, &cl, &cr, &err) != ORI_OK) {
             if (err.status == ORI_ERR_RANGE)
-                rc = cli_input_fail("collide", a.path, "--cloud: %s", err.message);
+                rc = cli_input_fail("collide", path, "--cloud: %s", err.message);
             else
-                rc = cli_input_error("collide", a.path, &err);
+                rc = cli_input_error("collide", path, &err);
         }
     }
     if (rc == CLI_EXIT_OK) {
@@ -213,37 +229,44 @@ static int run(int argc, char **argv)
         rc = r.collides ? CLI_EXIT_NEGATIVE : CLI_EXIT_OK;
     }
     ori_collider_destroy(c);
-    cli_collide_state_free(&s);
+    cli_state_free(&s);
     return rc;
 }
 
 const cli_command cli_cmd_collide = {
     "collide",
     "self-collision of a folded state: penetrating and touching faces, least clearance",
-    "usage: orikin collide FILE [--frame N] [--clearance D] [--cloud SPACING] [--json]\n"
+    "usage: orikin collide IN [--frame N | fold options | --at T] [--clearance D]\n"
+    "                      [--cloud SPACING] [--json]\n"
     "\n"
-    "Check one folded state of FILE for self-collision, exactly: every pair of faces that\n"
+    "Check one folded state of IN for self-collision, exactly: every pair of faces that\n"
     "penetrate, every pair that only touch (an edge or a corner on a face, layers stacked flat),\n"
     "and the least clearance between faces that share no vertex, with a witness point. Faces\n"
     "that share a vertex or a crease meet there by construction and are only checked away from\n"
-    "it. A folded form (3D vertices_coords) is checked as it is; a crease pattern with\n"
-    "edges_foldAngle is first posed by forward kinematics (an error when its loops do not\n"
-    "close). Tolerances are relative to the pattern's size (docs/collision.md).\n"
+    "it. The state is named as for render and export: a FOLD frame (a folded form with 3D\n"
+    "vertices_coords is checked as it is; a crease pattern with edges_foldAngle is first posed\n"
+    "by forward kinematics, an error when its loops do not close), the last step of a fold\n"
+    "(the options of `orikin fold`), or an instant of a fold sequence SEQ.json (--at T).\n"
+    "To check a whole motion, use `orikin fold` or `orikin sequence` (they check by default).\n"
+    "Tolerances are relative to the pattern's size (docs/collision.md).\n"
     "Exit 0 clean, 1 collides, 3 bad input (a non-planar face, nothing to pose).\n"
     "\n"
     "options:\n"
-    "  --frame N          check frame N; default 0\n"
+    "  --frame N          the state in frame N of a FOLD file (default 0)\n"
+    "  --fix F --drive E --to DEG [--from DEG] [--step DEG] [--lock E1,...] [--solver S]\n"
+    "  [--linear L]       a fold (see orikin fold); the state is its last step\n"
+    "  --at T             the instant T of a fold sequence (default: its end)\n"
     "  --clearance D      faces sharing no vertex closer than D collide too (a length >= 0;\n"
     "                     thickness-aware checks)\n"
     "  --cloud SPACING    also run the thesis' cloud of proximity: samples SPACING apart on\n"
     "                     every face, sample pairs closer than D (or SPACING without --clearance)\n"
-    "  --json             print {file, frame, posed, faces, collides, pairs, touching,\n"
+    "  --json             print {file, frame, state, posed, faces, collides, pairs, touching,\n"
     "                     min_clearance, witness, clearance_faces, clearance, tolerance,\n"
     "                     contacts: [{faces, kind, adjacent, stacked, point, distance}],\n"
     "                     candidate_pairs, cloud: {spacing, distance, points, point_pairs,\n"
     "                     min_distance, faces: [{faces, point_pairs, distance}]} | null}\n"
     "\n"
-    "example: orikin collide examples/patterns/two-flaps.fold --frame 1 --cloud 0.25\n",
+    "example: orikin collide examples/open-corner.seq.json --at 1.5 --clearance 0.01\n",
     run,
     NULL,
 };

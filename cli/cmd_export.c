@@ -127,6 +127,7 @@ static int run(int argc, char **argv)
                area);
         if (thickness > 0.0) printf(", closed solid %g thick, volume %.10g", thickness, area * thickness);
         printf(" (%s)\n", ori_mesh_format_name(format));
+        if (format == ORI_MESH_OBJ) printf("wrote its materials (front, back%s) beside it, .mtl\n", thickness > 0.0 ? ", rim" : "");
     }
 done:
     if (poses && poses != m.poses) free(poses);
@@ -166,6 +167,7 @@ const cli_command cli_cmd_export = {
     "  --json               print {output, format, state, vertices, faces, triangles, area,\n"
     "                       thickness, volume, keyframes, duration_s}\n"
     "  -o OUT               the mesh; its format by the suffix .obj, .stl, .ply, .gltf or .glb\n"
+    "                       (an OBJ comes with its materials in OUT.mtl beside it)\n"
     "\n"
     "example: orikin export examples/open-corner.seq.json --animate -o open-corner.glb\n",
     run,

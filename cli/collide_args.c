@@ -1,5 +1,5 @@
-// Collision checks in the CLI: one state for `orikin collide`, and the motion checks that
-// `orikin fold` and `orikin sequence` run after solving.
+// Collision checks in the CLI: the motion checks that `orikin fold` and `orikin sequence` run
+// after solving (`orikin collide` names its state with state_args.h, as render and export do).
 #include "collide_args.h"
 
 #include <math.h>
@@ -7,84 +7,6 @@
 #include <string.h>
 
 #include "progress.h"
-
-void cli_collide_state_free(cli_collide_state *s)
-{
-    ori_pattern_destroy(s->pattern);
-    ori_fold_destroy(s->doc);
-    free(s->positions);
-    memset(s, 0, sizeof *s);
-}
-
-int cli_collide_state_load(const char *cmd, const char *path, int frame, cli_collide_state *s)
-{
-    memset(s, 0, sizeof *s);
-    s->frame = frame;
-    ori_error err;
-    if (ori_fold_load_file(path, &s->doc, &err) != ORI_OK) return cli_input_error(cmd, path, &err);
-    int frames = ori_fold_frame_count(s->doc);
-    if (frame < 0 || frame >= frames) {
-        cli_collide_state_free(s);
-        return cli_input_fail(cmd, path, "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
-    }
-    ori_build_def bd = ori_default_build_def();
-    bd.check_planarity = false;
-    bd.compute_faces = false;
-    if (ori_fold_get_pattern(s->doc, frame, &bd, &s->pattern, &err) != ORI_OK) {
-        int rc = cli_input_error(cmd, path, &err);
-        cli_collide_state_free(s);
-        return rc;
-    }
-    bool folded = ori_pattern_is_3d(s->pattern) || ori_pattern_is_folded_form(s->pattern) ||
-                  ori_fold_frame_is_folded_form(s->doc, frame);
-    int nv = ori_pattern_vertex_count(s->pattern);
-    s->positions = malloc(sizeof(ori_v3) * (size_t)(nv + 1));
-    if (folded) {
-        if (ori_pattern_face_count(s->pattern) == 0) {
-            cli_collide_state_free(s);
-            return cli_input_fail(cmd, path, "faces_vertices: frame %d is a folded form without faces", frame);
-        }
-        for (int v = 0; v < nv; ++v) s->positions[v] = ori_pattern_vertex(s->pattern, v);
-        return CLI_EXIT_OK;
-    }
-    if (!ori_pattern_has_fold_angles(s->pattern)) {
-        cli_collide_state_free(s);
-        return cli_input_fail(cmd, path,
-                              "frame %d has neither 3D vertices_coords nor edges_foldAngle: there is no folded state to check",
-                              frame);
-    }
-    // A crease pattern with fold angles: build it as a flat sheet (faces traced when missing) and
-    // pose it by forward kinematics from face 0.
-    ori_pattern_destroy(s->pattern);
-    s->pattern = NULL;
-    if (ori_fold_get_pattern(s->doc, frame, NULL, &s->pattern, &err) != ORI_OK) {
-        int rc = cli_input_error(cmd, path, &err);
-        cli_collide_state_free(s);
-        return rc;
-    }
-    ori_mechanism_def md = ori_default_mechanism_def();
-    md.pattern = s->pattern;
-    ori_mechanism *m = NULL;
-    if (ori_mechanism_create(&md, &m, &err) != ORI_OK) {
-        int rc = cli_input_error(cmd, path, &err);
-        cli_collide_state_free(s);
-        return rc;
-    }
-    int ne = ori_pattern_edge_count(s->pattern);
-    double *angles = malloc(sizeof(double) * (size_t)(ne + 1));
-    for (int e = 0; e < ne; ++e) angles[e] = ori_pattern_edge(s->pattern, e).fold_angle_rad;
-    ori_status st = ori_mechanism_pose_state(m, angles, 0, ori_rigid_identity(), NULL, s->positions, NULL, &err);
-    free(angles);
-    ori_mechanism_destroy(m);
-    if (st != ORI_OK) {
-        char buf[512];
-        ori_error_format(&err, buf, sizeof buf);
-        cli_collide_state_free(s);
-        return cli_input_fail(cmd, path, "edges_foldAngle: frame %d cannot be posed: %s", frame, buf);
-    }
-    s->posed = true;
-    return CLI_EXIT_OK;
-}
 
 int cli_collide_option(const char *cmd, int argc, char **argv, int *i, cli_collide_opts *o)
 {

@@ -1,6 +1,6 @@
-// Collision checks in the CLI: loading one state for `orikin collide` (a folded form, or a
-// crease pattern posed from its fold angles), and the glue that lets `orikin fold` and
-// `orikin sequence` check their motion (--no-collisions, --clearance D; verdict "collision").
+// Collision checks in the CLI: the glue that lets `orikin fold` and `orikin sequence` check
+// their motion (--no-collisions, --clearance D; verdict "collision"). `orikin collide` names its
+// one state with state_args.h, as render and export do.
 #ifndef ORI_CLI_COLLIDE_ARGS_H
 #define ORI_CLI_COLLIDE_ARGS_H
 
@@ -8,21 +8,6 @@
 
 #include "cli.h"
 #include "report.h"
-
-// One state to check: the pattern whose faces are checked and the world vertex positions.
-typedef struct cli_collide_state {
-    ori_fold *doc;
-    ori_pattern *pattern;  // the frame's pattern (faces, vertices)
-    ori_v3 *positions;     // vertex_count entries
-    bool posed;            // a crease pattern posed by forward kinematics (else a folded form)
-    int frame;
-} cli_collide_state;
-
-// Load frame `frame` of FILE as a state: a folded form (3D vertices_coords or foldedForm) as
-// it is, a crease pattern with edges_foldAngle posed by forward kinematics (fixed face 0).
-// Prints a one-line error and returns CLI_EXIT_INPUT on failure, else CLI_EXIT_OK.
-int cli_collide_state_load(const char *cmd, const char *path, int frame, cli_collide_state *s);
-void cli_collide_state_free(cli_collide_state *s);
 
 // The collision options of fold and sequence.
 typedef struct cli_collide_opts {

@@ -149,6 +149,7 @@ void cli_state_free(cli_state *s)
         ori_pattern_destroy(s->pattern);
         ori_fold_destroy(s->doc);
     }
+    ori_pattern_destroy(s->frame_pattern);
     free(s->pattern_path);
     free(s->positions);
     free(s->poses);
@@ -198,14 +199,25 @@ static int frame_error(const char *cmd, const char *path, int frame, const ori_e
 static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, cli_state *s)
 {
     ori_error err;
-    if (ori_fold_load_file(a->path, &s->doc, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
-    s->frame_count = ori_fold_frame_count(s->doc);
-    int frame = a->frame;
-    if (frame >= s->frame_count)
-        return cli_input_fail(cmd, a->path, "frame %d does not exist (frames 0 to %d)", frame, s->frame_count - 1);
     ori_pattern *p0 = NULL, *pf = NULL;
-    if (ori_fold_get_pattern(s->doc, 0, NULL, &p0, &err) != ORI_OK)
-        return frame == 0 ? cli_input_error(cmd, a->path, &err) : frame_error(cmd, a->path, 0, &err);
+    int frame = a->frame;
+    ori_format fmt = ori_format_from_path(a->path);
+    if (fmt == ORI_FORMAT_SVG || fmt == ORI_FORMAT_OPX || fmt == ORI_FORMAT_CP) {
+        // A drawing: its crease pattern, read as every command reads it (one frame).
+        if (a->has_frame) return cli_usage(cmd, "--frame applies to .fold input, not to %s", a->path);
+        cli_input in;
+        cli_input_init(&in);
+        int rc = cli_input_load(cmd, a->path, &in, &s->doc, &p0);
+        if (rc != CLI_EXIT_OK) return rc;
+        s->frame_count = 1;
+    } else {
+        if (ori_fold_load_file(a->path, &s->doc, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
+        s->frame_count = ori_fold_frame_count(s->doc);
+        if (frame >= s->frame_count)
+            return cli_input_fail(cmd, a->path, "frame %d does not exist (frames 0 to %d)", frame, s->frame_count - 1);
+        if (ori_fold_get_pattern(s->doc, 0, NULL, &p0, &err) != ORI_OK)
+            return frame == 0 ? cli_input_error(cmd, a->path, &err) : frame_error(cmd, a->path, 0, &err);
+    }
     if (frame != 0) {
         ori_build_def bd = ori_default_build_def();
         bd.check_planarity = false;
@@ -247,8 +259,8 @@ static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, 
         if (st == ORI_ERR_ARGUMENT)
             return cli_input_fail(cmd, a->path,
                                   "frame %d: its edges_foldAngle are not a folded state (the loops around the vertices do "
-                                  "not close): draw the crease pattern with --view cp, or fold it with --fix, --drive and --to",
-                                  frame);
+                                  "not close): %sfold it with --fix, --drive and --to",
+                                  frame, strcmp(cmd, "render") == 0 ? "draw the crease pattern with --view cp, or " : "");
         if (st != ORI_OK) return frame_error(cmd, a->path, frame, &err);
         return CLI_EXIT_OK;
     }
@@ -262,7 +274,7 @@ static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, 
         for (int e = 0; e < ne; ++e) s->angles[e] = ori_pattern_edge(p, e).fold_angle_rad;
     }
     if (pf && is_flat_pattern(p0) && same_topology(p0, pf)) {
-        ori_pattern_destroy(pf);
+        s->frame_pattern = pf;
         s->pattern = p0;
         s->has_flat = true;
         ori_mechanism_def md = ori_default_mechanism_def();
@@ -396,6 +408,18 @@ int cli_state_load(const char *cmd, const cli_state_args *a, bool need_pose, cli
     return rc;
 }
 
+int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_opts *o, cli_collision *out)
+{
+    memset(out, 0, sizeof *out);
+    if (s->source == CLI_STATE_SEQUENCE)
+        return cli_collide_record(cmd, s->path, o, s->pattern, s->record, out);
+    if (s->source != CLI_STATE_FOLD) return CLI_EXIT_OK;
+    ori_motion_def def;
+    int rc = cli_fold_def(cmd, &s->args->fold, &s->kin, &def);
+    if (rc != CLI_EXIT_OK) return rc;
+    return cli_collide_motion(cmd, s->path, o, s->pattern, s->mech, &def, s->motion, out);
+}
+
 // --- motions --------------------------------------------------------------------------------
 
 void cli_motion_free(cli_motion *m)
@@ -456,7 +480,9 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
             for (int e = 0; e < E; ++e) stored.angles[(size_t)i * E + e] = ori_pattern_edge(p, e).fold_angle_rad;
         else all_angles = false;
         ori_pattern_destroy(p);
+        // orikin sequence writes "orikin:time"; orikin simulate "frame_time" (seconds).
         char *t = ori_fold_get_custom(s->doc, k, "orikin:time");
+        if (!t) t = ori_fold_get_custom(s->doc, k, "frame_time");
         double tv;
         if (t && cli_parse_double(t, &tv)) stored.times[i] = tv;
         else all_timed = false;

@@ -4,6 +4,7 @@
 //
 //   IN.fold [--frame N]               a frame: a folded form (3D vertices_coords), or a crease
 //                                     pattern posed from its edges_foldAngle (the loops must close)
+//   IN.svg | IN.opx | IN.cp           a drawing's crease pattern (read as every command reads it)
 //   IN.fold --fix F --drive E --to D  a fold (the kinematics options of `orikin fold`); the state
 //     [--from --step --lock --solver --linear --frame N]     is the fold's last frame
 //   SEQ.json [--at T]                 a fold sequence at time T (default: its end)
@@ -17,6 +18,7 @@
 #ifndef ORI_CLI_STATE_ARGS_H
 #define ORI_CLI_STATE_ARGS_H
 
+#include "collide_args.h"
 #include "kin_args.h"
 
 #define CLI_STATE_MAX_FOLD_ARGS 64
@@ -59,6 +61,8 @@ typedef struct cli_state {
     const char *path;        // IN as given
     char *pattern_path;      // the FOLD file (a sequence's pattern, resolved against SEQ.json's folder)
     ori_pattern *pattern;    // topology to draw: the flat crease pattern when there is one, else the folded form
+    ori_pattern *frame_pattern; // a folded-form frame drawn on frame 0's crease pattern: the frame's own
+                                // pattern (its size sets the collision tolerances, as the studio's), else NULL
     bool has_flat;           // pattern is a flat crease pattern (texture coordinates, the crease view)
     ori_mechanism *mech;     // the crease pattern's mechanism, or NULL
     ori_v3 *positions;       // world position of every vertex (NULL: not posed, need_pose was false)
@@ -87,6 +91,11 @@ int cli_state_load(const char *cmd, const cli_state_args *a, bool need_pose, cli
 // The library's view of the state.
 ori_state_view cli_state_view(const cli_state *s);
 void cli_state_free(cli_state *s);
+
+// Check the motion of a fold or a sequence for self-collision as `orikin fold` and `orikin
+// sequence` do (o: --no-collisions, --clearance D); a FOLD frame is not checked (out->checked
+// false). Prints the error and returns its exit code on failure, else CLI_EXIT_OK.
+int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_opts *o, cli_collision *out);
 
 // A motion as frames: its natural keyframes (samples = 0: the frames of a multi-frame FOLD, a
 // fold's output steps, a sequence's recorded states) or samples ≥ 2 frames evenly spaced in

@@ -530,6 +530,58 @@ Test(collision, strip_tip_meets_the_standing_flap_at_cos_rho_equal_minus_g_over_
     strip_free(&s);
 }
 
+// Large steps: the tip passes through the standing flap between two clean states (120° is
+// short of the contact, 180° only touches: the flap lies on the middle panel across the standing
+// flap's hinge line), and neither state has the flaps over each other, so the layer sides say
+// nothing. The sweep's reach sends the step to half steps, and the first contact is found where
+// the closed form puts it, for steps of 60° and of the whole 180°.
+Test(collision, a_tip_passing_through_within_one_large_step_is_found_at_its_first_contact)
+{
+    double g = 1.0, l1 = 2.0, l2 = 1.5;
+    double want = acos(-g / l2) / DEG;
+    strip s = strip_make(g, l1, l2);
+    ori_collider *c = collider_of(s.p, 0);
+    double steps[2] = {60.0, 180.0};
+    for (int i = 0; i < 2; ++i) {
+        double *start = calloc((size_t)ori_mechanism_edge_count(s.m), sizeof(double));
+        start[s.left_crease] = 90 * DEG;
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = s.middle;
+        d.start_angles_rad = start;
+        d.driven_edge = s.right_crease;
+        d.to_rad = 180 * DEG;
+        d.step_rad = steps[i] * DEG;
+        d.locked_edges = &s.left_crease;
+        d.locked_count = 1;
+        ori_motion *mo = NULL;
+        ori_error err;
+        cr_assert_eq(ori_motion_solve(s.m, &d, &mo, &err), ORI_OK, "%s", err.message);
+        int n = ori_motion_frame_count(mo);
+        cr_assert_eq(n, (int)(180.0 / steps[i]) + 1);
+        // every stored state is clean on its own
+        for (int k = 0; k < n; ++k) {
+            ori_v3 pos[8];
+            ori_motion_frame_vertices(mo, k, pos);
+            ori_collision_result r;
+            cr_assert_eq(ori_collider_check(c, pos, &r, &err), ORI_OK, "%s", err.message);
+            cr_assert(!r.collides, "step %g: state %d is clean", steps[i], k);
+        }
+        ori_collision_motion_def cd = ori_default_collision_motion_def();
+        ori_collision_event ev;
+        cr_assert_eq(ori_collision_check_motion(c, s.m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+        cr_assert(ev.collides, "step %g", steps[i]);
+        cr_assert_eq(ev.frame, n - 1);
+        cr_assert_float_eq(ev.drive_rad / DEG, want, CONTACT_TOL_DEG, "step %g: %.9f", steps[i], ev.drive_rad / DEG);
+        cr_assert_geq(ev.drive_rad / DEG, want - 1e-9);
+        cr_assert_eq(ev.contact.kind, ORI_CONTACT_PENETRATING);
+        cr_assert_float_eq(ev.contact.point.z, sqrt(l2 * l2 - g * g), 1e-6);
+        ori_motion_destroy(mo);
+        free(start);
+    }
+    ori_collider_destroy(c);
+    strip_free(&s);
+}
+
 Test(collision, strip_flap_meets_the_standing_flaps_top_edge_at_180_minus_atan_l1_over_g)
 {
     double g = 1.0, l1 = 1.0, l2 = 3.0; // l2² = 9 > g² + l1² = 2

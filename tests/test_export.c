@@ -173,6 +173,62 @@ Test(export, obj_reads_back_to_the_posed_vertices)
     state_free(&s);
 }
 
+// A file OBJ comes with its material library: "mtllib" names the .mtl beside it, and every
+// "usemtl" of the OBJ (front, back; rim for a solid) is defined there with the colours asked for.
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s", path);
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *t = malloc((size_t)n + 1);
+    cr_assert_eq(fread(t, 1, (size_t)n, f), (size_t)n);
+    t[n] = '\0';
+    fclose(f);
+    return t;
+}
+
+Test(export, obj_files_name_their_material_library_and_it_defines_every_material)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    char *dir = test_tmpdir(), obj[512], mtl[512];
+    snprintf(obj, sizeof obj, "%s/corner.obj", dir);
+    snprintf(mtl, sizeof mtl, "%s/corner.mtl", dir);
+    for (int solid = 0; solid < 2; ++solid) {
+        ori_export_def d = ori_default_export_def();
+        d.front = (ori_rgb){1.0, 0.0, 0.0};
+        d.back = (ori_rgb){0.0, 0.0, 1.0};
+        d.thickness = solid ? 0.05 : 0.0;
+        ori_error err;
+        cr_assert_eq(ori_mesh_export_file(m, &d, obj, &err), ORI_OK, "%s", err.message);
+        char *o = slurp(obj), *l = slurp(mtl);
+        cr_assert(strstr(o, "\nmtllib corner.mtl\n"), "the OBJ names its library");
+        int used = 0;
+        for (char *line = strtok(o, "\n"); line; line = strtok(NULL, "\n")) {
+            if (strncmp(line, "usemtl ", 7) != 0) continue;
+            char want[64];
+            snprintf(want, sizeof want, "newmtl %s\n", line + 7);
+            cr_assert(strstr(l, want), "%s is defined", line + 7);
+            used++;
+        }
+        cr_assert_eq(used, solid ? 3 : 2);
+        cr_assert(strstr(l, "newmtl front\nKa 1 0 0\nKd 1 0 0\n"), "%s", l);
+        cr_assert(strstr(l, "newmtl back\nKa 0 0 1\nKd 0 0 1\n"), "%s", l);
+        free(o);
+        free(l);
+    }
+    // An OBJ that cannot be written leaves no library behind.
+    ori_export_def d = ori_default_export_def();
+    ori_error err;
+    cr_assert_eq(ori_mesh_export_file(m, &d, "/nonexistent-dir/x.obj", &err), ORI_ERR_IO);
+    cr_assert_eq(access("/nonexistent-dir/x.mtl", F_OK), -1);
+    test_tmpdir_remove(dir);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}
+
 typedef struct stl {
     ori_v3 (*tri)[3];
     int n;

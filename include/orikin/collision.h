@@ -174,13 +174,13 @@ typedef struct ori_collision_event {
     double drive_rad;     ///< drive angle at first contact, within drive_tol_rad after the true contact
     double time;          ///< record: sequence time at first contact; motion: the frame fraction frame − 1 + s
     ori_contact contact;  ///< the colliding pair and its witness at first contact
-    int states_solved;    ///< intermediate states solved by the bisection
+    int states_solved;    ///< intermediate states solved (half steps of the sweep check and the bisection)
 } ori_collision_event;
 
 /// Check a solved fold frame by frame; def is the fold it was solved with (driven crease, locks,
-/// solver). When a frame collides, the first contact between the last clean frame and it is
-/// found by bisection on the drive angle, each trial state solved with ori_motion_solve from the
-/// last clean state. Fails when a trial state cannot be solved or a state is bad (as
+/// solver). Steps whose swept faces could meet in between are checked in halves
+/// (docs/collision.md); the first contact is found by bisection on the drive angle, each trial
+/// state solved with ori_motion_solve from the last clean state. Fails when a trial state cannot be solved or a state is bad (as
 /// ori_collider_check); the collider then holds the contacts of the colliding state.
 ORI_API ori_status ori_collision_check_motion(ori_collider *collider, const ori_mechanism *mechanism,
                                               const ori_motion_def *def, const ori_motion *motion,

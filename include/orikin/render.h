@@ -13,7 +13,7 @@
 /// ori_camera_fit, ori_camera_project, ori_image_format_from_path, ori_image_format_name,
 /// ori_default_render_def, ori_render_camera, ori_render_image, ori_render_file,
 /// ori_default_gif_def, ori_gif_write, ori_mesh_format_from_path, ori_mesh_format_name,
-/// ori_default_export_def, ori_mesh_export, ori_mesh_export_file.
+/// ori_default_export_def, ori_mesh_export, ori_mesh_export_mtl, ori_mesh_export_file.
 ///
 /// Frames. World coordinates are the pattern's (the flat sheet in z = 0, +z its front side).
 /// Images have x to the right and y downwards, in pixels (PNG, GIF) or points (SVG, PDF).
@@ -268,6 +268,7 @@ typedef struct ori_export_def {
     int keyframe_count;              ///< glTF/GLB: 0 = the current pose; ≥ 1 = an animation, one node per face
     const double *keyframe_times_s;  ///< keyframe_count increasing times (seconds)
     const ori_rigid *keyframe_poses; ///< keyframe_count × face_count poses (keyframe-major) mapping reference positions (ori_mesh_reference_vertex) to world positions
+    const char *obj_mtllib;          ///< OBJ: the material library file its "mtllib" line names (NULL: none; ori_mesh_export_file sets it)
     int internal_value;              ///< set by ori_default_export_def; do not change
 } ori_export_def;
 
@@ -279,8 +280,12 @@ ORI_API ori_export_def ori_default_export_def(void);
 /// times that do not increase.
 ORI_API ori_status ori_mesh_export(const ori_mesh *mesh, const ori_export_def *def, void **data, size_t *size,
                                    ori_error *error);
+/// The OBJ material library (MTL text: materials front, back and rim with def's colours) into
+/// memory (free *data with ori_buffer_free).
+ORI_API ori_status ori_mesh_export_mtl(const ori_export_def *def, void **data, size_t *size, ori_error *error);
 /// Write the mesh to path atomically in the format of the path's extension (def->format when
-/// the extension is none of .obj, .stl, .ply, .gltf, .glb).
+/// the extension is none of .obj, .stl, .ply, .gltf, .glb). An OBJ comes with its material
+/// library beside it: path with .mtl for .obj (written first; removed if the OBJ fails).
 ORI_API ori_status ori_mesh_export_file(const ori_mesh *mesh, const ori_export_def *def, const char *path,
                                         ori_error *error);
 

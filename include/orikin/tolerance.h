@@ -421,5 +421,9 @@
 #define ORI_TOL_LOCKSET_RANK_REL 1e-9
 /// Symmetries of the flat sheet map vertices onto vertices within this × the diagonal. Unitless.
 #define ORI_TOL_SYMMETRY_REL 1e-8
+/// Along a motion, a step whose sweep leaves a pair of faces undecided (near each other, not
+/// lying over each other on one side at both ends) is checked in halves down to a drive bracket
+/// of this: 1e-3 degree. Radians.
+#define ORI_TOL_SWEEP_SPLIT_RAD (1e-3 * 3.14159265358979323846 / 180.0)
 
 #endif

@@ -3,10 +3,13 @@
 // B meet: the side of one face relative to the other's front, over the part of it that lies
 // over the other (narrow.c, col_face_side). A pair above at A and below at B (or the reverse)
 // passed through each other in between even when neither state shows a crossing; stacked
-// layers (coplanar, no side) keep the order they had when they came together. The first
-// colliding step is then bisected on the drive: trial states are solved through the public API
-// (ori_motion_solve from the last clean state, or ori_record_at), clean midpoints advance A
-// and its remembered orders, colliding ones become B, until B − A is below the drive tolerance.
+// layers (coplanar, no side) keep the order they had when they came together. The boxes are
+// swept with each face's bulge (its path modelled as the screw motion between its poses), and
+// a pair whose sides do not decide it and that is nearer at both ends than the two faces can
+// travel is checked again in half steps. The first colliding step is then bisected on the
+// drive: trial states are solved through the public API (ori_motion_solve from the last clean
+// state, or ori_record_at), clean midpoints advance A and its remembered orders, colliding ones
+// become B, until B − A is below the drive tolerance.
 #include "../core/hash.h"
 #include "collision_internal.h"
 
@@ -101,7 +104,11 @@ typedef struct col_step {
         bool crease;  // convex faces joined by a crease: they turn about its line, never through each other
         col_side sa;  // side of a relative to b's front at the clean state (NONE when not needed)
         col_side qb;  // side at B from a's vertices alone (col_face_side_quick)
+        bool adjacent; // the faces share a vertex
+        signed char open; // not decided by the layer sides (1; -1: and touching at B): the sweep decides
     } *pairs;
+    double *reach, *bulge; // per face over the step: path-length bound and bulge off the chords
+    double *pair_reach;    // per tracked pair: how far a can travel relative to b
     int npairs, pair_cap;
     memo mem, next;  // orders at the clean state A, and at B when B is clean
 } col_step;
@@ -115,6 +122,8 @@ static void step_init(col_step *s, ori_collider *c)
     s->tmp.geom = ori__alloc(sizeof(col_geom) * (size_t)c->face_count);
     s->tmp.boxes = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
     s->swept = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
+    s->reach = ori__alloc(sizeof(double) * (size_t)c->face_count);
+    s->bulge = ori__alloc(sizeof(double) * (size_t)c->face_count);
 }
 
 static void step_free(col_step *s)
@@ -125,6 +134,9 @@ static void step_free(col_step *s)
     ori__free(s->tmp.geom);
     ori__free(s->tmp.boxes);
     ori__free(s->swept);
+    ori__free(s->reach);
+    ori__free(s->bulge);
+    ori__free(s->pair_reach);
     ori__free(s->pairs);
     memo_free(&s->mem);
     memo_free(&s->next);
@@ -133,10 +145,15 @@ static void step_free(col_step *s)
 static bool collect_pair(void *user, int a, int b)
 {
     col_step *s = user;
+    int cap = s->pair_cap;
     ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
+    if (s->pair_cap != cap) s->pair_reach = ori__realloc(s->pair_reach, sizeof(double) * (size_t)s->pair_cap);
     s->pairs[s->npairs].a = a;
     s->pairs[s->npairs].b = b;
-    s->pairs[s->npairs].crease = col_adjacency_of(s->c, a, b) == COL_ADJ_CREASE;
+    col_adjacency adj = col_adjacency_of(s->c, a, b);
+    s->pairs[s->npairs].crease = adj == COL_ADJ_CREASE;
+    s->pairs[s->npairs].adjacent = adj != COL_ADJ_NONE;
+    s->pairs[s->npairs].open = 0;
     s->pairs[s->npairs].sa = COL_SIDE_NONE;
     s->npairs++;
     return true;
@@ -186,14 +203,127 @@ static ori_contact first_colliding(const ori_collider *c)
     return c->contacts[pick];
 }
 
+static double turn_angle(ori_v3 u, ori_v3 v)
+{
+    return atan2(ori_v3_norm(ori_v3_cross(u, v)), ori_v3_dot(u, v));
+}
+
+// A frame fixed on face f, the same material frame in every state (the checker's in-plane frame
+// may pick another vertex when two are equally far): origin at the face's first vertex, e1
+// towards the first vertex not at the same place (chosen in state A, kept in B), n its normal.
+typedef struct body_frame {
+    ori_v3 o, e1, e2, n;
+} body_frame;
+
+static int frame_vertex(const ori_collider *c, int f, const ori_v3 *pos)
+{
+    int first = c->face_off[f];
+    ori_v3 p0 = pos[c->face_verts[first]];
+    int best = first + 1;
+    double far = -1.0;
+    for (int i = first + 1; i < c->face_off[f + 1]; ++i) {
+        double d = ori_v3_norm(ori_v3_sub(pos[c->face_verts[i]], p0));
+        if (d > 1e-3 * c->diagonal) return i;
+        if (d > far) {
+            far = d;
+            best = i;
+        }
+    }
+    return best;
+}
+
+static body_frame body_frame_of(const ori_collider *c, int f, int j, const ori_v3 *pos, ori_v3 n)
+{
+    body_frame b;
+    b.o = pos[c->face_verts[c->face_off[f]]];
+    ori_v3 s = ori_v3_sub(pos[c->face_verts[j]], b.o);
+    b.n = n;
+    b.e1 = ori_v3_normalize(ori_v3_sub(s, ori_v3_scale(n, ori_v3_dot(s, n))));
+    b.e2 = ori_v3_cross(n, b.e1);
+    return b;
+}
+
+// A rotation by φ turns some vector of an orthonormal frame by at least θ with
+// sin(θ/2) ≥ sin(φ/2)·√(2/3): the frames' largest turn bounds φ. Returns the arc factor
+// k = (φ/2)/sin(φ/2) (a path's length over its chord).
+static double arc_factor(const body_frame *fa, const body_frame *fb)
+{
+    double th = turn_angle(fa->n, fb->n), t1 = turn_angle(fa->e1, fb->e1), t2 = turn_angle(fa->e2, fb->e2);
+    if (t1 > th) th = t1;
+    if (t2 > th) th = t2;
+    double sphi = sin(0.5 * th) / sqrt(2.0 / 3.0);
+    double half = sphi >= 1.0 ? 0.5 * ORI_PI : asin(sphi);
+    return half > 1e-9 ? half / sin(half) : 1.0;
+}
+
+// How far each face can travel over the step A → B (the checker prepared at B, s->a at A). The
+// face's path is modelled as the screw motion between its two poses: a point whose chord is c
+// travels at most c·k along an arc that bulges at most c·√(k² − 1)/2 off its chord, k from the
+// face's rotation (arc_factor). The chord of any point of a face is at most its vertices'
+// largest (the displacement is affine in the point).
+static void sweep_bounds(col_step *s, const ori_v3 *b)
+{
+    const ori_collider *c = s->c;
+    for (int f = 0; f < c->face_count; ++f) {
+        int j = frame_vertex(c, f, s->a.pos);
+        body_frame fa = body_frame_of(c, f, j, s->a.pos, s->a.geom[f].n), fb = body_frame_of(c, f, j, b, c->geom[f].n);
+        double k = arc_factor(&fa, &fb);
+        double chord = 0.0;
+        for (int i = c->face_off[f]; i < c->face_off[f + 1]; ++i) {
+            int v = c->face_verts[i];
+            double d = ori_v3_norm(ori_v3_sub(b[v], s->a.pos[v]));
+            if (d > chord) chord = d;
+        }
+        s->reach[f] = chord * k;
+        s->bulge[f] = 0.5 * chord * sqrt(k * k - 1.0);
+    }
+}
+
+// x at B back to A by the body's motion: oA + Σ ((x − oB)·eB_i) eA_i.
+static ori_v3 body_back(const body_frame *fa, const body_frame *fb, ori_v3 x)
+{
+    ori_v3 y = ori_v3_sub(x, fb->o);
+    double u = ori_v3_dot(y, fb->e1), v = ori_v3_dot(y, fb->e2), w = ori_v3_dot(y, fb->n);
+    return ori_v3_add(fa->o, ori_v3_add(ori_v3_scale(fa->e1, u), ori_v3_add(ori_v3_scale(fa->e2, v), ori_v3_scale(fa->n, w))));
+}
+
+// How far face a can travel relative to face b over the step: a's motion seen from b (b's own
+// motion undone), bounded as in sweep_bounds. Two neighbouring faces of a sheet that moves as a
+// whole move little relative to each other even when both travel far.
+static double relative_reach(const col_step *s, int a, int b, const ori_v3 *pos_b)
+{
+    const ori_collider *c = s->c;
+    int ja = frame_vertex(c, a, s->a.pos), jb = frame_vertex(c, b, s->a.pos);
+    body_frame aA = body_frame_of(c, a, ja, s->a.pos, s->a.geom[a].n), aB = body_frame_of(c, a, ja, pos_b, c->geom[a].n);
+    body_frame bA = body_frame_of(c, b, jb, s->a.pos, s->a.geom[b].n), bB = body_frame_of(c, b, jb, pos_b, c->geom[b].n);
+    // a's frame at B seen from b, against a's frame at A
+    body_frame rel;
+    rel.o = body_back(&bA, &bB, aB.o);
+    rel.n = ori_v3_sub(body_back(&bA, &bB, ori_v3_add(aB.o, aB.n)), rel.o);
+    rel.e1 = ori_v3_sub(body_back(&bA, &bB, ori_v3_add(aB.o, aB.e1)), rel.o);
+    rel.e2 = ori_v3_sub(body_back(&bA, &bB, ori_v3_add(aB.o, aB.e2)), rel.o);
+    double k = arc_factor(&aA, &rel);
+    double chord = 0.0;
+    for (int i = c->face_off[a]; i < c->face_off[a + 1]; ++i) {
+        int v = c->face_verts[i];
+        double d = ori_v3_norm(ori_v3_sub(body_back(&bA, &bB, pos_b[v]), s->a.pos[v]));
+        if (d > chord) chord = d;
+    }
+    return chord * k;
+}
+
 // Check the step from the clean state a (orders s->mem) to b. On a collision *hit is set and
 // *contact tells where; the checker is left prepared at b in every case, and when b is clean,
-// s->next holds the orders at b.
-static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool *hit, ori_contact *contact,
+// s->next holds the orders at b. *split is set when b is clean but some pair of faces sharing
+// no vertex could have met between a and b: the layer sides do not decide it (the faces do not
+// lie over each other at both ends on one side) and they are nearer at both ends than their
+// sweeps' reach. The caller then checks the step in halves.
+static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool *hit, bool *split, ori_contact *contact,
                              ori_error *error)
 {
     ori_collider *c = s->c;
     *hit = false;
+    *split = false;
     ori_status st;
     // A's geometry is kept from the previous step (computed here only for the first one).
     if (!s->a.valid) {
@@ -206,15 +336,17 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     int F = c->face_count;
     double near = c->tol_touch > c->clearance ? c->tol_touch : c->clearance;
     double margin = near > s->a.tol_touch ? near : s->a.tol_touch;
+    sweep_bounds(s, b);
     for (int f = 0; f < F; ++f) {
         const col_box *x = &s->a.boxes[f], *y = &c->boxes[f];
         col_box *w = &s->swept[f];
-        w->lo.x = x->lo.x < y->lo.x ? x->lo.x : y->lo.x;
-        w->lo.y = x->lo.y < y->lo.y ? x->lo.y : y->lo.y;
-        w->lo.z = x->lo.z < y->lo.z ? x->lo.z : y->lo.z;
-        w->hi.x = x->hi.x > y->hi.x ? x->hi.x : y->hi.x;
-        w->hi.y = x->hi.y > y->hi.y ? x->hi.y : y->hi.y;
-        w->hi.z = x->hi.z > y->hi.z ? x->hi.z : y->hi.z;
+        double h = s->bulge[f];
+        w->lo.x = (x->lo.x < y->lo.x ? x->lo.x : y->lo.x) - h;
+        w->lo.y = (x->lo.y < y->lo.y ? x->lo.y : y->lo.y) - h;
+        w->lo.z = (x->lo.z < y->lo.z ? x->lo.z : y->lo.z) - h;
+        w->hi.x = (x->hi.x > y->hi.x ? x->hi.x : y->hi.x) + h;
+        w->hi.y = (x->hi.y > y->hi.y ? x->hi.y : y->hi.y) + h;
+        w->hi.z = (x->hi.z > y->hi.z ? x->hi.z : y->hi.z) + h;
     }
     s->npairs = 0;
     col_bvh_build(&s->bvh, s->swept, F);
@@ -239,10 +371,12 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     for (int i = 0; i < s->npairs; ++i) {
         struct tracked *t = &s->pairs[i];
         t->sa = COL_SIDE_NONE;
+        t->open = 0;
         if (t->crease) continue;
         col_side qa = col_face_side_quick(c, t->a, t->b);
         if ((qa == COL_SIDE_ABOVE || qa == COL_SIDE_BELOW) && qa == t->qb) continue;
         t->sa = col_face_side(c, t->a, t->b, NULL);
+        t->open = t->adjacent ? 0 : 1; // until the sides at both ends agree
     }
     geom_swap(c, &s->a); // back to B
     memo_clear(&s->next);
@@ -252,9 +386,13 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         uint64_t key = ori__pair_key(s->pairs[i].a, s->pairs[i].b);
         col_side was = s->pairs[i].sa == COL_SIDE_FLAT ? memo_get(&s->mem, key) : s->pairs[i].sa;
         if (was != COL_SIDE_ABOVE && was != COL_SIDE_BELOW) continue;
-        if (s->pairs[i].qb == was) continue; // still strictly on that side: no flip, not stacked
+        if (s->pairs[i].qb == was) { // still strictly on that side: no flip, not stacked
+            s->pairs[i].open = 0;
+            continue;
+        }
         ori_v3 p;
         col_side now = col_face_side(c, s->pairs[i].a, s->pairs[i].b, &p);
+        if (now == was || now == COL_SIDE_FLAT) s->pairs[i].open = 0;
         if (now == COL_SIDE_FLAT) memo_put(&s->next, key, (unsigned char)was);
         bool flipped = (was == COL_SIDE_ABOVE && now == COL_SIDE_BELOW) || (was == COL_SIDE_BELOW && now == COL_SIDE_ABOVE);
         // report the first flipped pair in (face_a, face_b) order
@@ -275,7 +413,34 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         contact->stacked = s->pairs[flip].sa == COL_SIDE_FLAT;
         contact->collides = true;
         contact->point = flip_point;
+        return ORI_OK;
     }
+    // The pairs left open: could they have met within the step? Not when they are farther apart
+    // than a's reach relative to b at either end, nor when they touch at both ends (a contact
+    // the states classify).
+    int open = 0;
+    for (int i = 0; i < s->npairs; ++i) {
+        struct tracked *t = &s->pairs[i];
+        if (!t->open) continue;
+        double reach = relative_reach(s, t->a, t->b, b);
+        s->pair_reach[i] = reach;
+        ori_v3 pa, pb;
+        double d = col_face_distance(c, t->a, t->b, reach, &pa, &pb);
+        t->open = d >= reach ? 0 : d <= c->tol_touch ? -1 : 1; // -1: touching at B, decided below with A
+        open += t->open != 0;
+    }
+    if (open == 0) return ORI_OK;
+    geom_swap(c, &s->a);
+    for (int i = 0; i < s->npairs && !*split; ++i) {
+        struct tracked *t = &s->pairs[i];
+        if (!t->open) continue;
+        double reach = s->pair_reach[i];
+        ori_v3 pa, pb;
+        double d = col_face_distance(c, t->a, t->b, reach, &pa, &pb);
+        bool touching_b = t->open < 0;
+        if (d < reach && !(touching_b && d <= c->tol_touch)) *split = true;
+    }
+    geom_swap(c, &s->a);
     return ORI_OK;
 }
 
@@ -299,50 +464,106 @@ typedef struct col_source {
     void *user;
 } col_source;
 
-typedef struct bisect_out {
+// The walk over one step, from the clean state A (parameter lo, positions *pa) to the frame at
+// x1 (positions pk, drive d1): targets are checked from A; a clean target whose sweep leaves a
+// pair undecided is halved first (down to a bracket of split_tol in the drive); a clean,
+// decided one becomes A; a colliding one becomes the bracket's end hi, and the bracket is
+// bisected until the drive bracket is at most tol. So the contact found is the first one along
+// the motion, not merely one within the step.
+typedef struct walk_out {
+    bool collides;
     double x, drive;
     ori_contact contact;
     int solved;
-} bisect_out;
+} walk_out;
 
-// Bisect [lo, hi] (lo clean at pos_a with orders s->mem, hi colliding with contact hit) until
-// the drive bracket |drive(hi) − drive(lo)| is at most tol; drive_per_x converts.
-static ori_status bisect(col_step *s, const col_source *src, ori_v3 *pos_a, ori_v3 *pos_t, ori_v3 *pos_hi, double lo,
-                         double hi, double drive_hi, double drive_per_x, double tol, ori_contact hit, bisect_out *out,
-                         ori_error *error)
+#define WALK_STACK 64
+
+typedef ori_status col_prepare_fn(void *user, int k, double *per, ori_error *error);
+
+static ori_status walk_step(col_step *s, const col_source *src, col_prepare_fn *prepare, int k_frame, ori_v3 **pa,
+                            ori_v3 **pt, ori_v3 **ph, const ori_v3 *pk, double lo, double x1, double d1, double tol,
+                            double split_tol, walk_out *out, ori_error *error)
 {
-    out->solved = 0;
-    while (fabs(hi - lo) * drive_per_x > tol) {
-        double mid = 0.5 * (lo + hi);
-        if (mid == lo || mid == hi) break;
-        double drive;
-        ori_status st = src->solve(src->user, mid, pos_t, &drive, error);
-        if (st != ORI_OK) return st;
-        out->solved++;
-        bool h;
+    // The drive's rate per unit of the parameter, and the source's start state, are prepared
+    // only when the step needs a state between its frames.
+    bool prepared = false;
+    double drive_per_x = 0.0;
+#define WALK_PREPARE()                                                                                                 \
+    do {                                                                                                               \
+        if (!prepared) {                                                                                               \
+            ori_status pst = prepare(src->user, k_frame, &drive_per_x, error);                                         \
+            if (pst != ORI_OK) return pst;                                                                             \
+            prepared = true;                                                                                           \
+        }                                                                                                              \
+    } while (0)
+    size_t bytes = sizeof(ori_v3) * (size_t)s->c->vertex_count;
+    double stack[WALK_STACK];
+    int top = 0;
+    stack[top++] = x1;
+    bool have_hit = false;
+    double hi = x1, drive_hi = d1;
+    ori_contact hit_contact;
+    memset(&hit_contact, 0, sizeof hit_contact);
+    memset(out, 0, sizeof *out);
+    for (;;) {
+        if (top == 0) {
+            if (!have_hit) return ORI_OK; // clean up to x1
+            WALK_PREPARE();
+            double mid = 0.5 * (lo + hi);
+            if (fabs(hi - lo) * drive_per_x <= tol || mid == lo || mid == hi) break;
+            stack[top++] = mid;
+        }
+        double x = stack[top - 1], drive = d1;
+        bool solved = false;
+        if (x == x1 && !have_hit) {
+            memcpy(*pt, pk, bytes);
+        } else {
+            WALK_PREPARE();
+            ori_status st = src->solve(src->user, x, *pt, &drive, error);
+            if (st != ORI_OK) return st;
+            out->solved++;
+            solved = true;
+        }
+        bool h, split;
         ori_contact k;
-        st = step_check(s, pos_a, pos_t, &h, &k, error);
+        ori_status st = step_check(s, *pa, *pt, &h, &split, &k, error);
         if (st != ORI_OK) return st;
         if (h) {
-            hi = mid;
+            have_hit = true;
+            hi = x;
             drive_hi = drive;
-            hit = k;
-            memcpy(pos_hi, pos_t, sizeof(ori_v3) * (size_t)s->c->vertex_count);
-        } else {
-            lo = mid;
-            memcpy(pos_a, pos_t, sizeof(ori_v3) * (size_t)s->c->vertex_count);
-            step_advance(s, pos_a);
-            src->commit(src->user);
+            hit_contact = k;
+            ori_v3 *t = *ph;
+            *ph = *pt;
+            *pt = t;
+            top = 0; // the targets beyond x no longer matter
+            continue;
         }
+        if (split) WALK_PREPARE();
+        double mid = 0.5 * (lo + x);
+        if (split && fabs(x - lo) * drive_per_x > split_tol && mid != lo && mid != x && top < WALK_STACK) {
+            stack[top++] = mid;
+            continue;
+        }
+        ori_v3 *t = *pa;
+        *pa = *pt;
+        *pt = t;
+        step_advance(s, *pa);
+        if (solved) src->commit(src->user);
+        lo = x;
+        top--;
     }
+#undef WALK_PREPARE
     // Leave the checker with the contacts of the colliding state.
-    ori_status st = col_state_prepare(s->c, pos_hi, error);
+    ori_status st = col_state_prepare(s->c, *ph, error);
     if (st != ORI_OK) return st;
     ori_collision_result r;
     col_check_prepared(s->c, false, &r);
+    out->collides = true;
     out->x = hi;
     out->drive = drive_hi;
-    out->contact = hit;
+    out->contact = hit_contact;
     return ORI_OK;
 }
 
@@ -364,10 +585,10 @@ typedef struct run_out {
     int solved;
 } run_out;
 
-// Walk the frames; on the first colliding step call prepare_bisect(k) (which also gives the
-// drive's rate of change per unit of the parameter on that step) and bisect it.
+// Walk the frames step by step (walk_step); prepare_bisect(k) readies the source for states
+// between frames k − 1 and k and gives the drive's rate of change per unit of the parameter.
 static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collision_motion_def *check,
-                             ori_status (*prepare_bisect)(void *user, int k, double *per, ori_error *error),
+                             col_prepare_fn *prepare_bisect,
                              const col_source *src, run_out *out, ori_error *error)
 {
     memset(out, 0, sizeof *out);
@@ -393,36 +614,28 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
             }
         }
     }
+    ori_v3 *ph = ori__alloc(bytes);
     for (int k = 1; st == ORI_OK && !out->collides && k < fr->count; ++k) {
         if (check->progress && !check->progress((double)(k - 1) / (double)(fr->count - 1), check->progress_user)) {
             st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
             break;
         }
         fr->vertices(fr->src, k, pb);
-        bool hit;
-        ori_contact contact;
-        st = step_check(&s, pa, pb, &hit, &contact, error);
-        if (st != ORI_OK) break;
-        if (!hit) {
-            ori_v3 *t = pa;
-            pa = pb;
-            pb = t;
-            step_advance(&s, pa);
-            continue;
-        }
         double x0 = fr->param(fr->src, k - 1), x1 = fr->param(fr->src, k), d1 = fr->drive(fr->src, k);
-        double per = 0.0;
-        if ((st = prepare_bisect(src->user, k, &per, error)) != ORI_OK) break;
-        bisect_out bo;
-        st = bisect(&s, src, pa, pt, pb, x0, x1, d1, per, check->drive_tol_rad, contact, &bo, error);
+        walk_out wo;
+        st = walk_step(&s, src, prepare_bisect, k, &pa, &pt, &ph, pb, x0, x1, d1, check->drive_tol_rad,
+                       ORI_TOL_SWEEP_SPLIT_RAD, &wo, error);
         if (st != ORI_OK) break;
-        out->collides = true;
-        out->frame = k;
-        out->x = bo.x;
-        out->drive = bo.drive;
-        out->contact = bo.contact;
-        out->solved = bo.solved;
+        out->solved += wo.solved;
+        if (wo.collides) {
+            out->collides = true;
+            out->frame = k;
+            out->x = wo.x;
+            out->drive = wo.drive;
+            out->contact = wo.contact;
+        }
     }
+    ori__free(ph);
     if (st == ORI_OK && check->progress) check->progress(1.0, check->progress_user);
     step_free(&s);
     ori__free(pa);

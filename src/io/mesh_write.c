@@ -54,6 +54,7 @@ ori_export_def ori_default_export_def(void)
     d.keyframe_count = 0;
     d.keyframe_times_s = NULL;
     d.keyframe_poses = NULL;
+    d.obj_mtllib = NULL;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -245,6 +246,7 @@ static const char *part_name[ORI__PART_COUNT] = {"front", "back", "rim"};
 static void write_obj(const ori_mesh *m, const ori_export_def *def, ori__text *t)
 {
     ori__text_printf(t, "# orikin %s: posed sheet, %d faces\n", ori_version_string(), m->face_count);
+    if (def->obj_mtllib) ori__text_printf(t, "mtllib %s\n", def->obj_mtllib);
     if (!(def->thickness > 0.0)) {
         ori__text_puts(t, "# two-sided sheet: vertex i is FOLD vertex i-1; groups front and back\no sheet\n");
         for (int v = 0; v < m->vertex_count; ++v) {
@@ -428,17 +430,82 @@ ori_status ori_mesh_export(const ori_mesh *m, const ori_export_def *def, void **
     return ORI_OK;
 }
 
+static void put_rgb(ori__text *t, const char *key, ori_rgb c)
+{
+    ori__text_printf(t, "%s ", key);
+    ori__text_real(t, c.r);
+    ori__text_puts(t, " ");
+    ori__text_real(t, c.g);
+    ori__text_puts(t, " ");
+    ori__text_real(t, c.b);
+    ori__text_puts(t, "\n");
+}
+
+ori_status ori_mesh_export_mtl(const ori_export_def *def, void **data, size_t *size, ori_error *error)
+{
+    ORI_ASSERT(def && data && size);
+    ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
+    (void)error;
+    ori__text t = {NULL, 0, 0};
+    ori__text_reserve(&t, 0);
+    ori__text_printf(&t, "# orikin %s: materials of the OBJ sheet (front = the side facing +z in the flat sheet)\n",
+                     ori_version_string());
+    ori_rgb colour[ORI__PART_COUNT] = {def->front, def->back, def->edge};
+    for (int i = 0; i < ORI__PART_COUNT; ++i) {
+        ori__text_printf(&t, "\nnewmtl %s\n", part_name[i]);
+        put_rgb(&t, "Ka", colour[i]);
+        put_rgb(&t, "Kd", colour[i]);
+        ori__text_puts(&t, "Ks 0 0 0\nd 1\nillum 1\n");
+    }
+    *data = t.data;
+    *size = t.len;
+    return ORI_OK;
+}
+
+// path with its extension (".obj") replaced by ".mtl"; its base name in *base.
+static char *mtl_path_of(const char *path, const char **base)
+{
+    size_t n = strlen(path);
+    char *p = ori__alloc(n + 5);
+    memcpy(p, path, n + 1);
+    char *dot = strrchr(p, '.');
+    char *slash = strrchr(p, '/');
+    if (!dot || (slash && dot < slash)) dot = p + n;
+    strcpy(dot, ".mtl");
+    *base = slash ? p + (slash - p) + 1 : p;
+    return p;
+}
+
 ori_status ori_mesh_export_file(const ori_mesh *m, const ori_export_def *def, const char *path, ori_error *error)
 {
     ORI_ASSERT(def && path);
     ori_export_def d = *def;
     ori_mesh_format by_path = ori_mesh_format_from_path(path);
     if (by_path != ORI_MESH_UNKNOWN) d.format = by_path;
-    void *data = NULL;
-    size_t size = 0;
+    char *mtl = NULL;
+    const char *mtl_base = NULL;
+    if (d.format == ORI_MESH_OBJ) {
+        mtl = mtl_path_of(path, &mtl_base);
+        if (strcmp(mtl, path) == 0) {
+            ori__free(mtl); // an OBJ named .mtl: no library beside it
+            mtl = NULL;
+        } else {
+            d.obj_mtllib = mtl_base;
+        }
+    }
+    void *data = NULL, *mdata = NULL;
+    size_t size = 0, msize = 0;
     ori_status st = ori_mesh_export(m, &d, &data, &size, error);
-    if (st != ORI_OK) return st;
-    st = ori_file_write_atomic(path, data, size, error);
+    if (st == ORI_OK && mtl) st = ori_mesh_export_mtl(&d, &mdata, &msize, error);
+    bool mtl_written = false;
+    if (st == ORI_OK && mtl) {
+        st = ori_file_write_atomic(mtl, mdata, msize, error);
+        mtl_written = st == ORI_OK;
+    }
+    if (st == ORI_OK) st = ori_file_write_atomic(path, data, size, error);
+    if (st != ORI_OK && mtl_written) remove(mtl);
     ori__free(data);
+    ori__free(mdata);
+    ori__free(mtl);
     return st;
 }
