@@ -78,6 +78,79 @@ ORI_API const ori_v2 *ori_linkage_motion_frame(const ori_linkage_motion *motion,
 /// True when frame k is the configuration of an event (an alignment located by root-finding).
 ORI_API bool ori_linkage_motion_frame_is_event(const ori_linkage_motion *motion, int frame);
 
+// --- polyhedral surfaces to nets ---------------------------------------------------------------
+
+/// A polyhedral surface: vertices and faces (consistently oriented, manifold), coplanar
+/// neighbours merged into one polygon face.
+typedef struct ori_mesh ori_mesh;
+
+/// Make a surface from arrays: coords (vertex_count entries), faces as vertex cycles
+/// face_vertices[face_start[f] .. face_start[f + 1]) (face_start has face_count + 1 entries).
+/// Fails (error names the face, field "faces_vertices") on degenerate faces (fewer than three
+/// distinct vertices, zero area), polygons off their plane by more than 1e-6 × the diagonal,
+/// edges shared by more than two faces (non-manifold) and inconsistently oriented neighbours.
+/// Destroy with ori_unfold_mesh_destroy.
+ORI_API ori_status ori_unfold_mesh_create(const ori_v3 *coords, int vertex_count, const int *face_start,
+                                          const int *face_vertices, int face_count, ori_mesh **out, ori_error *error);
+/// Load a surface from an OBJ (v, f), STL (ASCII or binary; vertices welded by equal
+/// coordinates) or FOLD (frame 0's 3D vertices_coords and faces_vertices) file, by extension.
+ORI_API ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *error);
+/// Destroy a surface; NULL is a no-op.
+ORI_API void ori_unfold_mesh_destroy(ori_mesh *mesh);
+/// Number of faces after merging coplanar neighbours.
+ORI_API int ori_unfold_mesh_face_count(const ori_mesh *mesh);
+/// Number of vertices.
+ORI_API int ori_unfold_mesh_vertex_count(const ori_mesh *mesh);
+
+/// Parameters of an unfolding; get them from ori_default_unfold_def().
+typedef struct ori_unfold_def {
+    int tries;          ///< spanning trees tried (steepest edge, random, flattest first in turn), ≥ 1
+    unsigned seed;      ///< seed of the random directions and weights
+    bool all;           ///< also enumerate every spanning tree (small shapes) and count distinct nets
+    int all_max_faces;  ///< --all is skipped above this many faces (distinct_nets −1)
+    int internal_value; ///< set by ori_default_unfold_def; do not change
+} ori_unfold_def;
+
+/// Defaults: 50 tries, seed 1, no enumeration, enumeration up to 24 faces.
+ORI_API ori_unfold_def ori_default_unfold_def(void);
+
+/// Summary of an unfolding.
+typedef struct ori_unfold_result {
+    int pieces;               ///< 1 when a net without overlap was found, else the pieces of the split
+    int faces;                ///< faces of the net (merged)
+    int input_faces;          ///< faces of the input
+    int overlaps;             ///< overlapping face pairs within a piece (0 on success)
+    int tries;                ///< trees tried
+    int best_try;             ///< the try that gave the net (0-based)
+    bool refolded;            ///< the net was folded back (one piece)
+    double max_refold_error;  ///< largest vertex distance of the refolded net to the shape / the diagonal; −1 when not refolded
+    bool motion_collides;     ///< folding all creases together (20 steps) made faces penetrate
+    int distinct_nets;        ///< with all: overlap-free nets up to congruence (rotations, reflections); −1 otherwise
+    int spanning_trees;       ///< with all: spanning trees enumerated
+    int overlap_free_trees;   ///< with all: of which without overlap
+} ori_unfold_result;
+
+/// Opaque net: the crease pattern and its relation to the shape.
+typedef struct ori_unfold_net ori_unfold_net;
+
+/// Unfold a surface: try spanning trees of the face graph until one lays out without overlap
+/// (else split the best into pieces), make the crease pattern (cut edges B, creases M or V with
+/// the fold angles of the shape) and fold it back. Destroy with ori_unfold_net_destroy.
+ORI_API ori_status ori_unfold_solve(const ori_mesh *mesh, const ori_unfold_def *def, ori_unfold_net **out,
+                                    ori_error *error);
+/// Destroy a net; NULL is a no-op.
+ORI_API void ori_unfold_net_destroy(ori_unfold_net *net);
+/// The summary by value.
+ORI_API ori_unfold_result ori_unfold_net_result(const ori_unfold_net *net);
+/// The net as a built flat crease pattern (owned by the net): face f is merged face f.
+ORI_API const ori_pattern *ori_unfold_net_pattern(const ori_unfold_net *net);
+/// Input faces making up net face `face` into out (capacity cap); returns their count.
+ORI_API int ori_unfold_net_face_source(const ori_unfold_net *net, int face, int *out, int cap);
+/// The cut edge glued to net edge `edge` when folded, or −1 (creases and open boundary).
+ORI_API int ori_unfold_net_glue(const ori_unfold_net *net, int edge);
+/// The input vertex a net vertex folds onto.
+ORI_API int ori_unfold_net_vertex_source(const ori_unfold_net *net, int vertex);
+
 #ifdef __cplusplus
 }
 #endif
