@@ -286,7 +286,7 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
             int s = F.start[f], k = F.start[f + 1] - s;
             int convex = 0;
             for (int i = 0; i < k; ++i)
-                if (orient(L, F.v[s + (i + k - 1) % k], F.v[s + i], F.v[s + (i + 1) % k]) > 0) convex++;
+                if (orient(L, F.v[s + (i + k - 1) % k], F.v[s + i], F.v[s + (i + 1) % k]) >= 0) convex++;
             if (convex <= 3) continue;
             bad = true;
             for (int gap = 2; gap <= k / 2 + 1 && !added; ++gap)

@@ -1,0 +1,143 @@
+// unfold-linkage: Streinu's expansive motions. Every kept frame of every motion is checked:
+// bar lengths kept (1e-9 relative), no vertex–vertex distance decreases (beyond 1e-9 of the
+// size), no two bars cross (exact predicate), and the last frame is straight or convex.
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support.h"
+#include "unfold/unfold_internal.h"
+
+#define PI 3.14159265358979323846
+
+typedef struct lcase {
+    ori_v2 *p;
+    int n, m;
+    int *e;
+} lcase;
+
+static lcase make(const ori_v2 *p, int n, bool closed)
+{
+    lcase c = {malloc(sizeof(ori_v2) * (size_t)n), n, closed ? n : n - 1, malloc(sizeof(int) * 2 * (size_t)n)};
+    for (int i = 0; i < n; ++i) c.p[i] = p[i];
+    for (int i = 0; i < c.m; ++i) c.e[2 * i] = i, c.e[2 * i + 1] = (i + 1) % n;
+    return c;
+}
+
+static void check_motion(const lcase *c, bool closed)
+{
+    ori_linkage_def def = ori_default_linkage_def();
+    def.coords = c->p, def.vertex_count = c->n, def.edges = c->e, def.edge_count = c->m;
+    def.steps_per_event = 4;
+    ori_linkage_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_OK, "%s", err.message);
+    ori_linkage_result r = ori_linkage_motion_result(mo);
+    cr_assert_eq(r.kind, closed ? ORI_LINKAGE_POLYGON : ORI_LINKAGE_CHAIN);
+    cr_assert(r.final_ok);
+    double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+    for (int i = 0; i < c->n; ++i)
+        lo_x = fmin(lo_x, c->p[i].x), hi_x = fmax(hi_x, c->p[i].x), lo_y = fmin(lo_y, c->p[i].y), hi_y = fmax(hi_y, c->p[i].y);
+    double size = hypot(hi_x - lo_x, hi_y - lo_y);
+    int F = ori_linkage_motion_frame_count(mo);
+    cr_assert_gt(F, 1);
+    for (int f = 0; f < F; ++f) {
+        const ori_v2 *p = ori_linkage_motion_frame(mo, f);
+        for (int k = 0; k < c->m; ++k) {
+            int a = c->e[2 * k], b = c->e[2 * k + 1];
+            double L0 = ori_v2_norm(ori_v2_sub(c->p[a], c->p[b])), L = ori_v2_norm(ori_v2_sub(p[a], p[b]));
+            cr_assert_leq(fabs(L - L0) / L0, 1e-9, "frame %d bar %d: length %.17g vs %.17g", f, k, L, L0);
+        }
+        for (int k = 0; k < c->m; ++k)
+            for (int j = k + 1; j < c->m; ++j) {
+                int a = c->e[2 * k], b = c->e[2 * k + 1], x = c->e[2 * j], y = c->e[2 * j + 1];
+                if (a == x || a == y || b == x || b == y) continue;
+                cr_assert(!ori__segments_intersect(p[a], p[b], p[x], p[y]), "frame %d: bars %d and %d cross", f, k, j);
+            }
+        if (f == 0) continue;
+        const ori_v2 *q = ori_linkage_motion_frame(mo, f - 1);
+        for (int a = 0; a < c->n; ++a)
+            for (int b = a + 1; b < c->n; ++b) {
+                double d = ori_v2_norm(ori_v2_sub(p[a], p[b])) - ori_v2_norm(ori_v2_sub(q[a], q[b]));
+                cr_assert_geq(d, -1e-9 * size, "frame %d: distance %d–%d decreases by %g", f, a, b, d);
+            }
+    }
+    // the last frame: straight chain (every joint at 180°) or convex polygon (one turning sign)
+    const ori_v2 *p = ori_linkage_motion_frame(mo, F - 1);
+    for (int i = 1; i + (closed ? 0 : 1) < c->n + (closed ? 1 : 0); ++i) {
+        ori_v2 a = ori_v2_sub(p[i % c->n], p[i - 1]), b = ori_v2_sub(p[(i + 1) % c->n], p[i % c->n]);
+        double s = ori_v2_cross(a, b) / (ori_v2_norm(a) * ori_v2_norm(b));
+        if (!closed) cr_assert_leq(fabs(s), 1e-9, "joint %d not straight: sin %g", i, s);
+    }
+    cr_assert_leq(r.max_length_error, 1e-9);
+    cr_assert_geq(r.min_distance_change, -1e-9 * size);
+    cr_assert_leq(r.max_event_residual, 1e-9);
+    ori_linkage_motion_destroy(mo);
+}
+
+static void free_case(lcase *c) { free(c->p), free(c->e); }
+
+
+Test(linkage, spiral_chain, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v2 p[40];
+    for (int i = 0; i < 40; ++i) {
+        double t = 0.5 * i, r = 0.3 + 0.15 * t;
+        p[i] = ori_v2_make(r * cos(t), r * sin(t));
+    }
+    lcase c = make(p, 40, false);
+    check_motion(&c, false);
+    free_case(&c);
+}
+
+Test(linkage, star_polygon, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v2 p[16];
+    for (int i = 0; i < 16; ++i) {
+        double r = i % 2 ? 1.0 : 0.4;
+        p[i] = ori_v2_make(r * cos(2 * PI * i / 16), r * sin(2 * PI * i / 16));
+    }
+    lcase c = make(p, 16, true);
+    check_motion(&c, true);
+    free_case(&c);
+}
+
+
+
+
+Test(linkage, refused, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v2 p[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 2}};
+    int tree[] = {0, 1, 0, 2, 0, 3};
+    int cross[] = {0, 2, 1, 3};
+    int dup_e[] = {0, 1, 1, 2};
+    ori_v2 dup_p[] = {{0, 0}, {1, 0}, {0, 0}};
+    ori_linkage_def def = ori_default_linkage_def();
+    ori_linkage_motion *mo = NULL;
+    ori_error err;
+    def.coords = p, def.vertex_count = 4, def.edges = tree, def.edge_count = 3;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_TOPOLOGY);
+    cr_assert_eq(err.element, 0);
+    cr_assert(strstr(err.message, "trees can lock"));
+    def.edges = cross, def.edge_count = 2;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_TOPOLOGY); // two separate bars
+    int chain_cross[] = {0, 2, 2, 1, 1, 3};
+    def.edges = chain_cross, def.edge_count = 3;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_CROSSING);
+    cr_assert_eq(err.element, 2);
+    def.coords = dup_p, def.vertex_count = 3, def.edges = dup_e, def.edge_count = 2;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_DUPLICATE);
+    cr_assert_eq(err.element, 2);
+    cr_assert_null(mo);
+}
+
+// The exact predicate decides what doubles cannot: nearly collinear points.
+Test(linkage, exact_orientation)
+{
+    ori_v2 a = {0.5, 0.5}, b = {12.0, 12.0}, c = {24.0, 24.0};
+    cr_assert_eq(ori__orient2d_exact(a, b, c), 0);
+    ori_v2 d = {24.0, nextafter(24.0, 25.0)};
+    cr_assert_eq(ori__orient2d_exact(a, b, d), 1);
+    ori_v2 e = {24.0, nextafter(24.0, 23.0)};
+    cr_assert_eq(ori__orient2d_exact(a, b, e), -1);
+}
