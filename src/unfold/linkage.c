@@ -17,7 +17,8 @@
 #include <orikin/unfold.h>
 
 #include "../core/core_internal.h"
-#include "../kinematics/kinematics_internal.h"
+#include <klu.h>
+
 #include "unfold_internal.h"
 
 #define EVENT_TOL_D 1e-12  // root-finding tolerance on the drive length, relative to the diagonal
@@ -260,6 +261,22 @@ static void faces_free(lk_faces *F) { ori__free(F->start), ori__free(F->v), ori_
 // Complete the graph to a pointed pseudo-triangulation: add valid edges inside the inner faces
 // that have more than three convex corners, shortest gaps first. excl_a–excl_b is never added.
 static int hull(const lk *L, int *out);
+
+// Smallest angle (as 1 − cos, monotone) between edge a–b and the edges at a and at b.
+static double edge_clearance(const lk *L, int a, int b)
+{
+    double worst = 2.0;
+    for (int end = 0; end < 2; ++end) {
+        int v = end ? b : a, o = end ? a : b;
+        ori_v2 d = ori_v2_normalize(ori_v2_sub(L->p[o], L->p[v]));
+        for (int i = L->adj_start[v]; i < L->adj_start[v + 1]; ++i) {
+            ori_v2 e = ori_v2_normalize(ori_v2_sub(L->p[L->adj[i]], L->p[v]));
+            worst = fmin(worst, 1.0 - ori_v2_dot(d, e));
+        }
+    }
+    return worst;
+}
+
 static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
 {
     int *h = ori__alloc(((size_t)L->n + 1) * 2 * sizeof *h);
@@ -267,7 +284,8 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
     build_adj(L, false);
     for (int i = 0; i < hk; ++i) {
         int a = h[i], b = h[(i + 1) % hk];
-        if ((a == excl_a && b == excl_b) || (a == excl_b && b == excl_a)) continue;
+        // a hull edge is in every pseudo-triangulation, even the one just removed at an event
+        // whose vertex stayed on the hull (a chain end swinging through the line of the edge)
         if (find_edge(L, a, b) < 0 && candidate_ok(L, a, b)) {
             add_edge(L, a, b, false, ori_v2_norm(ori_v2_sub(L->p[a], L->p[b])));
             build_adj(L, false);
@@ -289,17 +307,27 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
                 if (orient(L, F.v[s + (i + k - 1) % k], F.v[s + i], F.v[s + (i + 1) % k]) >= 0) convex++;
             if (convex <= 3) continue;
             bad = true;
-            for (int gap = 2; gap <= k / 2 + 1 && !added; ++gap)
-                for (int i = 0; i < k && !added; ++i) {
+            // Among the first valid candidates take the best conditioned: the largest of the
+            // smallest angles the new edge makes with the edges at its ends (near an event a valid
+            // but almost degenerate diagonal would leave a sliver and a singular framework).
+            int best_a = -1, best_b = -1, found = 0;
+            double best_score = -1.0;
+            for (int gap = 2; gap <= k / 2 + 1 && found < 32; ++gap)
+                for (int i = 0; i < k && found < 32; ++i) {
                     int a = F.v[s + i], b = F.v[s + (i + gap) % k];
                     if (a == b) continue;
                     if ((a == excl_a && b == excl_b) || (a == excl_b && b == excl_a)) continue;
+                    if ((a == best_a && b == best_b) || (a == best_b && b == best_a)) continue;
                     if (find_edge(L, a, b) >= 0) continue;
-                    if (candidate_ok(L, a, b)) {
-                        add_edge(L, a, b, false, ori_v2_norm(ori_v2_sub(L->p[a], L->p[b])));
-                        added = true;
-                    }
+                    if (!candidate_ok(L, a, b)) continue;
+                    found++;
+                    double score = edge_clearance(L, a, b);
+                    if (score > best_score) best_score = score, best_a = a, best_b = b;
                 }
+            if (best_a >= 0) {
+                add_edge(L, best_a, best_b, false, ori_v2_norm(ori_v2_sub(L->p[best_a], L->p[best_b])));
+                added = true;
+            }
         }
         if (!added && !bad) {
             faces_free(&F);
@@ -385,8 +413,11 @@ typedef struct lk_sys {
     int rows; // ne + 1 + 3
     int pin0, pin1;
     int kcol; // −1: drive row; else the held unknown
-    kin_sls *s;
-    int *colptr, *rowind;
+    int *colptr, *rowind; // Jᵀ in compressed columns (column = equation)
+    double *x;            // its values
+    klu_common kc;
+    klu_symbolic *sym;
+    klu_numeric *num;
 } lk_sys;
 
 static void sys_create(const lk *L, lk_sys *S, int kcol)
@@ -424,19 +455,23 @@ static void sys_create(const lk *L, lk_sys *S, int kcol)
     S->colptr[r++] = nz, S->rowind[nz++] = 2 * c0 + 1;
     S->colptr[r++] = nz, S->rowind[nz++] = 2 * c1, S->rowind[nz++] = 2 * c1 + 1;
     S->colptr[r] = nz;
-    S->s = ori__sls_create(2 * S->na, S->rows, S->colptr, S->rowind);
+    S->x = ori__alloc(((size_t)nz + 1) * sizeof *S->x);
+    klu_defaults(&S->kc);
+    S->sym = klu_analyze(S->rows, S->colptr, S->rowind, &S->kc);
+    S->num = NULL;
 }
 
 static void sys_destroy(lk_sys *S)
 {
-    ori__sls_destroy(S->s);
-    ori__free(S->col), ori__free(S->colptr), ori__free(S->rowind);
+    if (S->num) klu_free_numeric(&S->num, &S->kc);
+    if (S->sym) klu_free_symbolic(&S->sym, &S->kc);
+    ori__free(S->col), ori__free(S->colptr), ori__free(S->rowind), ori__free(S->x);
     memset(S, 0, sizeof *S);
 }
 
 static bool sys_factor(const lk *L, lk_sys *S, const ori_v2 *p)
 {
-    double *x = ori__sls_values(S->s);
+    double *x = S->x;
     int nz = 0;
     for (int k = 0; k <= L->ne; ++k) {
         if (k == L->ne && S->kcol >= 0) {
@@ -453,21 +488,22 @@ static bool sys_factor(const lk *L, lk_sys *S, const ori_v2 *p)
     }
     ori_v2 r = ori_v2_sub(p[S->pin1], p[S->pin0]);
     x[nz++] = 1.0, x[nz++] = 1.0, x[nz++] = -r.y, x[nz++] = r.x;
-    return ori__sls_factor(S->s, 0.0);
+    if (!S->sym) return false;
+    if (S->num) klu_free_numeric(&S->num, &S->kc);
+    S->num = klu_factor(S->colptr, S->rowind, S->x, S->sym, &S->kc);
+    return S->num != NULL && S->kc.status == KLU_OK;
 }
 
-// Solve J x = b (square, nonsingular) by the normal equations with one refinement step.
+// Solve J x = b (square): KLU factors Jᵀ (sparse LU with partial pivoting), its transposed
+// solve gives J x = b. False when the factor is singular or the solution not finite.
 static bool sys_solve(lk_sys *S, const double *b, double *out, double *w1, double *w2)
 {
-    int nu = 2 * S->na;
-    ori__sls_mult_t(S->s, b, w1);
-    if (!ori__sls_solve(S->s, w1, out)) return false;
-    ori__sls_mult(S->s, out, w2);
-    for (int r = 0; r < S->rows; ++r) w2[r] = b[r] - w2[r];
-    ori__sls_mult_t(S->s, w2, w1);
-    double *dx = w2 + S->rows;
-    if (!ori__sls_solve(S->s, w1, dx)) return false;
-    for (int i = 0; i < nu; ++i) out[i] += dx[i];
+    (void)w1, (void)w2;
+    int n = S->rows;
+    for (int i = 0; i < n; ++i) out[i] = b[i];
+    if (!klu_tsolve(S->sym, S->num, n, 1, out, &S->kc)) return false;
+    for (int i = 0; i < n; ++i)
+        if (!isfinite(out[i])) return false;
     return true;
 }
 
@@ -526,12 +562,24 @@ static bool project(lk_run *R, ori_v2 *p)
             double len = L->e[k].len;
             double f = 0.5 * (ori_v2_dot(d, d) - len * len);
             R->rhs[k] = -f;
-            worst = fmax(worst, fabs(f) / (len * len));
+            // relative length error; for bars much shorter than the linkage, relative to 1% of
+            // its size (the rounding of coordinates of that size)
+            worst = fmax(worst, fabs(f) / (len * fmax(len, 1e-2 * L->scale)));
         }
         R->rhs[L->ne] = R->rhs[L->ne + 1] = R->rhs[L->ne + 2] = R->rhs[L->ne + 3] = 0.0;
         if (worst <= NEWTON_TOL) return true;
-        if (!isfinite(worst) || worst > 1e-2) return false;
-        if (!sys_factor(L, S, p)) return false;
+        if (!isfinite(worst) || worst > 1e-2) {
+#ifdef LK_DEBUG
+            fprintf(stderr, "project: it %d worst %g\n", it, worst);
+#endif
+            return false;
+        }
+        if (!sys_factor(L, S, p)) {
+#ifdef LK_DEBUG
+            fprintf(stderr, "project: singular at it %d status %d\n", it, S->kc.status);
+#endif
+            return false;
+        }
         if (!sys_solve(S, R->rhs, R->sol, R->w1, R->w2)) return false;
         for (int q = 0; q < L->n; ++q)
             if (S->col[q] >= 0) p[q].x += R->sol[2 * S->col[q]], p[q].y += R->sol[2 * S->col[q] + 1];
@@ -607,6 +655,24 @@ static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
     if (complete(L, excl_a, excl_b, error) != ORI_OK) return -1;
     if (active_count(L) <= 2) return 0;
     if (L->ne != 2 * active_count(L) - 3) {
+#ifdef LK_DEBUG
+        build_adj(L, false);
+        lk_faces F = trace_faces(L);
+        for (int f = 0; f < F.count; ++f) {
+            int s0 = F.start[f], k = F.start[f + 1] - s0, convex = 0, straight = 0;
+            for (int i = 0; i < k; ++i) {
+                int o = orient(L, F.v[s0 + (i + k - 1) % k], F.v[s0 + i], F.v[s0 + (i + 1) % k]);
+                convex += o > 0, straight += o == 0;
+            }
+            fprintf(stderr, "face %d area %g convex %d straight %d:", f, F.area[f], convex, straight);
+            for (int i = 0; i < k; ++i) fprintf(stderr, " %d", F.v[s0 + i]);
+            fprintf(stderr, "\n");
+        }
+        for (int v = 0; v < L->n; ++v)
+            if (!L->frozen[v] && !pointed_list(L, v, L->adj + L->adj_start[v], L->adj_start[v + 1] - L->adj_start[v]))
+                fprintf(stderr, "non-pointed %d\n", v);
+        faces_free(&F);
+#endif
         ori__fail(error, ORI_ERR_INTERNAL, "pseudo-triangulation has %d edges on %d vertices (points not in general position)",
                   L->ne, active_count(L));
         return -1;
@@ -633,7 +699,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
     ori_v2 *t0 = ori__alloc((size_t)n * sizeof *t0), *t1 = ori__alloc((size_t)n * sizeof *t1);
     ori_v2 *p1 = ori__alloc((size_t)n * sizeof *p1);
     ori_v2 *p0 = ori__alloc((size_t)n * sizeof *p0), *pm = ori__alloc((size_t)n * sizeof *pm);
-    lk_watch *watch = ori__alloc((size_t)n * sizeof *watch);
+    lk_watch *watch = ori__alloc(((size_t)n + 1) * sizeof *watch);
     ori_status st = ORI_OK;
     push_frame(R, L->p, false);
     int rs = restructure(R, -1, -1, error);
@@ -684,8 +750,42 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                 }
             }
             if (h < 1e-13 * L->scale) {
-                st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: step underflow");
-                goto done;
+                // No step converges: the framework is at a degenerate configuration (two edges at
+                // a vertex aligned within rounding, e.g. a hull edge put back at an event). Treat
+                // the flattest angle as the event.
+                lk_watch flat = {-1, -1, -1};
+                double best = 1e-6;
+                for (int v = 0; v < n; ++v) {
+                    if (L->frozen[v]) continue;
+                    const int *nb = L->adj + L->adj_start[v];
+                    int deg = L->adj_start[v + 1] - L->adj_start[v];
+                    for (int i = 0; i < deg; ++i) {
+                        lk_watch cand = {v, nb[i], nb[(i + 1) % deg]};
+                        ori_v2 da = ori_v2_sub(L->p[cand.a], L->p[v]), db = ori_v2_sub(L->p[cand.b], L->p[v]);
+                        double sn = fabs(wedge_sine(L->p, cand));
+                        if (ori_v2_dot(da, db) < 0.0 && sn < best) best = sn, flat = cand;
+                    }
+                }
+                if (flat.v < 0) {
+#ifdef LK_DEBUG
+                    fprintf(stderr, "underflow: events %d na %d ne %d drive %d-%d kcol %d\n", R->M->result.events, active_count(L), L->ne, L->drv_a, L->drv_b, R->S.kcol);
+                    for (int v = 0; v < n; ++v) {
+                        if (L->frozen[v]) continue;
+                        const int *nb = L->adj + L->adj_start[v];
+                        int deg = L->adj_start[v + 1] - L->adj_start[v];
+                        for (int i = 0; i < deg; ++i) {
+                            lk_watch cand = {v, nb[i], nb[(i + 1) % deg]};
+                            double sn = wedge_sine(L->p, cand);
+                            if (fabs(sn) < 1e-3) fprintf(stderr, "  wedge %d: %d %d sine %g\n", v, cand.a, cand.b, sn);
+                        }
+                    }
+#endif
+                    st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: step underflow");
+                    goto done;
+                }
+                watch[nw] = flat;
+                ev = nw;
+                break;
             }
             if (!state_at(R, L->p, t0, h, p1)) {
                 h *= 0.5;
@@ -735,6 +835,17 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                 }
             }
             memcpy(L->p, pm, (size_t)n * sizeof *pm);
+            // Past the event in exact arithmetic too: the rounded sine may change sign before the
+            // exact orientation does; move on (doubling the overshoot) until the wedge is no longer
+            // reflex for the exact predicate.
+            {
+                lk_watch wf = watch[first];
+                double extra = fmax(hi - lo, EVENT_TOL_D * L->scale);
+                for (int it = 0; it < 40 && orient(L, wf.v, wf.a, wf.b) <= 0; ++it, extra *= 2.0) {
+                    if (!state_at(R, p0, t0, hi + extra, p1)) break;
+                    memcpy(L->p, p1, (size_t)n * sizeof *p1);
+                }
+            }
             int w_ev = first;
             double gmax = -INFINITY;
             for (int w = 0; w < nw; ++w) {
@@ -756,12 +867,16 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             int kk = (ea >= 0 && !L->e[ea].bar) ? ea : eb;
             if (kk >= 0) removed_a = L->e[kk].a, removed_b = L->e[kk].b;
         }
+#ifdef LK_DEBUG
+        fprintf(stderr, "EVENT v=%d a=%d b=%d orient=%d deg=%d bars=%d%d removed=%d-%d first=%d ev=%d\n", w.v, w.a, w.b, orient(L, w.v, w.a, w.b),
+                L->adj_start[w.v + 1] - L->adj_start[w.v], ea >= 0 && L->e[ea].bar, eb >= 0 && L->e[eb].bar, removed_a, removed_b, 0, ev);
+#endif
         handle_event(R, w.v, w.a, w.b);
         rs = restructure(R, removed_a, removed_b, error);
     }
     if (rs < 0) st = error ? error->status : ORI_ERR_INTERNAL;
 done:
-    if (R->S.s) sys_destroy(&R->S);
+    if (R->S.col) sys_destroy(&R->S);
     ori__free(t0), ori__free(t1), ori__free(p1), ori__free(p0), ori__free(pm), ori__free(watch);
     return st;
 }
