@@ -77,6 +77,58 @@ static void check_motion(const lcase *c, bool closed)
 
 static void free_case(lcase *c) { free(c->p), free(c->e); }
 
+// Random simple polygon: random points in the unit square, a random tour untangled by 2-opt
+// (reverse the path between two crossing edges until none cross).
+static void random_polygon(unsigned seed, int n, ori_v2 *p)
+{
+    srand(seed);
+    for (int i = 0; i < n; ++i) p[i] = ori_v2_make((double)rand() / RAND_MAX, (double)rand() / RAND_MAX);
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int i = 0; i < n; ++i)
+            for (int j = i + 2; j < n; ++j) {
+                if (i == 0 && j == n - 1) continue;
+                if (ori__segments_cross_properly(p[i], p[i + 1], p[j], p[(j + 1) % n])) {
+                    for (int a = i + 1, b = j; a < b; ++a, --b) {
+                        ori_v2 t = p[a];
+                        p[a] = p[b], p[b] = t;
+                    }
+                    changed = true;
+                }
+            }
+    }
+}
+
+Test(linkage, random_polygons, .init = test_leak_setup, .fini = test_leak_check, .timeout = 600)
+{
+    struct {
+        int n;
+        unsigned seed;
+    } cases[] = {{8, 1}, {8, 2}, {20, 1}, {20, 2}, {20, 3}, {20, 4}, {50, 1}};
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; ++k) {
+        ori_v2 p[64];
+        random_polygon(cases[k].seed, cases[k].n, p);
+        lcase c = make(p, cases[k].n, true);
+        check_motion(&c, true);
+        free_case(&c);
+    }
+}
+
+Test(linkage, random_chains, .init = test_leak_setup, .fini = test_leak_check, .timeout = 600)
+{
+    struct {
+        int n;
+        unsigned seed;
+    } cases[] = {{8, 1}, {8, 2}, {20, 1}, {20, 2}, {20, 3}, {20, 4}};
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; ++k) {
+        ori_v2 p[64];
+        random_polygon(cases[k].seed, cases[k].n, p);
+        lcase c = make(p, cases[k].n, false);
+        check_motion(&c, false);
+        free_case(&c);
+    }
+}
+
 
 Test(linkage, spiral_chain, .init = test_leak_setup, .fini = test_leak_check)
 {
@@ -104,6 +156,25 @@ Test(linkage, star_polygon, .init = test_leak_setup, .fini = test_leak_check)
 
 
 
+
+// A doubly wound polygon: a thin strip along a spiral of two turns (out along one spiral, back
+// along a parallel one), closed at both ends.
+Test(linkage, doubly_wound_polygon, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v2 p[64];
+    int n = 0, k = 30;
+    for (int i = 0; i < k; ++i) {
+        double t = 4 * PI * i / (k - 1), r = 1.0 + 0.4 * t / (2 * PI);
+        p[n++] = ori_v2_make(r * cos(t), r * sin(t));
+    }
+    for (int i = k - 1; i >= 0; --i) {
+        double t = 4 * PI * i / (k - 1) + 0.013, r = 1.15 + 0.4 * t / (2 * PI);
+        p[n++] = ori_v2_make(r * cos(t), r * sin(t));
+    }
+    lcase c = make(p, n, true);
+    check_motion(&c, true);
+    free_case(&c);
+}
 
 Test(linkage, refused, .init = test_leak_setup, .fini = test_leak_check)
 {

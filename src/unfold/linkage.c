@@ -22,7 +22,8 @@
 #include "unfold_internal.h"
 
 #define EVENT_TOL_D 1e-12  // root-finding tolerance on the drive length, relative to the diagonal
-#define NEWTON_TOL 1e-14   // relative residual of the squared edge lengths after projection
+#define NEWTON_TOL 1e-14   // relative length residual after projection
+#define NEWTON_FLOOR 1e-12 // accepted when Newton stalls at the rounding floor below this
 
 struct ori_linkage_motion {
     int n;
@@ -555,6 +556,7 @@ static bool project(lk_run *R, ori_v2 *p)
 {
     lk *L = R->L;
     lk_sys *S = &R->S;
+    double prev = INFINITY;
     for (int it = 0; it < 12; ++it) {
         double worst = 0.0;
         for (int k = 0; k < L->ne; ++k) {
@@ -567,7 +569,8 @@ static bool project(lk_run *R, ori_v2 *p)
             worst = fmax(worst, fabs(f) / (len * fmax(len, 1e-2 * L->scale)));
         }
         R->rhs[L->ne] = R->rhs[L->ne + 1] = R->rhs[L->ne + 2] = R->rhs[L->ne + 3] = 0.0;
-        if (worst <= NEWTON_TOL) return true;
+        if (worst <= NEWTON_TOL || (worst <= NEWTON_FLOOR && worst > 0.5 * prev)) return true;
+        prev = worst;
         if (!isfinite(worst) || worst > 1e-2) {
 #ifdef LK_DEBUG
             fprintf(stderr, "project: it %d worst %g\n", it, worst);
@@ -841,7 +844,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             {
                 lk_watch wf = watch[first];
                 double extra = fmax(hi - lo, EVENT_TOL_D * L->scale);
-                for (int it = 0; it < 40 && orient(L, wf.v, wf.a, wf.b) <= 0; ++it, extra *= 2.0) {
+                for (int it = 0; it < 20 && orient(L, wf.v, wf.a, wf.b) <= 0; ++it, extra *= 2.0) {
                     if (!state_at(R, p0, t0, hi + extra, p1)) break;
                     memcpy(L->p, p1, (size_t)n * sizeof *p1);
                 }
