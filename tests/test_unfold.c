@@ -2,9 +2,13 @@
 // (cube 11, tetrahedron 2, octahedron 11: the known numbers), every net found is folded back by
 // the kinematics onto the shape (1e-9 relative), and bad shapes are refused naming the face.
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "support.h"
+
+#define PI_2 1.57079632679489661923
 
 static ori_unfold_result unfold(const char *rel, bool all)
 {
@@ -134,5 +138,75 @@ Test(unfold, bad_shapes, .init = test_leak_setup, .fini = test_leak_check)
         cr_assert_eq(err.element, 0);
         cr_assert_str_eq(err.field, "faces_vertices");
         cr_assert_null(m);
+    }
+}
+
+// The command writes a FOLD net that orikin reads back: 6 faces, 5 creases and 7 cut edges on
+// each side (14 boundary edges, glued in pairs), each face with its input face.
+Test(unfold, cli_writes_net, .init = test_leak_setup, .fini = test_leak_check)
+{
+    char *dir = test_tmpdir();
+    char args[1024], path[512];
+    snprintf(path, sizeof path, "%s/net.fold", dir);
+    snprintf(args, sizeof args, "unfold tests/data/unfold/cube.obj -o '%s' --svg '%s/net.svg' --json", path, dir);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "\"pieces\":1"), "%s", out);
+    free(out);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_face_count(p), 6);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY), 14);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 5);
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge x = ori_pattern_edge(p, e);
+        if (x.assignment == ORI_ASSIGN_MOUNTAIN) cr_assert_float_eq(x.fold_angle_rad, -PI_2, 1e-12);
+    }
+    char *src = ori_fold_get_custom(doc, 0, "faces_orikin:source"), *glue = ori_fold_get_custom(doc, 0, "edges_orikin:glue");
+    cr_assert_not_null(src);
+    cr_assert_not_null(glue);
+    cr_assert(strstr(src, "[0]") && strstr(src, "[5]"), "%s", src);
+    ori_buffer_free(src), ori_buffer_free(glue);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    char svg[512];
+    snprintf(svg, sizeof svg, "%s/net.svg", dir);
+    char *text = test_read_text(svg);
+    cr_assert(text && strstr(text, "<svg"));
+    free(text);
+    test_tmpdir_remove(dir);
+}
+
+// qhull's hulls of random points on the sphere unfold in one piece and fold back.
+Test(unfold, random_convex_hulls, .init = test_leak_setup, .fini = test_leak_check)
+{
+    unsigned long long s = 12345;
+    for (int k = 0; k < 5; ++k) {
+        ori_v3 pts[102];
+        for (int i = 0; i < 102; ++i) {
+            double u[2];
+            for (int j = 0; j < 2; ++j) {
+                s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+                u[j] = (double)(s >> 11) / 9007199254740992.0;
+            }
+            double z = 2 * u[0] - 1, r = sqrt(1 - z * z), th = 2 * 3.141592653589793 * u[1];
+            pts[i] = ori_v3_make(r * cos(th), r * sin(th), z);
+        }
+        ori_mesh *m = NULL;
+        ori_error err;
+        cr_assert_eq(ori_unfold_mesh_convex_hull(pts, 102, &m, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_unfold_mesh_face_count(m), 200); // 2n − 4 triangles
+        ori_unfold_def def = ori_default_unfold_def();
+        ori_unfold_net *net = NULL;
+        cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK);
+        ori_unfold_result r = ori_unfold_net_result(net);
+        cr_assert_eq(r.pieces, 1);
+        cr_assert_eq(r.overlaps, 0);
+        cr_assert_leq(r.max_refold_error, 1e-9);
+        ori_unfold_net_destroy(net);
+        ori_unfold_mesh_destroy(m);
     }
 }

@@ -6,10 +6,11 @@
 ///
 /// Functions: ori_default_linkage_def, ori_linkage_unfold, ori_linkage_motion_destroy,
 /// ori_linkage_motion_result, ori_linkage_motion_vertex_count, ori_linkage_motion_frame_count,
-/// ori_linkage_motion_frame, ori_linkage_motion_frame_is_event, ori_default_unfold_def,
-/// ori_unfold_load_mesh, ori_unfold_mesh_destroy, ori_unfold_mesh_face_count, ori_unfold_solve,
-/// ori_unfold_net_destroy, ori_unfold_net_result, ori_unfold_net_pattern,
-/// ori_unfold_net_face_source, ori_unfold_net_glue, ori_unfold_net_refold_error.
+/// ori_linkage_motion_frame, ori_linkage_motion_frame_is_event, ori_unfold_mesh_create,
+/// ori_unfold_load_mesh, ori_unfold_mesh_convex_hull, ori_unfold_mesh_destroy,
+/// ori_unfold_mesh_face_count, ori_unfold_mesh_vertex_count, ori_default_unfold_def,
+/// ori_unfold_solve, ori_unfold_net_destroy, ori_unfold_net_result, ori_unfold_net_pattern,
+/// ori_unfold_net_face_source, ori_unfold_net_glue, ori_unfold_net_vertex_source.
 #ifndef ORIKIN_UNFOLD_H
 #define ORIKIN_UNFOLD_H
 
@@ -95,6 +96,9 @@ ORI_API ori_status ori_unfold_mesh_create(const ori_v3 *coords, int vertex_count
 /// Load a surface from an OBJ (v, f), STL (ASCII or binary; vertices welded by equal
 /// coordinates) or FOLD (frame 0's 3D vertices_coords and faces_vertices) file, by extension.
 ORI_API ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *error);
+/// The convex hull of count ≥ 4 points (qhull, triangulated; coplanar facets then merged) as a
+/// surface. Fails with ORI_ERR_DEGENERATE when qhull cannot build it (all points coplanar).
+ORI_API ori_status ori_unfold_mesh_convex_hull(const ori_v3 *points, int count, ori_mesh **out, ori_error *error);
 /// Destroy a surface; NULL is a no-op.
 ORI_API void ori_unfold_mesh_destroy(ori_mesh *mesh);
 /// Number of faces after merging coplanar neighbours.
