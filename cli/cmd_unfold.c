@@ -126,6 +126,8 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "tries", json_integer(r.tries));
             json_object_set_new(o, "max_refold_error", r.refolded ? json_real(r.max_refold_error) : json_null());
             json_object_set_new(o, "motion_collides", r.refolded ? json_boolean(r.motion_collides) : json_null());
+            static const char *orders[] = {"together", "leaves first", "root first"};
+            json_object_set_new(o, "fold_order", r.fold_order >= 0 ? json_string(orders[r.fold_order]) : json_null());
             if (def.all) {
                 json_object_set_new(o, "distinct_nets", r.distinct_nets >= 0 ? json_integer(r.distinct_nets) : json_null());
                 json_object_set_new(o, "spanning_trees", json_integer(r.spanning_trees));
@@ -143,8 +145,11 @@ static int run(int argc, char **argv)
                    r.pieces == 1 ? "one net without overlap" : "no single net found", r.tries);
             if (r.pieces > 1) printf("split into %d pieces without overlap\n", r.pieces);
             if (r.refolded)
-                printf("folded back to the shape within %.3g (relative); the fold %s\n", r.max_refold_error,
-                       r.motion_collides ? "collides" : "is collision-free");
+                printf("folded back to the shape within %.3g (relative); %s\n", r.max_refold_error,
+                       r.fold_order == ORI_FOLD_ORDER_TOGETHER       ? "all creases together without collision"
+                       : r.fold_order == ORI_FOLD_ORDER_LEAVES_FIRST ? "without collision one crease at a time, leaves first"
+                       : r.fold_order == ORI_FOLD_ORDER_ROOT_FIRST   ? "without collision one crease at a time, root first"
+                                                                     : "every fold order tried collides");
             if (def.all && r.distinct_nets >= 0)
                 printf("%d distinct nets (up to rotation and reflection) from %d of %d spanning trees\n", r.distinct_nets,
                        r.overlap_free_trees, r.spanning_trees);

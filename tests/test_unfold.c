@@ -63,6 +63,7 @@ Test(unfold, platonic_nets, .init = test_leak_setup, .fini = test_leak_check)
         cr_assert_eq(r.distinct_nets, solids[i].nets, "%s: %d nets", solids[i].file, r.distinct_nets);
         cr_assert(r.refolded);
         cr_assert_leq(r.max_refold_error, 1e-9);
+        cr_assert_eq(r.fold_order, ORI_FOLD_ORDER_TOGETHER);
     }
 }
 
@@ -87,6 +88,10 @@ Test(unfold, non_convex_shapes, .init = test_leak_setup, .fini = test_leak_check
     cr_assert_leq(l.max_refold_error, 1e-9);
     ori_unfold_result h = unfold("tests/data/unfold/box-with-hole.obj", false);
     cr_assert_eq(h.faces, 16);
+    // folding every crease together makes the frame's faces pass through each other; one
+    // crease at a time from the leaves of the face tree does not
+    cr_assert_eq(h.fold_order, ORI_FOLD_ORDER_LEAVES_FIRST);
+    cr_assert(!h.motion_collides);
     cr_assert_eq(h.overlaps, 0);
     cr_assert_eq(h.pieces, 1);
     cr_assert_leq(h.max_refold_error, 1e-9);

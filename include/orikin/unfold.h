@@ -118,6 +118,14 @@ typedef struct ori_unfold_def {
 /// Defaults: 50 tries, seed 1, no enumeration, enumeration up to 24 faces.
 ORI_API ori_unfold_def ori_default_unfold_def(void);
 
+/// How the net is folded back without collision.
+typedef enum ori_fold_order {
+    ORI_FOLD_ORDER_NONE = -1,      ///< not refolded, or every order tried collides
+    ORI_FOLD_ORDER_TOGETHER = 0,   ///< every crease driven together (angles scaled alike)
+    ORI_FOLD_ORDER_LEAVES_FIRST,   ///< one crease at a time, deepest in the face tree first
+    ORI_FOLD_ORDER_ROOT_FIRST,     ///< one crease at a time, nearest the fixed face first
+} ori_fold_order;
+
 /// Summary of an unfolding.
 typedef struct ori_unfold_result {
     int pieces;               ///< 1 when a net without overlap was found, else the pieces of the split
@@ -128,7 +136,8 @@ typedef struct ori_unfold_result {
     int best_try;             ///< the try that gave the net (0-based)
     bool refolded;            ///< the net was folded back (one piece)
     double max_refold_error;  ///< largest vertex distance of the refolded net to the shape / the diagonal; −1 when not refolded
-    bool motion_collides;     ///< folding all creases together (20 steps) made faces penetrate
+    bool motion_collides;     ///< every fold order tried made faces penetrate (checked in steps)
+    ori_fold_order fold_order; ///< the first collision-free order: together, else leaves first, else root first
     int distinct_nets;        ///< with all: overlap-free nets up to congruence (rotations, reflections); −1 otherwise
     int spanning_trees;       ///< with all: spanning trees enumerated
     int overlap_free_trees;   ///< with all: of which without overlap

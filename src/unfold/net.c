@@ -847,11 +847,50 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     return net;
 }
 
+// Check a fold motion for penetration: all creases together (order NULL: angles scaled by
+// s/20), or one crease after the other in the given order (8 steps each, the others held at 0
+// or at their target). The final state (faces glued) is not checked.
+static bool motion_collides(ori_mechanism *mech, ori_collider *col, const double *angles, int ne, const int *order,
+                            int count, ori_rigid pose, ori_v3 *pos, double *a)
+{
+    ori_error err;
+    ori_collision_result cr;
+    if (!order) {
+        for (int s = 1; s < 20; ++s) {
+            for (int e = 0; e < ne; ++e) a[e] = angles[e] * s / 20.0;
+            ori_mechanism_vertex_positions(mech, a, 0, pose, pos);
+            if (ori_collider_check(col, pos, &cr, &err) == ORI_OK && cr.penetrating > 0) return true;
+        }
+        return false;
+    }
+    for (int e = 0; e < ne; ++e) a[e] = 0.0;
+    for (int i = 0; i < count; ++i) {
+        int e = order[i];
+        for (int s = 1; s <= 8; ++s) {
+            a[e] = angles[e] * s / 8.0;
+            if (i == count - 1 && s == 8) break;
+            ori_mechanism_vertex_positions(mech, a, 0, pose, pos);
+            if (ori_collider_check(col, pos, &cr, &err) == ORI_OK && cr.penetrating > 0) return true;
+        }
+    }
+    return false;
+}
+
+static int g_depth_cmp_sign;
+static const int *g_depth;
+static int cmp_depth(const void *x, const void *y)
+{
+    int a = g_depth[*(const int *)x], b = g_depth[*(const int *)y];
+    return g_depth_cmp_sign * (a - b);
+}
+
 // Fold the net back (one piece): pose by forward kinematics from face 0 placed where the shape
 // has it; returns the largest vertex distance to the shape / the diagonal (−1 when not posed).
-static double refold_error(ori_unfold_net *net, double diag, bool *collides)
+// *order receives the first collision-free fold order (ORI_FOLD_ORDER_NONE when none is).
+static double refold_error(ori_unfold_net *net, double diag, bool *collides, ori_fold_order *order)
 {
     *collides = false;
+    *order = ORI_FOLD_ORDER_NONE;
     ori_error err;
     ori_build_def bd = ori_default_build_def();
     bd.check_planarity = false;
@@ -861,6 +900,7 @@ static double refold_error(ori_unfold_net *net, double diag, bool *collides)
     ori_mechanism *mech = NULL;
     if (ori_mechanism_create(&md, &mech, &err) != ORI_OK) return -1.0;
     int nv = ori_pattern_vertex_count(net->pattern), ne = ori_pattern_edge_count(net->pattern);
+    int nf = ori_pattern_face_count(net->pattern);
     double *angles = ori__alloc(((size_t)ne + 1) * sizeof *angles);
     for (int e = 0; e < ne; ++e) angles[e] = ori_pattern_edge(net->pattern, e).fold_angle_rad;
     ori_rigid pose;
@@ -870,18 +910,35 @@ static double refold_error(ori_unfold_net *net, double diag, bool *collides)
         ori_mechanism_pose_state(mech, angles, 0, pose, NULL, pos, NULL, &err) == ORI_OK) {
         worst = 0.0;
         for (int v = 0; v < nv; ++v) worst = fmax(worst, ori_v3_norm(ori_v3_sub(pos[v], net->shape[v])) / diag);
-        // the motion: every crease driven together, angles scaled by s, checked for penetration
         ori_collider_def cd = ori_default_collider_def();
         cd.pattern = net->pattern;
         ori_collider *col = NULL;
         if (ori_collider_create(&cd, &col, &err) == ORI_OK) {
             double *a = ori__alloc(((size_t)ne + 1) * sizeof *a);
-            for (int s = 1; s < 20 && !*collides; ++s) {
-                for (int e = 0; e < ne; ++e) a[e] = angles[e] * s / 20.0;
-                ori_mechanism_vertex_positions(mech, a, 0, pose, pos);
-                ori_collision_result cr;
-                if (ori_collider_check(col, pos, &cr, &err) == ORI_OK && cr.penetrating > 0) *collides = true;
+            if (!motion_collides(mech, col, angles, ne, NULL, 0, pose, pos, a)) {
+                *order = ORI_FOLD_ORDER_TOGETHER;
+            } else if (ne <= 600) {
+                // one crease at a time by depth in the face tree: leaves first, then root first
+                int *pf = ori__alloc(((size_t)nf + 1) * sizeof *pf), *pe = ori__alloc(((size_t)nf + 1) * sizeof *pe);
+                int *depth_e = ori__calloc((size_t)ne + 1, sizeof *depth_e), *fd = ori__alloc(((size_t)nf + 1) * sizeof *fd);
+                int *creases = ori__alloc(((size_t)nf + 1) * sizeof *creases), nc = 0;
+                ori_mechanism_spanning_tree(mech, 0, pf, pe);
+                for (int f = 0; f < nf; ++f) {
+                    int d = 0;
+                    for (int g = f; pf[g] >= 0 && d <= nf; g = pf[g]) d++;
+                    fd[f] = d;
+                    if (pe[f] >= 0) depth_e[pe[f]] = d, creases[nc++] = pe[f];
+                }
+                g_depth = depth_e;
+                for (int pass = 0; pass < 2 && *order == ORI_FOLD_ORDER_NONE; ++pass) {
+                    g_depth_cmp_sign = pass == 0 ? -1 : 1;
+                    qsort(creases, (size_t)nc, sizeof *creases, cmp_depth);
+                    if (!motion_collides(mech, col, angles, ne, creases, nc, pose, pos, a))
+                        *order = pass == 0 ? ORI_FOLD_ORDER_LEAVES_FIRST : ORI_FOLD_ORDER_ROOT_FIRST;
+                }
+                ori__free(pf), ori__free(pe), ori__free(depth_e), ori__free(fd), ori__free(creases);
             }
+            *collides = *order == ORI_FOLD_ORDER_NONE;
             ori__free(a);
             ori_collider_destroy(col);
         }
@@ -1100,6 +1157,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     res.tries = tries;
     res.distinct_nets = -1;
     res.max_refold_error = -1.0;
+    res.fold_order = ORI_FOLD_ORDER_NONE;
     // split the best tree into pieces: faces in breadth-first order join their parent's piece
     // unless they overlap a face already there
     int *piece = ori__alloc(((size_t)nf + 1) * sizeof *piece);
@@ -1143,7 +1201,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     ori_unfold_net *net = make_net(&c, best_tree, piece, pieces);
     if (pieces == 1) {
         bool coll = false;
-        res.max_refold_error = refold_error(net, m->diag, &coll);
+        res.max_refold_error = refold_error(net, m->diag, &coll, &res.fold_order);
         res.motion_collides = coll;
         res.refolded = res.max_refold_error >= 0.0;
     } else {
