@@ -21,7 +21,8 @@
 
 #include "unfold_internal.h"
 
-#define EVENT_TOL_D 1e-12  // root-finding tolerance on the drive length, relative to the diagonal
+#define EVENT_TOL_D 1e-12    // root-finding bracket on the curve parameter (arc length), relative to the diagonal
+#define EVENT_TOL_SINE 1e-12 // and on the sine of the aligned angle, while the bracket allows
 #define NEWTON_TOL 1e-14   // relative length residual after projection
 #define NEWTON_FLOOR 1e-12 // accepted when Newton stalls at the rounding floor below this
 
@@ -515,20 +516,59 @@ typedef struct lk_run {
     lk_sys S;
     double *rhs, *sol, *w1, *w2;
     ori_linkage_motion *M;
+    int per;          // frames kept per event interval (0 = all)
+    ori_v2 *buf;      // steps of the current interval, every stride-th (per > 0)
+    int buf_count, buf_cap, stride, skipped;
 } lk_run;
 
-static void push_frame(lk_run *R, const ori_v2 *p, bool event)
+static void append_frame(ori_linkage_motion *M, const ori_v2 *f, bool event)
 {
-    ori_linkage_motion *M = R->M;
     if (M->frame_count == M->frame_cap) {
         M->frame_cap = M->frame_cap ? 2 * M->frame_cap : 64;
         M->frames = ori__realloc(M->frames, (size_t)M->frame_cap * (size_t)M->n * sizeof *M->frames);
         M->is_event = ori__realloc(M->is_event, (size_t)M->frame_cap * sizeof *M->is_event);
     }
-    ori_v2 *f = M->frames + (size_t)M->frame_count * (size_t)M->n;
-    memcpy(f, p, (size_t)M->n * sizeof *f);
-    place_frozen(R->L, f);
+    memcpy(M->frames + (size_t)M->frame_count * (size_t)M->n, f, (size_t)M->n * sizeof *f);
     M->is_event[M->frame_count++] = event;
+}
+
+// Record a configuration. With per > 0 the steps of an interval go to a buffer thinned by
+// doubling its stride (memory stays bounded however many steps an interval takes); a kept
+// frame (the start, an event) flushes per − 1 of them evenly spaced, then itself.
+static void push_frame(lk_run *R, const ori_v2 *p, bool keep, bool event)
+{
+    ori_linkage_motion *M = R->M;
+    int n = M->n;
+    ori_v2 *f = ori__alloc((size_t)n * sizeof *f);
+    memcpy(f, p, (size_t)n * sizeof *f);
+    place_frozen(R->L, f);
+    if (R->per == 0) {
+        append_frame(M, f, event);
+    } else if (!keep) {
+        if (++R->skipped >= R->stride) {
+            R->skipped = 0;
+            if (R->buf_count == R->buf_cap) {
+                // thin: keep every other buffered frame, double the stride
+                for (int i = 0; 2 * i < R->buf_count; ++i)
+                    memmove(R->buf + (size_t)i * n, R->buf + (size_t)(2 * i) * n, (size_t)n * sizeof *R->buf);
+                R->buf_count = (R->buf_count + 1) / 2;
+                R->stride *= 2;
+            }
+            memcpy(R->buf + (size_t)R->buf_count * n, f, (size_t)n * sizeof *f);
+            R->buf_count++;
+        }
+    } else {
+        for (int j = 1; j < R->per && R->buf_count > 0; ++j) {
+            int src = (int)((double)R->buf_count * j / R->per);
+            if (src >= R->buf_count) src = R->buf_count - 1;
+            int prev = (int)((double)R->buf_count * (j - 1) / R->per);
+            if (j > 1 && src == prev) continue;
+            append_frame(M, R->buf + (size_t)src * n, false);
+        }
+        append_frame(M, f, event);
+        R->buf_count = 0, R->stride = 1, R->skipped = 0;
+    }
+    ori__free(f);
 }
 
 // Unit tangent of the motion at p (zero for frozen vertices): the parameter row's rate is 1,
@@ -695,6 +735,14 @@ static int fastest(const lk *L, const lk_sys *S, const ori_v2 *t)
     return best;
 }
 
+// |t| of unknown k (active index k / 2, component k % 2).
+static double coord_of(const lk *L, const lk_sys *S, const ori_v2 *t, int k)
+{
+    for (int q = 0; q < L->n; ++q)
+        if (S->col[q] == k / 2) return fabs(k % 2 ? t[q].y : t[q].x);
+    return 0.0;
+}
+
 static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
 {
     lk *L = R->L;
@@ -704,7 +752,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
     ori_v2 *p0 = ori__alloc((size_t)n * sizeof *p0), *pm = ori__alloc((size_t)n * sizeof *pm);
     lk_watch *watch = ori__alloc(((size_t)n + 1) * sizeof *watch);
     ori_status st = ORI_OK;
-    push_frame(R, L->p, false);
+    push_frame(R, L->p, true, false);
     int rs = restructure(R, -1, -1, error);
     while (rs == 1) {
         if (R->M->result.events > max_events) {
@@ -747,7 +795,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                     for (int q = 0; q < n; ++q) t1[q] = ori_v2_scale(t1[q], -1.0);
                 memcpy(t0, t1, (size_t)n * sizeof *t0);
                 int k2 = fastest(L, &R->S, t0);
-                if (k2 != R->S.kcol) {
+                if (k2 != R->S.kcol && coord_of(L, &R->S, t0, k2) > 2.0 * coord_of(L, &R->S, t0, R->S.kcol)) {
                     sys_destroy(&R->S);
                     sys_create(L, &R->S, k2);
                 }
@@ -806,7 +854,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             if (first < 0) {
                 memcpy(L->p, p1, (size_t)n * sizeof *p1);
                 R->M->result.steps++;
-                push_frame(R, L->p, false);
+                push_frame(R, L->p, false, false);
                 h = fmin(hmax, 1.5 * h);
                 continue;
             }
@@ -816,7 +864,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             memcpy(p0, L->p, (size_t)n * sizeof *p0);
             memcpy(pm, p1, (size_t)n * sizeof *pm);
             int side = 0;
-            for (int it = 0; it < 300 && hi - lo > EVENT_TOL_D * L->scale; ++it) {
+            for (int it = 0; it < 300 && (hi - lo > EVENT_TOL_D * L->scale || (fabs(ghi) > EVENT_TOL_SINE && hi - lo > 1e-15 * L->scale)); ++it) {
                 double mid = glo < 0.0 && ghi > glo ? lo + (hi - lo) * (glo / (glo - ghi)) : 0.5 * (lo + hi);
                 if (!(mid > lo && mid < hi) || it % 4 == 3) mid = 0.5 * (lo + hi);
                 if (!state_at(R, p0, t0, mid, p1)) {
@@ -837,29 +885,30 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                     side = -1;
                 }
             }
+            int w_ev = first;
+            double gmax = -INFINITY;
+            for (int w = 0; w < nw; ++w) {
+                double g = wedge_sine(pm, watch[w]);
+                if (g > gmax) gmax = g, w_ev = w;
+            }
+            // the located event: |sin| of the aligned angle at the end of the root-finding
+            R->M->result.max_event_residual = fmax(R->M->result.max_event_residual, fabs(gmax));
             memcpy(L->p, pm, (size_t)n * sizeof *pm);
             // Past the event in exact arithmetic too: the rounded sine may change sign before the
             // exact orientation does; move on (doubling the overshoot) until the wedge is no longer
             // reflex for the exact predicate.
             {
-                lk_watch wf = watch[first];
+                lk_watch wf = watch[w_ev];
                 double extra = fmax(hi - lo, EVENT_TOL_D * L->scale);
                 for (int it = 0; it < 20 && orient(L, wf.v, wf.a, wf.b) <= 0; ++it, extra *= 2.0) {
                     if (!state_at(R, p0, t0, hi + extra, p1)) break;
                     memcpy(L->p, p1, (size_t)n * sizeof *p1);
                 }
             }
-            int w_ev = first;
-            double gmax = -INFINITY;
-            for (int w = 0; w < nw; ++w) {
-                double g = wedge_sine(L->p, watch[w]);
-                if (g > gmax) gmax = g, w_ev = w;
-            }
-            R->M->result.max_event_residual = fmax(R->M->result.max_event_residual, fabs(gmax));
             ev = w_ev;
         }
         sys_destroy(&R->S);
-        push_frame(R, L->p, true);
+        push_frame(R, L->p, true, true);
         // The drive edge is not put back: the motion has moved its ends apart and other vertices
         // may now lie across it; the completion after the event adds whatever edges are valid.
         L->drv_a = L->drv_b = -1;
@@ -999,30 +1048,6 @@ static bool final_shape_ok(const ori_linkage_def *def, const int *order, bool cl
     return fabs(fabs(turn) - 6.283185307179586) < 1e-6;
 }
 
-// Keep steps_per_event frames per event interval (events and the ends always).
-static void subsample(ori_linkage_motion *M, int per)
-{
-    if (per <= 0 || M->frame_count <= 2) return;
-    int n = M->n, F = M->frame_count;
-    bool *keep = ori__calloc((size_t)F, sizeof *keep);
-    keep[0] = keep[F - 1] = true;
-    int last = 0;
-    for (int f = 1; f < F; ++f) {
-        if (!M->is_event[f] && f != F - 1) continue;
-        keep[f] = true;
-        for (int j = 1; j < per; ++j) keep[last + (int)((double)(f - last) * j / per)] = true;
-        last = f;
-    }
-    int out = 0;
-    for (int f = 0; f < F; ++f) {
-        if (!keep[f]) continue;
-        if (out != f) memmove(M->frames + (size_t)out * n, M->frames + (size_t)f * n, (size_t)n * sizeof *M->frames);
-        M->is_event[out++] = M->is_event[f];
-    }
-    M->frame_count = out;
-    ori__free(keep);
-}
-
 static void measure(const ori_linkage_def *def, ori_linkage_motion *M)
 {
     int n = M->n;
@@ -1087,17 +1112,21 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     size_t cap = (size_t)(4 * n + 16);
     R.rhs = ori__alloc(cap * sizeof(double)), R.sol = ori__alloc(cap * sizeof(double));
     R.w1 = ori__alloc(cap * sizeof(double)), R.w2 = ori__alloc(2 * cap * sizeof(double));
+    R.per = def->steps_per_event;
+    R.buf_cap = R.per > 0 ? 4 * R.per + 16 : 0;
+    R.buf = R.per > 0 ? ori__alloc((size_t)R.buf_cap * (size_t)n * sizeof *R.buf) : NULL;
+    R.stride = 1;
     int max_events = def->max_events > 0 ? def->max_events : 100 * n + 100;
     st = run_motion(&R, max_events, error);
     if (st == ORI_OK) {
         const ori_v2 *last = M->frames + (size_t)(M->frame_count - 1) * n;
         M->result.final_ok = final_shape_ok(def, order, closed, last, L.scale);
         M->result.steps = M->result.steps;
-        subsample(M, def->steps_per_event);
+
         M->result.frames = M->frame_count;
         measure(def, M);
     }
-    ori__free(R.rhs), ori__free(R.sol), ori__free(R.w1), ori__free(R.w2);
+    ori__free(R.rhs), ori__free(R.sol), ori__free(R.w1), ori__free(R.w2), ori__free(R.buf);
     ori__free(L.p), ori__free(L.frozen), ori__free(L.fa), ori__free(L.fb), ori__free(L.forder), ori__free(L.ft);
     ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(order);
     if (st != ORI_OK) {
