@@ -8,6 +8,9 @@
 #include "support.h"
 #include "unfold/unfold_internal.h"
 
+#include <jansson.h>
+#include <stdio.h>
+
 #define PI 3.14159265358979323846
 
 typedef struct lcase {
@@ -211,4 +214,37 @@ Test(linkage, exact_orientation)
     cr_assert_eq(ori__orient2d_exact(a, b, d), 1);
     ori_v2 e = {24.0, nextafter(24.0, 23.0)};
     cr_assert_eq(ori__orient2d_exact(a, b, e), -1);
+}
+
+// The command writes the motion as FOLD frames that keep every bar length; the last is convex.
+Test(linkage, cli_writes_motion, .init = test_leak_setup, .fini = test_leak_check)
+{
+    char *dir = test_tmpdir();
+    char args[1024], path[512];
+    snprintf(path, sizeof path, "%s/motion.fold", dir);
+    snprintf(args, sizeof args, "unfold-linkage tests/data/unfold/star.fold --steps-per-event 3 -o '%s' --json", path);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "\"final\":\"convex\""), "%s", out);
+    free(out);
+    json_error_t je;
+    json_t *doc = json_load_file(path, 0, &je);
+    cr_assert_not_null(doc, "%s", je.text);
+    json_t *frames = json_object_get(doc, "file_frames"), *v0 = json_object_get(doc, "vertices_coords");
+    cr_assert_gt(json_array_size(frames), 3);
+    size_t n = json_array_size(v0);
+    for (size_t f = 0; f < json_array_size(frames); ++f) {
+        json_t *vc = json_object_get(json_array_get(frames, f), "vertices_coords");
+        cr_assert_eq(json_array_size(vc), n);
+        for (size_t i = 0; i < n; ++i) {
+            size_t j = (i + 1) % n;
+            double L0 = hypot(json_number_value(json_array_get(json_array_get(v0, i), 0)) - json_number_value(json_array_get(json_array_get(v0, j), 0)),
+                              json_number_value(json_array_get(json_array_get(v0, i), 1)) - json_number_value(json_array_get(json_array_get(v0, j), 1)));
+            double L = hypot(json_number_value(json_array_get(json_array_get(vc, i), 0)) - json_number_value(json_array_get(json_array_get(vc, j), 0)),
+                             json_number_value(json_array_get(json_array_get(vc, i), 1)) - json_number_value(json_array_get(json_array_get(vc, j), 1)));
+            cr_assert_leq(fabs(L - L0) / L0, 1e-9);
+        }
+    }
+    json_decref(doc);
+    test_tmpdir_remove(dir);
 }

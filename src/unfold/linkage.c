@@ -10,7 +10,6 @@
 // or one of them is not a bar: it is removed and the graph completed again (the flip). Every
 // combinatorial decision uses the exact orientation predicate.
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -66,10 +65,6 @@ typedef struct lk {
     int drv_a, drv_b; // removed hull edge (−1 when none)
     // adjacency (rebuilt on demand): CSR sorted counter-clockwise
     int *adj_start, *adj, adj_cap;
-    // original bars for the checks
-    int nbars;
-    int *bars; // 2 × nbars
-    double *barlen;
 } lk;
 
 static int active_count(const lk *L) { return L->n - L->nfrozen; }
@@ -79,8 +74,8 @@ static int orient(const lk *L, int a, int b, int c) { return ori__orient2d_exact
 // Angular order around centre c: half-plane first, then orientation.
 static int half_of(ori_v2 c, ori_v2 q) { return (q.y > c.y || (q.y == c.y && q.x > c.x)) ? 0 : 1; }
 
-static const lk *g_sort_lk;
-static int g_sort_centre;
+static _Thread_local const lk *g_sort_lk; // qsort has no context argument
+static _Thread_local int g_sort_centre;
 static int cmp_angle(const void *x, const void *y)
 {
     int a = *(const int *)x, b = *(const int *)y;
@@ -344,7 +339,7 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
 }
 
 // Convex hull of the active vertices (exact, collinear points dropped), counter-clockwise.
-static const lk *g_hull_lk;
+static _Thread_local const lk *g_hull_lk;
 static int cmp_xy(const void *x, const void *y)
 {
     ori_v2 a = g_hull_lk->p[*(const int *)x], b = g_hull_lk->p[*(const int *)y];
@@ -612,15 +607,9 @@ static bool project(lk_run *R, ori_v2 *p)
         if (worst <= NEWTON_TOL || (worst <= NEWTON_FLOOR && worst > 0.5 * prev)) return true;
         prev = worst;
         if (!isfinite(worst) || worst > 1e-2) {
-#ifdef LK_DEBUG
-            fprintf(stderr, "project: it %d worst %g\n", it, worst);
-#endif
             return false;
         }
         if (!sys_factor(L, S, p)) {
-#ifdef LK_DEBUG
-            fprintf(stderr, "project: singular at it %d status %d\n", it, S->kc.status);
-#endif
             return false;
         }
         if (!sys_solve(S, R->rhs, R->sol, R->w1, R->w2)) return false;
@@ -698,24 +687,6 @@ static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
     if (complete(L, excl_a, excl_b, error) != ORI_OK) return -1;
     if (active_count(L) <= 2) return 0;
     if (L->ne != 2 * active_count(L) - 3) {
-#ifdef LK_DEBUG
-        build_adj(L, false);
-        lk_faces F = trace_faces(L);
-        for (int f = 0; f < F.count; ++f) {
-            int s0 = F.start[f], k = F.start[f + 1] - s0, convex = 0, straight = 0;
-            for (int i = 0; i < k; ++i) {
-                int o = orient(L, F.v[s0 + (i + k - 1) % k], F.v[s0 + i], F.v[s0 + (i + 1) % k]);
-                convex += o > 0, straight += o == 0;
-            }
-            fprintf(stderr, "face %d area %g convex %d straight %d:", f, F.area[f], convex, straight);
-            for (int i = 0; i < k; ++i) fprintf(stderr, " %d", F.v[s0 + i]);
-            fprintf(stderr, "\n");
-        }
-        for (int v = 0; v < L->n; ++v)
-            if (!L->frozen[v] && !pointed_list(L, v, L->adj + L->adj_start[v], L->adj_start[v + 1] - L->adj_start[v]))
-                fprintf(stderr, "non-pointed %d\n", v);
-        faces_free(&F);
-#endif
         ori__fail(error, ORI_ERR_INTERNAL, "pseudo-triangulation has %d edges on %d vertices (points not in general position)",
                   L->ne, active_count(L));
         return -1;
@@ -818,19 +789,6 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                     }
                 }
                 if (flat.v < 0) {
-#ifdef LK_DEBUG
-                    fprintf(stderr, "underflow: events %d na %d ne %d drive %d-%d kcol %d\n", R->M->result.events, active_count(L), L->ne, L->drv_a, L->drv_b, R->S.kcol);
-                    for (int v = 0; v < n; ++v) {
-                        if (L->frozen[v]) continue;
-                        const int *nb = L->adj + L->adj_start[v];
-                        int deg = L->adj_start[v + 1] - L->adj_start[v];
-                        for (int i = 0; i < deg; ++i) {
-                            lk_watch cand = {v, nb[i], nb[(i + 1) % deg]};
-                            double sn = wedge_sine(L->p, cand);
-                            if (fabs(sn) < 1e-3) fprintf(stderr, "  wedge %d: %d %d sine %g\n", v, cand.a, cand.b, sn);
-                        }
-                    }
-#endif
                     st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: step underflow");
                     goto done;
                 }
@@ -919,10 +877,6 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             int kk = (ea >= 0 && !L->e[ea].bar) ? ea : eb;
             if (kk >= 0) removed_a = L->e[kk].a, removed_b = L->e[kk].b;
         }
-#ifdef LK_DEBUG
-        fprintf(stderr, "EVENT v=%d a=%d b=%d orient=%d deg=%d bars=%d%d removed=%d-%d first=%d ev=%d\n", w.v, w.a, w.b, orient(L, w.v, w.a, w.b),
-                L->adj_start[w.v + 1] - L->adj_start[w.v], ea >= 0 && L->e[ea].bar, eb >= 0 && L->e[eb].bar, removed_a, removed_b, 0, ev);
-#endif
         handle_event(R, w.v, w.a, w.b);
         rs = restructure(R, removed_a, removed_b, error);
     }

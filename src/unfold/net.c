@@ -337,7 +337,7 @@ static int cmp_v3_idx_data(const ori_v3 *v, int a, int b)
     if (v[a].z != v[b].z) return v[a].z < v[b].z ? -1 : 1;
     return 0;
 }
-static const ori_v3 *g_weld_v;
+static _Thread_local const ori_v3 *g_weld_v; // qsort has no context argument
 static int cmp_weld(const void *x, const void *y) { return cmp_v3_idx_data(g_weld_v, *(const int *)x, *(const int *)y); }
 
 static ori_status read_stl(const char *data, size_t size, ori_v3 **pv, int *pnv, int **pfs, int **pfv, int *pnf, ori_error *error)
@@ -876,8 +876,8 @@ static bool motion_collides(ori_mechanism *mech, ori_collider *col, const double
     return false;
 }
 
-static int g_depth_cmp_sign;
-static const int *g_depth;
+static _Thread_local int g_depth_cmp_sign;
+static _Thread_local const int *g_depth;
 static int cmp_depth(const void *x, const void *y)
 {
     int a = g_depth[*(const int *)x], b = g_depth[*(const int *)y];
