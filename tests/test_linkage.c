@@ -160,6 +160,18 @@ Test(linkage, star_polygon, .init = test_leak_setup, .fini = test_leak_check)
 
 
 
+// Knitting needles (Connelly–Demaine–Rote's locked 3D example, flattened): two long bars
+// folded back over a short zig-zag, slightly rotated off the axes.
+Test(linkage, knitting_chain, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v2 q[] = {{0.0, 3.0}, {0.35, 0.1}, {0.6, 0.55}, {0.9, 0.12}, {1.2, 0.5}, {1.55, 0.05}, {1.9, 3.1}};
+    int n = (int)(sizeof q / sizeof *q);
+    for (int i = 0; i < n; ++i) q[i] = ori_v2_make(q[i].x * cos(0.1) - q[i].y * sin(0.1), q[i].x * sin(0.1) + q[i].y * cos(0.1));
+    lcase c = make(q, n, false);
+    check_motion(&c, false);
+    free_case(&c);
+}
+
 // A doubly wound polygon: a thin strip along a spiral of two turns (out along one spiral, back
 // along a parallel one), closed at both ends.
 Test(linkage, doubly_wound_polygon, .init = test_leak_setup, .fini = test_leak_check)
