@@ -706,6 +706,26 @@ static int fastest(const lk *L, const lk_sys *S, const ori_v2 *t)
     return best;
 }
 
+// The straightest angle between consecutive edges at any vertex (|sin| < 1e-6, the edges
+// pointing apart): the event to handle when the framework is singular.
+static bool flattest_any(const lk *L, lk_watch *out)
+{
+    double best = 1e-6;
+    bool found = false;
+    for (int v = 0; v < L->n; ++v) {
+        if (L->frozen[v]) continue;
+        const int *nb = L->adj + L->adj_start[v];
+        int deg = L->adj_start[v + 1] - L->adj_start[v];
+        for (int i = 0; i < deg; ++i) {
+            lk_watch cand = {v, nb[i], nb[(i + 1) % deg]};
+            ori_v2 da = ori_v2_sub(L->p[cand.a], L->p[v]), db = ori_v2_sub(L->p[cand.b], L->p[v]);
+            double sn = fabs(wedge_sine(L->p, cand));
+            if (ori_v2_dot(da, db) < 0.0 && sn < best) best = sn, *out = cand, found = true;
+        }
+    }
+    return found;
+}
+
 // |t| of unknown k (active index k / 2, component k % 2).
 static double coord_of(const lk *L, const lk_sys *S, const ori_v2 *t, int k)
 {
@@ -738,18 +758,26 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             if (reflex_wedge(L, v, &a, &b)) watch[nw++] = (lk_watch){v, a, b};
         }
         // the expansive direction: the drive edge lengthens
+        int ev = -1;
         sys_create(L, &R->S, -1);
         if (!tangent(R, L->p, t0)) {
-            st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: singular rigidity matrix");
-            goto done;
+            lk_watch flat;
+            if (!flattest_any(L, &flat)) {
+                st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: singular rigidity matrix");
+                goto done;
+            }
+            sys_destroy(&R->S);
+            watch[nw] = flat;
+            ev = nw;
         }
-        int k = fastest(L, &R->S, t0);
-        sys_destroy(&R->S);
-        sys_create(L, &R->S, k);
+        int k = ev < 0 ? fastest(L, &R->S, t0) : -1;
+        if (ev < 0) {
+            sys_destroy(&R->S);
+            sys_create(L, &R->S, k);
+        }
         double lmin = INFINITY;
         for (int e = 0; e < L->ne; ++e) lmin = fmin(lmin, L->e[e].len);
         double hmax = 0.01 * lmin, h = hmax;
-        int ev = -1;
         for (int step = 0; ev < 0; ++step) {
             if (step > 1000000) {
                 st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: too many steps between events");
@@ -757,8 +785,14 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             }
             if (step > 0) {
                 if (!tangent(R, L->p, t1)) {
-                    st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: singular rigidity matrix");
-                    goto done;
+                    lk_watch flat;
+                    if (!flattest_any(L, &flat)) {
+                        st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: singular rigidity matrix");
+                        goto done;
+                    }
+                    watch[nw] = flat;
+                    ev = nw;
+                    break;
                 }
                 double dot = 0.0;
                 for (int q = 0; q < n; ++q) dot += ori_v2_dot(t0[q], t1[q]);
@@ -775,20 +809,8 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                 // No step converges: the framework is at a degenerate configuration (two edges at
                 // a vertex aligned within rounding, e.g. a hull edge put back at an event). Treat
                 // the flattest angle as the event.
-                lk_watch flat = {-1, -1, -1};
-                double best = 1e-6;
-                for (int v = 0; v < n; ++v) {
-                    if (L->frozen[v]) continue;
-                    const int *nb = L->adj + L->adj_start[v];
-                    int deg = L->adj_start[v + 1] - L->adj_start[v];
-                    for (int i = 0; i < deg; ++i) {
-                        lk_watch cand = {v, nb[i], nb[(i + 1) % deg]};
-                        ori_v2 da = ori_v2_sub(L->p[cand.a], L->p[v]), db = ori_v2_sub(L->p[cand.b], L->p[v]);
-                        double sn = fabs(wedge_sine(L->p, cand));
-                        if (ori_v2_dot(da, db) < 0.0 && sn < best) best = sn, flat = cand;
-                    }
-                }
-                if (flat.v < 0) {
+                lk_watch flat;
+                if (!flattest_any(L, &flat)) {
                     st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: step underflow");
                     goto done;
                 }
@@ -865,7 +887,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             }
             ev = w_ev;
         }
-        sys_destroy(&R->S);
+        if (R->S.col) sys_destroy(&R->S);
         push_frame(R, L->p, true, true);
         // The drive edge is not put back: the motion has moved its ends apart and other vertices
         // may now lie across it; the completion after the event adds whatever edges are valid.
