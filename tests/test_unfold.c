@@ -215,3 +215,32 @@ Test(unfold, random_convex_hulls, .init = test_leak_setup, .fini = test_leak_che
         ori_unfold_mesh_destroy(m);
     }
 }
+
+// A spiky shape (an icosahedron with a tall pyramid on every face): one try gives no net
+// without overlap and the split leaves pieces that do not overlap; more tries find one net.
+Test(unfold, split_when_no_net, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_mesh *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_unfold_load_mesh(test_repo_path("tests/data/unfold/spiky.obj"), &m, &err), ORI_OK);
+    ori_unfold_def def = ori_default_unfold_def();
+    def.tries = 1;
+    ori_unfold_net *net = NULL;
+    cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK);
+    ori_unfold_result r = ori_unfold_net_result(net);
+    cr_assert_gt(r.pieces, 1);
+    cr_assert_eq(r.overlaps, 0);
+    cr_assert(!r.refolded);
+    const ori_pattern *p = ori_unfold_net_pattern(net);
+    int creases = 0;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) creases += ori_pattern_edge(p, e).assignment != ORI_ASSIGN_BOUNDARY;
+    cr_assert_eq(creases, r.faces - r.pieces);
+    ori_unfold_net_destroy(net);
+    def.tries = 50;
+    cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK);
+    r = ori_unfold_net_result(net);
+    cr_assert_eq(r.pieces, 1);
+    cr_assert_leq(r.max_refold_error, 1e-9);
+    ori_unfold_net_destroy(net);
+    ori_unfold_mesh_destroy(m);
+}

@@ -1168,6 +1168,16 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     } else {
         for (int f = 0; f < nf; ++f) piece[f] = -1;
         piece[order[0]] = 0;
+        // face boxes to skip pairs far apart
+        double *box = ori__alloc(((size_t)nf + 1) * 4 * sizeof *box);
+        for (int f = 0; f < nf; ++f) {
+            double *b = box + 4 * f;
+            b[0] = b[2] = INFINITY, b[1] = b[3] = -INFINITY;
+            for (int q = 0; q < fsize(m, f); ++q) {
+                ori_v2 pq = c.pos[m->fstart[f] + q];
+                b[0] = fmin(b[0], pq.x), b[1] = fmax(b[1], pq.x), b[2] = fmin(b[2], pq.y), b[3] = fmax(b[3], pq.y);
+            }
+        }
         for (int i = 1; i < nf; ++i) {
             int f = order[i], k = parent_edge[f];
             int pf = c.e[k].f == f ? c.e[k].g : c.e[k].f;
@@ -1176,7 +1186,10 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
             double tol = OVERLAP_REL * m->diag;
             for (int j = 0; j < i && !clash; ++j) {
                 int g = order[j];
-                if (piece[g] == pp) clash = faces_overlap(&c, f, g, tri_start, tri, tol);
+                if (piece[g] != pp) continue;
+                const double *bf = box + 4 * f, *bg = box + 4 * g;
+                if (bf[0] >= bg[1] - tol || bg[0] >= bf[1] - tol || bf[2] >= bg[3] - tol || bg[2] >= bf[3] - tol) continue;
+                clash = faces_overlap(&c, f, g, tri_start, tri, tol);
             }
             if (clash) {
                 best_tree[k] = false;
@@ -1185,6 +1198,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
                 piece[f] = pp;
             }
         }
+        ori__free(box);
         // renumber pieces densely
         int *ren = ori__alloc(((size_t)nf + 1) * sizeof *ren);
         for (int q = 0; q < nf; ++q) ren[q] = -1;
