@@ -3,9 +3,10 @@
 // a pointed pseudo-triangulation (PPT: a maximal planar graph in which every vertex has an angle
 // larger than π), a convex-hull edge that is not a bar is removed, and the remaining framework
 // has a one-degree-of-freedom motion that is expansive (no distance decreases). The motion is
-// followed by predictor–corrector continuation in the length D of the removed edge (velocities
-// from the rigidity matrix, CHOLMOD, then Newton projection onto every edge length) until the
-// reflex angle of some vertex reaches π (root-finding on its sine to 1e-12 in D). Then the two
+// followed by predictor–corrector continuation (its direction: the removed edge lengthens; the
+// tangent from the square rigidity system, KLU sparse LU; the curve parametrised by its fastest
+// coordinate; Newton projection onto every edge length) until the reflex angle of some vertex
+// reaches π (root-finding on its sine, bracket 1e-12 of the size in arc length). Then the two
 // aligned edges are both bars (the joint is straight: it stays straight, the two bars become one)
 // or one of them is not a bar: it is removed and the graph completed again (the flip). Every
 // combinatorial decision uses the exact orientation predicate.
