@@ -21,5 +21,6 @@
 #include "render.h"
 #include "sequence.h"
 #include "tolerance.h"
+#include "unfold.h"
 
 #endif

@@ -1,0 +1,163 @@
+// orikin unfold: a polyhedral surface (OBJ, STL, FOLD) → an edge-unfolded net that folds back.
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+#define CMD "unfold"
+
+extern const cli_command cli_cmd_unfold;
+
+static const char help[] =
+    "usage: orikin unfold SHAPE [--tries N] [--all] [-o NET.fold] [--svg NET.svg] [--json]\n"
+    "\n"
+    "Cut a polyhedral surface (SHAPE: .obj, .stl, or a .fold folded form; closed or open;\n"
+    "coplanar neighbouring faces are merged) along edges into a flat net without overlap: spanning\n"
+    "trees of the face graph are tried (steepest-edge, random and flattest-first trees) until one\n"
+    "lays out without overlapping faces; when none does, the best is split into pieces. The net is a\n"
+    "crease pattern: cut edges are boundaries (B), creases mountain or valley with edges_foldAngle\n"
+    "the angles that rebuild the shape; it is folded back with orikin's kinematics and the fold\n"
+    "(all creases together) is checked for self-collision. Bad shapes (non-manifold edges,\n"
+    "degenerate or non-planar faces) are refused (exit 3).\n"
+    "\n"
+    "options:\n"
+    "  --tries N          spanning trees to try (default 50)\n"
+    "  --seed N           seed of the random trees (default 1)\n"
+    "  --all              enumerate every spanning tree (up to 24 faces) and count the distinct nets\n"
+    "                     up to rotation and reflection\n"
+    "  -o, --output FILE  write the net as FOLD (faces_orikin:source, edges_orikin:glue)\n"
+    "  --svg FILE         draw the net as SVG\n"
+    "  --json             print {pieces, faces, overlaps, tries, max_refold_error, ...} as JSON\n"
+    "\n"
+    "example:\n"
+    "  orikin unfold tests/data/unfold/cube.obj --all -o cube-net.fold --json\n";
+
+static int write_net(const char *path, const ori_unfold_net *net, bool svg)
+{
+    const ori_pattern *p = ori_unfold_net_pattern(net);
+    ori_fold *doc = ori_fold_create();
+    ori_error err;
+    ori_error_clear(&err);
+    ori_fold_set_string(doc, 0, "file_creator", "orikin unfold");
+    ori_status st = ori_fold_set_pattern(doc, 0, p, &err);
+    if (st == ORI_OK && !svg) {
+        json_t *src = json_array(), *glue = json_array();
+        int buf[4096];
+        for (int f = 0; f < ori_pattern_face_count(p); ++f) {
+            int n = ori_unfold_net_face_source(net, f, buf, 4096);
+            json_t *a = json_array();
+            for (int i = 0; i < n && i < 4096; ++i) json_array_append_new(a, json_integer(buf[i]));
+            json_array_append_new(src, a);
+        }
+        for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+            int g = ori_unfold_net_glue(net, e);
+            json_array_append_new(glue, g >= 0 ? json_integer(g) : json_null());
+        }
+        char *s1 = json_dumps(src, JSON_COMPACT), *s2 = json_dumps(glue, JSON_COMPACT);
+        st = ori_fold_set_custom(doc, 0, "faces_orikin:source", s1, &err);
+        if (st == ORI_OK) st = ori_fold_set_custom(doc, 0, "edges_orikin:glue", s2, &err);
+        if (st == ORI_OK) st = ori_fold_set_custom(doc, 0, "frame_classes", "[\"creasePattern\"]", &err);
+        free(s1), free(s2);
+        json_decref(src), json_decref(glue);
+        if (st == ORI_OK) st = ori_fold_save_file(doc, path, &err);
+    }
+    int rc = CLI_EXIT_OK;
+    if (st != ORI_OK) rc = cli_input_error(CMD, path, &err);
+    else if (svg) rc = cli_write_pattern(CMD, doc, p, path);
+    ori_fold_destroy(doc);
+    return rc;
+}
+
+static int run(int argc, char **argv)
+{
+    const char *path = NULL, *out = NULL, *svg = NULL, *v;
+    bool json = false;
+    ori_unfold_def def = ori_default_unfold_def();
+    cli_seen seen = {0};
+    for (int i = 1; i < argc; ++i) {
+        if (cli_is_help(argv[i])) return cli_print_help(&cli_cmd_unfold);
+        if (strcmp(argv[i], "--json") == 0) {
+            json = true;
+        } else if (strcmp(argv[i], "--all") == 0) {
+            def.all = true;
+        } else if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
+            if (!(out = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+        } else if (strcmp(argv[i], "--svg") == 0) {
+            if (!(svg = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+        } else if (strcmp(argv[i], "--tries") == 0) {
+            if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &def.tries) || def.tries < 1 || def.tries > 1000000)
+                return cli_usage(CMD, "--tries needs an integer from 1 to 1000000, got '%s'", v);
+        } else if (strcmp(argv[i], "--seed") == 0) {
+            int s;
+            if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &s) || s < 0) return cli_usage(CMD, "--seed needs a non-negative integer, got '%s'", v);
+            def.seed = (unsigned)s;
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            return cli_usage(CMD, "unknown option %s", argv[i]);
+        } else if (!path) {
+            path = argv[i];
+        } else {
+            return cli_usage(CMD, "one SHAPE only");
+        }
+    }
+    if (!path) return cli_usage(CMD, "missing SHAPE");
+    ori_error err;
+    ori_error_clear(&err);
+    ori_mesh *mesh = NULL;
+    if (ori_unfold_load_mesh(path, &mesh, &err) != ORI_OK) return cli_input_error(CMD, path, &err);
+    ori_unfold_net *net = NULL;
+    if (ori_unfold_solve(mesh, &def, &net, &err) != ORI_OK) {
+        ori_unfold_mesh_destroy(mesh);
+        return cli_input_error(CMD, path, &err);
+    }
+    ori_unfold_result r = ori_unfold_net_result(net);
+    int rc = CLI_EXIT_OK;
+    if (out) rc = write_net(out, net, false);
+    if (rc == CLI_EXIT_OK && svg) rc = write_net(svg, net, true);
+    if (rc == CLI_EXIT_OK) {
+        if (json) {
+            json_t *o = json_object();
+            json_object_set_new(o, "pieces", json_integer(r.pieces));
+            json_object_set_new(o, "faces", json_integer(r.faces));
+            json_object_set_new(o, "input_faces", json_integer(r.input_faces));
+            json_object_set_new(o, "overlaps", json_integer(r.overlaps));
+            json_object_set_new(o, "tries", json_integer(r.tries));
+            json_object_set_new(o, "max_refold_error", r.refolded ? json_real(r.max_refold_error) : json_null());
+            json_object_set_new(o, "motion_collides", r.refolded ? json_boolean(r.motion_collides) : json_null());
+            static const char *orders[] = {"together", "leaves first", "root first"};
+            json_object_set_new(o, "fold_order", r.fold_order >= 0 ? json_string(orders[r.fold_order]) : json_null());
+            if (def.all) {
+                json_object_set_new(o, "distinct_nets", r.distinct_nets >= 0 ? json_integer(r.distinct_nets) : json_null());
+                json_object_set_new(o, "spanning_trees", json_integer(r.spanning_trees));
+                json_object_set_new(o, "overlap_free_trees", json_integer(r.overlap_free_trees));
+            }
+            char *s = json_dumps(o, JSON_COMPACT | JSON_REAL_PRECISION(17));
+            ori_error e2;
+            char *norm = ori_json_normalize(s, false, &e2);
+            printf("%s\n", norm ? norm : s);
+            ori_buffer_free(norm);
+            free(s);
+            json_decref(o);
+        } else {
+            printf("%d faces (%d in the input): %s after %d tries\n", r.faces, r.input_faces,
+                   r.pieces == 1 ? "one net without overlap" : "no single net found", r.tries);
+            if (r.pieces > 1) printf("split into %d pieces without overlap\n", r.pieces);
+            if (r.refolded)
+                printf("folded back to the shape within %.3g (relative); %s\n", r.max_refold_error,
+                       r.fold_order == ORI_FOLD_ORDER_TOGETHER       ? "all creases together without collision"
+                       : r.fold_order == ORI_FOLD_ORDER_LEAVES_FIRST ? "without collision one crease at a time, leaves first"
+                       : r.fold_order == ORI_FOLD_ORDER_ROOT_FIRST   ? "without collision one crease at a time, root first"
+                                                                     : "every fold order tried collides");
+            if (def.all && r.distinct_nets >= 0)
+                printf("%d distinct nets (up to rotation and reflection) from %d of %d spanning trees\n", r.distinct_nets,
+                       r.overlap_free_trees, r.spanning_trees);
+        }
+    }
+    ori_unfold_net_destroy(net);
+    ori_unfold_mesh_destroy(mesh);
+    return rc;
+}
+
+const cli_command cli_cmd_unfold = {"unfold", "cut a polyhedral surface into a net that folds back", help, run, NULL};

@@ -1,0 +1,1273 @@
+// Edge unfolding of polyhedral surfaces: faces (coplanar neighbours merged) → a spanning tree
+// of the face graph (steepest-edge cut trees, random minimum spanning trees, breadth-first
+// trees; several tries) → the net laid out in the plane → overlap test of every pair of faces
+// (broad phase on boxes, separating axes on the convex pieces of the faces) → a crease pattern
+// whose fold angles rebuild the shape, checked by folding it back with orikin's kinematics.
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <orikin/collision.h>
+#include <orikin/fold.h>
+#include <orikin/kinematics.h>
+#include <orikin/unfold.h>
+
+#include "../core/core_internal.h"
+#include "unfold_internal.h"
+
+#define PLANAR_REL 1e-6   // coplanarity of a polygon's vertices, relative to the diagonal
+#define MERGE_RAD 1e-9    // neighbours whose normals differ less than this are one face
+#define OVERLAP_REL 1e-9  // penetration depth counted as overlap, relative to the diagonal
+
+struct ori_mesh {
+    int nv, nf;
+    ori_v3 *v;
+    int *fstart, *fv;  // merged faces (counter-clockwise seen from outside)
+    int *src_start, *src; // input faces of each merged face
+    double diag;
+};
+
+ori_unfold_def ori_default_unfold_def(void)
+{
+    ori_unfold_def d;
+    memset(&d, 0, sizeof d);
+    d.tries = 50;
+    d.seed = 1;
+    d.all_max_faces = 24;
+    d.internal_value = ORI__DEF_COOKIE;
+    return d;
+}
+
+void ori_unfold_mesh_destroy(ori_mesh *m)
+{
+    if (!m) return;
+    ori__free(m->v), ori__free(m->fstart), ori__free(m->fv), ori__free(m->src_start), ori__free(m->src);
+    ori__free(m);
+}
+
+int ori_unfold_mesh_face_count(const ori_mesh *m) { return m->nf; }
+int ori_unfold_mesh_vertex_count(const ori_mesh *m) { return m->nv; }
+
+static ori_v3 face_normal(const ori_v3 *v, const int *f, int k)
+{
+    ori_v3 n = {0, 0, 0};
+    for (int i = 0; i < k; ++i) n = ori_v3_add(n, ori_v3_cross(v[f[i]], v[f[(i + 1) % k]]));
+    return n; // twice the vector area
+}
+
+// --- edges of a face list --------------------------------------------------------------------
+
+typedef struct half {
+    int a, b, face, idx; // directed a→b in face at corner idx
+} half;
+
+static int cmp_half(const void *x, const void *y)
+{
+    const half *p = x, *q = y;
+    int pa = p->a < p->b ? p->a : p->b, pb = p->a < p->b ? p->b : p->a;
+    int qa = q->a < q->b ? q->a : q->b, qb = q->a < q->b ? q->b : q->a;
+    if (pa != qa) return pa - qa;
+    if (pb != qb) return pb - qb;
+    return p->face - q->face;
+}
+
+// Pair every half-edge with its twin; twin[h] = −1 on the boundary. Fails on non-manifold or
+// inconsistently oriented edges.
+static ori_status pair_halves(half *h, int nh, int *twin, const char *what, ori_error *error)
+{
+    qsort(h, (size_t)nh, sizeof *h, cmp_half);
+    for (int i = 0; i < nh; ++i) twin[i] = -1;
+    for (int i = 0; i < nh;) {
+        int j = i + 1;
+        while (j < nh && cmp_half(&(half){h[i].a, h[i].b, 0, 0}, &(half){h[j].a, h[j].b, 0, 0}) == 0) ++j;
+        if (j - i > 2)
+            return ori__fail_at(error, ORI_ERR_TOPOLOGY, what, h[i].face,
+                                "non-manifold: edge %d–%d is shared by %d faces", h[i].a, h[i].b, j - i);
+        if (j - i == 2) {
+            if (h[i].a == h[i + 1].a)
+                return ori__fail_at(error, ORI_ERR_TOPOLOGY, what, h[i + 1].face,
+                                    "faces %d and %d are not consistently oriented (edge %d–%d)", h[i].face,
+                                    h[i + 1].face, h[i].a, h[i].b);
+            twin[i] = i + 1, twin[i + 1] = i;
+        }
+        i = j;
+    }
+    return ORI_OK;
+}
+
+// --- loading ---------------------------------------------------------------------------------
+
+// Validate the input faces and merge coplanar neighbours into polygons.
+static ori_status build_mesh(ori_v3 *v, int nv, int *fstart, int *fv, int nf, ori_mesh **out, ori_error *error)
+{
+    ori_mesh *m = ori__calloc(1, sizeof *m);
+    m->nv = nv, m->v = v;
+    ori_v3 lo = {INFINITY, INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < nv; ++i) {
+        lo = ori_v3_make(fmin(lo.x, v[i].x), fmin(lo.y, v[i].y), fmin(lo.z, v[i].z));
+        hi = ori_v3_make(fmax(hi.x, v[i].x), fmax(hi.y, v[i].y), fmax(hi.z, v[i].z));
+    }
+    m->diag = nv ? ori_v3_norm(ori_v3_sub(hi, lo)) : 1.0;
+    ori_status st = ORI_OK;
+    if (nf == 0) st = ori__fail(error, ORI_ERR_TOPOLOGY, "no faces");
+    ori_v3 *nrm = ori__alloc(((size_t)nf + 1) * sizeof *nrm);
+    for (int f = 0; f < nf && st == ORI_OK; ++f) {
+        int k = fstart[f + 1] - fstart[f];
+        const int *fc = fv + fstart[f];
+        for (int i = 0; i < k && st == ORI_OK; ++i) {
+            if (fc[i] < 0 || fc[i] >= nv) st = ori__fail_at(error, ORI_ERR_RANGE, "faces_vertices", f, "vertex index out of range");
+            for (int j = i + 1; j < k && st == ORI_OK; ++j)
+                if (fc[i] == fc[j]) st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f, "repeats vertex %d", fc[i]);
+        }
+        if (st != ORI_OK) break;
+        if (k < 3) {
+            st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f, "has fewer than 3 vertices");
+            break;
+        }
+        ori_v3 n = face_normal(v, fc, k);
+        double area = 0.5 * ori_v3_norm(n);
+        if (!(area > 1e-12 * m->diag * m->diag)) {
+            st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f, "degenerate face (zero area)");
+            break;
+        }
+        n = ori_v3_normalize(n);
+        nrm[f] = n;
+        for (int i = 0; i < k; ++i)
+            if (fabs(ori_v3_dot(ori_v3_sub(v[fc[i]], v[fc[0]]), n)) > PLANAR_REL * m->diag) {
+                st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f,
+                                  "not planar: vertex %d is %.3g off the face's plane", fc[i],
+                                  fabs(ori_v3_dot(ori_v3_sub(v[fc[i]], v[fc[0]]), n)));
+                break;
+            }
+    }
+    int nh = fstart[nf];
+    half *h = ori__alloc(((size_t)nh + 1) * sizeof *h);
+    int *twin = ori__alloc(((size_t)nh + 1) * sizeof *twin);
+    if (st == ORI_OK) {
+        for (int f = 0, q = 0; f < nf; ++f)
+            for (int i = fstart[f]; i < fstart[f + 1]; ++i)
+                h[q++] = (half){fv[i], fv[i + 1 < fstart[f + 1] ? i + 1 : fstart[f]], f, i - fstart[f]};
+        st = pair_halves(h, nh, twin, "faces_vertices", error);
+    }
+    if (st != ORI_OK) {
+        ori__free(nrm), ori__free(h), ori__free(twin);
+        m->v = NULL;
+        ori_unfold_mesh_destroy(m);
+        return st;
+    }
+    // merge: union of faces across edges with equal normals
+    int *uf = ori__alloc((size_t)nf * sizeof *uf);
+    for (int f = 0; f < nf; ++f) uf[f] = f;
+    for (int i = 0; i < nh; ++i) {
+        int j = twin[i];
+        if (j < i) continue;
+        int f = h[i].face, g = h[j].face;
+        double ang = atan2(ori_v3_norm(ori_v3_cross(nrm[f], nrm[g])), ori_v3_dot(nrm[f], nrm[g]));
+        if (ang < MERGE_RAD) {
+            int a = ori__uf_root(uf, f), b = ori__uf_root(uf, g);
+            if (a != b) uf[a] = b;
+        }
+    }
+    // For each group: boundary half-edges (twin outside the group); one loop → a merged face.
+    int *group = ori__alloc((size_t)nf * sizeof *group), ng = 0;
+    int *gid = ori__alloc((size_t)nf * sizeof *gid);
+    for (int f = 0; f < nf; ++f) gid[f] = -1;
+    for (int f = 0; f < nf; ++f) {
+        int r = ori__uf_root(uf, f);
+        if (gid[r] < 0) gid[r] = ng++;
+        group[f] = gid[r];
+    }
+    // next boundary half-edge: map from start vertex within group
+    int cap_fv = nh + 1, cap_f = nf + 1, nmf = 0, nfv = 0;
+    m->fstart = ori__alloc(((size_t)cap_f + 1) * sizeof(int));
+    m->fv = ori__alloc((size_t)cap_fv * sizeof(int));
+    m->src_start = ori__alloc(((size_t)cap_f + 1) * sizeof(int));
+    m->src = ori__alloc((size_t)nf * sizeof(int));
+    int nsrc = 0;
+    // boundary halves per group, sorted by group then start vertex
+    int *bh = ori__alloc(((size_t)nh + 1) * sizeof *bh), nb = 0;
+    for (int i = 0; i < nh; ++i) {
+        int j = twin[i];
+        if (j < 0 || group[h[j].face] != group[h[i].face]) bh[nb++] = i;
+    }
+    int *bcount = ori__calloc((size_t)ng + 1, sizeof *bcount);
+    for (int i = 0; i < nb; ++i) bcount[group[h[bh[i]].face] + 1]++;
+    for (int g = 0; g < ng; ++g) bcount[g + 1] += bcount[g];
+    int *bsorted = ori__alloc(((size_t)nb + 1) * sizeof *bsorted), *fill = ori__alloc(((size_t)ng + 1) * sizeof *fill);
+    memcpy(fill, bcount, (size_t)ng * sizeof *fill);
+    for (int i = 0; i < nb; ++i) bsorted[fill[group[h[bh[i]].face]]++] = bh[i];
+    bool *used = ori__calloc((size_t)nh + 1, 1);
+    for (int g = 0; g < ng; ++g) {
+        int s = bcount[g], e = bcount[g + 1];
+        // one loop with every vertex once?
+        bool single = e - s >= 3;
+        int start = single ? bsorted[s] : -1, cur = start, len = 0;
+        while (single) {
+            used[cur] = true;
+            len++;
+            int nxt = -1, hits = 0;
+            for (int t = s; t < e; ++t)
+                if (h[bsorted[t]].a == h[cur].b) nxt = bsorted[t], hits++;
+            if (hits != 1) single = false;
+            else if (nxt == start) break;
+            else if (used[nxt]) single = false;
+            else cur = nxt;
+        }
+        if (single && len != e - s) single = false;
+        if (single) {
+            m->fstart[nmf] = nfv;
+            m->src_start[nmf] = nsrc;
+            cur = start;
+            do {
+                m->fv[nfv++] = h[cur].a;
+                int nxt = -1;
+                for (int t = s; t < e; ++t)
+                    if (h[bsorted[t]].a == h[cur].b) nxt = bsorted[t];
+                cur = nxt;
+            } while (cur != start);
+            for (int f = 0; f < nf; ++f)
+                if (group[f] == g) m->src[nsrc++] = f;
+            nmf++;
+        } else {
+            // keep the group's faces as they are
+            for (int f = 0; f < nf; ++f) {
+                if (group[f] != g) continue;
+                m->fstart[nmf] = nfv;
+                m->src_start[nmf] = nsrc;
+                for (int i = fstart[f]; i < fstart[f + 1]; ++i) m->fv[nfv++] = fv[i];
+                m->src[nsrc++] = f;
+                nmf++;
+            }
+        }
+    }
+    m->fstart[nmf] = nfv, m->src_start[nmf] = nsrc, m->nf = nmf;
+    ori__free(used), ori__free(bsorted), ori__free(fill), ori__free(bcount), ori__free(bh), ori__free(group), ori__free(gid);
+    ori__free(uf), ori__free(nrm), ori__free(h), ori__free(twin);
+    *out = m;
+    return ORI_OK;
+}
+
+ori_status ori_unfold_mesh_create(const ori_v3 *coords, int vertex_count, const int *face_start, const int *face_vertices,
+                                  int face_count, ori_mesh **out, ori_error *error)
+{
+    ORI_ASSERT(out && (vertex_count == 0 || coords) && face_start);
+    *out = NULL;
+    for (int i = 0; i < vertex_count; ++i)
+        if (!ori__coord_ok(coords[i].x) || !ori__coord_ok(coords[i].y) || !ori__coord_ok(coords[i].z))
+            return ori__fail_at(error, ORI_ERR_RANGE, "vertices_coords", i, "coordinate not finite");
+    ori_v3 *v = ori__alloc(((size_t)vertex_count + 1) * sizeof *v);
+    memcpy(v, coords, (size_t)vertex_count * sizeof *v);
+    int *fs = ori__alloc(((size_t)face_count + 1) * sizeof *fs);
+    memcpy(fs, face_start, ((size_t)face_count + 1) * sizeof *fs);
+    int *fv = ori__alloc(((size_t)fs[face_count] + 1) * sizeof *fv);
+    memcpy(fv, face_vertices, (size_t)fs[face_count] * sizeof *fv);
+    ori_status st = build_mesh(v, vertex_count, fs, fv, face_count, out, error);
+    if (st != ORI_OK) ori__free(v);
+    ori__free(fs), ori__free(fv);
+    return st;
+}
+
+// OBJ: "v x y z" and "f a b c ..." (1-based, negative relative, "a/t/n" forms).
+static ori_status read_obj(const char *text, ori_v3 **pv, int *pnv, int **pfs, int **pfv, int *pnf, ori_error *error)
+{
+    int nv = 0, cv = 0, nf = 0, cf = 0, nfv = 0, cfv = 0;
+    ori_v3 *v = NULL;
+    int *fs = NULL, *fv = NULL;
+    int line = 1;
+    int nfs = 0;
+    ORI__PUSH(fs, nfs, cf, 0);
+    for (const char *p = text; *p; ++line) {
+        const char *eol = strchr(p, '\n');
+        size_t len = eol ? (size_t)(eol - p) : strlen(p);
+        char buf[4096];
+        if (len >= sizeof buf) {
+            ori__free(v), ori__free(fs), ori__free(fv);
+            return ori__fail_pos(error, ORI_ERR_LIMIT, line, 1, "line too long");
+        }
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        p = eol ? eol + 1 : p + len;
+        char *s = buf;
+        while (*s == ' ' || *s == '\t') ++s;
+        if (s[0] == 'v' && (s[1] == ' ' || s[1] == '\t')) {
+            ori_v3 x;
+            if (sscanf(s + 2, "%lf %lf %lf", &x.x, &x.y, &x.z) != 3) {
+                ori__free(v), ori__free(fs), ori__free(fv);
+                return ori__fail_pos(error, ORI_ERR_PARSE, line, 1, "vertex needs three numbers");
+            }
+            ORI__PUSH(v, nv, cv, x);
+        } else if (s[0] == 'f' && (s[1] == ' ' || s[1] == '\t')) {
+            char *q = s + 2;
+            int count = 0;
+            for (;;) {
+                while (*q == ' ' || *q == '\t' || *q == '\r') ++q;
+                if (!*q) break;
+                char *end;
+                long idx = strtol(q, &end, 10);
+                if (end == q || idx == 0) {
+                    ori__free(v), ori__free(fs), ori__free(fv);
+                    return ori__fail_pos(error, ORI_ERR_PARSE, line, (int)(q - buf) + 1, "bad vertex index");
+                }
+                long vi = idx > 0 ? idx - 1 : nv + idx;
+                if (vi < 0 || vi >= nv) {
+                    ori__free(v), ori__free(fs), ori__free(fv);
+                    return ori__fail_pos(error, ORI_ERR_RANGE, line, (int)(q - buf) + 1, "vertex %ld does not exist", idx);
+                }
+                ORI__PUSH(fv, nfv, cfv, (int)vi);
+                count++;
+                q = end;
+                while (*q && *q != ' ' && *q != '\t') ++q;
+            }
+            ORI__PUSH(fs, nfs, cf, nfv);
+            nf = nfs - 1;
+            (void)count;
+        }
+    }
+    // fs holds nf + 1 entries (pushes above keep fs[nf] = nfv)
+    *pv = v, *pnv = nv, *pfs = fs, *pfv = fv, *pnf = nf;
+    return ORI_OK;
+}
+
+// STL (binary, or ASCII "solid ... facet ... vertex x y z"): vertices welded by exact coordinates.
+static int cmp_v3_idx_data(const ori_v3 *v, int a, int b)
+{
+    if (v[a].x != v[b].x) return v[a].x < v[b].x ? -1 : 1;
+    if (v[a].y != v[b].y) return v[a].y < v[b].y ? -1 : 1;
+    if (v[a].z != v[b].z) return v[a].z < v[b].z ? -1 : 1;
+    return 0;
+}
+static _Thread_local const ori_v3 *g_weld_v; // qsort has no context argument
+static int cmp_weld(const void *x, const void *y) { return cmp_v3_idx_data(g_weld_v, *(const int *)x, *(const int *)y); }
+
+static ori_status read_stl(const char *data, size_t size, ori_v3 **pv, int *pnv, int **pfs, int **pfv, int *pnf, ori_error *error)
+{
+    ori_v3 *raw = NULL;
+    int nr = 0, cr = 0;
+    bool binary = size >= 84;
+    uint32_t ntri = 0;
+    if (binary) {
+        memcpy(&ntri, data + 80, 4);
+        binary = (size_t)84 + (size_t)ntri * 50 == size;
+    }
+    if (binary) {
+        for (uint32_t t = 0; t < ntri; ++t)
+            for (int k = 0; k < 3; ++k) {
+                float x[3];
+                memcpy(x, data + 84 + (size_t)t * 50 + 12 + (size_t)k * 12, 12);
+                ori_v3 p = {x[0], x[1], x[2]};
+                ORI__PUSH(raw, nr, cr, p);
+            }
+    } else {
+        if (strncmp(data, "solid", 5) != 0) return ori__fail_pos(error, ORI_ERR_PARSE, 1, 1, "not an STL file");
+        int line = 1;
+        for (const char *p = data; *p; ++p) {
+            if (*p == '\n') line++;
+            if (strncmp(p, "vertex", 6) == 0 && (p == data || p[-1] == ' ' || p[-1] == '\t' || p[-1] == '\n')) {
+                ori_v3 x;
+                if (sscanf(p + 6, "%lf %lf %lf", &x.x, &x.y, &x.z) != 3) {
+                    ori__free(raw);
+                    return ori__fail_pos(error, ORI_ERR_PARSE, line, 1, "vertex needs three numbers");
+                }
+                ORI__PUSH(raw, nr, cr, x);
+            }
+        }
+        if (nr % 3) {
+            ori__free(raw);
+            return ori__fail(error, ORI_ERR_PARSE, "facets must have three vertices");
+        }
+    }
+    int *idx = ori__alloc(((size_t)nr + 1) * sizeof *idx), *map = ori__alloc(((size_t)nr + 1) * sizeof *map);
+    for (int i = 0; i < nr; ++i) idx[i] = i;
+    g_weld_v = raw;
+    qsort(idx, (size_t)nr, sizeof *idx, cmp_weld);
+    ori_v3 *v = ori__alloc(((size_t)nr + 1) * sizeof *v);
+    int nv = 0;
+    for (int i = 0; i < nr; ++i) {
+        if (i == 0 || cmp_v3_idx_data(raw, idx[i], idx[i - 1]) != 0) v[nv++] = raw[idx[i]];
+        map[idx[i]] = nv - 1;
+    }
+    int nf = nr / 3;
+    int *fs = ori__alloc(((size_t)nf + 1) * sizeof *fs), *fv = ori__alloc(((size_t)nr + 1) * sizeof *fv);
+    for (int f = 0; f <= nf; ++f) fs[f] = 3 * f;
+    for (int i = 0; i < nr; ++i) fv[i] = map[i];
+    ori__free(raw), ori__free(idx), ori__free(map);
+    *pv = v, *pnv = nv, *pfs = fs, *pfv = fv, *pnf = nf;
+    return ORI_OK;
+}
+
+ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *error)
+{
+    ORI_ASSERT(path && out);
+    *out = NULL;
+    size_t len = strlen(path);
+    const char *ext = len >= 4 ? path + len - 4 : "";
+    ori_v3 *v = NULL;
+    int *fs = NULL, *fv = NULL, nv = 0, nf = 0;
+    ori_status st;
+    if (len >= 5 && strcmp(path + len - 5, ".fold") == 0) {
+        ori_fold *doc = NULL;
+        st = ori_fold_load_file(path, &doc, error);
+        if (st != ORI_OK) return st;
+        ori_pattern *p = NULL;
+        st = ori_fold_get_pattern(doc, 0, NULL, &p, error);
+        ori_fold_destroy(doc);
+        if (st != ORI_OK) return st;
+        nv = ori_pattern_vertex_count(p), nf = ori_pattern_face_count(p);
+        v = ori__alloc(((size_t)nv + 1) * sizeof *v);
+        for (int i = 0; i < nv; ++i) v[i] = ori_pattern_vertex(p, i);
+        fs = ori__alloc(((size_t)nf + 1) * sizeof *fs);
+        int total = 0;
+        for (int f = 0; f < nf; ++f) total += ori_pattern_face_size(p, f);
+        fv = ori__alloc(((size_t)total + 1) * sizeof *fv);
+        fs[0] = 0;
+        for (int f = 0; f < nf; ++f) fs[f + 1] = fs[f] + ori_pattern_face_vertices(p, f, fv + fs[f], total - fs[f]);
+        ori_pattern_destroy(p);
+    } else {
+        char *data = NULL;
+        size_t size = 0;
+        st = ori_file_read_all(path, (size_t)1 << 31, &data, &size, error);
+        if (st != ORI_OK) return st;
+        if (strcmp(ext, ".obj") == 0 || strcmp(ext, ".OBJ") == 0) st = read_obj(data, &v, &nv, &fs, &fv, &nf, error);
+        else if (strcmp(ext, ".stl") == 0 || strcmp(ext, ".STL") == 0) st = read_stl(data, size, &v, &nv, &fs, &fv, &nf, error);
+        else st = ori__fail(error, ORI_ERR_UNSUPPORTED, "unknown shape format (expected .obj, .stl or .fold)");
+        ori_buffer_free(data);
+        if (st != ORI_OK) return st;
+    }
+    st = ori_unfold_mesh_create(v, nv, fs, fv, nf, out, error);
+    ori__free(v), ori__free(fs), ori__free(fv);
+    return st;
+}
+
+// --- the face graph and nets ---------------------------------------------------------------
+
+typedef struct fedge {
+    int f, g;   // faces (f holds a→b, g holds b→a); g = −1 on the boundary
+    int fi, gi; // corner index of a in f, of b in g
+    int a, b;   // 3D vertices
+    double angle; // FOLD fold angle of the crease (radians): negative for convex edges (mountain)
+} fedge;
+
+typedef struct net_ctx {
+    const ori_mesh *m;
+    int ne;
+    fedge *e;
+    int *fe_start, *fe; // face → its edge indices
+    ori_v2 *local;      // per face corner: coordinates in the face's own plane frame
+    ori_v3 *normal;
+    // work
+    ori_v2 *pos;        // placed corner positions (per face corner)
+    uint64_t rng;
+} net_ctx;
+
+static uint64_t rnd(net_ctx *c)
+{
+    c->rng ^= c->rng << 13, c->rng ^= c->rng >> 7, c->rng ^= c->rng << 17;
+    return c->rng;
+}
+static double rnd01(net_ctx *c) { return (double)(rnd(c) >> 11) / 9007199254740992.0; }
+
+static int fsize(const ori_mesh *m, int f) { return m->fstart[f + 1] - m->fstart[f]; }
+
+static void ctx_init(net_ctx *c, const ori_mesh *m)
+{
+    memset(c, 0, sizeof *c);
+    c->m = m;
+    int nh = m->fstart[m->nf];
+    half *h = ori__alloc(((size_t)nh + 1) * sizeof *h);
+    int *twin = ori__alloc(((size_t)nh + 1) * sizeof *twin);
+    for (int f = 0, q = 0; f < m->nf; ++f)
+        for (int i = m->fstart[f]; i < m->fstart[f + 1]; ++i)
+            h[q++] = (half){m->fv[i], m->fv[i + 1 < m->fstart[f + 1] ? i + 1 : m->fstart[f]], f, i - m->fstart[f]};
+    pair_halves(h, nh, twin, "faces", NULL);
+    c->normal = ori__alloc(((size_t)m->nf + 1) * sizeof *c->normal);
+    for (int f = 0; f < m->nf; ++f) c->normal[f] = ori_v3_normalize(face_normal(m->v, m->fv + m->fstart[f], fsize(m, f)));
+    c->e = ori__alloc(((size_t)nh + 1) * sizeof *c->e);
+    for (int i = 0; i < nh; ++i) {
+        int j = twin[i];
+        if (j >= 0 && j < i) continue;
+        fedge x = {h[i].face, j >= 0 ? h[j].face : -1, h[i].idx, j >= 0 ? h[j].idx : -1, h[i].a, h[i].b, 0.0};
+        if (j >= 0) {
+            ori_v3 nf = c->normal[x.f], ng = c->normal[x.g];
+            double mag = atan2(ori_v3_norm(ori_v3_cross(nf, ng)), ori_v3_dot(nf, ng));
+            // convex when g's centroid lies below f's plane
+            ori_v3 cg = {0, 0, 0};
+            int k = fsize(m, x.g);
+            for (int t = 0; t < k; ++t) cg = ori_v3_add(cg, m->v[m->fv[m->fstart[x.g] + t]]);
+            cg = ori_v3_scale(cg, 1.0 / k);
+            bool convex = ori_v3_dot(ori_v3_sub(cg, m->v[x.a]), nf) < 0.0;
+            x.angle = convex ? -mag : mag;
+        }
+        c->e[c->ne++] = x;
+    }
+    c->fe_start = ori__calloc((size_t)m->nf + 2, sizeof(int));
+    for (int k = 0; k < c->ne; ++k) {
+        c->fe_start[c->e[k].f + 1]++;
+        if (c->e[k].g >= 0) c->fe_start[c->e[k].g + 1]++;
+    }
+    for (int f = 0; f < m->nf; ++f) c->fe_start[f + 1] += c->fe_start[f];
+    c->fe = ori__alloc(((size_t)2 * c->ne + 1) * sizeof(int));
+    int *fill = ori__alloc(((size_t)m->nf + 1) * sizeof *fill);
+    memcpy(fill, c->fe_start, (size_t)m->nf * sizeof *fill);
+    for (int k = 0; k < c->ne; ++k) {
+        c->fe[fill[c->e[k].f]++] = k;
+        if (c->e[k].g >= 0) c->fe[fill[c->e[k].g]++] = k;
+    }
+    ori__free(fill);
+    c->local = ori__alloc(((size_t)nh + 1) * sizeof *c->local);
+    c->pos = ori__alloc(((size_t)nh + 1) * sizeof *c->pos);
+    for (int f = 0; f < m->nf; ++f) {
+        const int *fc = m->fv + m->fstart[f];
+        ori_v3 o = m->v[fc[0]], u = ori_v3_normalize(ori_v3_sub(m->v[fc[1]], o));
+        ori_v3 w = ori_v3_cross(c->normal[f], u);
+        for (int i = 0; i < fsize(m, f); ++i) {
+            ori_v3 d = ori_v3_sub(m->v[fc[i]], o);
+            c->local[m->fstart[f] + i] = ori_v2_make(ori_v3_dot(d, u), ori_v3_dot(d, w));
+        }
+    }
+    c->rng = 0x9E3779B97F4A7C15ULL;
+    ori__free(h), ori__free(twin);
+}
+
+static void ctx_free(net_ctx *c)
+{
+    ori__free(c->e), ori__free(c->fe_start), ori__free(c->fe), ori__free(c->local), ori__free(c->pos), ori__free(c->normal);
+}
+
+// Lay out the faces along the tree (in_tree[k] for each face edge) from root: each face's
+// corners in c->pos. order receives the faces in breadth-first order, parent_edge per face.
+static int layout(net_ctx *c, const bool *in_tree, int root, int *order, int *parent_edge, bool *placed)
+{
+    const ori_mesh *m = c->m;
+    for (int f = 0; f < m->nf; ++f) placed[f] = false, parent_edge[f] = -1;
+    for (int i = 0; i < fsize(m, root); ++i) c->pos[m->fstart[root] + i] = c->local[m->fstart[root] + i];
+    int head = 0, tail = 0;
+    order[tail++] = root;
+    placed[root] = true;
+    while (head < tail) {
+        int f = order[head++];
+        for (int t = c->fe_start[f]; t < c->fe_start[f + 1]; ++t) {
+            int k = c->fe[t];
+            if (!in_tree[k]) continue;
+            fedge *x = &c->e[k];
+            int g = x->f == f ? x->g : x->f;
+            if (g < 0 || placed[g]) continue;
+            // shared vertices a, b: their placed positions in f, local positions in g
+            int fi = x->f == f ? x->fi : x->gi, gi = x->f == f ? x->gi : x->fi;
+            int kf = fsize(m, f), kg = fsize(m, g);
+            ori_v2 P0 = c->pos[m->fstart[f] + fi], P1 = c->pos[m->fstart[f] + (fi + 1) % kf];
+            // in g the edge runs the other way: corner gi is P1's vertex, gi + 1 is P0's
+            ori_v2 L1 = c->local[m->fstart[g] + gi], L0 = c->local[m->fstart[g] + (gi + 1) % kg];
+            ori_v2 dp = ori_v2_sub(P1, P0), dl = ori_v2_sub(L1, L0);
+            double ang = atan2(dp.y, dp.x) - atan2(dl.y, dl.x);
+            double cs = cos(ang), sn = sin(ang);
+            for (int i = 0; i < kg; ++i) {
+                ori_v2 q = ori_v2_sub(c->local[m->fstart[g] + i], L0);
+                c->pos[m->fstart[g] + i] = ori_v2_add(P0, ori_v2_make(cs * q.x - sn * q.y, sn * q.x + cs * q.y));
+            }
+            c->pos[m->fstart[g] + gi] = P1, c->pos[m->fstart[g] + (gi + 1) % kg] = P0;
+            placed[g] = true;
+            parent_edge[g] = k;
+            order[tail++] = g;
+        }
+    }
+    return tail;
+}
+
+// Convex pieces of a placed face: ear-clipping triangles (indices into the face's corners).
+static int triangulate(const ori_v2 *p, int k, int *tri)
+{
+    int idx[256], n = k, t = 0;
+    if (k > 256) return 0;
+    for (int i = 0; i < k; ++i) idx[i] = i;
+    int guard = 0;
+    while (n > 3 && guard++ < 10000) {
+        bool cut = false;
+        for (int i = 0; i < n && !cut; ++i) {
+            int a = idx[(i + n - 1) % n], b = idx[i], cc = idx[(i + 1) % n];
+            if (ori_v2_cross(ori_v2_sub(p[b], p[a]), ori_v2_sub(p[cc], p[b])) <= 0.0) continue;
+            bool inside = false;
+            for (int j = 0; j < n && !inside; ++j) {
+                int q = idx[j];
+                if (q == a || q == b || q == cc) continue;
+                inside = ori__orient2d_exact(p[a], p[b], p[q]) >= 0 && ori__orient2d_exact(p[b], p[cc], p[q]) >= 0 &&
+                         ori__orient2d_exact(p[cc], p[a], p[q]) >= 0;
+            }
+            if (inside) continue;
+            tri[3 * t] = a, tri[3 * t + 1] = b, tri[3 * t + 2] = cc, t++;
+            memmove(idx + i, idx + i + 1, (size_t)(n - i - 1) * sizeof *idx);
+            n--;
+            cut = true;
+        }
+        if (!cut) break;
+    }
+    if (n == 3) tri[3 * t] = idx[0], tri[3 * t + 1] = idx[1], tri[3 * t + 2] = idx[2], t++;
+    return t;
+}
+
+// Separating axes with tolerance: two triangles overlap when no edge normal separates them by
+// more than −tol (touching along an edge or at a point is not an overlap).
+static bool tri_overlap(const ori_v2 *a, const ori_v2 *b, double tol)
+{
+    const ori_v2 *s[2] = {a, b};
+    for (int w = 0; w < 2; ++w)
+        for (int i = 0; i < 3; ++i) {
+            ori_v2 p = s[w][i], q = s[w][(i + 1) % 3];
+            ori_v2 n = ori_v2_normalize(ori_v2_make(q.y - p.y, p.x - q.x)); // outward for ccw
+            double amin = INFINITY, amax = -INFINITY, bmin = INFINITY, bmax = -INFINITY;
+            for (int j = 0; j < 3; ++j) {
+                double x = ori_v2_dot(n, a[j]), y = ori_v2_dot(n, b[j]);
+                amin = fmin(amin, x), amax = fmax(amax, x), bmin = fmin(bmin, y), bmax = fmax(bmax, y);
+            }
+            if (amax <= bmin + tol || bmax <= amin + tol) return false;
+        }
+    return true;
+}
+
+typedef struct face_box {
+    double x0, x1, y0, y1;
+    int f;
+} face_box;
+
+static int cmp_box(const void *x, const void *y)
+{
+    double a = ((const face_box *)x)->x0, b = ((const face_box *)y)->x0;
+    return a < b ? -1 : a > b;
+}
+
+static bool faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, const int *tri, double tol)
+{
+    const ori_mesh *m = c->m;
+    for (int s = tri_start[f]; s < tri_start[f + 1]; ++s)
+        for (int t = tri_start[g]; t < tri_start[g + 1]; ++t) {
+            ori_v2 A[3], B[3];
+            for (int j = 0; j < 3; ++j) A[j] = c->pos[m->fstart[f] + tri[3 * s + j]], B[j] = c->pos[m->fstart[g] + tri[3 * t + j]];
+            if (tri_overlap(A, B, tol)) return true;
+        }
+    return false;
+}
+
+static void build_tris(const net_ctx *c, int *tri_start, int *tri)
+{
+    const ori_mesh *m = c->m;
+    tri_start[0] = 0;
+    for (int f = 0; f < m->nf; ++f) {
+        int n = triangulate(c->local + m->fstart[f], fsize(m, f), tri + 3 * tri_start[f]);
+        tri_start[f + 1] = tri_start[f] + n;
+    }
+}
+
+// Overlapping face pairs among faces with mask[f] (NULL = all), counted (stop after limit).
+static int count_overlaps(const net_ctx *c, const int *tri_start, const int *tri, const int *piece, int limit)
+{
+    const ori_mesh *m = c->m;
+    face_box *b = ori__alloc(((size_t)m->nf + 1) * sizeof *b);
+    for (int f = 0; f < m->nf; ++f) {
+        face_box x = {INFINITY, -INFINITY, INFINITY, -INFINITY, f};
+        for (int i = 0; i < fsize(m, f); ++i) {
+            ori_v2 p = c->pos[m->fstart[f] + i];
+            x.x0 = fmin(x.x0, p.x), x.x1 = fmax(x.x1, p.x), x.y0 = fmin(x.y0, p.y), x.y1 = fmax(x.y1, p.y);
+        }
+        b[f] = x;
+    }
+    qsort(b, (size_t)m->nf, sizeof *b, cmp_box);
+    double tol = OVERLAP_REL * m->diag;
+    int count = 0;
+    for (int i = 0; i < m->nf && count < limit; ++i)
+        for (int j = i + 1; j < m->nf && b[j].x0 < b[i].x1 - tol && count < limit; ++j) {
+            if (b[j].y0 >= b[i].y1 - tol || b[i].y0 >= b[j].y1 - tol) continue;
+            if (piece && piece[b[i].f] != piece[b[j].f]) continue;
+            if (faces_overlap(c, b[i].f, b[j].f, tri_start, tri, tol)) count++;
+        }
+    ori__free(b);
+    return count;
+}
+
+// --- spanning trees ----------------------------------------------------------------------------
+
+static int cmp_weight_idx(const void *x, const void *y)
+{
+    const double *a = x, *b = y;
+    return a[0] < b[0] ? -1 : a[0] > b[0];
+}
+
+// Kruskal on weights (lower first): in_tree per edge.
+static void mst(const net_ctx *c, const double *w, bool *in_tree)
+{
+    int nf = c->m->nf;
+    double *wi = ori__alloc(((size_t)c->ne + 1) * 2 * sizeof *wi);
+    for (int k = 0; k < c->ne; ++k) wi[2 * k] = w[k], wi[2 * k + 1] = k;
+    qsort(wi, (size_t)c->ne, 2 * sizeof *wi, cmp_weight_idx);
+    int *uf = ori__alloc(((size_t)nf + 1) * sizeof *uf);
+    for (int f = 0; f < nf; ++f) uf[f] = f;
+    for (int k = 0; k < c->ne; ++k) in_tree[k] = false;
+    for (int t = 0; t < c->ne; ++t) {
+        int k = (int)wi[2 * t + 1];
+        if (c->e[k].g < 0) continue;
+        int a = ori__uf_root(uf, c->e[k].f), b = ori__uf_root(uf, c->e[k].g);
+        if (a == b) continue;
+        uf[a] = b;
+        in_tree[k] = true;
+    }
+    ori__free(wi), ori__free(uf);
+}
+
+// Steepest-edge unfolding (Schlickkieser): cut, at every vertex but the highest in direction d,
+// the edge that rises most steeply; the crease tree is the rest. Weights: cut edges get +1.
+static void steepest_weights(const net_ctx *c, ori_v3 d, double *w)
+{
+    const ori_mesh *m = c->m;
+    double *best = ori__alloc(((size_t)m->nv + 1) * sizeof *best);
+    int *arg = ori__alloc(((size_t)m->nv + 1) * sizeof *arg);
+    for (int v = 0; v < m->nv; ++v) best[v] = -INFINITY, arg[v] = -1;
+    for (int k = 0; k < c->ne; ++k) {
+        ori_v3 ab = ori_v3_sub(m->v[c->e[k].b], m->v[c->e[k].a]);
+        double s = ori_v3_dot(ab, d) / ori_v3_norm(ab);
+        if (s > best[c->e[k].a]) best[c->e[k].a] = s, arg[c->e[k].a] = k;
+        if (-s > best[c->e[k].b]) best[c->e[k].b] = -s, arg[c->e[k].b] = k;
+    }
+    for (int k = 0; k < c->ne; ++k) w[k] = 0.0;
+    for (int v = 0; v < m->nv; ++v)
+        if (arg[v] >= 0 && best[v] > 0.0) w[arg[v]] += 1.0;
+    // ties broken by steepness so that the tree is deterministic
+    for (int k = 0; k < c->ne; ++k) {
+        ori_v3 ab = ori_v3_normalize(ori_v3_sub(m->v[c->e[k].b], m->v[c->e[k].a]));
+        w[k] += 1e-3 * fabs(ori_v3_dot(ab, d));
+    }
+    ori__free(best), ori__free(arg);
+}
+
+// --- the net as a crease pattern --------------------------------------------------------------
+
+struct ori_unfold_net {
+    ori_unfold_result result;
+    ori_pattern *pattern;
+    int *src_start, *src; // per net face
+    int *glue;            // per net edge
+    int *vertex3d;        // per net vertex: the 3D vertex it folds onto
+    ori_v3 *shape;        // per net vertex: its 3D position
+};
+
+static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2 *offset)
+{
+    const ori_mesh *m = c->m;
+    double *x0 = ori__alloc(((size_t)pieces + 1) * 4 * sizeof(double));
+    for (int q = 0; q < pieces; ++q) x0[4 * q] = x0[4 * q + 2] = INFINITY, x0[4 * q + 1] = x0[4 * q + 3] = -INFINITY;
+    for (int f = 0; f < m->nf; ++f)
+        for (int i = 0; i < fsize(m, f); ++i) {
+            ori_v2 p = c->pos[m->fstart[f] + i];
+            double *b = x0 + 4 * piece[f];
+            b[0] = fmin(b[0], p.x), b[1] = fmax(b[1], p.x), b[2] = fmin(b[2], p.y), b[3] = fmax(b[3], p.y);
+        }
+    double x = 0.0, gap = 0.05 * c->m->diag;
+    for (int q = 0; q < pieces; ++q) {
+        offset[q] = ori_v2_make(x - x0[4 * q], -x0[4 * q + 2]);
+        x += x0[4 * q + 1] - x0[4 * q] + gap;
+    }
+    ori__free(x0);
+}
+
+static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int *piece, int pieces)
+{
+    const ori_mesh *m = c->m;
+    int nh = m->fstart[m->nf];
+    // net vertices: corners united across tree edges
+    int *uf = ori__alloc(((size_t)nh + 1) * sizeof *uf);
+    for (int i = 0; i < nh; ++i) uf[i] = i;
+    for (int k = 0; k < c->ne; ++k) {
+        if (!in_tree[k]) continue;
+        const fedge *x = &c->e[k];
+        int kf = fsize(m, x->f), kg = fsize(m, x->g);
+        int fa = m->fstart[x->f] + x->fi, fb = m->fstart[x->f] + (x->fi + 1) % kf;
+        int gb = m->fstart[x->g] + x->gi, ga = m->fstart[x->g] + (x->gi + 1) % kg;
+        int r1 = ori__uf_root(uf, fa), r2 = ori__uf_root(uf, ga);
+        if (r1 != r2) uf[r1] = r2;
+        r1 = ori__uf_root(uf, fb), r2 = ori__uf_root(uf, gb);
+        if (r1 != r2) uf[r1] = r2;
+    }
+    ori_v2 *off = ori__alloc(((size_t)pieces + 1) * sizeof *off);
+    piece_offsets(c, piece, pieces, off);
+    int *vid = ori__alloc(((size_t)nh + 1) * sizeof *vid);
+    for (int i = 0; i < nh; ++i) vid[i] = -1;
+    ori_unfold_net *net = ori__calloc(1, sizeof *net);
+    ori_pattern_def pd = ori_default_pattern_def();
+    net->pattern = ori_pattern_create(&pd);
+    net->vertex3d = ori__alloc(((size_t)nh + 1) * sizeof(int));
+    net->shape = ori__alloc(((size_t)nh + 1) * sizeof(ori_v3));
+    int nv = 0;
+    for (int f = 0; f < m->nf; ++f)
+        for (int i = 0; i < fsize(m, f); ++i) {
+            int r = ori__uf_root(uf, m->fstart[f] + i);
+            if (vid[r] < 0) {
+                ori_v2 p = ori_v2_add(c->pos[m->fstart[f] + i], off[piece[f]]);
+                vid[r] = ori_pattern_add_vertex(net->pattern, ori_v3_make(p.x, p.y, 0.0));
+                net->vertex3d[nv] = m->fv[m->fstart[f] + i];
+                net->shape[nv] = m->v[m->fv[m->fstart[f] + i]];
+                nv++;
+            }
+        }
+    int *edge_of = ori__alloc(((size_t)c->ne + 1) * 2 * sizeof *edge_of);
+    net->glue = ori__alloc(((size_t)c->ne + 1) * 2 * sizeof(int));
+    for (int k = 0; k < c->ne; ++k) {
+        const fedge *x = &c->e[k];
+        int kf = fsize(m, x->f);
+        int fa = vid[ori__uf_root(uf, m->fstart[x->f] + x->fi)], fb = vid[ori__uf_root(uf, m->fstart[x->f] + (x->fi + 1) % kf)];
+        if (in_tree[k]) {
+            ori_assignment as = x->angle < 0.0 ? ORI_ASSIGN_MOUNTAIN : x->angle > 0.0 ? ORI_ASSIGN_VALLEY : ORI_ASSIGN_FLAT;
+            int e = ori_pattern_add_edge(net->pattern, fa, fb, as, x->angle);
+            edge_of[2 * k] = edge_of[2 * k + 1] = e;
+            net->glue[e] = -1;
+        } else {
+            int e1 = ori_pattern_add_edge(net->pattern, fa, fb, ORI_ASSIGN_BOUNDARY, 0.0);
+            edge_of[2 * k] = e1;
+            net->glue[e1] = -1;
+            if (x->g >= 0) {
+                int kg = fsize(m, x->g);
+                int gb = vid[ori__uf_root(uf, m->fstart[x->g] + x->gi)], ga = vid[ori__uf_root(uf, m->fstart[x->g] + (x->gi + 1) % kg)];
+                int e2 = ori_pattern_add_edge(net->pattern, gb, ga, ORI_ASSIGN_BOUNDARY, 0.0);
+                edge_of[2 * k + 1] = e2;
+                net->glue[e1] = e2, net->glue[e2] = e1;
+            }
+        }
+    }
+    net->src_start = ori__alloc(((size_t)m->nf + 1) * sizeof(int));
+    net->src = ori__alloc(((size_t)m->src_start[m->nf] + 1) * sizeof(int));
+    memcpy(net->src_start, m->src_start, ((size_t)m->nf + 1) * sizeof(int));
+    memcpy(net->src, m->src, (size_t)m->src_start[m->nf] * sizeof(int));
+    int buf[1024];
+    for (int f = 0; f < m->nf; ++f) {
+        int k = fsize(m, f);
+        int *b = k <= 1024 ? buf : ori__alloc((size_t)k * sizeof *b);
+        for (int i = 0; i < k; ++i) b[i] = vid[ori__uf_root(uf, m->fstart[f] + i)];
+        ori_pattern_add_face(net->pattern, b, k);
+        if (b != buf) ori__free(b);
+    }
+    ori_pattern_set_has_fold_angles(net->pattern, true);
+    ori__free(uf), ori__free(vid), ori__free(off), ori__free(edge_of);
+    return net;
+}
+
+// Check a fold motion for penetration: all creases together (order NULL: angles scaled by
+// s/20), or one crease after the other in the given order (8 steps each, the others held at 0
+// or at their target). The final state (faces glued) is not checked.
+static bool motion_collides(ori_mechanism *mech, ori_collider *col, const double *angles, int ne, const int *order,
+                            int count, ori_rigid pose, ori_v3 *pos, double *a)
+{
+    ori_error err;
+    ori_collision_result cr;
+    if (!order) {
+        for (int s = 1; s < 20; ++s) {
+            for (int e = 0; e < ne; ++e) a[e] = angles[e] * s / 20.0;
+            ori_mechanism_vertex_positions(mech, a, 0, pose, pos);
+            if (ori_collider_check(col, pos, &cr, &err) == ORI_OK && cr.penetrating > 0) return true;
+        }
+        return false;
+    }
+    for (int e = 0; e < ne; ++e) a[e] = 0.0;
+    for (int i = 0; i < count; ++i) {
+        int e = order[i];
+        for (int s = 1; s <= 8; ++s) {
+            a[e] = angles[e] * s / 8.0;
+            if (i == count - 1 && s == 8) break;
+            ori_mechanism_vertex_positions(mech, a, 0, pose, pos);
+            if (ori_collider_check(col, pos, &cr, &err) == ORI_OK && cr.penetrating > 0) return true;
+        }
+    }
+    return false;
+}
+
+static _Thread_local int g_depth_cmp_sign;
+static _Thread_local const int *g_depth;
+static int cmp_depth(const void *x, const void *y)
+{
+    int a = g_depth[*(const int *)x], b = g_depth[*(const int *)y];
+    return g_depth_cmp_sign * (a - b);
+}
+
+// Fold the net back (one piece): pose by forward kinematics from face 0 placed where the shape
+// has it; returns the largest vertex distance to the shape / the diagonal (−1 when not posed).
+// *order receives the first collision-free fold order (ORI_FOLD_ORDER_NONE when none is).
+static double refold_error(ori_unfold_net *net, double diag, bool *collides, ori_fold_order *order)
+{
+    *collides = false;
+    *order = ORI_FOLD_ORDER_NONE;
+    ori_error err;
+    ori_build_def bd = ori_default_build_def();
+    bd.check_planarity = false;
+    if (ori_pattern_build(net->pattern, &bd, &err) != ORI_OK) return -1.0;
+    ori_mechanism_def md = ori_default_mechanism_def();
+    md.pattern = net->pattern;
+    ori_mechanism *mech = NULL;
+    if (ori_mechanism_create(&md, &mech, &err) != ORI_OK) return -1.0;
+    int nv = ori_pattern_vertex_count(net->pattern), ne = ori_pattern_edge_count(net->pattern);
+    int nf = ori_pattern_face_count(net->pattern);
+    double *angles = ori__alloc(((size_t)ne + 1) * sizeof *angles);
+    for (int e = 0; e < ne; ++e) angles[e] = ori_pattern_edge(net->pattern, e).fold_angle_rad;
+    ori_rigid pose;
+    double worst = -1.0;
+    ori_v3 *pos = ori__alloc(((size_t)nv + 1) * sizeof *pos);
+    if (ori_mechanism_face_pose_from_coords(mech, 0, net->shape, &pose, &err) == ORI_OK &&
+        ori_mechanism_pose_state(mech, angles, 0, pose, NULL, pos, NULL, &err) == ORI_OK) {
+        worst = 0.0;
+        for (int v = 0; v < nv; ++v) worst = fmax(worst, ori_v3_norm(ori_v3_sub(pos[v], net->shape[v])) / diag);
+        ori_collider_def cd = ori_default_collider_def();
+        cd.pattern = net->pattern;
+        ori_collider *col = NULL;
+        if (ori_collider_create(&cd, &col, &err) == ORI_OK) {
+            double *a = ori__alloc(((size_t)ne + 1) * sizeof *a);
+            if (!motion_collides(mech, col, angles, ne, NULL, 0, pose, pos, a)) {
+                *order = ORI_FOLD_ORDER_TOGETHER;
+            } else if (ne <= 600) {
+                // one crease at a time by depth in the face tree: leaves first, then root first
+                int *pf = ori__alloc(((size_t)nf + 1) * sizeof *pf), *pe = ori__alloc(((size_t)nf + 1) * sizeof *pe);
+                int *depth_e = ori__calloc((size_t)ne + 1, sizeof *depth_e), *fd = ori__alloc(((size_t)nf + 1) * sizeof *fd);
+                int *creases = ori__alloc(((size_t)nf + 1) * sizeof *creases), nc = 0;
+                ori_mechanism_spanning_tree(mech, 0, pf, pe);
+                for (int f = 0; f < nf; ++f) {
+                    int d = 0;
+                    for (int g = f; pf[g] >= 0 && d <= nf; g = pf[g]) d++;
+                    fd[f] = d;
+                    if (pe[f] >= 0) depth_e[pe[f]] = d, creases[nc++] = pe[f];
+                }
+                g_depth = depth_e;
+                for (int pass = 0; pass < 2 && *order == ORI_FOLD_ORDER_NONE; ++pass) {
+                    g_depth_cmp_sign = pass == 0 ? -1 : 1;
+                    qsort(creases, (size_t)nc, sizeof *creases, cmp_depth);
+                    if (!motion_collides(mech, col, angles, ne, creases, nc, pose, pos, a))
+                        *order = pass == 0 ? ORI_FOLD_ORDER_LEAVES_FIRST : ORI_FOLD_ORDER_ROOT_FIRST;
+                }
+                ori__free(pf), ori__free(pe), ori__free(depth_e), ori__free(fd), ori__free(creases);
+            }
+            *collides = *order == ORI_FOLD_ORDER_NONE;
+            ori__free(a);
+            ori_collider_destroy(col);
+        }
+    }
+    ori__free(pos), ori__free(angles);
+    ori_mechanism_destroy(mech);
+    return worst;
+}
+
+// --- congruence classes of nets (for --all) -------------------------------------------------
+
+// Canonical text of a net up to rotations, translations and reflections: every placement of a
+// cut edge on the x-axis (both directions, both mirror images), segments rounded and sorted;
+// the least string wins.
+static int cmp_seg(const void *x, const void *y)
+{
+    const long long *a = x, *b = y;
+    for (int i = 0; i < 4; ++i)
+        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    return 0;
+}
+
+static char *canonical(const net_ctx *c, const bool *in_tree)
+{
+    const ori_mesh *m = c->m;
+    int nh = m->fstart[m->nf];
+    long long *seg = ori__alloc(((size_t)nh + 1) * 4 * sizeof *seg);
+    size_t cap = (size_t)nh * 4 * 24 + 16;
+    char *best = NULL, *cur = ori__alloc(cap);
+    double q = 1e6 / m->diag;
+    for (int k = 0; k < c->ne; ++k) {
+        if (in_tree[k]) continue;
+        for (int side = 0; side < 2; ++side) {
+            const fedge *x = &c->e[k];
+            int f = side ? x->g : x->f, i = side ? x->gi : x->fi;
+            if (f < 0) continue;
+            ori_v2 P = c->pos[m->fstart[f] + i], Q = c->pos[m->fstart[f] + (i + 1) % fsize(m, f)];
+            for (int dir = 0; dir < 2; ++dir)
+                for (int mir = 0; mir < 2; ++mir) {
+                    ori_v2 o = dir ? Q : P, t = ori_v2_normalize(ori_v2_sub(dir ? P : Q, o));
+                    int ns = 0;
+                    for (int g = 0; g < m->nf; ++g)
+                        for (int j = 0; j < fsize(m, g); ++j) {
+                            ori_v2 a = ori_v2_sub(c->pos[m->fstart[g] + j], o), b = ori_v2_sub(c->pos[m->fstart[g] + (j + 1) % fsize(m, g)], o);
+                            double ax = a.x * t.x + a.y * t.y, ay = -a.x * t.y + a.y * t.x;
+                            double bx = b.x * t.x + b.y * t.y, by = -b.x * t.y + b.y * t.x;
+                            if (mir) ay = -ay, by = -by;
+                            long long r[4] = {llround(ax * q), llround(ay * q), llround(bx * q), llround(by * q)};
+                            if (r[0] > r[2] || (r[0] == r[2] && r[1] > r[3])) {
+                                long long t0 = r[0], t1 = r[1];
+                                r[0] = r[2], r[1] = r[3], r[2] = t0, r[3] = t1;
+                            }
+                            memcpy(seg + 4 * ns++, r, sizeof r);
+                        }
+                    qsort(seg, (size_t)ns, 4 * sizeof *seg, cmp_seg);
+                    // dedupe shared segments (creases appear twice)
+                    size_t len = 0;
+                    for (int s = 0; s < ns; ++s) {
+                        if (s && cmp_seg(seg + 4 * s, seg + 4 * (s - 1)) == 0) continue;
+                        len += (size_t)snprintf(cur + len, cap - len, "%lld,%lld,%lld,%lld;", seg[4 * s], seg[4 * s + 1],
+                                                seg[4 * s + 2], seg[4 * s + 3]);
+                    }
+                    if (!best || strcmp(cur, best) < 0) {
+                        ori__free(best);
+                        best = ori__strdup(cur);
+                    }
+                }
+        }
+    }
+    ori__free(seg), ori__free(cur);
+    return best;
+}
+
+typedef struct enum_ctx {
+    net_ctx *c;
+    bool *in_tree;
+    int *order, *parent_edge;
+    bool *placed;
+    int *tri_start, *tri;
+    char **classes;
+    int nclasses, cap, trees, good, limit;
+} enum_ctx;
+
+static void enum_visit(enum_ctx *E)
+{
+    E->trees++;
+    layout(E->c, E->in_tree, 0, E->order, E->parent_edge, E->placed);
+    if (count_overlaps(E->c, E->tri_start, E->tri, NULL, 1) > 0) return;
+    E->good++;
+    char *s = canonical(E->c, E->in_tree);
+    for (int i = 0; i < E->nclasses; ++i)
+        if (strcmp(E->classes[i], s) == 0) {
+            ori__free(s);
+            return;
+        }
+    ORI__PUSH(E->classes, E->nclasses, E->cap, s);
+}
+
+// Enumerate spanning trees: decide edges in order (take / skip), pruning cycles and skips that
+// disconnect the rest.
+static bool connected_without(const net_ctx *c, const bool *decided_out, int nf)
+{
+    int *uf = ori__alloc(((size_t)nf + 1) * sizeof *uf);
+    for (int f = 0; f < nf; ++f) uf[f] = f;
+    int comps = nf;
+    for (int k = 0; k < c->ne; ++k) {
+        if (decided_out[k] || c->e[k].g < 0) continue;
+        int a = ori__uf_root(uf, c->e[k].f), b = ori__uf_root(uf, c->e[k].g);
+        if (a != b) uf[a] = b, comps--;
+    }
+    ori__free(uf);
+    return comps == 1;
+}
+
+static bool makes_cycle(const net_ctx *c, const bool *in_tree, int k)
+{
+    int nf = c->m->nf;
+    int *uf = ori__alloc(((size_t)nf + 1) * sizeof *uf);
+    for (int f = 0; f < nf; ++f) uf[f] = f;
+    for (int j = 0; j < c->ne; ++j) {
+        if (!in_tree[j]) continue;
+        int a = ori__uf_root(uf, c->e[j].f), b = ori__uf_root(uf, c->e[j].g);
+        uf[a] = b;
+    }
+    bool cyc = ori__uf_root(uf, c->e[k].f) == ori__uf_root(uf, c->e[k].g);
+    ori__free(uf);
+    return cyc;
+}
+
+static void enum_rec(enum_ctx *E, int k, int taken, bool *out)
+{
+    if (E->trees >= E->limit) return;
+    int nf = E->c->m->nf;
+    if (taken == nf - 1) {
+        enum_visit(E);
+        return;
+    }
+    if (k == E->c->ne) return;
+    if (E->c->e[k].g < 0) {
+        out[k] = true;
+        enum_rec(E, k + 1, taken, out);
+        out[k] = false;
+        return;
+    }
+    if (!makes_cycle(E->c, E->in_tree, k)) {
+        E->in_tree[k] = true;
+        enum_rec(E, k + 1, taken + 1, out);
+        E->in_tree[k] = false;
+    }
+    out[k] = true;
+    if (connected_without(E->c, out, nf)) enum_rec(E, k + 1, taken, out);
+    out[k] = false;
+}
+
+// --- the solver ----------------------------------------------------------------------------
+
+static bool tree_spans(const net_ctx *c, const bool *in_tree)
+{
+    int n = 0;
+    for (int k = 0; k < c->ne; ++k) n += in_tree[k];
+    return n == c->m->nf - 1;
+}
+
+ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_unfold_net **out, ori_error *error)
+{
+    ORI_ASSERT(m && def && out && def->internal_value == ORI__DEF_COOKIE);
+    *out = NULL;
+    if (def->tries < 1) return ori__fail(error, ORI_ERR_RANGE, "tries must be at least 1");
+    net_ctx c;
+    ctx_init(&c, m);
+    c.rng ^= (uint64_t)def->seed * 0x2545F4914F6CDD1DULL;
+    if (!c.rng) c.rng = 1;
+    int nf = m->nf;
+    // connected?
+    bool *none = ori__calloc((size_t)c.ne + 1, 1);
+    if (!connected_without(&c, none, nf)) {
+        ori__free(none);
+        ctx_free(&c);
+        return ori__fail(error, ORI_ERR_TOPOLOGY, "the surface is not connected");
+    }
+    ori__free(none);
+    int *tri_start = ori__alloc(((size_t)nf + 2) * sizeof *tri_start);
+    int *tri = ori__alloc(((size_t)m->fstart[nf] + 1) * 3 * sizeof *tri);
+    build_tris(&c, tri_start, tri);
+    bool *in_tree = ori__alloc(((size_t)c.ne + 1) * sizeof *in_tree), *best_tree = ori__alloc(((size_t)c.ne + 1) * sizeof *best_tree);
+    double *w = ori__alloc(((size_t)c.ne + 1) * sizeof *w);
+    int *order = ori__alloc(((size_t)nf + 1) * sizeof *order), *parent_edge = ori__alloc(((size_t)nf + 1) * sizeof *parent_edge);
+    bool *placed = ori__alloc(((size_t)nf + 1) * sizeof *placed);
+    int best_overlaps = -1, tries = 0, best_try = -1;
+    for (int t = 0; t < def->tries; ++t) {
+        tries++;
+        int kind = t % 3;
+        if (kind == 0) {
+            double th = 2.0 * 3.141592653589793 * rnd01(&c), z = 2.0 * rnd01(&c) - 1.0, r = sqrt(1.0 - z * z);
+            steepest_weights(&c, ori_v3_make(r * cos(th), r * sin(th), z), w);
+        } else if (kind == 1) {
+            for (int k = 0; k < c.ne; ++k) w[k] = rnd01(&c);
+        } else {
+            // flat-angle preference: keep creases of small fold angle, random ties
+            for (int k = 0; k < c.ne; ++k) w[k] = fabs(c.e[k].angle) + 0.1 * rnd01(&c);
+        }
+        mst(&c, w, in_tree);
+        if (!tree_spans(&c, in_tree)) continue;
+        layout(&c, in_tree, 0, order, parent_edge, placed);
+        int ov = count_overlaps(&c, tri_start, tri, NULL, best_overlaps < 0 ? nf * nf : best_overlaps);
+        if (best_overlaps < 0 || ov < best_overlaps) {
+            best_overlaps = ov, best_try = t;
+            memcpy(best_tree, in_tree, (size_t)c.ne * sizeof *in_tree);
+        }
+        if (ov == 0) break;
+    }
+    ori_unfold_result res;
+    memset(&res, 0, sizeof res);
+    res.faces = nf;
+    res.input_faces = m->src_start[nf];
+    res.tries = tries;
+    res.distinct_nets = -1;
+    res.max_refold_error = -1.0;
+    res.fold_order = ORI_FOLD_ORDER_NONE;
+    // split the best tree into pieces: faces in breadth-first order join their parent's piece
+    // unless they overlap a face already there
+    int *piece = ori__alloc(((size_t)nf + 1) * sizeof *piece);
+    layout(&c, best_tree, 0, order, parent_edge, placed);
+    int pieces = 1;
+    if (best_overlaps == 0) {
+        for (int f = 0; f < nf; ++f) piece[f] = 0;
+    } else {
+        for (int f = 0; f < nf; ++f) piece[f] = -1;
+        piece[order[0]] = 0;
+        // face boxes to skip pairs far apart
+        double *box = ori__alloc(((size_t)nf + 1) * 4 * sizeof *box);
+        for (int f = 0; f < nf; ++f) {
+            double *b = box + 4 * f;
+            b[0] = b[2] = INFINITY, b[1] = b[3] = -INFINITY;
+            for (int q = 0; q < fsize(m, f); ++q) {
+                ori_v2 pq = c.pos[m->fstart[f] + q];
+                b[0] = fmin(b[0], pq.x), b[1] = fmax(b[1], pq.x), b[2] = fmin(b[2], pq.y), b[3] = fmax(b[3], pq.y);
+            }
+        }
+        for (int i = 1; i < nf; ++i) {
+            int f = order[i], k = parent_edge[f];
+            int pf = c.e[k].f == f ? c.e[k].g : c.e[k].f;
+            int pp = piece[pf];
+            bool clash = false;
+            double tol = OVERLAP_REL * m->diag;
+            for (int j = 0; j < i && !clash; ++j) {
+                int g = order[j];
+                if (piece[g] != pp) continue;
+                const double *bf = box + 4 * f, *bg = box + 4 * g;
+                if (bf[0] >= bg[1] - tol || bg[0] >= bf[1] - tol || bf[2] >= bg[3] - tol || bg[2] >= bf[3] - tol) continue;
+                clash = faces_overlap(&c, f, g, tri_start, tri, tol);
+            }
+            if (clash) {
+                best_tree[k] = false;
+                piece[f] = pieces++;
+            } else {
+                piece[f] = pp;
+            }
+        }
+        ori__free(box);
+        // renumber pieces densely
+        int *ren = ori__alloc(((size_t)nf + 1) * sizeof *ren);
+        for (int q = 0; q < nf; ++q) ren[q] = -1;
+        pieces = 0;
+        for (int f = 0; f < nf; ++f) {
+            if (ren[piece[f]] < 0) ren[piece[f]] = pieces++;
+            piece[f] = ren[piece[f]];
+        }
+        ori__free(ren);
+    }
+    res.pieces = pieces;
+    res.overlaps = count_overlaps(&c, tri_start, tri, piece, nf * nf);
+    res.best_try = best_try;
+    ori_unfold_net *net = make_net(&c, best_tree, piece, pieces);
+    if (pieces == 1) {
+        bool coll = false;
+        res.max_refold_error = refold_error(net, m->diag, &coll, &res.fold_order);
+        res.motion_collides = coll;
+        res.refolded = res.max_refold_error >= 0.0;
+    } else {
+        ori_build_def bd = ori_default_build_def();
+        bd.check_planarity = false;
+        ori_error e2;
+        ori_pattern_build(net->pattern, &bd, &e2);
+    }
+    if (def->all) {
+        if (nf > def->all_max_faces) {
+            res.distinct_nets = -1;
+        } else {
+            enum_ctx E;
+            memset(&E, 0, sizeof E);
+            E.c = &c, E.in_tree = in_tree, E.order = order, E.parent_edge = parent_edge, E.placed = placed;
+            E.tri_start = tri_start, E.tri = tri, E.limit = 2000000;
+            for (int k = 0; k < c.ne; ++k) in_tree[k] = false;
+            bool *outk = ori__calloc((size_t)c.ne + 1, 1);
+            enum_rec(&E, 0, 0, outk);
+            ori__free(outk);
+            res.distinct_nets = E.nclasses;
+            res.spanning_trees = E.trees;
+            res.overlap_free_trees = E.good;
+            for (int i = 0; i < E.nclasses; ++i) ori__free(E.classes[i]);
+            ori__free(E.classes);
+        }
+    }
+    net->result = res;
+    ori__free(piece), ori__free(tri_start), ori__free(tri), ori__free(in_tree), ori__free(best_tree), ori__free(w);
+    ori__free(order), ori__free(parent_edge), ori__free(placed);
+    ctx_free(&c);
+    *out = net;
+    return ORI_OK;
+}
+
+void ori_unfold_net_destroy(ori_unfold_net *net)
+{
+    if (!net) return;
+    ori_pattern_destroy(net->pattern);
+    ori__free(net->src_start), ori__free(net->src), ori__free(net->glue), ori__free(net->vertex3d), ori__free(net->shape);
+    ori__free(net);
+}
+
+ori_unfold_result ori_unfold_net_result(const ori_unfold_net *net) { return net->result; }
+const ori_pattern *ori_unfold_net_pattern(const ori_unfold_net *net) { return net->pattern; }
+
+int ori_unfold_net_face_source(const ori_unfold_net *net, int face, int *out, int cap)
+{
+    int n = net->src_start[face + 1] - net->src_start[face];
+    for (int i = 0; i < n && i < cap; ++i) out[i] = net->src[net->src_start[face] + i];
+    return n;
+}
+
+int ori_unfold_net_glue(const ori_unfold_net *net, int edge) { return net->glue[edge]; }
+int ori_unfold_net_vertex_source(const ori_unfold_net *net, int vertex) { return net->vertex3d[vertex]; }

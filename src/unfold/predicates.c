@@ -1,0 +1,59 @@
+// Exact planar predicates: a floating-point filter with Shewchuk's error bound, and GMP rational
+// arithmetic (exact for any doubles) when the filter cannot decide the sign.
+#include <gmp.h>
+#include <math.h>
+
+#include "unfold_internal.h"
+
+// Shewchuk's ccwerrboundA = (3 + 16ε)ε with ε = 2^−53: |det − computed det| ≤ bound · permanent.
+#define ORIENT_ERRBOUND 3.3306690738754716e-16
+
+static int orient_gmp(ori_v2 a, ori_v2 b, ori_v2 c)
+{
+    mpq_t ax, ay, bx, by, cx, cy, l, r;
+    mpq_inits(ax, ay, bx, by, cx, cy, l, r, NULL);
+    mpq_set_d(ax, a.x), mpq_set_d(ay, a.y), mpq_set_d(bx, b.x), mpq_set_d(by, b.y);
+    mpq_set_d(cx, c.x), mpq_set_d(cy, c.y);
+    mpq_sub(bx, bx, ax), mpq_sub(by, by, ay), mpq_sub(cx, cx, ax), mpq_sub(cy, cy, ay);
+    mpq_mul(l, bx, cy);
+    mpq_mul(r, by, cx);
+    int s = mpq_cmp(l, r);
+    mpq_clears(ax, ay, bx, by, cx, cy, l, r, NULL);
+    return s > 0 ? 1 : s < 0 ? -1 : 0;
+}
+
+int ori__orient2d_exact(ori_v2 a, ori_v2 b, ori_v2 c)
+{
+    double detl = (b.x - a.x) * (c.y - a.y);
+    double detr = (b.y - a.y) * (c.x - a.x);
+    double det = detl - detr;
+    double bound = ORIENT_ERRBOUND * (fabs(detl) + fabs(detr));
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    return orient_gmp(a, b, c);
+}
+
+static bool on_segment(ori_v2 a, ori_v2 b, ori_v2 p)
+{
+    // p collinear with ab: inside the closed box of ab.
+    return fmin(a.x, b.x) <= p.x && p.x <= fmax(a.x, b.x) && fmin(a.y, b.y) <= p.y && p.y <= fmax(a.y, b.y);
+}
+
+bool ori__segments_intersect(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 d)
+{
+    int o1 = ori__orient2d_exact(a, b, c), o2 = ori__orient2d_exact(a, b, d);
+    int o3 = ori__orient2d_exact(c, d, a), o4 = ori__orient2d_exact(c, d, b);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+    if (o1 == 0 && on_segment(a, b, c)) return true;
+    if (o2 == 0 && on_segment(a, b, d)) return true;
+    if (o3 == 0 && on_segment(c, d, a)) return true;
+    if (o4 == 0 && on_segment(c, d, b)) return true;
+    return false;
+}
+
+bool ori__segments_cross_properly(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 d)
+{
+    int o1 = ori__orient2d_exact(a, b, c), o2 = ori__orient2d_exact(a, b, d);
+    int o3 = ori__orient2d_exact(c, d, a), o4 = ori__orient2d_exact(c, d, b);
+    return o1 * o2 < 0 && o3 * o4 < 0;
+}

@@ -1,0 +1,246 @@
+// unfold: polyhedral surfaces to nets. The Platonic solids' nets are counted up to congruence
+// (cube 11, tetrahedron 2, octahedron 11: the known numbers), every net found is folded back by
+// the kinematics onto the shape (1e-9 relative), and bad shapes are refused naming the face.
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support.h"
+
+#define PI_2 1.57079632679489661923
+
+static ori_unfold_result unfold(const char *rel, bool all)
+{
+    ori_mesh *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_unfold_load_mesh(test_repo_path(rel), &m, &err), ORI_OK, "%s", err.message);
+    ori_unfold_def def = ori_default_unfold_def();
+    def.all = all;
+    ori_unfold_net *net = NULL;
+    cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK, "%s", err.message);
+    ori_unfold_result r = ori_unfold_net_result(net);
+    const ori_pattern *p = ori_unfold_net_pattern(net);
+    cr_assert_eq(ori_pattern_face_count(p), r.faces);
+    // every edge is a crease with the fold angle of the shape, or a cut glued to its partner
+    int creases = 0, cuts = 0;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge x = ori_pattern_edge(p, e);
+        if (x.assignment == ORI_ASSIGN_BOUNDARY) {
+            int g = ori_unfold_net_glue(net, e);
+            if (g >= 0) {
+                cr_assert_eq(ori_unfold_net_glue(net, g), e);
+                cuts++;
+            }
+        } else {
+            // F: coplanar neighbours not merged (a ring around a hole stays in pieces)
+            if (x.assignment == ORI_ASSIGN_FLAT) cr_assert_eq(x.fold_angle_rad, 0.0);
+            else cr_assert(x.assignment == ORI_ASSIGN_MOUNTAIN || x.assignment == ORI_ASSIGN_VALLEY);
+            cr_assert((x.assignment == ORI_ASSIGN_MOUNTAIN) == (x.fold_angle_rad < 0.0));
+            creases++;
+        }
+    }
+    cr_assert_eq(creases, r.faces - r.pieces, "a forest of faces: faces − pieces creases");
+    (void)cuts;
+    ori_unfold_net_destroy(net);
+    ori_unfold_mesh_destroy(m);
+    return r;
+}
+
+Test(unfold, platonic_nets, .init = test_leak_setup, .fini = test_leak_check)
+{
+    struct {
+        const char *file;
+        int faces, nets;
+    } solids[] = {{"tests/data/unfold/tetrahedron.obj", 4, 2},
+                  {"tests/data/unfold/cube.obj", 6, 11},
+                  {"tests/data/unfold/octahedron.obj", 8, 11}};
+    for (int i = 0; i < 3; ++i) {
+        ori_unfold_result r = unfold(solids[i].file, true);
+        cr_assert_eq(r.faces, solids[i].faces);
+        cr_assert_eq(r.pieces, 1);
+        cr_assert_eq(r.overlaps, 0);
+        cr_assert_eq(r.distinct_nets, solids[i].nets, "%s: %d nets", solids[i].file, r.distinct_nets);
+        cr_assert(r.refolded);
+        cr_assert_leq(r.max_refold_error, 1e-9);
+        cr_assert_eq(r.fold_order, ORI_FOLD_ORDER_TOGETHER);
+    }
+}
+
+Test(unfold, dodecahedron_icosahedron_refold, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_unfold_result d = unfold("tests/data/unfold/dodecahedron.obj", false);
+    cr_assert_eq(d.faces, 12);
+    cr_assert_eq(d.pieces, 1);
+    cr_assert_leq(d.max_refold_error, 1e-9);
+    ori_unfold_result i = unfold("tests/data/unfold/icosahedron.obj", false);
+    cr_assert_eq(i.faces, 20);
+    cr_assert_eq(i.pieces, 1);
+    cr_assert_leq(i.max_refold_error, 1e-9);
+}
+
+Test(unfold, non_convex_shapes, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_unfold_result l = unfold("tests/data/unfold/l-prism.obj", false);
+    cr_assert_eq(l.faces, 8); // two L-shaped caps and six walls
+    cr_assert_eq(l.overlaps, 0);
+    cr_assert_eq(l.pieces, 1);
+    cr_assert_leq(l.max_refold_error, 1e-9);
+    ori_unfold_result h = unfold("tests/data/unfold/box-with-hole.obj", false);
+    cr_assert_eq(h.faces, 16);
+    // folding every crease together makes the frame's faces pass through each other; one
+    // crease at a time from the leaves of the face tree does not
+    cr_assert_eq(h.fold_order, ORI_FOLD_ORDER_LEAVES_FIRST);
+    cr_assert(!h.motion_collides);
+    cr_assert_eq(h.overlaps, 0);
+    cr_assert_eq(h.pieces, 1);
+    cr_assert_leq(h.max_refold_error, 1e-9);
+}
+
+// Triangulated faces are merged back into the polygons they lie in.
+Test(unfold, coplanar_faces_merged, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v3 v[8];
+    for (int i = 0; i < 8; ++i) v[i] = ori_v3_make(i >> 2 & 1, i >> 1 & 1, i & 1);
+    int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    int fs[13], fv[36];
+    for (int q = 0; q < 6; ++q) {
+        int t[6] = {quads[q][0], quads[q][1], quads[q][2], quads[q][0], quads[q][2], quads[q][3]};
+        for (int j = 0; j < 6; ++j) fv[6 * q + j] = t[j];
+    }
+    for (int f = 0; f <= 12; ++f) fs[f] = 3 * f;
+    ori_mesh *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_unfold_mesh_create(v, 8, fs, fv, 12, &m, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_unfold_mesh_face_count(m), 6);
+    ori_unfold_def def = ori_default_unfold_def();
+    def.all = true;
+    ori_unfold_net *net = NULL;
+    cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK);
+    ori_unfold_result r = ori_unfold_net_result(net);
+    cr_assert_eq(r.input_faces, 12);
+    cr_assert_eq(r.distinct_nets, 11);
+    int src[4];
+    for (int f = 0; f < 6; ++f) cr_assert_eq(ori_unfold_net_face_source(net, f, src, 4), 2);
+    ori_unfold_net_destroy(net);
+    ori_unfold_mesh_destroy(m);
+}
+
+Test(unfold, bad_shapes, .init = test_leak_setup, .fini = test_leak_check)
+{
+    struct {
+        const char *file;
+        ori_status st;
+        const char *msg;
+    } bad[] = {{"tests/data/unfold/nonmanifold.obj", ORI_ERR_TOPOLOGY, "non-manifold"},
+               {"tests/data/unfold/degenerate.obj", ORI_ERR_DEGENERATE, "zero area"},
+               {"tests/data/unfold/nonplanar.obj", ORI_ERR_DEGENERATE, "not planar"}};
+    for (int i = 0; i < 3; ++i) {
+        ori_mesh *m = NULL;
+        ori_error err;
+        cr_assert_eq(ori_unfold_load_mesh(test_repo_path(bad[i].file), &m, &err), bad[i].st, "%s", bad[i].file);
+        cr_assert(strstr(err.message, bad[i].msg), "%s", err.message);
+        cr_assert_eq(err.element, 0);
+        cr_assert_str_eq(err.field, "faces_vertices");
+        cr_assert_null(m);
+    }
+}
+
+// The command writes a FOLD net that orikin reads back: 6 faces, 5 creases and 7 cut edges on
+// each side (14 boundary edges, glued in pairs), each face with its input face.
+Test(unfold, cli_writes_net, .init = test_leak_setup, .fini = test_leak_check)
+{
+    char *dir = test_tmpdir();
+    char args[1024], path[512];
+    snprintf(path, sizeof path, "%s/net.fold", dir);
+    snprintf(args, sizeof args, "unfold tests/data/unfold/cube.obj -o '%s' --svg '%s/net.svg' --json", path, dir);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "\"pieces\":1"), "%s", out);
+    free(out);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_face_count(p), 6);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY), 14);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 5);
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge x = ori_pattern_edge(p, e);
+        if (x.assignment == ORI_ASSIGN_MOUNTAIN) cr_assert_float_eq(x.fold_angle_rad, -PI_2, 1e-12);
+    }
+    char *src = ori_fold_get_custom(doc, 0, "faces_orikin:source"), *glue = ori_fold_get_custom(doc, 0, "edges_orikin:glue");
+    cr_assert_not_null(src);
+    cr_assert_not_null(glue);
+    cr_assert(strstr(src, "[0]") && strstr(src, "[5]"), "%s", src);
+    ori_buffer_free(src), ori_buffer_free(glue);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    char svg[512];
+    snprintf(svg, sizeof svg, "%s/net.svg", dir);
+    char *text = test_read_text(svg);
+    cr_assert(text && strstr(text, "<svg"));
+    free(text);
+    test_tmpdir_remove(dir);
+}
+
+// qhull's hulls of random points on the sphere unfold in one piece and fold back.
+Test(unfold, random_convex_hulls, .init = test_leak_setup, .fini = test_leak_check)
+{
+    unsigned long long s = 12345;
+    for (int k = 0; k < 5; ++k) {
+        ori_v3 pts[102];
+        for (int i = 0; i < 102; ++i) {
+            double u[2];
+            for (int j = 0; j < 2; ++j) {
+                s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+                u[j] = (double)(s >> 11) / 9007199254740992.0;
+            }
+            double z = 2 * u[0] - 1, r = sqrt(1 - z * z), th = 2 * 3.141592653589793 * u[1];
+            pts[i] = ori_v3_make(r * cos(th), r * sin(th), z);
+        }
+        ori_mesh *m = NULL;
+        ori_error err;
+        cr_assert_eq(ori_unfold_mesh_convex_hull(pts, 102, &m, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_unfold_mesh_face_count(m), 200); // 2n − 4 triangles
+        ori_unfold_def def = ori_default_unfold_def();
+        ori_unfold_net *net = NULL;
+        cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK);
+        ori_unfold_result r = ori_unfold_net_result(net);
+        cr_assert_eq(r.pieces, 1);
+        cr_assert_eq(r.overlaps, 0);
+        cr_assert_leq(r.max_refold_error, 1e-9);
+        ori_unfold_net_destroy(net);
+        ori_unfold_mesh_destroy(m);
+    }
+}
+
+// A spiky shape (an icosahedron with a tall pyramid on every face): one try gives no net
+// without overlap and the split leaves pieces that do not overlap; more tries find one net.
+Test(unfold, split_when_no_net, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_mesh *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_unfold_load_mesh(test_repo_path("tests/data/unfold/spiky.obj"), &m, &err), ORI_OK);
+    ori_unfold_def def = ori_default_unfold_def();
+    def.tries = 1;
+    ori_unfold_net *net = NULL;
+    cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK);
+    ori_unfold_result r = ori_unfold_net_result(net);
+    cr_assert_gt(r.pieces, 1);
+    cr_assert_eq(r.overlaps, 0);
+    cr_assert(!r.refolded);
+    const ori_pattern *p = ori_unfold_net_pattern(net);
+    int creases = 0;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) creases += ori_pattern_edge(p, e).assignment != ORI_ASSIGN_BOUNDARY;
+    cr_assert_eq(creases, r.faces - r.pieces);
+    ori_unfold_net_destroy(net);
+    def.tries = 50;
+    cr_assert_eq(ori_unfold_solve(m, &def, &net, &err), ORI_OK);
+    r = ori_unfold_net_result(net);
+    cr_assert_eq(r.pieces, 1);
+    cr_assert_leq(r.max_refold_error, 1e-9);
+    ori_unfold_net_destroy(net);
+    ori_unfold_mesh_destroy(m);
+}
