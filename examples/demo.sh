@@ -105,8 +105,20 @@ run 0 layers "$OUT/yoshimura.fold" --svg "$OUT/yoshimura-layers.svg"
 run 1 layers examples/patterns/non-flat-foldable-vertex.fold
 
 
+# --- several degrees of freedom, and where a fold stops ----------------------------------------
+step "11. Several degrees of freedom: a waterbomb folded toward its targets; a fold that stops"
+run 0 generate waterbomb --rows 4 --cols 4 -o "$OUT/waterbomb.fold"
+run 0 fold "$OUT/waterbomb.fold" --fix 0 --percent 100 --step 25 -o "$OUT/waterbomb-folded.fold"
+run 0 fold tests/data/waterbomb-base.fold --fix 0 --drive 12 --to 60 --symmetric --step 30
+run 1 fold tests/data/kin-issue14-vertex.fold --fix 3 --drive 10 --to -180 --step 60 -o "$OUT/blocked.fold"
+
+# --- unfolding ------------------------------------------------------------------------------------
+step "12. Unfolding: a cube to its 11 nets and back; a polygon convexified (Streinu)"
+run 0 unfold tests/data/unfold/cube.obj --all -o "$OUT/cube-net.fold" --svg "$OUT/cube-net.svg"
+run 0 unfold-linkage tests/data/unfold/star.fold -o "$OUT/star-motion.fold"
+
 # --- studio (orikin view) -----------------------------------------------------------------
-step "11. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
+step "13. The studio: the thesis' GUI in the browser (orikin view, started and stopped here)"
 echo "\$ orikin view examples/open-corner.seq.json --port 0 --no-browser"
 "$ORIKIN" view examples/open-corner.seq.json --port 0 --no-browser >"$OUT/view.out" 2>&1 &
 view_pid=$!
