@@ -55,7 +55,7 @@ static int run(int argc, char **argv)
     if (a.degree < 0 || a.degree > 12) return cli_usage("fit", "--degree must be 0 to 12");
     if (a.refine < 1) return cli_usage("fit", "--refine must be at least 1");
     cli_kin k;
-    rc = cli_kin_load("fit", a.path, a.frame, &k);
+    rc = cli_kin_load_input("fit", a.path, a.frame, &a.input, &k);
     if (rc != CLI_EXIT_OK) return rc;
     ori_fit_def fd = ori_default_fit_def();
     rc = cli_fold_def("fit", &a, &k, &fd.motion);
@@ -144,7 +144,8 @@ const cli_command cli_cmd_fit = {
     "the default everywhere else. Exit 1 when the fold is not valid.\n"
     "\n"
     "options:\n"
-    "  --fix, --drive, --to, --from, --step, --lock, --frame   as in orikin fold\n"
+    "  --fix, --drive, --to, --from, --step, --lock, --frame, --weld, --tolerance, --gaps,\n"
+    "  --keep-collinear, --keep-holes   as in orikin fold\n"
     "  --degree D    polynomial degree, 0 to 12; default 4\n"
     "  --refine R    error grid: step / R; default 10\n"
     "  --json        print {degree, drive, from_deg, to_deg, step_deg, samples, creases:\n"

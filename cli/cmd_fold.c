@@ -287,7 +287,7 @@ static int run(int argc, char **argv)
     rc = cli_fold_parse("fold", argc, argv, false, &a);
     if (rc != CLI_EXIT_OK) return rc;
     cli_kin k;
-    rc = cli_kin_load("fold", a.path, a.frame, &k);
+    rc = cli_kin_load_input("fold", a.path, a.frame, &a.input, &k);
     if (rc != CLI_EXIT_OK) return rc;
     ori_motion_def def;
     rc = cli_fold_def("fold", &a, &k, &def);
@@ -371,7 +371,9 @@ const cli_command cli_cmd_fold = {
     "  --step DEG      output spacing (> 0); default 10\n"
     "  --lock E1,...   creases held at their current angle\n"
     "  --frame N       start from the fold angles (and 3D pose) of frame N; default 0\n"
-    "  --solver S      auto (default), analytic (single vertex only) or numeric\n"
+    "  --weld          FOLD input: merge vertices closer than the length tolerance\n"
+    "  --tolerance REL, --gaps REL|auto, --keep-collinear, --keep-holes\n"
+    "                  drawing input (.svg, .opx, .cp: folded from flat), as in orikin info\n"    "  --solver S      auto (default), analytic (single vertex only) or numeric\n"
     "  --linear L      numeric solver's linear algebra: auto (default), dense, sparse or sweep\n"
     "  --no-collisions do not check the motion for self-collision\n"
     "  --clearance D   faces sharing no vertex closer than D collide too (a length >= 0)\n"

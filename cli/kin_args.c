@@ -17,9 +17,22 @@ void cli_kin_free(cli_kin *k)
 
 int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k)
 {
+    return cli_kin_load_input(cmd, path, frame, NULL, k);
+}
+
+int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_input *options, cli_kin *k)
+{
     memset(k, 0, sizeof *k);
     k->frame = frame;
-    int rc = cli_load_pattern(cmd, path, 0, false, &k->doc, &k->flat);
+    cli_input in;
+    if (options) in = *options;
+    else cli_input_init(&in);
+    in.frame = 0; // the mechanism; `frame` is the start state
+    in.frame_given = false;
+    ori_format f = ori_format_from_path(path);
+    if (frame != 0 && (f == ORI_FORMAT_SVG || f == ORI_FORMAT_OPX || f == ORI_FORMAT_CP))
+        return cli_usage(cmd, "--frame applies to .fold input, not to %s", path);
+    int rc = cli_input_load(cmd, path, &in, &k->doc, &k->flat);
     if (rc != CLI_EXIT_OK) return rc;
     if (ori_pattern_is_folded_form(k->flat) || ori_pattern_is_3d(k->flat)) {
         cli_kin_free(k);
@@ -100,6 +113,8 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
     a->linear = ORI_LINEAR_AUTO;
     a->degree = 4;
     a->refine = 10;
+    cli_input_init(&a->input);
+    cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
         const char *o = argv[i];
         const char *v = NULL;
@@ -108,12 +123,17 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
             a->json = true;
             continue;
         }
+        if (strcmp(o, "--frame") != 0) { // --frame is the start state here (below)
+            int r = cli_input_option(cmd, argc, argv, &i, &a->input, &seen);
+            if (r < 0) return -r;
+            if (r > 0) continue;
+        }
         bool takes = strcmp(o, "--fix") == 0 || strcmp(o, "--drive") == 0 || strcmp(o, "--to") == 0 ||
                      strcmp(o, "--from") == 0 || strcmp(o, "--step") == 0 || strcmp(o, "--lock") == 0 ||
                      strcmp(o, "--frame") == 0 || strcmp(o, "--solver") == 0 || strcmp(o, "--linear") == 0 ||
                      strcmp(o, "-o") == 0 || (fit && (strcmp(o, "--degree") == 0 || strcmp(o, "--refine") == 0));
         if (takes) {
-            v = cli_option_value(cmd, argc, argv, &i);
+            v = cli_option_once(cmd, argc, argv, &i, &seen);
             if (!v) return CLI_EXIT_USAGE;
         }
         if (strcmp(o, "--fix") == 0) {
@@ -165,6 +185,10 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
     if (!a->has_fix) return cli_usage(cmd, "missing --fix FACE");
     if (!a->has_drive) return cli_usage(cmd, "missing --drive EDGE");
     if (!a->has_to) return cli_usage(cmd, "missing --to DEG");
+    if (!(fabs(a->to_deg) <= 180.0)) return cli_usage(cmd, "--to %g is outside [-180, 180] degrees", a->to_deg);
+    if (a->has_from && !(fabs(a->from_deg) <= 180.0))
+        return cli_usage(cmd, "--from %g is outside [-180, 180] degrees", a->from_deg);
+    if (!(a->step_deg > 0.0)) return cli_usage(cmd, "--step must be a positive angle in degrees, got %g", a->step_deg);
     return CLI_EXIT_OK;
 }
 
@@ -172,24 +196,20 @@ int cli_fold_def(const char *cmd, const cli_fold_args *a, const cli_kin *k, ori_
 {
     const ori_mechanism *m = k->mech;
     int faces = ori_mechanism_face_count(m), edges = ori_mechanism_edge_count(m);
+    // Indices the pattern does not have are command-line values out of range (usage, exit 2).
     if (a->fix < 0 || a->fix >= faces)
-        return cli_input_fail(cmd, a->path, "faces_vertices %d: no face %d (the pattern has faces 0 to %d)", a->fix,
-                              a->fix, faces - 1);
+        return cli_value_fail(cmd, a->path, "--fix", "no face %d (the pattern has faces 0 to %d)", a->fix, faces - 1);
     if (a->drive < 0 || a->drive >= edges)
-        return cli_input_fail(cmd, a->path, "edges_vertices %d: no edge %d (the pattern has edges 0 to %d)", a->drive,
-                              a->drive, edges - 1);
+        return cli_value_fail(cmd, a->path, "--drive", "no edge %d (the pattern has edges 0 to %d)", a->drive,
+                              edges - 1);
     for (int i = 0; i < a->lock_count; ++i)
         if (a->locks[i] < 0 || a->locks[i] >= edges)
-            return cli_input_fail(cmd, a->path, "edges_vertices %d: no edge %d to lock (the pattern has edges 0 to %d)",
-                                  a->locks[i], a->locks[i], edges - 1);
-    if (!(fabs(a->to_deg) <= 180.0))
-        return cli_input_fail(cmd, a->path, "edges_foldAngle %d: --to %g is outside [-180, 180] degrees", a->drive,
-                              a->to_deg);
+            return cli_value_fail(cmd, a->path, "--lock", "no edge %d (the pattern has edges 0 to %d)", a->locks[i],
+                                  edges - 1);
+    if (!(fabs(a->to_deg) <= 180.0)) return cli_usage(cmd, "--to %g is outside [-180, 180] degrees", a->to_deg);
     if (a->has_from && !(fabs(a->from_deg) <= 180.0))
-        return cli_input_fail(cmd, a->path, "edges_foldAngle %d: --from %g is outside [-180, 180] degrees", a->drive,
-                              a->from_deg);
-    if (!(a->step_deg > 0.0))
-        return cli_input_fail(cmd, a->path, "--step must be a positive angle in degrees, got %g", a->step_deg);
+        return cli_usage(cmd, "--from %g is outside [-180, 180] degrees", a->from_deg);
+    if (!(a->step_deg > 0.0)) return cli_usage(cmd, "--step must be a positive angle in degrees, got %g", a->step_deg);
     *def = ori_default_motion_def();
     def->fixed_face = a->fix;
     int rc = cli_kin_fixed_pose(cmd, a->path, k, a->fix, &def->fixed_pose);

@@ -21,7 +21,13 @@ typedef struct cli_kin {
 // Load FILE: frame 0 must be a flat crease pattern (the mechanism), `frame` supplies the fold
 // angles (edges_foldAngle) and, when it is 3D, the vertex coordinates. Prints the error and
 // returns CLI_EXIT_INPUT on failure (with *k released), else CLI_EXIT_OK.
+// FILE may also be a drawing (SVG, OPX, CP: its crease pattern, flat) read with the default
+// import options.
 int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k);
+// cli_kin_load with the input options a command parsed (--weld for FOLD; --tolerance, --gaps,
+// --keep-* for drawings; NULL: the defaults). `frame` is the start state; the mechanism is
+// always frame 0. A drawing has no frames: --frame other than 0 is a usage error.
+int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_input *in, cli_kin *k);
 void cli_kin_free(cli_kin *k);
 
 // World pose of the fixed face in the start frame: identity for a flat frame, the rigid fit of
@@ -42,6 +48,7 @@ typedef struct cli_fold_args {
     ori_solver solver;
     ori_linear linear;
     int degree, refine;   // fit only
+    cli_input input;      // --weld, and the drawing options (--tolerance, --gaps, --keep-*)
 } cli_fold_args;
 
 // Parse the fold options (fit adds --degree and --refine). Returns CLI_EXIT_OK, or the
