@@ -217,7 +217,8 @@ static int run(int argc, char **argv)
         rc = act_run_sequence("actuate", &in, &rec);
     } else {
         ori_motion_def def;
-        rc = cli_fold_def("actuate", &fa, &in.k, &def);
+        rc = cli_fold_resolve("actuate", &fa, &in.k);
+        if (rc == CLI_EXIT_OK) rc = cli_fold_def("actuate", &fa, &in.k, &def);
         ori_error err;
         if (rc == CLI_EXIT_OK && ori_motion_solve(in.k.mech, &def, &mo, &err) != ORI_OK) rc = cli_input_error("actuate", path, &err);
         if (rc == CLI_EXIT_OK && ori_motion_verdict_of(mo) != ORI_MOTION_VALID) {

@@ -56,6 +56,7 @@ static int run(int argc, char **argv)
     if (a.refine < 1) return cli_usage("fit", "--refine must be at least 1");
     cli_kin k;
     rc = cli_kin_load_input("fit", a.path, a.frame, &a.input, &k);
+    if (rc == CLI_EXIT_OK && (rc = cli_fold_resolve("fit", &a, &k)) != CLI_EXIT_OK) cli_kin_free(&k);
     if (rc != CLI_EXIT_OK) return rc;
     ori_fit_def fd = ori_default_fit_def();
     rc = cli_fold_def("fit", &a, &k, &fd.motion);

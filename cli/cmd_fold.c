@@ -288,6 +288,7 @@ static int run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     cli_kin k;
     rc = cli_kin_load_input("fold", a.path, a.frame, &a.input, &k);
+    if (rc == CLI_EXIT_OK && (rc = cli_fold_resolve("fold", &a, &k)) != CLI_EXIT_OK) cli_kin_free(&k);
     if (rc != CLI_EXIT_OK) return rc;
     ori_motion_def def;
     rc = cli_fold_def("fold", &a, &k, &def);
@@ -364,12 +365,12 @@ const cli_command cli_cmd_fold = {
     "Exit 0 valid, 1 invalid / not foldable / underdetermined / blocked / collision, 3 bad input.\n"
     "\n"
     "options:\n"
-    "  --fix FACE      face held fixed (FOLD index)\n"
-    "  --drive EDGE    driven crease (FOLD index)\n"
+    "  --fix FACE      face held fixed: FOLD index, name (Obj12) or @x,y (the face there)\n"
+    "  --drive EDGE    driven crease: FOLD index or @x,y (the crease through the point)\n"
     "  --to DEG        final angle of the driven crease, -180 to 180\n"
     "  --from DEG      output from this angle (reached first, silently); default: current\n"
     "  --step DEG      output spacing (> 0); default 10\n"
-    "  --lock E1,...   creases held at their current angle\n"
+    "  --lock E1,...   creases held at their current angle (indices or @x,y, mixed)\n"
     "  --frame N       start from the fold angles (and 3D pose) of frame N; default 0\n"
     "  --weld          FOLD input: merge vertices closer than the length tolerance\n"
     "  --tolerance REL, --gaps REL|auto, --keep-collinear, --keep-holes\n"

@@ -37,7 +37,8 @@ bool cli_fold_modes_wanted(int argc, char **argv)
         const char *o = argv[i];
         if (strcmp(o, "--percent") == 0 || strcmp(o, "--symmetric") == 0 || strcmp(o, "--ratio") == 0) return true;
         if (i + 1 < argc && strcmp(o, "--lock") == 0 && strcmp(argv[i + 1], "auto") == 0) return true;
-        if (i + 1 < argc && (strcmp(o, "--drive") == 0 || strcmp(o, "--to") == 0) && strchr(argv[i + 1], ','))
+        if (i + 1 < argc && (strcmp(o, "--drive") == 0 || strcmp(o, "--to") == 0) && argv[i + 1][0] != '@' &&
+            strchr(argv[i + 1], ','))
             return true;
     }
     return false;

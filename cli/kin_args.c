@@ -1,6 +1,9 @@
 // Shared pieces of the kinematics commands: loading and the fold options.
 #include "kin_args.h"
 
+#include <orikin/arrangement.h>
+#include <orikin/tolerance.h>
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -137,10 +140,13 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
             if (!v) return CLI_EXIT_USAGE;
         }
         if (strcmp(o, "--fix") == 0) {
-            if (!cli_parse_int(v, &a->fix)) return cli_usage(cmd, "--fix needs a face index, got '%s'", v);
+            if (!cli_parse_int(v, &a->fix)) a->fix_spec = v; // a name or @x,y: cli_fold_resolve
             a->has_fix = true;
         } else if (strcmp(o, "--drive") == 0) {
-            if (!cli_parse_int(v, &a->drive)) return cli_usage(cmd, "--drive needs an edge index, got '%s'", v);
+            if (!cli_parse_int(v, &a->drive)) {
+                if (v[0] != '@') return cli_usage(cmd, "--drive needs an edge index or @x,y, got '%s'", v);
+                a->drive_spec = v;
+            }
             a->has_drive = true;
         } else if (strcmp(o, "--to") == 0) {
             if ((rc = parse_angle(cmd, o, v, &a->to_deg)) != CLI_EXIT_OK) return rc;
@@ -152,8 +158,13 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
             if ((rc = parse_angle(cmd, o, v, &a->step_deg)) != CLI_EXIT_OK) return rc;
         } else if (strcmp(o, "--lock") == 0) {
             int cap = (int)(sizeof a->locks / sizeof *a->locks);
-            a->lock_count = cli_parse_int_list(v, a->locks, cap);
-            if (a->lock_count < 0) return cli_int_list_usage(cmd, "--lock", v, cap);
+            if (strchr(v, '@')) {
+                a->lock_spec = v; // points among the indices: cli_fold_resolve
+                a->lock_count = 0;
+            } else {
+                a->lock_count = cli_parse_int_list(v, a->locks, cap);
+                if (a->lock_count < 0) return cli_int_list_usage(cmd, "--lock", v, cap);
+            }
         } else if (strcmp(o, "--frame") == 0) {
             if (!cli_parse_int(v, &a->frame) || a->frame < 0) return cli_usage(cmd, "--frame needs a frame number >= 0");
         } else if (strcmp(o, "-o") == 0) {
@@ -192,10 +203,114 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
     return CLI_EXIT_OK;
 }
 
+// The crease through the point "@x,y" (spec) for option, or a usage error.
+static int edge_at(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
+                   int *edge)
+{
+    double xy[2];
+    if (spec[0] != '@' || !cli_parse_doubles(spec + 1, xy, 2))
+        return cli_usage(cmd, "%s: a crease is an index or @x,y, got '%s'", option, spec);
+    int e = ori_pattern_find_edge_at(p, ori_v2_make(xy[0], xy[1]));
+    if (e == ORI_NULL_INDEX)
+        return cli_value_fail(cmd, path, option, "no crease passes through (%g, %g) (see orikin info --edges)", xy[0], xy[1]);
+    *edge = e;
+    return CLI_EXIT_OK;
+}
+
+// Crossing-number test of point q against face f's polygon: 1 inside, 0 outside, -1 on its
+// boundary (within tol).
+static int face_contains(const ori_pattern *p, int f, ori_v2 q, double tol)
+{
+    int n = ori_pattern_face_size(p, f);
+    int *vs = malloc(sizeof(int) * (size_t)(n > 0 ? n : 1));
+    if (!vs) return 0;
+    ori_pattern_face_vertices(p, f, vs, n);
+    bool inside = false;
+    int result = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++) {
+        ori_v3 a = ori_pattern_vertex(p, vs[j]), b = ori_pattern_vertex(p, vs[i]);
+        double dx = b.x - a.x, dy = b.y - a.y, len = hypot(dx, dy);
+        double t = len > 0 ? ((q.x - a.x) * dx + (q.y - a.y) * dy) / (len * len) : 0.0;
+        if (t >= 0.0 && t <= 1.0 && len > 0 && fabs((q.x - a.x) * dy - (q.y - a.y) * dx) / len <= tol) {
+            result = -1;
+            break;
+        }
+        if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * dx / dy) inside = !inside;
+    }
+    free(vs);
+    return result < 0 ? -1 : inside ? 1 : 0;
+}
+
+int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k)
+{
+    const ori_pattern *p = k->flat;
+    int rc;
+    if (a->fix_spec) {
+        if (a->fix_spec[0] == '@') {
+            double xy[2];
+            if (!cli_parse_doubles(a->fix_spec + 1, xy, 2))
+                return cli_usage(cmd, "--fix: a face is an index, a name or @x,y, got '%s'", a->fix_spec);
+            ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
+            for (int v = 1; v < ori_pattern_vertex_count(p); ++v) {
+                ori_v3 c = ori_pattern_vertex(p, v);
+                lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
+            }
+            double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
+            int found = -1;
+            for (int f = 0; f < ori_pattern_face_count(p) && found < 0; ++f) {
+                int c = face_contains(p, f, ori_v2_make(xy[0], xy[1]), tol);
+                if (c < 0)
+                    return cli_value_fail(cmd, a->path, "--fix", "(%g, %g) lies on an edge of face %d: give a point inside a face",
+                                          xy[0], xy[1], f);
+                if (c > 0) found = f;
+            }
+            if (found < 0)
+                return cli_value_fail(cmd, a->path, "--fix", "no face contains (%g, %g) (see orikin info --faces)", xy[0], xy[1]);
+            a->fix = found;
+        } else if ((rc = cli_find_face_option(cmd, a->path, p, "--fix", a->fix_spec, &a->fix)) != CLI_EXIT_OK) {
+            return rc;
+        }
+    }
+    if (a->drive_spec && (rc = edge_at(cmd, a->path, p, "--drive", a->drive_spec, &a->drive)) != CLI_EXIT_OK) return rc;
+    if (a->lock_spec) {
+        // Comma-separated items; "@x,y" takes the next item as its y.
+        int cap = (int)(sizeof a->locks / sizeof *a->locks);
+        const char *q = a->lock_spec;
+        a->lock_count = 0;
+        while (*q) {
+            const char *c = strchr(q, ',');
+            if (*q == '@' && c) c = strchr(c + 1, ','); // "@x,y" spans two items
+            size_t len = c ? (size_t)(c - q) : strlen(q);
+            char item[128];
+            if (len == 0 || len >= sizeof item) return cli_usage(cmd, "--lock: a crease is an index or @x,y, got '%s'", a->lock_spec);
+            memcpy(item, q, len);
+            item[len] = '\0';
+            if (a->lock_count >= cap) return cli_int_list_usage(cmd, "--lock", a->lock_spec, cap);
+            int e;
+            if (item[0] == '@') {
+                if ((rc = edge_at(cmd, a->path, k->flat, "--lock", item, &e)) != CLI_EXIT_OK) return rc;
+            } else if (!cli_parse_int(item, &e)) {
+                return cli_usage(cmd, "--lock: a crease is an index or @x,y, got '%s'", item);
+            }
+            bool dup = false; // the same crease by index and by point
+            for (int j = 0; j < a->lock_count; ++j) dup |= a->locks[j] == e;
+            if (!dup) a->locks[a->lock_count++] = e;
+            if (!c) break;
+            q = c + 1;
+        }
+    }
+    a->fix_spec = a->drive_spec = a->lock_spec = NULL; // resolved
+    return CLI_EXIT_OK;
+}
+
 int cli_fold_def(const char *cmd, const cli_fold_args *a, const cli_kin *k, ori_motion_def *def)
 {
     const ori_mechanism *m = k->mech;
     int faces = ori_mechanism_face_count(m), edges = ori_mechanism_edge_count(m);
+    const char *spec = a->fix_spec ? a->fix_spec : a->drive_spec ? a->drive_spec : a->lock_spec;
+    if (spec) // a caller that does not resolve names and points (cli_fold_resolve)
+        return cli_usage(cmd, "'%s': name faces and creases by FOLD index here (names and @x,y work in fold, fit "
+                              "and actuate)", spec);
     // Indices the pattern does not have are command-line values out of range (usage, exit 2).
     if (a->fix < 0 || a->fix >= faces)
         return cli_value_fail(cmd, a->path, "--fix", "no face %d (the pattern has faces 0 to %d)", a->fix, faces - 1);

@@ -49,11 +49,20 @@ typedef struct cli_fold_args {
     ori_linear linear;
     int degree, refine;   // fit only
     cli_input input;      // --weld, and the drawing options (--tolerance, --gaps, --keep-*)
+    // --fix, --drive and --lock as given when they name a face by name ("Obj12") or a face or
+    // crease by a point ("@x,y"); NULL when given as indices. cli_fold_resolve sets fix, drive
+    // and locks from them.
+    const char *fix_spec, *drive_spec, *lock_spec;
 } cli_fold_args;
 
 // Parse the fold options (fit adds --degree and --refine). Returns CLI_EXIT_OK, or the
 // usage exit code after printing the message.
 int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_args *a);
+
+// Resolve --fix (index, face name or @x,y: the face containing the point), --drive and --lock
+// (indices or @x,y: the crease through the point; "3,@0.5,1,9" mixes them) against the loaded
+// crease pattern. Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after a message naming the option.
+int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k);
 
 // Check the specification against the mechanism and fill a motion def (angles from k, pose
 // from the fixed face). Prints a one-line input error naming the index and returns
