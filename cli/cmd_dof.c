@@ -5,72 +5,21 @@
 #include "kin_args.h"
 #include "progress.h"
 
-// The mechanism of frame 0 (FOLD, with --weld) or of a drawing (SVG, OPX, CP, with the import
-// options), and the fold angles of --frame N (a folded frame gives its edges_foldAngle; a flat
-// crease-pattern frame is the flat state, as for fold). Prints the error and returns its exit
-// code on failure, with everything released.
+// The mechanism and the fold angles of --frame N as fold reads them (cli_kin_load_input): frame 0
+// (or a crease-pattern --frame when frame 0 is folded) or a drawing. Prints the error and returns
+// its exit code on failure, with everything released.
 static int load(const char *cmd, const char *path, cli_input *in, ori_fold **doc, ori_pattern **flat,
                 ori_mechanism **mech, double **angles)
 {
-    *doc = NULL;
-    *flat = NULL;
-    *mech = NULL;
-    *angles = NULL;
-    int frame = in->frame;
-    in->frame = 0; // the mechanism is frame 0's; --frame only chooses the state
-    int rc = cli_input_load(cmd, path, in, doc, flat);
-    in->frame = frame;
+    cli_kin k;
+    int rc = cli_kin_load_input(cmd, path, in->frame, in, &k);
     if (rc != CLI_EXIT_OK) return rc;
-    ori_error err;
-    ori_pattern *state = NULL;
-    if (ori_pattern_is_folded_form(*flat) || ori_pattern_is_3d(*flat)) {
-        rc = cli_input_fail(cmd, path, "frame 0 is a folded form: the kinematics needs the flat crease pattern there");
-        goto fail;
-    }
-    if (frame != 0) {
-        int frames = ori_fold_frame_count(*doc);
-        if (frame >= frames) {
-            rc = cli_value_fail(cmd, path, "--frame", "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
-            goto fail;
-        }
-        ori_build_def bd = ori_default_build_def();
-        bd.check_planarity = false;
-        bd.weld = in->weld;
-        if (ori_fold_get_pattern(*doc, frame, &bd, &state, &err) != ORI_OK) {
-            char buf[512];
-            ori_error_format(&err, buf, sizeof buf);
-            rc = cli_input_fail(cmd, path, "frame %d: %s", frame, buf);
-            goto fail;
-        }
-        if (ori_pattern_edge_count(state) != ori_pattern_edge_count(*flat) ||
-            ori_pattern_vertex_count(state) != ori_pattern_vertex_count(*flat)) {
-            rc = cli_input_fail(cmd, path, "frame %d has different vertices or edges from frame 0: not a state of the "
-                                "same pattern", frame);
-            goto fail;
-        }
-    }
-    ori_mechanism_def md = ori_default_mechanism_def();
-    md.pattern = *flat;
-    if (ori_mechanism_create(&md, mech, &err) != ORI_OK) {
-        rc = cli_input_error(cmd, path, &err);
-        goto fail;
-    }
-    int ne = ori_pattern_edge_count(*flat);
-    *angles = calloc((size_t)ne + 1, sizeof(double));
-    // A flat crease-pattern frame is the flat state whatever its edges_foldAngle say (targets).
-    bool folded = state && (ori_pattern_is_folded_form(state) || ori_pattern_is_3d(state));
-    for (int e = 0; e < ne && folded; ++e) (*angles)[e] = ori_pattern_edge(state, e).fold_angle_rad;
-    ori_pattern_destroy(state);
+    *doc = k.doc;
+    *flat = k.flat;
+    *mech = k.mech;
+    *angles = k.angles;
+    free(k.coords);
     return CLI_EXIT_OK;
-fail:
-    ori_pattern_destroy(state);
-    ori_mechanism_destroy(*mech);
-    ori_pattern_destroy(*flat);
-    ori_fold_destroy(*doc);
-    *mech = NULL;
-    *flat = NULL;
-    *doc = NULL;
-    return rc;
 }
 
 static int run(int argc, char **argv)

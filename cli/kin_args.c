@@ -37,9 +37,34 @@ int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_i
         return cli_usage(cmd, "--frame applies to .fold input, not to %s", path);
     int rc = cli_input_load(cmd, path, &in, &k->doc, &k->flat);
     if (rc != CLI_EXIT_OK) return rc;
+    if ((ori_pattern_is_folded_form(k->flat) || ori_pattern_is_3d(k->flat)) && frame != 0 &&
+        frame < ori_fold_frame_count(k->doc)) {
+        // Frame 0 is folded but --frame names a flat crease pattern (Rabbit Ear keeps the kabuto's
+        // in frame 9): that frame alone is the document, the mechanism and the flat start.
+        ori_build_def bd = ori_default_build_def();
+        bd.check_planarity = false;
+        ori_pattern *cp = NULL;
+        ori_fold *alone = NULL;
+        ori_error e;
+        if (ori_fold_get_pattern(k->doc, frame, &bd, &cp, &e) == ORI_OK && !ori_pattern_is_folded_form(cp) &&
+            !ori_pattern_is_3d(cp) && ori_fold_extract_frame(k->doc, frame, &alone, &e) == ORI_OK) {
+            ori_pattern *flat = NULL;
+            if (ori_fold_get_pattern(alone, 0, NULL, &flat, &e) == ORI_OK) {
+                ori_pattern_destroy(k->flat);
+                ori_fold_destroy(k->doc);
+                k->flat = flat;
+                k->doc = alone;
+                alone = NULL;
+                k->frame = frame = 0;
+            }
+        }
+        ori_fold_destroy(alone);
+        ori_pattern_destroy(cp);
+    }
     if (ori_pattern_is_folded_form(k->flat) || ori_pattern_is_3d(k->flat)) {
         cli_kin_free(k);
-        return cli_input_fail(cmd, path, "frame 0 is a folded form: the kinematics needs the flat crease pattern there");
+        return cli_input_fail(cmd, path, "frame 0 is a folded form: the kinematics needs the flat crease pattern there "
+                                         "(or --frame N naming a crease-pattern frame)");
     }
     ori_error err;
     // Frame 0 as loaded, with the faces the mechanism uses (traced when the file had none), so
@@ -63,7 +88,7 @@ int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_i
         int frames = ori_fold_frame_count(k->doc);
         if (frame < 0 || frame >= frames) {
             cli_kin_free(k);
-            return cli_input_fail(cmd, path, "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
+            return cli_value_fail(cmd, path, "--frame", "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
         }
         ori_build_def bd = ori_default_build_def();
         bd.check_planarity = false;
