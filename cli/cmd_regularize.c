@@ -12,49 +12,44 @@ static double deg(double rad) { return ori_rad_to_deg_output(rad); }
 
 static int run(int argc, char **argv)
 {
-    const char *path = NULL, *out = NULL;
-    bool json = false, weld = false, rigid = false, has_max = false;
-    int frame = 0;
-    bool has_frame = false;
+    const char *cmd = "regularize", *path = NULL, *out = NULL;
+    bool json = false, rigid = false;
     ori_regularize_def def = ori_default_regularize_def();
+    cli_input in;
+    cli_input_init(&in);
+    cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
         const char *o = argv[i];
+        int r = cli_input_option(cmd, argc, argv, &i, &in, &seen);
+        if (r < 0) return -r;
+        if (r > 0) continue;
         if (strcmp(o, "--json") == 0) json = true;
-        else if (strcmp(o, "--weld") == 0) weld = true;
         else if (strcmp(o, "--rigid") == 0) rigid = true;
         else if (strcmp(o, "-o") == 0) {
-            if (out) return cli_usage("regularize", "-o given twice");
-            out = cli_option_value("regularize", argc, argv, &i);
-            if (!out) return CLI_EXIT_USAGE;
-        } else if (strcmp(o, "--frame") == 0) {
-            if (has_frame) return cli_usage("regularize", "--frame given twice");
-            has_frame = true;
-            if (cli_option_frame("regularize", argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
+            if (!(out = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
         } else if (strcmp(o, "--max-move") == 0) {
-            if (has_max) return cli_usage("regularize", "--max-move given twice");
-            has_max = true;
-            const char *v = cli_option_value("regularize", argc, argv, &i);
+            const char *v = cli_option_once(cmd, argc, argv, &i, &seen);
             if (!v) return CLI_EXIT_USAGE;
             if (!cli_parse_double(v, &def.max_move_rel) || def.max_move_rel <= 0.0 || def.max_move_rel > 1.0)
-                return cli_usage("regularize", "--max-move needs a fraction of the sheet size in (0, 1], got '%s'", v);
+                return cli_usage(cmd, "--max-move needs a fraction of the sheet size in (0, 1], got '%s'", v);
         } else if (o[0] == '-' && o[1] != '\0') {
-            return cli_usage("regularize", "unknown option %s", o);
+            return cli_usage(cmd, "unknown option %s", o);
         } else if (!path) {
             path = o;
         } else {
-            return cli_usage("regularize", "one FILE only");
+            return cli_usage(cmd, "one FILE only");
         }
     }
-    if (!path) return cli_usage("regularize", "missing FILE");
+    if (!path) return cli_usage(cmd, "missing FILE");
     def.rigid = rigid;
     ori_fold *doc;
     ori_pattern *p;
-    int rc = cli_load_pattern("regularize", path, frame, weld, &doc, &p);
+    int rc = cli_input_load(cmd, path, &in, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
     if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p)) {
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
-        return cli_input_fail("regularize", path, "frame %d is a folded form: regularize needs a flat crease pattern", frame);
+        return cli_input_fail(cmd, path, "frame %d is a folded form: regularize needs a flat crease pattern", in.frame);
     }
     ori_regularize_result r;
     ori_pattern *q = NULL;
@@ -97,7 +92,7 @@ static int run(int argc, char **argv)
     bool ok = why == NULL;
     int code = ok ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
     if (ok && out) {
-        code = cli_write_pattern("regularize", doc, q, out);
+        code = cli_write_frame_pattern("regularize", &doc, &in, q, out);
         if (code != CLI_EXIT_OK) ok = false;
     }
     if (json) {
@@ -151,7 +146,7 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_regularize = {
     "regularize",
     "move vertices the least so that a rounded drawing is exactly flat- (and rigidly) foldable",
-    "usage: orikin regularize FILE [-o OUT] [--rigid] [--max-move REL] [--frame N] [--json] [--weld]\n"
+    "usage: orikin regularize FILE [-o OUT] [--rigid] [--max-move REL] [--json] [input options]\n"
     "\n"
     "Drawings from other tools carry rounded coordinates: their vertices miss Kawasaki by a\n"
     "few thousandths of a degree, so exact checks fail and a rigid fold finds no motion. This\n"
@@ -166,16 +161,19 @@ const cli_command cli_cmd_regularize = {
     "drawing is not a rounded exact pattern. See docs/verification.md.\n"
     "\n"
     "options:\n"
-    "  -o OUT          write the regularized FOLD (every other field kept); without it, a dry run\n"
+    "  -o OUT          write the regularized pattern (FOLD: every other field kept; .svg, .cp,\n"
+    "                  .opx by extension); without it, a dry run\n"
     "  --rigid         also make the pattern rigidly foldable (second order)\n"
     "  --max-move REL  largest displacement accepted, relative to the sheet's diagonal; default 1e-3\n"
-    "  --frame N       the frame holding the crease pattern; default 0\n"
+
     "  --json          print {\"file\", \"rigid\", \"converged\", \"refused\", \"reason\",\n"
     "                  \"interior_vertices\", \"unknowns\", \"equations\", \"iterations\",\n"
     "                  \"moved_vertices\", \"max_move_rel\", \"max_move_vertex\", \"rms_move_rel\",\n"
     "                  \"max_move_allowed_rel\", \"kawasaki_before_deg\", \"kawasaki_after_deg\",\n"
     "                  \"crossing_edge\", \"rigid_before\", \"rigid_after\", \"output\"}\n"
-    "  --weld          merge vertices closer than the length tolerance (renumbers vertices)\n"
+    "\n"
+    "input options (FILE is a FOLD file or a drawing: .svg, .opx, .cp):\n"
+    CLI_INPUT_HELP
     "\n"
     "example: orikin regularize miura.fold --rigid -o miura-exact.fold\n",
     run,
