@@ -65,6 +65,8 @@ static int run(int argc, char **argv)
     }
     def.view = view;
     def.format = format;
+    def.face_orders = st.face_orders; // a frame's own layer order of stacked faces
+    def.face_order_count = st.face_order_count;
     if (texture && !st.has_flat) {
         ori_buffer_free(texture);
         cli_state_free(&st);
@@ -95,6 +97,7 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "height", json_integer(def.height));
             json_object_set_new(o, "state", json_string(st.label));
             json_object_set_new(o, "faces", json_integer(ori_pattern_face_count(st.pattern)));
+            json_object_set_new(o, "face_orders", json_integer(view == ORI_RENDER_3D ? st.face_order_count : 0));
             json_object_set_new(o, "failing_vertices", failing >= 0 ? json_integer(failing) : json_null());
             cli_print_json(o);
         } else {

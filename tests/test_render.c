@@ -580,7 +580,7 @@ Test(render, miura_faces_are_painted_back_to_front)
         for (int v = 0; v < n; ++v) pts[v] = ori_mesh_vertex(mesh, v);
         ori_camera_fit(&c, pts, n, 800, 600, 0.05);
         ori__order o;
-        ori__order_build(mesh, &c, &o);
+        ori__order_build(mesh, &c, NULL, 0, &o);
         cr_assert_eq(o.piece_count, ori_mesh_face_count(mesh), "no splitting needed");
         checked += check_order(&o, 1e-9, persp);
         ori__order_free(&o);
@@ -623,7 +623,7 @@ Test(render, cyclic_overlaps_are_split)
     for (int v = 0; v < 12; ++v) pts[v] = ori_mesh_vertex(mesh, v);
     ori_camera_fit(&c, pts, 12, 600, 600, 0.05);
     ori__order o;
-    ori__order_build(mesh, &c, &o);
+    ori__order_build(mesh, &c, NULL, 0, &o);
     cr_assert_eq(o.groups_split, 1, "the three panels form one cycle");
     cr_assert_gt(o.piece_count, 3, "and are split into %d pieces", o.piece_count);
     cr_assert_gt(check_order(&o, 1e-9, false), 3);
