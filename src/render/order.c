@@ -10,7 +10,7 @@
 //    the face graph from a root, crossing a crease folded flat puts the next face one layer to
 //    the front (valley) or back (mountain) of the current one. Exact for stacks made by a chain
 //    of folds. When the state has FOLD faceOrders (a folded form's own, or the layer solver's),
-//    a listed pair takes its order from there instead.
+//    the faces they link are ranked by them instead (transitively, a topological sort per stack).
 // 3. The face graph may have cycles (three faces overlapping like a pinwheel): its strongly
 //    connected components, and the faces that cross, become groups, merged until the graph of
 //    groups is acyclic, which is then sorted topologically (Kahn). A group of one face is drawn
@@ -240,10 +240,10 @@ typedef struct listed_layers {
     ori_v3 *up; // per face: its component's n0
 } listed_layers;
 
-static bool listed_build(const ori_mesh *m, const int *fo, int count, listed_layers *L)
+static void listed_build(const ori_mesh *m, const int *fo, int count, listed_layers *L)
 {
     memset(L, 0, sizeof *L);
-    if (count <= 0) return false;
+    if (count <= 0) return;
     int nf = m->face_count;
     L->comp = ori__alloc(sizeof(int) * (size_t)(nf + 1));
     L->rank = ori__calloc((size_t)nf + 1, sizeof(int));
@@ -293,7 +293,6 @@ static bool listed_build(const ori_mesh *m, const int *fo, int count, listed_lay
     ori__free(el.e);
     ori__free(uf);
     ori__free(named);
-    return true;
 }
 
 static void listed_free(listed_layers *L)
