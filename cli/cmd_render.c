@@ -65,6 +65,8 @@ static int run(int argc, char **argv)
     }
     def.view = view;
     def.format = format;
+    def.face_orders = st.face_orders; // a frame's own layer order of stacked faces
+    def.face_order_count = st.face_order_count;
     if (texture && !st.has_flat) {
         ori_buffer_free(texture);
         cli_state_free(&st);
@@ -95,6 +97,7 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "height", json_integer(def.height));
             json_object_set_new(o, "state", json_string(st.label));
             json_object_set_new(o, "faces", json_integer(ori_pattern_face_count(st.pattern)));
+            json_object_set_new(o, "face_orders", json_integer(view == ORI_RENDER_3D ? st.face_order_count : 0));
             json_object_set_new(o, "failing_vertices", failing >= 0 ? json_integer(failing) : json_null());
             cli_print_json(o);
         } else {
@@ -129,7 +132,9 @@ const cli_command cli_cmd_render = {
     "grey; vertices that are not locally flat-foldable are ringed in orange. The 3D view draws\n"
     "the posed sheet with two colours (front = the side facing +z in the flat sheet),\n"
     "directional light and the creases on top; SVG and PDF are true vector drawings, faces\n"
-    "sorted back to front (cycles split). The view is cp for a crease-pattern frame (unless a\n"
+    "sorted back to front (cycles split); faces folded flat onto each other follow the frame's\n"
+    "faceOrders when it has them (a folded form's own, or the frame `orikin layers -o` writes),\n"
+    "else the fold tree. The view is cp for a crease-pattern frame (unless a\n"
     "3D option is given), 3D for a folded form, a fold or a sequence.\n"
     "\n"
     "options:\n"
@@ -152,7 +157,7 @@ const cli_command cli_cmd_render = {
     "  --grid               a ground grid under the sheet\n"
     "  --labels             vertex, edge and face indices (crease view)\n"
     "  --json               print {output, format, view, width, height, state, faces,\n"
-    "                       failing_vertices}\n"
+    "                       face_orders, failing_vertices}\n"
     "  -o OUT               the picture; its format by the suffix .svg, .pdf or .png\n"
     "\n"
     "example: orikin render examples/open-corner.seq.json --yaw 90 -o corner-cube.png\n",

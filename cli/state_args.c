@@ -154,6 +154,7 @@ void cli_state_free(cli_state *s)
     free(s->positions);
     free(s->poses);
     free(s->angles);
+    free(s->face_orders);
     memset(s, 0, sizeof *s);
 }
 
@@ -196,7 +197,59 @@ static int frame_error(const char *cmd, const char *path, int frame, const ori_e
     return cli_input_fail(cmd, path, "frame %d: %s", frame, buf);
 }
 
+// The frame's FOLD faceOrders ([f, g, s] triples, faces of the drawn pattern, s = ±1) into
+// s->face_orders; none when the frame has no faceOrders. Input error naming the triple.
+static int load_face_orders(const char *cmd, const char *path, int frame, cli_state *s)
+{
+    char *text = ori_fold_get_custom(s->doc, frame, "faceOrders");
+    if (!text) return CLI_EXIT_OK;
+    json_error_t jerr;
+    json_t *root = json_loads(text, 0, &jerr);
+    ori_buffer_free(text);
+    if (!json_is_array(root)) {
+        json_decref(root);
+        return cli_input_fail(cmd, path, "frame %d: faceOrders is not an array", frame);
+    }
+    int nf = ori_pattern_face_count(s->pattern);
+    size_t n = json_array_size(root);
+    s->face_orders = xcalloc(3 * n, sizeof(int));
+    for (size_t i = 0; i < n; ++i) {
+        json_t *t = json_array_get(root, i);
+        bool ok = json_is_array(t) && json_array_size(t) == 3;
+        for (size_t k = 0; ok && k < 3; ++k) {
+            json_t *x = json_array_get(t, k);
+            ok = json_is_integer(x) || (json_is_real(x) && json_real_value(x) == floor(json_real_value(x)) &&
+                                        fabs(json_real_value(x)) < 1e9);
+            if (ok) s->face_orders[3 * i + k] = json_is_integer(x) ? (int)json_integer_value(x) : (int)json_real_value(x);
+        }
+        if (!ok) {
+            json_decref(root);
+            return cli_input_fail(cmd, path, "frame %d: faceOrders %zu: not a triple of integers [f, g, s]", frame, i);
+        }
+        int f = s->face_orders[3 * i], g = s->face_orders[3 * i + 1], o = s->face_orders[3 * i + 2];
+        if (f < 0 || f >= nf || g < 0 || g >= nf || f == g || (o != 1 && o != -1)) {
+            json_decref(root);
+            return cli_input_fail(cmd, path,
+                                  "frame %d: faceOrders %zu: [%d, %d, %d] is not an order of two faces (0 to %d) with s = 1 "
+                                  "or -1",
+                                  frame, i, f, g, o, nf - 1);
+        }
+    }
+    s->face_order_count = (int)n;
+    json_decref(root);
+    return CLI_EXIT_OK;
+}
+
+static int load_frame_pose(const char *cmd, const cli_state_args *a, bool need_pose, cli_state *s);
+
 static int load_frame(const char *cmd, const cli_state_args *a, bool need_pose, cli_state *s)
+{
+    int rc = load_frame_pose(cmd, a, need_pose, s);
+    if (rc != CLI_EXIT_OK || !s->doc || s->frame_count <= a->frame || !s->pattern) return rc;
+    return load_face_orders(cmd, a->path, a->frame, s);
+}
+
+static int load_frame_pose(const char *cmd, const cli_state_args *a, bool need_pose, cli_state *s)
 {
     ori_error err;
     ori_pattern *p0 = NULL, *pf = NULL;

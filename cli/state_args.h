@@ -68,6 +68,8 @@ typedef struct cli_state {
     ori_v3 *positions;       // world position of every vertex (NULL: not posed, need_pose was false)
     ori_rigid *poses;        // flat → world pose of every face, or NULL (folded forms, unposed, non-rigid faces)
     double *angles;          // fold angle of every edge (radians), or NULL when unknown
+    int *face_orders;        // a FOLD frame's faceOrders: face_order_count triples (f, g, s), or NULL
+    int face_order_count;    // (for ori_render_def's face_orders: the layer order of stacked faces)
     bool folded;             // the state is not the flat sheet
     bool cp_frame;           // the chosen state is a crease-pattern frame (posed from its fold angles)
     int frame_count;         // frames of the FOLD file (1 for a fold or a sequence)

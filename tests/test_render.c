@@ -580,7 +580,7 @@ Test(render, miura_faces_are_painted_back_to_front)
         for (int v = 0; v < n; ++v) pts[v] = ori_mesh_vertex(mesh, v);
         ori_camera_fit(&c, pts, n, 800, 600, 0.05);
         ori__order o;
-        ori__order_build(mesh, &c, &o);
+        ori__order_build(mesh, &c, NULL, 0, &o);
         cr_assert_eq(o.piece_count, ori_mesh_face_count(mesh), "no splitting needed");
         checked += check_order(&o, 1e-9, persp);
         ori__order_free(&o);
@@ -623,7 +623,7 @@ Test(render, cyclic_overlaps_are_split)
     for (int v = 0; v < 12; ++v) pts[v] = ori_mesh_vertex(mesh, v);
     ori_camera_fit(&c, pts, 12, 600, 600, 0.05);
     ori__order o;
-    ori__order_build(mesh, &c, &o);
+    ori__order_build(mesh, &c, NULL, 0, &o);
     cr_assert_eq(o.groups_split, 1, "the three panels form one cycle");
     cr_assert_gt(o.piece_count, 3, "and are split into %d pieces", o.piece_count);
     cr_assert_gt(check_order(&o, 1e-9, false), 3);
@@ -1102,4 +1102,205 @@ Test(render, cli_writes_files_and_nothing_on_failure)
     pclose(ls);
     cr_assert_eq(files, 6, "c.png c.svg c.pdf a.gif c.stl keep.png");
     test_tmpdir_remove(dir);
+}
+
+// --- FOLD faceOrders -----------------------------------------------------------------------------
+
+// The integers of a frame's faceOrders ("[[f,g,s],...]") into *out (malloc'd); returns the triples.
+static int read_face_orders(const ori_fold *doc, int frame, int **out)
+{
+    char *text = ori_fold_get_custom(doc, frame, "faceOrders");
+    cr_assert(text, "frame %d has faceOrders", frame);
+    int n = 0, cap = 64;
+    *out = malloc(sizeof(int) * (size_t)cap);
+    for (char *c = text; *c;) {
+        if (*c == '-' || (*c >= '0' && *c <= '9')) {
+            if (n == cap) *out = realloc(*out, sizeof(int) * (size_t)(cap *= 2));
+            (*out)[n++] = (int)strtol(c, &c, 10);
+        } else {
+            ++c;
+        }
+    }
+    ori_buffer_free(text);
+    cr_assert_eq(n % 3, 0);
+    return n / 3;
+}
+
+static ori_pattern *folded_frame(const ori_fold *doc, int frame)
+{
+    ori_build_def bd = ori_default_build_def();
+    bd.check_planarity = false;
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_get_pattern(doc, frame, frame ? &bd : NULL, &p, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+// Index in an SVG of the last fill of colour c (cairo writes fill:rgb(R%,G%,B%)), or -1.
+static long last_fill(const char *svg, const char *colour)
+{
+    long at = -1;
+    for (const char *s = strstr(svg, colour); s; s = strstr(s + 1, colour)) at = s - svg;
+    return at;
+}
+
+// Two stacked faces whose faceOrders say the opposite of stacking along the valley: the top view
+// shows face 0's front (with faceOrders) instead of face 1's back (without), in the PNG's pixel
+// at the stack and in the SVG's painting order.
+Test(render, face_orders_decide_stacked_faces)
+{
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(test_repo_path("tests/data/render/stacked-faces.fold"), &doc, &err), ORI_OK, "%s",
+                 err.message);
+    ori_pattern *p = folded_frame(doc, 0);
+    int *fo = NULL;
+    int nfo = read_face_orders(doc, 0, &fo);
+    cr_assert_eq(nfo, 1);
+    ori_state_view sv = {p, NULL, NULL};
+    ori_render_def d = top_def(200, 200);
+    d.front = (ori_rgb){1, 0, 0};
+    d.back = (ori_rgb){0, 0, 1};
+    rgb8 front = to8(d.front, 1), back = to8(d.back, 1);
+    cairo_surface_t *s = render_png(&sv, &d);
+    cr_assert_eq(dist2(pixel(s, 100, 100), back), 0, "without faceOrders the valley stacks face 1 (back up) on top");
+    cairo_surface_destroy(s);
+    d.face_orders = fo;
+    d.face_order_count = nfo;
+    s = render_png(&sv, &d);
+    cr_assert_eq(dist2(pixel(s, 100, 100), front), 0, "faceOrders put face 0 (front up) on top");
+    cairo_surface_destroy(s);
+    // The SVG paints face 0 (red) after face 1 (blue).
+    d.format = ORI_IMAGE_SVG;
+    void *data = NULL;
+    size_t size = 0;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_OK, "%s", err.message);
+    char *svg = malloc(size + 1);
+    memcpy(svg, data, size);
+    svg[size] = '\0';
+    ori_buffer_free(data);
+    long red = last_fill(svg, "fill:rgb(100%, 0%, 0%)"), blue = last_fill(svg, "fill:rgb(0%, 0%, 100%)");
+    if (red < 0) red = last_fill(svg, "fill:rgb(100%,0%,0%)"), blue = last_fill(svg, "fill:rgb(0%,0%,100%)");
+    cr_assert(red >= 0 && blue >= 0, "both faces are painted");
+    cr_assert_gt(red, blue, "face 0 is painted after face 1");
+    free(svg);
+    // From below the order turns round: face 1's front... its normal points down, so its front.
+    d.format = ORI_IMAGE_PNG;
+    d.camera = ori_camera_preset(ORI_CAMERA_BOTTOM, 0, 0, 0);
+    s = render_png(&sv, &d);
+    cr_assert_eq(dist2(pixel(s, 100, 100), front), 0, "from below face 1 (its front down) is nearest");
+    cairo_surface_destroy(s);
+    // faceOrders naming a face that does not exist are refused.
+    int bad[3] = {0, 7, 1};
+    d.face_orders = bad;
+    d.face_order_count = 1;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    free(fo);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+}
+
+// Every flat-folded state of a 4-stamp strip, written by the layer solver as a folded frame
+// (what `orikin layers -o` writes), seen from the top shows its top face in that face's colour.
+Test(render, layer_solver_states_show_their_top_face)
+{
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(test_repo_path("tests/data/layers/pleat-unassigned.fold"), &doc, &err), ORI_OK, "%s",
+                 err.message);
+    ori_pattern *cp = folded_frame(doc, 0);
+    ori_layers_def ld = ori_default_layers_def();
+    ori_layers *L = NULL;
+    cr_assert_eq(ori_layers_create(cp, &ld, &L, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_layers_count(L, &err), ORI_OK, "%s", err.message);
+    int top_faces_seen[4] = {0};
+    for (int k = 0; k < 16; ++k) {
+        char key[8];
+        snprintf(key, sizeof key, "%d", k);
+        cr_assert_eq(ori_layers_select_state(L, key, &err), ORI_OK, "%s", err.message);
+        int frame = ori_layers_append_frame(L, cp, doc, 0, &err);
+        cr_assert_geq(frame, 1, "%s", err.message);
+        int stack[4];
+        cr_assert_eq(ori_layers_cell_count(L), 1);
+        cr_assert_eq(ori_layers_cell_stack(L, 0, stack, 4), 4);
+        int top = stack[0];
+        top_faces_seen[top]++;
+        ori_pattern *pf = folded_frame(doc, frame);
+        int *fo = NULL;
+        int nfo = read_face_orders(doc, frame, &fo);
+        ori_state_view sv = {pf, NULL, NULL};
+        ori_render_def d = top_def(200, 200);
+        d.front = (ori_rgb){1, 0, 0};
+        d.back = (ori_rgb){0, 0, 1};
+        d.face_orders = fo;
+        d.face_order_count = nfo;
+        cairo_surface_t *s = render_png(&sv, &d);
+        rgb8 want = to8(ori_layers_face_flipped(L, top) ? d.back : d.front, 1);
+        cr_assert_eq(dist2(pixel(s, 100, 100), want), 0, "state %d: top face %d shows its %s", k, top,
+                     ori_layers_face_flipped(L, top) ? "back" : "front");
+        cairo_surface_destroy(s);
+        free(fo);
+        ori_pattern_destroy(pf);
+    }
+    // Both outer stamps and inner ones come on top across the states.
+    cr_assert(top_faces_seen[0] > 0 && top_faces_seen[3] > 0);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(cp);
+    ori_fold_destroy(doc);
+}
+
+// The FOLD specification's box: its corner flaps lie flat against the walls inside (faceOrders);
+// seen from outside, every wall shows its front (the box's outside) and no flap's back.
+Test(render, fold_spec_box_follows_its_face_orders)
+{
+    const char *path = test_require_shared("fold-spec/box.fold");
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = folded_frame(doc, 0);
+    int *fo = NULL;
+    int nfo = read_face_orders(doc, 0, &fo);
+    cr_assert_eq(nfo, 34);
+    ori_state_view sv = {p, NULL, NULL};
+    ori_render_def d = top_def(300, 300);
+    d.front = (ori_rgb){1, 0, 0};
+    d.back = (ori_rgb){0, 0, 1};
+    d.face_orders = fo;
+    d.face_order_count = nfo;
+    rgb8 c[6];
+    int nc = palette(&d, c);
+    // Each side of the box, looked at square-on: sampled on a 9 × 9 grid over the wall facing the
+    // eye (within 0.9 of its half-width), no pixel shows a back (a flap showing through).
+    static const ori_camera_preset_kind presets[] = {ORI_CAMERA_TOP, ORI_CAMERA_BOTTOM, ORI_CAMERA_FRONT, ORI_CAMERA_SIDE};
+    for (size_t i = 0; i < sizeof presets / sizeof presets[0]; ++i) {
+        for (int yaw = 0; yaw < 360; yaw += 180) {
+            d.camera = ori_camera_preset(presets[i], ori_deg_to_rad(yaw), 0, 0);
+            ori_camera cam;
+            cr_assert_eq(ori_render_camera(&sv, &d, &cam, &err), ORI_OK, "%s", err.message);
+            cairo_surface_t *s = render_png(&sv, &d);
+            double t[3] = {cam.rotation.m[2][0], cam.rotation.m[2][1], cam.rotation.m[2][2]};
+            int axis = fabs(t[0]) > 0.9 ? 0 : fabs(t[1]) > 0.9 ? 1 : 2;
+            cr_assert(fabs(t[axis]) > 0.999, "a square-on view");
+            int fronts = 0;
+            for (int a = -4; a <= 4; ++a)
+                for (int b = -4; b <= 4; ++b) {
+                    double q[3];
+                    q[axis] = t[axis] > 0 ? 1 : -1;
+                    q[(axis + 1) % 3] = 0.9 * a / 4.0;
+                    q[(axis + 2) % 3] = 0.9 * b / 4.0;
+                    ori_v3 img = ori_camera_project(&cam, ori_v3_make(q[0], q[1], q[2]));
+                    rgb8 px = pixel(s, (int)img.x, (int)img.y);
+                    int best = 0;
+                    for (int k = 1; k < nc; ++k)
+                        if (dist2(px, c[k]) < dist2(px, c[best])) best = k;
+                    cr_assert_neq(best, 2, "view %zu yaw %d: a back shows at (%g, %g, %g)", i, yaw, q[0], q[1], q[2]);
+                    fronts += best == 1;
+                }
+            cr_assert_geq(fronts, 70, "view %zu yaw %d: the wall shows its front (%d of 81)", i, yaw, fronts);
+            cairo_surface_destroy(s);
+        }
+    }
+    free(fo);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
 }

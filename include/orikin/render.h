@@ -191,13 +191,15 @@ typedef struct ori_render_def {
     bool mark_failing;        ///< crease view: ring the interior vertices that are not locally flat-foldable (ori_flat_check_pattern)
     const void *texture_png;  ///< 3D view: PNG image (bytes) mapped on the front side by flat-sheet coordinates, or NULL
     size_t texture_size;      ///< its size in bytes
+    const int *face_orders;   ///< 3D view: the state's FOLD faceOrders, face_order_count triples (f, g, s): f lies on the side of g's normal (s = +1) or the other (s = −1); they order faces folded flat onto each other where a pair is listed (else stacking along the fold tree, docs/render.md); borrowed; NULL: none
+    int face_order_count;     ///< number of triples in face_orders
     double line_width_rel;    ///< line width as a fraction of the smaller image side, at least 0.75 image units but at most 1/12 of the mean edge length in the image (dense patterns)
     int internal_value;       ///< set by ori_default_render_def; do not change
 } ori_render_def;
 
 /// Defaults: crease view, PNG, 800 × 600, iso camera fitted, amber front (#e8a33d) and ivory
 /// back (#f3efe4) on white, shading on, no grid, labels off, failing vertices marked, no
-/// texture, line width 1/400 of the smaller side.
+/// texture, no faceOrders, line width 1/400 of the smaller side.
 ORI_API ori_render_def ori_default_render_def(void);
 
 /// The camera a 3D drawing of the state uses (def's camera, fitted when def->fit_camera).
@@ -205,7 +207,8 @@ ORI_API ori_render_def ori_default_render_def(void);
 ORI_API ori_status ori_render_camera(const ori_state_view *state, const ori_render_def *def, ori_camera *out,
                                      ori_error *error);
 /// Draw a state into memory (*data, *size: the whole file; free with ori_buffer_free). Fails
-/// with ORI_ERR_ARGUMENT for a size out of range or an unknown format, ORI_ERR_UNSUPPORTED for
+/// with ORI_ERR_ARGUMENT for a size out of range, an unknown format or faceOrders naming a face
+/// that does not exist (or with s not ±1), ORI_ERR_UNSUPPORTED for
 /// the crease view of a folded form, ORI_ERR_PARSE for a texture that is not a readable PNG,
 /// and as ori_mesh_create.
 ORI_API ori_status ori_render_image(const ori_state_view *state, const ori_render_def *def, void **data,

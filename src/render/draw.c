@@ -631,7 +631,7 @@ static void draw_3d(cairo_t *cr, const ori_mesh *m, const ori_render_def *def, c
         if (!(tx.fx1 > tx.fx0) || !(tx.fy1 > tx.fy0)) tx.surface = NULL;
     }
     ori__order o;
-    ori__order_build(m, cam, &o);
+    ori__order_build(m, cam, def->face_orders, def->face_order_count, &o);
     ori_v3 light = light_dir();
     for (int i = 0; i < o.piece_count; ++i) {
         const ori__piece *pc = &o.pieces[i];
@@ -718,6 +718,8 @@ ori_status ori__draw(cairo_t *cr, const ori_mesh *mesh, const ori_pattern *patte
                      const ori_v3 *scene_hi, ori_error *error)
 {
     if (def->view == ORI_RENDER_CREASES) return draw_creases(cr, pattern, def, error);
+    ori_status st = ori__face_orders_check(mesh, def->face_orders, def->face_order_count, error);
+    if (st != ORI_OK) return st;
     draw_3d(cr, mesh, def, camera, texture, scene_lo, scene_hi);
     return ORI_OK;
 }
@@ -787,7 +789,8 @@ ori_status ori_render_image(const ori_state_view *state, const ori_render_def *d
     if (def->view == ORI_RENDER_3D) {
         st = ori_mesh_create(state, &m, error);
         if (st != ORI_OK) return st;
-        st = ori__texture_load(def, &texture, error);
+        st = ori__face_orders_check(m, def->face_orders, def->face_order_count, error);
+        if (st == ORI_OK) st = ori__texture_load(def, &texture, error);
         if (st != ORI_OK) {
             ori_mesh_destroy(m);
             return st;

@@ -194,6 +194,7 @@ ori_status ori_mesh_create(const ori_state_view *state, ori_mesh **out, ori_erro
     m->face_tri_start = ori__calloc((size_t)nf + 1, sizeof *m->face_tri_start);
     m->tris = ori__calloc((size_t)total + 1, sizeof *m->tris);
     m->normal = ori__calloc((size_t)nf + 1, sizeof *m->normal);
+    m->fold_sign = ori__calloc((size_t)nf + 1, sizeof *m->fold_sign);
 
     ori_v2 *pts = ori__alloc(sizeof(ori_v2) * (size_t)largest);
     int *next = ori__alloc(sizeof(int) * (size_t)largest * 2);
@@ -211,6 +212,7 @@ ori_status ori_mesh_create(const ori_state_view *state, ori_mesh **out, ori_erro
             double area2 = 0.0;
             for (int k = 0; k < n; ++k) area2 += ori_v2_cross(ori_v2_make(m->ref[fv[k]].x, m->ref[fv[k]].y),
                                                             ori_v2_make(m->ref[fv[(k + 1) % n]].x, m->ref[fv[(k + 1) % n]].y));
+            m->fold_sign[f] = area2 < 0.0 ? -1 : 1;
             if (area2 < 0.0) {
                 for (int k = 0; k < n / 2; ++k) {
                     int t = fv[k];
@@ -221,6 +223,7 @@ ori_status ori_mesh_create(const ori_state_view *state, ori_mesh **out, ori_erro
             }
             for (int k = 0; k < n; ++k) pts[k] = ori_v2_make(m->ref[fv[k]].x, m->ref[fv[k]].y);
         } else {
+            m->fold_sign[f] = 1;
             project_face(m->ref, fv, n, pts);
         }
         m->face_tri_start[f] = tc;
@@ -265,6 +268,7 @@ void ori_mesh_destroy(ori_mesh *m)
     ori__free(m->face_tri_start);
     ori__free(m->tris);
     ori__free(m->normal);
+    ori__free(m->fold_sign);
     ori__free(m->edge_v);
     ori__free(m->edge_face);
     ori__free(m->assign);

@@ -9,7 +9,8 @@
 // 2. Two faces lying in one plane (folded flat onto each other) are ordered by stacking: walking
 //    the face graph from a root, crossing a crease folded flat puts the next face one layer to
 //    the front (valley) or back (mountain) of the current one. Exact for stacks made by a chain
-//    of folds; a true layer order is the layer solver's business.
+//    of folds. When the state has FOLD faceOrders (a folded form's own, or the layer solver's),
+//    the faces they link are ranked by them instead (transitively, a topological sort per stack).
 // 3. The face graph may have cycles (three faces overlapping like a pinwheel): its strongly
 //    connected components, and the faces that cross, become groups, merged until the graph of
 //    groups is acyclic, which is then sorted topologically (Kahn). A group of one face is drawn
@@ -132,6 +133,25 @@ static void stacking(const ori_mesh *m, ori_v3 *layer)
     ori__free(queue);
 }
 
+// --- FOLD faceOrders ---------------------------------------------------------------------------
+
+ori_status ori__face_orders_check(const ori_mesh *m, const int *fo, int count, ori_error *error)
+{
+    if (count < 0 || (count > 0 && !fo)) return ori__fail(error, ORI_ERR_ARGUMENT, "faceOrders: bad count %d", count);
+    for (int i = 0; i < count; ++i) {
+        int f = fo[3 * i], g = fo[3 * i + 1], sg = fo[3 * i + 2];
+        if (f < 0 || f >= m->face_count || g < 0 || g >= m->face_count)
+            return ori__fail_at(error, ORI_ERR_ARGUMENT, "faceOrders", i, "faceOrders[%d] = [%d, %d, %d]: no such face (%d faces)",
+                                i, f, g, sg, m->face_count);
+        if (f == g)
+            return ori__fail_at(error, ORI_ERR_ARGUMENT, "faceOrders", i, "faceOrders[%d] orders face %d against itself", i, f);
+        if (sg != 1 && sg != -1)
+            return ori__fail_at(error, ORI_ERR_ARGUMENT, "faceOrders", i, "faceOrders[%d]: the order must be +1 or -1, got %d", i,
+                                sg);
+    }
+    return ORI_OK;
+}
+
 // --- strongly connected components (iterative Tarjan) ----------------------------------------
 
 // comp[v] = component id of node v (components numbered in reverse topological order).
@@ -210,6 +230,89 @@ static void adjacency(int n, const edge_list *l, int **start, int **adj)
     ori__free(fill);
 }
 
+// faceOrders as a layer order: the faces they link (components of the pairs) share the normal n0
+// of the component's first face, and a linear extension of "f lies above g along n0" ranks
+// them (Kahn; faces of an inconsistent cycle come last, in index order). Two faces of one
+// component compare by rank, so unlisted pairs of a stack follow the listed ones transitively.
+typedef struct listed_layers {
+    int *comp;  // per face: component root, or -1 when faceOrders do not name it
+    int *rank;  // per face: position along up
+    ori_v3 *up; // per face: its component's n0
+} listed_layers;
+
+static void listed_build(const ori_mesh *m, const int *fo, int count, listed_layers *L)
+{
+    memset(L, 0, sizeof *L);
+    if (count <= 0) return;
+    int nf = m->face_count;
+    L->comp = ori__alloc(sizeof(int) * (size_t)(nf + 1));
+    L->rank = ori__calloc((size_t)nf + 1, sizeof(int));
+    L->up = ori__calloc((size_t)nf + 1, sizeof(ori_v3));
+    int *uf = ori__alloc(sizeof(int) * (size_t)(nf + 1));
+    bool *named = ori__calloc((size_t)nf + 1, sizeof(bool));
+    for (int f = 0; f < nf; ++f) uf[f] = f;
+    for (int i = 0; i < count; ++i) {
+        int f = fo[3 * i], g = fo[3 * i + 1];
+        named[f] = named[g] = true;
+        int rf = ori__uf_root(uf, f), rg = ori__uf_root(uf, g);
+        if (rf != rg) uf[rf < rg ? rg : rf] = rf < rg ? rf : rg;
+    }
+    for (int f = 0; f < nf; ++f) {
+        L->comp[f] = named[f] ? ori__uf_root(uf, f) : -1;
+        if (named[f]) L->up[f] = ori_v3_scale(m->normal[L->comp[f]], (double)m->fold_sign[L->comp[f]]);
+    }
+    edge_list el = {NULL, 0, 0};
+    for (int i = 0; i < count; ++i) {
+        int f = fo[3 * i], g = fo[3 * i + 1];
+        double up = (double)fo[3 * i + 2] * m->fold_sign[g] * ori_v3_dot(m->normal[g], L->up[g]);
+        if (up > 0.0) edge_push(&el, g, f); // f above g along n0: g first
+        else if (up < 0.0) edge_push(&el, f, g);
+    }
+    int *st, *adj;
+    adjacency(nf, &el, &st, &adj);
+    int *indeg = ori__calloc((size_t)nf + 1, sizeof(int));
+    for (int i = 0; i < nf; ++i)
+        for (int k = st[i]; k < st[i + 1]; ++k) indeg[adj[k]]++;
+    int *queue = ori__alloc(sizeof(int) * (size_t)(nf + 1));
+    int head = 0, tail = 0;
+    for (int i = 0; i < nf; ++i)
+        if (indeg[i] == 0) queue[tail++] = i;
+    while (head < tail) {
+        int g = queue[head++];
+        for (int k = st[g]; k < st[g + 1]; ++k)
+            if (--indeg[adj[k]] == 0) queue[tail++] = adj[k];
+    }
+    for (int i = 0; i < nf; ++i) L->rank[i] = -1;
+    for (int i = 0; i < tail; ++i) L->rank[queue[i]] = i;
+    for (int i = 0, next = tail; i < nf; ++i)
+        if (L->rank[i] < 0) L->rank[i] = next++;
+    ori__free(indeg);
+    ori__free(queue);
+    ori__free(st);
+    ori__free(adj);
+    ori__free(el.e);
+    ori__free(uf);
+    ori__free(named);
+}
+
+static void listed_free(listed_layers *L)
+{
+    ori__free(L->comp);
+    ori__free(L->rank);
+    ori__free(L->up);
+}
+
+// The order faceOrders give faces a and b as seen from the eye: -1 when a is farther (drawn
+// first), +1 when a is nearer, 0 when they do not order the two (or the stack is seen edge-on).
+static int listed_order(const listed_layers *L, ori_v3 toward_eye, int a, int b)
+{
+    if (!L || !L->comp || L->comp[a] < 0 || L->comp[a] != L->comp[b]) return 0;
+    double d = ori_v3_dot(L->up[a], toward_eye);
+    if (d == 0.0) return 0;
+    double ha = L->rank[a] * d, hb = L->rank[b] * d;
+    return ha < hb ? -1 : ha > hb ? 1 : 0;
+}
+
 // --- BSP of a group's triangles -----------------------------------------------------------
 
 typedef struct bsp_poly {
@@ -223,6 +326,7 @@ typedef struct bsp_ctx {
     const ori_mesh *m;
     const ori_camera *cam;
     const ori_v3 *layer;
+    const listed_layers *listed; // faceOrders' layer order
     ori_v3 toward_eye_world; // orthographic: the view's back axis in world coordinates
     double tol;
     bsp_poly *out;
@@ -296,6 +400,10 @@ static double stack_height(const bsp_ctx *c, int face) { return ori_v3_dot(c->la
 
 static int cmp_height_ctx_sort(const bsp_ctx *c, const bsp_poly *a, const bsp_poly *b)
 {
+    if (a->face != b->face) {
+        int listed = listed_order(c->listed, c->toward_eye_world, a->face, b->face);
+        if (listed) return listed;
+    }
     double ha = stack_height(c, a->face), hb = stack_height(c, b->face);
     if (ha != hb) return ha < hb ? -1 : 1;
     return a->face - b->face;
@@ -379,7 +487,8 @@ static ori_v3 view_to_image(const ori_camera *c, ori_v3 v)
     return ori_v3_make(c->cx + c->scale * v.x, c->cy - c->scale * v.y, -v.z);
 }
 
-void ori__order_build(const ori_mesh *m, const ori_camera *cam, ori__order *o)
+void ori__order_build(const ori_mesh *m, const ori_camera *cam, const int *face_orders, int face_order_count,
+                      ori__order *o)
 {
     memset(o, 0, sizeof *o);
     int nt = m->tri_count, nf = m->face_count;
@@ -426,6 +535,8 @@ void ori__order_build(const ori_mesh *m, const ori_camera *cam, ori__order *o)
     stacking(m, layer);
     // The direction towards the eye (world), for comparing layers.
     ori_v3 toward_eye = ori_v3_make(cam->rotation.m[2][0], cam->rotation.m[2][1], cam->rotation.m[2][2]);
+    listed_layers listed;
+    listed_build(m, face_orders, face_order_count, &listed);
 
     // Union-find of faces that must be split together.
     int *group = ori__alloc(sizeof(int) * (size_t)(nf + 1));
@@ -504,7 +615,17 @@ void ori__order_build(const ori_mesh *m, const ori_camera *cam, ori__order *o)
                     if (dq > tol_depth) edge_push(&edges, fa, fb);       // A farther: A first
                     else if (dq < -tol_depth) edge_push(&edges, fb, fa); // B farther
                     else {
-                        // One plane: the lower layer (as seen from the eye) first.
+                        // One plane: faceOrders when they order the pair, else the lower layer (as
+                        // seen from the eye) first.
+                        int by_orders = listed_order(&listed, toward_eye, fa, fb);
+                        if (by_orders < 0) {
+                            edge_push(&edges, fa, fb);
+                            continue;
+                        }
+                        if (by_orders > 0) {
+                            edge_push(&edges, fb, fa);
+                            continue;
+                        }
                         double ha = ori_v3_dot(layer[fa], toward_eye), hb = ori_v3_dot(layer[fb], toward_eye);
                         if (ha < hb || (ha == hb && fa < fb)) edge_push(&edges, fa, fb);
                         else edge_push(&edges, fb, fa);
@@ -606,6 +727,7 @@ void ori__order_build(const ori_mesh *m, const ori_camera *cam, ori__order *o)
     bc.cam = cam;
     bc.layer = layer;
     bc.toward_eye_world = toward_eye;
+    bc.listed = &listed;
     bc.tol = ORI_TOL_RENDER_PLANE_REL * diag;
     for (int g = 0; g < ngroups; ++g) {
         int n = gsize[g + 1] - gsize[g];
@@ -677,6 +799,7 @@ void ori__order_build(const ori_mesh *m, const ori_camera *cam, ori__order *o)
     ori__free(group);
     ori__free(edges.e);
     ori__free(layer);
+    listed_free(&listed);
     ori__free(ti);
     ori__free(img);
 }

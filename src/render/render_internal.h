@@ -21,6 +21,8 @@ struct ori_mesh {
     int *face_tri_start;     // face_count + 1 offsets into tris
     ori_mesh_triangle *tris; // grouped by face
     ori_v3 *normal;          // unit front normal per face, current pose
+    signed char *fold_sign;  // per face: +1 when face_verts keeps the FOLD faces_vertices order, −1 when
+                             // reversed (a flat face listed clockwise); FOLD's normal is fold_sign · normal
     int (*edge_v)[2];        // edge endpoints
     int (*edge_face)[2];     // face on the left / right of v0 → v1, or -1
     ori_assignment *assign;  // edge assignments
@@ -76,8 +78,14 @@ typedef struct ori__order {
 } ori__order;
 // Sort the faces of a posed mesh back to front for camera: overlapping faces in the image
 // are compared where they overlap; cycles and intersecting faces are split by a BSP of their
-// triangles; faces folded flat onto each other are stacked along the fold tree.
-void ori__order_build(const ori_mesh *m, const ori_camera *camera, ori__order *out);
+// triangles; faces folded flat onto each other are ordered by face_orders (FOLD faceOrders,
+// face_order_count triples (f, g, s); may be NULL) where a pair is listed, else stacked along
+// the fold tree. face_orders must have passed ori__face_orders_check.
+void ori__order_build(const ori_mesh *m, const ori_camera *camera, const int *face_orders, int face_order_count,
+                      ori__order *out);
+// Check FOLD faceOrders against a mesh: faces in range and distinct, s = ±1 (ORI_ERR_ARGUMENT
+// naming the triple, field "faceOrders").
+ori_status ori__face_orders_check(const ori_mesh *m, const int *face_orders, int face_order_count, ori_error *error);
 void ori__order_free(ori__order *o);
 
 // --- drawing (draw.c) ----------------------------------------------------------------------
