@@ -70,12 +70,7 @@ void studio_api_frames(studio *s, const studio_request *req, studio_response *ou
     }
     int first = frames > 1 && !ori_pattern_is_folded_form(p0) && !ori_pattern_is_3d(p0) ? 1 : 0;
     ori_pattern_destroy(p0);
-    int n = frames - first;
-    if (n < 2) {
-        pthread_mutex_unlock(&s->lock);
-        studio_fail(out, 409, "the document holds one state: nothing to replay (a FOLD file with several frames is needed)");
-        return;
-    }
+    int n = frames - first; // 1: one state, nothing to replay (the page then keeps its timeline)
     double *times = malloc(sizeof(double) * (size_t)n);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)n * (size_t)V + 1);
     for (int i = 0; i < n; ++i) {

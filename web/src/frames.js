@@ -74,11 +74,8 @@ export class FrameReplay {
     this.stop();
     this.frames = null;
     if (!(frameCount >= 2)) return;
-    try {
-      this.frames = decodeFrames(await this.api.binary('frames', { binary: 1 }));
-    } catch (e) {
-      if (e.status !== 409) throw e; // 409: one state only (a crease pattern and one frame)
-    }
+    const fr = decodeFrames(await this.api.binary('frames', { binary: 1 }));
+    if (fr.count >= 2) this.frames = fr; // else one state (a crease pattern and one frame)
   }
 
   get duration() { return this.frames ? this.frames.times[this.frames.count - 1] - this.frames.times[0] : 0; }
