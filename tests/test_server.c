@@ -620,7 +620,8 @@ Test(server, frames_replay_a_simulation_output)
     json_decref(file);
 }
 
-// Frames without frame_time are one unit apart; a document of one state is that state alone.
+// Frames without frame_time are one unit apart; orikin sequence's frames are timed by orikin:time
+// (folds); a document of one state is that state alone.
 Test(server, frames_without_times_and_a_single_state)
 {
     cr_assert_eq(chdir(ORI_SOURCE_DIR), 0);
@@ -636,6 +637,26 @@ Test(server, frames_without_times_and_a_single_state)
     cr_assert_str_eq(json_string_value(json_object_get(j, "unit")), "frame");
     for (size_t i = 0; i < 3; ++i) cr_assert_eq(json_number_value(json_array_get(json_object_get(j, "times"), i)), (double)i);
     json_decref(j);
+    studio_destroy(s);
+    // orikin sequence -o: its frames' orikin:time (sequence time, folds)
+    char args[700], *cli_out = NULL;
+    snprintf(path, sizeof path, "%s/seq.fold", dir);
+    snprintf(args, sizeof args, "sequence %s -o %s", OPEN_CORNER_SEQ, path);
+    cr_assert_eq(test_run_cli(args, &cli_out), 0, "%s", cli_out);
+    free(cli_out);
+    json_t *seq = load_fold_json(path);
+    json_t *sf = json_object_get(seq, "file_frames");
+    s = open_studio(path);
+    j = call_json(s, "GET", "/api/frames", NULL, NULL, 200);
+    cr_assert_str_eq(json_string_value(json_object_get(j, "unit")), "fold");
+    cr_assert_eq(json_integer_value(json_object_get(j, "first_frame")), 1);
+    json_t *st = json_object_get(j, "times");
+    cr_assert_eq(json_array_size(st), json_array_size(sf));
+    for (size_t i = 0; i < json_array_size(sf); ++i)
+        cr_assert_eq(json_number_value(json_array_get(st, i)), json_number_value(json_object_get(json_array_get(sf, i), "orikin:time")));
+    cr_assert_eq(json_number_value(json_array_get(st, json_array_size(st) - 1)), 2.0);
+    json_decref(j);
+    json_decref(seq);
     studio_destroy(s);
     test_tmpdir_remove(dir);
     json_decref(file);
