@@ -558,6 +558,116 @@ static json_t *load_fold_json(const char *path)
     return j;
 }
 
+// --- replaying a multi-frame document (GET /api/frames) ----------------------------------------
+
+#define REPLAY_FLAP "tests/data/replay-flap-3.fold"
+
+static double le_f64(const char *p)
+{
+    uint64_t u = 0;
+    for (int b = 0; b < 8; ++b) u |= (uint64_t)(unsigned char)p[b] << (8 * b);
+    double x;
+    memcpy(&x, &u, 8);
+    return x;
+}
+
+// orikin simulate -o wrote a crease pattern and three states with frame_time (seconds): the
+// replay is those three states, their times and coordinates the file's (1e-12), in JSON and in
+// the binary form the page reads.
+Test(server, frames_replay_a_simulation_output)
+{
+    cr_assert_eq(chdir(ORI_SOURCE_DIR), 0);
+    json_t *file = load_fold_json(REPLAY_FLAP);
+    json_t *ff = json_object_get(file, "file_frames");
+    cr_assert_eq(json_array_size(ff), 3);
+    studio *s = open_studio(REPLAY_FLAP);
+    json_t *j = call_json(s, "GET", "/api/frames", NULL, NULL, 200);
+    cr_assert_str_eq(json_string_value(json_object_get(j, "unit")), "s");
+    cr_assert_eq(json_integer_value(json_object_get(j, "first_frame")), 1);
+    json_t *times = json_object_get(j, "times"), *coords = json_object_get(j, "vertices_coords");
+    cr_assert_eq(json_array_size(times), 3);
+    cr_assert_eq(json_array_size(coords), 3);
+    int V = (int)json_integer_value(json_object_get(j, "vertex_count"));
+    cr_assert_eq(V, (int)json_array_size(json_object_get(file, "vertices_coords")));
+    studio_response r = call(s, "GET", "/api/frames", "binary=1", NULL);
+    cr_assert_eq(r.status, 200);
+    cr_assert_str_eq(r.content_type, "application/octet-stream");
+    cr_assert_eq(r.size, 8 * (size_t)(8 + 3 + 3 * 3 * V));
+    cr_assert_eq(le_f64(r.body), 3.0);
+    cr_assert_eq(le_f64(r.body + 8), (double)V);
+    cr_assert_eq(le_f64(r.body + 16), 1.0); // seconds
+    for (size_t i = 0; i < 3; ++i) {
+        json_t *fr = json_array_get(ff, i);
+        double want_t = json_number_value(json_object_get(fr, "frame_time"));
+        cr_assert(fabs(json_number_value(json_array_get(times, i)) - want_t) <= 1e-12);
+        cr_assert(fabs(le_f64(r.body + 8 * (8 + i)) - want_t) <= 1e-12);
+        json_t *vc = json_object_get(fr, "vertices_coords");
+        cr_assert_eq((int)json_array_size(vc), V);
+        for (int v = 0; v < V; ++v)
+            for (int c = 0; c < 3; ++c) {
+                json_t *p = json_array_get(json_array_get(vc, (size_t)v), (size_t)c);
+                double want = p ? json_number_value(p) : 0.0; // a 2D coordinate has z = 0
+                double got = json_number_value(json_array_get(json_array_get(json_array_get(coords, i), (size_t)v), (size_t)c));
+                cr_assert(fabs(got - want) <= 1e-12, "frame %zu vertex %d: %.17g, file %.17g", i + 1, v, got, want);
+                double bin = le_f64(r.body + 8 * (8 + 3 + (i * (size_t)V + (size_t)v) * 3 + (size_t)c));
+                cr_assert(fabs(bin - want) <= 1e-12);
+            }
+    }
+    cr_assert_eq(json_number_value(json_array_get(times, 2)), 0.006);
+    studio_response_free(&r);
+    json_decref(j);
+    studio_destroy(s);
+    json_decref(file);
+}
+
+// Frames without frame_time are one unit apart; orikin sequence's frames are timed by orikin:time
+// (folds); a document of one state is that state alone.
+Test(server, frames_without_times_and_a_single_state)
+{
+    cr_assert_eq(chdir(ORI_SOURCE_DIR), 0);
+    json_t *file = load_fold_json(REPLAY_FLAP);
+    json_t *ff = json_object_get(file, "file_frames");
+    for (size_t i = 0; i < json_array_size(ff); ++i) json_object_del(json_array_get(ff, i), "frame_time");
+    char *dir = test_tmpdir();
+    char path[512];
+    snprintf(path, sizeof path, "%s/untimed.fold", dir);
+    cr_assert_eq(json_dump_file(file, path, JSON_REAL_PRECISION(17)), 0);
+    studio *s = open_studio(path);
+    json_t *j = call_json(s, "GET", "/api/frames", NULL, NULL, 200);
+    cr_assert_str_eq(json_string_value(json_object_get(j, "unit")), "frame");
+    for (size_t i = 0; i < 3; ++i) cr_assert_eq(json_number_value(json_array_get(json_object_get(j, "times"), i)), (double)i);
+    json_decref(j);
+    studio_destroy(s);
+    // orikin sequence -o: its frames' orikin:time (sequence time, folds)
+    char args[700], *cli_out = NULL;
+    snprintf(path, sizeof path, "%s/seq.fold", dir);
+    snprintf(args, sizeof args, "sequence %s -o %s", OPEN_CORNER_SEQ, path);
+    cr_assert_eq(test_run_cli(args, &cli_out), 0, "%s", cli_out);
+    free(cli_out);
+    json_t *seq = load_fold_json(path);
+    json_t *sf = json_object_get(seq, "file_frames");
+    s = open_studio(path);
+    j = call_json(s, "GET", "/api/frames", NULL, NULL, 200);
+    cr_assert_str_eq(json_string_value(json_object_get(j, "unit")), "fold");
+    cr_assert_eq(json_integer_value(json_object_get(j, "first_frame")), 1);
+    json_t *st = json_object_get(j, "times");
+    cr_assert_eq(json_array_size(st), json_array_size(sf));
+    for (size_t i = 0; i < json_array_size(sf); ++i)
+        cr_assert_eq(json_number_value(json_array_get(st, i)), json_number_value(json_object_get(json_array_get(sf, i), "orikin:time")));
+    cr_assert_eq(json_number_value(json_array_get(st, json_array_size(st) - 1)), 2.0);
+    json_decref(j);
+    json_decref(seq);
+    studio_destroy(s);
+    test_tmpdir_remove(dir);
+    json_decref(file);
+    s = open_studio(OPEN_CORNER);
+    j = call_json(s, "GET", "/api/frames", NULL, NULL, 200);
+    cr_assert_eq(json_array_size(json_object_get(j, "times")), 1);
+    cr_assert_str_eq(json_string_value(json_object_get(j, "unit")), "frame");
+    json_decref(j);
+    studio_destroy(s);
+}
+
 // The open corner built as examples/open-corner.sh builds it, through the API.
 Test(server, builds_the_open_corner)
 {

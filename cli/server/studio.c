@@ -926,6 +926,7 @@ static const route routes[] = {
     {"GET", "/api/sequence", studio_api_sequence_get},
     {"GET", "/api/sequence/at", studio_api_sequence_at},
     {"GET", "/api/contact", studio_api_contact},
+    {"GET", "/api/frames", studio_api_frames},
     {"POST", "/api/collide", studio_api_collide},
     {"POST", "/api/regularize", studio_api_regularize},
     {"POST", "/api/actuate", api_actuate},

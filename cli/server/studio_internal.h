@@ -216,6 +216,8 @@ void studio_api_progress(studio *s, const studio_request *req, studio_response *
 void studio_api_contact(studio *s, const studio_request *req, studio_response *out);
 void studio_api_collide(studio *s, const studio_request *req, studio_response *out);
 void studio_api_regularize(studio *s, const studio_request *req, studio_response *out);
+// GET /api/frames (studio_frames.c): a multi-frame document's states, times and vertex coordinates.
+void studio_api_frames(studio *s, const studio_request *req, studio_response *out);
 
 // How a motion is checked for self-collision (as the CLI's --no-collisions and --clearance D).
 typedef struct studio_collide_opts {

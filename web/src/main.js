@@ -2,6 +2,7 @@
 // comes from the server (liborikin); the page draws, picks and keeps the user's choices (the
 // tool, the fold specification, the folds of the sequence, the time T).
 import { Api, ApiError, decodeState } from './api.js';
+import { FrameReplay } from './frames.js';
 import { ASSIGNMENT_NAMES, faceLabel, fmt, isCrease, parseDocument } from './document.js';
 import { Plot } from './plot.js';
 import { View2D } from './view2d.js';
@@ -98,7 +99,9 @@ async function refresh(force = false) {
     const changed = state.version !== -1;
     state.version = session.version;
     const fold = JSON.parse(await api.text('document'));
-    loadDocument(parseDocument(fold), changed);
+    const doc = parseDocument(fold);
+    await replay.load(doc.frames);
+    loadDocument(doc, changed);
     await Promise.all([runCheck(), maybeDof()]);
   }
   state.grid = session.sequence ? session.sequence.grid : 0;
@@ -675,6 +678,7 @@ function shownStateRef() {
   if (state.shown === 'fold') return { k: state.foldK };
   if (state.shown === 'sequence' && state.shownT !== null) return { t: state.shownT };
   if (state.shown === 'contact') return { contact: state.contactOf };
+  if (state.shown === 'frames') return replay.stateRef();
   return { frame: 0 };
 }
 
@@ -877,6 +881,7 @@ function setupTimeline() {
   renderFolds();
   // the folds are kept when the pattern changes; their record is not (its indices may be stale)
   $('run-seq').hidden = !!r || state.folds.length === 0;
+  if (replay.setup(!r)) return;
   if (!r) {
     $('t-label').textContent = 'no sequence: specify a fold above and add it';
     $('t-value').value = '0';
@@ -942,7 +947,7 @@ async function addFold() {
 }
 
 function togglePlay() {
-  if (!state.sequence) return;
+  if (!state.sequence) return replay.togglePlay();
   state.playing = !state.playing;
   $('play').textContent = state.playing ? '❚❚' : '▶';
   if (!state.playing) return;
@@ -1098,6 +1103,8 @@ async function openFileNow(file) {
 // --- start ---------------------------------------------------------------------------------------
 
 let v2, v3, plot;
+// the document's frames replayed as a motion while no sequence holds the timeline (frames.js)
+let replay = null;
 
 function token() {
   const q = new URLSearchParams(location.search).get('token');
@@ -1165,8 +1172,9 @@ function wire() {
   $('add-fold').onclick = addFold;
   $('run-seq').onclick = () => action(() => runSequence(state.folds, 'sequence'));
   $('play').onclick = togglePlay;
-  $('t-slider').oninput = (ev) => showTime(+ev.target.value / sliderSteps());
+  $('t-slider').oninput = (ev) => (replay.on ? replay.slide(+ev.target.value) : showTime(+ev.target.value / sliderSteps()));
   $('t-value').onchange = (ev) => {
+    if (replay.on) { replay.stop(); if (isFinite(+ev.target.value)) replay.show(+ev.target.value); return; }
     const t = Math.min(Math.max(+ev.target.value, 0), lastCleanT());
     if (isFinite(t)) showTime(t);
   };
@@ -1218,6 +1226,12 @@ async function start() {
     return;
   }
   api = new Api(tok, progress);
+  replay = new FrameReplay(api, $, { show: (pos, label) => {
+    v3.setPositions(pos);
+    if (state.shown === 'contact') clearCollision();
+    state.shown = 'frames';
+    $('state3d').textContent = label;
+  } });
   await action(async () => {
     await refresh(true);
     renderExportMenu();
@@ -1247,6 +1261,7 @@ window.studio = {
   ready: false,
   positions: () => (v3 && v3.positions ? Array.from(v3.positions) : []),
   shownT: () => state.shownT,
+  replayT: () => (replay && replay.shown ? replay.shown.t : null),
   shown: () => state.shown,
   version: () => state.version,
   lastError: () => state.lastError,
