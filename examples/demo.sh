@@ -147,3 +147,5 @@ echo
 echo "Open the studio on the open corner (author, check, fold and scrub the sequence in your browser;"
 echo "Ctrl-C stops it):"
 echo "    $ORIKIN view examples/open-corner.seq.json"
+echo "or on the simulated flap, whose frames it plays in real time (seconds):"
+echo "    $ORIKIN view $OUT/thesis-flap-folding.fold"
