@@ -22,6 +22,8 @@
 typedef struct cli_collision {
     bool checked;            // the motion was checked (not --no-collisions)
     ori_collision_event ev;  // ev.collides: frames 0 … ev.frame − 1 are clean
+    bool progress;           // ev.drive_rad is the progress (0 … 1) of a fold toward the targets or of
+                             // several drives: "progress" replaces "drive_deg"
 } cli_collision;
 
 // Check a solved fold (def as solved) with a collider of its flat pattern: *out filled (checked)
@@ -37,7 +39,8 @@ ori_status cli_collision_check_record(ori_collider *c, const ori_record *r, ori_
 bool cli_collides(const cli_collision *c);
 // Number of frames to show and write: all of them, or those before the first collision.
 int cli_collide_frames(const cli_collision *c, int frames);
-// {"fold": k (1-based, with_fold only), "step": s, "drive_deg": x, "faces": [f, g], "point": [x, y, z]}
+// {"fold": k (1-based, with_fold only), "step": s, "drive_deg": x (or "progress": p), "faces": [f, g],
+// "point": [x, y, z]}
 // or null when clean or unchecked.
 json_t *cli_collision_json(const cli_collision *c, bool with_fold);
 // One line: "faces 3 and 9 penetrate at step 14, drive 131.810315 deg, at (x, y, z)".

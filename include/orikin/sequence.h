@@ -83,6 +83,9 @@ ORI_API void ori_record_destroy(ori_record *record);
 
 /// Number of folds in the sequence.
 ORI_API int ori_record_fold_count(const ori_record *record);
+/// True when fold `fold` (0-based) is a fold toward the targets ("percent"): its frames' drive is
+/// then the progress (0 … 1), not an angle.
+ORI_API bool ori_record_fold_is_targets(const ori_record *record, int fold);
 /// Folds that completed validly (all of them when the sequence is valid).
 ORI_API int ori_record_completed_folds(const ori_record *record);
 /// ORI_MOTION_VALID when every fold completed, else the verdict of the first failing fold.

@@ -473,6 +473,11 @@ void ori_record_destroy(ori_record *r)
 }
 
 int ori_record_fold_count(const ori_record *r) { ORI_ASSERT(r); return r->fold_count; }
+bool ori_record_fold_is_targets(const ori_record *r, int fold)
+{
+    ORI_ASSERT(r && fold >= 0 && fold < r->fold_count);
+    return r->folds[fold].targets;
+}
 int ori_record_completed_folds(const ori_record *r) { ORI_ASSERT(r); return r->completed; }
 ori_motion_verdict ori_record_verdict(const ori_record *r) { ORI_ASSERT(r); return r->verdict; }
 const char *ori_record_reason(const ori_record *r) { ORI_ASSERT(r); return r->reason; }
