@@ -9,7 +9,6 @@
 #include <string.h>
 
 #define MODES_MAX_LIST 256
-#define MODES_LOCK_EXAMPLE 12 // creases named in a lock suggestion
 // Kawasaki misses below this (radians) look like rounded coordinates (as in cmd_fold.c).
 #define MODES_NEAR_KAWASAKI_RAD 1e-3
 // A crease within this of its goal counts as at its goal in the text summary (radians).
@@ -160,30 +159,9 @@ static json_t *int_array(const int *v, int n)
     return a;
 }
 
-// "e.g. --lock a,b,c,..." text of a lock set.
-static void lock_text(const int *locks, int n, char *buf, size_t size)
-{
-    int w = snprintf(buf, size, "lock %d more crease%s, e.g. --lock ", n, n == 1 ? "" : "s");
-    for (int i = 0; i < n && i < MODES_LOCK_EXAMPLE && w > 0 && (size_t)w < size; ++i)
-        w += snprintf(buf + w, size - (size_t)w, "%s%d", i ? "," : "", locks[i]);
-    if (n > MODES_LOCK_EXAMPLE && w > 0 && (size_t)w < size) snprintf(buf + w, size - (size_t)w, ",...");
-    if (w > 0 && (size_t)w < size) snprintf(buf + w, size - (size_t)w, " (or --lock auto)");
-}
-
 int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *buf, size_t size, json_t **locks)
 {
-    buf[0] = '\0';
-    int cap = ori_mechanism_edge_count(k->mech) + 1;
-    int *out = malloc(sizeof(int) * (size_t)cap);
-    ori_error err;
-    int n = ori_mechanism_lock_set(k->mech, def->start_angles_rad, &def->driven_edge, 1, def->locked_edges,
-                                   def->locked_count, NULL, out, cap, &err);
-    if (n > 0) {
-        lock_text(out, n, buf, size);
-        if (locks) *locks = int_array(out, n);
-    }
-    free(out);
-    return n;
+    return cli_lock_hint(k->mech, def, buf, size, locks);
 }
 
 typedef struct modes_run {
@@ -542,7 +520,7 @@ static int solve(modes_run *r)
         int *sugg = malloc(sizeof(int) * (size_t)(E + 1));
         int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, sugg,
                                        E + 1, &err);
-        if (n > 0) lock_text(sugg, n, r->hint, sizeof r->hint);
+        if (n > 0) cli_lock_text(sugg, n, r->hint, sizeof r->hint);
         free(sugg);
     }
     return CLI_EXIT_OK;
