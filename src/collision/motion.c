@@ -675,6 +675,8 @@ static ori_status motion_solve(void *user, double x, ori_v3 *pos, double *drive,
 {
     motion_src *ms = user;
     ori_motion_def d = *ms->def;
+    d.progress = NULL; // the fold's own progress: not for the trial states
+    d.progress_user = NULL;
     double from = ms->lo_angles[d.driven_edge];
     d.start_angles_rad = ms->lo_angles;
     d.has_from = false;
