@@ -1152,6 +1152,10 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         mo->verdict = ORI_MOTION_VALID;
     }
 
+    // The solver (its CHOLMOD factor) is done: freed before the DOF's own factorization, so that
+    // one factor less is alive at the peak of a large fold.
+    ori__kin_solver_destroy(c.solver);
+    c.solver = NULL;
     // Free-mechanism DOF at the last frame.
     if (mo->nframes > 0) {
         double *ang = mo->angles + (size_t)(mo->nframes - 1) * (size_t)(m->edge_count + 1);
@@ -1180,7 +1184,6 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         }
         ori__free(pos);
     }
-    ori__kin_solver_destroy(c.solver);
     ori__free(c.col);
     ori__free(c.th);
     ori__free(c.worst);
