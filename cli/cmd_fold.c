@@ -303,7 +303,14 @@ static int run(int argc, char **argv)
     }
     ori_motion *mo = NULL;
     ori_error err;
+    cli_progress bar; // the solve may run for minutes on a large sheet
+    cli_progress_begin(&bar, "fold", "solving");
+    def.progress = cli_progress_fn;
+    def.progress_user = &bar;
     ori_status st = ori_motion_solve(k.mech, &def, &mo, &err);
+    cli_progress_end(&bar);
+    def.progress = NULL; // the collision check re-solves states between steps: no bar of its own
+    def.progress_user = NULL;
     if (st != ORI_OK) {
         rc = cli_input_error("fold", a.path, &err);
         if (st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL) rc = CLI_EXIT_INTERNAL;

@@ -7,6 +7,7 @@
 
 #include "collide_args.h"
 #include "kin_args.h"
+#include "progress.h"
 
 #define MAX_COLUMNS 10
 
@@ -290,8 +291,13 @@ static int run(int argc, char **argv)
         rc = cli_kin_fixed_pose("sequence", pattern, &k, first.fixed_face, &pose);
     }
     ori_record *r = NULL;
-    if (rc == CLI_EXIT_OK && ori_sequence_run(s, k.mech, k.angles, pose, &r, &err) != ORI_OK)
-        rc = cli_input_error("sequence", a.path, &err);
+    if (rc == CLI_EXIT_OK) {
+        cli_progress bar;
+        cli_progress_begin(&bar, "sequence", "solving");
+        ori_status st = ori_sequence_run_progress(s, k.mech, k.angles, pose, cli_progress_fn, &bar, &r, &err);
+        cli_progress_end(&bar);
+        if (st != ORI_OK) rc = cli_input_error("sequence", a.path, &err);
+    }
     cli_collision col;
     memset(&col, 0, sizeof col);
     if (rc == CLI_EXIT_OK) rc = cli_collide_record("sequence", a.path, &co, k.flat, r, &col);

@@ -97,3 +97,25 @@ int cli_collide_record(const char *cmd, const char *path, const cli_collide_opts
     ori_collider_destroy(c);
     return st == ORI_OK ? CLI_EXIT_OK : check_failed(cmd, path, &err);
 }
+
+int cli_collide_multifold(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
+                          const ori_multifold *mf, const int *locked, int locked_count, cli_collision *out)
+{
+    memset(out, 0, sizeof *out);
+    if (o->skip) return CLI_EXIT_OK;
+    ori_collider *c = NULL;
+    int rc = make_collider(cmd, path, o, flat, &c);
+    if (rc != CLI_EXIT_OK) return rc;
+    cli_progress bar;
+    cli_progress_begin(&bar, cmd, "checking collisions");
+    ori_collision_motion_def cd = ori_default_collision_motion_def();
+    cd.progress = cli_progress_fn;
+    cd.progress_user = &bar;
+    ori_error err;
+    ori_status st = ori_collision_check_multifold(c, mf, locked, locked_count, &cd, &out->ev, &err);
+    out->checked = st == ORI_OK;
+    out->progress = true;
+    cli_progress_end(&bar);
+    ori_collider_destroy(c);
+    return st == ORI_OK ? CLI_EXIT_OK : check_failed(cmd, path, &err);
+}

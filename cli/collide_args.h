@@ -32,6 +32,11 @@ int cli_collide_motion(const char *cmd, const char *path, const cli_collide_opts
 int cli_collide_record(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
                        const ori_record *r, cli_collision *out);
 
+// Same for a fold with several degrees of freedom (fold_modes.c), with the creases it locked:
+// the event's drive_rad is the progress (0 … 1) at first contact.
+int cli_collide_multifold(const char *cmd, const char *path, const cli_collide_opts *o, const ori_pattern *flat,
+                          const ori_multifold *mf, const int *locked, int locked_count, cli_collision *out);
+
 // cli_collision, cli_collides, cli_collide_frames, cli_collision_json and cli_collision_describe
 // are in report.h (shared with the studio's server).
 

@@ -2,12 +2,13 @@
 // several drives, an automatic lock set and symmetry. See fold_modes.h.
 #include "fold_modes.h"
 
+#include "collide_args.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define MODES_MAX_LIST 256
-#define MODES_LOCK_EXAMPLE 12 // creases named in a lock suggestion
 // Kawasaki misses below this (radians) look like rounded coordinates (as in cmd_fold.c).
 #define MODES_NEAR_KAWASAKI_RAD 1e-3
 // A crease within this of its goal counts as at its goal in the text summary (radians).
@@ -159,30 +160,9 @@ static json_t *int_array(const int *v, int n)
     return a;
 }
 
-// "e.g. --lock a,b,c,..." text of a lock set.
-static void lock_text(const int *locks, int n, char *buf, size_t size)
-{
-    int w = snprintf(buf, size, "lock %d more crease%s, e.g. --lock ", n, n == 1 ? "" : "s");
-    for (int i = 0; i < n && i < MODES_LOCK_EXAMPLE && w > 0 && (size_t)w < size; ++i)
-        w += snprintf(buf + w, size - (size_t)w, "%s%d", i ? "," : "", locks[i]);
-    if (n > MODES_LOCK_EXAMPLE && w > 0 && (size_t)w < size) snprintf(buf + w, size - (size_t)w, ",...");
-    if (w > 0 && (size_t)w < size) snprintf(buf + w, size - (size_t)w, " (or --lock auto)");
-}
-
 int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *buf, size_t size, json_t **locks)
 {
-    buf[0] = '\0';
-    int cap = ori_mechanism_edge_count(k->mech) + 1;
-    int *out = malloc(sizeof(int) * (size_t)cap);
-    ori_error err;
-    int n = ori_mechanism_lock_set(k->mech, def->start_angles_rad, &def->driven_edge, 1, def->locked_edges,
-                                   def->locked_count, NULL, out, cap, &err);
-    if (n > 0) {
-        lock_text(out, n, buf, size);
-        if (locks) *locks = int_array(out, n);
-    }
-    free(out);
-    return n;
+    return cli_lock_hint(k->mech, def, buf, size, locks);
 }
 
 typedef struct modes_run {
@@ -194,13 +174,19 @@ typedef struct modes_run {
     int nlocks;
     ori_multifold *mf;
     char hint[1024]; // an underdetermined fold's lock suggestion
+    cli_collide_opts co;
+    cli_collision col; // the motion's self-collision check (--no-collisions: unchecked)
 } modes_run;
+
+// Frames shown and written: all of them, or those before the first collision.
+static int shown_frames(const modes_run *r) { return cli_collide_frames(&r->col, ori_multifold_frame_count(r->mf)); }
+
 
 // The creases whose angle changes (at most cap), for the text table.
 static int moving_creases(const modes_run *r, int *cols, int cap, int *total)
 {
     const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(r->k.mech), F = ori_multifold_frame_count(mf), n = 0;
+    int E = ori_mechanism_edge_count(r->k.mech), F = shown_frames(r), n = 0;
     *total = 0;
     if (F < 2) return 0;
     const double *a0 = ori_multifold_frame_angles(mf, 0), *a1 = ori_multifold_frame_angles(mf, F - 1);
@@ -222,7 +208,7 @@ static int crease_rows(const modes_run *r, crease_row *rows)
 {
     const ori_mechanism *m = r->k.mech;
     const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(m), F = ori_multifold_frame_count(mf), n = 0;
+    int E = ori_mechanism_edge_count(m), F = shown_frames(r), n = 0;
     if (F == 0) return 0;
     double *target = malloc(sizeof(double) * (size_t)(E + 1));
     ori_target_angles_default(r->k.flat, target);
@@ -255,7 +241,7 @@ static int against_assignment(const modes_run *r, against_row *rows)
 {
     const ori_mechanism *m = r->k.mech;
     const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(m), F = ori_multifold_frame_count(mf), n = 0;
+    int E = ori_mechanism_edge_count(m), F = shown_frames(r), n = 0;
     for (int e = 0; e < E; ++e) {
         ori_assignment as = ori_pattern_edge(r->k.flat, e).assignment;
         int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
@@ -274,14 +260,18 @@ static void print_json(const modes_run *r)
 {
     const modes_args *a = &r->a;
     const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(r->k.mech), F = ori_multifold_frame_count(mf);
+    int E = ori_mechanism_edge_count(r->k.mech), F = shown_frames(r);
     ori_multifold_verdict v = ori_multifold_verdict_of(mf);
     json_t *out = json_object();
     json_object_set_new(out, "file", json_string(a->path));
     json_object_set_new(out, "mode", json_string(a->has_percent ? "targets" : "drives"));
-    json_object_set_new(out, "valid", json_boolean(v == ORI_MULTIFOLD_REACHED));
-    json_object_set_new(out, "verdict", json_string(ori_multifold_verdict_name(v)));
-    json_object_set_new(out, "reason", json_string(ori_multifold_reason(mf)));
+    bool collides = cli_collides(&r->col);
+    char hit[256] = "";
+    if (collides) cli_collision_describe(&r->col, false, hit, sizeof hit);
+    json_object_set_new(out, "valid", json_boolean(v == ORI_MULTIFOLD_REACHED && !collides));
+    json_object_set_new(out, "verdict", json_string(collides ? "collision" : ori_multifold_verdict_name(v)));
+    json_object_set_new(out, "reason", json_string(collides ? hit : ori_multifold_reason(mf)));
+    json_object_set_new(out, "collision", cli_collision_json(&r->col, false));
     json_object_set_new(out, "hint", r->hint[0] ? json_string(r->hint) : json_null());
     int se = ori_multifold_stop_edge(mf);
     json_object_set_new(out, "stop_edge", se == ORI_NULL_INDEX ? json_null() : json_integer(se));
@@ -344,7 +334,7 @@ static void print_text(const modes_run *r)
 {
     const modes_args *a = &r->a;
     const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(r->k.mech), F = ori_multifold_frame_count(mf);
+    int E = ori_mechanism_edge_count(r->k.mech), F = shown_frames(r);
     if (a->has_percent) {
         printf("%s: fold toward the targets, %g %% of the way (step %g deg), face %d fixed", a->path, a->percent,
                a->step_deg, a->fix);
@@ -375,7 +365,13 @@ static void print_text(const modes_run *r)
         if (total > nc) printf("(%d more moving creases: see --json)\n", total - nc);
     }
     ori_multifold_verdict v = ori_multifold_verdict_of(mf);
-    printf("verdict: %s: %s\n", ori_multifold_verdict_name(v), ori_multifold_reason(mf));
+    if (cli_collides(&r->col)) {
+        char hit[256];
+        cli_collision_describe(&r->col, false, hit, sizeof hit);
+        printf("verdict: collision: %s (the motion stops at the last clean step)\n", hit);
+    } else {
+        printf("verdict: %s: %s\n", ori_multifold_verdict_name(v), ori_multifold_reason(mf));
+    }
     if (ori_multifold_held_count(mf))
         printf("note: %d crease%s reached 180 deg (%s target) first and %s held there\n", ori_multifold_held_count(mf),
                ori_multifold_held_count(mf) == 1 ? "" : "s", ori_multifold_held_count(mf) == 1 ? "its" : "their",
@@ -414,14 +410,15 @@ static int write_frames(const modes_run *r)
     const ori_mechanism *m = r->k.mech;
     const ori_multifold *mf = r->mf;
     int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
-    bool partial = ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED;
+    bool collides = cli_collides(&r->col);
+    bool partial = collides || ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED;
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
-    for (int f = 0; f < ori_multifold_frame_count(mf); ++f) {
+    for (int f = 0; f < shown_frames(r); ++f) {
         ori_multifold_frame_vertices(mf, f, pos);
         char title[160];
         snprintf(title, sizeof title, "%s: %.6g %% of the way%s%s", r->a.has_percent ? "fold toward the targets" : "drives",
                  100.0 * ori_multifold_frame_progress(mf, f), partial ? " (partial: " : "",
-                 partial ? ori_multifold_verdict_name(ori_multifold_verdict_of(mf)) : "");
+                 !partial ? "" : collides ? "collision" : ori_multifold_verdict_name(ori_multifold_verdict_of(mf)));
         if (partial) strncat(title, ")", sizeof title - strlen(title) - 1);
         ori_fold_append_state(r->k.doc, 0, V, pos, E, ori_multifold_frame_angles(mf, f), title);
     }
@@ -524,7 +521,7 @@ static int solve(modes_run *r)
         int *sugg = malloc(sizeof(int) * (size_t)(E + 1));
         int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, sugg,
                                        E + 1, &err);
-        if (n > 0) lock_text(sugg, n, r->hint, sizeof r->hint);
+        if (n > 0) cli_lock_text(sugg, n, r->hint, sizeof r->hint);
         free(sugg);
     }
     return CLI_EXIT_OK;
@@ -570,7 +567,15 @@ int cli_fold_modes_run(int argc, char **argv)
 {
     modes_run r;
     memset(&r, 0, sizeof r);
-    int rc = parse(argc, argv, &r.a);
+    // The collision options come out of a copy: --lock auto with one drive hands the original
+    // command line to the ordinary fold, which takes them itself.
+    char **av = malloc(sizeof(char *) * (size_t)(argc + 1));
+    memcpy(av, argv, sizeof(char *) * (size_t)argc);
+    av[argc] = NULL;
+    int ac = argc;
+    int rc = cli_collide_strip("fold", &ac, av, &r.co);
+    if (rc == CLI_EXIT_OK) rc = parse(ac, av, &r.a);
+    free(av);
     if (rc != CLI_EXIT_OK) return rc;
     rc = cli_kin_load("fold", r.a.path, r.a.frame, &r.k);
     if (rc != CLI_EXIT_OK) return rc;
@@ -581,12 +586,14 @@ int cli_fold_modes_run(int argc, char **argv)
         return rc;
     }
     if (rc == CLI_EXIT_OK) rc = solve(&r);
+    if (rc == CLI_EXIT_OK)
+        rc = cli_collide_multifold("fold", r.a.path, &r.co, r.k.flat, r.mf, r.locks, r.nlocks, &r.col);
     if (rc == CLI_EXIT_OK) {
         if (r.a.json) print_json(&r);
         else print_text(&r);
         ori_multifold_verdict v = ori_multifold_verdict_of(r.mf);
-        rc = v == ORI_MULTIFOLD_REACHED ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
-        if (r.a.out && ori_multifold_frame_count(r.mf) > 0) {
+        rc = v == ORI_MULTIFOLD_REACHED && !cli_collides(&r.col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
+        if (r.a.out && shown_frames(&r) > 0) {
             int wr = write_frames(&r);
             if (wr != CLI_EXIT_OK) rc = wr;
         }

@@ -31,7 +31,9 @@ int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *bu
     "  --lock auto     lock the creases a rank-revealing QR of the Jacobian leaves over (one degree\n"       \
     "                  of freedom per drive); an underdetermined fold suggests such a set\n"                \
     "  --symmetric     keep creases that the pattern's symmetries map onto each other at equal angles\n"    \
-    "  with a mode, --json prints {mode, verdict, reason, stop_edge, symmetry, locked, drives,\n"           \
+    "  the modes check every step for self-collision as the ordinary fold does (--no-collisions,\n"         \
+    "                  --clearance D; verdict collision, stopping at the last clean step)\n"              \
+    "  with a mode, --json prints {mode, verdict, reason, collision, stop_edge, symmetry, locked, drives,\n"           \
     "                  creases: [{edge, start_deg, target_deg, goal_deg, reached_deg, fraction}],\n"         \
     "                  against_assignment: [{edge, assignment, angle_deg}],\n"                            \
     "                  frames: [{progress, fold_angles_deg, residual}], stats: {steps, rejected_steps,\n"   \

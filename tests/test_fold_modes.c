@@ -476,3 +476,53 @@ Test(fold_modes, symmetric_targets_and_partial_output, .init = test_leak_setup, 
     ori_pattern_destroy(last);
     test_tmpdir_remove(dir);
 }
+
+// Self-collision along a fold toward the targets: both flaps of two-flaps.fold (valleys, targets
+// +180°) fold at equal angles; the right flap's tip (length 1.5, hinge 1 from the left one) meets
+// the left flap where 3 |cos ρ| = 1, ρ = arccos(−1/3) = 109.4712206°. The progress is ρ / 180°
+// here (both creases turn alike), so the first contact is at progress 0.6081734479, located
+// to the drive tolerance (1e-6° of a drive, taken on the progress) after the true contact.
+Test(fold_modes, percent_two_flaps_collide, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/two-flaps.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_target_fold_def d = ori_default_target_fold_def();
+    d.fixed_face = 1;
+    d.fraction = 1.0;
+    ori_multifold *mf = NULL;
+    ori_error err;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED); // the kinematics alone reach 180°
+    ori_collider_def cd = ori_default_collider_def();
+    cd.pattern = p;
+    ori_collider *c = NULL;
+    cr_assert_eq(ori_collider_create(&cd, &c, &err), ORI_OK, "%s", err.message);
+    ori_collision_motion_def chk = ori_default_collision_motion_def();
+    ori_collision_event ev;
+    cr_assert_eq(ori_collision_check_multifold(c, mf, NULL, 0, &chk, &ev, &err), ORI_OK, "%s", err.message);
+    cr_assert(ev.collides);
+    double expect = acos(-1.0 / 3.0) / ORI_PI;
+    cr_assert_geq(ev.drive_rad, expect - 1e-12, "contact at progress %.12f, before the true %.12f", ev.drive_rad, expect);
+    cr_assert_leq(ev.drive_rad, expect + chk.drive_tol_rad, "contact at progress %.12f, true %.12f", ev.drive_rad, expect);
+    cr_assert_eq(ev.contact.face_a, 0);
+    cr_assert_eq(ev.contact.face_b, 2);
+    cr_assert_float_eq(ev.contact.point.x, 0.5, 1e-6);
+    cr_assert_float_eq(ev.contact.point.z, 1.5 * sqrt(8.0) / 3.0, 1e-6);
+    // frames before ev.frame are clean, ev.frame's progress is past the contact
+    cr_assert_lt(ori_multifold_frame_progress(mf, ev.frame - 1), expect);
+    cr_assert_geq(ori_multifold_frame_progress(mf, ev.frame), expect);
+    // the same fold with the flaps' creases locked does not move, and so never collides
+    int locked[2] = {7, 8};
+    ori_multifold *still = NULL;
+    d.locked_edges = locked;
+    d.locked_count = 2;
+    if (ori_target_fold_solve(m, &d, &still, &err) == ORI_OK) {
+        cr_assert_eq(ori_collision_check_multifold(c, still, locked, 2, &chk, &ev, &err), ORI_OK, "%s", err.message);
+        cr_assert(!ev.collides);
+        ori_multifold_destroy(still);
+    }
+    ori_collider_destroy(c);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

@@ -959,3 +959,97 @@ Test(kinematics, rounded_drawing_is_rigid_and_the_cli_says_why)
     free(out);
     test_tmpdir_remove(dir);
 }
+
+// Progress of a fold (ori_motion_def.progress): on a 20 × 20 Miura sheet from 5° to 150° the
+// callback sees monotone fractions in [0, 1], one per output frame at least, the last exactly 1;
+// the fraction at each frame is the drive range done. Returning false cancels: ORI_ERR_LIMIT,
+// no motion, nothing leaked (the suite's leak check).
+typedef struct progress_log {
+    double f[512];
+    int n;
+    int cancel_after; // return false at this call (−1: never)
+} progress_log;
+
+static bool log_progress(double f, void *user)
+{
+    progress_log *l = user;
+    if (l->n < 512) l->f[l->n] = f;
+    l->n++;
+    return l->cancel_after < 0 || l->n < l->cancel_after;
+}
+
+Test(kinematics, progress_is_monotone_and_cancels)
+{
+    const int n = 20;
+    ori_pattern *p = test_miura(n, n, MIURA_A, MIURA_B, MIURA_GAMMA, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    double sg;
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = miura_drive(p, n, &sg);
+    d.to_rad = sg * 5 * DEG;
+    d.step_rad = 5 * DEG;
+    ori_motion *start = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(start), ORI_MOTION_VALID, "%s", ori_motion_reason(start));
+    d.start_angles_rad = ori_motion_frame_angles(start, ori_motion_frame_count(start) - 1);
+    d.to_rad = sg * 150 * DEG;
+    progress_log log = {.n = 0, .cancel_after = -1};
+    d.progress = log_progress;
+    d.progress_user = &log;
+    ori_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
+    int F = ori_motion_frame_count(mo);
+    cr_assert_eq(F, 30);
+    cr_assert_geq(log.n, F);
+    cr_assert_leq(log.n, 512);
+    cr_assert_eq(log.f[0], 0.0);
+    for (int i = 1; i < log.n; ++i) {
+        cr_assert_geq(log.f[i], log.f[i - 1], "call %d: %g after %g", i, log.f[i], log.f[i - 1]);
+        cr_assert_leq(log.f[i], 1.0);
+    }
+    cr_assert_eq(log.f[log.n - 1], 1.0);
+    // frame k's call reports the drive range done: (5° + 5° k − 5°) / 145°, to rounding
+    cr_assert_float_eq(log.f[F / 2], (ori_motion_frame_drive(mo, F / 2) - sg * 5 * DEG) / (sg * 145 * DEG), 1e-12);
+    ori_motion_destroy(mo);
+
+    // cancelled a third of the way: ORI_ERR_LIMIT, no motion
+    progress_log stop = {.n = 0, .cancel_after = 10};
+    d.progress_user = &stop;
+    mo = NULL;
+    cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_ERR_LIMIT);
+    cr_assert_str_eq(err.message, "cancelled");
+    cr_assert_null(mo);
+    cr_assert_eq(stop.n, 10, "no call after the cancel (got %d)", stop.n);
+
+    // a sequence of two folds: its fractions run over both, monotone, ending at 1; cancel too
+    const char *text = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 0, \"drive\": %d, \"to\": %g, \"step\": 10},"
+                       " {\"fix\": 0, \"drive\": %d, \"to\": %g, \"step\": 10}]}";
+    char seq[512];
+    snprintf(seq, sizeof seq, text, d.driven_edge, sg * 60.0, d.driven_edge, sg * 120.0);
+    ori_sequence *s = NULL;
+    cr_assert_eq(ori_sequence_parse(seq, strlen(seq), &s, &err), ORI_OK, "%s", err.message);
+    progress_log sl = {.n = 0, .cancel_after = -1};
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run_progress(s, m, d.start_angles_rad, ori_rigid_identity(), log_progress, &sl, &r, &err),
+                 ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID);
+    cr_assert_geq(sl.n, ori_record_frame_count(r));
+    bool half = false;
+    for (int i = 1; i < sl.n && i < 512; ++i) {
+        cr_assert_geq(sl.f[i], sl.f[i - 1]);
+        half = half || sl.f[i] == 0.5; // fold 2 starts at 1/2
+    }
+    cr_assert(half);
+    cr_assert_eq(sl.f[(sl.n < 512 ? sl.n : 512) - 1], 1.0);
+    ori_record_destroy(r);
+    progress_log sc = {.n = 0, .cancel_after = 8};
+    r = NULL;
+    cr_assert_eq(ori_sequence_run_progress(s, m, d.start_angles_rad, ori_rigid_identity(), log_progress, &sc, &r, &err),
+                 ORI_ERR_LIMIT);
+    cr_assert_null(r);
+    ori_sequence_destroy(s);
+    ori_motion_destroy(start);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

@@ -1798,3 +1798,92 @@ Test(server, load_1000_requests_over_50_connections)
     cr_assert_eq(errors, 0);
     unserve(&x);
 }
+
+// A sequence with a fold toward the targets ("percent"): the studio loads and plays it; the
+// record, the instants (restored exactly, no cache: there is no drive range to grid) and the
+// contact are what orikin sequence prints, the drive null (its "drive" is the progress).
+#define WATERBOMB_TARGETS_SEQ "tests/data/waterbomb-base-targets.seq.json"
+#define TWO_FLAPS_PERCENT_SEQ "tests/data/two-flaps-percent.seq.json"
+Test(server, percent_sequence_equals_cli_json)
+{
+    studio *s = open_studio(WATERBOMB_TARGETS_SEQ);
+    json_t *api = call_json(s, "GET", "/api/sequence", NULL, NULL, 200);
+    json_t *cli = cli_json("sequence " WATERBOMB_TARGETS_SEQ " --json", 0);
+    assert_same(api, cli, "percent sequence");
+    json_t *f0 = json_array_get(json_object_get(api, "folds"), 0);
+    cr_assert(json_is_null(json_object_get(f0, "drive")));
+    cr_assert_float_eq(json_number_value(json_object_get(f0, "percent")), 100.0, 0.0);
+    json_decref(api);
+    json_decref(cli);
+    static const char *const times[] = {"0", "0.3", "0.75", "1"};
+    for (size_t i = 0; i < sizeof times / sizeof times[0]; ++i) {
+        char q[64], args[256];
+        snprintf(q, sizeof q, "t=%s", times[i]);
+        snprintf(args, sizeof args, "sequence " WATERBOMB_TARGETS_SEQ " --at %s --json", times[i]);
+        json_t *a = call_json(s, "GET", "/api/sequence/at", q, NULL, 200);
+        json_t *c = cli_json(args, 0);
+        assert_same(a, c, q);
+        cr_assert(json_is_null(json_object_get(a, "drive_deg")));
+        json_decref(a);
+        json_decref(c);
+    }
+    studio_response r = call(s, "GET", "/api/sequence/at", "t=0.3&binary=1", NULL);
+    cr_assert_eq(r.status, 200);
+    uint64_t u = 0;
+    for (int b = 0; b < 8; ++b) u |= (uint64_t)(unsigned char)r.body[16 + b] << (8 * b);
+    double d;
+    memcpy(&d, &u, 8);
+    cr_assert(isnan(d), "binary drive of a percent fold is NaN, got %g", d);
+    studio_response_free(&r);
+    // POSTed as the page does, the same record
+    char *text = test_read_text(WATERBOMB_TARGETS_SEQ);
+    api = call_json(s, "POST", "/api/sequence", NULL, text, 200);
+    free(text);
+    cli = cli_json("sequence " WATERBOMB_TARGETS_SEQ " --json", 0);
+    json_object_set_new(cli, "sequence", json_string("studio"));
+    assert_same(api, cli, "posted percent sequence");
+    json_decref(api);
+    json_decref(cli);
+    studio_destroy(s);
+
+    // colliding: the contact is given as the progress
+    s = open_studio(TWO_FLAPS_PERCENT_SEQ);
+    api = call_json(s, "GET", "/api/sequence", NULL, NULL, 200);
+    cli = cli_json("sequence " TWO_FLAPS_PERCENT_SEQ " --json", 1);
+    assert_same(api, cli, "colliding percent sequence");
+    json_t *col = json_object_get(api, "collision");
+    double p = json_number_value(json_object_get(col, "progress"));
+    cr_assert(fabs(p - acos(-1.0 / 3.0) / ORI_PI) < 1e-7, "contact at progress %.10f", p);
+    json_t *c = call_json(s, "GET", "/api/contact", "of=sequence", NULL, 200);
+    cr_assert(json_is_null(json_object_get(c, "drive_deg")));
+    assert_same(json_object_get(c, "collision"), col, "contact.collision");
+    json_decref(c);
+    json_decref(api);
+    json_decref(cli);
+    studio_destroy(s);
+}
+
+// An underdetermined fold: the studio's answer is orikin fold's, its hint naming a lock set
+// (which the page shows), and that lock set makes the fold valid.
+Test(server, underdetermined_fold_lock_hint_equals_cli_json)
+{
+    studio *s = open_studio("tests/data/kin-open-corner.fold");
+    json_t *api = call_json(s, "POST", "/api/fold", NULL, "{\"fix\": 0, \"drive\": 8, \"to\": 90}", 200);
+    json_t *cli = cli_json("fold tests/data/kin-open-corner.fold --fix 0 --drive 8 --to 90 --json", 1);
+    assert_same(api, cli, "underdetermined fold");
+    cr_assert_str_eq(json_string_value(json_object_get(api, "verdict")), "underdetermined");
+    const char *hint = json_string_value(json_object_get(api, "hint"));
+    cr_assert_not_null(hint);
+    const char *lock = strstr(hint, "--lock ");
+    cr_assert_not_null(lock, "%s", hint);
+    int e = atoi(lock + strlen("--lock "));
+    char body[128];
+    snprintf(body, sizeof body, "{\"fix\": 0, \"drive\": 8, \"to\": 90, \"lock\": [%d]}", e);
+    json_t *locked = call_json(s, "POST", "/api/fold", NULL, body, 200);
+    cr_assert(json_is_true(json_object_get(locked, "valid")), "with --lock %d: %s", e,
+              json_string_value(json_object_get(locked, "reason")));
+    json_decref(locked);
+    json_decref(api);
+    json_decref(cli);
+    studio_destroy(s);
+}

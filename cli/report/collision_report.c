@@ -27,6 +27,7 @@ ori_status cli_collision_check_record(ori_collider *c, const ori_record *r, ori_
     cd.progress_user = user;
     ori_status st = ori_collision_check_record(c, r, &cd, &out->ev, err);
     out->checked = st == ORI_OK;
+    out->progress = st == ORI_OK && out->ev.collides && ori_record_fold_is_targets(r, out->ev.fold);
     return st;
 }
 
@@ -45,7 +46,8 @@ json_t *cli_collision_json(const cli_collision *c, bool with_fold)
     json_t *o = json_object();
     if (with_fold) json_object_set_new(o, "fold", json_integer(e->fold + 1));
     json_object_set_new(o, "step", json_integer(e->step));
-    json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(e->drive_rad)));
+    if (c->progress) json_object_set_new(o, "progress", json_real(e->drive_rad));
+    else json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(e->drive_rad)));
     json_object_set_new(o, "faces", json_pack("[ii]", e->contact.face_a, e->contact.face_b));
     json_object_set_new(o, "point", json_pack("[fff]", e->contact.point.x, e->contact.point.y, e->contact.point.z));
     return o;
@@ -63,7 +65,10 @@ void cli_collision_describe(const cli_collision *c, bool with_fold, char *buf, s
     const ori_collision_event *e = &c->ev;
     char fold[32] = "";
     if (with_fold) snprintf(fold, sizeof fold, "fold %d, ", e->fold + 1);
-    snprintf(buf, size, "faces %d and %d %s at %sstep %d, drive %.6f deg, at (%.6g, %.6g, %.6g)", e->contact.face_a,
-             e->contact.face_b, verb(&e->contact), fold, e->step, ori_rad_to_deg(e->drive_rad), e->contact.point.x,
-             e->contact.point.y, e->contact.point.z);
+    char at[64];
+    if (c->progress) snprintf(at, sizeof at, "progress %.9f", e->drive_rad);
+    else snprintf(at, sizeof at, "drive %.6f deg", ori_rad_to_deg(e->drive_rad));
+    snprintf(buf, size, "faces %d and %d %s at %sstep %d, %s, at (%.6g, %.6g, %.6g)", e->contact.face_a,
+             e->contact.face_b, verb(&e->contact), fold, e->step, at, e->contact.point.x, e->contact.point.y,
+             e->contact.point.z);
 }

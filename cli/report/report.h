@@ -5,7 +5,8 @@
 //
 // Functions: cli_collision_check_motion, cli_collision_check_record, cli_collides,
 // cli_collide_frames, cli_collision_json, cli_collision_describe, cli_check_run, cli_check_json,
-// cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json.
+// cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json, cli_lock_text,
+// cli_lock_hint.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -22,6 +23,8 @@
 typedef struct cli_collision {
     bool checked;            // the motion was checked (not --no-collisions)
     ori_collision_event ev;  // ev.collides: frames 0 … ev.frame − 1 are clean
+    bool progress;           // ev.drive_rad is the progress (0 … 1) of a fold toward the targets or of
+                             // several drives: "progress" replaces "drive_deg"
 } cli_collision;
 
 // Check a solved fold (def as solved) with a collider of its flat pattern: *out filled (checked)
@@ -37,7 +40,8 @@ ori_status cli_collision_check_record(ori_collider *c, const ori_record *r, ori_
 bool cli_collides(const cli_collision *c);
 // Number of frames to show and write: all of them, or those before the first collision.
 int cli_collide_frames(const cli_collision *c, int frames);
-// {"fold": k (1-based, with_fold only), "step": s, "drive_deg": x, "faces": [f, g], "point": [x, y, z]}
+// {"fold": k (1-based, with_fold only), "step": s, "drive_deg": x (or "progress": p), "faces": [f, g],
+// "point": [x, y, z]}
 // or null when clean or unchecked.
 json_t *cli_collision_json(const cli_collision *c, bool with_fold);
 // One line: "faces 3 and 9 penetrate at step 14, drive 131.810315 deg, at (x, y, z)".
@@ -73,5 +77,14 @@ void cli_check_run(const ori_pattern *p, const char *file, bool has_tolerance, d
 // violations: [...]} (docs/verification.md).
 json_t *cli_check_json(const cli_check *c, const char *file, int frame, const ori_pattern *p);
 void cli_check_free(cli_check *c);
+
+// --- which creases to lock (an underdetermined fold's "hint"; orikin fold, POST /api/fold) --------
+
+// "lock N more creases, e.g. --lock a,b,c (or --lock auto)" for the lock set locks[0 … n) into buf.
+void cli_lock_text(const int *locks, int n, char *buf, size_t size);
+// A lock set that leaves the single-drive fold def one degree of freedom (ori_mechanism_lock_set
+// at def's start angles), as that text into buf (empty when none is found), and as a new JSON
+// array in *locks when locks is not NULL (untouched then). Returns the count, or −1.
+int cli_lock_hint(const ori_mechanism *m, const ori_motion_def *def, char *buf, size_t size, json_t **locks);
 
 #endif

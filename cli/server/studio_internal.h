@@ -319,9 +319,10 @@ typedef struct studio_fold_spec {
     int lock_count;
 } studio_fold_spec;
 
-// orikin fold --json (col: its collision check).
+// orikin fold --json (col: its collision check; lock_hint: an underdetermined fold's lock
+// suggestion, cli_lock_hint, or NULL/empty).
 json_t *studio_json_fold(const char *file, const studio_fold_spec *spec, const ori_pattern *flat,
-                         const ori_mechanism *m, const ori_motion *mo, const cli_collision *col);
+                         const ori_mechanism *m, const ori_motion *mo, const cli_collision *col, const char *lock_hint);
 // orikin sequence --json (sequence and pattern as the CLI names them; col: its collision check).
 json_t *studio_json_record(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
                            int edge_count, const cli_collision *col);

@@ -71,7 +71,7 @@ static json_t *rounding_hint(const ori_pattern *flat, const ori_motion *mo)
 }
 
 json_t *studio_json_fold(const char *file, const studio_fold_spec *a, const ori_pattern *flat,
-                         const ori_mechanism *m, const ori_motion *mo, const cli_collision *col)
+                         const ori_mechanism *m, const ori_motion *mo, const cli_collision *col, const char *lock_hint)
 {
     int E = ori_mechanism_edge_count(m);
     ori_motion_verdict v = ori_motion_verdict_of(mo);
@@ -86,7 +86,12 @@ json_t *studio_json_fold(const char *file, const studio_fold_spec *a, const ori_
     const char *why = collides ? hit : ori_motion_reason(mo);
     json_object_set_new(out, "reason", why ? json_string(why) : json_null());
     json_object_set_new(out, "collision", cli_collision_json(col, false));
-    json_object_set_new(out, "hint", rounding_hint(flat, mo));
+    json_t *hint = rounding_hint(flat, mo);
+    if (json_is_null(hint) && lock_hint && lock_hint[0]) { // underdetermined: a lock set (as orikin fold)
+        json_decref(hint);
+        hint = json_string(lock_hint);
+    }
+    json_object_set_new(out, "hint", hint);
     json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
     json_object_set_new(out, "dof", cli_motion_dof_json(mo));
     json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
@@ -152,7 +157,8 @@ static json_t *sequence_fold_json(const ori_sequence_fold *f, int i)
     json_object_set_new(o, "fold", json_integer(i + 1));
     json_object_set_new(o, "name", f->name[0] ? json_string(f->name) : json_null());
     json_object_set_new(o, "fix", json_integer(f->fixed_face));
-    json_object_set_new(o, "drive", json_integer(f->driven_edge));
+    json_object_set_new(o, "drive", f->targets ? json_null() : json_integer(f->driven_edge));
+    if (f->targets) json_object_set_new(o, "percent", json_real(100.0 * f->fraction)); // a fold toward the targets
     json_object_set_new(o, "lock", ints_json(f->locked, f->locked_count));
     json_object_set_new(o, "from_deg", f->has_from ? json_real(ori_rad_to_deg_output(f->from_rad)) : json_null());
     json_object_set_new(o, "to_deg", json_real(ori_rad_to_deg_output(f->to_rad)));
@@ -189,7 +195,8 @@ json_t *studio_json_record(const char *sequence, const char *pattern, const ori_
         json_t *fr = json_object();
         json_object_set_new(fr, "t", json_real(ori_record_frame_time(r, f)));
         json_object_set_new(fr, "fold", json_integer(ori_record_frame_fold(r, f) + 1));
-        json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_record_frame_drive(r, f))));
+        bool tg = ori_sequence_fold_at(s, ori_record_frame_fold(r, f)).targets; // progress, not an angle
+        json_object_set_new(fr, "drive_deg", tg ? json_null() : json_real(ori_rad_to_deg_output(ori_record_frame_drive(r, f))));
         json_object_set_new(fr, "fold_angles_deg", degrees_json(ori_record_frame_angles(r, f), E));
         json_object_set_new(fr, "residual", json_real(ori_record_frame_residual(r, f)));
         json_array_append_new(frames, fr);
@@ -269,7 +276,8 @@ char *studio_json_at_text(double t, int fold, double drive_rad, const double *an
     tb_str(&b, ",\"fold\":");
     tb_num(&b, fold + 1);
     tb_str(&b, ",\"drive_deg\":");
-    tb_num(&b, ori_rad_to_deg_output(drive_rad));
+    if (isnan(drive_rad)) tb_str(&b, "null"); // a fold toward the targets has no drive angle
+    else tb_num(&b, ori_rad_to_deg_output(drive_rad));
     tb_str(&b, ",\"fold_angles_deg\":");
     tb_degrees(&b, angles_rad, E);
     tb_str(&b, ",\"residual\":");

@@ -45,7 +45,7 @@ static bool check_fold_indices(const ori_mechanism *m, const char *where, int fi
         studio_fail(out, 400, "%sfaces_vertices %d: no face %d (the pattern has faces 0 to %d)", where, fix, fix, faces - 1);
         return false;
     }
-    if (drive < 0 || drive >= edges) {
+    if (drive != ORI_NULL_INDEX && (drive < 0 || drive >= edges)) { // ORI_NULL_INDEX: a fold toward the targets
         studio_fail(out, 400, "%sedges_vertices %d: no edge %d (the pattern has edges 0 to %d)", where, drive, drive,
                     edges - 1);
         return false;
@@ -635,7 +635,9 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
         if (ok && cli_collides(&col)) fold_contact(m, &def, mo, &col, &contact);
     }
     if (ok) {
-        studio_respond_json(out, 200, studio_json_fold(file, &f.spec, model->pattern, m, mo, &col));
+        char lock_hint[1024] = ""; // an underdetermined fold names a lock set (as orikin fold)
+        if (ori_motion_verdict_of(mo) == ORI_MOTION_UNDERDETERMINED) cli_lock_hint(m, &def, lock_hint, sizeof lock_hint, NULL);
+        studio_respond_json(out, 200, studio_json_fold(file, &f.spec, model->pattern, m, mo, &col, lock_hint));
         int E = ori_mechanism_edge_count(m);
         studio_fold *res = calloc(1, sizeof *res);
         atomic_init(&res->refs, 1);
@@ -749,6 +751,10 @@ static ori_record *fine_record(const studio *s, const ori_sequence *seq, const o
     *grid = 0;
     int folds = ori_record_completed_folds(r);
     if (folds == 0 || s->def.cache_bytes == 0) return NULL;
+    // A fold toward the targets has no drive range to grid: its instants are restored exactly
+    // (ori_record_at) without a cache.
+    for (int k = 0; k < folds; ++k)
+        if (ori_sequence_fold_at(seq, k).targets) return NULL;
     double per_state = 8.0 * ori_mechanism_edge_count(m) + 24.0 * ori_mechanism_vertex_count(m) + 64.0;
     double states = fmin((double)s->def.cache_bytes / per_state, s->def.work_limit / elements_of(m));
     int n = (int)fmin((double)STUDIO_GRID_MAX, floor((states - 1.0) / folds / 8.0) * 8.0);
@@ -803,8 +809,13 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const 
         ok = check_fold_indices(m, where, f.fixed_face, f.driven_edge, f.locked, f.locked_count, out);
         if (!ok) break;
         // the start angle of a later fold is known only once the earlier ones ran: bound its range
-        double start = f.has_from ? f.from_rad : k == 0 ? angles[f.driven_edge] : (f.to_rad > 0 ? -ORI_PI : ORI_PI);
-        double frames = frames_of(ori_rad_to_deg_output(f.to_rad - start), ori_rad_to_deg_output(f.step_rad));
+        // (a fold toward the targets turns no crease by more than 360 deg, at most step per state)
+        double start = f.targets ? 0.0
+                       : f.has_from ? f.from_rad
+                       : k == 0     ? angles[f.driven_edge]
+                                    : (f.to_rad > 0 ? -ORI_PI : ORI_PI);
+        double range_deg = f.targets ? 360.0 : ori_rad_to_deg_output(f.to_rad - start);
+        double frames = frames_of(range_deg, ori_rad_to_deg_output(f.step_rad));
         if (frames > STUDIO_MAX_FRAMES_PER_FOLD) {
             studio_fail(out, 400, "folds %d: %.0f states at step %g deg; the studio's limit is %d per fold: use a larger step",
                         k, frames, ori_rad_to_deg_output(f.step_rad), STUDIO_MAX_FRAMES_PER_FOLD);
@@ -852,7 +863,10 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const 
         q->record = r;
         r = NULL;
         q->collision = col;
-        if (cli_collides(&col)) record_contact(m, q->record, &col, &q->contact);
+        if (cli_collides(&col)) {
+            record_contact(m, q->record, &col, &q->contact);
+            if (q->contact.has && col.progress) q->contact.drive_rad = NAN; // a fold toward the targets
+        }
         q->json = studio_json_text(studio_json_record(name, file, seq, q->record, ori_mechanism_edge_count(m), &col),
                                    &q->json_size);
         studio_job_phase(s, "sequence: states for the slider");
@@ -942,6 +956,8 @@ void studio_api_sequence_at(studio *s, const studio_request *req, studio_respons
     int fold = 0;
     ori_error err;
     ori_status st = seq_state_at(q, t, ang, pos, &drive, &fold, &residual, &err);
+    // a fold toward the targets: its "drive" is the progress, no angle (null, NaN in binary)
+    if (st == ORI_OK && ori_sequence_fold_at(q->sequence, fold).targets) drive = NAN;
     if (st != ORI_OK) {
         studio_fail_error(out, studio_status_of(st), &err);
     } else {

@@ -436,7 +436,8 @@ void studio_api_contact(studio *s, const studio_request *req, studio_response *o
             json_object_set_new(o, "collision", cli_collision_json(col, of_sequence));
             json_object_set_new(o, "t", json_real(c->t));
             json_object_set_new(o, "fold", json_integer(c->fold + 1));
-            json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(c->drive_rad)));
+            // NaN: a fold toward the targets (no drive angle)
+            json_object_set_new(o, "drive_deg", isnan(c->drive_rad) ? json_null() : json_real(ori_rad_to_deg_output(c->drive_rad)));
             json_t *ang = json_array(), *pos = json_array();
             for (int e = 0; e < E; ++e) json_array_append_new(ang, json_real(ori_rad_to_deg_output(c->angles[e])));
             for (int v = 0; v < V; ++v)

@@ -11,7 +11,7 @@
 /// ori_collider_check, ori_collider_contact_count, ori_collider_contact,
 /// ori_default_cloud_def, ori_collider_cloud, ori_collider_cloud_pair_count,
 /// ori_collider_cloud_pair, ori_default_collision_motion_def, ori_collision_check_motion,
-/// ori_collision_check_record.
+/// ori_collision_check_record, ori_collision_check_multifold.
 ///
 /// Semantics. Faces that share a vertex (FOLD index), and so faces that share a crease, meet
 /// there by construction: that is never a contact. They are still checked away from the shared
@@ -192,6 +192,15 @@ ORI_API ori_status ori_collision_check_motion(ori_collider *collider, const ori_
 ORI_API ori_status ori_collision_check_record(ori_collider *collider, const ori_record *record,
                                               const ori_collision_motion_def *check, ori_collision_event *out,
                                               ori_error *error);
+/// Check a fold with several degrees of freedom (ori_target_fold_solve, ori_drives_fold_solve)
+/// frame by frame; locked_edges (locked_count entries, may be NULL when 0) are the creases it held.
+/// The bisection parameter is the frame progress (0 … 1): the event's drive_rad and time are the
+/// progress at first contact (within drive_tol_rad), a state between frames their angles
+/// interpolated and closed onto the loop-closure manifold. As ori_collision_check_motion otherwise.
+ORI_API ori_status ori_collision_check_multifold(ori_collider *collider, const ori_multifold *fold,
+                                                 const int *locked_edges, int locked_count,
+                                                 const ori_collision_motion_def *check, ori_collision_event *out,
+                                                 ori_error *error);
 
 #ifdef __cplusplus
 }

@@ -250,6 +250,9 @@ typedef struct ori_motion_def {
     int locked_count;
     ori_solver solver;
     ori_linear linear;
+    ori_progress_fn *progress;      ///< called per output step with the fraction of the drive range done (monotone, 1 at the
+                                    ///< end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
+    void *progress_user;
     int internal_value;             ///< set by ori_default_motion_def; do not change
 } ori_motion_def;
 

@@ -78,11 +78,21 @@ typedef struct ori_record ori_record;
 ORI_API ori_status ori_sequence_run(const ori_sequence *sequence, const ori_mechanism *mechanism,
                                     const double *start_angles_rad, ori_rigid fixed_pose,
                                     ori_record **out, ori_error *error);
+/// ori_sequence_run with progress: called with the fraction of the folds done (fold i at fraction
+/// s of its drive range: (i + s) / fold_count; monotone, 1 at the end), may be NULL. Returning
+/// false cancels: ORI_ERR_LIMIT ("cancelled"), no record.
+ORI_API ori_status ori_sequence_run_progress(const ori_sequence *sequence, const ori_mechanism *mechanism,
+                                             const double *start_angles_rad, ori_rigid fixed_pose,
+                                             ori_progress_fn *progress, void *progress_user, ori_record **out,
+                                             ori_error *error);
 /// Destroy a record; NULL is a no-op. Destroy it before its mechanism.
 ORI_API void ori_record_destroy(ori_record *record);
 
 /// Number of folds in the sequence.
 ORI_API int ori_record_fold_count(const ori_record *record);
+/// True when fold `fold` (0-based) is a fold toward the targets ("percent"): its frames' drive is
+/// then the progress (0 … 1), not an angle.
+ORI_API bool ori_record_fold_is_targets(const ori_record *record, int fold);
 /// Folds that completed validly (all of them when the sequence is valid).
 ORI_API int ori_record_completed_folds(const ori_record *record);
 /// ORI_MOTION_VALID when every fold completed, else the verdict of the first failing fold.

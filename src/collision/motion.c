@@ -11,6 +11,7 @@
 // state, or ori_record_at), clean midpoints advance A and its remembered orders, colliding ones
 // become B, until B − A is below the drive tolerance.
 #include "../core/hash.h"
+#include "../kinematics/multifold_internal.h" // ori__mf_close: states between a multifold's frames
 #include "collision_internal.h"
 
 ori_collision_motion_def ori_default_collision_motion_def(void)
@@ -674,6 +675,8 @@ static ori_status motion_solve(void *user, double x, ori_v3 *pos, double *drive,
 {
     motion_src *ms = user;
     ori_motion_def d = *ms->def;
+    d.progress = NULL; // the fold's own progress: not for the trial states
+    d.progress_user = NULL;
     double from = ms->lo_angles[d.driven_edge];
     d.start_angles_rad = ms->lo_angles;
     d.has_from = false;
@@ -805,6 +808,86 @@ ori_status ori_collision_check_record(ori_collider *c, const ori_record *record,
         out->step = ro.frame == 0 ? 0 : ro.frame - first + 1;
         out->drive_rad = ro.drive;
         out->time = ro.x;
+        out->contact = ro.contact;
+        out->states_solved = ro.solved;
+    }
+    return ORI_OK;
+}
+
+// --- a fold with several degrees of freedom (ori_multifold) ------------------------------------
+
+// The parameter and the "drive" are the frame progress (0 … 1); a state between two frames is
+// their angles interpolated linearly in the progress, closed onto the loop-closure manifold with
+// the locked creases held (minimum-norm Newton, as ori_record_at restores a percent step).
+typedef struct multifold_src {
+    const ori_multifold *mf;
+    const int *locked;
+    int locked_count, edges;
+    int k; // the step being bisected: frames k − 1 … k
+    double *angles;
+} multifold_src;
+
+static void multifold_vertices(const void *src, int k, ori_v3 *pos)
+{
+    ori_multifold_frame_vertices(((const multifold_src *)src)->mf, k, pos);
+}
+
+static double multifold_progress(const void *src, int k)
+{
+    return ori_multifold_frame_progress(((const multifold_src *)src)->mf, k);
+}
+
+static ori_status multifold_prepare(void *user, int k, double *per, ori_error *error)
+{
+    multifold_src *ms = user;
+    (void)error;
+    ms->k = k;
+    *per = 1.0; // the parameter is the progress
+    return ORI_OK;
+}
+
+static ori_status multifold_solve(void *user, double x, ori_v3 *pos, double *drive, ori_error *error)
+{
+    multifold_src *ms = user;
+    const ori_multifold *mf = ms->mf;
+    double x0 = ori_multifold_frame_progress(mf, ms->k - 1), x1 = ori_multifold_frame_progress(mf, ms->k);
+    double w = x1 != x0 ? (x - x0) / (x1 - x0) : 1.0;
+    const double *a0 = ori_multifold_frame_angles(mf, ms->k - 1), *a1 = ori_multifold_frame_angles(mf, ms->k);
+    for (int e = 0; e < ms->edges; ++e) ms->angles[e] = a0[e] + w * (a1[e] - a0[e]);
+    ori_status st = ori__mf_close(mf->m, ms->locked, ms->locked_count, ms->angles, error);
+    if (st != ORI_OK) return st;
+    ori_mechanism_vertex_positions(mf->m, ms->angles, mf->fixed_face, mf->fixed_pose, pos);
+    *drive = x;
+    return ORI_OK;
+}
+
+static void multifold_commit(void *user) { (void)user; }
+
+ori_status ori_collision_check_multifold(ori_collider *c, const ori_multifold *fold, const int *locked_edges,
+                                         int locked_count, const ori_collision_motion_def *check,
+                                         ori_collision_event *out, ori_error *error)
+{
+    ORI_ASSERT(c && fold && check && out && check->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT(locked_count == 0 || locked_edges);
+    ORI_ASSERT(ori_mechanism_vertex_count(fold->m) == c->vertex_count && ori_mechanism_face_count(fold->m) == c->face_count);
+    ori_error_clear(error);
+    memset(out, 0, sizeof *out);
+    if (!(check->drive_tol_rad > 0.0))
+        return ori__fail(error, ORI_ERR_RANGE, "the drive tolerance must be positive, got %g", check->drive_tol_rad);
+    multifold_src ms = {fold, locked_edges, locked_count, fold->edge_count, 1, NULL};
+    ms.angles = ori__alloc(sizeof(double) * (size_t)(ms.edges + 1));
+    frames fr = {ori_multifold_frame_count(fold), multifold_vertices, multifold_progress, multifold_progress, &ms};
+    col_source src = {multifold_solve, multifold_commit, &ms};
+    run_out ro;
+    ori_status st = run_frames(c, &fr, check, multifold_prepare, &src, &ro, error);
+    ori__free(ms.angles);
+    if (st != ORI_OK) return st;
+    if (ro.collides) {
+        out->collides = true;
+        out->frame = out->step = ro.frame;
+        out->fold = 0;
+        out->drive_rad = ro.drive;
+        out->time = ro.drive;
         out->contact = ro.contact;
         out->states_solved = ro.solved;
     }

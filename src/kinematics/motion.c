@@ -56,6 +56,8 @@ ori_motion_def ori_default_motion_def(void)
     d.locked_count = 0;
     d.solver = ORI_SOLVER_AUTO;
     d.linear = ORI_LINEAR_AUTO;
+    d.progress = NULL;
+    d.progress_user = NULL;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -100,6 +102,12 @@ typedef struct ctx {
     double alt[3];
     ori_block_kind block_kind; // what stopped a BLOCKED leg
     int block_joint;           // ORI_BLOCK_CREASE_LIMIT: the crease at ±π
+    // progress of the output leg: fraction |drive − prog_from| / |prog_to − prog_from| per frame
+    ori_progress_fn *progress;
+    void *progress_user;
+    bool progress_on;
+    double prog_from, prog_to;
+    bool cancelled; // the progress callback returned false: the walks stop at their next step
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -148,6 +156,11 @@ static void record(ctx *c)
     if (mo->nframes == mo->frame_cap) reserve_frames(c, mo->frame_cap ? 2 * mo->frame_cap : 16);
     int k = mo->nframes++;
     mo->drive[k] = c->th[c->jd];
+    if (c->progress_on && !c->cancelled) {
+        double span = fabs(c->prog_to - c->prog_from);
+        double f = span > 0.0 ? fmin(1.0, fabs(c->th[c->jd] - c->prog_from) / span) : 1.0;
+        if (!c->progress(f, c->progress_user)) c->cancelled = true;
+    }
     double *ang = mo->angles + (size_t)k * (size_t)(m->edge_count + 1);
     ori__kin_joints_to_edges(m, c->th, ang);
     // A crease may end a hair beyond ±π (a fully folded state, within ORI_TOL_FOLD_SIGN_RAD):
@@ -380,6 +393,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
     bool first = true;
     for (;;) {
         s = c->th[c->jd];
+        if (c->cancelled) break; // the progress callback asked to stop (ori_motion_solve fails)
         if (s == s1 && (!rec || target == s1)) break;
         double dist = fabs(target - s);
         // Within the escape the prediction does not depend on the step: go straight to the
@@ -530,6 +544,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
     bool first = true;
     for (;;) {
         s = c->th[c->jd];
+        if (c->cancelled) break; // the progress callback asked to stop (ori_motion_solve fails)
         if (s == s1 && (!rec || target == s1)) break;
         double dist = fabs(target - s);
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
@@ -1035,8 +1050,18 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         // Frames: the start, one per step, the target (capped: a tiny step grows the arrays).
         double span = fabs(def->to_rad - c.th[jd]) / def->step_rad;
         reserve_frames(&c, span < ORI_KIN_RESERVE_FRAMES ? (int)span + 3 : ORI_KIN_RESERVE_FRAMES);
+        c.progress = def->progress;
+        c.progress_user = def->progress_user;
+        c.progress_on = def->progress != NULL;
+        c.prog_from = c.th[jd];
+        c.prog_to = def->to_rad;
         record(&c);
         lr = run_leg(&c, def->to_rad, def->step_rad, true);
+        c.progress_on = false;
+    }
+    if (c.cancelled) {
+        st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+        goto fail;
     }
     mo->block.kind = ORI_BLOCK_NONE;
     mo->block.edge = ORI_NULL_INDEX;
@@ -1127,6 +1152,10 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         mo->verdict = ORI_MOTION_VALID;
     }
 
+    // The solver (its CHOLMOD factor) is done: freed before the DOF's own factorization, so that
+    // one factor less is alive at the peak of a large fold.
+    ori__kin_solver_destroy(c.solver);
+    c.solver = NULL;
     // Free-mechanism DOF at the last frame.
     if (mo->nframes > 0) {
         double *ang = mo->angles + (size_t)(mo->nframes - 1) * (size_t)(m->edge_count + 1);
@@ -1155,11 +1184,14 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         }
         ori__free(pos);
     }
-    ori__kin_solver_destroy(c.solver);
     ori__free(c.col);
     ori__free(c.th);
     ori__free(c.worst);
     ori__free(c.worst_at);
+    if (def->progress && !def->progress(1.0, def->progress_user)) {
+        ori_motion_destroy(mo);
+        return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    }
     *out = mo;
     return ORI_OK;
 fail:

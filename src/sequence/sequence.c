@@ -359,7 +359,28 @@ static ori_status ori__sequence_target_fold(ori_record *r, int i, const ori_sequ
 ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const double *start,
                             ori_rigid fixed_pose, ori_record **out, ori_error *error)
 {
+    return ori_sequence_run_progress(s, m, start, fixed_pose, NULL, NULL, out, error);
+}
+
+// The progress of fold i of n: its own fraction mapped onto [i/n, (i+1)/n].
+typedef struct seq_progress {
+    ori_progress_fn *fn;
+    void *user;
+    int fold, folds;
+} seq_progress;
+
+static bool seq_progress_fn(double f, void *user)
+{
+    const seq_progress *p = user;
+    return p->fn(((double)p->fold + f) / (double)p->folds, p->user);
+}
+
+ori_status ori_sequence_run_progress(const ori_sequence *s, const ori_mechanism *m, const double *start,
+                                     ori_rigid fixed_pose, ori_progress_fn *progress, void *progress_user,
+                                     ori_record **out, ori_error *error)
+{
     ORI_ASSERT(s && m && out);
+    seq_progress sp = {progress, progress_user, 0, s->fold_count > 0 ? s->fold_count : 1};
     *out = NULL;
     ori_error_clear(error);
     ori_record *r = ori__calloc(1, sizeof *r);
@@ -391,6 +412,11 @@ ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const
             }
             pose = poses[f->fixed_face];
         }
+        sp.fold = i;
+        if (progress && !seq_progress_fn(0.0, &sp)) {
+            st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+            break;
+        }
         if (f->targets) { // a fold toward the targets (src/kinematics/targets.c)
             if ((st = ori__sequence_target_fold(r, i, f, angles, pose, poses, pos, error)) != ORI_OK) break;
             if (r->failed != ORI_NULL_INDEX) break;
@@ -398,9 +424,17 @@ ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const
             continue;
         }
         ori_motion_def d = fold_def(f, angles, pose);
+        if (progress) {
+            d.progress = seq_progress_fn;
+            d.progress_user = &sp;
+        }
         ori_motion *mo = NULL;
         ori_error e;
         st = ori_motion_solve(m, &d, &mo, &e);
+        if (st == ORI_ERR_LIMIT && progress && strcmp(e.message, "cancelled") == 0) {
+            ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+            break;
+        }
         if (st != ORI_OK) {
             char msg[256];
             ori_error_format(&e, msg, sizeof msg);
@@ -449,6 +483,7 @@ ori_status ori_sequence_run(const ori_sequence *s, const ori_mechanism *m, const
     ori__free(angles);
     ori__free(poses);
     ori__free(pos);
+    if (st == ORI_OK && progress && !progress(1.0, progress_user)) st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
     if (st != ORI_OK) {
         ori_record_destroy(r);
         return st;
@@ -473,6 +508,11 @@ void ori_record_destroy(ori_record *r)
 }
 
 int ori_record_fold_count(const ori_record *r) { ORI_ASSERT(r); return r->fold_count; }
+bool ori_record_fold_is_targets(const ori_record *r, int fold)
+{
+    ORI_ASSERT(r && fold >= 0 && fold < r->fold_count);
+    return r->folds[fold].targets;
+}
 int ori_record_completed_folds(const ori_record *r) { ORI_ASSERT(r); return r->completed; }
 ori_motion_verdict ori_record_verdict(const ori_record *r) { ORI_ASSERT(r); return r->verdict; }
 const char *ori_record_reason(const ori_record *r) { ORI_ASSERT(r); return r->reason; }

@@ -665,7 +665,8 @@ async function showContact(of) {
   state.contactOf = of;
   showCollision(col.faces, col.point);
   const at = of === 'sequence' ? `T = ${fmt(st.t, 6)}, fold ${st.fold}, ` : '';
-  const label = `first contact of the ${of}: ${at}drive ${fmt(st.drive_deg, 6)}°, faces ${col.faces.join(' and ')}`;
+  const where = col.progress !== undefined ? `progress ${fmt(col.progress, 6)}` : `drive ${fmt(st.drive_deg, 6)}°`;
+  const label = `first contact of the ${of}: ${at}${where}, faces ${col.faces.join(' and ')}`;
   $('state3d').textContent = label;
   if (of === 'sequence') {
     $('t-label').textContent = label;
@@ -849,7 +850,8 @@ function renderFolds() {
     const li = document.createElement('li');
     const failed = r && r.failed_fold === i + 1;
     li.className = failed ? 'failed' : '';
-    li.textContent = `${f.name ? f.name + ': ' : ''}fix ${f.fix}, drive ${f.drive} to ${fmt(f.to)}°, step ${fmt(f.step)}°` +
+    const what = f.percent !== undefined ? `every crease ${fmt(f.percent)} % toward its target` : `drive ${f.drive} to ${fmt(f.to)}°`;
+    li.textContent = `${f.name ? f.name + ': ' : ''}fix ${f.fix}, ${what}, step ${fmt(f.step)}°` +
       (f.lock && f.lock.length ? `, lock ${f.lock.join(',')}` : '') + (f.from !== undefined ? `, from ${fmt(f.from)}°` : '') +
       (failed ? ` — ${r.verdict}` : '');
     const x = document.createElement('button');
@@ -921,7 +923,9 @@ async function showTime(t) {
       state.shown = 'sequence';
       state.shownAngles = st.angles;
       plot.setCursor(want, st.angles);
-      const label = `T = ${fmt(want, 4)}: fold ${st.fold}, drive ${fmt(st.drive_deg, 4)}°, residual ${st.residual.toExponential(1)}`;
+      // a fold toward the targets has no drive angle (NaN): its time is its progress
+      const at = Number.isNaN(st.drive_deg) ? `${fmt(100 * (want - (st.fold - 1)), 4)} % toward the targets` : `drive ${fmt(st.drive_deg, 4)}°`;
+      const label = `T = ${fmt(want, 4)}: fold ${st.fold}, ${at}, residual ${st.residual.toExponential(1)}`;
       $('t-label').textContent = label;
       $('state3d').textContent = label;
       $('t-value').value = String(+want.toFixed(10));
@@ -1240,7 +1244,10 @@ async function start() {
       const r = await api.get('sequence');
       state.sequence = r;
       state.folds = r.folds.map((f) => {
-        const o = { fix: f.fix, drive: f.drive, to: f.to_deg, step: f.step_deg, lock: f.lock };
+        // a fold toward the targets ("percent") has no drive
+        const o = f.percent !== undefined && f.percent !== null
+          ? { fix: f.fix, percent: f.percent, step: f.step_deg, lock: f.lock }
+          : { fix: f.fix, drive: f.drive, to: f.to_deg, step: f.step_deg, lock: f.lock };
         if (f.name) o.name = f.name;
         if (f.from_deg !== null) o.from = f.from_deg;
         return o;
