@@ -37,15 +37,15 @@ static bool binary_requested(const studio_request *req)
 }
 
 // Index checks the library would otherwise assert on: face and edges of a fold.
-static bool check_fold_indices(const ori_mechanism *m, const char *where, int fix, int drive, const int *locks,
-                               int lock_count, studio_response *out)
+static bool check_fold_indices(const ori_mechanism *m, const char *where, int fix, int drive, bool targets,
+                               const int *locks, int lock_count, studio_response *out)
 {
     int faces = ori_mechanism_face_count(m), edges = ori_mechanism_edge_count(m);
     if (fix < 0 || fix >= faces) {
         studio_fail(out, 400, "%sfaces_vertices %d: no face %d (the pattern has faces 0 to %d)", where, fix, fix, faces - 1);
         return false;
     }
-    if (drive != ORI_NULL_INDEX && (drive < 0 || drive >= edges)) { // ORI_NULL_INDEX: a fold toward the targets
+    if (!(targets && drive == ORI_NULL_INDEX) && (drive < 0 || drive >= edges)) { // a fold toward the targets drives none
         studio_fail(out, 400, "%sedges_vertices %d: no edge %d (the pattern has edges 0 to %d)", where, drive, drive,
                     edges - 1);
         return false;
@@ -583,7 +583,7 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
         studio_fail_error(out, 400, &err);
         ok = false;
     }
-    ok = ok && check_fold_indices(m, "", f.spec.fix, f.spec.drive, f.spec.locks, f.spec.lock_count, out);
+    ok = ok && check_fold_indices(m, "", f.spec.fix, f.spec.drive, false, f.spec.locks, f.spec.lock_count, out);
     if (ok) {
         double start_deg = f.spec.has_from ? f.spec.from_deg : ori_rad_to_deg_output(angles[f.spec.drive]);
         double frames = frames_of(f.spec.to_deg - start_deg, f.spec.step_deg);
@@ -806,7 +806,7 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const 
         ori_sequence_fold f = ori_sequence_fold_at(seq, k);
         char where[32];
         snprintf(where, sizeof where, "folds %d: ", k);
-        ok = check_fold_indices(m, where, f.fixed_face, f.driven_edge, f.locked, f.locked_count, out);
+        ok = check_fold_indices(m, where, f.fixed_face, f.driven_edge, f.targets, f.locked, f.locked_count, out);
         if (!ok) break;
         // the start angle of a later fold is known only once the earlier ones ran: bound its range
         // (a fold toward the targets turns no crease by more than 360 deg, at most step per state)
