@@ -217,6 +217,32 @@ Test(linkage, refused, .init = test_leak_setup, .fini = test_leak_check)
     cr_assert_null(mo);
 }
 
+// Degenerate inputs: straight joints (collinear consecutive bars, on the hull or not) are handled
+// as already straight; a vertex exactly between two others where the pseudo-triangulation needs
+// general position (a regular zig-zag: its lower points on one line) is refused naming it.
+Test(linkage, collinear_inputs, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v2 sq[] = {{0, 0}, {1, 0}, {2, 0}, {2, 2}, {1, 1.2}, {0, 2}}; // notched, straight joint at (1, 0)
+    lcase c = make(sq, 6, true);
+    check_motion(&c, true);
+    free_case(&c);
+    ori_v2 ch[] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {0.5, 1}};
+    c = make(ch, 5, false);
+    check_motion(&c, false);
+    free_case(&c);
+    ori_v2 zz[] = {{0, 0}, {1, 1}, {2, 0}, {3, 1}, {4, 0}, {5, 1}, {6, 0}};
+    c = make(zz, 7, false);
+    ori_linkage_def def = ori_default_linkage_def();
+    def.coords = c.p, def.vertex_count = c.n, def.edges = c.e, def.edge_count = c.m;
+    ori_linkage_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_DEGENERATE, "%s", err.message);
+    cr_assert_eq(err.element, 2);
+    cr_assert(strstr(err.message, "between vertices 0 and 4"), "%s", err.message);
+    cr_assert_null(mo);
+    free_case(&c);
+}
+
 // The exact predicate decides what doubles cannot: nearly collinear points.
 Test(linkage, exact_orientation)
 {

@@ -996,6 +996,28 @@ static ori_status validate(const ori_linkage_def *def, int *order, bool *closed,
     return st;
 }
 
+// The input could not be completed to a pointed pseudo-triangulation: name a vertex lying on the
+// segment between two others (exactly), the degeneracy that prevents it (a hull point between two
+// hull points, or a point on the segment a diagonal would need). Keeps st when there is none.
+static ori_status refuse_collinear(const ori_linkage_def *def, ori_error *error, ori_status st)
+{
+    int n = def->vertex_count;
+    const ori_v2 *p = def->coords;
+    for (int v = 0; v < n; ++v)
+        for (int a = 0; a < n; ++a) {
+            if (a == v) continue;
+            for (int b = a + 1; b < n; ++b) {
+                if (b == v || ori__orient2d_exact(p[a], p[b], p[v]) != 0) continue;
+                // strictly between a and b
+                if (ori_v2_dot(ori_v2_sub(p[a], p[v]), ori_v2_sub(p[b], p[v])) >= 0.0) continue;
+                return ori__fail_at(error, ORI_ERR_DEGENERATE, "vertices_coords", v,
+                                    "lies exactly between vertices %d and %d on their line: such collinear points "
+                                    "are not handled (move the vertex off the line)", a, b);
+            }
+        }
+    return st;
+}
+
 static bool final_shape_ok(const ori_linkage_def *def, const int *order, bool closed, const ori_v2 *p, double scale)
 {
     int n = def->vertex_count;
@@ -1095,6 +1117,7 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     R.stride = 1;
     int max_events = def->max_events > 0 ? def->max_events : 100 * n + 100;
     st = run_motion(&R, max_events, error);
+    if (st == ORI_ERR_INTERNAL && M->result.events == 0) st = refuse_collinear(def, error, st);
     if (st == ORI_OK) {
         const ori_v2 *last = M->frames + (size_t)(M->frame_count - 1) * n;
         M->result.final_ok = final_shape_ok(def, order, closed, last, L.scale);
