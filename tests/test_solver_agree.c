@@ -71,7 +71,7 @@ static void compare(const ori_mechanism *m, ori_motion_def d, const char *what)
     cr_assert_eq(blocked, ori_motion_block_of(mo[1], &b[1]), "%s (%s): one solver stops, the other not: %s / %s", what, last_text, ori_motion_reason(mo[0]) ? ori_motion_reason(mo[0]) : "-", ori_motion_reason(mo[1]) ? ori_motion_reason(mo[1]) : "-");
     if (blocked) {
         cr_assert_eq(b[0].kind, b[1].kind, "%s (%s): stops of different kinds (%d, %d)", what, last_text, b[0].kind, b[1].kind);
-        // Both bisect the drive to ORI_KIN_STOP_DRIVE_RAD, but where the stop is a singular point
+        // Both bisect the drive to ORI_TOL_KIN_STOP_DRIVE_RAD, but where the stop is a singular point
         // (a limit of the drive, also where a crease reaches ±180° at a turning point) the
         // corrector only keeps about √ε there: the stop is compared to 1e-6 rad, its frame to 1e-3.
         cr_assert(fabs(b[0].drive_rad - b[1].drive_rad) <= 1e-6, "%s (%s): stops at %.12g° and %.12g°", what, last_text,

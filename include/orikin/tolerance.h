@@ -426,4 +426,32 @@
 /// of this: 1e-3 degree. Radians.
 #define ORI_TOL_SWEEP_SPLIT_RAD (1e-3 * 3.14159265358979323846 / 180.0)
 
+/// Linkage unfolding (Streinu): an event is bracketed to ORI_TOL_LINKAGE_EVENT_REL × the
+/// linkage's diagonal on the curve parameter (arc length) and, while the bracket allows, to
+/// ORI_TOL_LINKAGE_EVENT_SINE on the sine of the aligned angle. Unitless.
+#define ORI_TOL_LINKAGE_EVENT_REL 1e-12
+#define ORI_TOL_LINKAGE_EVENT_SINE 1e-12
+/// Linkage unfolding: bar lengths are projected back to this relative residual; Newton stalling
+/// at the rounding floor is accepted below ORI_TOL_LINKAGE_NEWTON_FLOOR. Unitless.
+#define ORI_TOL_LINKAGE_NEWTON 1e-14
+#define ORI_TOL_LINKAGE_NEWTON_FLOOR 1e-12
+/// Nets (orikin unfold): a polygon's vertices are coplanar within ORI_TOL_UNFOLD_PLANAR_REL ×
+/// the shape's diagonal; neighbours whose normals differ by less than ORI_TOL_UNFOLD_MERGE_RAD
+/// (radians) are one face; a penetration deeper than ORI_TOL_UNFOLD_OVERLAP_REL × the diagonal
+/// is an overlap of the flat net.
+#define ORI_TOL_UNFOLD_PLANAR_REL 1e-6
+#define ORI_TOL_UNFOLD_MERGE_RAD 1e-9
+#define ORI_TOL_UNFOLD_OVERLAP_REL 1e-9
+/// Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
+/// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop with a moving crease within
+/// ORI_TOL_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point; states found
+/// by that bisection fold a crease against its assignment only beyond ORI_TOL_KIN_STOP_SIGN_RAD
+/// (near a turning point they are accurate to about √ORI_TOL_KIN_STOP_DRIVE_RAD). Radians.
+#define ORI_TOL_KIN_STOP_DRIVE_RAD 1e-13
+#define ORI_TOL_KIN_STOP_LIMIT_RAD 1e-2
+#define ORI_TOL_KIN_STOP_SIGN_RAD 1e-6
+/// Closed-form 4R: |c| of the input–output equation within this of 1 is a double root (acos(c)
+/// ≈ √(2(1 − |c|)) magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad). Unitless.
+#define ORI_TOL_KIN_DOUBLE_ROOT 1e-12
+
 #endif

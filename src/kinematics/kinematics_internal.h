@@ -194,17 +194,11 @@ int ori__kin_solver_sweep_iterations(const kin_solver *s);
 int ori__kin_solver_nullity(kin_solver *s, const double *th);
 
 
-// Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
-// at most this many times, down to this interval (radians); a stop with a moving crease within
-// ORI_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point. (A crease folded
-// flat onto its neighbour is often also a turning point of the drive, where the numeric
-// corrector reaches the stop only to about √ of the drive's resolution.)
+// Where a motion stops: the drive is bisected at most this many times (tolerances:
+// ORI_TOL_KIN_STOP_* in tolerance.h). (A crease folded flat onto its neighbour is often also a
+// turning point of the drive, where the numeric corrector reaches the stop only to about √ of the
+// drive's resolution.)
 #define ORI_KIN_STOP_BISECTIONS 200
-#define ORI_KIN_STOP_DRIVE_RAD 1e-13
-#define ORI_KIN_STOP_LIMIT_RAD 1e-2
-// States found by that bisection fold a crease against its assignment only beyond this (radians):
-// near a turning point they are accurate to about √ORI_KIN_STOP_DRIVE_RAD.
-#define ORI_KIN_STOP_SIGN_RAD 1e-6
 // Creases whose component in the null vector at a singular stop is at least this fraction of
 // the largest are named as the singular set (the Jacobian is decomposed densely up to
 // ORI_KIN_SINGULAR_SET_MAX_COLS free creases).
@@ -287,9 +281,6 @@ typedef struct kin_spherical {
 // joints, and no other joint is free. Fills *sp.
 bool ori__kin_spherical_applicable(const ori_mechanism *m, const int *col_of_joint, int drive_joint,
                                    kin_spherical *sp);
-// |c| of the input–output equation within this of 1 is a double root (acos(c) ≈ √(2(1 − |c|))
-// magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad).
-#define ORI_KIN_DOUBLE_ROOT 1e-12
 
 // Newton iterations polishing each closed-form candidate on the loop equation itself.
 #define ORI_KIN_SPHERICAL_POLISH_MAX 4

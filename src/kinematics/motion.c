@@ -300,7 +300,7 @@ static void locate_stop(ctx *c, double s_out)
     int J = c->m->joint_count;
     double lo = c->th[c->jd], hi = s_out;
     double *x = ori__alloc(sizeof(double) * (size_t)(J + 1));
-    for (int it = 0; it < ORI_KIN_STOP_BISECTIONS && fabs(hi - lo) > ORI_KIN_STOP_DRIVE_RAD; ++it) {
+    for (int it = 0; it < ORI_KIN_STOP_BISECTIONS && fabs(hi - lo) > ORI_TOL_KIN_STOP_DRIVE_RAD; ++it) {
         double mid = 0.5 * (lo + hi);
         if (mid == lo || mid == hi) break;
         if (!state_at(c, mid, x) || beyond_limit(c, x)) {
@@ -311,14 +311,14 @@ static void locate_stop(ctx *c, double s_out)
         c->last_residual = -1.0;
         // Close to a singular stop the states are accurate to about √ of the drive's resolution
         // only: a crease touching 0 there is not a violation.
-        check_signs_within(c, ORI_KIN_STOP_SIGN_RAD);
+        check_signs_within(c, ORI_TOL_KIN_STOP_SIGN_RAD);
         lo = mid;
     }
     ori__free(x);
     c->blocked_at = lo;
     int j;
     double a = max_free_angle(c, c->th, &j);
-    c->block_kind = a >= ORI_PI - ORI_KIN_STOP_LIMIT_RAD ? ORI_BLOCK_CREASE_LIMIT : ORI_BLOCK_SINGULAR;
+    c->block_kind = a >= ORI_PI - ORI_TOL_KIN_STOP_LIMIT_RAD ? ORI_BLOCK_CREASE_LIMIT : ORI_BLOCK_SINGULAR;
     c->block_joint = c->block_kind == ORI_BLOCK_CREASE_LIMIT ? j : -1;
 }
 

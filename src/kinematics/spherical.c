@@ -195,7 +195,7 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         // Within rounding of a double root (the branches crossing, e.g. at the flat state of a
         // flat-foldable vertex) the computed acos(c) is √ of the rounding, not 0: the root is
         // double.
-        if (1.0 - fabs(c) <= ORI_KIN_DOUBLE_ROOT) c = c > 0.0 ? 1.0 : -1.0;
+        if (1.0 - fabs(c) <= ORI_TOL_KIN_DOUBLE_ROOT) c = c > 0.0 ? 1.0 : -1.0;
         double psi = atan2(B, A), delta = acos(c);
         x2s[0] = psi + delta;
         x2s[1] = psi - delta;

@@ -14,17 +14,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <orikin/tolerance.h>
 #include <orikin/unfold.h>
 
 #include "../core/core_internal.h"
 #include <klu.h>
 
 #include "unfold_internal.h"
-
-#define EVENT_TOL_D 1e-12    // root-finding bracket on the curve parameter (arc length), relative to the diagonal
-#define EVENT_TOL_SINE 1e-12 // and on the sine of the aligned angle, while the bracket allows
-#define NEWTON_TOL 1e-14   // relative length residual after projection
-#define NEWTON_FLOOR 1e-12 // accepted when Newton stalls at the rounding floor below this
 
 struct ori_linkage_motion {
     int n;
@@ -605,7 +601,7 @@ static bool project(lk_run *R, ori_v2 *p)
             worst = fmax(worst, fabs(f) / (len * fmax(len, 1e-2 * L->scale)));
         }
         R->rhs[L->ne] = R->rhs[L->ne + 1] = R->rhs[L->ne + 2] = R->rhs[L->ne + 3] = 0.0;
-        if (worst <= NEWTON_TOL || (worst <= NEWTON_FLOOR && worst > 0.5 * prev)) return true;
+        if (worst <= ORI_TOL_LINKAGE_NEWTON || (worst <= ORI_TOL_LINKAGE_NEWTON_FLOOR && worst > 0.5 * prev)) return true;
         prev = worst;
         if (!isfinite(worst) || worst > 1e-2) {
             return false;
@@ -845,7 +841,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             memcpy(p0, L->p, (size_t)n * sizeof *p0);
             memcpy(pm, p1, (size_t)n * sizeof *pm);
             int side = 0;
-            for (int it = 0; it < 300 && (hi - lo > EVENT_TOL_D * L->scale || (fabs(ghi) > EVENT_TOL_SINE && hi - lo > 1e-15 * L->scale)); ++it) {
+            for (int it = 0; it < 300 && (hi - lo > ORI_TOL_LINKAGE_EVENT_REL * L->scale || (fabs(ghi) > ORI_TOL_LINKAGE_EVENT_SINE && hi - lo > 1e-15 * L->scale)); ++it) {
                 double mid = glo < 0.0 && ghi > glo ? lo + (hi - lo) * (glo / (glo - ghi)) : 0.5 * (lo + hi);
                 if (!(mid > lo && mid < hi) || it % 4 == 3) mid = 0.5 * (lo + hi);
                 if (!state_at(R, p0, t0, mid, p1)) {
@@ -880,7 +876,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             // reflex for the exact predicate.
             {
                 lk_watch wf = watch[w_ev];
-                double extra = fmax(hi - lo, EVENT_TOL_D * L->scale);
+                double extra = fmax(hi - lo, ORI_TOL_LINKAGE_EVENT_REL * L->scale);
                 for (int it = 0; it < 20 && orient(L, wf.v, wf.a, wf.b) <= 0; ++it, extra *= 2.0) {
                     if (!state_at(R, p0, t0, hi + extra, p1)) break;
                     memcpy(L->p, p1, (size_t)n * sizeof *p1);

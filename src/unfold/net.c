@@ -11,14 +11,12 @@
 #include <orikin/collision.h>
 #include <orikin/fold.h>
 #include <orikin/kinematics.h>
+#include <orikin/tolerance.h>
 #include <orikin/unfold.h>
 
 #include "../core/core_internal.h"
 #include "unfold_internal.h"
 
-#define PLANAR_REL 1e-6   // coplanarity of a polygon's vertices, relative to the diagonal
-#define MERGE_RAD 1e-9    // neighbours whose normals differ less than this are one face
-#define OVERLAP_REL 1e-9  // penetration depth counted as overlap, relative to the diagonal
 
 struct ori_mesh {
     int nv, nf;
@@ -134,7 +132,7 @@ static ori_status build_mesh(ori_v3 *v, int nv, int *fstart, int *fv, int nf, or
         n = ori_v3_normalize(n);
         nrm[f] = n;
         for (int i = 0; i < k; ++i)
-            if (fabs(ori_v3_dot(ori_v3_sub(v[fc[i]], v[fc[0]]), n)) > PLANAR_REL * m->diag) {
+            if (fabs(ori_v3_dot(ori_v3_sub(v[fc[i]], v[fc[0]]), n)) > ORI_TOL_UNFOLD_PLANAR_REL * m->diag) {
                 st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f,
                                   "not planar: vertex %d is %.3g off the face's plane", fc[i],
                                   fabs(ori_v3_dot(ori_v3_sub(v[fc[i]], v[fc[0]]), n)));
@@ -164,7 +162,7 @@ static ori_status build_mesh(ori_v3 *v, int nv, int *fstart, int *fv, int nf, or
         if (j < i) continue;
         int f = h[i].face, g = h[j].face;
         double ang = atan2(ori_v3_norm(ori_v3_cross(nrm[f], nrm[g])), ori_v3_dot(nrm[f], nrm[g]));
-        if (ang < MERGE_RAD) {
+        if (ang < ORI_TOL_UNFOLD_MERGE_RAD) {
             int a = ori__uf_root(uf, f), b = ori__uf_root(uf, g);
             if (a != b) uf[a] = b;
         }
@@ -671,7 +669,7 @@ static int count_overlaps(const net_ctx *c, const int *tri_start, const int *tri
         b[f] = x;
     }
     qsort(b, (size_t)m->nf, sizeof *b, cmp_box);
-    double tol = OVERLAP_REL * m->diag;
+    double tol = ORI_TOL_UNFOLD_OVERLAP_REL * m->diag;
     int count = 0;
     for (int i = 0; i < m->nf && count < limit; ++i)
         for (int j = i + 1; j < m->nf && b[j].x0 < b[i].x1 - tol && count < limit; ++j) {
@@ -1183,7 +1181,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
             int pf = c.e[k].f == f ? c.e[k].g : c.e[k].f;
             int pp = piece[pf];
             bool clash = false;
-            double tol = OVERLAP_REL * m->diag;
+            double tol = ORI_TOL_UNFOLD_OVERLAP_REL * m->diag;
             for (int j = 0; j < i && !clash; ++j) {
                 int g = order[j];
                 if (piece[g] != pp) continue;
