@@ -133,13 +133,7 @@ static int run(int argc, char **argv)
                 json_object_set_new(o, "spanning_trees", json_integer(r.spanning_trees));
                 json_object_set_new(o, "overlap_free_trees", json_integer(r.overlap_free_trees));
             }
-            char *s = json_dumps(o, JSON_COMPACT | JSON_REAL_PRECISION(17));
-            ori_error e2;
-            char *norm = ori_json_normalize(s, false, &e2);
-            printf("%s\n", norm ? norm : s);
-            ori_buffer_free(norm);
-            free(s);
-            json_decref(o);
+            cli_print_json(o); // takes o
         } else {
             printf("%d faces (%d in the input): %s after %d tries\n", r.faces, r.input_faces,
                    r.pieces == 1 ? "one net without overlap" : "no single net found", r.tries);

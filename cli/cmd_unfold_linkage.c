@@ -167,13 +167,7 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "max_length_error", json_real(r.max_length_error));
             json_object_set_new(o, "min_distance_change", json_real(r.min_distance_change));
             json_object_set_new(o, "max_event_residual", json_real(r.max_event_residual));
-            char *s = json_dumps(o, JSON_COMPACT | JSON_REAL_PRECISION(17));
-            ori_error e2;
-            char *norm = ori_json_normalize(s, false, &e2);
-            printf("%s\n", norm ? norm : s);
-            ori_buffer_free(norm);
-            free(s);
-            json_decref(o);
+            cli_print_json(o); // takes o
         } else {
             printf("%s of %d vertices: %s after %d events (%d flips, %d joints straightened), %d frames\n", kind, n,
                    final, r.events, r.flips, r.straightened, r.frames);
