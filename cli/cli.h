@@ -127,11 +127,16 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
 // are usage errors. Returns CLI_EXIT_OK, or the exit code after printing the error.
 int cli_input_load(const char *cmd, const char *path, cli_input *in, ori_fold **doc, ori_pattern **pattern);
 // The help lines of the input options, for a command's -h text.
-#define CLI_INPUT_HELP                                                                                     \
+#define CLI_INPUT_HELP CLI_INPUT_HELP_FOLD CLI_INPUT_HELP_TOLERANCE CLI_INPUT_HELP_DRAWING
+// The same in parts, for a command whose own --tolerance means something else (check, layers):
+// it reads drawings with the default weld tolerance.
+#define CLI_INPUT_HELP_FOLD                                                                                \
     "  --frame N          FOLD input: frame to read (0 = top level, k = file_frames[k-1]); default 0\n"    \
-    "  --weld             FOLD input: merge vertices closer than the length tolerance\n"                  \
+    "  --weld             FOLD input: merge vertices closer than the length tolerance\n"
+#define CLI_INPUT_HELP_TOLERANCE                                                                           \
     "  --tolerance REL    drawing input: weld points closer than REL x the drawing's size (default\n"     \
-    "                     5e-5)\n"                                                                        \
+    "                     5e-5)\n"
+#define CLI_INPUT_HELP_DRAWING                                                                             \
     "  --gaps REL|auto    drawing input: join crease ends within REL x the drawing's size of another\n"   \
     "                     line (auto, the default: the width the lines are drawn with; 0: off)\n"        \
     "  --keep-collinear   drawing input: keep vertices that only join two collinear edges\n"             \

@@ -17,33 +17,34 @@ static void print_count(ori_mv_count c, int width)
 static int run(int argc, char **argv)
 {
     const char *path = NULL;
-    int frame = 0;
-    bool json = false, weld = false, has_frame = false, has_tol = false;
+    bool json = false, has_tol = false;
     double tol_deg = 0.0;
+    cli_seen seen = {0};
+    cli_input in;
+    cli_input_init(&in);
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--json") == 0) json = true;
-        else if (strcmp(argv[i], "--tolerance") == 0) {
-            if (has_tol) return cli_usage("check", "--tolerance given twice");
+        else if (strcmp(argv[i], "--tolerance") == 0) { // degrees here: before the input options' --tolerance
             has_tol = true;
-            const char *v = cli_option_value("check", argc, argv, &i);
+            const char *v = cli_option_once("check", argc, argv, &i, &seen);
             if (!v) return CLI_EXIT_USAGE;
             if (!cli_parse_double(v, &tol_deg) || tol_deg < 0.0 || tol_deg > 1.0)
                 return cli_usage("check", "--tolerance needs an angle in degrees in [0, 1], got '%s'", v);
+        } else {
+            int r = cli_input_option("check", argc, argv, &i, &in, &seen);
+            if (r < 0) return -r;
+            if (r > 0) continue;
+            if (argv[i][0] == '-' && argv[i][1] != '\0') return cli_usage("check", "unknown option %s", argv[i]);
+            if (path) return cli_usage("check", "one FILE only");
+            path = argv[i];
         }
-        else if (strcmp(argv[i], "--weld") == 0) weld = true;
-        else if (strcmp(argv[i], "--frame") == 0) {
-            if (has_frame) return cli_usage("check", "--frame given twice");
-            has_frame = true;
-            if (cli_option_frame("check", argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') return cli_usage("check", "unknown option %s", argv[i]);
-        else if (!path) path = argv[i];
-        else return cli_usage("check", "one FILE only");
     }
     if (!path) return cli_usage("check", "missing FILE");
     ori_fold *doc;
     ori_pattern *p;
-    int rc = cli_load_pattern("check", path, frame, weld, &doc, &p);
+    int rc = cli_input_load("check", path, &in, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
+    int frame = in.frame;
 
     cli_check chk;
     cli_check_run(p, path, has_tol, tol_deg, &chk);
@@ -123,16 +124,16 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_check = {
     "check",
     "local flat-foldability of each interior vertex (Kawasaki, Maekawa, BLB, C)",
-    "usage: orikin check FILE [--tolerance DEG] [--frame N] [--json] [--weld]\n"
+    "usage: orikin check FILE [--tolerance DEG] [--json] [input options]\n"
     "\n"
-    "Check every interior vertex of a FOLD crease pattern (or folded form) for local flat-\n"
-    "foldability with its mountain-valley assignment: Kawasaki (alternating sector sum 0, even\n"
-    "degree), Maekawa (M - V = +-2), the generalised big-little-big rule, an exact test of the\n"
-    "assignment (crimp reduction), and Hull's count C of valid assignments. F and J edges are\n"
-    "ignored (their sectors merge); U creases count as free: a vertex passes when some choice\n"
-    "of M/V for them folds flat. A vertex whose sectors do not sum to 360 degrees is a cone.\n"
-    "Prints a table and every broken rule, then a verdict. Exit 0 when every interior vertex\n"
-    "is locally flat-foldable, 1 when not, 3 for an invalid file.\n"
+    "Check every interior vertex of a crease pattern (FOLD, or a drawing: SVG, OPX, CP; or a\n"
+    "folded form) for local flat-foldability with its mountain-valley assignment: Kawasaki\n"
+    "(alternating sector sum 0, even degree), Maekawa (M - V = +-2), the generalised big-little-\n"
+    "big rule, an exact test of the assignment (crimp reduction), and Hull's count C of valid\n"
+    "assignments. F and J edges are ignored (their sectors merge); U creases count as free: a\n"
+    "vertex passes when some choice of M/V for them folds flat. A vertex whose sectors do not\n"
+    "sum to 360 degrees is a cone. Prints a table and every broken rule, then a verdict. Exit\n"
+    "0 when every interior vertex is locally flat-foldable, 1 when not, 3 for an invalid file.\n"
     "\n"
     "Drawings from other tools carry rounded coordinates. With --tolerance DEG a vertex that\n"
     "misses Kawasaki, the 360 degree sum or an equality of sectors by at most DEG is checked as\n"
@@ -143,7 +144,6 @@ const cli_command cli_cmd_check = {
     "options:\n"
     "  --tolerance DEG  accept vertices within DEG degrees of an exact flat-foldable one\n"
     "              (0 to 1; default 0: exact up to rounding)\n"
-    "  --frame N   frame to check (0 = top level, k = file_frames[k-1]); default 0\n"
     "  --json      print {\"file\", \"frame\", \"locally_flat_foldable\", \"interior_vertices\",\n"
     "              \"failed_vertices\", \"vertices\": [{\"vertex\", \"degree\", \"creases\",\n"
     "              \"assignment\", \"sectors_deg\", \"sector_sum_deg\", \"kawasaki\", \"maekawa\",\n"
@@ -152,7 +152,10 @@ const cli_command cli_cmd_check = {
     "              [{\"vertex\", \"rule\", \"edge\", \"detail\"}], \"tolerance_deg\",\n"
     "              \"within_tolerance_vertices\", \"max_deviation_deg\", \"rounding_failures\", \"hint\"}\n"
     "              (see docs/verification.md)\n"
-    "  --weld      merge vertices closer than the length tolerance (renumbers vertices)\n"
+    "\n"
+    "input options (a drawing is read with the default weld tolerance: use 'orikin convert\n"
+    "--tolerance REL' first to choose another):\n"
+    CLI_INPUT_HELP_FOLD CLI_INPUT_HELP_DRAWING
     "\n"
     "example: orikin check examples/patterns/degree4-vertex.fold\n",
     run,

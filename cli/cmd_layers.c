@@ -84,19 +84,18 @@ static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *svg = NULL, *state = NULL;
     bool json = false, count_only = false;
-    bool seen_frame = false, seen_limit = false, seen_threads = false, seen_tol = false;
+    bool seen_limit = false, seen_threads = false, seen_tol = false;
     double tol = ORI_TOL_LAYERS_SNAP_REL;
-    int frame = 0, threads = 1;
+    int threads = 1;
+    cli_seen seen = {0};
+    cli_input in;
+    cli_input_init(&in);
     uint64_t limit = ORI_LAYERS_NO_LIMIT;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (strcmp(a, "--json") == 0) json = true;
         else if (strcmp(a, "--count") == 0) count_only = true;
-        else if (strcmp(a, "--frame") == 0) {
-            if (seen_frame) return cli_usage(CMD, "--frame given twice");
-            seen_frame = true;
-            if (cli_option_frame(CMD, argc, argv, &i, &frame) != CLI_EXIT_OK) return CLI_EXIT_USAGE;
-        } else if (strcmp(a, "--state") == 0) {
+        else if (strcmp(a, "--state") == 0) {
             if (state) return cli_usage(CMD, "--state given twice");
             state = cli_option_value(CMD, argc, argv, &i);
             if (!state) return CLI_EXIT_USAGE;
@@ -130,9 +129,15 @@ static int run(int argc, char **argv)
             if (svg) return cli_usage(CMD, "--svg given twice");
             svg = cli_option_value(CMD, argc, argv, &i);
             if (!svg) return CLI_EXIT_USAGE;
-        } else if (a[0] == '-' && a[1] != '\0') return cli_usage(CMD, "unknown option %s", a);
-        else if (!path) path = a;
-        else return cli_usage(CMD, "one FILE only");
+        } else {
+            // after this command's own --tolerance (a snapping length), the input options
+            int r = cli_input_option(CMD, argc, argv, &i, &in, &seen);
+            if (r < 0) return -r;
+            if (r > 0) continue;
+            if (a[0] == '-' && a[1] != '\0') return cli_usage(CMD, "unknown option %s", a);
+            if (path) return cli_usage(CMD, "one FILE only");
+            path = a;
+        }
     }
     if (!path) return cli_usage(CMD, "missing FILE");
     if (limit != ORI_LAYERS_NO_LIMIT && (state || out || svg))
@@ -141,8 +146,9 @@ static int run(int argc, char **argv)
 
     ori_fold *doc;
     ori_pattern *p;
-    int rc = cli_load_pattern(CMD, path, frame, false, &doc, &p);
+    int rc = cli_input_load(CMD, path, &in, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
+    int frame = in.frame;
     // A crease pattern may carry its folded placement; a folded form's coordinates are folded
     // already (its transforms would apply to the unfolded coordinates, which it lacks).
     bool bad = false;
@@ -335,7 +341,7 @@ const cli_command cli_cmd_layers = {
     "layers",
     "global flat-foldability: count every flat-folded state (layer order), name the conflict",
     "usage: orikin layers FILE [--count] [--state K] [--limit N] [-o OUT.fold] [--svg OUT.svg]\n"
-    "                   [--frame N] [--tolerance R] [--threads N] [--json]\n"
+    "                   [--tolerance R] [--threads N] [--json] [input options]\n"
     "\n"
     "Fold the crease pattern flat (or take a flat folded form, or faces_flatFoldTransform when\n"
     "the frame has it), build the overlap structure of the folded faces, one variable per pair\n"
@@ -357,7 +363,6 @@ const cli_command cli_cmd_layers = {
     "                 vertices_coords, edges_foldAngle, resolved edges_assignment, faceOrders,\n"
     "                 faces_flatFoldTransform, faces_flatFoldOrientation\n"
     "  --svg OUT.svg  draw the crease pattern and state K seen from above\n"
-    "  --frame N      frame to read (0 = top level, k = file_frames[k-1]); default 0\n"
     "  --tolerance R  snapping length of the folded image relative to its diagonal, in (0, 0.01];\n"
     "                 default 1e-8. A larger one also accepts Kawasaki up to R radians (for\n"
     "                 drawings with rounded coordinates; use it knowingly)\n"
@@ -368,6 +373,10 @@ const cli_command cli_cmd_layers = {
     "                 \"involved_faces\" (with those whose orders forced it), \"detail\", and \"vertex\"\n"
     "                 for a vertex that is not locally flat-foldable}}; with --state\n"
     "                 also \"state\" and \"faceOrders\"\n"
+    "\n"
+    "input options (FILE a FOLD file or a drawing: SVG, OPX, CP, read with the default weld\n"
+    "tolerance; 'orikin convert --tolerance REL' first to choose another):\n"
+    CLI_INPUT_HELP_FOLD CLI_INPUT_HELP_DRAWING
     "\n"
     "example: orikin layers examples/patterns/degree6-vertex.fold --state 1 --svg vertex.svg\n",
     run,
