@@ -53,76 +53,12 @@ static int parse(int argc, char **argv, collide_args *a)
     return cli_state_finish("collide", &a->state);
 }
 
-static json_t *v3_json(ori_v3 v) { return json_pack("[fff]", v.x, v.y, v.z); }
-
-static json_t *pairs_json(const ori_collider *c, bool colliding)
-{
-    json_t *arr = json_array();
-    for (int i = 0; i < ori_collider_contact_count(c); ++i) {
-        ori_contact k = ori_collider_contact(c, i);
-        bool take = colliding ? k.collides : k.kind == ORI_CONTACT_TOUCHING;
-        if (take) json_array_append_new(arr, json_pack("[ii]", k.face_a, k.face_b));
-    }
-    return arr;
-}
-
-static const char *kind_name(ori_contact_kind k)
-{
-    return k == ORI_CONTACT_PENETRATING ? "penetrating" : k == ORI_CONTACT_TOUCHING ? "touching" : "near";
-}
-
 static void print_json(const collide_args *a, const cli_state *s, const ori_collider *c, const ori_collision_result *r,
                        const ori_cloud_result *cr, double cloud_distance)
 {
-    json_t *o = json_object();
-    json_object_set_new(o, "file", json_string(s->path));
-    json_object_set_new(o, "frame", s->source == CLI_STATE_FRAME ? json_integer(a->state.frame) : json_null());
-    json_object_set_new(o, "state", json_string(s->label));
-    json_object_set_new(o, "posed", json_boolean(s->source != CLI_STATE_FRAME || s->cp_frame));
-    json_object_set_new(o, "faces", json_integer(ori_collider_face_count(c)));
-    json_object_set_new(o, "collides", json_boolean(r->collides));
-    json_object_set_new(o, "pairs", pairs_json(c, true));
-    json_object_set_new(o, "touching", pairs_json(c, false));
-    json_object_set_new(o, "min_clearance", isfinite(r->min_clearance) ? json_real(r->min_clearance) : json_null());
-    json_object_set_new(o, "witness", r->has_witness ? v3_json(r->witness) : json_null());
-    json_object_set_new(o, "clearance_faces", r->clearance_faces[0] >= 0
-                                                  ? json_pack("[ii]", r->clearance_faces[0], r->clearance_faces[1])
-                                                  : json_null());
-    json_object_set_new(o, "clearance", json_real(a->clearance));
-    json_object_set_new(o, "tolerance", json_real(r->tolerance));
-    json_t *contacts = json_array();
-    for (int i = 0; i < ori_collider_contact_count(c); ++i) {
-        ori_contact k = ori_collider_contact(c, i);
-        json_t *x = json_object();
-        json_object_set_new(x, "faces", json_pack("[ii]", k.face_a, k.face_b));
-        json_object_set_new(x, "kind", json_string(kind_name(k.kind)));
-        json_object_set_new(x, "adjacent", json_boolean(k.adjacent));
-        json_object_set_new(x, "stacked", json_boolean(k.stacked));
-        json_object_set_new(x, "point", v3_json(k.point));
-        if (k.kind == ORI_CONTACT_NEAR) json_object_set_new(x, "distance", json_real(k.distance));
-        json_array_append_new(contacts, x);
-    }
-    json_object_set_new(o, "contacts", contacts);
-    json_object_set_new(o, "candidate_pairs", json_integer(r->candidate_pairs));
-    if (cr) {
-        json_t *cl = json_object();
-        json_object_set_new(cl, "spacing", json_real(a->spacing));
-        json_object_set_new(cl, "distance", json_real(cloud_distance));
-        json_object_set_new(cl, "points", json_integer(cr->points));
-        json_object_set_new(cl, "point_pairs", json_integer(cr->point_pairs));
-        json_object_set_new(cl, "min_distance", isfinite(cr->min_distance) ? json_real(cr->min_distance) : json_null());
-        json_t *fp = json_array();
-        for (int i = 0; i < ori_collider_cloud_pair_count(c); ++i) {
-            ori_cloud_pair p = ori_collider_cloud_pair(c, i);
-            json_array_append_new(fp, json_pack("{s:[ii],s:I,s:f}", "faces", p.face_a, p.face_b, "point_pairs",
-                                                (json_int_t)p.point_pairs, "distance", p.distance));
-        }
-        json_object_set_new(cl, "faces", fp);
-        json_object_set_new(o, "cloud", cl);
-    } else {
-        json_object_set_new(o, "cloud", json_null());
-    }
-    cli_print_json(o);
+    cli_print_json(cli_collide_json(s->path, s->source == CLI_STATE_FRAME ? a->state.frame : -1, s->label,
+                                    s->source != CLI_STATE_FRAME || s->cp_frame, c, r, a->clearance, cr, a->spacing,
+                                    cloud_distance));
 }
 
 static void list_pairs(const ori_collider *c, ori_contact_kind kind)

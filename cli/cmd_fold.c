@@ -10,146 +10,11 @@
 #include "output_guard.h"
 #include "progress.h"
 
-static json_t *v3_json(ori_v3 v)
-{
-    return json_pack("[fff]", v.x, v.y, v.z);
-}
-
-static json_t *edges_json(const int *e, int n)
-{
-    json_t *a = json_array();
-    for (int i = 0; i < n; ++i) json_array_append_new(a, json_integer(e[i]));
-    return a;
-}
-
-static const char *solver_name(ori_motion_stats st)
-{
-    return st.analytic ? "analytic" : st.sweep ? "numeric-sweep" : st.sparse ? "numeric-sparse" : "numeric-dense";
-}
-
-static json_t *chain_json(const int *edges, const ori_v3 *q, const ori_v3 *w, int n)
-{
-    json_t *a = json_array();
-    for (int i = 0; i < n; ++i)
-        json_array_append_new(a, json_pack("{s:i,s:o,s:o}", "edge", edges[i], "q", v3_json(q[i]), "omega", v3_json(w[i])));
-    return a;
-}
-
-// Rigid folding is exact: a crease pattern drawn with rounded coordinates usually misses
-// Kawasaki by a little at many vertices, and such a sheet is rigid even though its exact
-// version folds. When a fold is not rigidly foldable, say so if that is the likely cause.
-#define HINT_NEAR_KAWASAKI_RAD 1e-3
-
-static int near_kawasaki_misses(const ori_pattern *p, double *worst)
-{
-    int n = 0;
-    *worst = 0.0;
-    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
-        if (!ori_pattern_vertex_is_interior(p, v)) continue;
-        ori_vertex_report r;
-        ori_flat_check_vertex(p, v, &r);
-        if (r.degree % 2 || r.kawasaki || fabs(r.kawasaki_rad) > HINT_NEAR_KAWASAKI_RAD) continue;
-        n++;
-        *worst = fmax(*worst, fabs(r.kawasaki_rad));
-    }
-    return n;
-}
-
-static char *rounding_hint(const cli_kin *k, const ori_motion *mo, char *buf, size_t size)
-{
-    if (ori_motion_verdict_of(mo) != ORI_MOTION_NOT_RIGIDLY_FOLDABLE) return NULL;
-    double worst;
-    int n = near_kawasaki_misses(k->flat, &worst);
-    if (n == 0) return NULL;
-    snprintf(buf, size,
-             "%d interior vertices miss Kawasaki by up to %.2g rad (rounded coordinates?): rigid folding is "
-             "exact, and such a sheet is rigid even where its exact design folds; orikin check lists them",
-             n, worst);
-    return buf;
-}
-
 static void print_json(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col,
                        const char *lock_hint)
 {
-    const ori_mechanism *m = k->mech;
-    int E = ori_mechanism_edge_count(m);
-    ori_motion_verdict v = ori_motion_verdict_of(mo);
-    ori_motion_stats st = ori_motion_stats_of(mo);
-    json_t *out = json_object();
-    json_object_set_new(out, "file", json_string(a->path));
-    char hit[256];
-    cli_collision_describe(col, false, hit, sizeof hit);
-    json_object_set_new(out, "valid", json_boolean(v == ORI_MOTION_VALID && !cli_collides(col)));
-    json_object_set_new(out, "verdict", json_string(cli_collides(col) ? "collision" : ori_motion_verdict_name(v)));
-    const char *why = cli_collides(col) ? hit : ori_motion_reason(mo);
-    json_object_set_new(out, "reason", why ? json_string(why) : json_null());
-    json_object_set_new(out, "collision", cli_collision_json(col, false));
-    char hint[512];
-    const char *h = rounding_hint(k, mo, hint, sizeof hint);
-    if (!h && lock_hint && lock_hint[0]) h = lock_hint; // underdetermined: a lock set (fold_modes.c)
-    json_object_set_new(out, "hint", h ? json_string(h) : json_null());
-    json_object_set_new(out, "rigidly_foldable", json_boolean(v != ORI_MOTION_NOT_RIGIDLY_FOLDABLE));
-    json_object_set_new(out, "dof", cli_motion_dof_json(mo));
-    json_object_set_new(out, "grubler", json_integer(ori_mechanism_grubler(m)));
-    json_object_set_new(out, "solver", json_string(solver_name(st)));
-    json_object_set_new(out, "fixed_face", json_integer(a->fix));
-    json_object_set_new(out, "drive", json_integer(a->drive));
-    json_object_set_new(out, "to_deg", json_real(a->to_deg));
-    json_object_set_new(out, "step_deg", json_real(a->step_deg));
-    json_object_set_new(out, "locked", edges_json(a->locks, a->lock_count));
-    ori_vertex_split sp;
-    bool split = ori_motion_split(mo, &sp);
-    if (split) {
-        json_object_set_new(out, "frame_a", edges_json(sp.frame_a, 2));
-        json_object_set_new(out, "frame_b", edges_json(sp.frame_b, sp.frame_b_count));
-        json_object_set_new(out, "surrounding", edges_json(sp.surrounding, sp.surrounding_count));
-        json_t *s = json_object();
-        json_object_set_new(s, "vertex", json_integer(sp.vertex));
-        json_object_set_new(s, "end_effector_vertex", json_integer(sp.end_effector_vertex));
-        json_object_set_new(s, "origin_a", v3_json(sp.origin_a));
-        json_object_set_new(s, "origin_b", v3_json(sp.origin_b));
-        json_object_set_new(s, "d", v3_json(sp.d));
-        json_object_set_new(s, "chain_a", chain_json(sp.frame_a, sp.q_a, sp.omega_a, 2));
-        json_object_set_new(s, "chain_b", chain_json(sp.frame_b, sp.q_b, sp.omega_b, sp.frame_b_count));
-        json_object_set_new(out, "split", s);
-    }
-    json_t *off = json_array();
-    for (int i = 0; i < ori_motion_violation_count(mo); ++i) {
-        ori_crease_violation fv = ori_motion_violation(mo, i);
-        char as[2] = {ori_assignment_to_char(fv.assignment), '\0'};
-        json_array_append_new(off, json_pack("{s:i,s:s,s:f,s:f}", "edge", fv.edge, "assignment", as, "angle_deg",
-                                             ori_rad_to_deg_output(fv.angle_rad), "at_drive_deg", ori_rad_to_deg_output(fv.drive_rad)));
-    }
-    json_object_set_new(out, "offending_edges", off);
-    json_object_set_new(out, "blocked", cli_motion_block_json(mo));
-    json_object_set_new(out, "partial", json_boolean(cli_motion_partial(mo, col)));
-    json_t *frames = json_array();
-    for (int f = 0; f < cli_collide_frames(col, ori_motion_frame_count(mo)); ++f) {
-        json_t *fr = json_object();
-        json_object_set_new(fr, "drive_deg", json_real(ori_rad_to_deg_output(ori_motion_frame_drive(mo, f))));
-        const double *ang = ori_motion_frame_angles(mo, f);
-        json_t *angs = json_array();
-        for (int e = 0; e < E; ++e) json_array_append_new(angs, json_real(ori_rad_to_deg_output(ang[e])));
-        json_object_set_new(fr, "fold_angles_deg", angs);
-        json_object_set_new(fr, "residual", json_real(ori_motion_frame_residual(mo, f)));
-        double *alt = malloc(sizeof(double) * (size_t)(E + 1));
-        if (ori_motion_frame_other_branch(mo, f, alt)) {
-            json_t *oth = json_array();
-            for (int e = 0; e < E; ++e) json_array_append_new(oth, json_real(ori_rad_to_deg_output(alt[e])));
-            json_object_set_new(fr, "other_branch_deg", oth);
-        }
-        free(alt);
-        ori_v3 ea, eb;
-        if (ori_motion_frame_end_effector(mo, f, &ea, &eb))
-            json_object_set_new(fr, "end_effector", json_pack("{s:o,s:o}", "frame_a", v3_json(ea), "frame_b", v3_json(eb)));
-        json_array_append_new(frames, fr);
-    }
-    json_object_set_new(out, "frames", frames);
-    json_object_set_new(out, "stats",
-                        json_pack("{s:i,s:i,s:i,s:i,s:i,s:f}", "steps", st.steps, "rejected_steps", st.rejected_steps,
-                                  "newton_iterations", st.newton_iterations, "sweep_iterations", st.sweep_iterations,
-                                  "factorizations", st.factorizations, "max_residual", st.max_residual));
-    cli_print_json(out);
+    cli_fold_fields f = {a->path, a->fix, a->drive, a->to_deg, a->step_deg, a->locks, a->lock_count};
+    cli_print_json(cli_fold_json(&f, k->flat, k->mech, mo, col, lock_hint));
 }
 
 static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motion *mo, const cli_collision *col)
@@ -211,7 +76,7 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
     else if (ori_motion_reason(mo)) printf(": %s", ori_motion_reason(mo));
     printf("\n");
     char hint[512];
-    if (rounding_hint(k, mo, hint, sizeof hint)) printf("note: %s\n", hint);
+    if (cli_fold_rounding_hint(k->flat, mo, hint, sizeof hint)) printf("note: %s\n", hint);
     if (F > 0) printf("dof at the last frame %d (Grübler-Kutzbach count %d)\n", ori_motion_dof(mo), ori_mechanism_grubler(m));
 }
 

@@ -52,62 +52,6 @@ static json_t *angles_json(const double *a, int n)
     return arr;
 }
 
-static json_t *fold_json(const ori_sequence_fold *f, int i)
-{
-    json_t *o = json_object();
-    json_object_set_new(o, "fold", json_integer(i + 1));
-    json_object_set_new(o, "name", f->name[0] ? json_string(f->name) : json_null());
-    json_object_set_new(o, "fix", json_integer(f->fixed_face));
-    json_object_set_new(o, "drive", f->targets ? json_null() : json_integer(f->driven_edge));
-    if (f->targets) json_object_set_new(o, "percent", json_real(100.0 * f->fraction)); // folds toward the targets only
-    json_t *lock = json_array();
-    for (int k = 0; k < f->locked_count; ++k) json_array_append_new(lock, json_integer(f->locked[k]));
-    json_object_set_new(o, "lock", lock);
-    json_object_set_new(o, "from_deg", f->has_from ? json_real(ori_rad_to_deg_output(f->from_rad)) : json_null());
-    json_object_set_new(o, "to_deg", json_real(ori_rad_to_deg_output(f->to_rad)));
-    json_object_set_new(o, "step_deg", json_real(ori_rad_to_deg_output(f->step_rad)));
-    return o;
-}
-
-static void print_record_json(const seq_args *a, const char *pattern, const ori_sequence *s, const ori_record *r, int E,
-                              const cli_collision *col)
-{
-    json_t *o = json_object();
-    char hit[256];
-    cli_collision_describe(col, true, hit, sizeof hit);
-    json_object_set_new(o, "sequence", json_string(a->path));
-    json_object_set_new(o, "pattern", json_string(pattern));
-    const char *why = cli_collides(col) ? hit : ori_record_reason(r);
-    json_object_set_new(o, "valid", json_boolean(ori_record_verdict(r) == ORI_MOTION_VALID && !cli_collides(col)));
-    json_object_set_new(o, "verdict",
-                        json_string(cli_collides(col) ? "collision" : ori_motion_verdict_name(ori_record_verdict(r))));
-    json_object_set_new(o, "reason", why ? json_string(why) : json_null());
-    json_object_set_new(o, "collision", cli_collision_json(col, true));
-    int failed = ori_record_failed_fold(r);
-    json_object_set_new(o, "failed_fold", failed >= 0 ? json_integer(failed + 1) : json_null());
-    json_object_set_new(o, "duration", json_integer(ori_record_completed_folds(r)));
-    json_object_set_new(o, "partial_frames", json_integer(ori_record_partial_frames(r)));
-    json_t *folds = json_array();
-    for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
-        ori_sequence_fold f = ori_sequence_fold_at(s, i);
-        json_array_append_new(folds, fold_json(&f, i));
-    }
-    json_object_set_new(o, "folds", folds);
-    json_t *frames = json_array();
-    for (int f = 0; f < cli_collide_frames(col, ori_record_frame_count(r)); ++f) {
-        json_t *fr = json_object();
-        json_object_set_new(fr, "t", json_real(ori_record_frame_time(r, f)));
-        json_object_set_new(fr, "fold", json_integer(ori_record_frame_fold(r, f) + 1));
-        bool tg = ori_sequence_fold_at(s, ori_record_frame_fold(r, f)).targets; // progress, not an angle
-        json_object_set_new(fr, "drive_deg", tg ? json_null() : json_real(ori_rad_to_deg_output(ori_record_frame_drive(r, f))));
-        json_object_set_new(fr, "fold_angles_deg", angles_json(ori_record_frame_angles(r, f), E));
-        json_object_set_new(fr, "residual", json_real(ori_record_frame_residual(r, f)));
-        json_array_append_new(frames, fr);
-    }
-    json_object_set_new(o, "frames", frames);
-    cli_print_json(o);
-}
-
 static void print_record_text(const char *pattern, const ori_sequence *s, const ori_record *r, int E,
                               const cli_collision *col)
 {
@@ -316,7 +260,7 @@ static int run(int argc, char **argv)
             else if (!clean)
                 fprintf(stderr, "orikin sequence: %s: collision at t = %.9g: %s\n", a.path, col.ev.time, hit);
         } else {
-            if (a.json) print_record_json(&a, pattern, s, r, E, &col);
+            if (a.json) cli_print_json(cli_record_json(a.path, pattern, s, r, E, &col));
             else print_record_text(pattern, s, r, E, &col);
             rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
             // A blocked fold writes the sequence up to its stop, marked "orikin:partial".

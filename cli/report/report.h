@@ -6,7 +6,7 @@
 // Functions: cli_collision_check_motion, cli_collision_check_record, cli_collides,
 // cli_collide_frames, cli_collision_json, cli_collision_describe, cli_check_run, cli_check_json,
 // cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json, cli_lock_text,
-// cli_lock_hint.
+// cli_lock_hint, cli_fold_rounding_hint, cli_fold_json, cli_record_json, cli_collide_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -47,6 +47,14 @@ json_t *cli_collision_json(const cli_collision *c, bool with_fold);
 // One line: "faces 3 and 9 penetrate at step 14, drive 131.810315 deg, at (x, y, z)".
 void cli_collision_describe(const cli_collision *c, bool with_fold, char *buf, size_t size);
 
+// orikin collide --json of one state: {file, frame (null: not a file's frame), state (when not
+// NULL: how the state was made), posed, faces, collides, pairs, touching, min_clearance, witness,
+// clearance_faces, clearance, tolerance, contacts, candidate_pairs, cloud (null without cr)}
+// (docs/collision.md): a new object the caller owns.
+json_t *cli_collide_json(const char *file, int frame, const char *state, bool posed, const ori_collider *c,
+                         const ori_collision_result *r, double clearance, const ori_cloud_result *cr, double cloud_spacing,
+                         double cloud_distance);
+
 // --- where a fold stops (orikin fold; POST /api/fold) ---------------------------------------
 
 // {"kind": "crease_limit"|"singular", "drive_deg", "edge" (or null), "edge_angle_deg" (or null),
@@ -56,6 +64,31 @@ json_t *cli_motion_block_json(const ori_motion *mo);
 bool cli_motion_partial(const ori_motion *mo, const cli_collision *col);
 // The free mechanism's DOF at the last frame, or null when there is no frame.
 json_t *cli_motion_dof_json(const ori_motion *mo);
+
+// --- a fold's and a sequence's answer (orikin fold/sequence --json; POST /api/fold, /api/sequence)
+
+// What the fold was asked to do: its fields in the answer.
+typedef struct cli_fold_fields {
+    const char *file;          // as the command names it
+    int fix, drive;            // face held fixed, crease driven
+    double to_deg, step_deg;
+    const int *locks;          // locked creases (lock_count of them; not owned)
+    int lock_count;
+} cli_fold_fields;
+
+// When a fold is not rigidly foldable and interior vertices of flat miss Kawasaki by under
+// 1e-3 rad (a drawing's rounded coordinates), the advice in buf (size bytes): true; else false.
+bool cli_fold_rounding_hint(const ori_pattern *flat, const ori_motion *mo, char *buf, size_t size);
+// {file, valid, verdict, reason, collision, hint, rigidly_foldable, dof, grubler, solver,
+// fixed_face, drive, to_deg, step_deg, locked, [frame_a, frame_b, surrounding, split],
+// offending_edges, blocked, partial, frames, stats} (docs/kinematics.md §11): a new object the
+// caller owns. lock_hint: an underdetermined fold's lock suggestion (cli_lock_hint) or NULL.
+json_t *cli_fold_json(const cli_fold_fields *fields, const ori_pattern *flat, const ori_mechanism *m,
+                      const ori_motion *mo, const cli_collision *col, const char *lock_hint);
+// {sequence, pattern, valid, verdict, reason, collision, failed_fold, duration, partial_frames,
+// folds, frames} of a recorded sequence (docs/sequence.md; edge_count creases): a new object.
+json_t *cli_record_json(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
+                        int edge_count, const cli_collision *col);
 
 // --- local flat-foldability (orikin check; GET /api/check) ----------------------------------
 

@@ -18,9 +18,6 @@
 // Sequence time: a request within this of a state of the scrubbing cache is answered by that
 // state (exact: solved on the fine grid, not interpolated). Sequence-time units (folds).
 #define STUDIO_TIME_SNAP 1e-12
-// The fold command's hint: a fold that is not rigidly foldable while interior vertices miss
-// Kawasaki by less than this (radians) was probably drawn with rounded coordinates.
-#define STUDIO_HINT_NEAR_KAWASAKI_RAD 1e-3
 
 // --- models: an immutable built crease pattern and its mechanism -------------------------
 
@@ -319,13 +316,6 @@ typedef struct studio_fold_spec {
     int lock_count;
 } studio_fold_spec;
 
-// orikin fold --json (col: its collision check; lock_hint: an underdetermined fold's lock
-// suggestion, cli_lock_hint, or NULL/empty).
-json_t *studio_json_fold(const char *file, const studio_fold_spec *spec, const ori_pattern *flat,
-                         const ori_mechanism *m, const ori_motion *mo, const cli_collision *col, const char *lock_hint);
-// orikin sequence --json (sequence and pattern as the CLI names them; col: its collision check).
-json_t *studio_json_record(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
-                           int edge_count, const cli_collision *col);
 // orikin sequence --at T --json, as text (malloc'd; *size set): the same fields and values.
 char *studio_json_at_text(double t, int fold, double drive_rad, const double *angles_rad, int edge_count,
                           double residual, const ori_v3 *positions, int vertex_count, size_t *size);
@@ -333,10 +323,6 @@ char *studio_json_at_text(double t, int fold, double drive_rad, const double *an
 // residual, vertices_coords.
 char *studio_json_frame_text(int frame, double drive_rad, const double *angles_rad, int edge_count, double residual,
                              const ori_v3 *positions, int vertex_count, size_t *size);
-// orikin collide --json of one state (frame: the document frame, or -1 for a state of a
-// computed fold or sequence; cloud_spacing > 0 with cr: the cloud of proximity too).
-json_t *studio_json_collide(const char *file, int frame, bool posed, const ori_collider *c, const ori_collision_result *r,
-                            double clearance, const ori_cloud_result *cr, double cloud_spacing, double cloud_distance);
 // orikin dof --json.
 json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, int loops);
 // orikin tree --json.

@@ -637,7 +637,9 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
     if (ok) {
         char lock_hint[1024] = ""; // an underdetermined fold names a lock set (as orikin fold)
         if (ori_motion_verdict_of(mo) == ORI_MOTION_UNDERDETERMINED) cli_lock_hint(m, &def, lock_hint, sizeof lock_hint, NULL);
-        studio_respond_json(out, 200, studio_json_fold(file, &f.spec, model->pattern, m, mo, &col, lock_hint));
+        cli_fold_fields fields = {file, f.spec.fix, f.spec.drive, f.spec.to_deg, f.spec.step_deg, f.spec.locks,
+                                  f.spec.lock_count};
+        studio_respond_json(out, 200, cli_fold_json(&fields, model->pattern, m, mo, &col, lock_hint));
         int E = ori_mechanism_edge_count(m);
         studio_fold *res = calloc(1, sizeof *res);
         atomic_init(&res->refs, 1);
@@ -867,7 +869,7 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const 
             record_contact(m, q->record, &col, &q->contact);
             if (q->contact.has && col.progress) q->contact.drive_rad = NAN; // a fold toward the targets
         }
-        q->json = studio_json_text(studio_json_record(name, file, seq, q->record, ori_mechanism_edge_count(m), &col),
+        q->json = studio_json_text(cli_record_json(name, file, seq, q->record, ori_mechanism_edge_count(m), &col),
                                    &q->json_size);
         studio_job_phase(s, "sequence: states for the slider");
         q->fine = fine_record(s, seq, q->record, m, angles, pose, &q->grid);

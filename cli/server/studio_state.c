@@ -504,7 +504,7 @@ void studio_api_collide(studio *s, const studio_request *req, studio_response *o
             }
         }
         if (done) {
-            json_t *j = studio_json_collide(file, st.frame, st.posed, c, &r, clearance, has_cloud ? &cr : NULL, spacing,
+            json_t *j = cli_collide_json(file, st.frame, NULL, st.posed, c, &r, clearance, has_cloud ? &cr : NULL, spacing,
                                             distance);
             json_object_set_new(j, "state", json_string(st.label));
             studio_respond_json(out, 200, j);
