@@ -3,6 +3,7 @@
 #include "fold_modes.h"
 
 #include "collide_args.h"
+#include "progress.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -472,6 +473,8 @@ static int solve(modes_run *r)
         r->nlocks += n;
     }
     ori_status st;
+    cli_progress bar; // a large sheet's solve may run for minutes
+    cli_progress_begin(&bar, "fold", "solving");
     if (a->has_percent) {
         ori_target_fold_def d = ori_default_target_fold_def();
         d.fixed_face = a->fix;
@@ -482,6 +485,8 @@ static int solve(modes_run *r)
         d.locked_edges = r->locks;
         d.locked_count = r->nlocks;
         d.edge_group = r->group;
+        d.progress = cli_progress_fn;
+        d.progress_user = &bar;
         st = ori_target_fold_solve(m, &d, &r->mf, &err);
     } else {
         double to[MODES_MAX_LIST];
@@ -497,8 +502,11 @@ static int solve(modes_run *r)
         d.locked_edges = r->locks;
         d.locked_count = r->nlocks;
         d.edge_group = r->group;
+        d.progress = cli_progress_fn;
+        d.progress_user = &bar;
         st = ori_drives_fold_solve(m, &d, &r->mf, &err);
     }
+    cli_progress_end(&bar);
     if (st != ORI_OK) {
         // A driven or locked crease the fold cannot use is a command-line value: usage error.
         for (int i = 0; i < a->ndrives && strcmp(err.field, "edges_vertices") == 0; ++i)

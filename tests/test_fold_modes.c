@@ -526,3 +526,98 @@ Test(fold_modes, percent_two_flaps_collide, .init = test_leak_setup, .fini = tes
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
+
+// A progress callback's record: every fraction reported, and after how many calls to cancel.
+typedef struct progress_log {
+    double f[4096];
+    int n;
+    int cancel_after; // 0: never
+} progress_log;
+
+static bool log_progress(double fraction, void *user)
+{
+    progress_log *l = user;
+    if (l->n < 4096) l->f[l->n] = fraction;
+    l->n++;
+    return !(l->cancel_after > 0 && l->n >= l->cancel_after);
+}
+
+// The calls are monotone in [0, 1] and end at exactly 1.
+static void check_progress(const progress_log *l, int min_calls)
+{
+    cr_assert_geq(l->n, min_calls);
+    cr_assert_leq(l->n, 4096);
+    for (int i = 0; i < l->n; ++i) {
+        cr_assert(l->f[i] >= 0.0 && l->f[i] <= 1.0, "call %d: %g", i, l->f[i]);
+        if (i > 0) cr_assert_geq(l->f[i], l->f[i - 1], "call %d: %g after %g", i, l->f[i], l->f[i - 1]);
+    }
+    cr_assert_eq(l->f[l->n - 1], 1.0);
+}
+
+// The multi-crease solves (toward the targets, several drives, symmetric) report progress per
+// step, monotone and ending at 1, and a callback returning false cancels them cleanly:
+// ORI_ERR_LIMIT "cancelled", no result, nothing leaked (the leak check, ASan).
+Test(fold_modes, progress_and_cancel, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = waterbomb(3);
+    ori_mechanism *m = test_mechanism_of(p);
+    static progress_log l;
+    ori_error err;
+    ori_multifold *mf = NULL;
+    // Toward the targets.
+    ori_target_fold_def t = ori_default_target_fold_def();
+    t.progress = log_progress;
+    t.progress_user = &l;
+    memset(&l, 0, sizeof l);
+    cr_assert_eq(ori_target_fold_solve(m, &t, &mf, &err), ORI_OK);
+    check_reached(p, m, mf, 1.0);
+    check_progress(&l, 5);
+    int calls = l.n;
+    ori_multifold_destroy(mf);
+    memset(&l, 0, sizeof l);
+    l.cancel_after = calls / 2;
+    cr_assert_eq(ori_target_fold_solve(m, &t, &mf, &err), ORI_ERR_LIMIT);
+    cr_assert_null(mf);
+    cr_assert_str_eq(err.message, "cancelled");
+    cr_assert_eq(l.n, calls / 2); // no call after the cancel
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+
+    // Several drives, and one drive with symmetry, on the waterbomb base.
+    p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m);
+    int *orbit = malloc(sizeof(int) * (size_t)E);
+    ori_mechanism_symmetry_orbits(m, orbit);
+    int axis = test_edge_at(p, 1, 1, 1, 0), axis2 = test_edge_at(p, 1, 1, 2, 1);
+    int locks[3] = {test_edge_at(p, 1, 1, 2, 0), test_edge_at(p, 1, 1, 2, 2), test_edge_at(p, 1, 1, 0, 2)};
+    int drives[2] = {axis, axis2};
+    double to[2] = {60.0 * DEG, 60.0 * DEG};
+    for (int sym = 0; sym <= 1; ++sym) {
+        ori_drives_fold_def d = ori_default_drives_fold_def();
+        d.driven_edges = drives;
+        d.to_rad = to;
+        d.driven_count = sym ? 1 : 2;
+        d.locked_edges = sym ? NULL : locks;
+        d.locked_count = sym ? 0 : 3;
+        d.edge_group = sym ? orbit : NULL;
+        d.step_rad = 5.0 * DEG;
+        d.progress = log_progress;
+        d.progress_user = &l;
+        memset(&l, 0, sizeof l);
+        cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_OK);
+        cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+        check_progress(&l, 12); // at least one call per 5° output step
+        calls = l.n;
+        ori_multifold_destroy(mf);
+        memset(&l, 0, sizeof l);
+        l.cancel_after = calls / 2;
+        cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_ERR_LIMIT);
+        cr_assert_null(mf);
+        cr_assert_str_eq(err.message, "cancelled");
+        cr_assert_eq(l.n, calls / 2);
+    }
+    free(orbit);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

@@ -459,6 +459,9 @@ typedef struct ori_target_fold_def {
     const int *locked_edges;         ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;           ///< NULL, or edge_count entries: creases with the same group ≥ 0 are kept at equal angles (e.g. symmetry orbits)
+    ori_progress_fn *progress;       ///< called per accepted step with the fraction of the distance to the goal covered
+                                     ///< (monotone, 1 at the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
+    void *progress_user;
     int internal_value;              ///< set by ori_default_target_fold_def; do not change
 } ori_target_fold_def;
 
@@ -491,6 +494,9 @@ typedef struct ori_drives_fold_def {
     const int *locked_edges;        ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;          ///< as in ori_target_fold_def (a driven crease drives its group)
+    ori_progress_fn *progress;      ///< called per accepted step with the fraction of the drives' way done (monotone, 1 at
+                                    ///< the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
+    void *progress_user;
     int internal_value;             ///< set by ori_default_drives_fold_def; do not change
 } ori_drives_fold_def;
 

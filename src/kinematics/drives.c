@@ -145,6 +145,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double *sgn = ori__alloc(sizeof(double) * (size_t)(nfree + 1));
     double *nx = ori__alloc(sizeof(double) * (size_t)(nfree + 1));
+    bool cancelled = false; // the progress callback returned false
     if (mo) {
         memcpy(th0, th, sizeof(double) * (size_t)J);
         ori__mf_record(mo, th, ori__kin_residual(m, th), 0.0);
@@ -248,6 +249,10 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
             memcpy(th, trial, sizeof(double) * (size_t)J);
             t = tn;
             mo->steps++;
+            if (def->progress && !def->progress(fmin(t, 1.0), def->progress_user)) { // t only grows
+                cancelled = true;
+                break;
+            }
             // Freedom left to the solved creases: judged once the drives have moved by
             // ORI_DRIVES_CHECK_RAD (nearer the flat start the singular values are too small to tell).
             if (first && (t * rmax >= ORI_DRIVES_CHECK_RAD || t >= 1.0)) {
@@ -304,6 +309,11 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     ori__free(sgn);
     ori__free(nx);
     if (!mo) return st;
+    if (!cancelled && def->progress) cancelled = !def->progress(1.0, def->progress_user);
+    if (cancelled) {
+        ori_multifold_destroy(mo);
+        return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    }
     *out = mo;
     return ORI_OK;
 }
