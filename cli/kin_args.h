@@ -53,13 +53,16 @@ int cli_spec_edge_count(const char *spec);
 // by index and by point). Returns the count, or minus the exit code after the message.
 int cli_spec_edges(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
                    bool unique, int *out, int cap);
+// The most creases --lock takes (a lock set that --lock auto found on a large sheet included).
+#define CLI_FOLD_MAX_LOCKS 4096
+
 // The fold specification shared by fold and fit.
 typedef struct cli_fold_args {
     const char *path;
     int fix, drive;
     bool has_fix, has_drive, has_to, has_from;
     double to_deg, from_deg, step_deg;
-    int locks[256];
+    int locks[CLI_FOLD_MAX_LOCKS];
     int lock_count;
     int frame;
     bool json;

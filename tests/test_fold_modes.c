@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "kinematics/multifold_internal.h"
 #include "support.h"
 
 #define DEG (ORI_PI / 180.0)
@@ -620,4 +621,76 @@ Test(fold_modes, progress_and_cancel, .init = test_leak_setup, .fini = test_leak
     free(orbit);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
+}
+
+// A lock set from a folded state s (angles) for the drive: it leaves exactly one degree of
+// freedom (ori_mechanism_dof with the locks, at the state the fold reaches) and the fold moves
+// the drive 0.3 rad, validly. Returns the number of creases locked.
+static int check_lock_set(const ori_mechanism *m, const double *s, int drive, int method)
+{
+    int E = ori_mechanism_edge_count(m);
+    int *locks = malloc(sizeof(int) * (size_t)E);
+    ori_error err;
+    char msg[512];
+    int nl = ori__mechanism_lock_set_method(m, s, &drive, 1, NULL, 0, NULL, locks, E, method, &err);
+    cr_assert_gt(nl, 0, "method %d: %s", method, ori_error_format(&err, msg, sizeof msg));
+    ori_motion_def md = ori_default_motion_def();
+    md.start_angles_rad = s;
+    md.driven_edge = drive;
+    md.to_rad = s[drive] + 0.3;
+    md.step_rad = 0.1;
+    md.locked_edges = locks;
+    md.locked_count = nl;
+    ori_motion *mo = NULL;
+    cr_assert_eq(ori_motion_solve(m, &md, &mo, &err), ORI_OK);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "method %d: %s", method, ori_motion_reason(mo));
+    int F = ori_motion_frame_count(mo);
+    cr_assert_float_eq(ori_motion_frame_drive(mo, F - 1), md.to_rad, 1e-12);
+    ori_dof_def dd = ori_default_dof_def();
+    dd.angles_rad = ori_motion_frame_angles(mo, F - 1);
+    dd.locked_edges = locks;
+    dd.locked_count = nl;
+    ori_dof_result r;
+    cr_assert_eq(ori_mechanism_dof(m, &dd, &r, &err), ORI_OK);
+    cr_assert_eq(r.dof, 1, "method %d: %d locks leave %d degrees of freedom", method, nl, r.dof);
+    ori_motion_destroy(mo);
+    free(locks);
+    return nl;
+}
+
+// Sparse lock sets (null-space basis from CHOLMOD projections, QR of its transpose) against the
+// dense QR of the Jacobian on generated waterbomb tessellations from a folded state (30 % toward
+// the targets): both leave one degree of freedom and fold, with as many locks (the sets may
+// differ). A 16 x 16 tessellation (2139 x 2247 Jacobian, 4.8e6 entries, above the dense limit)
+// takes the sparse path by itself.
+Test(fold_modes, sparse_lock_sets, .init = test_leak_setup, .fini = test_leak_check)
+{
+    for (int n = 2; n <= 16; n += n < 6 ? 4 : 10) {
+        ori_pattern *p = waterbomb(n);
+        ori_mechanism *m = test_mechanism_of(p);
+        ori_target_fold_def t = ori_default_target_fold_def();
+        t.fraction = 0.3;
+        ori_multifold *mf = NULL;
+        ori_error err;
+        cr_assert_eq(ori_target_fold_solve(m, &t, &mf, &err), ORI_OK);
+        const double *s = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+        int E = ori_mechanism_edge_count(m), drive = -1;
+        for (int e = 0, skip = 3 * n; e < E && drive < 0; ++e) // a valley away from the corner
+            if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY && skip-- <= 0) drive = e;
+        if (n < 16) {
+            int dense = check_lock_set(m, s, drive, 1), sparse = check_lock_set(m, s, drive, 2);
+            cr_assert_eq(dense, sparse, "waterbomb %d: dense %d locks, sparse %d", n, dense, sparse);
+        } else {
+            int creases = 0; // the Jacobian's columns: every revolute crease but the drive
+            for (int e = 0; e < E; ++e) {
+                int j = ori_mechanism_edge_joint(m, e);
+                creases += j != ORI_NULL_INDEX && ori_mechanism_joint(m, j).kind == ORI_JOINT_REVOLUTE;
+            }
+            cr_assert_gt((double)m->rows * (double)(creases - 1), ORI_LOCKSET_DENSE_MAX_ENTRIES);
+            check_lock_set(m, s, drive, 0);
+        }
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
 }

@@ -24,12 +24,19 @@ ori_drives_fold_def ori_default_drives_fold_def(void)
     return d;
 }
 
-// Nullity of the free columns at th (dense SVD; -1 when too large to form).
+// Nullity of the free columns at th (dense SVD; above ORI_LOCKSET_DENSE_MAX_ENTRIES entries the
+// sparse null-space basis of lockset_sparse.c; -1 when neither can tell).
 static int free_nullity(const ori_mechanism *m, const int *var, int nvar, const double *th)
 {
     int R = m->rows;
     if (nvar == 0) return 0;
-    if ((double)R * (double)nvar > ORI_LOCKSET_DENSE_MAX_ENTRIES) return -1;
+    if ((double)R * (double)nvar > ORI_LOCKSET_DENSE_MAX_ENTRIES) {
+        mf_system fs;
+        ori__mf_init(&fs, m, var, nvar);
+        int d = ori__mf_linearize(&fs, th) ? ori__mf_freedom(&fs, NULL, NULL) : -1;
+        ori__mf_free(&fs);
+        return d < 0 ? -1 : d;
+    }
     double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)nvar + 1));
     ori__mf_dense_jacobian(m, th, var, nvar, a);
     int k = R < nvar ? R : nvar;
