@@ -79,7 +79,7 @@ int act_parse(const char *cmd, int argc, char **argv, bool simulate, act_opts *o
                 return cli_usage(cmd, "--reorientations needs an integer from 0 to %d, got '%s'", ORI_SCHEDULE_MAX - 1, v);
         } else if (strcmp(a, "--fixed-field") == 0) o->fixed_field = true;
         else if (strcmp(a, "--fix") == 0) {
-            if (!cli_parse_int(v, &o->fix) || o->fix < 0) return cli_usage(cmd, "--fix needs a face index, got '%s'", v);
+            o->fix_spec = v; // an index, a name or @x,y: resolved against the pattern (cli_spec_face)
             o->has_fix = true;
         } else if (strcmp(a, "--current") == 0) {
             rc = positive(cmd, a, v, &o->current, true);

@@ -23,7 +23,8 @@ typedef struct act_opts {
     bool fixed_field;          // --fixed-field
     // simulate
     bool has_fix;
-    int fix;                   // --fix FACE
+    int fix;                   // --fix FACE (resolved from fix_spec after loading)
+    const char *fix_spec;      // --fix as given: an index, a name (Obj12) or @x,y
     bool has_current;
     double current;            // --current A
     bool has_duration;

@@ -4,6 +4,7 @@
 #include <orikin/collection.h>
 
 #include "cli.h"
+#include "kin_args.h"
 
 static void list_builtins(void)
 {
@@ -100,7 +101,7 @@ static int run(int argc, char **argv)
         return rc;
     }
     int face = 0;
-    rc = cli_find_face_option(cmd, path, p, "--face", face_spec, &face);
+    rc = cli_spec_face(cmd, path, p, "--face", face_spec, &face);
     if (rc == CLI_EXIT_OK) {
         char face_name[ORI_NAME_MAX + 16];
         const char *fname = ori_pattern_face_name(p, face);
@@ -139,7 +140,8 @@ const cli_command cli_cmd_apply = {
     "\n"
     "options:\n"
     "  --pattern NAME|PATH   a built-in name or a composite .json file\n"
-    "  --face NAME           the target face: its name (Obj12) or FOLD face index\n"
+    "  --face NAME           the target face: its name (Obj12), FOLD face index or @x,y (the face\n"
+    "                        containing the point)\n"
     "  --assign M|V|F|U      assignment of every new crease (overrides the composite's)\n"
     "  -o, --output OUT      write the FOLD file here (atomically; .svg, .cp, .opx: export)\n"
     "  --json                with -o: print {output, pattern, face, segments, faces_split,\n"

@@ -4,6 +4,7 @@
 #include <orikin/authoring.h>
 
 #include "axiom_args.h"
+#include "kin_args.h"
 
 static int run(int argc, char **argv)
 {
@@ -106,7 +107,7 @@ static int run(int argc, char **argv)
     int rc = cli_input_load("crease", path, &input, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
     int face = ORI_NULL_INDEX;
-    if (face_spec) rc = cli_find_face_option("crease", path, p, "--face", face_spec, &face);
+    if (face_spec) rc = cli_spec_face("crease", path, p, "--face", face_spec, &face);
     if (rc == CLI_EXIT_OK) {
         char target[ORI_NAME_MAX + 16];
         if (face == ORI_NULL_INDEX) snprintf(target, sizeof target, "the sheet");
@@ -159,7 +160,8 @@ const cli_command cli_cmd_crease = {
     "  --axiom N             axiom 1-7 with its inputs --p1, --p2, --l1, --l2\n"
     "  --solution K          which solution (needed when there are several)\n"
     "  --line x1,y1,x2,y2    the line through two points instead of an axiom\n"
-    "  --face NAME           the target face: its name (Obj12) or FOLD face index\n"
+    "  --face NAME           the target face: its name (Obj12), FOLD face index or @x,y (the face\n"
+    "                        containing the point)\n"
     "  --all                 every face the line crosses\n"
     "  --assign M|V|F|U      the new crease's assignment (default U)\n"
     "  -o, --output OUT      write the FOLD file here (atomically; .svg, .cp, .opx: export)\n"

@@ -27,6 +27,7 @@ static int run(int argc, char **argv)
     const char *cmd = "dof", *path = NULL;
     bool json = false;
     int locks[256], nlock = 0;
+    const char *lock_spec = NULL;
     cli_input in;
     cli_input_init(&in);
     cli_seen seen = {0};
@@ -42,8 +43,10 @@ static int run(int argc, char **argv)
         } else if (strcmp(argv[i], "--lock") == 0) {
             const char *v = cli_option_once(cmd, argc, argv, &i, &seen);
             if (!v) return CLI_EXIT_USAGE;
-            nlock = cli_parse_int_list(v, locks, 256);
-            if (nlock < 0) return cli_int_list_usage(cmd, "--lock", v, 256);
+            int n = cli_spec_edge_count(v);
+            if (n > 256) return cli_usage(cmd, "--lock takes at most %d edges, got %d", 256, n);
+            if (n < 0) return cli_usage(cmd, "--lock: creases are indices or @x,y, comma-separated, got '%s'", v);
+            lock_spec = v; // indices and @x,y: resolved against the pattern (cli_spec_edges)
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             return cli_usage(cmd, "unknown option %s", argv[i]);
         } else if (!path) {
@@ -59,10 +62,10 @@ static int run(int argc, char **argv)
     double *angles;
     int rc = load(cmd, path, &in, &doc, &flat, &mech, &angles);
     if (rc != CLI_EXIT_OK) return rc;
-    int E = ori_mechanism_edge_count(mech);
-    for (int i = 0; i < nlock && rc == CLI_EXIT_OK; ++i)
-        if (locks[i] < 0 || locks[i] >= E)
-            rc = cli_value_fail(cmd, path, "--lock", "edge %d does not exist (edges 0 to %d)", locks[i], E - 1);
+    if (lock_spec) {
+        nlock = cli_spec_edges(cmd, path, flat, "--lock", lock_spec, true, locks, 256);
+        if (nlock < 0) rc = -nlock, nlock = 0;
+    }
     ori_dof_result r;
     if (rc == CLI_EXIT_OK) {
         ori_dof_def def = ori_default_dof_def();
@@ -138,7 +141,8 @@ const cli_command cli_cmd_dof = {
     "options:\n"
     "  --frame N          the state: fold angles of frame N (0 = top level, k = file_frames[k-1];\n"
     "                     default 0). A flat crease-pattern frame is the flat state.\n"
-    "  --lock E1,...      creases held fixed (removed from the unknowns)\n"
+    "  --lock E1,...      creases held fixed (removed from the unknowns): indices or @x,y (the\n"
+    "                     crease through the point; in the list an @x,y takes two fields)\n"
     "  --json             print one object: file, frame; grubler (Grubler-Kutzbach count);\n"
     "                     unknowns (unlocked creases), equations (3 per interior vertex, 6 per\n"
     "                     hole), rank and dof (= unknowns - rank) at the state; generic_dof (DOF\n"

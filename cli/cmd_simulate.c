@@ -206,11 +206,12 @@ static int run(int argc, char **argv)
     ori_record *rec = NULL;
     ori_simulation *s = NULL;
     double *targets = NULL;
-    int fixed = o.fix;
-    if (in.is_sequence) {
+    int fixed = 0;
+    if (o.has_fix) rc = cli_spec_face("simulate", in.pattern_path, in.k.flat, "--fix", o.fix_spec, &fixed);
+    if (rc == CLI_EXIT_OK && in.is_sequence) {
         rc = act_run_sequence("simulate", &in, &rec);
         if (!o.has_fix) fixed = ori_sequence_fold_at(in.seq, 0).fixed_face;
-    } else if (!o.has_fix) {
+    } else if (rc == CLI_EXIT_OK && !o.has_fix) {
         rc = cli_usage("simulate", "missing --fix FACE");
     }
     if (rc == CLI_EXIT_OK && (fixed < 0 || fixed >= F))
@@ -349,7 +350,8 @@ const cli_command cli_cmd_simulate = {
     "bad input, 4 the integration failed.\n"
     "\n"
     "options:\n"
-    "  --fix FACE          face held in place (FILE; a sequence holds its first fold's)\n"
+    "  --fix FACE          face held in place: FOLD index, name (Obj12) or @x,y (FILE; a sequence\n"
+    "                      holds its first fold's)\n"
     "  --current A         current in every wire without its own, in amperes\n"
     "  --duration S        simulated time in seconds\n"
     "  --dt S              time step (default: 1/64 of the shortest natural period)\n"

@@ -3,6 +3,7 @@
 #include "fold_modes.h"
 
 #include "collide_args.h"
+#include "progress.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -21,6 +22,7 @@ typedef struct modes_args {
     bool has_percent;
     double percent;
     int drives[MODES_MAX_LIST], ndrives;
+    const char *drive_spec, *lock_spec; // as given (indices and @x,y): resolved after loading
     double to[MODES_MAX_LIST];
     int nto;
     double ratio[MODES_MAX_LIST];
@@ -38,9 +40,8 @@ bool cli_fold_modes_wanted(int argc, char **argv)
         const char *o = argv[i];
         if (strcmp(o, "--percent") == 0 || strcmp(o, "--symmetric") == 0 || strcmp(o, "--ratio") == 0) return true;
         if (i + 1 < argc && strcmp(o, "--lock") == 0 && strcmp(argv[i + 1], "auto") == 0) return true;
-        if (i + 1 < argc && (strcmp(o, "--drive") == 0 || strcmp(o, "--to") == 0) && argv[i + 1][0] != '@' &&
-            strchr(argv[i + 1], ','))
-            return true;
+        if (i + 1 < argc && strcmp(o, "--drive") == 0 && cli_spec_edge_count(argv[i + 1]) > 1) return true;
+        if (i + 1 < argc && strcmp(o, "--to") == 0 && strchr(argv[i + 1], ',')) return true;
     }
     return false;
 }
@@ -90,8 +91,12 @@ static int parse(int argc, char **argv, modes_args *a)
                     return cli_usage(cmd, "--percent needs a number from 0 to 100, got '%s'", v);
                 a->has_percent = true;
             } else if (strcmp(o, "--drive") == 0) {
-                a->ndrives = cli_parse_int_list(v, a->drives, MODES_MAX_LIST);
-                if (a->ndrives <= 0) return cli_usage(cmd, "--drive needs comma-separated edge indices, got '%s'", v);
+                a->ndrives = cli_spec_edge_count(v);
+                if (a->ndrives > MODES_MAX_LIST)
+                    return cli_usage(cmd, "--drive takes at most %d edges, got %d", MODES_MAX_LIST, a->ndrives);
+                if (a->ndrives <= 0)
+                    return cli_usage(cmd, "--drive: creases are indices or @x,y, comma-separated, got '%s'", v);
+                a->drive_spec = v;
             } else if (strcmp(o, "--to") == 0) {
                 a->nto = parse_double_list(v, a->to, MODES_MAX_LIST);
                 if (a->nto <= 0) return cli_usage(cmd, "--to needs comma-separated angles in degrees, got '%s'", v);
@@ -105,8 +110,12 @@ static int parse(int argc, char **argv, modes_args *a)
                 if (strcmp(v, "auto") == 0) {
                     a->lock_auto = true;
                 } else {
-                    a->nlocks = cli_parse_int_list(v, a->locks, MODES_MAX_LIST);
-                    if (a->nlocks < 0) return cli_usage(cmd, "--lock needs comma-separated edge indices or auto, got '%s'", v);
+                    a->nlocks = cli_spec_edge_count(v);
+                    if (a->nlocks > MODES_MAX_LIST)
+                        return cli_usage(cmd, "--lock takes at most %d edges, got %d", MODES_MAX_LIST, a->nlocks);
+                    if (a->nlocks < 0)
+                        return cli_usage(cmd, "--lock: creases are indices or @x,y, comma-separated, or auto, got '%s'", v);
+                    a->lock_spec = v;
                 }
             } else if (strcmp(o, "--step") == 0) {
                 if (!cli_parse_double(v, &a->step_deg) || !(a->step_deg > 0.0))
@@ -464,6 +473,8 @@ static int solve(modes_run *r)
         r->nlocks += n;
     }
     ori_status st;
+    cli_progress bar; // a large sheet's solve may run for minutes
+    cli_progress_begin(&bar, "fold", "solving");
     if (a->has_percent) {
         ori_target_fold_def d = ori_default_target_fold_def();
         d.fixed_face = a->fix;
@@ -474,6 +485,8 @@ static int solve(modes_run *r)
         d.locked_edges = r->locks;
         d.locked_count = r->nlocks;
         d.edge_group = r->group;
+        d.progress = cli_progress_fn;
+        d.progress_user = &bar;
         st = ori_target_fold_solve(m, &d, &r->mf, &err);
     } else {
         double to[MODES_MAX_LIST];
@@ -489,8 +502,11 @@ static int solve(modes_run *r)
         d.locked_edges = r->locks;
         d.locked_count = r->nlocks;
         d.edge_group = r->group;
+        d.progress = cli_progress_fn;
+        d.progress_user = &bar;
         st = ori_drives_fold_solve(m, &d, &r->mf, &err);
     }
+    cli_progress_end(&bar);
     if (st != ORI_OK) {
         // A driven or locked crease the fold cannot use is a command-line value: usage error.
         for (int i = 0; i < a->ndrives && strcmp(err.field, "edges_vertices") == 0; ++i)
@@ -579,7 +595,15 @@ int cli_fold_modes_run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     rc = cli_kin_load("fold", r.a.path, r.a.frame, &r.k);
     if (rc != CLI_EXIT_OK) return rc;
-    rc = cli_find_face_option("fold", r.a.path, r.k.flat, "--fix", r.a.fix_spec, &r.a.fix);
+    rc = cli_spec_face("fold", r.a.path, r.k.flat, "--fix", r.a.fix_spec, &r.a.fix);
+    if (rc == CLI_EXIT_OK && r.a.drive_spec) { // the drives in order, repeats kept (refused by the solve)
+        r.a.ndrives = cli_spec_edges("fold", r.a.path, r.k.flat, "--drive", r.a.drive_spec, false, r.a.drives, MODES_MAX_LIST);
+        if (r.a.ndrives < 0) rc = -r.a.ndrives;
+    }
+    if (rc == CLI_EXIT_OK && r.a.lock_spec) {
+        r.a.nlocks = cli_spec_edges("fold", r.a.path, r.k.flat, "--lock", r.a.lock_spec, true, r.a.locks, MODES_MAX_LIST);
+        if (r.a.nlocks < 0) rc = -r.a.nlocks;
+    }
     if (rc == CLI_EXIT_OK && r.a.lock_auto && r.a.ndrives == 1 && !r.a.symmetric && !r.a.has_percent) {
         rc = single_drive_auto(&r, argc, argv);
         cli_kin_free(&r.k);

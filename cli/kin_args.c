@@ -165,13 +165,11 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
             if (!v) return CLI_EXIT_USAGE;
         }
         if (strcmp(o, "--fix") == 0) {
-            if (!cli_parse_int(v, &a->fix)) a->fix_spec = v; // a name or @x,y: cli_fold_resolve
+            a->fix_spec = v; // an index, a name or @x,y: cli_fold_resolve
             a->has_fix = true;
         } else if (strcmp(o, "--drive") == 0) {
-            if (!cli_parse_int(v, &a->drive)) {
-                if (v[0] != '@') return cli_usage(cmd, "--drive needs an edge index or @x,y, got '%s'", v);
-                a->drive_spec = v;
-            }
+            if (cli_spec_edge_count(v) != 1) return cli_usage(cmd, "--drive needs an edge index or @x,y, got '%s'", v);
+            a->drive_spec = v;
             a->has_drive = true;
         } else if (strcmp(o, "--to") == 0) {
             if ((rc = parse_angle(cmd, o, v, &a->to_deg)) != CLI_EXIT_OK) return rc;
@@ -182,14 +180,10 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
         } else if (strcmp(o, "--step") == 0) {
             if ((rc = parse_angle(cmd, o, v, &a->step_deg)) != CLI_EXIT_OK) return rc;
         } else if (strcmp(o, "--lock") == 0) {
-            int cap = (int)(sizeof a->locks / sizeof *a->locks);
-            if (strchr(v, '@')) {
-                a->lock_spec = v; // points among the indices: cli_fold_resolve
-                a->lock_count = 0;
-            } else {
-                a->lock_count = cli_parse_int_list(v, a->locks, cap);
-                if (a->lock_count < 0) return cli_int_list_usage(cmd, "--lock", v, cap);
-            }
+            int cap = (int)(sizeof a->locks / sizeof *a->locks), n = cli_spec_edge_count(v);
+            if (n > cap) return cli_usage(cmd, "--lock takes at most %d edges, got %d", cap, n);
+            if (n < 0) return cli_usage(cmd, "--lock: creases are indices or @x,y, comma-separated, got '%s'", v);
+            a->lock_spec = v; // indices and @x,y: cli_fold_resolve
         } else if (strcmp(o, "--frame") == 0) {
             if (!cli_parse_int(v, &a->frame) || a->frame < 0) return cli_usage(cmd, "--frame needs a frame number >= 0");
         } else if (strcmp(o, "-o") == 0) {
@@ -228,19 +222,7 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
     return CLI_EXIT_OK;
 }
 
-// The crease through the point "@x,y" (spec) for option, or a usage error.
-static int edge_at(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
-                   int *edge)
-{
-    double xy[2];
-    if (spec[0] != '@' || !cli_parse_doubles(spec + 1, xy, 2))
-        return cli_usage(cmd, "%s: a crease is an index or @x,y, got '%s'", option, spec);
-    int e = ori_pattern_find_edge_at(p, ori_v2_make(xy[0], xy[1]));
-    if (e == ORI_NULL_INDEX)
-        return cli_value_fail(cmd, path, option, "no crease passes through (%g, %g) (see orikin info --edges)", xy[0], xy[1]);
-    *edge = e;
-    return CLI_EXIT_OK;
-}
+// --- naming faces and creases: one code path for every command ----------------------------------
 
 // Crossing-number test of point q against face f's polygon: 1 inside, 0 outside, -1 on its
 // boundary (within tol).
@@ -266,63 +248,123 @@ static int face_contains(const ori_pattern *p, int f, ori_v2 q, double tol)
     return result < 0 ? -1 : inside ? 1 : 0;
 }
 
+int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
+                  int *face)
+{
+    int idx;
+    if (cli_parse_int(spec, &idx)) {
+        int faces = ori_pattern_face_count(p);
+        if (idx < 0 || idx >= faces)
+            return cli_value_fail(cmd, path, option, "no face %d (the pattern has faces 0 to %d)", idx, faces - 1);
+        *face = idx;
+        return CLI_EXIT_OK;
+    }
+    if (spec[0] != '@') return cli_find_face_option(cmd, path, p, option, spec, face); // a name
+    double xy[2];
+    if (!cli_parse_doubles(spec + 1, xy, 2))
+        return cli_usage(cmd, "%s: a face is an index, a name or @x,y, got '%s'", option, spec);
+    ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
+    for (int v = 1; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 c = ori_pattern_vertex(p, v);
+        lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
+    }
+    double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
+    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
+        int c = face_contains(p, f, ori_v2_make(xy[0], xy[1]), tol);
+        if (c < 0)
+            return cli_value_fail(cmd, path, option, "(%g, %g) lies on an edge of face %d: give a point inside a face",
+                                  xy[0], xy[1], f);
+        if (c > 0) {
+            *face = f;
+            return CLI_EXIT_OK;
+        }
+    }
+    return cli_value_fail(cmd, path, option, "no face contains (%g, %g) (see orikin info --faces)", xy[0], xy[1]);
+}
+
+int cli_spec_edge(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
+                  int *edge)
+{
+    int idx;
+    if (cli_parse_int(spec, &idx)) {
+        int edges = ori_pattern_edge_count(p);
+        if (idx < 0 || idx >= edges)
+            return cli_value_fail(cmd, path, option, "no edge %d (the pattern has edges 0 to %d)", idx, edges - 1);
+        *edge = idx;
+        return CLI_EXIT_OK;
+    }
+    double xy[2];
+    if (spec[0] != '@' || !cli_parse_doubles(spec + 1, xy, 2))
+        return cli_usage(cmd, "%s: a crease is an index or @x,y, got '%s'", option, spec);
+    int e = ori_pattern_find_edge_at(p, ori_v2_make(xy[0], xy[1]));
+    if (e == ORI_NULL_INDEX)
+        return cli_value_fail(cmd, path, option, "no crease passes through (%g, %g) (see orikin info --edges)", xy[0],
+                              xy[1]);
+    *edge = e;
+    return CLI_EXIT_OK;
+}
+
+// The next item of a crease list at *q (copied into item): "@x,y" spans two comma-separated
+// fields. Advances *q past the item and its comma; false on an empty or overlong item.
+static bool next_item(const char **q, char *item, size_t size)
+{
+    const char *s = *q, *c = strchr(s, ',');
+    if (*s == '@' && c) c = strchr(c + 1, ',');
+    size_t len = c ? (size_t)(c - s) : strlen(s);
+    if (len == 0 || len >= size) return false;
+    memcpy(item, s, len);
+    item[len] = '\0';
+    *q = c ? c + 1 : s + len;
+    return !(c && c[1] == '\0'); // a trailing comma is an empty item
+}
+
+int cli_spec_edge_count(const char *spec)
+{
+    const char *q = spec;
+    char item[128];
+    int n = 0;
+    while (*q) {
+        if (!next_item(&q, item, sizeof item)) return -1;
+        int idx;
+        double xy[2];
+        if (!cli_parse_int(item, &idx) && !(item[0] == '@' && cli_parse_doubles(item + 1, xy, 2))) return -1;
+        n++;
+    }
+    return n > 0 ? n : -1;
+}
+
+int cli_spec_edges(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
+                   bool unique, int *out, int cap)
+{
+    int n = cli_spec_edge_count(spec);
+    if (n < 0) return -cli_usage(cmd, "%s: creases are indices or @x,y, comma-separated, got '%s'", option, spec);
+    if (n > cap) return -cli_usage(cmd, "%s takes at most %d edges, got %d", option, cap, n);
+    const char *q = spec;
+    char item[128];
+    int count = 0, rc;
+    while (*q) {
+        next_item(&q, item, sizeof item);
+        int e;
+        if ((rc = cli_spec_edge(cmd, path, p, option, item, &e)) != CLI_EXIT_OK) return -rc;
+        bool dup = false; // the same crease by index and by point
+        for (int j = 0; unique && j < count; ++j) dup |= out[j] == e;
+        if (!dup) out[count++] = e;
+    }
+    return count;
+}
+
 int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k)
 {
     const ori_pattern *p = k->flat;
     int rc;
-    if (a->fix_spec) {
-        if (a->fix_spec[0] == '@') {
-            double xy[2];
-            if (!cli_parse_doubles(a->fix_spec + 1, xy, 2))
-                return cli_usage(cmd, "--fix: a face is an index, a name or @x,y, got '%s'", a->fix_spec);
-            ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
-            for (int v = 1; v < ori_pattern_vertex_count(p); ++v) {
-                ori_v3 c = ori_pattern_vertex(p, v);
-                lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
-            }
-            double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
-            int found = -1;
-            for (int f = 0; f < ori_pattern_face_count(p) && found < 0; ++f) {
-                int c = face_contains(p, f, ori_v2_make(xy[0], xy[1]), tol);
-                if (c < 0)
-                    return cli_value_fail(cmd, a->path, "--fix", "(%g, %g) lies on an edge of face %d: give a point inside a face",
-                                          xy[0], xy[1], f);
-                if (c > 0) found = f;
-            }
-            if (found < 0)
-                return cli_value_fail(cmd, a->path, "--fix", "no face contains (%g, %g) (see orikin info --faces)", xy[0], xy[1]);
-            a->fix = found;
-        } else if ((rc = cli_find_face_option(cmd, a->path, p, "--fix", a->fix_spec, &a->fix)) != CLI_EXIT_OK) {
-            return rc;
-        }
-    }
-    if (a->drive_spec && (rc = edge_at(cmd, a->path, p, "--drive", a->drive_spec, &a->drive)) != CLI_EXIT_OK) return rc;
+    if (a->fix_spec && (rc = cli_spec_face(cmd, a->path, p, "--fix", a->fix_spec, &a->fix)) != CLI_EXIT_OK) return rc;
+    if (a->drive_spec && (rc = cli_spec_edge(cmd, a->path, p, "--drive", a->drive_spec, &a->drive)) != CLI_EXIT_OK)
+        return rc;
     if (a->lock_spec) {
-        // Comma-separated items; "@x,y" takes the next item as its y.
-        int cap = (int)(sizeof a->locks / sizeof *a->locks);
-        const char *q = a->lock_spec;
-        a->lock_count = 0;
-        while (*q) {
-            const char *c = strchr(q, ',');
-            if (*q == '@' && c) c = strchr(c + 1, ','); // "@x,y" spans two items
-            size_t len = c ? (size_t)(c - q) : strlen(q);
-            char item[128];
-            if (len == 0 || len >= sizeof item) return cli_usage(cmd, "--lock: a crease is an index or @x,y, got '%s'", a->lock_spec);
-            memcpy(item, q, len);
-            item[len] = '\0';
-            if (a->lock_count >= cap) return cli_int_list_usage(cmd, "--lock", a->lock_spec, cap);
-            int e;
-            if (item[0] == '@') {
-                if ((rc = edge_at(cmd, a->path, k->flat, "--lock", item, &e)) != CLI_EXIT_OK) return rc;
-            } else if (!cli_parse_int(item, &e)) {
-                return cli_usage(cmd, "--lock: a crease is an index or @x,y, got '%s'", item);
-            }
-            bool dup = false; // the same crease by index and by point
-            for (int j = 0; j < a->lock_count; ++j) dup |= a->locks[j] == e;
-            if (!dup) a->locks[a->lock_count++] = e;
-            if (!c) break;
-            q = c + 1;
-        }
+        int n = cli_spec_edges(cmd, a->path, p, "--lock", a->lock_spec, true, a->locks,
+                               (int)(sizeof a->locks / sizeof *a->locks));
+        if (n < 0) return -n;
+        a->lock_count = n;
     }
     a->fix_spec = a->drive_spec = a->lock_spec = NULL; // resolved
     return CLI_EXIT_OK;
@@ -334,8 +376,7 @@ int cli_fold_def(const char *cmd, const cli_fold_args *a, const cli_kin *k, ori_
     int faces = ori_mechanism_face_count(m), edges = ori_mechanism_edge_count(m);
     const char *spec = a->fix_spec ? a->fix_spec : a->drive_spec ? a->drive_spec : a->lock_spec;
     if (spec) // a caller that does not resolve names and points (cli_fold_resolve)
-        return cli_usage(cmd, "'%s': name faces and creases by FOLD index here (names and @x,y work in fold, fit "
-                              "and actuate)", spec);
+        return cli_usage(cmd, "'%s': faces and creases named but not resolved (cli_fold_resolve)", spec);
     // Indices the pattern does not have are command-line values out of range (usage, exit 2).
     if (a->fix < 0 || a->fix >= faces)
         return cli_value_fail(cmd, a->path, "--fix", "no face %d (the pattern has faces 0 to %d)", a->fix, faces - 1);

@@ -34,13 +34,35 @@ void cli_kin_free(cli_kin *k);
 // its 3D vertices otherwise. Prints the error and returns CLI_EXIT_INPUT on failure.
 int cli_kin_fixed_pose(const char *cmd, const char *path, const cli_kin *k, int face, ori_rigid *pose);
 
+// Naming faces and creases, one code path for every command that takes them (fold and its
+// modes, fit, actuate, simulate, dof, render, animate, export, collide, crease, apply):
+//   a face   is a FOLD index, a face name (Obj12) or @x,y (the face containing the point);
+//   a crease is a FOLD index or @x,y (the crease through the point);
+//   a list of creases is comma-separated, and an item starting with '@' takes the next item as
+//   its y: "3,@0.5,1,9" is crease 3, the crease through (0.5, 1), and crease 9.
+// Each prints one line naming the option and returns CLI_EXIT_USAGE for a face or crease the
+// pattern does not have (an index out of range, an unknown name, a point on no face or crease)
+// or a malformed spec; else CLI_EXIT_OK with the index set.
+int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
+                  int *face);
+int cli_spec_edge(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
+                  int *edge);
+// The number of creases in a list (the syntax only, nothing resolved), or -1 when malformed.
+int cli_spec_edge_count(const char *spec);
+// Resolve a list of at most cap creases into out (unique: drop repeats, e.g. the same crease
+// by index and by point). Returns the count, or minus the exit code after the message.
+int cli_spec_edges(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
+                   bool unique, int *out, int cap);
+// The most creases --lock takes (a lock set that --lock auto found on a large sheet included).
+#define CLI_FOLD_MAX_LOCKS 4096
+
 // The fold specification shared by fold and fit.
 typedef struct cli_fold_args {
     const char *path;
     int fix, drive;
     bool has_fix, has_drive, has_to, has_from;
     double to_deg, from_deg, step_deg;
-    int locks[256];
+    int locks[CLI_FOLD_MAX_LOCKS];
     int lock_count;
     int frame;
     bool json;
@@ -49,9 +71,8 @@ typedef struct cli_fold_args {
     ori_linear linear;
     int degree, refine;   // fit only
     cli_input input;      // --weld, and the drawing options (--tolerance, --gaps, --keep-*)
-    // --fix, --drive and --lock as given when they name a face by name ("Obj12") or a face or
-    // crease by a point ("@x,y"); NULL when given as indices. cli_fold_resolve sets fix, drive
-    // and locks from them.
+    // --fix, --drive and --lock as given (index, name, "@x,y", lists): cli_fold_resolve sets
+    // fix, drive and locks from them and clears them.
     const char *fix_spec, *drive_spec, *lock_spec;
 } cli_fold_args;
 
@@ -59,9 +80,8 @@ typedef struct cli_fold_args {
 // usage exit code after printing the message.
 int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_args *a);
 
-// Resolve --fix (index, face name or @x,y: the face containing the point), --drive and --lock
-// (indices or @x,y: the crease through the point; "3,@0.5,1,9" mixes them) against the loaded
-// crease pattern. Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after a message naming the option.
+// Resolve --fix, --drive and --lock (cli_spec_face, cli_spec_edge, cli_spec_edges) against the
+// loaded crease pattern; every caller of cli_fold_def resolves first. Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after a message naming the option.
 int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k);
 
 // Check the specification against the mechanism and fill a motion def (angles from k, pose

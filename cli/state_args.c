@@ -351,8 +351,10 @@ static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
     s->mech = s->kin.mech;
     s->has_flat = true;
     s->frame_count = 1;
+    s->fold = a->fold; // names and points (--fix Obj12, --drive @x,y, --lock 3,@x,y) resolved
+    if ((rc = cli_fold_resolve(cmd, &s->fold, &s->kin)) != CLI_EXIT_OK) return rc;
     ori_motion_def def;
-    if ((rc = cli_fold_def(cmd, &a->fold, &s->kin, &def)) != CLI_EXIT_OK) return rc;
+    if ((rc = cli_fold_def(cmd, &s->fold, &s->kin, &def)) != CLI_EXIT_OK) return rc;
     ori_error err;
     ori_status st = ori_motion_solve(s->mech, &def, &s->motion, &err);
     if (st != ORI_OK) {
@@ -367,7 +369,7 @@ static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
                 why ? why : "");
         return CLI_EXIT_NEGATIVE;
     }
-    s->start_drive_rad = a->fold.has_from ? ori_deg_to_rad(a->fold.from_deg) : s->kin.angles[a->fold.drive];
+    s->start_drive_rad = s->fold.has_from ? ori_deg_to_rad(s->fold.from_deg) : s->kin.angles[s->fold.drive];
     int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
     s->positions = xcalloc((size_t)V, sizeof(ori_v3));
     s->poses = xcalloc((size_t)F, sizeof(ori_rigid));
@@ -376,7 +378,7 @@ static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
     ori_motion_frame_face_poses(s->motion, nf - 1, s->poses);
     memcpy(s->angles, ori_motion_frame_angles(s->motion, nf - 1), sizeof(double) * (size_t)E);
     s->folded = true;
-    snprintf(s->label, sizeof s->label, "crease %d folded to %g deg", a->fold.drive, a->fold.to_deg);
+    snprintf(s->label, sizeof s->label, "crease %d folded to %g deg", s->fold.drive, s->fold.to_deg);
     return CLI_EXIT_OK;
 }
 
@@ -468,7 +470,7 @@ int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_
         return cli_collide_record(cmd, s->path, o, s->pattern, s->record, out);
     if (s->source != CLI_STATE_FOLD) return CLI_EXIT_OK;
     ori_motion_def def;
-    int rc = cli_fold_def(cmd, &s->args->fold, &s->kin, &def);
+    int rc = cli_fold_def(cmd, &s->fold, &s->kin, &def);
     if (rc != CLI_EXIT_OK) return rc;
     return cli_collide_motion(cmd, s->path, o, s->pattern, s->mech, &def, s->motion, out);
 }
@@ -583,11 +585,11 @@ static int motion_of_fold(const char *cmd, cli_state *s, const cli_state_args *a
 {
     const ori_motion *mo = s->motion;
     ori_motion *resolved = NULL;
-    double to = ori_deg_to_rad(a->fold.to_deg), from = s->start_drive_rad;
+    double to = ori_deg_to_rad(s->fold.to_deg), from = s->start_drive_rad;
     if (samples >= 2 && to != from) {
         // Solve again with the output steps at the animation's frames: every frame exact.
         ori_motion_def def;
-        int rc = cli_fold_def(cmd, &a->fold, &s->kin, &def);
+        int rc = cli_fold_def(cmd, &s->fold, &s->kin, &def);
         if (rc != CLI_EXIT_OK) return rc;
         def.step_rad = fabs(to - from) / (samples - 1);
         ori_error err;

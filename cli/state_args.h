@@ -5,7 +5,8 @@
 //   IN.fold [--frame N]               a frame: a folded form (3D vertices_coords), or a crease
 //                                     pattern posed from its edges_foldAngle (the loops must close)
 //   IN.svg | IN.opx | IN.cp           a drawing's crease pattern (read as every command reads it)
-//   IN.fold --fix F --drive E --to D  a fold (the kinematics options of `orikin fold`); the state
+//   IN.fold --fix F --drive E --to D  a fold (the kinematics options of `orikin fold`, faces and
+//                                     creases by index, name or @x,y as there); the state
 //     [--from --step --lock --solver --linear --frame N]     is the fold's last frame
 //   SEQ.json [--at T]                 a fold sequence at time T (default: its end)
 //
@@ -76,6 +77,7 @@ typedef struct cli_state {
     char label[160];         // what the state is: "frame 2", "crease 12 folded to 90 deg", "t = 1.5"
     // Internals kept for motions.
     const cli_state_args *args; // the options it was loaded with (kept alive by the caller)
+    cli_fold_args fold;         // a fold: args->fold with its faces and creases resolved
     ori_fold *doc;
     cli_kin kin;
     bool has_kin;

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "kinematics/multifold_internal.h"
 #include "support.h"
 
 #define DEG (ORI_PI / 180.0)
@@ -525,4 +526,171 @@ Test(fold_modes, percent_two_flaps_collide, .init = test_leak_setup, .fini = tes
     ori_multifold_destroy(mf);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
+}
+
+// A progress callback's record: every fraction reported, and after how many calls to cancel.
+typedef struct progress_log {
+    double f[4096];
+    int n;
+    int cancel_after; // 0: never
+} progress_log;
+
+static bool log_progress(double fraction, void *user)
+{
+    progress_log *l = user;
+    if (l->n < 4096) l->f[l->n] = fraction;
+    l->n++;
+    return !(l->cancel_after > 0 && l->n >= l->cancel_after);
+}
+
+// The calls are monotone in [0, 1] and end at exactly 1.
+static void check_progress(const progress_log *l, int min_calls)
+{
+    cr_assert_geq(l->n, min_calls);
+    cr_assert_leq(l->n, 4096);
+    for (int i = 0; i < l->n; ++i) {
+        cr_assert(l->f[i] >= 0.0 && l->f[i] <= 1.0, "call %d: %g", i, l->f[i]);
+        if (i > 0) cr_assert_geq(l->f[i], l->f[i - 1], "call %d: %g after %g", i, l->f[i], l->f[i - 1]);
+    }
+    cr_assert_eq(l->f[l->n - 1], 1.0);
+}
+
+// The multi-crease solves (toward the targets, several drives, symmetric) report progress per
+// step, monotone and ending at 1, and a callback returning false cancels them cleanly:
+// ORI_ERR_LIMIT "cancelled", no result, nothing leaked (the leak check, ASan).
+Test(fold_modes, progress_and_cancel, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = waterbomb(3);
+    ori_mechanism *m = test_mechanism_of(p);
+    static progress_log l;
+    ori_error err;
+    ori_multifold *mf = NULL;
+    // Toward the targets.
+    ori_target_fold_def t = ori_default_target_fold_def();
+    t.progress = log_progress;
+    t.progress_user = &l;
+    memset(&l, 0, sizeof l);
+    cr_assert_eq(ori_target_fold_solve(m, &t, &mf, &err), ORI_OK);
+    check_reached(p, m, mf, 1.0);
+    check_progress(&l, 5);
+    int calls = l.n;
+    ori_multifold_destroy(mf);
+    memset(&l, 0, sizeof l);
+    l.cancel_after = calls / 2;
+    cr_assert_eq(ori_target_fold_solve(m, &t, &mf, &err), ORI_ERR_LIMIT);
+    cr_assert_null(mf);
+    cr_assert_str_eq(err.message, "cancelled");
+    cr_assert_eq(l.n, calls / 2); // no call after the cancel
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+
+    // Several drives, and one drive with symmetry, on the waterbomb base.
+    p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m);
+    int *orbit = malloc(sizeof(int) * (size_t)E);
+    ori_mechanism_symmetry_orbits(m, orbit);
+    int axis = test_edge_at(p, 1, 1, 1, 0), axis2 = test_edge_at(p, 1, 1, 2, 1);
+    int locks[3] = {test_edge_at(p, 1, 1, 2, 0), test_edge_at(p, 1, 1, 2, 2), test_edge_at(p, 1, 1, 0, 2)};
+    int drives[2] = {axis, axis2};
+    double to[2] = {60.0 * DEG, 60.0 * DEG};
+    for (int sym = 0; sym <= 1; ++sym) {
+        ori_drives_fold_def d = ori_default_drives_fold_def();
+        d.driven_edges = drives;
+        d.to_rad = to;
+        d.driven_count = sym ? 1 : 2;
+        d.locked_edges = sym ? NULL : locks;
+        d.locked_count = sym ? 0 : 3;
+        d.edge_group = sym ? orbit : NULL;
+        d.step_rad = 5.0 * DEG;
+        d.progress = log_progress;
+        d.progress_user = &l;
+        memset(&l, 0, sizeof l);
+        cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_OK);
+        cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+        check_progress(&l, 12); // at least one call per 5° output step
+        calls = l.n;
+        ori_multifold_destroy(mf);
+        memset(&l, 0, sizeof l);
+        l.cancel_after = calls / 2;
+        cr_assert_eq(ori_drives_fold_solve(m, &d, &mf, &err), ORI_ERR_LIMIT);
+        cr_assert_null(mf);
+        cr_assert_str_eq(err.message, "cancelled");
+        cr_assert_eq(l.n, calls / 2);
+    }
+    free(orbit);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// A lock set from a folded state s (angles) for the drive: it leaves exactly one degree of
+// freedom (ori_mechanism_dof with the locks, at the state the fold reaches) and the fold moves
+// the drive 0.3 rad, validly. Returns the number of creases locked.
+static int check_lock_set(const ori_mechanism *m, const double *s, int drive, int method)
+{
+    int E = ori_mechanism_edge_count(m);
+    int *locks = malloc(sizeof(int) * (size_t)E);
+    ori_error err;
+    char msg[512];
+    int nl = ori__mechanism_lock_set_method(m, s, &drive, 1, NULL, 0, NULL, locks, E, method, &err);
+    cr_assert_gt(nl, 0, "method %d: %s", method, ori_error_format(&err, msg, sizeof msg));
+    ori_motion_def md = ori_default_motion_def();
+    md.start_angles_rad = s;
+    md.driven_edge = drive;
+    md.to_rad = s[drive] + 0.3;
+    md.step_rad = 0.1;
+    md.locked_edges = locks;
+    md.locked_count = nl;
+    ori_motion *mo = NULL;
+    cr_assert_eq(ori_motion_solve(m, &md, &mo, &err), ORI_OK);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "method %d: %s", method, ori_motion_reason(mo));
+    int F = ori_motion_frame_count(mo);
+    cr_assert_float_eq(ori_motion_frame_drive(mo, F - 1), md.to_rad, 1e-12);
+    ori_dof_def dd = ori_default_dof_def();
+    dd.angles_rad = ori_motion_frame_angles(mo, F - 1);
+    dd.locked_edges = locks;
+    dd.locked_count = nl;
+    ori_dof_result r;
+    cr_assert_eq(ori_mechanism_dof(m, &dd, &r, &err), ORI_OK);
+    cr_assert_eq(r.dof, 1, "method %d: %d locks leave %d degrees of freedom", method, nl, r.dof);
+    ori_motion_destroy(mo);
+    free(locks);
+    return nl;
+}
+
+// Sparse lock sets (null-space basis from CHOLMOD projections, QR of its transpose) against the
+// dense QR of the Jacobian on generated waterbomb tessellations from a folded state (30 % toward
+// the targets): both leave one degree of freedom and fold, with as many locks (the sets may
+// differ). A 16 x 16 tessellation (2139 x 2247 Jacobian, 4.8e6 entries, above the dense limit)
+// takes the sparse path by itself.
+Test(fold_modes, sparse_lock_sets, .init = test_leak_setup, .fini = test_leak_check)
+{
+    for (int n = 2; n <= 16; n += n < 6 ? 4 : 10) {
+        ori_pattern *p = waterbomb(n);
+        ori_mechanism *m = test_mechanism_of(p);
+        ori_target_fold_def t = ori_default_target_fold_def();
+        t.fraction = 0.3;
+        ori_multifold *mf = NULL;
+        ori_error err;
+        cr_assert_eq(ori_target_fold_solve(m, &t, &mf, &err), ORI_OK);
+        const double *s = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+        int E = ori_mechanism_edge_count(m), drive = -1;
+        for (int e = 0, skip = 3 * n; e < E && drive < 0; ++e) // a valley away from the corner
+            if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY && skip-- <= 0) drive = e;
+        if (n < 16) {
+            int dense = check_lock_set(m, s, drive, 1), sparse = check_lock_set(m, s, drive, 2);
+            cr_assert_eq(dense, sparse, "waterbomb %d: dense %d locks, sparse %d", n, dense, sparse);
+        } else {
+            int creases = 0; // the Jacobian's columns: every revolute crease but the drive
+            for (int e = 0; e < E; ++e) {
+                int j = ori_mechanism_edge_joint(m, e);
+                creases += j != ORI_NULL_INDEX && ori_mechanism_joint(m, j).kind == ORI_JOINT_REVOLUTE;
+            }
+            cr_assert_gt((double)m->rows * (double)(creases - 1), ORI_LOCKSET_DENSE_MAX_ENTRIES);
+            check_lock_set(m, s, drive, 0);
+        }
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
 }

@@ -780,8 +780,8 @@ void studio_api_progress(studio *s, const studio_request *req, studio_response *
     json_object_set_new(o, "busy", json_boolean(s->busy));
     json_object_set_new(o, "job", s->busy ? json_string(s->job) : json_null());
     json_object_set_new(o, "elapsed_s", s->busy ? json_real(studio_now() - s->job_start) : json_null());
-    // Phases that report progress (the collision checks, exports) give the fraction done; the
-    // solvers do not report one yet: the page shows the elapsed time.
+    // Phases that report progress (sequence runs, the collision checks, exports) give the
+    // fraction done; the others do not report one: the page shows the elapsed time.
     json_object_set_new(o, "fraction", s->busy && s->job_fraction >= 0.0 ? json_real(s->job_fraction) : json_null());
     pthread_mutex_unlock(&s->job_lock);
     studio_respond_json(out, 200, o);

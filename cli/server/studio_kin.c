@@ -834,7 +834,8 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const 
     ok = ok && start_pose(m, ori_sequence_fold_at(seq, 0).fixed_face, folded, coords, &pose, out);
     ori_record *r = NULL;
     if (ok) {
-        ori_status st = ori_sequence_run(seq, m, angles, pose, &r, &err);
+        // Its folds report their fraction (/api/progress), folds toward the targets included.
+        ori_status st = ori_sequence_run_progress(seq, m, angles, pose, studio_job_progress, s, &r, &err);
         if (st != ORI_OK) {
             studio_fail_error(out, studio_status_of(st), &err);
             ok = false;

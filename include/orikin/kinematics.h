@@ -459,6 +459,9 @@ typedef struct ori_target_fold_def {
     const int *locked_edges;         ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;           ///< NULL, or edge_count entries: creases with the same group ≥ 0 are kept at equal angles (e.g. symmetry orbits)
+    ori_progress_fn *progress;       ///< called per accepted step with the fraction of the distance to the goal covered
+                                     ///< (monotone, 1 at the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
+    void *progress_user;
     int internal_value;              ///< set by ori_default_target_fold_def; do not change
 } ori_target_fold_def;
 
@@ -491,6 +494,9 @@ typedef struct ori_drives_fold_def {
     const int *locked_edges;        ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;          ///< as in ori_target_fold_def (a driven crease drives its group)
+    ori_progress_fn *progress;      ///< called per accepted step with the fraction of the drives' way done (monotone, 1 at
+                                    ///< the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
+    void *progress_user;
     int internal_value;             ///< set by ori_default_drives_fold_def; do not change
 } ori_drives_fold_def;
 
@@ -544,14 +550,15 @@ ORI_API void ori_multifold_stats(const ori_multifold *fold, int *steps, int *rej
 /// verified by folding the drives 0.3 rad with it; the first that folds every crease as assigned
 /// is returned, else the best that moves. edge_group (NULL or edge_count entries) ties creases as
 /// in ori_target_fold_def (one edge per group is named). Writes up to cap edges (ascending) to
-/// out and returns the count (≥ 0), or −1 with *error set: ORI_ERR_UNSUPPORTED above
-/// ORI_LOCKSET_DENSE_MAX_ENTRIES Jacobian entries, ORI_ERR_ARGUMENT when a drive is not a free
-/// crease or no set lets the drives move.
+/// out and returns the count (≥ 0), or −1 with *error set: ORI_ERR_ARGUMENT when a drive is not a
+/// free crease or no set lets the drives move, ORI_ERR_UNSUPPORTED when the freedom is too large
+/// for the sparse path's null-space basis (ORI_LOCKSET_SPARSE_MAX_BASIS).
 ORI_API int ori_mechanism_lock_set(const ori_mechanism *mechanism, const double *angles_rad, const int *drive_edges,
                                    int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
                                    int *out, int cap, ori_error *error);
 
-/// The dense rank-revealing QR of ori_mechanism_lock_set is used up to this many Jacobian entries.
+/// The dense rank-revealing QR of ori_mechanism_lock_set is used up to this many Jacobian entries;
+/// above, a null-space basis from CHOLMOD projections and a QR of its transpose (sparse path).
 #define ORI_LOCKSET_DENSE_MAX_ENTRIES 4000000
 
 /// A symmetry of the flat sheet: x ↦ R x + t in the plane (R a rotation or a reflection).

@@ -453,5 +453,16 @@
 /// Closed-form 4R: |c| of the input–output equation within this of 1 is a double root (acos(c)
 /// ≈ √(2(1 − |c|)) magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad). Unitless.
 #define ORI_TOL_KIN_DOUBLE_ROOT 1e-12
+/// Sparse lock sets (src/kinematics/lockset_sparse.c): the null space of the loop-closure
+/// Jacobian is found from ORI_LOCKSET_SPARSE_BLOCK random vectors (doubling while they are all
+/// in it), each projected onto it ORI_LOCKSET_PROJECTIONS times; the dense basis (variables ×
+/// vectors) is refused above ORI_LOCKSET_SPARSE_MAX_BASIS entries. Counts.
+#define ORI_LOCKSET_SPARSE_BLOCK 16
+#define ORI_LOCKSET_PROJECTIONS 3
+#define ORI_LOCKSET_SPARSE_MAX_BASIS 5e7
+/// Sparse lock sets: a projected random vector's component counts as null-space direction above
+/// this fraction of the vector's norm (what the projections leave of the other directions is
+/// (λ/(σ² + λ))³, far below it for σ ≥ 1e-4). Unitless.
+#define ORI_TOL_LOCKSET_NULL_REL 1e-7
 
 #endif

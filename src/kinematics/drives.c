@@ -24,12 +24,19 @@ ori_drives_fold_def ori_default_drives_fold_def(void)
     return d;
 }
 
-// Nullity of the free columns at th (dense SVD; -1 when too large to form).
+// Nullity of the free columns at th (dense SVD; above ORI_LOCKSET_DENSE_MAX_ENTRIES entries the
+// sparse null-space basis of lockset_sparse.c; -1 when neither can tell).
 static int free_nullity(const ori_mechanism *m, const int *var, int nvar, const double *th)
 {
     int R = m->rows;
     if (nvar == 0) return 0;
-    if ((double)R * (double)nvar > ORI_LOCKSET_DENSE_MAX_ENTRIES) return -1;
+    if ((double)R * (double)nvar > ORI_LOCKSET_DENSE_MAX_ENTRIES) {
+        mf_system fs;
+        ori__mf_init(&fs, m, var, nvar);
+        int d = ori__mf_linearize(&fs, th) ? ori__mf_freedom(&fs, NULL, NULL) : -1;
+        ori__mf_free(&fs);
+        return d < 0 ? -1 : d;
+    }
     double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)nvar + 1));
     ori__mf_dense_jacobian(m, th, var, nvar, a);
     int k = R < nvar ? R : nvar;
@@ -145,6 +152,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double *sgn = ori__alloc(sizeof(double) * (size_t)(nfree + 1));
     double *nx = ori__alloc(sizeof(double) * (size_t)(nfree + 1));
+    bool cancelled = false; // the progress callback returned false
     if (mo) {
         memcpy(th0, th, sizeof(double) * (size_t)J);
         ori__mf_record(mo, th, ori__kin_residual(m, th), 0.0);
@@ -248,6 +256,10 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
             memcpy(th, trial, sizeof(double) * (size_t)J);
             t = tn;
             mo->steps++;
+            if (def->progress && !def->progress(fmin(t, 1.0), def->progress_user)) { // t only grows
+                cancelled = true;
+                break;
+            }
             // Freedom left to the solved creases: judged once the drives have moved by
             // ORI_DRIVES_CHECK_RAD (nearer the flat start the singular values are too small to tell).
             if (first && (t * rmax >= ORI_DRIVES_CHECK_RAD || t >= 1.0)) {
@@ -304,6 +316,11 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     ori__free(sgn);
     ori__free(nx);
     if (!mo) return st;
+    if (!cancelled && def->progress) cancelled = !def->progress(1.0, def->progress_user);
+    if (cancelled) {
+        ori_multifold_destroy(mo);
+        return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    }
     *out = mo;
     return ORI_OK;
 }

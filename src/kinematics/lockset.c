@@ -166,6 +166,14 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
                            const int *locked_edges, int locked_count, const int *edge_group, int *out, int cap,
                            ori_error *error)
 {
+    return ori__mechanism_lock_set_method(m, angles, drive_edges, drive_count, locked_edges, locked_count, edge_group,
+                                          out, cap, 0, error);
+}
+
+int ori__mechanism_lock_set_method(const ori_mechanism *m, const double *angles, const int *drive_edges,
+                                   int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
+                                   int *out, int cap, int method, ori_error *error)
+{
     ORI_ASSERT(m && (drive_edges || drive_count == 0) && (out || cap == 0));
     int J = m->joint_count, R = m->rows;
     int *joint_var = ori__alloc(sizeof(int) * (size_t)(J + 1));
@@ -174,13 +182,10 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
         ori__free(joint_var);
         return -1;
     }
-    if ((double)R * (double)nvar > ORI_LOCKSET_DENSE_MAX_ENTRIES) {
-        ori__free(joint_var);
-        ori__fail(error, ORI_ERR_UNSUPPORTED,
-                  "the lock set needs the dense Jacobian (%d x %d entries, above %d): lock creases by hand", R, nvar,
-                  ORI_LOCKSET_DENSE_MAX_ENTRIES);
-        return -1;
-    }
+    // Dense QR of the Jacobian's columns up to ORI_LOCKSET_DENSE_MAX_ENTRIES, else the sparse
+    // null-space basis (lockset_sparse.c).
+    bool sparse = method == 2 || (method == 0 && (double)R * (double)nvar > ORI_LOCKSET_DENSE_MAX_ENTRIES);
+    bool too_free = false; // the sparse path's null space is too large for a dense basis
     double *rate = ori__calloc((size_t)J + 1, sizeof(double));
     bool *is_drive = ori__calloc((size_t)nvar + 1, sizeof(bool));
     for (int i = 0; i < drive_count; ++i) {
@@ -207,7 +212,8 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
     int *var_of_col = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
     int *col_of_joint = ori__alloc(sizeof(int) * (size_t)(J + 1));
     double *vel = ori__alloc(sizeof(double) * (size_t)(nvar + 1));
-    double *a = ori__alloc(sizeof(double) * ((size_t)R * (size_t)(nvar + 2) + 1));
+    double *a = sparse ? NULL : ori__alloc(sizeof(double) * ((size_t)R * (size_t)(nvar + 2) + 1));
+    double *wts = ori__alloc(sizeof(double) * (size_t)(nvar + 1));
     int *jpvt = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
     int n = -1;
     int *cand = ori__alloc(sizeof(int) * (size_t)(nvar + 1));
@@ -231,17 +237,31 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
             int ncand = 0;
             for (int v = 0; v < nvar; ++v)
                 if (sys_of_var[v] >= 0) var_of_col[ncand++] = v;
-            for (int j = 0; j < J; ++j) col_of_joint[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
-            ori__mf_dense_jacobian(m, th2, col_of_joint, ncand, a);
-            for (int c = 0; c < ncand && strategy % 2 == 0; ++c) {
-                double w = fabs(vel[sys_of_var[var_of_col[c]]]) + ORI_LOCKSET_SPEED_FLOOR * vmax;
-                for (int r = 0; r < R; ++r) a[(size_t)c * (size_t)R + (size_t)r] *= w;
-            }
-            int rc = qr_rank(a, R, ncand, jpvt);
-            if (rc < 0) break;
-            if (rc < ncand) { // lock the columns the basis leaves out, and probe again
-                for (int k = rc; k < ncand; ++k) lock[var_of_col[jpvt[k] - 1]] = true;
-                continue;
+            for (int c = 0; c < ncand; ++c)
+                wts[c] = strategy % 2 == 0 ? fabs(vel[sys_of_var[var_of_col[c]]]) + ORI_LOCKSET_SPEED_FLOOR * vmax : 1.0;
+            if (sparse) {
+                // The null space of the free columns: lock d creases that leave none of it.
+                mf_system fs;
+                ori__mf_init(&fs, m, sys_var, nsys);
+                int d = ori__mf_linearize(&fs, th2) ? ori__mf_freedom(&fs, wts, jpvt) : -1;
+                ori__mf_free(&fs);
+                too_free = too_free || d == -2;
+                if (d < 0) break;
+                if (d > 0) {
+                    for (int k = 0; k < d; ++k) lock[var_of_col[jpvt[k]]] = true;
+                    continue;
+                }
+            } else {
+                for (int j = 0; j < J; ++j) col_of_joint[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
+                ori__mf_dense_jacobian(m, th2, col_of_joint, ncand, a);
+                for (int c = 0; c < ncand; ++c)
+                    for (int r = 0; r < R; ++r) a[(size_t)c * (size_t)R + (size_t)r] *= wts[c];
+                int rc = qr_rank(a, R, ncand, jpvt);
+                if (rc < 0) break;
+                if (rc < ncand) { // lock the columns the basis leaves out, and probe again
+                    for (int k = rc; k < ncand; ++k) lock[var_of_col[jpvt[k] - 1]] = true;
+                    continue;
+                }
             }
             // No freedom left beside the drives: verify by folding the drives by 0.3 rad.
             int nc = 0;
@@ -273,7 +293,12 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
             break;
         }
     }
-    if (n < 0)
+    if (n < 0 && too_free)
+        ori__fail(error, ORI_ERR_UNSUPPORTED,
+                  "the fold leaves too much freedom for a lock set (a null-space basis above %.0e entries): lock "
+                  "creases by hand",
+                  (double)ORI_LOCKSET_SPARSE_MAX_BASIS);
+    else if (n < 0)
         ori__fail(error, ORI_ERR_ARGUMENT,
                   probed ? "no lock set found that keeps the motion (each candidate left the drives stuck or free): "
                            "lock creases by hand"
@@ -293,6 +318,7 @@ int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const i
     ori__free(col_of_joint);
     ori__free(vel);
     ori__free(a);
+    ori__free(wts);
     ori__free(jpvt);
     return n;
 }

@@ -97,6 +97,21 @@ ori_status ori__mf_group_start(const ori_mechanism *m, const int *joint_var, int
 ori_status ori__mf_close(const ori_mechanism *m, const int *locked_edges, int locked_count, double *edge_angles,
                          ori_error *error);
 
+// The freedom of the variables of s at its last linearization (ori__mf_linearize first),
+// without forming J densely (lockset_sparse.c): the nullity d of J, and when lock is not NULL d
+// variables (into lock) whose locking leaves no freedom, chosen by column-pivoted QR of the
+// null-space basis's transpose, rows scaled by 1/weight (NULL: unweighted). Returns d, -1 when a
+// factorization fails, -2 when the null space is too large for a dense basis
+// (ORI_LOCKSET_SPARSE_MAX_BASIS entries).
+int ori__mf_freedom(mf_system *s, const double *weight, int *lock);
+
+// ori_mechanism_lock_set with the method chosen: 0 by size (dense up to
+// ORI_LOCKSET_DENSE_MAX_ENTRIES Jacobian entries, else sparse), 1 dense, 2 sparse (tests compare
+// the two).
+int ori__mechanism_lock_set_method(const ori_mechanism *m, const double *angles, const int *drive_edges,
+                                   int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
+                                   int *out, int cap, int method, ori_error *error);
+
 // Dense loop-closure Jacobian at joint angles th restricted to the columns col_of_joint ≥ 0
 // (ncols columns; joints sharing a column are summed), column-major rows × ncols.
 void ori__mf_dense_jacobian(const ori_mechanism *m, const double *th, const int *col_of_joint, int ncols, double *a);

@@ -600,7 +600,9 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     int *all_locks = ori__alloc(sizeof(int) * (size_t)(def->locked_count + m->edge_count + 1));
     int nlocks = def->locked_count;
     for (int i = 0; i < nlocks; ++i) all_locks[i] = def->locked_edges[i];
-    while (!done) {
+    double reported = 0.0; // the progress fraction last reported (kept monotone)
+    bool cancelled = false;
+    while (!done && !cancelled) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
         double dmax = 0.0;
@@ -687,6 +689,10 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                     recorded = true;
                 }
                 if (its <= 5) h = fmin(2.0 * h, hmax);
+                if (def->progress) { // the distance to the goal only shrinks: 1 − D/D0 grows
+                    reported = fmax(reported, fmin(1.0, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0));
+                    cancelled = !def->progress(reported, def->progress_user);
+                }
                 break;
             }
             mo->rejected++;
@@ -696,6 +702,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 break;
             }
         }
+        if (cancelled) break;
         // A crease stopped at ±180° that is its own goal is held there, and the others go on.
         if (done && why == WHY_LIMIT && fabs(goal[why_joint]) >= ORI_PI - ORI_TOL_TARGET_RAD &&
             fabs(th[why_joint]) >= ORI_PI - ORI_MULTIFOLD_PIN_RAD) {
@@ -773,6 +780,11 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     ori__free(jd);
     ori__free(trial);
     ori__free(pred);
+    if (!cancelled && def->progress) cancelled = !def->progress(1.0, def->progress_user);
+    if (cancelled) {
+        ori_multifold_destroy(mo);
+        return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    }
     *out = mo;
     return ORI_OK;
 }

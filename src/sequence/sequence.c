@@ -312,7 +312,8 @@ static double fold_time(int fold, double from, double to, double x)
 // A fold toward the targets: its frames recorded with the progress (0 … 1) as the "drive";
 // angles and poses updated to its end. Not reaching the goal fails the sequence (blocked).
 static ori_status ori__sequence_target_fold(ori_record *r, int i, const ori_sequence_fold *f, double *angles,
-                                            ori_rigid pose, ori_rigid *poses, ori_v3 *pos, ori_error *error)
+                                            ori_rigid pose, ori_rigid *poses, ori_v3 *pos, ori_progress_fn *progress,
+                                            void *progress_user, ori_error *error)
 {
     ori_target_fold_def td = ori_default_target_fold_def();
     td.fixed_face = f->fixed_face;
@@ -322,9 +323,13 @@ static ori_status ori__sequence_target_fold(ori_record *r, int i, const ori_sequ
     td.step_rad = f->step_rad;
     td.locked_edges = f->locked;
     td.locked_count = f->locked_count;
+    td.progress = progress;
+    td.progress_user = progress_user;
     ori_multifold *mf = NULL;
     ori_error e;
     ori_status st = ori_target_fold_solve(r->mechanism, &td, &mf, &e);
+    if (st == ORI_ERR_LIMIT && progress && strcmp(e.message, "cancelled") == 0)
+        return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
     if (st != ORI_OK) {
         char msg[256];
         ori_error_format(&e, msg, sizeof msg);
@@ -418,7 +423,9 @@ ori_status ori_sequence_run_progress(const ori_sequence *s, const ori_mechanism 
             break;
         }
         if (f->targets) { // a fold toward the targets (src/kinematics/targets.c)
-            if ((st = ori__sequence_target_fold(r, i, f, angles, pose, poses, pos, error)) != ORI_OK) break;
+            if ((st = ori__sequence_target_fold(r, i, f, angles, pose, poses, pos, progress ? seq_progress_fn : NULL,
+                                                &sp, error)) != ORI_OK)
+                break;
             if (r->failed != ORI_NULL_INDEX) break;
             r->completed = i + 1;
             continue;
