@@ -49,6 +49,8 @@ typedef struct ori_regularize_result {
     double rigid_before;        ///< rigid only: largest first/second-order closure defect of the
                                 ///< best fold rates for the input (radians; 0 without rigid)
     double rigid_after;         ///< and after (≤ ORI_TOL_REGULARIZE_RIGID when converged)
+    int mode_vertices;          ///< rigid only: degree-4 vertices held to the mode their
+                                ///< assignment picks (the finite condition), not second order
     int crossing_edge;          ///< an edge that the moves made cross another (no pattern was
                                 ///< built), or ORI_NULL_INDEX
     char crossing[160];         ///< what crosses, when crossing_edge is set
