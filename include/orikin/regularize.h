@@ -54,6 +54,8 @@ typedef struct ori_regularize_result {
     int crossing_edge;          ///< an edge that the moves made cross another (no pattern was
                                 ///< built), or ORI_NULL_INDEX
     char crossing[160];         ///< what crosses, when crossing_edge is set
+    int against_edge;           ///< rigid only: a crease of a degree-4 vertex whose assigned mode
+                                ///< folds it against its assignment (not converged), or ORI_NULL_INDEX
 } ori_regularize_result;
 
 /// Regularize a built flat crease pattern: a new built pattern with the same vertices, edges,

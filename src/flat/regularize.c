@@ -59,6 +59,7 @@ typedef struct reg {
     double *c;           // equation values
     ori_v2 *dx, *x_save; // Gauss–Newton step and the state it starts from
     double *dr, *r_save;
+    double *r_start;     // the start rates (their signs are the assignment's)
 } reg;
 
 static void push(reg *g, int row, int col, double val)
@@ -455,6 +456,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
     res->odd_vertex = ORI_NULL_INDEX;
     res->max_move_vertex = ORI_NULL_INDEX;
     res->crossing_edge = ORI_NULL_INDEX;
+    res->against_edge = ORI_NULL_INDEX;
     if (!p->built) return ori__fail(error, ORI_ERR_ARGUMENT, "the pattern is not built");
     if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p))
         return ori__fail(error, ORI_ERR_ARGUMENT, "regularize needs a flat crease pattern, not a folded form");
@@ -569,6 +571,8 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         if (g.R > 0.0)
             for (int e = 0; e < ne; ++e) g.rate[e] /= g.R;
     }
+    g.r_start = ori__alloc(sizeof(double) * (size_t)(ne + 1));
+    memcpy(g.r_start, g.rate, sizeof(double) * (size_t)ne);
     for (int i = 0; i < g.niv; ++i) {
         g.iv[i].nrig = 3;
         if (g.rigid && mode_of(&g, &g.iv[i])) {
@@ -620,6 +624,20 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         defects(&g, &kaw, &rig);
         res->rigid_after = rig;
         if (g.fixed_edge == ORI_NULL_INDEX) converged = false;
+        // In its assigned mode every crease of a degree-4 vertex folds with the sign it started
+        // with, unless the geometry forbids that assignment (the odd crease on the wrong side):
+        // then the motion exists only against the assignment.
+        for (int i = 0; i < g.niv && res->against_edge == ORI_NULL_INDEX; ++i) {
+            if (g.iv[i].nrig != 4) continue;
+            for (int k = 0; k < 4; ++k) {
+                int e = g.crease_edge[g.iv[i].first + k];
+                if (g.rate[e] * g.r_start[e] <= 0.0) {
+                    res->against_edge = e;
+                    converged = false;
+                    break;
+                }
+            }
+        }
     }
     {
         double kaw, rig;
@@ -683,5 +701,6 @@ fail:
     ori__free(g.x_save);
     ori__free(g.dr);
     ori__free(g.r_save);
+    ori__free(g.r_start);
     return st;
 }
