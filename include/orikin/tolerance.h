@@ -454,4 +454,9 @@
 /// ≈ √(2(1 − |c|)) magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad). Unitless.
 #define ORI_TOL_KIN_DOUBLE_ROOT 1e-12
 
+/// regularize --rigid: a crease of a degree-4 vertex held to its assigned mode folds against its
+/// assignment when its rate has the other sign and exceeds this (units of the largest rate; a
+/// smaller rate is a crease the motion leaves flat, as at a vertex of two straight lines).
+#define ORI_TOL_REGULARIZE_AGAINST_RATE 1e-9
+
 #endif

@@ -631,7 +631,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
             if (g.iv[i].nrig != 4) continue;
             for (int k = 0; k < 4; ++k) {
                 int e = g.crease_edge[g.iv[i].first + k];
-                if (g.rate[e] * g.r_start[e] <= 0.0) {
+                if (g.rate[e] * g.r_start[e] < 0.0 && fabs(g.rate[e]) > ORI_TOL_REGULARIZE_AGAINST_RATE) {
                     res->against_edge = e;
                     converged = false;
                     break;
