@@ -10,6 +10,8 @@
 //   first order   F = Σ_k ρ̂_k u_k = 0                       (two rows: a reciprocal diagram)
 //   second order  Q = Σ_{i<j} ρ̂_i ρ̂_j (u_i × u_j)·z = 0     (its signed area; the start crease
 //                                                             does not matter once F = 0)
+// except at a degree-4 vertex with a three-to-one assignment, where Q is replaced by the two rows
+// of the mode the assignment picks (mode_of): ρ̂_a − ρ̂_b = 0, ρ̂_c + ρ̂_d = 0, the finite condition.
 // Each Gauss–Newton step solves min ‖x̂ − x̂₀‖² + w‖ρ̂ − ρ̂_k‖² subject to the linearised
 // equations: y = W⁻¹Aᵀλ with (A W⁻¹ Aᵀ + δI) λ = A_x (x̂_k − x̂₀) − c_k, factored by CHOLMOD
 // (AAᵀ of the column-scaled A, simplicial LDLᵀ). The tiny w makes the rates cheap, so the
