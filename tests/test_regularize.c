@@ -420,3 +420,32 @@ Test(regularize, assignment_against_the_mode_is_refused)
     ori_mechanism_destroy(mech);
     ori_pattern_destroy(p);
 }
+
+// What the assigned modes cover: a generated waterbomb tessellation has only degree-6 interior
+// vertices, so a jittered, rounded one is regularized to second order alone (no vertex held to a
+// mode), still exactly and with moves under 1e-4 of the sheet.
+Test(regularize, degree_six_vertices_stay_second_order)
+{
+    ori_generate_def g = ori_default_generate_def(ORI_TESS_WATERBOMB);
+    g.rows = 3;
+    g.cols = 4;
+    ori_pattern *w = NULL;
+    ori_error err;
+    cr_assert_eq(ori_generate(&g, &w, NULL, &err), ORI_OK, "%s", err.message);
+    ori_pattern *q = rounded(w, 6e-5, 4, 2);
+    cr_assert_gt(max_kawasaki(q), 1e-6);
+    ori_regularize_def d = ori_default_regularize_def();
+    d.rigid = true;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.converged);
+    cr_assert_gt(r.interior_vertices, 0);
+    cr_assert_eq(r.mode_vertices, 0);
+    cr_assert_leq(r.rigid_after, 1e-12);
+    cr_assert_leq(max_kawasaki(out), 1e-12);
+    cr_assert_lt(r.max_move_rel, 1e-4);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(w);
+}
