@@ -78,6 +78,12 @@ static int run(int argc, char **argv)
                  "the nearest %s pattern would make edges cross (%s): the drawing's topology does not allow it",
                  rigid ? "rigidly foldable" : "flat-foldable", r.crossing);
         why = buf;
+    } else if (r.against_edge != ORI_NULL_INDEX) {
+        snprintf(buf, sizeof buf,
+                 "crease %d folds against its assignment in the only motion its degree-4 vertices allow (the "
+                 "assignment does not fit the geometry)",
+                 r.against_edge);
+        why = buf;
     } else if (!r.converged) {
         if (rigid)
             snprintf(buf, sizeof buf,
@@ -117,6 +123,9 @@ static int run(int argc, char **argv)
         json_object_set_new(o, "crossing_edge", r.crossing_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.crossing_edge));
         json_object_set_new(o, "rigid_before", rigid ? json_real(r.rigid_before) : json_null());
         json_object_set_new(o, "rigid_after", rigid ? json_real(r.rigid_after) : json_null());
+        json_object_set_new(o, "mode_vertices", rigid ? json_integer(r.mode_vertices) : json_null());
+        json_object_set_new(o, "against_edge",
+                            r.against_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.against_edge));
         json_object_set_new(o, "output", ok && out ? json_string(out) : json_null());
         cli_print_json(o);
         printf("\n");
@@ -126,16 +135,24 @@ static int run(int argc, char **argv)
         printf("  Kawasaki: largest miss %.3g deg before, %.3g deg after\n", deg(r.kawasaki_before_rad),
                deg(r.kawasaki_after_rad));
         if (rigid)
-            printf("  rigid (second-order closure of the fold rates): defect %.3g before, %.3g after\n", r.rigid_before,
-                   r.rigid_after);
+            printf("  rigid: %d degree-4 vertices in their assigned mode, %d to second order; defect %.3g before, "
+                   "%.3g after\n",
+                   r.mode_vertices, r.interior_vertices - r.mode_vertices, r.rigid_before, r.rigid_after);
         if (r.max_move_vertex != ORI_NULL_INDEX)
             printf("  moved %d vertices: largest %.3g of the sheet size (vertex %d), RMS %.3g\n", r.moved_vertices,
                    r.max_move_rel, r.max_move_vertex, r.rms_move_rel);
         else
             printf("  no vertex moved: the pattern is exact already\n");
+        // Every interior vertex in its assigned mode: the rates are a finite motion (see
+        // docs/verification.md); otherwise the certificate is second order.
+        const char *kind = !rigid ? "flat-foldable (Kawasaki exact)"
+                           : r.mode_vertices == r.interior_vertices
+                               ? "rigidly foldable along the assignment (every vertex of degree 4 in its assigned mode), "
+                                 "flat-foldable"
+                               : "rigidly foldable to second order, flat-foldable";
         if (!ok && why) printf("verdict: refused: %s\n", why);
-        else if (out) printf("verdict: %s; written to %s\n", rigid ? "rigidly foldable to second order, flat-foldable" : "flat-foldable (Kawasaki exact)", out);
-        else printf("verdict: %s (dry run: give -o OUT to write it)\n", rigid ? "rigidly foldable to second order, flat-foldable" : "flat-foldable (Kawasaki exact)");
+        else if (out) printf("verdict: %s; written to %s\n", kind, out);
+        else printf("verdict: %s (dry run: give -o OUT to write it)\n", kind);
     }
     ori_pattern_destroy(q);
     ori_pattern_destroy(p);
@@ -154,8 +171,10 @@ const cli_command cli_cmd_regularize = {
     "interior vertex satisfies Kawasaki exactly (to 1e-12 rad): interior vertices move in the\n"
     "plane, boundary vertices slide along their straight side, corners stay; the topology and\n"
     "assignment are kept. With --rigid the pattern is also made rigidly foldable from the flat\n"
-    "state (to second order: fold rates with the assignment's signs whose rotations close at\n"
-    "every vertex; for quad meshes of degree-4 vertices this makes the whole motion exist).\n"
+    "state: fold rates whose rotations close at every vertex; a degree-4 vertex is held to the\n"
+    "folding mode its assignment picks (opposite creases of like sign fold equally, the odd one\n"
+    "opposite to the one across), which makes the whole motion exist; other vertices to second\n"
+    "order (zero-area reciprocal diagram).\n"
     "Reports the largest and RMS displacement relative to the sheet's diagonal. Refuses (exit 1,\n"
     "nothing written) when a vertex would move more than --max-move of the sheet size: such a\n"
     "drawing is not a rounded exact pattern. See docs/verification.md.\n"
@@ -163,14 +182,16 @@ const cli_command cli_cmd_regularize = {
     "options:\n"
     "  -o OUT          write the regularized pattern (FOLD: every other field kept; .svg, .cp,\n"
     "                  .opx by extension); without it, a dry run\n"
-    "  --rigid         also make the pattern rigidly foldable (second order)\n"
+    "  --rigid         also make the pattern rigidly foldable (assigned modes at degree 4,\n"
+    "                  second order elsewhere)\n"
     "  --max-move REL  largest displacement accepted, relative to the sheet's diagonal; default 1e-3\n"
 
     "  --json          print {\"file\", \"rigid\", \"converged\", \"refused\", \"reason\",\n"
     "                  \"interior_vertices\", \"unknowns\", \"equations\", \"iterations\",\n"
     "                  \"moved_vertices\", \"max_move_rel\", \"max_move_vertex\", \"rms_move_rel\",\n"
     "                  \"max_move_allowed_rel\", \"kawasaki_before_deg\", \"kawasaki_after_deg\",\n"
-    "                  \"crossing_edge\", \"rigid_before\", \"rigid_after\", \"output\"}\n"
+    "                  \"crossing_edge\", \"rigid_before\", \"rigid_after\", \"mode_vertices\",\n"
+    "                  \"against_edge\", \"output\"}\n"
     "\n"
     "input options (FILE is a FOLD file or a drawing: .svg, .opx, .cp):\n"
     CLI_INPUT_HELP

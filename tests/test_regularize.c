@@ -308,3 +308,194 @@ Test(regularize, origami_simulator_miura_drawings_fold)
         ori_pattern_destroy(p);
     }
 }
+
+// --- the assigned mode of degree-4 vertices -------------------------------------------------
+
+// The pattern with every coordinate jittered by up to `jitter` (absolute; boundary vertices along
+// their side only) and then rounded to `digits` decimals, as a drawing tool saves it; built.
+static ori_pattern *rounded(const ori_pattern *p, double jitter, int digits, unsigned seed)
+{
+    ori_pattern *q = perturbed(p, jitter / ori_pattern_diagonal(p), seed);
+    double scale = pow(10.0, digits);
+    for (int v = 0; v < ori_pattern_vertex_count(q); ++v) {
+        ori_v3 a = ori_pattern_vertex(q, v);
+        ori_pattern_set_vertex(q, v, ori_v3_make(round(a.x * scale) / scale, round(a.y * scale) / scale, 0.0));
+    }
+    ori_error err;
+    cr_assert_eq(ori_pattern_build(q, NULL, &err), ORI_OK, "%s", err.message);
+    return q;
+}
+
+// Regularize --rigid, assert the result is exact and close, and fold it from flat to 170°.
+static void regularize_and_fold(const ori_pattern *q, const char *what)
+{
+    ori_regularize_def d = ori_default_regularize_def();
+    d.rigid = true;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    ori_error err;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s: %s", what, err.message);
+    cr_assert(r.converged, "%s: not converged (rigid %.3g)", what, r.rigid_after);
+    cr_assert_not_null(out);
+    cr_assert_eq(r.mode_vertices, r.interior_vertices, "%s: every Miura vertex is degree 4 and Maekawa", what);
+    cr_assert_eq(r.against_edge, ORI_NULL_INDEX);
+    cr_assert_leq(r.rigid_after, 1e-12, "%s", what);
+    cr_assert_leq(max_kawasaki(out), 1e-12, "%s", what);
+    cr_assert_lt(r.max_move_rel, 1e-4, "%s moved %.3g", what, r.max_move_rel);
+    double res;
+    ori_motion_verdict v = fold_miura(out, &res);
+    cr_assert_eq(v, ORI_MOTION_VALID, "%s: fold verdict %d after regularize --rigid (moved %.3g)", what, (int)v,
+                 r.max_move_rel);
+    cr_assert_leq(res, 1e-10, "%s: residual %.3g", what, res);
+    ori_pattern_destroy(out);
+}
+
+// tests/data/rounded-miura.fold (a 3 × 4 Miura-ori jittered by 6e-5 and rounded to 4 decimals):
+// the second-order conditions alone let the rates of two vertices settle on their other mode
+// (the straight crease line folding alone), a motion to first and second order but not along the
+// assignment, and `fold` stopped at 0.13°. Held to the assigned modes it folds to 170°.
+Test(regularize, rounded_miura_file_folds_along_its_assignment)
+{
+    ori_pattern *q = test_load_pattern(test_repo_path("tests/data/rounded-miura.fold"), 0);
+    double res;
+    cr_assert_neq(fold_miura(q, &res), ORI_MOTION_VALID, "the rounded drawing should not fold");
+    regularize_and_fold(q, "rounded-miura.fold");
+    ori_pattern_destroy(q);
+}
+
+// Generated Miura-ori of several sizes and cell angles, jittered by 6e-5 of a unit cell and
+// rounded to 4 decimals with several seeds: none folds as drawn; every one folds from flat to
+// 170° after regularize --rigid, moving under 1e-4 of the sheet.
+Test(regularize, jittered_rounded_miuras_fold, .timeout = 60)
+{
+    struct {
+        int rows, cols;
+        double angle_deg, b;
+    } sizes[] = {{3, 4, 65, 1.0}, {4, 4, 65, 1.0}, {5, 3, 60, 1.0}, {6, 5, 55, 1.2}};
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; ++i) {
+        ori_pattern *m = test_miura(sizes[i].rows, sizes[i].cols, 1.0, sizes[i].b, deg(sizes[i].angle_deg), NULL);
+        for (unsigned seed = 1; seed <= 3; ++seed) {
+            ori_pattern *q = rounded(m, 6e-5, 4, seed);
+            char what[80];
+            snprintf(what, sizeof what, "%d x %d Miura, %g deg, seed %u", sizes[i].rows, sizes[i].cols,
+                     sizes[i].angle_deg, seed);
+            double res;
+            cr_assert_neq(fold_miura(q, &res), ORI_MOTION_VALID, "%s: the rounded drawing should not fold", what);
+            regularize_and_fold(q, what);
+            ori_pattern_destroy(q);
+        }
+        ori_pattern_destroy(m);
+    }
+}
+
+// A degree-4 vertex whose odd crease does not bound the smallest sector (Kawasaki and Maekawa
+// hold, big-little-big fails): the mode its assignment picks folds creases 1 and 3 against their
+// mountain assignment, so no motion follows the assignment; regularize --rigid says so instead of
+// handing back a pattern, and `fold` agrees (invalid).
+Test(regularize, assignment_against_the_mode_is_refused)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/degree4-wrong-odd-crease.fold"), 0);
+    ori_regularize_def d = ori_default_regularize_def();
+    d.rigid = true;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+    cr_assert_not(r.converged);
+    cr_assert_null(out);
+    cr_assert_eq(r.mode_vertices, 1);
+    cr_assert(r.against_edge == 1 || r.against_edge == 3, "against edge %d", r.against_edge);
+    cr_assert_leq(r.rigid_after, 1e-12, "the mode itself closes");
+    cr_assert_leq(r.max_move_rel, 1e-15, "nothing needed to move");
+    ori_mechanism *mech = test_mechanism_of(p);
+    int faces[2];
+    ori_pattern_edge_faces(p, 0, faces);
+    ori_motion_def md = ori_default_motion_def();
+    md.fixed_face = faces[0];
+    md.driven_edge = 0;
+    md.to_rad = deg(-90);
+    ori_motion *mo = NULL;
+    cr_assert_eq(ori_motion_solve(mech, &md, &mo, NULL), ORI_OK);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(mech);
+    ori_pattern_destroy(p);
+}
+
+// What the assigned modes cover: a generated waterbomb tessellation has only degree-6 interior
+// vertices, so a jittered, rounded one is regularized to second order alone (no vertex held to a
+// mode), still exactly and with moves under 1e-4 of the sheet.
+Test(regularize, degree_six_vertices_stay_second_order)
+{
+    ori_generate_def g = ori_default_generate_def(ORI_TESS_WATERBOMB);
+    g.rows = 3;
+    g.cols = 4;
+    ori_pattern *w = NULL;
+    ori_error err;
+    cr_assert_eq(ori_generate(&g, &w, NULL, &err), ORI_OK, "%s", err.message);
+    ori_pattern *q = rounded(w, 6e-5, 4, 2);
+    cr_assert_gt(max_kawasaki(q), 1e-6);
+    ori_regularize_def d = ori_default_regularize_def();
+    d.rigid = true;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.converged);
+    cr_assert_gt(r.interior_vertices, 0);
+    cr_assert_eq(r.mode_vertices, 0);
+    cr_assert_leq(r.rigid_after, 1e-12);
+    cr_assert_leq(max_kawasaki(out), 1e-12);
+    cr_assert_lt(r.max_move_rel, 1e-4);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(w);
+}
+
+// The finite form behind the assigned modes: along the whole motion of the regularized
+// rounded-miura.fold (flat to −170°, 17 states), tan(ρ_e/2) / tan(ρ_drive/2) stays what it is
+// at the first step for every crease (the multipliers of the degree-4 vertices are constant and
+// close around the faces), to 1e-9.
+Test(regularize, regularized_miura_keeps_its_multipliers)
+{
+    ori_pattern *q = test_load_pattern(test_repo_path("tests/data/rounded-miura.fold"), 0);
+    ori_regularize_def d = ori_default_regularize_def();
+    d.rigid = true;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    ori_error err;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_not_null(out);
+    ori_mechanism *mech = test_mechanism_of(out);
+    int drive = 5; // a mountain "straight" crease between two interior vertices
+    cr_assert_eq(ori_pattern_edge(out, drive).assignment, ORI_ASSIGN_MOUNTAIN);
+    int faces[2];
+    ori_pattern_edge_faces(out, drive, faces);
+    ori_motion_def md = ori_default_motion_def();
+    md.fixed_face = faces[0];
+    md.driven_edge = drive;
+    md.to_rad = deg(-170);
+    md.step_rad = deg(10);
+    ori_motion *mo = NULL;
+    cr_assert_eq(ori_motion_solve(mech, &md, &mo, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID);
+    int nf = ori_motion_frame_count(mo), ne = ori_pattern_edge_count(out);
+    cr_assert_eq(nf, 18);
+    const double *first = ori_motion_frame_angles(mo, 1);
+    double worst = 0.0;
+    int moving = 0;
+    for (int e = 0; e < ne; ++e) {
+        if (first[e] == 0.0) continue;
+        moving++;
+        double mu = tan(first[e] / 2.0) / tan(first[drive] / 2.0);
+        for (int k = 2; k < nf; ++k) {
+            const double *a = ori_motion_frame_angles(mo, k);
+            double m = tan(a[e] / 2.0) / tan(a[drive] / 2.0);
+            worst = fmax(worst, fabs(m - mu) / fabs(mu));
+        }
+    }
+    cr_assert_eq(moving, 17, "every crease folds");
+    cr_assert_leq(worst, 1e-9, "multiplier drift %.3g", worst);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(mech);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(q);
+}

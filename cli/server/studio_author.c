@@ -129,6 +129,11 @@ static const char *regularize_refusal(const ori_regularize_result *r, const ori_
     else if (r->crossing_edge != ORI_NULL_INDEX)
         snprintf(buf, size, "the nearest %s pattern would make edges cross (%s): the drawing's topology does not allow it",
                  goal, r->crossing);
+    else if (r->against_edge != ORI_NULL_INDEX)
+        snprintf(buf, size,
+                 "crease %d folds against its assignment in the only motion its degree-4 vertices allow (the "
+                 "assignment does not fit the geometry)",
+                 r->against_edge);
     else if (!r->converged && def->rigid)
         snprintf(buf, size,
                  "no rigidly foldable pattern was found near this one (Kawasaki %.3g rad, rigid defect %.3g after %d "
@@ -200,6 +205,9 @@ void studio_api_regularize(studio *s, const studio_request *req, studio_response
                                 r.crossing_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.crossing_edge));
             json_object_set_new(j, "rigid_before", rigid ? json_real(r.rigid_before) : json_null());
             json_object_set_new(j, "rigid_after", rigid ? json_real(r.rigid_after) : json_null());
+            json_object_set_new(j, "mode_vertices", rigid ? json_integer(r.mode_vertices) : json_null());
+            json_object_set_new(j, "against_edge",
+                                r.against_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.against_edge));
             json_object_set_new(j, "output", json_null());
             bool replaced = false;
             pthread_mutex_lock(&s->lock);

@@ -1,13 +1,13 @@
 /// orikin regularize: the nearest exact crease pattern to a rounded drawing. Vertices move as
 /// little as possible (least squares on the coordinates, sparse Gauss–Newton with CHOLMOD) so
 /// that every interior vertex satisfies Kawasaki exactly and, on request, so that the pattern
-/// is rigidly foldable from the flat state to second order: a vector of fold rates exists,
-/// with the signs of the assignment, whose rotations close at every vertex to first order
-/// (Σ ρ'_i u_i = 0, a reciprocal diagram) and to second order (Σ_{i<j} ρ'_i ρ'_j u_i × u_j = 0,
-/// its zero signed area: Demaine, Demaine, Huffman, Hull, Koschitz, Tachi 2016). For quad
-/// meshes of flat-foldable degree-4 vertices this is the closure of the fold-angle multipliers
-/// around every face, and it makes the whole motion exist; for other vertices it is the
-/// general second-order form. docs/verification.md explains it.
+/// is rigidly foldable from the flat state: a vector of fold rates exists whose rotations close
+/// at every vertex to first order (Σ ρ'_i u_i = 0, a reciprocal diagram); a degree-4 vertex
+/// with a three-to-one assignment is held to the mode the assignment picks (opposite creases of
+/// like sign fold equally, the odd one opposite to the one across), which makes the whole
+/// motion exist (Tachi 2009; Evans et al. 2015); other vertices close to second order
+/// (Σ_{i<j} ρ'_i ρ'_j u_i × u_j = 0, a zero-area reciprocal diagram: Demaine, Demaine, Huffman,
+/// Hull, Koschitz, Tachi 2016). docs/verification.md explains it.
 ///
 /// Functions: ori_default_regularize_def, ori_regularize.
 #ifndef ORIKIN_REGULARIZE_H
@@ -22,7 +22,8 @@ extern "C" {
 
 /// Parameters of ori_regularize; get them from ori_default_regularize_def().
 typedef struct ori_regularize_def {
-    bool rigid;             ///< also require second-order rigid foldability from the flat state
+    bool rigid;             ///< also require rigid foldability from the flat state (assigned
+                            ///< modes at degree-4 vertices, second order elsewhere)
     double max_move_rel;    ///< refuse (result.refused) when a vertex must move farther than this
                             ///< × the sheet's bounding-box diagonal
     int max_iterations;     ///< Gauss–Newton iterations at most (≥ 1)
@@ -46,12 +47,16 @@ typedef struct ori_regularize_result {
     double rms_move_rel;        ///< root mean square displacement over all vertices
     double kawasaki_before_rad; ///< largest |alternating sector sum| before
     double kawasaki_after_rad;  ///< and after (≤ ORI_TOL_REGULARIZE_KAWASAKI_RAD when converged)
-    double rigid_before;        ///< rigid only: largest first/second-order closure defect of the
+    double rigid_before;        ///< rigid only: largest defect of the rigid rows (closure, modes) of the
                                 ///< best fold rates for the input (radians; 0 without rigid)
     double rigid_after;         ///< and after (≤ ORI_TOL_REGULARIZE_RIGID when converged)
+    int mode_vertices;          ///< rigid only: degree-4 vertices held to the mode their
+                                ///< assignment picks (the finite condition), not second order
     int crossing_edge;          ///< an edge that the moves made cross another (no pattern was
                                 ///< built), or ORI_NULL_INDEX
     char crossing[160];         ///< what crosses, when crossing_edge is set
+    int against_edge;           ///< rigid only: a crease of a degree-4 vertex whose assigned mode
+                                ///< folds it against its assignment (not converged), or ORI_NULL_INDEX
 } ori_regularize_result;
 
 /// Regularize a built flat crease pattern: a new built pattern with the same vertices, edges,

@@ -465,4 +465,9 @@
 /// (λ/(σ² + λ))³, far below it for σ ≥ 1e-4). Unitless.
 #define ORI_TOL_LOCKSET_NULL_REL 1e-7
 
+/// regularize --rigid: a crease of a degree-4 vertex held to its assigned mode folds against its
+/// assignment when its rate has the other sign and exceeds this (units of the largest rate; a
+/// smaller rate is a crease the motion leaves flat, as at a vertex of two straight lines).
+#define ORI_TOL_REGULARIZE_AGAINST_RATE 1e-9
+
 #endif

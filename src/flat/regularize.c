@@ -10,6 +10,8 @@
 //   first order   F = Σ_k ρ̂_k u_k = 0                       (two rows: a reciprocal diagram)
 //   second order  Q = Σ_{i<j} ρ̂_i ρ̂_j (u_i × u_j)·z = 0     (its signed area; the start crease
 //                                                             does not matter once F = 0)
+// except at a degree-4 vertex with a three-to-one assignment, where Q is replaced by the two rows
+// of the mode the assignment picks (mode_of): ρ̂_a − ρ̂_b = 0, ρ̂_c + ρ̂_d = 0, the finite condition.
 // Each Gauss–Newton step solves min ‖x̂ − x̂₀‖² + w‖ρ̂ − ρ̂_k‖² subject to the linearised
 // equations: y = W⁻¹Aᵀλ with (A W⁻¹ Aᵀ + δI) λ = A_x (x̂_k − x̂₀) − c_k, factored by CHOLMOD
 // (AAᵀ of the column-scaled A, simplicial LDLᵀ). The tiny w makes the rates cheap, so the
@@ -28,6 +30,9 @@ typedef struct reg_vertex {
     int first;    // first crease in crease_nb / crease_edge
     int count;    // creases (even count gets a Kawasaki row)
     int row;      // first equation row
+    int nrig;     // rigid rows: 3 (first + second order) or 4 (first order + the assigned mode)
+    int eq[2];    // mode rows (nrig 4): local creases with equal rates (the pair of like assignment)
+    int opp[2];   // and with opposite rates (the odd crease and the one across from it)
 } reg_vertex;
 
 typedef struct reg {
@@ -56,6 +61,7 @@ typedef struct reg {
     double *c;           // equation values
     ori_v2 *dx, *x_save; // Gauss–Newton step and the state it starts from
     double *dr, *r_save;
+    double *r_start;     // the start rates (their signs are the assignment's)
 } reg;
 
 static void push(reg *g, int row, int col, double val)
@@ -146,7 +152,20 @@ static void assemble(reg *g)
             before.x += r * u[k].x;
             before.y += r * u[k].y;
         }
-        g->c[row + 2] = Q;
+        bool moded = V->nrig == 4;
+        if (moded) {
+            // The assigned mode (see mode_of): ρ̂_a − ρ̂_b = 0 and ρ̂_c + ρ̂_d = 0.
+            int ea = g->crease_edge[V->first + V->eq[0]], eb = g->crease_edge[V->first + V->eq[1]];
+            int ec = g->crease_edge[V->first + V->opp[0]], ed = g->crease_edge[V->first + V->opp[1]];
+            g->c[row + 2] = g->rate[ea] - g->rate[eb];
+            g->c[row + 3] = g->rate[ec] + g->rate[ed];
+            push(g, row + 2, g->col_r[ea], rs);
+            push(g, row + 2, g->col_r[eb], -rs);
+            push(g, row + 3, g->col_r[ec], rs);
+            push(g, row + 3, g->col_r[ed], rs);
+        } else {
+            g->c[row + 2] = Q;
+        }
         ori_v2 sx = {0.0, 0.0}, sy = {0.0, 0.0}, sq = {0.0, 0.0};
         ori_v2 after = F; // Σ_{j>k} ρ̂_j u_j after subtracting the prefix and u_k
         before = ori_v2_make(0.0, 0.0);
@@ -160,7 +179,7 @@ static void assemble(reg *g)
             if (g->col_r[e] >= 0) {
                 push(g, row, g->col_r[e], u[k].x * rs);
                 push(g, row + 1, g->col_r[e], u[k].y * rs);
-                push(g, row + 2, g->col_r[e], cross2(u[k], B) * rs);
+                if (!moded) push(g, row + 2, g->col_r[e], cross2(u[k], B) * rs);
             }
             // coordinates: ∂u/∂d = (I − u uᵀ)/|d|, times L for scaled coordinates
             double s = g->L / len[k];
@@ -171,7 +190,7 @@ static void assemble(reg *g)
             ori_v2 gq = ori_v2_make(pxx * du.x + pxy * du.y, pxy * du.x + pyy * du.y);
             push_vertex(g, row, nb, gfx);
             push_vertex(g, row + 1, nb, gfy);
-            push_vertex(g, row + 2, nb, gq);
+            if (!moded) push_vertex(g, row + 2, nb, gq);
             sx = ori_v2_make(sx.x - gfx.x, sx.y - gfx.y);
             sy = ori_v2_make(sy.x - gfy.x, sy.y - gfy.y);
             sq = ori_v2_make(sq.x - gq.x, sq.y - gq.y);
@@ -180,8 +199,36 @@ static void assemble(reg *g)
         }
         push_vertex(g, row, v, sx);
         push_vertex(g, row + 1, v, sy);
-        push_vertex(g, row + 2, v, sq);
+        if (!moded) push_vertex(g, row + 2, v, sq);
     }
+}
+
+// A degree-4 vertex whose start rates (targets or assignment) have three signs alike and one
+// odd (Maekawa) has two folding modes through the flat state, and the signs pick one: the two
+// creases of like sign that lie across from each other fold equally (ρ_a = ρ_b) and the odd
+// crease folds opposite to the one across from it (ρ_c = −ρ_d). At a flat-foldable vertex these
+// two relations and the first-order closure leave that mode's line alone, and along it
+// tan(ρ_c/2) / tan(ρ_a/2) stays the flat state's rate ratio (Tachi 2009; Evans, Lang, Magleby,
+// Howell 2015): rates that agree at every such vertex are a finite motion, not only a
+// second-order one. Sets V->eq, V->opp; false when the vertex is not of this kind.
+static bool mode_of(const reg *g, reg_vertex *V)
+{
+    if (V->count != 4) return false;
+    int sgn[4], pos = 0;
+    for (int k = 0; k < 4; ++k) {
+        double r = g->rate[g->crease_edge[V->first + k]];
+        if (r == 0.0) return false;
+        sgn[k] = r > 0.0 ? 1 : -1;
+        pos += sgn[k] > 0;
+    }
+    if (pos != 1 && pos != 3) return false;
+    int odd_sign = pos == 1 ? 1 : -1, c = 0;
+    while (sgn[c] != odd_sign) ++c;
+    V->opp[0] = c;
+    V->opp[1] = (c + 2) % 4;
+    V->eq[0] = (c + 1) % 4;
+    V->eq[1] = (c + 3) % 4;
+    return true;
 }
 
 static void *ss_malloc(size_t n) { return ori__alloc(n ? n : 1); }
@@ -202,7 +249,7 @@ static void defects(const reg *g, double *kaw, double *rig)
             row++;
         }
         if (g->rigid)
-            for (int k = 0; k < 3; ++k)
+            for (int k = 0; k < V->nrig; ++k)
                 if (fabs(g->c[row + k]) > *rig) *rig = fabs(g->c[row + k]);
     }
 }
@@ -411,6 +458,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
     res->odd_vertex = ORI_NULL_INDEX;
     res->max_move_vertex = ORI_NULL_INDEX;
     res->crossing_edge = ORI_NULL_INDEX;
+    res->against_edge = ORI_NULL_INDEX;
     if (!p->built) return ori__fail(error, ORI_ERR_ARGUMENT, "the pattern is not built");
     if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p))
         return ori__fail(error, ORI_ERR_ARGUMENT, "regularize needs a flat crease pattern, not a folded form");
@@ -525,6 +573,15 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         if (g.R > 0.0)
             for (int e = 0; e < ne; ++e) g.rate[e] /= g.R;
     }
+    g.r_start = ori__alloc(sizeof(double) * (size_t)(ne + 1));
+    memcpy(g.r_start, g.rate, sizeof(double) * (size_t)ne);
+    for (int i = 0; i < g.niv; ++i) {
+        g.iv[i].nrig = 3;
+        if (g.rigid && mode_of(&g, &g.iv[i])) {
+            g.iv[i].nrig = 4;
+            res->mode_vertices++;
+        }
+    }
 
     // Columns and rows.
     for (int v = 0; v < g.nv; ++v) {
@@ -537,7 +594,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
             if (g.is_crease[e] && e != g.fixed_edge) g.col_r[e] = g.cols++;
     for (int i = 0; i < g.niv; ++i) {
         g.iv[i].row = g.rows;
-        g.rows += (g.iv[i].count % 2 == 0 ? 1 : 0) + (g.rigid ? 3 : 0);
+        g.rows += (g.iv[i].count % 2 == 0 ? 1 : 0) + (g.rigid ? g.iv[i].nrig : 0);
     }
     g.c = ori__calloc((size_t)g.rows + 1, sizeof(double));
     g.dx = ori__calloc((size_t)g.nv + 1, sizeof(ori_v2));
@@ -569,6 +626,20 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         defects(&g, &kaw, &rig);
         res->rigid_after = rig;
         if (g.fixed_edge == ORI_NULL_INDEX) converged = false;
+        // In its assigned mode every crease of a degree-4 vertex folds with the sign it started
+        // with, unless the geometry forbids that assignment (the odd crease on the wrong side):
+        // then the motion exists only against the assignment.
+        for (int i = 0; i < g.niv && res->against_edge == ORI_NULL_INDEX; ++i) {
+            if (g.iv[i].nrig != 4) continue;
+            for (int k = 0; k < 4; ++k) {
+                int e = g.crease_edge[g.iv[i].first + k];
+                if (g.rate[e] * g.r_start[e] < 0.0 && fabs(g.rate[e]) > ORI_TOL_REGULARIZE_AGAINST_RATE) {
+                    res->against_edge = e;
+                    converged = false;
+                    break;
+                }
+            }
+        }
     }
     {
         double kaw, rig;
@@ -632,5 +703,6 @@ fail:
     ori__free(g.x_save);
     ori__free(g.dr);
     ori__free(g.r_save);
+    ori__free(g.r_start);
     return st;
 }
