@@ -406,7 +406,8 @@ static double evaluate(kin_solver *s, const double *th)
     s->eval_r = r;
     s->jac_valid = true;
     s->factor_current = false;
-    for (int k = 0; k < s->rows; ++k) s->jd[k] = 0.0;
+    // jd: only the rows of the loops through the drive are ever set, all of them at every
+    // evaluation (the rest stay zero from the allocation): no clearing of all rows.
     if (!s->sparse)
         for (size_t k = 0; k < (size_t)s->rows * (size_t)s->ncols; ++k) s->a[k] = 0.0;
     for (int l = 0; l < m->loop_count; ++l) {
