@@ -115,10 +115,10 @@ static int64_t mem_available(void)
     return (int64_t)kb * 1024;
 }
 
-// The 1000 × 1000 sheet (2 M creases) needs about 6 GB at its peak and minutes: it runs with
+// The 1000 × 1000 sheet (2 M creases) needs about 3 GB at its peak and minutes: it runs with
 // ORI_BENCH_LARGE=1 in the environment (`ORI_BENCH_LARGE=1 make bench`) when the machine has
 // this much memory available, else the line says why it was skipped.
-#define BENCH_MIURA_LARGE_BYTES ((int64_t)7 << 30)
+#define BENCH_MIURA_LARGE_BYTES ((int64_t)4 << 30)
 
 static int run(void)
 {
@@ -134,7 +134,7 @@ static int run(void)
     int64_t avail = mem_available();
     const char *large = getenv("ORI_BENCH_LARGE");
     if (!large || strcmp(large, "1") != 0) {
-        printf("   1000x1000: skipped (minutes and about 6 GB: run with ORI_BENCH_LARGE=1)\n");
+        printf("   1000x1000: skipped (minutes and about 3 GB: run with ORI_BENCH_LARGE=1)\n");
     } else if (avail >= BENCH_MIURA_LARGE_BYTES) {
         bad |= one(1000);
     } else {
