@@ -1053,3 +1053,79 @@ Test(kinematics, progress_is_monotone_and_cancels)
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
+
+// --- large folds: frames kept, factorizations (docs/kinematics.md §14) ----------------------
+
+// A 30 × 30 Miura-ori (the benchmark's generator: a = 1, b = √1.25, γ = atan2(1, 0.5)) folded by
+// its middle zigzag crease 5° → 175° in 100 steps of 1.7°. Its frames are compared with a
+// fingerprint written by the release before the performance work of issue 7 §5 (CHOLMOD
+// supernodal above a size, block solves in the sparse nullity, frames not kept): per frame the
+// drive, Σθ, Σθ², Σθ·(e mod 7 + 1) and θ of edge E/3, to 1e-12. Then the same fold keeping only
+// its last frame: that frame, the verdict, the DOF and the statistics are bit for bit the same.
+Test(kinematics, miura_30x30_fold_matches_its_fingerprint_and_last_frame_only_keeps_the_same_end)
+{
+    const int n = 30;
+    ori_pattern *p = test_miura(n, n, 1.0, sqrt(1.25), atan2(1.0, 0.5), NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    double sg;
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = miura_drive(p, n, &sg);
+    d.to_rad = sg * ori_deg_to_rad(5.0);
+    d.step_rad = ori_deg_to_rad(5.0);
+    ori_motion *start = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(start), ORI_MOTION_VALID, "%s", ori_motion_reason(start));
+    d.start_angles_rad = ori_motion_frame_angles(start, ori_motion_frame_count(start) - 1);
+    d.to_rad = sg * ori_deg_to_rad(175.0);
+    d.step_rad = ori_deg_to_rad(170.0 / 100.0);
+    ori_motion *mo = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
+    cr_assert_eq(ori_motion_dof(mo), 1);
+    int F = ori_motion_frame_count(mo), E = ori_pattern_edge_count(p);
+    cr_assert_eq(F, 101);
+    cr_assert_eq(ori_motion_stats_of(mo).frames, 101);
+    FILE *f = fopen(test_repo_path("tests/data/kin-miura30-fold-fingerprint.txt"), "r");
+    cr_assert_not_null(f);
+    char line[512];
+    int rows = 0;
+    while (fgets(line, sizeof line, f)) {
+        if (line[0] == '#') continue;
+        int k;
+        double ref[5];
+        cr_assert_eq(sscanf(line, "%d %lf %lf %lf %lf %lf", &k, &ref[0], &ref[1], &ref[2], &ref[3], &ref[4]), 6);
+        cr_assert(k >= 0 && k < F);
+        const double *a = ori_motion_frame_angles(mo, k);
+        double got[5] = {ori_motion_frame_drive(mo, k), 0.0, 0.0, 0.0, a[E / 3]};
+        for (int e = 0; e < E; ++e) {
+            got[1] += a[e];
+            got[2] += a[e] * a[e];
+            got[3] += a[e] * (double)(e % 7 + 1);
+        }
+        for (int i = 0; i < 5; ++i)
+            cr_assert_float_eq(got[i], ref[i], 1e-12 * fmax(1.0, fabs(ref[i])), "frame %d value %d: %.17g, reference %.17g",
+                               k, i, got[i], ref[i]);
+        rows++;
+    }
+    fclose(f);
+    cr_assert_eq(rows, F);
+    for (int k = 0; k < F; ++k) cr_assert_leq(ori_mechanism_residual(m, ori_motion_frame_angles(mo, k)), ORI_TOL_RESIDUAL);
+
+    d.last_frame_only = true;
+    ori_motion *last = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(last), ORI_MOTION_VALID);
+    cr_assert_eq(ori_motion_frame_count(last), 1);
+    ori_motion_stats s1 = ori_motion_stats_of(mo), s2 = ori_motion_stats_of(last);
+    cr_assert_eq(s2.frames, 101);
+    cr_assert_eq(s2.steps, s1.steps);
+    cr_assert_eq(s2.newton_iterations, s1.newton_iterations);
+    cr_assert_eq(s2.factorizations, s1.factorizations);
+    cr_assert_eq(s2.max_residual, s1.max_residual);
+    cr_assert_eq(ori_motion_dof(last), 1);
+    cr_assert_eq(ori_motion_frame_drive(last, 0), ori_motion_frame_drive(mo, F - 1));
+    cr_assert_eq(ori_motion_frame_residual(last, 0), ori_motion_frame_residual(mo, F - 1));
+    cr_assert_eq(memcmp(ori_motion_frame_angles(last, 0), ori_motion_frame_angles(mo, F - 1), sizeof(double) * (size_t)E), 0);
+    ori_motion_destroy(last);
+    ori_motion_destroy(mo);
+    ori_motion_destroy(start);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

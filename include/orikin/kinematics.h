@@ -253,6 +253,8 @@ typedef struct ori_motion_def {
     ori_progress_fn *progress;      ///< called per output step with the fraction of the drive range done (monotone, 1 at the
                                     ///< end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
     void *progress_user;
+    bool last_frame_only;           ///< keep only the last output frame (frame count ≤ 1; stats.frames counts them all):
+                                    ///< a 1000 × 1000 sheet's 101 frames would be 1.6 GB. Default false
     int internal_value;             ///< set by ori_default_motion_def; do not change
 } ori_motion_def;
 
@@ -307,6 +309,7 @@ typedef struct ori_motion_stats {
     int factorizations;       ///< sparse numeric factorizations
     int sweep_iterations;     ///< corrector iterations done by the sweep (the rest by factorizations)
     double max_residual;      ///< largest residual over the output frames
+    int frames;               ///< output frames produced (kept or not: see last_frame_only)
 } ori_motion_stats;
 
 /// What stopped a BLOCKED fold.

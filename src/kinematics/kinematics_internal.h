@@ -128,6 +128,9 @@ double *ori__sls_values(kin_sls *s);           // the nnz values of Jᵀ to fill
 void ori__sls_clear_values(kin_sls *s);
 bool ori__sls_factor(kin_sls *s, double lambda); // JᵀJ + λI; false when not positive definite
 bool ori__sls_solve(kin_sls *s, const double *rhs, double *out); // (JᵀJ + λI) out = rhs
+// k right-hand sides at once (n × k, column-major; out may alias rhs): one pass over the factor
+// instead of k. False (out untouched) when not factored or a solution is not finite.
+bool ori__sls_solve_many(kin_sls *s, int k, const double *rhs, double *out);
 void ori__sls_mult_t(const kin_sls *s, const double *y, double *out); // out = Jᵀ y (n)
 void ori__sls_mult(const kin_sls *s, const double *v, double *out);   // out = J v (m)
 double ori__sls_rcond(kin_sls *s);              // CHOLMOD's min(diag L)/max(diag L) estimate

@@ -740,9 +740,12 @@ double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, doub
             half[2 * j] = cos(t);
             half[2 * j + 1] = sin(t);
         }
-    if (cols) memset(cols, 0, sizeof(double) * 6 * (size_t)m->loop_col_total);
     for (int l = 0; l < m->loop_count; ++l) {
         const kin_loop *L = &m->loops[l];
+        // The loop's blocks (disjoint ranges covering the array), zeroed just before they are
+        // accumulated: one pass over them instead of a memset of all first (192 MB on a 1000 ×
+        // 1000 sheet) and a second pass.
+        if (cols) memset(cols + 6 * (size_t)L->col_first, 0, sizeof(double) * 6 * (size_t)L->col_count);
         double dev = L->rows == 3 ? eval_vertex_loop(m, L, th, res, cols, half) : eval_hole_loop(m, L, th, res, cols);
         if (dev > worst || isnan(dev)) worst = dev;
     }

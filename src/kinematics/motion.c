@@ -28,6 +28,7 @@ struct ori_motion {
     ori_crease_violation *viol;
     int nviol;
     int nframes, frame_cap;
+    bool last_only; // def.last_frame_only: every frame overwrites frame 0
     double *drive;
     double *angles; // nframes × edge_count
     double *residual;
@@ -58,6 +59,7 @@ ori_motion_def ori_default_motion_def(void)
     d.linear = ORI_LINEAR_AUTO;
     d.progress = NULL;
     d.progress_user = NULL;
+    d.last_frame_only = false;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -153,6 +155,8 @@ static void record(ctx *c)
 {
     ori_motion *mo = c->mo;
     const ori_mechanism *m = c->m;
+    mo->stats.frames++;
+    if (mo->last_only && mo->nframes > 0) mo->nframes = 0;
     if (mo->nframes == mo->frame_cap) reserve_frames(c, mo->frame_cap ? 2 * mo->frame_cap : 16);
     int k = mo->nframes++;
     mo->drive[k] = c->th[c->jd];
@@ -1006,6 +1010,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
     mo->fixed_face = def->fixed_face;
     mo->fixed_pose = def->fixed_pose;
     mo->driven_edge = def->driven_edge;
+    mo->last_only = def->last_frame_only;
     mo->dof = -1;
     c.mo = mo;
 
@@ -1049,7 +1054,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
     if (lr == LEG_OK) {
         // Frames: the start, one per step, the target (capped: a tiny step grows the arrays).
         double span = fabs(def->to_rad - c.th[jd]) / def->step_rad;
-        reserve_frames(&c, span < ORI_KIN_RESERVE_FRAMES ? (int)span + 3 : ORI_KIN_RESERVE_FRAMES);
+        reserve_frames(&c, mo->last_only ? 1 : span < ORI_KIN_RESERVE_FRAMES ? (int)span + 3 : ORI_KIN_RESERVE_FRAMES);
         c.progress = def->progress;
         c.progress_user = def->progress_user;
         c.progress_on = def->progress != NULL;
@@ -1152,6 +1157,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         mo->verdict = ORI_MOTION_VALID;
     }
 
+    if (mo->nframes == 0) mo->stats.frames = 0;
     // The solver (its CHOLMOD factor) is done: freed before the DOF's own factorization, so that
     // one factor less is alive at the peak of a large fold.
     ori__kin_solver_destroy(c.solver);

@@ -146,10 +146,9 @@ static int sparse_nullity(kin_sls *sls, int n, int m, double smax_known, double 
         for (size_t k = 0; k < (size_t)n * (size_t)b; ++k) X[k] = lcg(&seed);
         orthonormalize(X, n, b);
         for (int it = 0; it < 6; ++it) {
-            for (int i = 0; i < b; ++i) {
-                ori__sls_solve(sls, X + (size_t)i * n, x);
-                for (int k = 0; k < n; ++k) X[(size_t)i * n + k] = x[k];
-            }
+            // The block's columns in one solve (one pass over the factor: on a 1000 × 1000
+            // Miura-ori the factor is 0.8 GB, each pass memory-bound).
+            ori__sls_solve_many(sls, b, X, X);
             orthonormalize(X, n, b);
         }
         // Rayleigh–Ritz: G = (JX)ᵀ(JX), eigenvalues = Ritz σ².

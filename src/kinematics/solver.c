@@ -57,6 +57,13 @@ struct kin_solver {
     int *sweep_new;      // loop-local column indices (into the loop's columns) the loop determines
     int *sweep_kfirst;   // sweep_count + 1 offsets into sweep_known
     int *sweep_known;    // loop-local indices of free columns determined by earlier loops
+    // the same resolved for sweep_solve, which streams through them in sweep order instead of
+    // chasing loop → loop column → joint → free column (on a 1000 × 1000 sheet each of those
+    // indirections is a cache miss): per step its first row and row count, per entry the index
+    // of its Jacobian block (L->col_first + c) and its free column
+    int *sweep_row0, *sweep_rows;
+    int *sweep_new_blk, *sweep_new_x;
+    int *sweep_known_blk, *sweep_known_x;
     int sweep_retry_at;  // after a failed sweep, the corrector call that tries it again
     int sweep_iterations; // corrector iterations done by the sweep
     // corrector scratch
@@ -258,6 +265,28 @@ static void build_sweep(kin_solver *s)
         queue[tail++] = seed;
     }
     s->sweep = determined == nc && nc > 0;
+    if (s->sweep) {
+        int K = s->sweep_count;
+        s->sweep_row0 = ori__alloc(sizeof(int) * ((size_t)K + 1));
+        s->sweep_rows = ori__alloc(sizeof(int) * ((size_t)K + 1));
+        s->sweep_new_blk = ori__alloc(sizeof(int) * ((size_t)s->sweep_first[K] + 1));
+        s->sweep_new_x = ori__alloc(sizeof(int) * ((size_t)s->sweep_first[K] + 1));
+        s->sweep_known_blk = ori__alloc(sizeof(int) * ((size_t)s->sweep_kfirst[K] + 1));
+        s->sweep_known_x = ori__alloc(sizeof(int) * ((size_t)s->sweep_kfirst[K] + 1));
+        for (int k = 0; k < K; ++k) {
+            const kin_loop *L = &m->loops[s->sweep_loop[k]];
+            s->sweep_row0[k] = L->row0;
+            s->sweep_rows[k] = L->rows;
+            for (int t = s->sweep_first[k]; t < s->sweep_first[k + 1]; ++t) {
+                s->sweep_new_blk[t] = L->col_first + s->sweep_new[t];
+                s->sweep_new_x[t] = s->col[m->loop_cols[L->col_first + s->sweep_new[t]]];
+            }
+            for (int t = s->sweep_kfirst[k]; t < s->sweep_kfirst[k + 1]; ++t) {
+                s->sweep_known_blk[t] = L->col_first + s->sweep_known[t];
+                s->sweep_known_x[t] = s->col[m->loop_cols[L->col_first + s->sweep_known[t]]];
+            }
+        }
+    }
     ori__free(cl_first);
     ori__free(cl);
     ori__free(unknown);
@@ -334,6 +363,12 @@ void ori__kin_solver_destroy(kin_solver *s)
     ori__free(s->sweep_new);
     ori__free(s->sweep_kfirst);
     ori__free(s->sweep_known);
+    ori__free(s->sweep_row0);
+    ori__free(s->sweep_rows);
+    ori__free(s->sweep_new_blk);
+    ori__free(s->sweep_new_x);
+    ori__free(s->sweep_known_blk);
+    ori__free(s->sweep_known_x);
     ori__free(s);
 }
 
@@ -371,7 +406,8 @@ static double evaluate(kin_solver *s, const double *th)
     s->eval_r = r;
     s->jac_valid = true;
     s->factor_current = false;
-    for (int k = 0; k < s->rows; ++k) s->jd[k] = 0.0;
+    // jd: only the rows of the loops through the drive are ever set, all of them at every
+    // evaluation (the rest stay zero from the allocation): no clearing of all rows.
     if (!s->sparse)
         for (size_t k = 0; k < (size_t)s->rows * (size_t)s->ncols; ++k) s->a[k] = 0.0;
     for (int l = 0; l < m->loop_count; ++l) {
@@ -583,36 +619,47 @@ static bool vertex_lsq(const double *const a[3], int k, const double *b, double 
 
 // x = M b along the sweep, with the Jacobian blocks of the last evaluation. False when a
 // loop's block is rank deficient (then the sparse factorization takes over).
+#define ORI_KIN_SWEEP_AHEAD 8
 static bool sweep_solve(kin_solver *s, const double *b, double *x)
 {
-    const ori_mechanism *m = s->m;
+    const double *blocks = s->blocks;
     for (int k = 0; k < s->sweep_count; ++k) {
-        const kin_loop *L = &m->loops[s->sweep_loop[k]];
-        const int *cols = m->loop_cols + L->col_first;
-        const double *blk = s->blocks + 6 * L->col_first;
+        int rows = s->sweep_rows[k], row0 = s->sweep_row0[k];
+        if (k + ORI_KIN_SWEEP_AHEAD < s->sweep_count) {
+            // The loop a few steps ahead: its blocks and right-hand side (sweep order is not
+            // memory order, so the hardware prefetcher cannot guess them).
+            int ka = k + ORI_KIN_SWEEP_AHEAD;
+            const double *ba = blocks + 6 * (size_t)s->sweep_new_blk[s->sweep_first[ka]];
+            __builtin_prefetch(ba);
+            __builtin_prefetch(ba + 8);
+            __builtin_prefetch(ba + 16);
+            __builtin_prefetch(b + s->sweep_row0[ka]);
+        }
         double rhs[6], y[6];
-        for (int q = 0; q < L->rows; ++q) rhs[q] = b[L->row0 + q];
+        for (int q = 0; q < rows; ++q) rhs[q] = b[row0 + q];
         for (int t = s->sweep_kfirst[k]; t < s->sweep_kfirst[k + 1]; ++t) {
-            int c = s->sweep_known[t];
-            double xc = x[s->col[cols[c]]];
-            for (int q = 0; q < L->rows; ++q) rhs[q] -= blk[6 * c + q] * xc;
+            const double *bc = blocks + 6 * (size_t)s->sweep_known_blk[t];
+            double xc = x[s->sweep_known_x[t]];
+            for (int q = 0; q < rows; ++q) rhs[q] -= bc[q] * xc;
         }
         int n = s->sweep_first[k + 1] - s->sweep_first[k];
-        const int *nw = s->sweep_new + s->sweep_first[k];
+        const int *nb = s->sweep_new_blk + s->sweep_first[k];
+        const int *nx = s->sweep_new_x + s->sweep_first[k];
         bool ok;
-        if (L->rows == 3) {
-            const double *a[3] = {blk + 6 * nw[0], n > 1 ? blk + 6 * nw[1] : NULL, n > 2 ? blk + 6 * nw[2] : NULL};
+        if (rows == 3) {
+            const double *a[3] = {blocks + 6 * (size_t)nb[0], n > 1 ? blocks + 6 * (size_t)nb[1] : NULL,
+                                  n > 2 ? blocks + 6 * (size_t)nb[2] : NULL};
             ok = vertex_lsq(a, n, rhs, y);
         } else {
             double a[36];
             for (int t = 0; t < n; ++t)
-                for (int q = 0; q < L->rows; ++q) a[q + L->rows * t] = blk[6 * nw[t] + q];
-            ok = small_lsq(a, L->rows, n, rhs, y);
+                for (int q = 0; q < rows; ++q) a[q + rows * t] = blocks[6 * (size_t)nb[t] + q];
+            ok = small_lsq(a, rows, n, rhs, y);
         }
         if (!ok) return false;
         for (int t = 0; t < n; ++t) {
             if (!isfinite(y[t])) return false;
-            x[s->col[cols[nw[t]]]] = y[t];
+            x[nx[t]] = y[t];
         }
     }
     return true;

@@ -9,8 +9,12 @@
 // global of SuiteSparse 5: every solve sets the same functions again), and it never prints
 // (Common->print = 0).
 #include <cholmod.h>
+#include <string.h>
 
 #include "kinematics_internal.h"
+
+// Flops per factor entry above which the factorization is supernodal (see start()).
+#define ORI_KIN_SUPERNODAL_SWITCH 100.0
 
 struct kin_sls {
     cholmod_common cm;
@@ -43,10 +47,14 @@ static kin_sls *start(void)
     s->cm.print = 0;
     s->cm.error_handler = NULL;
     s->cm.quick_return_if_not_posdef = 1;
-    // Simplicial LDLᵀ: no BLAS and no OpenMP threads. On loop-closure Jacobians of sheet-like
-    // patterns (planar graphs, nested-dissection fill) it is faster than the supernodal method
-    // single-threaded, and OpenMP workers spinning on a shared machine slow everything else.
-    s->cm.supernodal = CHOLMOD_SIMPLICIAL;
+    // Simplicial LDLᵀ up to ORI_KIN_SUPERNODAL_SWITCH flops per factor entry (AMD's estimate at
+    // analysis), supernodal LLᵀ (BLAS on dense blocks) above. On loop-closure Jacobians of
+    // sheet-like patterns the flops per entry grow with the size (nested-dissection fill):
+    // 54 on a 100 × 100 Miura-ori, where simplicial is faster (no BLAS call, no BLAS threads
+    // waking), 325 on a 1000 × 1000 one, where one factorization of JᵀJ takes 24 s simplicial
+    // and 4.4 s supernodal (one OpenBLAS thread; docs/kinematics.md §14).
+    s->cm.supernodal = CHOLMOD_AUTO;
+    s->cm.supernodal_switch = ORI_KIN_SUPERNODAL_SWITCH;
     return s;
 }
 
@@ -124,6 +132,24 @@ bool ori__sls_solve(kin_sls *s, const double *rhs, double *out)
         out[k] = x[k];
     }
     return true;
+}
+
+bool ori__sls_solve_many(kin_sls *s, int k, const double *rhs, double *out)
+{
+    if (!s->factored) return false;
+    route_memory();
+    cholmod_dense *b = cholmod_allocate_dense((size_t)s->n, (size_t)k, (size_t)s->n, CHOLMOD_REAL, &s->cm);
+    if (!b) return false;
+    size_t total = (size_t)s->n * (size_t)k;
+    double *bx = b->x;
+    for (size_t i = 0; i < total; ++i) bx[i] = rhs[i];
+    cholmod_dense *x = cholmod_solve(CHOLMOD_A, s->L, b, &s->cm);
+    cholmod_free_dense(&b, &s->cm);
+    bool ok = x != NULL;
+    for (size_t i = 0; ok && i < total; ++i) ok = isfinite(((const double *)x->x)[i]);
+    if (ok) memcpy(out, x->x, sizeof(double) * total);
+    cholmod_free_dense(&x, &s->cm);
+    return ok;
 }
 
 void ori__sls_mult_t(const kin_sls *s, const double *y, double *out)
