@@ -454,4 +454,8 @@
 /// ≈ √(2(1 − |c|)) magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad). Unitless.
 #define ORI_TOL_KIN_DOUBLE_ROOT 1e-12
 
+/// Linkage unfolding: a flip is decided where the aligned angle has turned this (its sine) past
+/// π along the old motion, so that no new edge makes a sliver thinner than that. Unitless.
+#define ORI_TOL_LINKAGE_FLIP_SINE 1e-7
+
 #endif

@@ -838,6 +838,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             // Root-finding (Illinois, with bisection every fourth step) on the sine of the
             // first wedge over the step.
             double lo = 0.0, hi = h, glo = wedge_sine(L->p, watch[first]), ghi = wedge_sine(p1, watch[first]);
+            double g_start = glo, g_end = ghi;
             memcpy(p0, L->p, (size_t)n * sizeof *p0);
             memcpy(pm, p1, (size_t)n * sizeof *pm);
             int side = 0;
@@ -871,13 +872,22 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             // the located event: |sin| of the aligned angle at the end of the root-finding
             R->M->result.max_event_residual = fmax(R->M->result.max_event_residual, fabs(gmax));
             memcpy(L->p, pm, (size_t)n * sizeof *pm);
-            // Past the event in exact arithmetic too: the rounded sine may change sign before the
-            // exact orientation does; move on (doubling the overshoot) until the wedge is no longer
-            // reflex for the exact predicate.
+            // Past the event: the flip is decided at the configuration where the aligned angle has
+            // turned ORI_TOL_LINKAGE_FLIP_SINE past π along the old motion (a concrete instance of
+            // the perturbation by the motion's direction: every decision is then exact at a real
+            // configuration, and no new edge can make a sliver thinner than that with an edge at
+            // its end; the aligned neighbours' distance shrinks by O(sine²) ≈ 1e-14 of it).
             {
                 lk_watch wf = watch[w_ev];
-                double extra = fmax(hi - lo, ORI_TOL_LINKAGE_EVENT_REL * L->scale);
-                for (int it = 0; it < 20 && orient(L, wf.v, wf.a, wf.b) <= 0; ++it, extra *= 2.0) {
+                int fa = find_edge(L, wf.v, wf.a), fb = find_edge(L, wf.v, wf.b);
+                bool joint = fa >= 0 && L->e[fa].bar && fb >= 0 && L->e[fb].bar; // straightened: no flip to decide
+                double target = joint ? 0.0 : ORI_TOL_LINKAGE_FLIP_SINE;
+                double slope = (g_end - g_start) / h;
+                double extra = slope > 0.0 ? ORI_TOL_LINKAGE_FLIP_SINE / slope : ORI_TOL_LINKAGE_EVENT_REL * L->scale;
+                extra = fmax(extra, fmax(hi - lo, ORI_TOL_LINKAGE_EVENT_REL * L->scale));
+                if (joint) extra = fmax(hi - lo, ORI_TOL_LINKAGE_EVENT_REL * L->scale);
+                for (int it = 0; it < 40 && !(orient(L, wf.v, wf.a, wf.b) > 0 && wedge_sine(L->p, wf) >= 0.5 * target);
+                     ++it, extra *= 1.5) {
                     if (!state_at(R, p0, t0, hi + extra, p1)) break;
                     memcpy(L->p, p1, (size_t)n * sizeof *p1);
                 }
