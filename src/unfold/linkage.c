@@ -731,6 +731,25 @@ static double coord_of(const lk *L, const lk_sys *S, const ori_v2 *t, int k)
     return 0.0;
 }
 
+// Adaptive step from the velocity field: the arc length along the unit tangent t over which no
+// edge (drive included) turns by more than ORI_LINKAGE_STEP_TURN radians to first order, and
+// at most 5% of the linkage's size. Far from events the reflex angles need no step limit of
+// their own: each decreases monotonically (the motion is expansive), so an event is a single
+// sign change of its sine at the step's ends, found by root-finding whatever the step.
+#define ORI_LINKAGE_STEP_TURN 0.1
+static double step_cap(const lk *L, const ori_v2 *t)
+{
+    double rate = 0.0;
+    for (int k = 0; k <= L->ne; ++k) {
+        int a = k < L->ne ? L->e[k].a : L->drv_a, b = k < L->ne ? L->e[k].b : L->drv_b;
+        if (a < 0) continue;
+        double len = ori_v2_norm(ori_v2_sub(L->p[a], L->p[b]));
+        rate = fmax(rate, ori_v2_norm(ori_v2_sub(t[a], t[b])) / len);
+    }
+    double cap = 0.05 * L->scale;
+    return rate > 0.0 ? fmin(cap, ORI_LINKAGE_STEP_TURN / rate) : cap;
+}
+
 static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
 {
     lk *L = R->L;
@@ -772,9 +791,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             sys_destroy(&R->S);
             sys_create(L, &R->S, k);
         }
-        double lmin = INFINITY;
-        for (int e = 0; e < L->ne; ++e) lmin = fmin(lmin, L->e[e].len);
-        double hmax = 0.01 * lmin, h = hmax;
+        double h = ev < 0 ? step_cap(L, t0) : 0.0;
         for (int step = 0; ev < 0; ++step) {
             if (step > 1000000) {
                 st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: too many steps between events");
@@ -815,6 +832,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                 ev = nw;
                 break;
             }
+            h = fmin(h, step_cap(L, t0));
             if (!state_at(R, L->p, t0, h, p1)) {
                 h *= 0.5;
                 continue;
@@ -832,7 +850,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                 memcpy(L->p, p1, (size_t)n * sizeof *p1);
                 R->M->result.steps++;
                 push_frame(R, L->p, false, false);
-                h = fmin(hmax, 1.5 * h);
+                h *= 2.0; // capped by the velocity field at the next step
                 continue;
             }
             // Root-finding (Illinois, with bisection every fourth step) on the sine of the
