@@ -13,6 +13,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef LK_DEBUG
+#include <stdio.h>
+#endif
 
 #include <orikin/tolerance.h>
 #include <orikin/unfold.h>
@@ -60,6 +63,7 @@ typedef struct lk {
     lk_edge *e;
     int ne, ecap;
     int drv_a, drv_b; // removed hull edge (−1 when none)
+    int prev_a, prev_b; // the drive before the last event (−1 when none)
     // adjacency (rebuilt on demand): CSR sorted counter-clockwise
     int *adj_start, *adj, adj_cap;
 } lk;
@@ -319,6 +323,9 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
                     if (score > best_score) best_score = score, best_a = a, best_b = b;
                 }
             if (best_a >= 0) {
+#ifdef LK_DEBUG
+                fprintf(stderr, "  add %d-%d (found %d)\n", best_a, best_b, found);
+#endif
                 add_edge(L, best_a, best_b, false, ori_v2_norm(ori_v2_sub(L->p[best_a], L->p[best_b])));
                 added = true;
             }
@@ -364,25 +371,6 @@ static int hull(const lk *L, int *out)
     }
     ori__free(pts);
     return h - 1;
-}
-
-// Choose the drive: a hull edge of the graph that is not a bar. False when every hull edge is a bar.
-static bool choose_drive(lk *L)
-{
-    int *h = ori__alloc(((size_t)L->n + 1) * 2 * sizeof *h);
-    int k = hull(L, h);
-    int best = -1;
-    double best_len = -1.0;
-    for (int i = 0; i < k; ++i) {
-        int e = find_edge(L, h[i], h[(i + 1) % k]);
-        if (e >= 0 && !L->e[e].bar && L->e[e].len > best_len) best = e, best_len = L->e[e].len;
-    }
-    ori__free(h);
-    L->drv_a = L->drv_b = -1;
-    if (best < 0) return false;
-    L->drv_a = L->e[best].a, L->drv_b = L->e[best].b;
-    remove_edge(L, best);
-    return true;
 }
 
 static void place_frozen(lk *L, ori_v2 *p)
@@ -635,6 +623,88 @@ static bool state_at(lk_run *R, const ori_v2 *p0, const ori_v2 *t0, double s, or
     return project(R, out);
 }
 
+// Rate of change of wedge_sine along the tangent t (per unit arc length).
+static double wedge_rate(const ori_v2 *p, const ori_v2 *t, lk_watch w)
+{
+    ori_v2 u = ori_v2_sub(p[w.a], p[w.v]), x = ori_v2_sub(p[w.b], p[w.v]);
+    ori_v2 du = ori_v2_sub(t[w.a], t[w.v]), dx = ori_v2_sub(t[w.b], t[w.v]);
+    double nu = ori_v2_norm(u), nx = ori_v2_norm(x), g = ori_v2_cross(u, x) / (nu * nx);
+    double dc = ori_v2_cross(du, x) + ori_v2_cross(u, dx);
+    return dc / (nu * nx) - g * (ori_v2_dot(u, du) / (nu * nu) + ori_v2_dot(x, dx) / (nx * nx));
+}
+
+// Choose the drive among the hull edges of the graph that are not bars (the previous drive
+// first when it still is one, then the longest): any of them leaves an expansive mechanism, but
+// right after a flip some would meet an event at once (a flat pseudo-triangle straightened by
+// lengthening its long side) and flip back, a cycle. Each candidate's motion is looked ahead:
+// the first whose nearest event (the reflex sines' linear extrapolation) is not immediate is
+// taken, else the one whose event is farthest. False when every hull edge is a bar.
+static bool pick_drive(lk_run *R, int prev_a, int prev_b)
+{
+    lk *L = R->L;
+    int n = L->n;
+    int *h = ori__alloc(((size_t)n + 1) * 2 * sizeof *h);
+    int hk = hull(L, h);
+    int cand[8], nc = 0;
+    double clen[8];
+    for (int i = 0; i < hk; ++i) {
+        int e = find_edge(L, h[i], h[(i + 1) % hk]);
+        if (e < 0 || L->e[e].bar) continue;
+        bool prev = (L->e[e].a == prev_a && L->e[e].b == prev_b) || (L->e[e].a == prev_b && L->e[e].b == prev_a);
+        double key = prev ? INFINITY : L->e[e].len;
+        int pos = nc < 8 ? nc++ : 8;
+        while (pos > 0 && clen[pos - 1] < key) {
+            if (pos < 8) cand[pos] = cand[pos - 1], clen[pos] = clen[pos - 1];
+            pos--;
+        }
+        if (pos < 8) cand[pos] = e, clen[pos] = key;
+    }
+    ori__free(h);
+    L->drv_a = L->drv_b = -1;
+    if (nc == 0) return false;
+    int ca[8], cb[8];
+    for (int i = 0; i < nc; ++i) ca[i] = L->e[cand[i]].a, cb[i] = L->e[cand[i]].b;
+    ori_v2 *t = ori__alloc((size_t)n * sizeof *t);
+    int best = 0;
+    double best_score = -1.0, enough = 1e-6 * L->scale;
+    for (int i = 0; i < nc && nc > 1; ++i) {
+        int e = find_edge(L, ca[i], cb[i]);
+        remove_edge(L, e);
+        L->drv_a = ca[i], L->drv_b = cb[i];
+        build_adj(L, false);
+        double score = INFINITY;
+        lk_sys S0 = R->S;
+        memset(&R->S, 0, sizeof R->S);
+        sys_create(L, &R->S, -1);
+        if (tangent(R, L->p, t)) {
+            for (int v = 0; v < n; ++v) {
+                lk_watch w = {v, -1, -1};
+                if (L->frozen[v] || !reflex_wedge(L, v, &w.a, &w.b)) continue;
+                double g = wedge_sine(L->p, w), r = wedge_rate(L->p, t, w);
+                if (g >= 0.0) score = 0.0;
+                else if (r > 0.0) score = fmin(score, -g / r);
+            }
+        } else {
+            score = 0.0;
+        }
+        sys_destroy(&R->S);
+        R->S = S0;
+        add_edge(L, ca[i], cb[i], false, ori_v2_norm(ori_v2_sub(L->p[ca[i]], L->p[cb[i]])));
+        L->drv_a = L->drv_b = -1;
+        if (score > best_score) best_score = score, best = i;
+        if (score >= enough) break;
+    }
+    ori__free(t);
+    int e = find_edge(L, ca[best], cb[best]);
+    L->drv_a = ca[best], L->drv_b = cb[best];
+    L->e[e].len = ori_v2_norm(ori_v2_sub(L->p[ca[best]], L->p[cb[best]]));
+    remove_edge(L, e);
+#ifdef LK_DEBUG
+    fprintf(stderr, "  drive %d-%d (of %d, score %g)\n", L->drv_a, L->drv_b, nc, best_score);
+#endif
+    return true;
+}
+
 // Handle the alignment of edges v–a and v–b at the current positions: straighten (both bars)
 // or remove the one that is not a bar.
 static void handle_event(lk_run *R, int v, int a, int b)
@@ -642,6 +712,9 @@ static void handle_event(lk_run *R, int v, int a, int b)
     lk *L = R->L;
     int ea = find_edge(L, v, a), eb = find_edge(L, v, b);
     bool bar_a = ea >= 0 && L->e[ea].bar, bar_b = eb >= 0 && L->e[eb].bar;
+#ifdef LK_DEBUG
+    fprintf(stderr, "event %d: v=%d a=%d b=%d bars %d%d steps %d drive %d-%d\n", R->M->result.events, v, a, b, bar_a, bar_b, R->M->result.steps, L->drv_a, L->drv_b);
+#endif
     if (bar_a && bar_b) {
         double la = L->e[ea].len, lb = L->e[eb].len;
         L->frozen[v] = true;
@@ -667,6 +740,7 @@ static void handle_event(lk_run *R, int v, int a, int b)
 static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
 {
     lk *L = R->L;
+    int prev_a = L->prev_a, prev_b = L->prev_b;
     L->drv_a = L->drv_b = -1;
     for (int guard = 0; guard < 4 * L->n; ++guard) {
         build_adj(L, false);
@@ -688,7 +762,7 @@ static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
                   L->ne, active_count(L));
         return -1;
     }
-    return choose_drive(L) ? 1 : 0;
+    return pick_drive(R, prev_a, prev_b) ? 1 : 0;
 }
 
 static int fastest(const lk *L, const lk_sys *S, const ori_v2 *t)
@@ -916,6 +990,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
         push_frame(R, L->p, true, true);
         // The drive edge is not put back: the motion has moved its ends apart and other vertices
         // may now lie across it; the completion after the event adds whatever edges are valid.
+        L->prev_a = L->drv_a, L->prev_b = L->drv_b;
         L->drv_a = L->drv_b = -1;
         lk_watch w = watch[ev];
         int ea = find_edge(L, w.v, w.a), eb = find_edge(L, w.v, w.b);
@@ -1115,7 +1190,7 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     L.frozen = ori__calloc((size_t)n, sizeof *L.frozen);
     L.fa = ori__alloc((size_t)n * sizeof(int)), L.fb = ori__alloc((size_t)n * sizeof(int));
     L.forder = ori__alloc((size_t)n * sizeof(int)), L.ft = ori__alloc((size_t)n * sizeof(double));
-    L.drv_a = L.drv_b = -1;
+    L.drv_a = L.drv_b = L.prev_a = L.prev_b = -1;
     double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
     for (int v = 0; v < n; ++v)
         lo_x = fmin(lo_x, L.p[v].x), hi_x = fmax(hi_x, L.p[v].x), lo_y = fmin(lo_y, L.p[v].y), hi_y = fmax(hi_y, L.p[v].y);
