@@ -70,7 +70,21 @@ typedef struct lk {
 
 static int active_count(const lk *L) { return L->n - L->nfrozen; }
 
-static int orient(const lk *L, int a, int b, int c) { return ori__orient2d_exact(L->p[a], L->p[b], L->p[c]); }
+// Orientation of three vertices, exact, with ties broken by Simulation of Simplicity: vertex i
+// is perturbed by ε (i, i²) — points of a parabola, never collinear — so that no three vertices
+// are collinear for the combinatorics (a zig-zag with its lower points on one line, a vertex
+// exactly on a diagonal). Along the motion exact ties do not occur; they do in inputs.
+static ori_v2 sos_dir(int i) { return ori_v2_make((double)i, (double)i * (double)i); }
+static int orient(const lk *L, int a, int b, int c)
+{
+    return ori__orient2d_perturbed(L->p[a], L->p[b], L->p[c], sos_dir(a), sos_dir(b), sos_dir(c));
+}
+
+// Segments a–b and c–d (four distinct vertices) cross, under the same perturbation.
+static bool cross_sos(const lk *L, int a, int b, int c, int d)
+{
+    return orient(L, a, b, c) * orient(L, a, b, d) < 0 && orient(L, c, d, a) * orient(L, c, d, b) < 0;
+}
 
 // Angular order around centre c: half-plane first, then orientation.
 static int half_of(ori_v2 c, ori_v2 q) { return (q.y > c.y || (q.y == c.y && q.x > c.x)) ? 0 : 1; }
@@ -173,7 +187,6 @@ static void flattest_wedge(const lk *L, int v, int *wa, int *wb)
 // Candidate edge a–b: touches no edge except at a or b, no vertex on it, pointed at both ends.
 static bool candidate_ok(const lk *L, int a, int b)
 {
-    ori_v2 pa = L->p[a], pb = L->p[b];
     for (int k = 0; k < L->ne; ++k) {
         int c = L->e[k].a, d = L->e[k].b;
         if ((c == a && d == b) || (c == b && d == a)) return false;
@@ -188,11 +201,11 @@ static bool candidate_ok(const lk *L, int a, int b)
             }
             continue;
         }
-        if (ori__segments_intersect(pa, pb, L->p[c], L->p[d])) return false;
+        if (cross_sos(L, a, b, c, d)) return false;
     }
     if (L->drv_a >= 0) {
         int c = L->drv_a, d = L->drv_b;
-        if (!(c == a || d == a || c == b || d == b) && ori__segments_intersect(pa, pb, L->p[c], L->p[d])) return false;
+        if (!(c == a || d == a || c == b || d == b) && cross_sos(L, a, b, c, d)) return false;
     }
     int tmp[512];
     for (int end = 0; end < 2; ++end) {
@@ -577,7 +590,9 @@ static bool project(lk_run *R, ori_v2 *p)
     lk *L = R->L;
     lk_sys *S = &R->S;
     double prev = INFINITY;
-    for (int it = 0; it < 12; ++it) {
+    // Chord Newton: the Jacobian is factored at the first iterate only and reused (the predictor
+    // is close to the curve; convergence stays fast and each iteration costs a solve, not a factor).
+    for (int it = 0; it < 24; ++it) {
         double worst = 0.0;
         for (int k = 0; k < L->ne; ++k) {
             ori_v2 d = ori_v2_sub(p[L->e[k].a], p[L->e[k].b]);
@@ -594,7 +609,7 @@ static bool project(lk_run *R, ori_v2 *p)
         if (!isfinite(worst) || worst > 1e-2) {
             return false;
         }
-        if (!sys_factor(L, S, p)) {
+        if (it == 0 && !sys_factor(L, S, p)) {
             return false;
         }
         if (!sys_solve(S, R->rhs, R->sol, R->w1, R->w2)) return false;
@@ -735,6 +750,32 @@ static void handle_event(lk_run *R, int v, int a, int b)
     R->M->result.events++;
 }
 
+#ifndef NDEBUG
+// Debug check after every restructuring (O(edges²)): the graph with the drive is a pointed
+// pseudo-triangulation — 2n − 3 edges, no two crossing (exactly, in the real configuration and
+// under the perturbation), every active vertex pointed. False names nothing: the caller fails.
+static bool ppt_ok(lk *L)
+{
+    int m = L->ne + (L->drv_a >= 0 ? 1 : 0);
+    if (active_count(L) > 2 && m != 2 * active_count(L) - 3) return false;
+    for (int i = 0; i <= L->ne; ++i) {
+        int a = i < L->ne ? L->e[i].a : L->drv_a, b = i < L->ne ? L->e[i].b : L->drv_b;
+        if (a < 0) continue;
+        for (int j = i + 1; j <= L->ne; ++j) {
+            int c = j < L->ne ? L->e[j].a : L->drv_a, d = j < L->ne ? L->e[j].b : L->drv_b;
+            if (c < 0 || a == c || a == d || b == c || b == d) continue;
+            if (ori__segments_cross_properly(L->p[a], L->p[b], L->p[c], L->p[d]) || cross_sos(L, a, b, c, d)) return false;
+        }
+    }
+    build_adj(L, true);
+    bool ok = true;
+    for (int v = 0; v < L->n && ok; ++v)
+        if (!L->frozen[v]) ok = pointed_list(L, v, L->adj + L->adj_start[v], L->adj_start[v + 1] - L->adj_start[v]);
+    build_adj(L, false);
+    return ok;
+}
+#endif
+
 // Rebuild after an event: settle non-pointed vertices, complete, choose a drive.
 // Returns 1 when a drive exists (continue), 0 when done, −1 on failure.
 static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
@@ -762,7 +803,15 @@ static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
                   L->ne, active_count(L));
         return -1;
     }
-    return pick_drive(R, prev_a, prev_b) ? 1 : 0;
+    int more = pick_drive(R, prev_a, prev_b) ? 1 : 0;
+#ifndef NDEBUG
+    if (!ppt_ok(L)) {
+        ori__fail(error, ORI_ERR_INTERNAL, "pseudo-triangulation not planar or not pointed after event %d",
+                  R->M->result.events);
+        return -1;
+    }
+#endif
+    return more;
 }
 
 static int fastest(const lk *L, const lk_sys *S, const ori_v2 *t)
@@ -834,6 +883,24 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
     lk_watch *watch = ori__alloc(((size_t)n + 1) * sizeof *watch);
     ori_status st = ORI_OK;
     push_frame(R, L->p, true, false);
+    // Straight joints of the input (two bars exactly opposite) are straight already: freeze them
+    // (the perturbed predicate would see them slightly bent).
+    for (bool again = true; again && active_count(L) > 2;) {
+        again = false;
+        for (int v = 0; v < n && !again; ++v) {
+            int nb[2], k = 0;
+            for (int e = 0; e < L->ne && k <= 2; ++e)
+                if (L->e[e].a == v || L->e[e].b == v) {
+                    if (k < 2) nb[k] = L->e[e].a == v ? L->e[e].b : L->e[e].a;
+                    k++;
+                }
+            if (L->frozen[v] || k != 2 || ori__orient2d_exact(L->p[nb[0]], L->p[v], L->p[nb[1]]) != 0 ||
+                ori_v2_dot(ori_v2_sub(L->p[nb[0]], L->p[v]), ori_v2_sub(L->p[nb[1]], L->p[v])) >= 0.0)
+                continue;
+            handle_event(R, v, nb[0], nb[1]);
+            again = true;
+        }
+    }
     int rs = restructure(R, -1, -1, error);
     while (rs == 1) {
         if (R->M->result.events > max_events) {
@@ -1095,28 +1162,6 @@ static ori_status validate(const ori_linkage_def *def, int *order, bool *closed,
     return st;
 }
 
-// The input could not be completed to a pointed pseudo-triangulation: name a vertex lying on the
-// segment between two others (exactly), the degeneracy that prevents it (a hull point between two
-// hull points, or a point on the segment a diagonal would need). Keeps st when there is none.
-static ori_status refuse_collinear(const ori_linkage_def *def, ori_error *error, ori_status st)
-{
-    int n = def->vertex_count;
-    const ori_v2 *p = def->coords;
-    for (int v = 0; v < n; ++v)
-        for (int a = 0; a < n; ++a) {
-            if (a == v) continue;
-            for (int b = a + 1; b < n; ++b) {
-                if (b == v || ori__orient2d_exact(p[a], p[b], p[v]) != 0) continue;
-                // strictly between a and b
-                if (ori_v2_dot(ori_v2_sub(p[a], p[v]), ori_v2_sub(p[b], p[v])) >= 0.0) continue;
-                return ori__fail_at(error, ORI_ERR_DEGENERATE, "vertices_coords", v,
-                                    "lies exactly between vertices %d and %d on their line: such collinear points "
-                                    "are not handled (move the vertex off the line)", a, b);
-            }
-        }
-    return st;
-}
-
 static bool final_shape_ok(const ori_linkage_def *def, const int *order, bool closed, const ori_v2 *p, double scale)
 {
     int n = def->vertex_count;
@@ -1160,8 +1205,11 @@ static void measure(const ori_linkage_def *def, ori_linkage_motion *M)
         if (f == 0) continue;
         const ori_v2 *q = p - n;
         for (int a = 0; a < n; ++a)
-            for (int b = a + 1; b < n; ++b)
-                mind = fmin(mind, ori_v2_norm(ori_v2_sub(p[a], p[b])) - ori_v2_norm(ori_v2_sub(q[a], q[b])));
+            for (int b = a + 1; b < n; ++b) {
+                double px = p[a].x - p[b].x, py = p[a].y - p[b].y, qx = q[a].x - q[b].x, qy = q[a].y - q[b].y;
+                double d = sqrt(px * px + py * py) - sqrt(qx * qx + qy * qy);
+                if (d < mind) mind = d;
+            }
     }
     M->result.max_length_error = maxerr;
     M->result.min_distance_change = isfinite(mind) ? mind : 0.0;
@@ -1216,7 +1264,6 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     R.stride = 1;
     int max_events = def->max_events > 0 ? def->max_events : 100 * n + 100;
     st = run_motion(&R, max_events, error);
-    if (st == ORI_ERR_INTERNAL && M->result.events == 0) st = refuse_collinear(def, error, st);
     if (st == ORI_OK) {
         const ori_v2 *last = M->frames + (size_t)(M->frame_count - 1) * n;
         M->result.final_ok = final_shape_ok(def, order, closed, last, L.scale);

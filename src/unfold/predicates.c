@@ -57,3 +57,34 @@ bool ori__segments_cross_properly(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 d)
     int o3 = ori__orient2d_exact(c, d, a), o4 = ori__orient2d_exact(c, d, b);
     return o1 * o2 < 0 && o3 * o4 < 0;
 }
+
+// Exact sign of a polynomial coefficient cross(u, w) + cross(x, y) with u, w, x, y differences of
+// doubles (given as their endpoints).
+static int cross_sum_gmp(const ori_v2 *u0, const ori_v2 *u1, const ori_v2 *w0, const ori_v2 *w1, int terms)
+{
+    mpq_t a, b, c, d, t, sum;
+    mpq_inits(a, b, c, d, t, sum, NULL);
+    for (int k = 0; k < terms; ++k) {
+        // (u1 − u0) × (w1 − w0)
+        mpq_set_d(a, u1[k].x), mpq_set_d(t, u0[k].x), mpq_sub(a, a, t);
+        mpq_set_d(b, u1[k].y), mpq_set_d(t, u0[k].y), mpq_sub(b, b, t);
+        mpq_set_d(c, w1[k].x), mpq_set_d(t, w0[k].x), mpq_sub(c, c, t);
+        mpq_set_d(d, w1[k].y), mpq_set_d(t, w0[k].y), mpq_sub(d, d, t);
+        mpq_mul(a, a, d), mpq_mul(b, b, c), mpq_sub(a, a, b), mpq_add(sum, sum, a);
+    }
+    int s = mpq_sgn(sum);
+    mpq_clears(a, b, c, d, t, sum, NULL);
+    return s;
+}
+
+int ori__orient2d_perturbed(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 da, ori_v2 db, ori_v2 dc)
+{
+    int s = ori__orient2d_exact(a, b, c);
+    if (s != 0) return s;
+    // ε¹: (b − a) × (dc − da) + (db − da) × (c − a)
+    ori_v2 u0[2] = {a, da}, u1[2] = {b, db}, w0[2] = {da, a}, w1[2] = {dc, c};
+    s = cross_sum_gmp(u0, u1, w0, w1, 2);
+    if (s != 0) return s;
+    // ε²: (db − da) × (dc − da)
+    return ori__orient2d_exact(da, db, dc);
+}
