@@ -64,20 +64,24 @@ typedef struct lk {
     int ne, ecap;
     int drv_a, drv_b; // removed hull edge (−1 when none)
     int prev_a, prev_b; // the drive before the last event (−1 when none)
+    ori_v2 *sd, *se;    // symbolic perturbation directions (see orient)
     // adjacency (rebuilt on demand): CSR sorted counter-clockwise
     int *adj_start, *adj, adj_cap;
 } lk;
 
 static int active_count(const lk *L) { return L->n - L->nfrozen; }
 
-// Orientation of three vertices, exact, with ties broken by Simulation of Simplicity: vertex i
-// is perturbed by ε (i, i²) — points of a parabola, never collinear — so that no three vertices
-// are collinear for the combinatorics (a zig-zag with its lower points on one line, a vertex
-// exactly on a diagonal). Along the motion exact ties do not occur; they do in inputs.
-static ori_v2 sos_dir(int i) { return ori_v2_make((double)i, (double)i * (double)i); }
+// Orientation of three vertices, exact, with ties broken by Simulation of Simplicity: vertex i is
+// perturbed by ε sd[i] + ε² se[i]. sd is the cubic expansion (p − c)|p − c|² about the input's
+// centroid c, which moves a vertex lying between two others on a line not through c to the side
+// of c (a point exactly on a hull edge falls inside; a notch tip on a diagonal goes inward); se
+// = (i, i²), points of a parabola (never collinear), decides the rest. So no three vertices are
+// collinear for the combinatorics (a zig-zag with its lower points on one line, a vertex exactly
+// on a diagonal). Along the motion exact ties do not occur; they do in inputs.
 static int orient(const lk *L, int a, int b, int c)
 {
-    return ori__orient2d_perturbed(L->p[a], L->p[b], L->p[c], sos_dir(a), sos_dir(b), sos_dir(c));
+    ori_v2 d[3] = {L->sd[a], L->sd[b], L->sd[c]}, e[3] = {L->se[a], L->se[b], L->se[c]};
+    return ori__orient2d_perturbed(L->p[a], L->p[b], L->p[c], d, e);
 }
 
 // Segments a–b and c–d (four distinct vertices) cross, under the same perturbation.
@@ -1239,6 +1243,16 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     L.fa = ori__alloc((size_t)n * sizeof(int)), L.fb = ori__alloc((size_t)n * sizeof(int));
     L.forder = ori__alloc((size_t)n * sizeof(int)), L.ft = ori__alloc((size_t)n * sizeof(double));
     L.drv_a = L.drv_b = L.prev_a = L.prev_b = -1;
+    L.sd = ori__alloc((size_t)n * sizeof *L.sd), L.se = ori__alloc((size_t)n * sizeof *L.se);
+    {
+        ori_v2 c = ori_v2_make(0.0, 0.0);
+        for (int v = 0; v < n; ++v) c = ori_v2_add(c, ori_v2_scale(L.p[v], 1.0 / n));
+        for (int v = 0; v < n; ++v) {
+            ori_v2 r = ori_v2_sub(L.p[v], c);
+            L.sd[v] = ori_v2_scale(r, ori_v2_dot(r, r));
+            L.se[v] = ori_v2_make((double)v, (double)v * (double)v);
+        }
+    }
     double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
     for (int v = 0; v < n; ++v)
         lo_x = fmin(lo_x, L.p[v].x), hi_x = fmax(hi_x, L.p[v].x), lo_y = fmin(lo_y, L.p[v].y), hi_y = fmax(hi_y, L.p[v].y);
@@ -1274,7 +1288,7 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     }
     ori__free(R.rhs), ori__free(R.sol), ori__free(R.w1), ori__free(R.w2), ori__free(R.buf);
     ori__free(L.p), ori__free(L.frozen), ori__free(L.fa), ori__free(L.fb), ori__free(L.forder), ori__free(L.ft);
-    ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(order);
+    ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(order), ori__free(L.sd), ori__free(L.se);
     if (st != ORI_OK) {
         ori_linkage_motion_destroy(M);
         return st;

@@ -77,14 +77,27 @@ static int cross_sum_gmp(const ori_v2 *u0, const ori_v2 *u1, const ori_v2 *w0, c
     return s;
 }
 
-int ori__orient2d_perturbed(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 da, ori_v2 db, ori_v2 dc)
+int ori__orient2d_perturbed(ori_v2 a, ori_v2 b, ori_v2 c, const ori_v2 *d, const ori_v2 *e)
 {
     int s = ori__orient2d_exact(a, b, c);
     if (s != 0) return s;
-    // ε¹: (b − a) × (dc − da) + (db − da) × (c − a)
-    ori_v2 u0[2] = {a, da}, u1[2] = {b, db}, w0[2] = {da, a}, w1[2] = {dc, c};
-    s = cross_sum_gmp(u0, u1, w0, w1, 2);
-    if (s != 0) return s;
-    // ε²: (db − da) × (dc − da)
-    return ori__orient2d_exact(da, db, dc);
+    // point k is p_k + ε d_k + ε² e_k; the coefficients of ε¹ … ε⁴, each a sum of cross products
+    // of differences, in turn
+    ori_v2 p[3] = {a, b, c};
+    const ori_v2 *lv[3] = {p, d, e};
+    static const int terms[4][3][2] = {{{0, 1}, {1, 0}, {-1, -1}},
+                                       {{1, 1}, {0, 2}, {2, 0}},
+                                       {{1, 2}, {2, 1}, {-1, -1}},
+                                       {{2, 2}, {-1, -1}, {-1, -1}}};
+    for (int o = 0; o < 4; ++o) {
+        ori_v2 u0[3], u1[3], w0[3], w1[3];
+        int k = 0;
+        for (int t = 0; t < 3 && terms[o][t][0] >= 0; ++t, ++k) {
+            const ori_v2 *x = lv[terms[o][t][0]], *y = lv[terms[o][t][1]];
+            u0[k] = x[0], u1[k] = x[1], w0[k] = y[0], w1[k] = y[2];
+        }
+        s = cross_sum_gmp(u0, u1, w0, w1, k);
+        if (s != 0) return s;
+    }
+    return 0;
 }
