@@ -1,21 +1,21 @@
 // Carpenter's rule by Streinu's pointed pseudo-triangulations (thesis ch. 6; I. Streinu,
 // "Pseudo-triangulations, rigidity and motion planning", DCG 2005). The bars are completed to
 // a pointed pseudo-triangulation (PPT: a maximal planar graph in which every vertex has an angle
-// larger than π), a convex-hull edge that is not a bar is removed, and the remaining framework
-// has a one-degree-of-freedom motion that is expansive (no distance decreases). The motion is
-// followed by predictor–corrector continuation (its direction: the removed edge lengthens; the
-// tangent from the square rigidity system, KLU sparse LU; the curve parametrised by its fastest
-// coordinate; Newton projection onto every edge length) until the reflex angle of some vertex
-// reaches π (root-finding on its sine, bracket 1e-12 of the size in arc length). Then the two
-// aligned edges are both bars (the joint is straight: it stays straight, the two bars become one)
-// or one of them is not a bar: it is removed and the graph completed again (the flip). Every
-// combinatorial decision uses the exact orientation predicate.
+// larger than π), a convex-hull edge that is not a bar is removed (the drive, chosen by looking
+// ahead so that its motion does not meet an event at once) and the remaining framework has a
+// one-degree-of-freedom motion that is expansive (no distance decreases). The motion is followed
+// by predictor–corrector continuation (its direction: the drive lengthens; the tangent from the
+// square rigidity system, KLU sparse LU; the curve parametrised by its fastest coordinate; the
+// step from the velocity field, no edge turning more than 0.1 rad; chord-Newton projection onto
+// every edge length) until the reflex angle of some vertex reaches π (root-finding on its sine,
+// bracket 1e-12 of the size in arc length). Then the two aligned edges are both bars (the joint
+// is straight: it stays straight, the two bars become one) or one of them is not a bar: it is
+// removed and the graph completed again (the flip), decided where the angle is 1e-7 past π.
+// Every combinatorial decision uses the exact orientation predicate with Simulation of
+// Simplicity, so collinear inputs need no special case.
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#ifdef LK_DEBUG
-#include <stdio.h>
-#endif
 
 #include <orikin/tolerance.h>
 #include <orikin/unfold.h>
@@ -90,16 +90,31 @@ static bool cross_sos(const lk *L, int a, int b, int c, int d)
     return orient(L, a, b, c) * orient(L, a, b, d) < 0 && orient(L, c, d, a) * orient(L, c, d, b) < 0;
 }
 
-// Angular order around centre c: half-plane first, then orientation.
-static int half_of(ori_v2 c, ori_v2 q) { return (q.y > c.y || (q.y == c.y && q.x > c.x)) ? 0 : 1; }
+// Sign of coordinate k (0 x, 1 y) of vertex q minus that of c, under the perturbation of orient:
+// the values, then the ε and ε² directions, compared in turn (exact comparisons of doubles).
+static int coord_cmp(const lk *L, int c, int q, int k)
+{
+    double a[3] = {k ? L->p[q].y : L->p[q].x, k ? L->sd[q].y : L->sd[q].x, k ? L->se[q].y : L->se[q].x};
+    double b[3] = {k ? L->p[c].y : L->p[c].x, k ? L->sd[c].y : L->sd[c].x, k ? L->se[c].y : L->se[c].x};
+    for (int i = 0; i < 3; ++i)
+        if (a[i] != b[i]) return a[i] > b[i] ? 1 : -1;
+    return 0;
+}
+
+// Angular order around centre c: half-plane first (above, or on the line to the right: 0), then
+// orientation; both under the perturbation, so that the order is that of the perturbed points.
+static int half_of(const lk *L, int c, int q)
+{
+    int y = coord_cmp(L, c, q, 1);
+    return (y > 0 || (y == 0 && coord_cmp(L, c, q, 0) > 0)) ? 0 : 1;
+}
 
 static _Thread_local const lk *g_sort_lk; // qsort has no context argument
 static _Thread_local int g_sort_centre;
 static int cmp_angle(const void *x, const void *y)
 {
     int a = *(const int *)x, b = *(const int *)y;
-    ori_v2 c = g_sort_lk->p[g_sort_centre];
-    int ha = half_of(c, g_sort_lk->p[a]), hb = half_of(c, g_sort_lk->p[b]);
+    int ha = half_of(g_sort_lk, g_sort_centre, a), hb = half_of(g_sort_lk, g_sort_centre, b);
     if (ha != hb) return ha - hb;
     int o = orient(g_sort_lk, g_sort_centre, a, b);
     return o > 0 ? -1 : o < 0 ? 1 : (a - b);
@@ -340,9 +355,6 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
                     if (score > best_score) best_score = score, best_a = a, best_b = b;
                 }
             if (best_a >= 0) {
-#ifdef LK_DEBUG
-                fprintf(stderr, "  add %d-%d (found %d)\n", best_a, best_b, found);
-#endif
                 add_edge(L, best_a, best_b, false, ori_v2_norm(ori_v2_sub(L->p[best_a], L->p[best_b])));
                 added = true;
             }
@@ -363,10 +375,10 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
 static _Thread_local const lk *g_hull_lk;
 static int cmp_xy(const void *x, const void *y)
 {
-    ori_v2 a = g_hull_lk->p[*(const int *)x], b = g_hull_lk->p[*(const int *)y];
-    if (a.x != b.x) return a.x < b.x ? -1 : 1;
-    if (a.y != b.y) return a.y < b.y ? -1 : 1;
-    return 0;
+    // lexicographic on the perturbed coordinates (consistent with orient)
+    int a = *(const int *)x, b = *(const int *)y;
+    int c = coord_cmp(g_hull_lk, b, a, 0);
+    return c ? c : coord_cmp(g_hull_lk, b, a, 1);
 }
 
 static int hull(const lk *L, int *out)
@@ -718,9 +730,6 @@ static bool pick_drive(lk_run *R, int prev_a, int prev_b)
     L->drv_a = ca[best], L->drv_b = cb[best];
     L->e[e].len = ori_v2_norm(ori_v2_sub(L->p[ca[best]], L->p[cb[best]]));
     remove_edge(L, e);
-#ifdef LK_DEBUG
-    fprintf(stderr, "  drive %d-%d (of %d, score %g)\n", L->drv_a, L->drv_b, nc, best_score);
-#endif
     return true;
 }
 
@@ -731,9 +740,6 @@ static void handle_event(lk_run *R, int v, int a, int b)
     lk *L = R->L;
     int ea = find_edge(L, v, a), eb = find_edge(L, v, b);
     bool bar_a = ea >= 0 && L->e[ea].bar, bar_b = eb >= 0 && L->e[eb].bar;
-#ifdef LK_DEBUG
-    fprintf(stderr, "event %d: v=%d a=%d b=%d bars %d%d steps %d drive %d-%d\n", R->M->result.events, v, a, b, bar_a, bar_b, R->M->result.steps, L->drv_a, L->drv_b);
-#endif
     if (bar_a && bar_b) {
         double la = L->e[ea].len, lb = L->e[eb].len;
         L->frozen[v] = true;
