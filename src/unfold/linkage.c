@@ -1225,20 +1225,11 @@ static void measure(const ori_linkage_def *def, ori_linkage_motion *M)
     M->result.min_distance_change = isfinite(mind) ? mind : 0.0;
 }
 
-ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **out, ori_error *error)
+// One run of the motion under perturbation variant 0–3 (see ori_linkage_unfold).
+static ori_status attempt(const ori_linkage_def *def, const int *order, bool closed, int variant,
+                          ori_linkage_motion **out, ori_error *error)
 {
-    ORI_ASSERT(def && out && def->internal_value == ORI__DEF_COOKIE);
-    *out = NULL;
-    if (!def->coords || !def->edges || def->vertex_count < 0 || def->edge_count < 0 || def->steps_per_event < 0)
-        return ori__fail(error, ORI_ERR_ARGUMENT, "linkage: missing coordinates or bars");
     int n = def->vertex_count;
-    int *order = ori__alloc(((size_t)n + 1) * sizeof *order);
-    bool closed = false;
-    ori_status st = validate(def, order, &closed, error);
-    if (st != ORI_OK) {
-        ori__free(order);
-        return st;
-    }
     lk L;
     memset(&L, 0, sizeof L);
     L.n = n;
@@ -1255,8 +1246,11 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
         for (int v = 0; v < n; ++v) c = ori_v2_add(c, ori_v2_scale(L.p[v], 1.0 / n));
         for (int v = 0; v < n; ++v) {
             ori_v2 r = ori_v2_sub(L.p[v], c);
-            L.sd[v] = ori_v2_scale(r, ori_v2_dot(r, r));
-            L.se[v] = ori_v2_make((double)v, (double)v * (double)v);
+            ori_v2 cubic = ori_v2_scale(r, ori_v2_dot(r, r));
+            double w = variant == 3 ? (double)(n - v) : (double)v;
+            ori_v2 parabola = ori_v2_make(w, w * w);
+            L.sd[v] = variant == 0 ? cubic : variant == 1 ? ori_v2_scale(cubic, -1.0) : parabola;
+            L.se[v] = variant <= 1 ? parabola : cubic;
         }
     }
     double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
@@ -1283,18 +1277,56 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     R.buf = R.per > 0 ? ori__alloc((size_t)R.buf_cap * (size_t)n * sizeof *R.buf) : NULL;
     R.stride = 1;
     int max_events = def->max_events > 0 ? def->max_events : 100 * n + 100;
-    st = run_motion(&R, max_events, error);
+    ori_status st = run_motion(&R, max_events, error);
     if (st == ORI_OK) {
         const ori_v2 *last = M->frames + (size_t)(M->frame_count - 1) * n;
         M->result.final_ok = final_shape_ok(def, order, closed, last, L.scale);
-        M->result.steps = M->result.steps;
-
         M->result.frames = M->frame_count;
         measure(def, M);
+        // the motion's own guarantees, checked over the kept frames: a motion that breaks them
+        // (a degenerate input the perturbation could not steer, see docs/unfolding.md) is a failure
+        if (M->result.max_length_error > ORI_TOL_LINKAGE_CHECK_REL)
+            st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: a bar length drifted by %.3g relative",
+                           M->result.max_length_error);
+        else if (M->result.min_distance_change < -ORI_TOL_LINKAGE_CHECK_REL * L.scale)
+            st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: a distance decreased by %.3g (not expansive)",
+                           -M->result.min_distance_change);
     }
     ori__free(R.rhs), ori__free(R.sol), ori__free(R.w1), ori__free(R.w2), ori__free(R.buf);
     ori__free(L.p), ori__free(L.frozen), ori__free(L.fa), ori__free(L.fb), ori__free(L.forder), ori__free(L.ft);
-    ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(order), ori__free(L.sd), ori__free(L.se);
+    ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(L.sd), ori__free(L.se);
+    if (st != ORI_OK) {
+        ori_linkage_motion_destroy(M);
+        return st;
+    }
+    *out = M;
+    return ORI_OK;
+}
+
+ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **out, ori_error *error)
+{
+    ORI_ASSERT(def && out && def->internal_value == ORI__DEF_COOKIE);
+    *out = NULL;
+    if (!def->coords || !def->edges || def->vertex_count < 0 || def->edge_count < 0 || def->steps_per_event < 0)
+        return ori__fail(error, ORI_ERR_ARGUMENT, "linkage: missing coordinates or bars");
+    int n = def->vertex_count;
+    int *order = ori__alloc(((size_t)n + 1) * sizeof *order);
+    bool closed = false;
+    ori_status st = validate(def, order, &closed, error);
+    if (st != ORI_OK) {
+        ori__free(order);
+        return st;
+    }
+    // The perturbation is fixed by the input. Where exact collinearities force a flat
+    // pseudo-triangle, the motion may not follow the side it chose and fails (detected: an
+    // internal error or a broken guarantee); then other perturbations are tried: the cubic
+    // expansion reversed, then the parabola first.
+    ori_linkage_motion *M = NULL;
+    for (int variant = 0; variant < 4; ++variant) {
+        st = attempt(def, order, closed, variant, &M, error);
+        if (st != ORI_ERR_NOT_CONVERGED && st != ORI_ERR_INTERNAL) break;
+    }
+    ori__free(order);
     if (st != ORI_OK) {
         ori_linkage_motion_destroy(M);
         return st;
