@@ -1324,7 +1324,8 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     ori_linkage_motion *M = NULL;
     for (int variant = 0; variant < 4; ++variant) {
         st = attempt(def, order, closed, variant, &M, error);
-        if (st != ORI_ERR_NOT_CONVERGED && st != ORI_ERR_INTERNAL) break;
+        bool cycle = st == ORI_ERR_LIMIT && def->max_events == 0; // the automatic limit: flips cycling
+        if (st != ORI_ERR_NOT_CONVERGED && st != ORI_ERR_INTERNAL && !cycle) break;
     }
     ori__free(order);
     if (st != ORI_OK) {
