@@ -1,4 +1,5 @@
-// Unfolding: a random simple 200-gon convexified by Streinu's motion (events, wall time), and
+// Unfolding: a random simple 200-gon convexified by Streinu's motion (events, wall time; then a
+// 200-vertex chain straightened and a 500-gon convexified), and
 // nets of qhull convex hulls of random points on a sphere with 100, 1,000 and 10,000 faces
 // (time, tries, how often one piece). docs/unfolding.md quotes these figures.
 #include <math.h>
@@ -108,7 +109,10 @@ static int run(void)
     hull_case(100, 20, 50);
     hull_case(1000, 10, 50);
     hull_case(10000, 3, 20);
+    // after the hulls, so that their random points stay those of the figures in docs/unfolding.md
+    linkage_case(200, false);
+    linkage_case(500, true);
     return 0;
 }
 
-const bench_scenario bench_unfold = {"unfold", "Streinu motion of a random 200-gon; nets of convex hulls", run};
+const bench_scenario bench_unfold = {"unfold", "Streinu motion of random 200-gon, 200-chain, 500-gon; nets of convex hulls", run};

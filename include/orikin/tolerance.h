@@ -470,4 +470,11 @@
 /// smaller rate is a crease the motion leaves flat, as at a vertex of two straight lines).
 #define ORI_TOL_REGULARIZE_AGAINST_RATE 1e-9
 
+/// Linkage unfolding: a flip is decided where the aligned angle has turned this (its sine) past
+/// π along the old motion, so that no new edge makes a sliver thinner than that. Unitless.
+#define ORI_TOL_LINKAGE_FLIP_SINE 1e-7
+/// Linkage unfolding: a motion whose kept frames change a bar length by more than this
+/// (relative) or decrease a distance by more than this × the size fails. Unitless.
+#define ORI_TOL_LINKAGE_CHECK_REL 1e-9
+
 #endif

@@ -64,7 +64,9 @@ typedef struct ori_linkage_motion ori_linkage_motion;
 /// Validate the linkage (one simple chain or one simple polygon: no vertex with three bars
 /// — trees can lock —, no coincident vertices, no crossing bars; errors name the element:
 /// field "vertices_coords" or "edges_vertices") and follow Streinu's expansive motion to the
-/// straight chain or the convex polygon. Destroy with ori_linkage_motion_destroy.
+/// straight chain or the convex polygon. Fails with ORI_ERR_NOT_CONVERGED when the kept frames
+/// break the motion's guarantees (a bar length off by 1e-9 relative, a distance decreasing by
+/// 1e-9 of the size). Destroy with ori_linkage_motion_destroy.
 ORI_API ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **out, ori_error *error);
 /// Destroy a motion; NULL is a no-op.
 ORI_API void ori_linkage_motion_destroy(ori_linkage_motion *motion);

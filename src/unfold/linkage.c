@@ -1,15 +1,18 @@
 // Carpenter's rule by Streinu's pointed pseudo-triangulations (thesis ch. 6; I. Streinu,
 // "Pseudo-triangulations, rigidity and motion planning", DCG 2005). The bars are completed to
 // a pointed pseudo-triangulation (PPT: a maximal planar graph in which every vertex has an angle
-// larger than π), a convex-hull edge that is not a bar is removed, and the remaining framework
-// has a one-degree-of-freedom motion that is expansive (no distance decreases). The motion is
-// followed by predictor–corrector continuation (its direction: the removed edge lengthens; the
-// tangent from the square rigidity system, KLU sparse LU; the curve parametrised by its fastest
-// coordinate; Newton projection onto every edge length) until the reflex angle of some vertex
-// reaches π (root-finding on its sine, bracket 1e-12 of the size in arc length). Then the two
-// aligned edges are both bars (the joint is straight: it stays straight, the two bars become one)
-// or one of them is not a bar: it is removed and the graph completed again (the flip). Every
-// combinatorial decision uses the exact orientation predicate.
+// larger than π), a convex-hull edge that is not a bar is removed (the drive, chosen by looking
+// ahead so that its motion does not meet an event at once) and the remaining framework has a
+// one-degree-of-freedom motion that is expansive (no distance decreases). The motion is followed
+// by predictor–corrector continuation (its direction: the drive lengthens; the tangent from the
+// square rigidity system, KLU sparse LU; the curve parametrised by its fastest coordinate; the
+// step from the velocity field, no edge turning more than 0.1 rad; chord-Newton projection onto
+// every edge length) until the reflex angle of some vertex reaches π (root-finding on its sine,
+// bracket 1e-12 of the size in arc length). Then the two aligned edges are both bars (the joint
+// is straight: it stays straight, the two bars become one) or one of them is not a bar: it is
+// removed and the graph completed again (the flip), decided where the angle is 1e-7 past π.
+// Every combinatorial decision uses the exact orientation predicate with Simulation of
+// Simplicity, so collinear inputs need no special case.
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,24 +63,58 @@ typedef struct lk {
     lk_edge *e;
     int ne, ecap;
     int drv_a, drv_b; // removed hull edge (−1 when none)
+    int prev_a, prev_b; // the drive before the last event (−1 when none)
+    ori_v2 *sd, *se;    // symbolic perturbation directions (see orient)
     // adjacency (rebuilt on demand): CSR sorted counter-clockwise
     int *adj_start, *adj, adj_cap;
 } lk;
 
 static int active_count(const lk *L) { return L->n - L->nfrozen; }
 
-static int orient(const lk *L, int a, int b, int c) { return ori__orient2d_exact(L->p[a], L->p[b], L->p[c]); }
+// Orientation of three vertices, exact, with ties broken by Simulation of Simplicity: vertex i is
+// perturbed by ε sd[i] + ε² se[i]. sd is the cubic expansion (p − c)|p − c|² about the input's
+// centroid c, which moves a vertex lying between two others on a line not through c to the side
+// of c (a point exactly on a hull edge falls inside; a notch tip on a diagonal goes inward); se
+// = (i, i²), points of a parabola (never collinear), decides the rest. So no three vertices are
+// collinear for the combinatorics (a zig-zag with its lower points on one line, a vertex exactly
+// on a diagonal). Along the motion exact ties do not occur; they do in inputs.
+static int orient(const lk *L, int a, int b, int c)
+{
+    ori_v2 d[3] = {L->sd[a], L->sd[b], L->sd[c]}, e[3] = {L->se[a], L->se[b], L->se[c]};
+    return ori__orient2d_perturbed(L->p[a], L->p[b], L->p[c], d, e);
+}
 
-// Angular order around centre c: half-plane first, then orientation.
-static int half_of(ori_v2 c, ori_v2 q) { return (q.y > c.y || (q.y == c.y && q.x > c.x)) ? 0 : 1; }
+// Segments a–b and c–d (four distinct vertices) cross, under the same perturbation.
+static bool cross_sos(const lk *L, int a, int b, int c, int d)
+{
+    return orient(L, a, b, c) * orient(L, a, b, d) < 0 && orient(L, c, d, a) * orient(L, c, d, b) < 0;
+}
+
+// Sign of coordinate k (0 x, 1 y) of vertex q minus that of c, under the perturbation of orient:
+// the values, then the ε and ε² directions, compared in turn (exact comparisons of doubles).
+static int coord_cmp(const lk *L, int c, int q, int k)
+{
+    double a[3] = {k ? L->p[q].y : L->p[q].x, k ? L->sd[q].y : L->sd[q].x, k ? L->se[q].y : L->se[q].x};
+    double b[3] = {k ? L->p[c].y : L->p[c].x, k ? L->sd[c].y : L->sd[c].x, k ? L->se[c].y : L->se[c].x};
+    for (int i = 0; i < 3; ++i)
+        if (a[i] != b[i]) return a[i] > b[i] ? 1 : -1;
+    return 0;
+}
+
+// Angular order around centre c: half-plane first (above, or on the line to the right: 0), then
+// orientation; both under the perturbation, so that the order is that of the perturbed points.
+static int half_of(const lk *L, int c, int q)
+{
+    int y = coord_cmp(L, c, q, 1);
+    return (y > 0 || (y == 0 && coord_cmp(L, c, q, 0) > 0)) ? 0 : 1;
+}
 
 static _Thread_local const lk *g_sort_lk; // qsort has no context argument
 static _Thread_local int g_sort_centre;
 static int cmp_angle(const void *x, const void *y)
 {
     int a = *(const int *)x, b = *(const int *)y;
-    ori_v2 c = g_sort_lk->p[g_sort_centre];
-    int ha = half_of(c, g_sort_lk->p[a]), hb = half_of(c, g_sort_lk->p[b]);
+    int ha = half_of(g_sort_lk, g_sort_centre, a), hb = half_of(g_sort_lk, g_sort_centre, b);
     if (ha != hb) return ha - hb;
     int o = orient(g_sort_lk, g_sort_centre, a, b);
     return o > 0 ? -1 : o < 0 ? 1 : (a - b);
@@ -169,7 +206,6 @@ static void flattest_wedge(const lk *L, int v, int *wa, int *wb)
 // Candidate edge a–b: touches no edge except at a or b, no vertex on it, pointed at both ends.
 static bool candidate_ok(const lk *L, int a, int b)
 {
-    ori_v2 pa = L->p[a], pb = L->p[b];
     for (int k = 0; k < L->ne; ++k) {
         int c = L->e[k].a, d = L->e[k].b;
         if ((c == a && d == b) || (c == b && d == a)) return false;
@@ -184,11 +220,11 @@ static bool candidate_ok(const lk *L, int a, int b)
             }
             continue;
         }
-        if (ori__segments_intersect(pa, pb, L->p[c], L->p[d])) return false;
+        if (cross_sos(L, a, b, c, d)) return false;
     }
     if (L->drv_a >= 0) {
         int c = L->drv_a, d = L->drv_b;
-        if (!(c == a || d == a || c == b || d == b) && ori__segments_intersect(pa, pb, L->p[c], L->p[d])) return false;
+        if (!(c == a || d == a || c == b || d == b) && cross_sos(L, a, b, c, d)) return false;
     }
     int tmp[512];
     for (int end = 0; end < 2; ++end) {
@@ -339,10 +375,10 @@ static ori_status complete(lk *L, int excl_a, int excl_b, ori_error *error)
 static _Thread_local const lk *g_hull_lk;
 static int cmp_xy(const void *x, const void *y)
 {
-    ori_v2 a = g_hull_lk->p[*(const int *)x], b = g_hull_lk->p[*(const int *)y];
-    if (a.x != b.x) return a.x < b.x ? -1 : 1;
-    if (a.y != b.y) return a.y < b.y ? -1 : 1;
-    return 0;
+    // lexicographic on the perturbed coordinates (consistent with orient)
+    int a = *(const int *)x, b = *(const int *)y;
+    int c = coord_cmp(g_hull_lk, b, a, 0);
+    return c ? c : coord_cmp(g_hull_lk, b, a, 1);
 }
 
 static int hull(const lk *L, int *out)
@@ -364,25 +400,6 @@ static int hull(const lk *L, int *out)
     }
     ori__free(pts);
     return h - 1;
-}
-
-// Choose the drive: a hull edge of the graph that is not a bar. False when every hull edge is a bar.
-static bool choose_drive(lk *L)
-{
-    int *h = ori__alloc(((size_t)L->n + 1) * 2 * sizeof *h);
-    int k = hull(L, h);
-    int best = -1;
-    double best_len = -1.0;
-    for (int i = 0; i < k; ++i) {
-        int e = find_edge(L, h[i], h[(i + 1) % k]);
-        if (e >= 0 && !L->e[e].bar && L->e[e].len > best_len) best = e, best_len = L->e[e].len;
-    }
-    ori__free(h);
-    L->drv_a = L->drv_b = -1;
-    if (best < 0) return false;
-    L->drv_a = L->e[best].a, L->drv_b = L->e[best].b;
-    remove_edge(L, best);
-    return true;
 }
 
 static void place_frozen(lk *L, ori_v2 *p)
@@ -589,7 +606,9 @@ static bool project(lk_run *R, ori_v2 *p)
     lk *L = R->L;
     lk_sys *S = &R->S;
     double prev = INFINITY;
-    for (int it = 0; it < 12; ++it) {
+    // Chord Newton: the Jacobian is factored at the first iterate only and reused (the predictor
+    // is close to the curve; convergence stays fast and each iteration costs a solve, not a factor).
+    for (int it = 0; it < 24; ++it) {
         double worst = 0.0;
         for (int k = 0; k < L->ne; ++k) {
             ori_v2 d = ori_v2_sub(p[L->e[k].a], p[L->e[k].b]);
@@ -606,7 +625,7 @@ static bool project(lk_run *R, ori_v2 *p)
         if (!isfinite(worst) || worst > 1e-2) {
             return false;
         }
-        if (!sys_factor(L, S, p)) {
+        if (it == 0 && !sys_factor(L, S, p)) {
             return false;
         }
         if (!sys_solve(S, R->rhs, R->sol, R->w1, R->w2)) return false;
@@ -633,6 +652,85 @@ static bool state_at(lk_run *R, const ori_v2 *p0, const ori_v2 *t0, double s, or
     int n = R->L->n;
     for (int q = 0; q < n; ++q) out[q] = ori_v2_add(p0[q], ori_v2_scale(t0[q], s));
     return project(R, out);
+}
+
+// Rate of change of wedge_sine along the tangent t (per unit arc length).
+static double wedge_rate(const ori_v2 *p, const ori_v2 *t, lk_watch w)
+{
+    ori_v2 u = ori_v2_sub(p[w.a], p[w.v]), x = ori_v2_sub(p[w.b], p[w.v]);
+    ori_v2 du = ori_v2_sub(t[w.a], t[w.v]), dx = ori_v2_sub(t[w.b], t[w.v]);
+    double nu = ori_v2_norm(u), nx = ori_v2_norm(x), g = ori_v2_cross(u, x) / (nu * nx);
+    double dc = ori_v2_cross(du, x) + ori_v2_cross(u, dx);
+    return dc / (nu * nx) - g * (ori_v2_dot(u, du) / (nu * nu) + ori_v2_dot(x, dx) / (nx * nx));
+}
+
+// Choose the drive among the hull edges of the graph that are not bars (the previous drive
+// first when it still is one, then the longest): any of them leaves an expansive mechanism, but
+// right after a flip some would meet an event at once (a flat pseudo-triangle straightened by
+// lengthening its long side) and flip back, a cycle. Each candidate's motion is looked ahead:
+// the first whose nearest event (the reflex sines' linear extrapolation) is not immediate is
+// taken, else the one whose event is farthest. False when every hull edge is a bar.
+static bool pick_drive(lk_run *R, int prev_a, int prev_b)
+{
+    lk *L = R->L;
+    int n = L->n;
+    int *h = ori__alloc(((size_t)n + 1) * 2 * sizeof *h);
+    int hk = hull(L, h);
+    int cand[8], nc = 0;
+    double clen[8];
+    for (int i = 0; i < hk; ++i) {
+        int e = find_edge(L, h[i], h[(i + 1) % hk]);
+        if (e < 0 || L->e[e].bar) continue;
+        bool prev = (L->e[e].a == prev_a && L->e[e].b == prev_b) || (L->e[e].a == prev_b && L->e[e].b == prev_a);
+        double key = prev ? INFINITY : L->e[e].len;
+        int pos = nc < 8 ? nc++ : 8;
+        while (pos > 0 && clen[pos - 1] < key) {
+            if (pos < 8) cand[pos] = cand[pos - 1], clen[pos] = clen[pos - 1];
+            pos--;
+        }
+        if (pos < 8) cand[pos] = e, clen[pos] = key;
+    }
+    ori__free(h);
+    L->drv_a = L->drv_b = -1;
+    if (nc == 0) return false;
+    int ca[8], cb[8];
+    for (int i = 0; i < nc; ++i) ca[i] = L->e[cand[i]].a, cb[i] = L->e[cand[i]].b;
+    ori_v2 *t = ori__alloc((size_t)n * sizeof *t);
+    int best = 0;
+    double best_score = -1.0, enough = 1e-6 * L->scale;
+    for (int i = 0; i < nc && nc > 1; ++i) {
+        int e = find_edge(L, ca[i], cb[i]);
+        remove_edge(L, e);
+        L->drv_a = ca[i], L->drv_b = cb[i];
+        build_adj(L, false);
+        double score = INFINITY;
+        lk_sys S0 = R->S;
+        memset(&R->S, 0, sizeof R->S);
+        sys_create(L, &R->S, -1);
+        if (tangent(R, L->p, t)) {
+            for (int v = 0; v < n; ++v) {
+                lk_watch w = {v, -1, -1};
+                if (L->frozen[v] || !reflex_wedge(L, v, &w.a, &w.b)) continue;
+                double g = wedge_sine(L->p, w), r = wedge_rate(L->p, t, w);
+                if (g >= 0.0) score = 0.0;
+                else if (r > 0.0) score = fmin(score, -g / r);
+            }
+        } else {
+            score = 0.0;
+        }
+        sys_destroy(&R->S);
+        R->S = S0;
+        add_edge(L, ca[i], cb[i], false, ori_v2_norm(ori_v2_sub(L->p[ca[i]], L->p[cb[i]])));
+        L->drv_a = L->drv_b = -1;
+        if (score > best_score) best_score = score, best = i;
+        if (score >= enough) break;
+    }
+    ori__free(t);
+    int e = find_edge(L, ca[best], cb[best]);
+    L->drv_a = ca[best], L->drv_b = cb[best];
+    L->e[e].len = ori_v2_norm(ori_v2_sub(L->p[ca[best]], L->p[cb[best]]));
+    remove_edge(L, e);
+    return true;
 }
 
 // Handle the alignment of edges v–a and v–b at the current positions: straighten (both bars)
@@ -662,11 +760,38 @@ static void handle_event(lk_run *R, int v, int a, int b)
     R->M->result.events++;
 }
 
+#ifndef NDEBUG
+// Debug check after every restructuring (O(edges²), linkages up to 150 vertices): the graph with the drive is a pointed
+// pseudo-triangulation — 2n − 3 edges, no two crossing (exactly, in the real configuration and
+// under the perturbation), every active vertex pointed. False names nothing: the caller fails.
+static bool ppt_ok(lk *L)
+{
+    int m = L->ne + (L->drv_a >= 0 ? 1 : 0);
+    if (active_count(L) > 2 && m != 2 * active_count(L) - 3) return false;
+    for (int i = 0; i <= L->ne; ++i) {
+        int a = i < L->ne ? L->e[i].a : L->drv_a, b = i < L->ne ? L->e[i].b : L->drv_b;
+        if (a < 0) continue;
+        for (int j = i + 1; j <= L->ne; ++j) {
+            int c = j < L->ne ? L->e[j].a : L->drv_a, d = j < L->ne ? L->e[j].b : L->drv_b;
+            if (c < 0 || a == c || a == d || b == c || b == d) continue;
+            if (ori__segments_cross_properly(L->p[a], L->p[b], L->p[c], L->p[d]) || cross_sos(L, a, b, c, d)) return false;
+        }
+    }
+    build_adj(L, true);
+    bool ok = true;
+    for (int v = 0; v < L->n && ok; ++v)
+        if (!L->frozen[v]) ok = pointed_list(L, v, L->adj + L->adj_start[v], L->adj_start[v + 1] - L->adj_start[v]);
+    build_adj(L, false);
+    return ok;
+}
+#endif
+
 // Rebuild after an event: settle non-pointed vertices, complete, choose a drive.
 // Returns 1 when a drive exists (continue), 0 when done, −1 on failure.
 static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
 {
     lk *L = R->L;
+    int prev_a = L->prev_a, prev_b = L->prev_b;
     L->drv_a = L->drv_b = -1;
     for (int guard = 0; guard < 4 * L->n; ++guard) {
         build_adj(L, false);
@@ -688,7 +813,15 @@ static int restructure(lk_run *R, int excl_a, int excl_b, ori_error *error)
                   L->ne, active_count(L));
         return -1;
     }
-    return choose_drive(L) ? 1 : 0;
+    int more = pick_drive(R, prev_a, prev_b) ? 1 : 0;
+#ifndef NDEBUG
+    if (L->n <= 150 && !ppt_ok(L)) { // quadratic: checked up to 150 vertices
+        ori__fail(error, ORI_ERR_INTERNAL, "pseudo-triangulation not planar or not pointed after event %d",
+                  R->M->result.events);
+        return -1;
+    }
+#endif
+    return more;
 }
 
 static int fastest(const lk *L, const lk_sys *S, const ori_v2 *t)
@@ -731,6 +864,25 @@ static double coord_of(const lk *L, const lk_sys *S, const ori_v2 *t, int k)
     return 0.0;
 }
 
+// Adaptive step from the velocity field: the arc length along the unit tangent t over which no
+// edge (drive included) turns by more than ORI_LINKAGE_STEP_TURN radians to first order, and
+// at most 5% of the linkage's size. Far from events the reflex angles need no step limit of
+// their own: each decreases monotonically (the motion is expansive), so an event is a single
+// sign change of its sine at the step's ends, found by root-finding whatever the step.
+#define ORI_LINKAGE_STEP_TURN 0.1
+static double step_cap(const lk *L, const ori_v2 *t)
+{
+    double rate = 0.0;
+    for (int k = 0; k <= L->ne; ++k) {
+        int a = k < L->ne ? L->e[k].a : L->drv_a, b = k < L->ne ? L->e[k].b : L->drv_b;
+        if (a < 0) continue;
+        double len = ori_v2_norm(ori_v2_sub(L->p[a], L->p[b]));
+        rate = fmax(rate, ori_v2_norm(ori_v2_sub(t[a], t[b])) / len);
+    }
+    double cap = 0.05 * L->scale;
+    return rate > 0.0 ? fmin(cap, ORI_LINKAGE_STEP_TURN / rate) : cap;
+}
+
 static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
 {
     lk *L = R->L;
@@ -741,6 +893,24 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
     lk_watch *watch = ori__alloc(((size_t)n + 1) * sizeof *watch);
     ori_status st = ORI_OK;
     push_frame(R, L->p, true, false);
+    // Straight joints of the input (two bars exactly opposite) are straight already: freeze them
+    // (the perturbed predicate would see them slightly bent).
+    for (bool again = true; again && active_count(L) > 2;) {
+        again = false;
+        for (int v = 0; v < n && !again; ++v) {
+            int nb[2], k = 0;
+            for (int e = 0; e < L->ne && k <= 2; ++e)
+                if (L->e[e].a == v || L->e[e].b == v) {
+                    if (k < 2) nb[k] = L->e[e].a == v ? L->e[e].b : L->e[e].a;
+                    k++;
+                }
+            if (L->frozen[v] || k != 2 || ori__orient2d_exact(L->p[nb[0]], L->p[v], L->p[nb[1]]) != 0 ||
+                ori_v2_dot(ori_v2_sub(L->p[nb[0]], L->p[v]), ori_v2_sub(L->p[nb[1]], L->p[v])) >= 0.0)
+                continue;
+            handle_event(R, v, nb[0], nb[1]);
+            again = true;
+        }
+    }
     int rs = restructure(R, -1, -1, error);
     while (rs == 1) {
         if (R->M->result.events > max_events) {
@@ -772,9 +942,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             sys_destroy(&R->S);
             sys_create(L, &R->S, k);
         }
-        double lmin = INFINITY;
-        for (int e = 0; e < L->ne; ++e) lmin = fmin(lmin, L->e[e].len);
-        double hmax = 0.01 * lmin, h = hmax;
+        double h = ev < 0 ? step_cap(L, t0) : 0.0;
         for (int step = 0; ev < 0; ++step) {
             if (step > 1000000) {
                 st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: too many steps between events");
@@ -815,6 +983,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                 ev = nw;
                 break;
             }
+            h = fmin(h, step_cap(L, t0));
             if (!state_at(R, L->p, t0, h, p1)) {
                 h *= 0.5;
                 continue;
@@ -832,12 +1001,13 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
                 memcpy(L->p, p1, (size_t)n * sizeof *p1);
                 R->M->result.steps++;
                 push_frame(R, L->p, false, false);
-                h = fmin(hmax, 1.5 * h);
+                h *= 2.0; // capped by the velocity field at the next step
                 continue;
             }
             // Root-finding (Illinois, with bisection every fourth step) on the sine of the
             // first wedge over the step.
             double lo = 0.0, hi = h, glo = wedge_sine(L->p, watch[first]), ghi = wedge_sine(p1, watch[first]);
+            double g_start = glo, g_end = ghi;
             memcpy(p0, L->p, (size_t)n * sizeof *p0);
             memcpy(pm, p1, (size_t)n * sizeof *pm);
             int side = 0;
@@ -871,13 +1041,22 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
             // the located event: |sin| of the aligned angle at the end of the root-finding
             R->M->result.max_event_residual = fmax(R->M->result.max_event_residual, fabs(gmax));
             memcpy(L->p, pm, (size_t)n * sizeof *pm);
-            // Past the event in exact arithmetic too: the rounded sine may change sign before the
-            // exact orientation does; move on (doubling the overshoot) until the wedge is no longer
-            // reflex for the exact predicate.
+            // Past the event: the flip is decided at the configuration where the aligned angle has
+            // turned ORI_TOL_LINKAGE_FLIP_SINE past π along the old motion (a concrete instance of
+            // the perturbation by the motion's direction: every decision is then exact at a real
+            // configuration, and no new edge can make a sliver thinner than that with an edge at
+            // its end; the aligned neighbours' distance shrinks by O(sine²) ≈ 1e-14 of it).
             {
                 lk_watch wf = watch[w_ev];
-                double extra = fmax(hi - lo, ORI_TOL_LINKAGE_EVENT_REL * L->scale);
-                for (int it = 0; it < 20 && orient(L, wf.v, wf.a, wf.b) <= 0; ++it, extra *= 2.0) {
+                int fa = find_edge(L, wf.v, wf.a), fb = find_edge(L, wf.v, wf.b);
+                bool joint = fa >= 0 && L->e[fa].bar && fb >= 0 && L->e[fb].bar; // straightened: no flip to decide
+                double target = joint ? 0.0 : ORI_TOL_LINKAGE_FLIP_SINE;
+                double slope = (g_end - g_start) / h;
+                double extra = slope > 0.0 ? ORI_TOL_LINKAGE_FLIP_SINE / slope : ORI_TOL_LINKAGE_EVENT_REL * L->scale;
+                extra = fmax(extra, fmax(hi - lo, ORI_TOL_LINKAGE_EVENT_REL * L->scale));
+                if (joint) extra = fmax(hi - lo, ORI_TOL_LINKAGE_EVENT_REL * L->scale);
+                for (int it = 0; it < 40 && !(orient(L, wf.v, wf.a, wf.b) > 0 && wedge_sine(L->p, wf) >= 0.5 * target);
+                     ++it, extra *= 1.5) {
                     if (!state_at(R, p0, t0, hi + extra, p1)) break;
                     memcpy(L->p, p1, (size_t)n * sizeof *p1);
                 }
@@ -888,6 +1067,7 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
         push_frame(R, L->p, true, true);
         // The drive edge is not put back: the motion has moved its ends apart and other vertices
         // may now lie across it; the completion after the event adds whatever edges are valid.
+        L->prev_a = L->drv_a, L->prev_b = L->drv_b;
         L->drv_a = L->drv_b = -1;
         lk_watch w = watch[ev];
         int ea = find_edge(L, w.v, w.a), eb = find_edge(L, w.v, w.b);
@@ -992,28 +1172,6 @@ static ori_status validate(const ori_linkage_def *def, int *order, bool *closed,
     return st;
 }
 
-// The input could not be completed to a pointed pseudo-triangulation: name a vertex lying on the
-// segment between two others (exactly), the degeneracy that prevents it (a hull point between two
-// hull points, or a point on the segment a diagonal would need). Keeps st when there is none.
-static ori_status refuse_collinear(const ori_linkage_def *def, ori_error *error, ori_status st)
-{
-    int n = def->vertex_count;
-    const ori_v2 *p = def->coords;
-    for (int v = 0; v < n; ++v)
-        for (int a = 0; a < n; ++a) {
-            if (a == v) continue;
-            for (int b = a + 1; b < n; ++b) {
-                if (b == v || ori__orient2d_exact(p[a], p[b], p[v]) != 0) continue;
-                // strictly between a and b
-                if (ori_v2_dot(ori_v2_sub(p[a], p[v]), ori_v2_sub(p[b], p[v])) >= 0.0) continue;
-                return ori__fail_at(error, ORI_ERR_DEGENERATE, "vertices_coords", v,
-                                    "lies exactly between vertices %d and %d on their line: such collinear points "
-                                    "are not handled (move the vertex off the line)", a, b);
-            }
-        }
-    return st;
-}
-
 static bool final_shape_ok(const ori_linkage_def *def, const int *order, bool closed, const ori_v2 *p, double scale)
 {
     int n = def->vertex_count;
@@ -1057,27 +1215,21 @@ static void measure(const ori_linkage_def *def, ori_linkage_motion *M)
         if (f == 0) continue;
         const ori_v2 *q = p - n;
         for (int a = 0; a < n; ++a)
-            for (int b = a + 1; b < n; ++b)
-                mind = fmin(mind, ori_v2_norm(ori_v2_sub(p[a], p[b])) - ori_v2_norm(ori_v2_sub(q[a], q[b])));
+            for (int b = a + 1; b < n; ++b) {
+                double px = p[a].x - p[b].x, py = p[a].y - p[b].y, qx = q[a].x - q[b].x, qy = q[a].y - q[b].y;
+                double d = sqrt(px * px + py * py) - sqrt(qx * qx + qy * qy);
+                if (d < mind) mind = d;
+            }
     }
     M->result.max_length_error = maxerr;
     M->result.min_distance_change = isfinite(mind) ? mind : 0.0;
 }
 
-ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **out, ori_error *error)
+// One run of the motion under perturbation variant 0–3 (see ori_linkage_unfold).
+static ori_status attempt(const ori_linkage_def *def, const int *order, bool closed, int variant,
+                          ori_linkage_motion **out, ori_error *error)
 {
-    ORI_ASSERT(def && out && def->internal_value == ORI__DEF_COOKIE);
-    *out = NULL;
-    if (!def->coords || !def->edges || def->vertex_count < 0 || def->edge_count < 0 || def->steps_per_event < 0)
-        return ori__fail(error, ORI_ERR_ARGUMENT, "linkage: missing coordinates or bars");
     int n = def->vertex_count;
-    int *order = ori__alloc(((size_t)n + 1) * sizeof *order);
-    bool closed = false;
-    ori_status st = validate(def, order, &closed, error);
-    if (st != ORI_OK) {
-        ori__free(order);
-        return st;
-    }
     lk L;
     memset(&L, 0, sizeof L);
     L.n = n;
@@ -1087,7 +1239,20 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     L.frozen = ori__calloc((size_t)n, sizeof *L.frozen);
     L.fa = ori__alloc((size_t)n * sizeof(int)), L.fb = ori__alloc((size_t)n * sizeof(int));
     L.forder = ori__alloc((size_t)n * sizeof(int)), L.ft = ori__alloc((size_t)n * sizeof(double));
-    L.drv_a = L.drv_b = -1;
+    L.drv_a = L.drv_b = L.prev_a = L.prev_b = -1;
+    L.sd = ori__alloc((size_t)n * sizeof *L.sd), L.se = ori__alloc((size_t)n * sizeof *L.se);
+    {
+        ori_v2 c = ori_v2_make(0.0, 0.0);
+        for (int v = 0; v < n; ++v) c = ori_v2_add(c, ori_v2_scale(L.p[v], 1.0 / n));
+        for (int v = 0; v < n; ++v) {
+            ori_v2 r = ori_v2_sub(L.p[v], c);
+            ori_v2 cubic = ori_v2_scale(r, ori_v2_dot(r, r));
+            double w = variant == 3 ? (double)(n - v) : (double)v;
+            ori_v2 parabola = ori_v2_make(w, w * w);
+            L.sd[v] = variant == 0 ? cubic : variant == 1 ? ori_v2_scale(cubic, -1.0) : parabola;
+            L.se[v] = variant <= 1 ? parabola : cubic;
+        }
+    }
     double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
     for (int v = 0; v < n; ++v)
         lo_x = fmin(lo_x, L.p[v].x), hi_x = fmax(hi_x, L.p[v].x), lo_y = fmin(lo_y, L.p[v].y), hi_y = fmax(hi_y, L.p[v].y);
@@ -1112,19 +1277,57 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     R.buf = R.per > 0 ? ori__alloc((size_t)R.buf_cap * (size_t)n * sizeof *R.buf) : NULL;
     R.stride = 1;
     int max_events = def->max_events > 0 ? def->max_events : 100 * n + 100;
-    st = run_motion(&R, max_events, error);
-    if (st == ORI_ERR_INTERNAL && M->result.events == 0) st = refuse_collinear(def, error, st);
+    ori_status st = run_motion(&R, max_events, error);
     if (st == ORI_OK) {
         const ori_v2 *last = M->frames + (size_t)(M->frame_count - 1) * n;
         M->result.final_ok = final_shape_ok(def, order, closed, last, L.scale);
-        M->result.steps = M->result.steps;
-
         M->result.frames = M->frame_count;
         measure(def, M);
+        // the motion's own guarantees, checked over the kept frames: a motion that breaks them
+        // (a degenerate input the perturbation could not steer, see docs/unfolding.md) is a failure
+        if (M->result.max_length_error > ORI_TOL_LINKAGE_CHECK_REL)
+            st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: a bar length drifted by %.3g relative",
+                           M->result.max_length_error);
+        else if (M->result.min_distance_change < -ORI_TOL_LINKAGE_CHECK_REL * L.scale)
+            st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: a distance decreased by %.3g (not expansive)",
+                           -M->result.min_distance_change);
     }
     ori__free(R.rhs), ori__free(R.sol), ori__free(R.w1), ori__free(R.w2), ori__free(R.buf);
     ori__free(L.p), ori__free(L.frozen), ori__free(L.fa), ori__free(L.fb), ori__free(L.forder), ori__free(L.ft);
-    ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(order);
+    ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(L.sd), ori__free(L.se);
+    if (st != ORI_OK) {
+        ori_linkage_motion_destroy(M);
+        return st;
+    }
+    *out = M;
+    return ORI_OK;
+}
+
+ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **out, ori_error *error)
+{
+    ORI_ASSERT(def && out && def->internal_value == ORI__DEF_COOKIE);
+    *out = NULL;
+    if (!def->coords || !def->edges || def->vertex_count < 0 || def->edge_count < 0 || def->steps_per_event < 0)
+        return ori__fail(error, ORI_ERR_ARGUMENT, "linkage: missing coordinates or bars");
+    int n = def->vertex_count;
+    int *order = ori__alloc(((size_t)n + 1) * sizeof *order);
+    bool closed = false;
+    ori_status st = validate(def, order, &closed, error);
+    if (st != ORI_OK) {
+        ori__free(order);
+        return st;
+    }
+    // The perturbation is fixed by the input. Where exact collinearities force a flat
+    // pseudo-triangle, the motion may not follow the side it chose and fails (detected: an
+    // internal error or a broken guarantee); then other perturbations are tried: the cubic
+    // expansion reversed, then the parabola first.
+    ori_linkage_motion *M = NULL;
+    for (int variant = 0; variant < 4; ++variant) {
+        st = attempt(def, order, closed, variant, &M, error);
+        bool cycle = st == ORI_ERR_LIMIT && def->max_events == 0; // the automatic limit: flips cycling
+        if (st != ORI_ERR_NOT_CONVERGED && st != ORI_ERR_INTERNAL && !cycle) break;
+    }
+    ori__free(order);
     if (st != ORI_OK) {
         ori_linkage_motion_destroy(M);
         return st;

@@ -12,5 +12,10 @@ int ori__orient2d_exact(ori_v2 a, ori_v2 b, ori_v2 c);
 bool ori__segments_intersect(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 d);
 // True when the segments cross at a single point interior to both (exactly).
 bool ori__segments_cross_properly(ori_v2 a, ori_v2 b, ori_v2 c, ori_v2 d);
+// Sign of the orientation of the points p_k + ε d[k] + ε² e[k] (p = a, b, c; d and e hold three
+// directions each) for an infinitesimal ε > 0: the lowest non-zero coefficient of the polynomial
+// in ε, each exact (Simulation of Simplicity with the given perturbation). Zero only when every
+// coefficient vanishes.
+int ori__orient2d_perturbed(ori_v2 a, ori_v2 b, ori_v2 c, const ori_v2 *d, const ori_v2 *e);
 
 #endif
