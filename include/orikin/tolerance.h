@@ -453,5 +453,12 @@
 /// Closed-form 4R: |c| of the input–output equation within this of 1 is a double root (acos(c)
 /// ≈ √(2(1 − |c|)) magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad). Unitless.
 #define ORI_TOL_KIN_DOUBLE_ROOT 1e-12
+/// Developing a folded form without cuts (ori_unfold_develop): an interior vertex is flat when
+/// its face angles sum to 2π within ORI_TOL_DEVELOP_ANGLE_RAD (radians); the two laid-out copies
+/// of every edge off the layout tree meet within ORI_TOL_DEVELOP_CLOSE_REL × the diagonal. Loose
+/// enough for coordinates rounded to 6 digits (FOLD files of other tools: defects up to ~1e-6),
+/// far above the ~1e-15 of exact inputs.
+#define ORI_TOL_DEVELOP_ANGLE_RAD 1e-5
+#define ORI_TOL_DEVELOP_CLOSE_REL 1e-5
 
 #endif

@@ -18,13 +18,6 @@
 #include "unfold_internal.h"
 
 
-struct ori_mesh {
-    int nv, nf;
-    ori_v3 *v;
-    int *fstart, *fv;  // merged faces (counter-clockwise seen from outside)
-    int *src_start, *src; // input faces of each merged face
-    double diag;
-};
 
 ori_unfold_def ori_default_unfold_def(void)
 {
@@ -439,24 +432,7 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
 
 // --- the face graph and nets ---------------------------------------------------------------
 
-typedef struct fedge {
-    int f, g;   // faces (f holds a→b, g holds b→a); g = −1 on the boundary
-    int fi, gi; // corner index of a in f, of b in g
-    int a, b;   // 3D vertices
-    double angle; // FOLD fold angle of the crease (radians): negative for convex edges (mountain)
-} fedge;
 
-typedef struct net_ctx {
-    const ori_mesh *m;
-    int ne;
-    fedge *e;
-    int *fe_start, *fe; // face → its edge indices
-    ori_v2 *local;      // per face corner: coordinates in the face's own plane frame
-    ori_v3 *normal;
-    // work
-    ori_v2 *pos;        // placed corner positions (per face corner)
-    uint64_t rng;
-} net_ctx;
 
 static uint64_t rnd(net_ctx *c)
 {
@@ -465,9 +441,9 @@ static uint64_t rnd(net_ctx *c)
 }
 static double rnd01(net_ctx *c) { return (double)(rnd(c) >> 11) / 9007199254740992.0; }
 
-static int fsize(const ori_mesh *m, int f) { return m->fstart[f + 1] - m->fstart[f]; }
+int ori__net_fsize(const ori_mesh *m, int f) { return m->fstart[f + 1] - m->fstart[f]; }
 
-static void ctx_init(net_ctx *c, const ori_mesh *m)
+void ori__net_ctx_init(net_ctx *c, const ori_mesh *m)
 {
     memset(c, 0, sizeof *c);
     c->m = m;
@@ -479,7 +455,7 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
             h[q++] = (half){m->fv[i], m->fv[i + 1 < m->fstart[f + 1] ? i + 1 : m->fstart[f]], f, i - m->fstart[f]};
     pair_halves(h, nh, twin, "faces", NULL);
     c->normal = ori__alloc(((size_t)m->nf + 1) * sizeof *c->normal);
-    for (int f = 0; f < m->nf; ++f) c->normal[f] = ori_v3_normalize(face_normal(m->v, m->fv + m->fstart[f], fsize(m, f)));
+    for (int f = 0; f < m->nf; ++f) c->normal[f] = ori_v3_normalize(face_normal(m->v, m->fv + m->fstart[f], ori__net_fsize(m, f)));
     c->e = ori__alloc(((size_t)nh + 1) * sizeof *c->e);
     for (int i = 0; i < nh; ++i) {
         int j = twin[i];
@@ -490,7 +466,7 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
             double mag = atan2(ori_v3_norm(ori_v3_cross(nf, ng)), ori_v3_dot(nf, ng));
             // convex when g's centroid lies below f's plane
             ori_v3 cg = {0, 0, 0};
-            int k = fsize(m, x.g);
+            int k = ori__net_fsize(m, x.g);
             for (int t = 0; t < k; ++t) cg = ori_v3_add(cg, m->v[m->fv[m->fstart[x.g] + t]]);
             cg = ori_v3_scale(cg, 1.0 / k);
             bool convex = ori_v3_dot(ori_v3_sub(cg, m->v[x.a]), nf) < 0.0;
@@ -518,7 +494,7 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
         const int *fc = m->fv + m->fstart[f];
         ori_v3 o = m->v[fc[0]], u = ori_v3_normalize(ori_v3_sub(m->v[fc[1]], o));
         ori_v3 w = ori_v3_cross(c->normal[f], u);
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             ori_v3 d = ori_v3_sub(m->v[fc[i]], o);
             c->local[m->fstart[f] + i] = ori_v2_make(ori_v3_dot(d, u), ori_v3_dot(d, w));
         }
@@ -527,18 +503,18 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
     ori__free(h), ori__free(twin);
 }
 
-static void ctx_free(net_ctx *c)
+void ori__net_ctx_free(net_ctx *c)
 {
     ori__free(c->e), ori__free(c->fe_start), ori__free(c->fe), ori__free(c->local), ori__free(c->pos), ori__free(c->normal);
 }
 
 // Lay out the faces along the tree (in_tree[k] for each face edge) from root: each face's
 // corners in c->pos. order receives the faces in breadth-first order, parent_edge per face.
-static int layout(net_ctx *c, const bool *in_tree, int root, int *order, int *parent_edge, bool *placed)
+int ori__net_layout(net_ctx *c, const bool *in_tree, int root, int *order, int *parent_edge, bool *placed)
 {
     const ori_mesh *m = c->m;
     for (int f = 0; f < m->nf; ++f) placed[f] = false, parent_edge[f] = -1;
-    for (int i = 0; i < fsize(m, root); ++i) c->pos[m->fstart[root] + i] = c->local[m->fstart[root] + i];
+    for (int i = 0; i < ori__net_fsize(m, root); ++i) c->pos[m->fstart[root] + i] = c->local[m->fstart[root] + i];
     int head = 0, tail = 0;
     order[tail++] = root;
     placed[root] = true;
@@ -552,7 +528,7 @@ static int layout(net_ctx *c, const bool *in_tree, int root, int *order, int *pa
             if (g < 0 || placed[g]) continue;
             // shared vertices a, b: their placed positions in f, local positions in g
             int fi = x->f == f ? x->fi : x->gi, gi = x->f == f ? x->gi : x->fi;
-            int kf = fsize(m, f), kg = fsize(m, g);
+            int kf = ori__net_fsize(m, f), kg = ori__net_fsize(m, g);
             ori_v2 P0 = c->pos[m->fstart[f] + fi], P1 = c->pos[m->fstart[f] + (fi + 1) % kf];
             // in g the edge runs the other way: corner gi is P1's vertex, gi + 1 is P0's
             ori_v2 L1 = c->local[m->fstart[g] + gi], L0 = c->local[m->fstart[g] + (gi + 1) % kg];
@@ -633,7 +609,7 @@ static int cmp_box(const void *x, const void *y)
     return a < b ? -1 : a > b;
 }
 
-static bool faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, const int *tri, double tol)
+bool ori__net_faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, const int *tri, double tol)
 {
     const ori_mesh *m = c->m;
     for (int s = tri_start[f]; s < tri_start[f + 1]; ++s)
@@ -645,24 +621,24 @@ static bool faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, 
     return false;
 }
 
-static void build_tris(const net_ctx *c, int *tri_start, int *tri)
+void ori__net_build_tris(const net_ctx *c, int *tri_start, int *tri)
 {
     const ori_mesh *m = c->m;
     tri_start[0] = 0;
     for (int f = 0; f < m->nf; ++f) {
-        int n = triangulate(c->local + m->fstart[f], fsize(m, f), tri + 3 * tri_start[f]);
+        int n = triangulate(c->local + m->fstart[f], ori__net_fsize(m, f), tri + 3 * tri_start[f]);
         tri_start[f + 1] = tri_start[f] + n;
     }
 }
 
 // Overlapping face pairs among faces with mask[f] (NULL = all), counted (stop after limit).
-static int count_overlaps(const net_ctx *c, const int *tri_start, const int *tri, const int *piece, int limit)
+int ori__net_count_overlaps(const net_ctx *c, const int *tri_start, const int *tri, const int *piece, int limit)
 {
     const ori_mesh *m = c->m;
     face_box *b = ori__alloc(((size_t)m->nf + 1) * sizeof *b);
     for (int f = 0; f < m->nf; ++f) {
         face_box x = {INFINITY, -INFINITY, INFINITY, -INFINITY, f};
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             ori_v2 p = c->pos[m->fstart[f] + i];
             x.x0 = fmin(x.x0, p.x), x.x1 = fmax(x.x1, p.x), x.y0 = fmin(x.y0, p.y), x.y1 = fmax(x.y1, p.y);
         }
@@ -675,7 +651,7 @@ static int count_overlaps(const net_ctx *c, const int *tri_start, const int *tri
         for (int j = i + 1; j < m->nf && b[j].x0 < b[i].x1 - tol && count < limit; ++j) {
             if (b[j].y0 >= b[i].y1 - tol || b[i].y0 >= b[j].y1 - tol) continue;
             if (piece && piece[b[i].f] != piece[b[j].f]) continue;
-            if (faces_overlap(c, b[i].f, b[j].f, tri_start, tri, tol)) count++;
+            if (ori__net_faces_overlap(c, b[i].f, b[j].f, tri_start, tri, tol)) count++;
         }
     ori__free(b);
     return count;
@@ -737,14 +713,6 @@ static void steepest_weights(const net_ctx *c, ori_v3 d, double *w)
 
 // --- the net as a crease pattern --------------------------------------------------------------
 
-struct ori_unfold_net {
-    ori_unfold_result result;
-    ori_pattern *pattern;
-    int *src_start, *src; // per net face
-    int *glue;            // per net edge
-    int *vertex3d;        // per net vertex: the 3D vertex it folds onto
-    ori_v3 *shape;        // per net vertex: its 3D position
-};
 
 static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2 *offset)
 {
@@ -752,7 +720,7 @@ static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2
     double *x0 = ori__alloc(((size_t)pieces + 1) * 4 * sizeof(double));
     for (int q = 0; q < pieces; ++q) x0[4 * q] = x0[4 * q + 2] = INFINITY, x0[4 * q + 1] = x0[4 * q + 3] = -INFINITY;
     for (int f = 0; f < m->nf; ++f)
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             ori_v2 p = c->pos[m->fstart[f] + i];
             double *b = x0 + 4 * piece[f];
             b[0] = fmin(b[0], p.x), b[1] = fmax(b[1], p.x), b[2] = fmin(b[2], p.y), b[3] = fmax(b[3], p.y);
@@ -765,7 +733,7 @@ static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2
     ori__free(x0);
 }
 
-static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int *piece, int pieces)
+ori_unfold_net *ori__net_make(const net_ctx *c, const bool *in_tree, const int *piece, int pieces)
 {
     const ori_mesh *m = c->m;
     int nh = m->fstart[m->nf];
@@ -775,7 +743,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     for (int k = 0; k < c->ne; ++k) {
         if (!in_tree[k]) continue;
         const fedge *x = &c->e[k];
-        int kf = fsize(m, x->f), kg = fsize(m, x->g);
+        int kf = ori__net_fsize(m, x->f), kg = ori__net_fsize(m, x->g);
         int fa = m->fstart[x->f] + x->fi, fb = m->fstart[x->f] + (x->fi + 1) % kf;
         int gb = m->fstart[x->g] + x->gi, ga = m->fstart[x->g] + (x->gi + 1) % kg;
         int r1 = ori__uf_root(uf, fa), r2 = ori__uf_root(uf, ga);
@@ -794,7 +762,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     net->shape = ori__alloc(((size_t)nh + 1) * sizeof(ori_v3));
     int nv = 0;
     for (int f = 0; f < m->nf; ++f)
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             int r = ori__uf_root(uf, m->fstart[f] + i);
             if (vid[r] < 0) {
                 ori_v2 p = ori_v2_add(c->pos[m->fstart[f] + i], off[piece[f]]);
@@ -808,7 +776,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     net->glue = ori__alloc(((size_t)c->ne + 1) * 2 * sizeof(int));
     for (int k = 0; k < c->ne; ++k) {
         const fedge *x = &c->e[k];
-        int kf = fsize(m, x->f);
+        int kf = ori__net_fsize(m, x->f);
         int fa = vid[ori__uf_root(uf, m->fstart[x->f] + x->fi)], fb = vid[ori__uf_root(uf, m->fstart[x->f] + (x->fi + 1) % kf)];
         if (in_tree[k]) {
             ori_assignment as = x->angle < 0.0 ? ORI_ASSIGN_MOUNTAIN : x->angle > 0.0 ? ORI_ASSIGN_VALLEY : ORI_ASSIGN_FLAT;
@@ -820,7 +788,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
             edge_of[2 * k] = e1;
             net->glue[e1] = -1;
             if (x->g >= 0) {
-                int kg = fsize(m, x->g);
+                int kg = ori__net_fsize(m, x->g);
                 int gb = vid[ori__uf_root(uf, m->fstart[x->g] + x->gi)], ga = vid[ori__uf_root(uf, m->fstart[x->g] + (x->gi + 1) % kg)];
                 int e2 = ori_pattern_add_edge(net->pattern, gb, ga, ORI_ASSIGN_BOUNDARY, 0.0);
                 edge_of[2 * k + 1] = e2;
@@ -834,7 +802,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     memcpy(net->src, m->src, (size_t)m->src_start[m->nf] * sizeof(int));
     int buf[1024];
     for (int f = 0; f < m->nf; ++f) {
-        int k = fsize(m, f);
+        int k = ori__net_fsize(m, f);
         int *b = k <= 1024 ? buf : ori__alloc((size_t)k * sizeof *b);
         for (int i = 0; i < k; ++i) b[i] = vid[ori__uf_root(uf, m->fstart[f] + i)];
         ori_pattern_add_face(net->pattern, b, k);
@@ -973,14 +941,14 @@ static char *canonical(const net_ctx *c, const bool *in_tree)
             const fedge *x = &c->e[k];
             int f = side ? x->g : x->f, i = side ? x->gi : x->fi;
             if (f < 0) continue;
-            ori_v2 P = c->pos[m->fstart[f] + i], Q = c->pos[m->fstart[f] + (i + 1) % fsize(m, f)];
+            ori_v2 P = c->pos[m->fstart[f] + i], Q = c->pos[m->fstart[f] + (i + 1) % ori__net_fsize(m, f)];
             for (int dir = 0; dir < 2; ++dir)
                 for (int mir = 0; mir < 2; ++mir) {
                     ori_v2 o = dir ? Q : P, t = ori_v2_normalize(ori_v2_sub(dir ? P : Q, o));
                     int ns = 0;
                     for (int g = 0; g < m->nf; ++g)
-                        for (int j = 0; j < fsize(m, g); ++j) {
-                            ori_v2 a = ori_v2_sub(c->pos[m->fstart[g] + j], o), b = ori_v2_sub(c->pos[m->fstart[g] + (j + 1) % fsize(m, g)], o);
+                        for (int j = 0; j < ori__net_fsize(m, g); ++j) {
+                            ori_v2 a = ori_v2_sub(c->pos[m->fstart[g] + j], o), b = ori_v2_sub(c->pos[m->fstart[g] + (j + 1) % ori__net_fsize(m, g)], o);
                             double ax = a.x * t.x + a.y * t.y, ay = -a.x * t.y + a.y * t.x;
                             double bx = b.x * t.x + b.y * t.y, by = -b.x * t.y + b.y * t.x;
                             if (mir) ay = -ay, by = -by;
@@ -1023,8 +991,8 @@ typedef struct enum_ctx {
 static void enum_visit(enum_ctx *E)
 {
     E->trees++;
-    layout(E->c, E->in_tree, 0, E->order, E->parent_edge, E->placed);
-    if (count_overlaps(E->c, E->tri_start, E->tri, NULL, 1) > 0) return;
+    ori__net_layout(E->c, E->in_tree, 0, E->order, E->parent_edge, E->placed);
+    if (ori__net_count_overlaps(E->c, E->tri_start, E->tri, NULL, 1) > 0) return;
     E->good++;
     char *s = canonical(E->c, E->in_tree);
     for (int i = 0; i < E->nclasses; ++i)
@@ -1037,7 +1005,7 @@ static void enum_visit(enum_ctx *E)
 
 // Enumerate spanning trees: decide edges in order (take / skip), pruning cycles and skips that
 // disconnect the rest.
-static bool connected_without(const net_ctx *c, const bool *decided_out, int nf)
+bool ori__net_connected_without(const net_ctx *c, const bool *decided_out, int nf)
 {
     int *uf = ori__alloc(((size_t)nf + 1) * sizeof *uf);
     for (int f = 0; f < nf; ++f) uf[f] = f;
@@ -1087,7 +1055,7 @@ static void enum_rec(enum_ctx *E, int k, int taken, bool *out)
         E->in_tree[k] = false;
     }
     out[k] = true;
-    if (connected_without(E->c, out, nf)) enum_rec(E, k + 1, taken, out);
+    if (ori__net_connected_without(E->c, out, nf)) enum_rec(E, k + 1, taken, out);
     out[k] = false;
 }
 
@@ -1106,21 +1074,21 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     *out = NULL;
     if (def->tries < 1) return ori__fail(error, ORI_ERR_RANGE, "tries must be at least 1");
     net_ctx c;
-    ctx_init(&c, m);
+    ori__net_ctx_init(&c, m);
     c.rng ^= (uint64_t)def->seed * 0x2545F4914F6CDD1DULL;
     if (!c.rng) c.rng = 1;
     int nf = m->nf;
     // connected?
     bool *none = ori__calloc((size_t)c.ne + 1, 1);
-    if (!connected_without(&c, none, nf)) {
+    if (!ori__net_connected_without(&c, none, nf)) {
         ori__free(none);
-        ctx_free(&c);
+        ori__net_ctx_free(&c);
         return ori__fail(error, ORI_ERR_TOPOLOGY, "the surface is not connected");
     }
     ori__free(none);
     int *tri_start = ori__alloc(((size_t)nf + 2) * sizeof *tri_start);
     int *tri = ori__alloc(((size_t)m->fstart[nf] + 1) * 3 * sizeof *tri);
-    build_tris(&c, tri_start, tri);
+    ori__net_build_tris(&c, tri_start, tri);
     bool *in_tree = ori__alloc(((size_t)c.ne + 1) * sizeof *in_tree), *best_tree = ori__alloc(((size_t)c.ne + 1) * sizeof *best_tree);
     double *w = ori__alloc(((size_t)c.ne + 1) * sizeof *w);
     int *order = ori__alloc(((size_t)nf + 1) * sizeof *order), *parent_edge = ori__alloc(((size_t)nf + 1) * sizeof *parent_edge);
@@ -1140,8 +1108,8 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         }
         mst(&c, w, in_tree);
         if (!tree_spans(&c, in_tree)) continue;
-        layout(&c, in_tree, 0, order, parent_edge, placed);
-        int ov = count_overlaps(&c, tri_start, tri, NULL, best_overlaps < 0 ? nf * nf : best_overlaps);
+        ori__net_layout(&c, in_tree, 0, order, parent_edge, placed);
+        int ov = ori__net_count_overlaps(&c, tri_start, tri, NULL, best_overlaps < 0 ? nf * nf : best_overlaps);
         if (best_overlaps < 0 || ov < best_overlaps) {
             best_overlaps = ov, best_try = t;
             memcpy(best_tree, in_tree, (size_t)c.ne * sizeof *in_tree);
@@ -1156,10 +1124,12 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     res.distinct_nets = -1;
     res.max_refold_error = -1.0;
     res.fold_order = ORI_FOLD_ORDER_NONE;
+    res.interior_vertices = -1;
+    res.max_angle_defect_deg = res.max_length_error = res.max_closing_error = res.fold_residual = -1.0;
     // split the best tree into pieces: faces in breadth-first order join their parent's piece
     // unless they overlap a face already there
     int *piece = ori__alloc(((size_t)nf + 1) * sizeof *piece);
-    layout(&c, best_tree, 0, order, parent_edge, placed);
+    ori__net_layout(&c, best_tree, 0, order, parent_edge, placed);
     int pieces = 1;
     if (best_overlaps == 0) {
         for (int f = 0; f < nf; ++f) piece[f] = 0;
@@ -1171,7 +1141,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         for (int f = 0; f < nf; ++f) {
             double *b = box + 4 * f;
             b[0] = b[2] = INFINITY, b[1] = b[3] = -INFINITY;
-            for (int q = 0; q < fsize(m, f); ++q) {
+            for (int q = 0; q < ori__net_fsize(m, f); ++q) {
                 ori_v2 pq = c.pos[m->fstart[f] + q];
                 b[0] = fmin(b[0], pq.x), b[1] = fmax(b[1], pq.x), b[2] = fmin(b[2], pq.y), b[3] = fmax(b[3], pq.y);
             }
@@ -1187,7 +1157,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
                 if (piece[g] != pp) continue;
                 const double *bf = box + 4 * f, *bg = box + 4 * g;
                 if (bf[0] >= bg[1] - tol || bg[0] >= bf[1] - tol || bf[2] >= bg[3] - tol || bg[2] >= bf[3] - tol) continue;
-                clash = faces_overlap(&c, f, g, tri_start, tri, tol);
+                clash = ori__net_faces_overlap(&c, f, g, tri_start, tri, tol);
             }
             if (clash) {
                 best_tree[k] = false;
@@ -1208,9 +1178,10 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         ori__free(ren);
     }
     res.pieces = pieces;
-    res.overlaps = count_overlaps(&c, tri_start, tri, piece, nf * nf);
+    for (int k = 0; k < c.ne; ++k) res.cuts += c.e[k].g >= 0 && !best_tree[k];
+    res.overlaps = ori__net_count_overlaps(&c, tri_start, tri, piece, nf * nf);
     res.best_try = best_try;
-    ori_unfold_net *net = make_net(&c, best_tree, piece, pieces);
+    ori_unfold_net *net = ori__net_make(&c, best_tree, piece, pieces);
     if (pieces == 1) {
         bool coll = false;
         res.max_refold_error = refold_error(net, m->diag, &coll, &res.fold_order);
@@ -1244,7 +1215,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     net->result = res;
     ori__free(piece), ori__free(tri_start), ori__free(tri), ori__free(in_tree), ori__free(best_tree), ori__free(w);
     ori__free(order), ori__free(parent_edge), ori__free(placed);
-    ctx_free(&c);
+    ori__net_ctx_free(&c);
     *out = net;
     return ORI_OK;
 }
@@ -1269,3 +1240,4 @@ int ori_unfold_net_face_source(const ori_unfold_net *net, int face, int *out, in
 
 int ori_unfold_net_glue(const ori_unfold_net *net, int edge) { return net->glue[edge]; }
 int ori_unfold_net_vertex_source(const ori_unfold_net *net, int vertex) { return net->vertex3d[vertex]; }
+ori_v3 ori_unfold_net_vertex_position(const ori_unfold_net *net, int vertex) { return net->shape[vertex]; }
