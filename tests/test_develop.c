@@ -368,3 +368,65 @@ Test(develop, shared_folded_forms)
     cr_assert_leq(r.max_angle_defect_deg, 0.2);
     cr_assert_leq(r.max_refold_error, 1e-3);
 }
+
+// orikin export's two-sided OBJ of a folded Miura-ori (tests/data/unfold/miura-folded.obj: crease
+// 4 of tests/data/miura-4x4.fold driven to 60°, exact coordinates) develops back onto that file's
+// crease pattern with its assignments; `orikin unfold -o` keeps the folded form as frame 1 and the
+// result folds with `orikin fold`.
+Test(develop, exported_obj_back_to_its_file)
+{
+    ori_mesh *m = NULL;
+    ori_error err;
+    cr_assert_eq(ori_unfold_load_mesh(test_repo_path("tests/data/unfold/miura-folded.obj"), &m, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_unfold_mesh_face_count(m), 16, "the back side is dropped, the front's triangles merged into quads");
+    ori_unfold_net *net = NULL;
+    cr_assert_eq(ori_unfold_develop(m, 0.0, &net, &err), ORI_OK, "%s", err.message);
+    ori_fold *doc = NULL;
+    ori_pattern *orig = NULL;
+    cr_assert_eq(ori_fold_load_file(test_repo_path("tests/data/miura-4x4.fold"), &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &orig, &err), ORI_OK);
+    double d = cp_distance(orig, net);
+    cr_assert_leq(d, 1e-12, "crease pattern %g off the file's", d);
+    const ori_pattern *cp = ori_unfold_net_pattern(net);
+    for (int e = 0; e < ori_pattern_edge_count(cp); ++e) {
+        ori_edge x = ori_pattern_edge(cp, e);
+        int a = ori_unfold_net_vertex_source(net, x.v[0]), b = ori_unfold_net_vertex_source(net, x.v[1]), hits = 0;
+        for (int k = 0; k < ori_pattern_edge_count(orig); ++k) {
+            ori_edge y = ori_pattern_edge(orig, k);
+            if ((y.v[0] == a && y.v[1] == b) || (y.v[0] == b && y.v[1] == a)) {
+                cr_assert_eq(x.assignment, y.assignment, "edge %d–%d", a, b);
+                hits++;
+            }
+        }
+        cr_assert_eq(hits, 1);
+    }
+    ori_pattern_destroy(orig);
+    ori_fold_destroy(doc);
+    ori_unfold_net_destroy(net);
+    ori_unfold_mesh_destroy(m);
+
+    char *dir = test_tmpdir(), args[1024], *out = NULL;
+    snprintf(args, sizeof args, "unfold tests/data/unfold/miura-folded.obj -o %s/cp.fold", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "%s/cp.fold", dir);
+    cr_assert_eq(ori_fold_load_file(args, &doc, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fold_frame_count(doc), 2);
+    cr_assert_not(ori_fold_frame_is_folded_form(doc, 0));
+    cr_assert(ori_fold_frame_is_folded_form(doc, 1));
+    ori_pattern *f0 = NULL, *f1 = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &f0, &err), ORI_OK, "%s", err.message);
+    int drive = -1;
+    for (int e = 0; e < ori_pattern_edge_count(f0) && drive < 0; ++e)
+        if (ori_pattern_edge(f0, e).assignment == ORI_ASSIGN_VALLEY) drive = e;
+    cr_assert_geq(drive, 0);
+    ori_pattern_destroy(f0);
+    cr_assert_eq(ori_fold_get_pattern(doc, 1, NULL, &f1, &err), ORI_OK, "%s", err.message);
+    cr_assert(ori_pattern_is_3d(f1));
+    ori_pattern_destroy(f1);
+    ori_fold_destroy(doc);
+    snprintf(args, sizeof args, "fold %s/cp.fold --fix 0 --drive %d --to 30 --json", dir, drive);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
+}

@@ -387,6 +387,63 @@ static ori_status read_stl(const char *data, size_t size, ori_v3 **pv, int *pnv,
     return ORI_OK;
 }
 
+// A two-sided sheet (every face also listed with its cycle reversed, as orikin export writes a
+// posed sheet's back) is read as its front: a face that reverses an earlier face is dropped.
+static _Thread_local const int *g_key;
+static _Thread_local const int *g_key_start;
+static int cmp_face_key(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    int na = g_key_start[a + 1] - g_key_start[a], nb = g_key_start[b + 1] - g_key_start[b];
+    if (na != nb) return na - nb;
+    for (int i = 0; i < na; ++i)
+        if (g_key[g_key_start[a] + i] != g_key[g_key_start[b] + i]) return g_key[g_key_start[a] + i] - g_key[g_key_start[b] + i];
+    return a - b;
+}
+static int cmp_int(const void *x, const void *y) { return *(const int *)x - *(const int *)y; }
+
+static bool reverses(const int *a, const int *b, int k)
+{
+    int p = -1;
+    for (int j = 0; j < k && p < 0; ++j)
+        if (b[j] == a[0]) p = j;
+    if (p < 0) return false;
+    for (int j = 0; j < k; ++j)
+        if (b[((p - j) % k + k) % k] != a[j]) return false;
+    return true;
+}
+
+static void drop_back_faces(int *fs, int *fv, int *pnf)
+{
+    int nf = *pnf;
+    if (nf < 2) return;
+    int *key = ori__alloc(((size_t)fs[nf] + 1) * sizeof *key), *idx = ori__alloc((size_t)nf * sizeof *idx);
+    bool *drop = ori__calloc((size_t)nf, sizeof *drop);
+    memcpy(key, fv, (size_t)fs[nf] * sizeof *key);
+    for (int f = 0; f < nf; ++f) {
+        qsort(key + fs[f], (size_t)(fs[f + 1] - fs[f]), sizeof *key, cmp_int);
+        idx[f] = f;
+    }
+    g_key = key, g_key_start = fs;
+    qsort(idx, (size_t)nf, sizeof *idx, cmp_face_key);
+    for (int i = 1; i < nf; ++i) {
+        int a = idx[i - 1], b = idx[i], k = fs[a + 1] - fs[a];
+        if (k != fs[b + 1] - fs[b] || memcmp(key + fs[a], key + fs[b], (size_t)k * sizeof *key) != 0) continue;
+        if (!drop[a] && reverses(fv + fs[a], fv + fs[b], k)) drop[b] = true; // a < b: the later one goes
+    }
+    int m = 0, q = 0;
+    for (int f = 0; f < nf; ++f) {
+        if (drop[f]) continue;
+        int s0 = fs[f], s1 = fs[f + 1];
+        fs[m] = q;
+        for (int i = s0; i < s1; ++i) fv[q++] = fv[i];
+        m++;
+    }
+    fs[m] = q;
+    *pnf = m;
+    ori__free(key), ori__free(idx), ori__free(drop);
+}
+
 ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *error)
 {
     ORI_ASSERT(path && out);
@@ -424,6 +481,7 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
         else st = ori__fail(error, ORI_ERR_UNSUPPORTED, "unknown shape format (expected .obj, .stl or .fold)");
         ori_buffer_free(data);
         if (st != ORI_OK) return st;
+        drop_back_faces(fs, fv, &nf);
     }
     st = ori_unfold_mesh_create(v, nv, fs, fv, nf, out, error);
     ori__free(v), ori__free(fs), ori__free(fv);
