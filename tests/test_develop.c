@@ -331,6 +331,27 @@ static ori_unfold_result develop_shared(const char *rel, double tol_rad, int cre
         for (int k = 0; k < 2; ++k) cr_assert_float_eq(ori_pattern_vertex(cp, x.v[k]).z, 0.0, 0.0, "flat");
     }
     cr_assert_eq(n, creases, "%s: %d creases", rel, n);
+    // the file's own M/V (where it has them) agree with the signs from the geometry (flat-folded
+    // ±180° creases take theirs from the file)
+    ori_fold *doc = NULL;
+    ori_pattern *file = NULL;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &file, &err), ORI_OK);
+    int compared = 0;
+    for (int e = 0; e < ori_pattern_edge_count(cp); ++e) {
+        ori_edge x = ori_pattern_edge(cp, e);
+        int a = ori_unfold_net_vertex_source(net, x.v[0]), b = ori_unfold_net_vertex_source(net, x.v[1]);
+        for (int k = 0; k < ori_pattern_edge_count(file); ++k) {
+            ori_edge y = ori_pattern_edge(file, k);
+            if (!((y.v[0] == a && y.v[1] == b) || (y.v[0] == b && y.v[1] == a))) continue;
+            if (y.assignment != ORI_ASSIGN_MOUNTAIN && y.assignment != ORI_ASSIGN_VALLEY) continue;
+            cr_assert_eq(x.assignment, y.assignment, "%s: edge %d–%d", rel, a, b);
+            compared++;
+        }
+    }
+    cr_log_info("%s: %d creases' M/V equal the file's", rel, compared);
+    ori_pattern_destroy(file);
+    ori_fold_destroy(doc);
     cr_log_info("%s: %d faces, %d creases, %d interior vertices, defect %.3g°, length %.3g, closing %.3g, residual %.3g, "
                 "refold %.3g",
                 rel, r.faces, n, r.interior_vertices, r.max_angle_defect_deg, r.max_length_error, r.max_closing_error,

@@ -460,5 +460,9 @@
 /// far above the ~1e-15 of exact inputs.
 #define ORI_TOL_DEVELOP_ANGLE_RAD 1e-5
 #define ORI_TOL_DEVELOP_CLOSE_REL 1e-5
+/// A crease of a shape whose faces' normals are within this of opposite (radians) is flat-folded:
+/// the geometry cannot tell mountain from valley, so a FOLD input's assignment (or the sign of its
+/// edges_foldAngle) gives the sign of its fold angle (nets and developed crease patterns alike).
+#define ORI_TOL_UNFOLD_FLAT_FOLD_RAD 1e-6
 
 #endif

@@ -34,6 +34,7 @@ void ori_unfold_mesh_destroy(ori_mesh *m)
 {
     if (!m) return;
     ori__free(m->v), ori__free(m->fstart), ori__free(m->fv), ori__free(m->src_start), ori__free(m->src);
+    ori__free(m->hint);
     ori__free(m);
 }
 
@@ -387,6 +388,21 @@ static ori_status read_stl(const char *data, size_t size, ori_v3 **pv, int *pnv,
     return ORI_OK;
 }
 
+static int cmp_hint(const void *x, const void *y)
+{
+    const int *a = x, *b = y;
+    return a[0] != b[0] ? (a[0] > b[0]) - (a[0] < b[0]) : (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+// The input's M (−1) or V (+1) of the edge a–b, 0 when none is known.
+static int flat_fold_hint(const ori_mesh *m, int a, int b)
+{
+    if (!m->nhint) return 0;
+    int key[3] = {a < b ? a : b, a < b ? b : a, 0};
+    const int *h = bsearch(key, m->hint, (size_t)m->nhint, 3 * sizeof *m->hint, cmp_hint);
+    return h ? h[2] : 0;
+}
+
 // A two-sided sheet (every face also listed with its cycle reversed, as orikin export writes a
 // posed sheet's back) is read as its front: a face that reverses an earlier face is dropped.
 static _Thread_local const int *g_key;
@@ -451,7 +467,7 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
     size_t len = strlen(path);
     const char *ext = len >= 4 ? path + len - 4 : "";
     ori_v3 *v = NULL;
-    int *fs = NULL, *fv = NULL, nv = 0, nf = 0;
+    int *fs = NULL, *fv = NULL, nv = 0, nf = 0, *hint = NULL, nhint = 0;
     ori_status st;
     if (len >= 5 && strcmp(path + len - 5, ".fold") == 0) {
         ori_fold *doc = NULL;
@@ -470,6 +486,18 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
         fv = ori__alloc(((size_t)total + 1) * sizeof *fv);
         fs[0] = 0;
         for (int f = 0; f < nf; ++f) fs[f + 1] = fs[f] + ori_pattern_face_vertices(p, f, fv + fs[f], total - fs[f]);
+        // the creases' M/V (or the sign of their fold angle) for flat-folded edges
+        int ne = ori_pattern_edge_count(p);
+        hint = ori__alloc(((size_t)ne + 1) * 3 * sizeof *hint);
+        for (int e = 0; e < ne; ++e) {
+            ori_edge x = ori_pattern_edge(p, e);
+            int sign = x.assignment == ORI_ASSIGN_MOUNTAIN ? -1 : x.assignment == ORI_ASSIGN_VALLEY ? 1
+                       : x.fold_angle_rad < 0.0 ? -1 : x.fold_angle_rad > 0.0 ? 1 : 0;
+            if (!sign) continue;
+            int *t = hint + 3 * nhint++;
+            t[0] = x.v[0] < x.v[1] ? x.v[0] : x.v[1], t[1] = x.v[0] < x.v[1] ? x.v[1] : x.v[0], t[2] = sign;
+        }
+        qsort(hint, (size_t)nhint, 3 * sizeof *hint, cmp_hint);
         ori_pattern_destroy(p);
     } else {
         char *data = NULL;
@@ -484,7 +512,8 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
         drop_back_faces(fs, fv, &nf);
     }
     st = ori_unfold_mesh_create(v, nv, fs, fv, nf, out, error);
-    ori__free(v), ori__free(fs), ori__free(fv);
+    if (st == ORI_OK) (*out)->hint = hint, (*out)->nhint = nhint, hint = NULL;
+    ori__free(v), ori__free(fs), ori__free(fv), ori__free(hint);
     return st;
 }
 
@@ -528,6 +557,8 @@ void ori__net_ctx_init(net_ctx *c, const ori_mesh *m)
             for (int t = 0; t < k; ++t) cg = ori_v3_add(cg, m->v[m->fv[m->fstart[x.g] + t]]);
             cg = ori_v3_scale(cg, 1.0 / k);
             bool convex = ori_v3_dot(ori_v3_sub(cg, m->v[x.a]), nf) < 0.0;
+            int sign = ORI_PI - mag < ORI_TOL_UNFOLD_FLAT_FOLD_RAD ? flat_fold_hint(m, x.a, x.b) : 0;
+            if (sign) convex = sign < 0; // flat-folded: the input's assignment decides
             x.angle = convex ? -mag : mag;
         }
         c->e[c->ne++] = x;

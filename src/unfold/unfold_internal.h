@@ -25,6 +25,8 @@ struct ori_mesh {
     int *fstart, *fv;  // merged faces (counter-clockwise seen from outside)
     int *src_start, *src; // input faces of each merged face
     double diag;
+    int nhint;            // FOLD input: M/V of its creases, triples (min vertex, max vertex, ±1) sorted,
+    int *hint;            // the sign of flat-folded (±180°) creases, which the geometry cannot tell
 };
 
 typedef struct fedge {
