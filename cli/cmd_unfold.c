@@ -1,4 +1,5 @@
-// orikin unfold: a polyhedral surface (OBJ, STL, FOLD) → an edge-unfolded net that folds back.
+// orikin unfold: a polyhedral surface (OBJ, STL, FOLD) → its crease pattern when it is a folded
+// flat sheet (developed without cuts), else an edge-unfolded net; both fold back.
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,9 +11,17 @@
 extern const cli_command cli_cmd_unfold;
 
 static const char help[] =
-    "usage: orikin unfold SHAPE [--tries N] [--all] [-o NET.fold] [--svg NET.svg] [--json]\n"
+    "usage: orikin unfold SHAPE [--cut | --develop] [--tries N] [--all] [-o NET.fold] [--svg NET.svg]\n"
+    "                     [--json]\n"
     "\n"
-    "Cut a polyhedral surface (SHAPE: .obj, .stl, or a .fold folded form; closed or open;\n"
+    "When SHAPE is a folded form of a flat sheet (a developable surface: the face angles at every\n"
+    "interior vertex sum to 360°, e.g. a FOLD foldedForm or an OBJ export of a folded state), develop\n"
+    "it into the plane without cuts: the answer is its crease pattern, every interior edge a crease\n"
+    "(mountain or valley from the dihedral sign, edges_foldAngle the current fold angle), the sheet's\n"
+    "edge the boundary; -o writes the crease pattern as frame 0 and the folded form as frame 1, and\n"
+    "the crease pattern is folded back with the kinematics to check it.\n"
+    "\n"
+    "Otherwise cut the surface (SHAPE: .obj, .stl, or a .fold folded form; closed or open;\n"
     "coplanar neighbouring faces are merged) along edges into a flat net without overlap: spanning\n"
     "trees of the face graph are tried (steepest-edge, random and flattest-first trees) until one\n"
     "lays out without overlapping faces; when none does, the best is split into pieces. The net is a\n"
@@ -22,16 +31,25 @@ static const char help[] =
     "degenerate or non-planar faces) are refused (exit 3).\n"
     "\n"
     "options:\n"
+    "  --cut              always cut into a net, even when the shape develops without cuts\n"
+    "  --develop          develop without cuts or fail (exit 3 naming the vertex or face that\n"
+    "                     prevents it) instead of falling back to a net\n"
+    "  --develop-tolerance DEG\n"
+    "                     angle defect allowed at an interior vertex (default 5.7e-4°, i.e. 1e-5 rad:\n"
+    "                     coordinates rounded to 6 digits); larger for relaxed or simulated forms\n"
     "  --tries N          spanning trees to try (default 50)\n"
     "  --seed N           seed of the random trees (default 1)\n"
     "  --all              enumerate every spanning tree (up to 24 faces) and count the distinct nets\n"
-    "                     up to rotation and reflection\n"
-    "  -o, --output FILE  write the net as FOLD (faces_orikin:source, edges_orikin:glue)\n"
+    "                     up to rotation and reflection (implies --cut)\n"
+    "  -o, --output FILE  write the net as FOLD (faces_orikin:source, edges_orikin:glue); a developed\n"
+    "                     crease pattern with its folded form as frame 1\n"
     "  --svg FILE         draw the net as SVG\n"
-    "  --json             print {pieces, faces, overlaps, tries, max_refold_error, ...} as JSON\n"
+    "  --json             print {developable, cuts, pieces, faces, overlaps, max_refold_error, ...}\n"
+    "                     as JSON (developed: max_angle_defect_deg, max_length_error, ...)\n"
     "\n"
-    "example:\n"
-    "  orikin unfold tests/data/unfold/cube.obj --all -o cube-net.fold --json\n";
+    "examples:\n"
+    "  orikin unfold tests/data/unfold/cube.obj --all -o cube-net.fold --json\n"
+    "  orikin unfold tests/data/unfold/miura-folded.fold -o miura-cp.fold\n";
 
 static int write_net(const char *path, const ori_unfold_net *net, bool svg)
 {
@@ -54,12 +72,23 @@ static int write_net(const char *path, const ori_unfold_net *net, bool svg)
             int g = ori_unfold_net_glue(net, e);
             json_array_append_new(glue, g >= 0 ? json_integer(g) : json_null());
         }
+        bool developed = ori_unfold_net_result(net).developed;
         char *s1 = json_dumps(src, JSON_COMPACT), *s2 = json_dumps(glue, JSON_COMPACT);
         st = ori_fold_set_custom(doc, 0, "faces_orikin:source", s1, &err);
-        if (st == ORI_OK) st = ori_fold_set_custom(doc, 0, "edges_orikin:glue", s2, &err);
+        if (st == ORI_OK && !developed) st = ori_fold_set_custom(doc, 0, "edges_orikin:glue", s2, &err);
         if (st == ORI_OK) st = ori_fold_set_custom(doc, 0, "frame_classes", "[\"creasePattern\"]", &err);
         free(s1), free(s2);
         json_decref(src), json_decref(glue);
+        if (st == ORI_OK && developed) {
+            // the folded form the crease pattern was developed from, as frame 1
+            int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p);
+            ori_v3 *pos = malloc(((size_t)nv + 1) * sizeof *pos);
+            double *ang = malloc(((size_t)ne + 1) * sizeof *ang);
+            for (int v = 0; v < nv; ++v) pos[v] = ori_unfold_net_vertex_position(net, v);
+            for (int e = 0; e < ne; ++e) ang[e] = ori_pattern_edge(p, e).fold_angle_rad;
+            ori_fold_append_state(doc, 0, nv, pos, ne, ang, "folded form (the input)");
+            free(pos), free(ang);
+        }
         if (st == ORI_OK) st = ori_fold_save_file(doc, path, &err);
     }
     int rc = CLI_EXIT_OK;
@@ -72,7 +101,8 @@ static int write_net(const char *path, const ori_unfold_net *net, bool svg)
 static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *svg = NULL, *v;
-    bool json = false;
+    bool json = false, cut = false, develop_only = false;
+    double dev_tol_deg = 0.0;
     ori_unfold_def def = ori_default_unfold_def();
     cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
@@ -81,6 +111,14 @@ static int run(int argc, char **argv)
             json = true;
         } else if (strcmp(argv[i], "--all") == 0) {
             def.all = true;
+        } else if (strcmp(argv[i], "--cut") == 0) {
+            cut = true;
+        } else if (strcmp(argv[i], "--develop") == 0) {
+            develop_only = true;
+        } else if (strcmp(argv[i], "--develop-tolerance") == 0) {
+            if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &dev_tol_deg) || !(dev_tol_deg > 0.0) || dev_tol_deg > 10.0)
+                return cli_usage(CMD, "--develop-tolerance needs degrees in (0, 10], got '%s'", v);
         } else if (strcmp(argv[i], "-o") == 0 || strcmp(argv[i], "--output") == 0) {
             if (!(out = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
         } else if (strcmp(argv[i], "--svg") == 0) {
@@ -103,22 +141,68 @@ static int run(int argc, char **argv)
         }
     }
     if (!path) return cli_usage(CMD, "missing SHAPE");
+    if (develop_only && (cut || def.all)) return cli_usage(CMD, "--develop cannot be combined with %s", cut ? "--cut" : "--all");
     ori_error err;
     ori_error_clear(&err);
     ori_mesh *mesh = NULL;
     if (ori_unfold_load_mesh(path, &mesh, &err) != ORI_OK) return cli_input_error(CMD, path, &err);
     ori_unfold_net *net = NULL;
-    if (ori_unfold_solve(mesh, &def, &net, &err) != ORI_OK) {
+    char why[sizeof err.message] = "";
+    if (!cut && !def.all) {
+        ori_status ds = ori_unfold_develop(mesh, dev_tol_deg * 3.14159265358979323846 / 180.0, &net, &err);
+        if (ds != ORI_OK && (develop_only || ds != ORI_ERR_NOT_FOUND)) {
+            ori_unfold_mesh_destroy(mesh);
+            return cli_input_error(CMD, path, &err);
+        }
+        if (ds != ORI_OK) snprintf(why, sizeof why, "%s", err.message);
+        ori_error_clear(&err);
+    }
+    if (!net && ori_unfold_solve(mesh, &def, &net, &err) != ORI_OK) {
         ori_unfold_mesh_destroy(mesh);
         return cli_input_error(CMD, path, &err);
     }
     ori_unfold_result r = ori_unfold_net_result(net);
+    const ori_pattern *cp = ori_unfold_net_pattern(net);
+    int nm = 0, nvl = 0, nfl = 0;
+    for (int e = 0; e < ori_pattern_edge_count(cp); ++e) {
+        ori_assignment a = ori_pattern_edge(cp, e).assignment;
+        nm += a == ORI_ASSIGN_MOUNTAIN, nvl += a == ORI_ASSIGN_VALLEY, nfl += a == ORI_ASSIGN_FLAT;
+    }
     int rc = CLI_EXIT_OK;
     if (out) rc = write_net(out, net, false);
     if (rc == CLI_EXIT_OK && svg) rc = write_net(svg, net, true);
     if (rc == CLI_EXIT_OK) {
-        if (json) {
+        if (json && r.developed) {
             json_t *o = json_object();
+            json_object_set_new(o, "developable", json_true());
+            json_object_set_new(o, "cuts", json_integer(0));
+            json_object_set_new(o, "pieces", json_integer(1));
+            json_object_set_new(o, "faces", json_integer(r.faces));
+            json_object_set_new(o, "input_faces", json_integer(r.input_faces));
+            json_object_set_new(o, "creases", json_integer(nm + nvl + nfl));
+            json_object_set_new(o, "mountains", json_integer(nm));
+            json_object_set_new(o, "valleys", json_integer(nvl));
+            json_object_set_new(o, "interior_vertices", json_integer(r.interior_vertices));
+            json_object_set_new(o, "overlaps", json_integer(0));
+            json_object_set_new(o, "max_angle_defect_deg", json_real(r.max_angle_defect_deg));
+            json_object_set_new(o, "max_length_error", json_real(r.max_length_error));
+            json_object_set_new(o, "max_closing_error", json_real(r.max_closing_error));
+            json_object_set_new(o, "fold_residual", r.fold_residual >= 0.0 ? json_real(r.fold_residual) : json_null());
+            json_object_set_new(o, "max_refold_error", r.refolded ? json_real(r.max_refold_error) : json_null());
+            cli_print_json(o); // takes o
+        } else if (r.developed) {
+            printf("developed without cuts: a crease pattern, %d crease%s (%d mountain, %d valley%s), %d faces\n",
+                   nm + nvl + nfl, nm + nvl + nfl == 1 ? "" : "s", nm, nvl, nfl ? ", some flat" : "", r.faces);
+            printf("%d interior vertices, largest angle defect %.3g°, edge lengths kept within %.3g (relative)\n",
+                   r.interior_vertices, r.max_angle_defect_deg, r.max_length_error);
+            if (r.refolded)
+                printf("folded back to the shape within %.3g (relative; loop residual %.3g)\n", r.max_refold_error,
+                       r.fold_residual);
+        } else if (json) {
+            json_t *o = json_object();
+            json_object_set_new(o, "developable", json_false());
+            if (why[0]) json_object_set_new(o, "develop_reason", json_string(why));
+            json_object_set_new(o, "cuts", json_integer(r.cuts));
             json_object_set_new(o, "pieces", json_integer(r.pieces));
             json_object_set_new(o, "faces", json_integer(r.faces));
             json_object_set_new(o, "input_faces", json_integer(r.input_faces));
@@ -135,6 +219,7 @@ static int run(int argc, char **argv)
             }
             cli_print_json(o); // takes o
         } else {
+            if (why[0]) printf("%s: cut into a net\n", why);
             printf("%d faces (%d in the input): %s after %d tries\n", r.faces, r.input_faces,
                    r.pieces == 1 ? "one net without overlap" : "no single net found", r.tries);
             if (r.pieces > 1) printf("split into %d pieces without overlap\n", r.pieces);
@@ -154,4 +239,5 @@ static int run(int argc, char **argv)
     return rc;
 }
 
-const cli_command cli_cmd_unfold = {"unfold", "cut a polyhedral surface into a net that folds back", help, run, NULL};
+const cli_command cli_cmd_unfold = {"unfold", "a folded form back to its crease pattern, or any polyhedral surface into a net",
+                                    help, run, NULL};

@@ -64,7 +64,8 @@ int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_i
     if (ori_pattern_is_folded_form(k->flat) || ori_pattern_is_3d(k->flat)) {
         cli_kin_free(k);
         return cli_input_fail(cmd, path, "frame 0 is a folded form: the kinematics needs the flat crease pattern there "
-                                         "(or --frame N naming a crease-pattern frame)");
+                                         "(or --frame N naming a crease-pattern frame); run 'orikin unfold FILE -o cp.fold' "
+                                         "to get its crease pattern (the folded state is kept as frame 1), then fold cp.fold");
     }
     ori_error err;
     // Frame 0 as loaded, with the faces the mechanism uses (traced when the file had none), so

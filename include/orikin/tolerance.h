@@ -476,5 +476,16 @@
 /// Linkage unfolding: a motion whose kept frames change a bar length by more than this
 /// (relative) or decrease a distance by more than this × the size fails. Unitless.
 #define ORI_TOL_LINKAGE_CHECK_REL 1e-9
+/// Developing a folded form without cuts (ori_unfold_develop): an interior vertex is flat when
+/// its face angles sum to 2π within ORI_TOL_DEVELOP_ANGLE_RAD (radians); the two laid-out copies
+/// of every edge off the layout tree meet within ORI_TOL_DEVELOP_CLOSE_REL × the diagonal. Loose
+/// enough for coordinates rounded to 6 digits (FOLD files of other tools: defects up to ~1e-6),
+/// far above the ~1e-15 of exact inputs.
+#define ORI_TOL_DEVELOP_ANGLE_RAD 1e-5
+#define ORI_TOL_DEVELOP_CLOSE_REL 1e-5
+/// A crease of a shape whose faces' normals are within this of opposite (radians) is flat-folded:
+/// the geometry cannot tell mountain from valley, so a FOLD input's assignment (or the sign of its
+/// edges_foldAngle) gives the sign of its fold angle (nets and developed crease patterns alike).
+#define ORI_TOL_UNFOLD_FLAT_FOLD_RAD 1e-6
 
 #endif

@@ -1,7 +1,8 @@
 /// orikin unfold: unfolding without self-intersection (SPEC capability 13, thesis ch. 6).
 /// Planar linkages (an open chain or a simple polygon) are straightened or convexified by
 /// Streinu's expansive motions of pointed pseudo-triangulations; polyhedral surfaces are cut
-/// into edge-unfolded nets (one piece when one is found) that fold back into the shape.
+/// into edge-unfolded nets (one piece when one is found) that fold back into the shape, or, when
+/// they are folded forms of a flat sheet, developed without cuts into their crease pattern.
 /// docs/unfolding.md has the methods, the limits and the validation figures.
 ///
 /// Functions: ori_default_linkage_def, ori_linkage_unfold, ori_linkage_motion_destroy,
@@ -10,7 +11,8 @@
 /// ori_unfold_load_mesh, ori_unfold_mesh_convex_hull, ori_unfold_mesh_destroy,
 /// ori_unfold_mesh_face_count, ori_unfold_mesh_vertex_count, ori_default_unfold_def,
 /// ori_unfold_solve, ori_unfold_net_destroy, ori_unfold_net_result, ori_unfold_net_pattern,
-/// ori_unfold_net_face_source, ori_unfold_net_glue, ori_unfold_net_vertex_source.
+/// ori_unfold_net_face_source, ori_unfold_net_glue, ori_unfold_net_vertex_source,
+/// ori_unfold_net_vertex_position, ori_unfold_develop.
 #ifndef ORIKIN_UNFOLD_H
 #define ORIKIN_UNFOLD_H
 
@@ -96,7 +98,8 @@ typedef struct ori_mesh ori_mesh;
 ORI_API ori_status ori_unfold_mesh_create(const ori_v3 *coords, int vertex_count, const int *face_start,
                                           const int *face_vertices, int face_count, ori_mesh **out, ori_error *error);
 /// Load a surface from an OBJ (v, f), STL (ASCII or binary; vertices welded by equal
-/// coordinates) or FOLD (frame 0's 3D vertices_coords and faces_vertices) file, by extension.
+/// coordinates) or FOLD (frame 0's 3D vertices_coords and faces_vertices) file, by extension. In
+/// OBJ and STL a face that repeats an earlier one reversed is dropped (two-sided sheets).
 ORI_API ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *error);
 /// The convex hull of count ≥ 4 points (qhull, triangulated; coplanar facets then merged) as a
 /// surface. Fails with ORI_ERR_DEGENERATE when qhull cannot build it (all points coplanar).
@@ -143,6 +146,13 @@ typedef struct ori_unfold_result {
     int distinct_nets;        ///< with all: overlap-free nets up to congruence (rotations, reflections); −1 otherwise
     int spanning_trees;       ///< with all: spanning trees enumerated
     int overlap_free_trees;   ///< with all: of which without overlap
+    int cuts;                 ///< interior edges of the shape cut open (0 when developed)
+    bool developed;           ///< developed without cuts into a crease pattern (ori_unfold_develop)
+    int interior_vertices;    ///< developed: interior vertices of the sheet; −1 for nets
+    double max_angle_defect_deg; ///< developed: largest |360° − face angle sum| at an interior vertex (degrees); −1 for nets
+    double max_length_error;  ///< developed: largest |flat − 3D length| / 3D length of an edge; −1 for nets
+    double max_closing_error; ///< developed: largest gap between the two laid-out copies of an edge off the layout tree / the diagonal; −1 for nets
+    double fold_residual;     ///< developed: loop-closure residual of the crease pattern at its fold angles (ori_mechanism_residual); −1 for nets
 } ori_unfold_result;
 
 /// Opaque net: the crease pattern and its relation to the shape.
@@ -165,6 +175,22 @@ ORI_API int ori_unfold_net_face_source(const ori_unfold_net *net, int face, int 
 ORI_API int ori_unfold_net_glue(const ori_unfold_net *net, int edge);
 /// The input vertex a net vertex folds onto.
 ORI_API int ori_unfold_net_vertex_source(const ori_unfold_net *net, int vertex);
+/// The position in the shape (3D, the input's units) that a net vertex folds onto.
+ORI_API ori_v3 ori_unfold_net_vertex_position(const ori_unfold_net *net, int vertex);
+
+// --- folded forms back to their crease pattern (no cuts) ----------------------------------------
+
+/// Develop a surface that is a folded flat sheet (every interior vertex's face angles sum to
+/// 360° within tolerance_rad; 0 = ORI_TOL_DEVELOP_ANGLE_RAD; at most 0.5) isometrically into the
+/// plane without cuts: the faces are laid out along a breadth-first tree, every other edge's two
+/// copies must meet (within max(ORI_TOL_DEVELOP_CLOSE_REL, tolerance_rad) × the diagonal, so holes
+/// are fine when the sheet closes around them; vertices then take the mean of their copies) and the sheet must not overlap itself. The net is the crease pattern: every interior
+/// edge a crease (M/V from the dihedral sign, fold angle of the shape), the boundary B; it is
+/// folded back by the kinematics (result.max_refold_error). Fails with ORI_ERR_NOT_FOUND when
+/// the surface does not develop (message and element name the vertex, field "vertices_coords",
+/// or the overlapping face, "faces_vertices"). Destroy with ori_unfold_net_destroy.
+ORI_API ori_status ori_unfold_develop(const ori_mesh *mesh, double tolerance_rad, ori_unfold_net **out,
+                                      ori_error *error);
 
 #ifdef __cplusplus
 }

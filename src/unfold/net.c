@@ -18,13 +18,6 @@
 #include "unfold_internal.h"
 
 
-struct ori_mesh {
-    int nv, nf;
-    ori_v3 *v;
-    int *fstart, *fv;  // merged faces (counter-clockwise seen from outside)
-    int *src_start, *src; // input faces of each merged face
-    double diag;
-};
 
 ori_unfold_def ori_default_unfold_def(void)
 {
@@ -41,6 +34,7 @@ void ori_unfold_mesh_destroy(ori_mesh *m)
 {
     if (!m) return;
     ori__free(m->v), ori__free(m->fstart), ori__free(m->fv), ori__free(m->src_start), ori__free(m->src);
+    ori__free(m->hint);
     ori__free(m);
 }
 
@@ -394,6 +388,78 @@ static ori_status read_stl(const char *data, size_t size, ori_v3 **pv, int *pnv,
     return ORI_OK;
 }
 
+static int cmp_hint(const void *x, const void *y)
+{
+    const int *a = x, *b = y;
+    return a[0] != b[0] ? (a[0] > b[0]) - (a[0] < b[0]) : (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+// The input's M (−1) or V (+1) of the edge a–b, 0 when none is known.
+static int flat_fold_hint(const ori_mesh *m, int a, int b)
+{
+    if (!m->nhint) return 0;
+    int key[3] = {a < b ? a : b, a < b ? b : a, 0};
+    const int *h = bsearch(key, m->hint, (size_t)m->nhint, 3 * sizeof *m->hint, cmp_hint);
+    return h ? h[2] : 0;
+}
+
+// A two-sided sheet (every face also listed with its cycle reversed, as orikin export writes a
+// posed sheet's back) is read as its front: a face that reverses an earlier face is dropped.
+static _Thread_local const int *g_key;
+static _Thread_local const int *g_key_start;
+static int cmp_face_key(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    int na = g_key_start[a + 1] - g_key_start[a], nb = g_key_start[b + 1] - g_key_start[b];
+    if (na != nb) return na - nb;
+    for (int i = 0; i < na; ++i)
+        if (g_key[g_key_start[a] + i] != g_key[g_key_start[b] + i]) return g_key[g_key_start[a] + i] - g_key[g_key_start[b] + i];
+    return a - b;
+}
+static int cmp_int(const void *x, const void *y) { return *(const int *)x - *(const int *)y; }
+
+static bool reverses(const int *a, const int *b, int k)
+{
+    int p = -1;
+    for (int j = 0; j < k && p < 0; ++j)
+        if (b[j] == a[0]) p = j;
+    if (p < 0) return false;
+    for (int j = 0; j < k; ++j)
+        if (b[((p - j) % k + k) % k] != a[j]) return false;
+    return true;
+}
+
+static void drop_back_faces(int *fs, int *fv, int *pnf)
+{
+    int nf = *pnf;
+    if (nf < 2) return;
+    int *key = ori__alloc(((size_t)fs[nf] + 1) * sizeof *key), *idx = ori__alloc((size_t)nf * sizeof *idx);
+    bool *drop = ori__calloc((size_t)nf, sizeof *drop);
+    memcpy(key, fv, (size_t)fs[nf] * sizeof *key);
+    for (int f = 0; f < nf; ++f) {
+        qsort(key + fs[f], (size_t)(fs[f + 1] - fs[f]), sizeof *key, cmp_int);
+        idx[f] = f;
+    }
+    g_key = key, g_key_start = fs;
+    qsort(idx, (size_t)nf, sizeof *idx, cmp_face_key);
+    for (int i = 1; i < nf; ++i) {
+        int a = idx[i - 1], b = idx[i], k = fs[a + 1] - fs[a];
+        if (k != fs[b + 1] - fs[b] || memcmp(key + fs[a], key + fs[b], (size_t)k * sizeof *key) != 0) continue;
+        if (!drop[a] && reverses(fv + fs[a], fv + fs[b], k)) drop[b] = true; // a < b: the later one goes
+    }
+    int m = 0, q = 0;
+    for (int f = 0; f < nf; ++f) {
+        if (drop[f]) continue;
+        int s0 = fs[f], s1 = fs[f + 1];
+        fs[m] = q;
+        for (int i = s0; i < s1; ++i) fv[q++] = fv[i];
+        m++;
+    }
+    fs[m] = q;
+    *pnf = m;
+    ori__free(key), ori__free(idx), ori__free(drop);
+}
+
 ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *error)
 {
     ORI_ASSERT(path && out);
@@ -401,7 +467,7 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
     size_t len = strlen(path);
     const char *ext = len >= 4 ? path + len - 4 : "";
     ori_v3 *v = NULL;
-    int *fs = NULL, *fv = NULL, nv = 0, nf = 0;
+    int *fs = NULL, *fv = NULL, nv = 0, nf = 0, *hint = NULL, nhint = 0;
     ori_status st;
     if (len >= 5 && strcmp(path + len - 5, ".fold") == 0) {
         ori_fold *doc = NULL;
@@ -420,6 +486,18 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
         fv = ori__alloc(((size_t)total + 1) * sizeof *fv);
         fs[0] = 0;
         for (int f = 0; f < nf; ++f) fs[f + 1] = fs[f] + ori_pattern_face_vertices(p, f, fv + fs[f], total - fs[f]);
+        // the creases' M/V (or the sign of their fold angle) for flat-folded edges
+        int ne = ori_pattern_edge_count(p);
+        hint = ori__alloc(((size_t)ne + 1) * 3 * sizeof *hint);
+        for (int e = 0; e < ne; ++e) {
+            ori_edge x = ori_pattern_edge(p, e);
+            int sign = x.assignment == ORI_ASSIGN_MOUNTAIN ? -1 : x.assignment == ORI_ASSIGN_VALLEY ? 1
+                       : x.fold_angle_rad < 0.0 ? -1 : x.fold_angle_rad > 0.0 ? 1 : 0;
+            if (!sign) continue;
+            int *t = hint + 3 * nhint++;
+            t[0] = x.v[0] < x.v[1] ? x.v[0] : x.v[1], t[1] = x.v[0] < x.v[1] ? x.v[1] : x.v[0], t[2] = sign;
+        }
+        qsort(hint, (size_t)nhint, 3 * sizeof *hint, cmp_hint);
         ori_pattern_destroy(p);
     } else {
         char *data = NULL;
@@ -431,32 +509,17 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
         else st = ori__fail(error, ORI_ERR_UNSUPPORTED, "unknown shape format (expected .obj, .stl or .fold)");
         ori_buffer_free(data);
         if (st != ORI_OK) return st;
+        drop_back_faces(fs, fv, &nf);
     }
     st = ori_unfold_mesh_create(v, nv, fs, fv, nf, out, error);
-    ori__free(v), ori__free(fs), ori__free(fv);
+    if (st == ORI_OK) (*out)->hint = hint, (*out)->nhint = nhint, hint = NULL;
+    ori__free(v), ori__free(fs), ori__free(fv), ori__free(hint);
     return st;
 }
 
 // --- the face graph and nets ---------------------------------------------------------------
 
-typedef struct fedge {
-    int f, g;   // faces (f holds a→b, g holds b→a); g = −1 on the boundary
-    int fi, gi; // corner index of a in f, of b in g
-    int a, b;   // 3D vertices
-    double angle; // FOLD fold angle of the crease (radians): negative for convex edges (mountain)
-} fedge;
 
-typedef struct net_ctx {
-    const ori_mesh *m;
-    int ne;
-    fedge *e;
-    int *fe_start, *fe; // face → its edge indices
-    ori_v2 *local;      // per face corner: coordinates in the face's own plane frame
-    ori_v3 *normal;
-    // work
-    ori_v2 *pos;        // placed corner positions (per face corner)
-    uint64_t rng;
-} net_ctx;
 
 static uint64_t rnd(net_ctx *c)
 {
@@ -465,9 +528,9 @@ static uint64_t rnd(net_ctx *c)
 }
 static double rnd01(net_ctx *c) { return (double)(rnd(c) >> 11) / 9007199254740992.0; }
 
-static int fsize(const ori_mesh *m, int f) { return m->fstart[f + 1] - m->fstart[f]; }
+int ori__net_fsize(const ori_mesh *m, int f) { return m->fstart[f + 1] - m->fstart[f]; }
 
-static void ctx_init(net_ctx *c, const ori_mesh *m)
+void ori__net_ctx_init(net_ctx *c, const ori_mesh *m)
 {
     memset(c, 0, sizeof *c);
     c->m = m;
@@ -479,7 +542,7 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
             h[q++] = (half){m->fv[i], m->fv[i + 1 < m->fstart[f + 1] ? i + 1 : m->fstart[f]], f, i - m->fstart[f]};
     pair_halves(h, nh, twin, "faces", NULL);
     c->normal = ori__alloc(((size_t)m->nf + 1) * sizeof *c->normal);
-    for (int f = 0; f < m->nf; ++f) c->normal[f] = ori_v3_normalize(face_normal(m->v, m->fv + m->fstart[f], fsize(m, f)));
+    for (int f = 0; f < m->nf; ++f) c->normal[f] = ori_v3_normalize(face_normal(m->v, m->fv + m->fstart[f], ori__net_fsize(m, f)));
     c->e = ori__alloc(((size_t)nh + 1) * sizeof *c->e);
     for (int i = 0; i < nh; ++i) {
         int j = twin[i];
@@ -490,10 +553,12 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
             double mag = atan2(ori_v3_norm(ori_v3_cross(nf, ng)), ori_v3_dot(nf, ng));
             // convex when g's centroid lies below f's plane
             ori_v3 cg = {0, 0, 0};
-            int k = fsize(m, x.g);
+            int k = ori__net_fsize(m, x.g);
             for (int t = 0; t < k; ++t) cg = ori_v3_add(cg, m->v[m->fv[m->fstart[x.g] + t]]);
             cg = ori_v3_scale(cg, 1.0 / k);
             bool convex = ori_v3_dot(ori_v3_sub(cg, m->v[x.a]), nf) < 0.0;
+            int sign = ORI_PI - mag < ORI_TOL_UNFOLD_FLAT_FOLD_RAD ? flat_fold_hint(m, x.a, x.b) : 0;
+            if (sign) convex = sign < 0; // flat-folded: the input's assignment decides
             x.angle = convex ? -mag : mag;
         }
         c->e[c->ne++] = x;
@@ -518,7 +583,7 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
         const int *fc = m->fv + m->fstart[f];
         ori_v3 o = m->v[fc[0]], u = ori_v3_normalize(ori_v3_sub(m->v[fc[1]], o));
         ori_v3 w = ori_v3_cross(c->normal[f], u);
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             ori_v3 d = ori_v3_sub(m->v[fc[i]], o);
             c->local[m->fstart[f] + i] = ori_v2_make(ori_v3_dot(d, u), ori_v3_dot(d, w));
         }
@@ -527,18 +592,18 @@ static void ctx_init(net_ctx *c, const ori_mesh *m)
     ori__free(h), ori__free(twin);
 }
 
-static void ctx_free(net_ctx *c)
+void ori__net_ctx_free(net_ctx *c)
 {
     ori__free(c->e), ori__free(c->fe_start), ori__free(c->fe), ori__free(c->local), ori__free(c->pos), ori__free(c->normal);
 }
 
 // Lay out the faces along the tree (in_tree[k] for each face edge) from root: each face's
 // corners in c->pos. order receives the faces in breadth-first order, parent_edge per face.
-static int layout(net_ctx *c, const bool *in_tree, int root, int *order, int *parent_edge, bool *placed)
+int ori__net_layout(net_ctx *c, const bool *in_tree, int root, int *order, int *parent_edge, bool *placed)
 {
     const ori_mesh *m = c->m;
     for (int f = 0; f < m->nf; ++f) placed[f] = false, parent_edge[f] = -1;
-    for (int i = 0; i < fsize(m, root); ++i) c->pos[m->fstart[root] + i] = c->local[m->fstart[root] + i];
+    for (int i = 0; i < ori__net_fsize(m, root); ++i) c->pos[m->fstart[root] + i] = c->local[m->fstart[root] + i];
     int head = 0, tail = 0;
     order[tail++] = root;
     placed[root] = true;
@@ -552,7 +617,7 @@ static int layout(net_ctx *c, const bool *in_tree, int root, int *order, int *pa
             if (g < 0 || placed[g]) continue;
             // shared vertices a, b: their placed positions in f, local positions in g
             int fi = x->f == f ? x->fi : x->gi, gi = x->f == f ? x->gi : x->fi;
-            int kf = fsize(m, f), kg = fsize(m, g);
+            int kf = ori__net_fsize(m, f), kg = ori__net_fsize(m, g);
             ori_v2 P0 = c->pos[m->fstart[f] + fi], P1 = c->pos[m->fstart[f] + (fi + 1) % kf];
             // in g the edge runs the other way: corner gi is P1's vertex, gi + 1 is P0's
             ori_v2 L1 = c->local[m->fstart[g] + gi], L0 = c->local[m->fstart[g] + (gi + 1) % kg];
@@ -633,7 +698,7 @@ static int cmp_box(const void *x, const void *y)
     return a < b ? -1 : a > b;
 }
 
-static bool faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, const int *tri, double tol)
+bool ori__net_faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, const int *tri, double tol)
 {
     const ori_mesh *m = c->m;
     for (int s = tri_start[f]; s < tri_start[f + 1]; ++s)
@@ -645,24 +710,24 @@ static bool faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, 
     return false;
 }
 
-static void build_tris(const net_ctx *c, int *tri_start, int *tri)
+void ori__net_build_tris(const net_ctx *c, int *tri_start, int *tri)
 {
     const ori_mesh *m = c->m;
     tri_start[0] = 0;
     for (int f = 0; f < m->nf; ++f) {
-        int n = triangulate(c->local + m->fstart[f], fsize(m, f), tri + 3 * tri_start[f]);
+        int n = triangulate(c->local + m->fstart[f], ori__net_fsize(m, f), tri + 3 * tri_start[f]);
         tri_start[f + 1] = tri_start[f] + n;
     }
 }
 
 // Overlapping face pairs among faces with mask[f] (NULL = all), counted (stop after limit).
-static int count_overlaps(const net_ctx *c, const int *tri_start, const int *tri, const int *piece, int limit)
+int ori__net_count_overlaps(const net_ctx *c, const int *tri_start, const int *tri, const int *piece, int limit)
 {
     const ori_mesh *m = c->m;
     face_box *b = ori__alloc(((size_t)m->nf + 1) * sizeof *b);
     for (int f = 0; f < m->nf; ++f) {
         face_box x = {INFINITY, -INFINITY, INFINITY, -INFINITY, f};
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             ori_v2 p = c->pos[m->fstart[f] + i];
             x.x0 = fmin(x.x0, p.x), x.x1 = fmax(x.x1, p.x), x.y0 = fmin(x.y0, p.y), x.y1 = fmax(x.y1, p.y);
         }
@@ -675,7 +740,7 @@ static int count_overlaps(const net_ctx *c, const int *tri_start, const int *tri
         for (int j = i + 1; j < m->nf && b[j].x0 < b[i].x1 - tol && count < limit; ++j) {
             if (b[j].y0 >= b[i].y1 - tol || b[i].y0 >= b[j].y1 - tol) continue;
             if (piece && piece[b[i].f] != piece[b[j].f]) continue;
-            if (faces_overlap(c, b[i].f, b[j].f, tri_start, tri, tol)) count++;
+            if (ori__net_faces_overlap(c, b[i].f, b[j].f, tri_start, tri, tol)) count++;
         }
     ori__free(b);
     return count;
@@ -737,14 +802,6 @@ static void steepest_weights(const net_ctx *c, ori_v3 d, double *w)
 
 // --- the net as a crease pattern --------------------------------------------------------------
 
-struct ori_unfold_net {
-    ori_unfold_result result;
-    ori_pattern *pattern;
-    int *src_start, *src; // per net face
-    int *glue;            // per net edge
-    int *vertex3d;        // per net vertex: the 3D vertex it folds onto
-    ori_v3 *shape;        // per net vertex: its 3D position
-};
 
 static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2 *offset)
 {
@@ -752,7 +809,7 @@ static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2
     double *x0 = ori__alloc(((size_t)pieces + 1) * 4 * sizeof(double));
     for (int q = 0; q < pieces; ++q) x0[4 * q] = x0[4 * q + 2] = INFINITY, x0[4 * q + 1] = x0[4 * q + 3] = -INFINITY;
     for (int f = 0; f < m->nf; ++f)
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             ori_v2 p = c->pos[m->fstart[f] + i];
             double *b = x0 + 4 * piece[f];
             b[0] = fmin(b[0], p.x), b[1] = fmax(b[1], p.x), b[2] = fmin(b[2], p.y), b[3] = fmax(b[3], p.y);
@@ -765,7 +822,7 @@ static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2
     ori__free(x0);
 }
 
-static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int *piece, int pieces)
+ori_unfold_net *ori__net_make(const net_ctx *c, const bool *in_tree, const int *piece, int pieces)
 {
     const ori_mesh *m = c->m;
     int nh = m->fstart[m->nf];
@@ -775,7 +832,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     for (int k = 0; k < c->ne; ++k) {
         if (!in_tree[k]) continue;
         const fedge *x = &c->e[k];
-        int kf = fsize(m, x->f), kg = fsize(m, x->g);
+        int kf = ori__net_fsize(m, x->f), kg = ori__net_fsize(m, x->g);
         int fa = m->fstart[x->f] + x->fi, fb = m->fstart[x->f] + (x->fi + 1) % kf;
         int gb = m->fstart[x->g] + x->gi, ga = m->fstart[x->g] + (x->gi + 1) % kg;
         int r1 = ori__uf_root(uf, fa), r2 = ori__uf_root(uf, ga);
@@ -794,7 +851,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     net->shape = ori__alloc(((size_t)nh + 1) * sizeof(ori_v3));
     int nv = 0;
     for (int f = 0; f < m->nf; ++f)
-        for (int i = 0; i < fsize(m, f); ++i) {
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
             int r = ori__uf_root(uf, m->fstart[f] + i);
             if (vid[r] < 0) {
                 ori_v2 p = ori_v2_add(c->pos[m->fstart[f] + i], off[piece[f]]);
@@ -808,7 +865,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     net->glue = ori__alloc(((size_t)c->ne + 1) * 2 * sizeof(int));
     for (int k = 0; k < c->ne; ++k) {
         const fedge *x = &c->e[k];
-        int kf = fsize(m, x->f);
+        int kf = ori__net_fsize(m, x->f);
         int fa = vid[ori__uf_root(uf, m->fstart[x->f] + x->fi)], fb = vid[ori__uf_root(uf, m->fstart[x->f] + (x->fi + 1) % kf)];
         if (in_tree[k]) {
             ori_assignment as = x->angle < 0.0 ? ORI_ASSIGN_MOUNTAIN : x->angle > 0.0 ? ORI_ASSIGN_VALLEY : ORI_ASSIGN_FLAT;
@@ -820,7 +877,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
             edge_of[2 * k] = e1;
             net->glue[e1] = -1;
             if (x->g >= 0) {
-                int kg = fsize(m, x->g);
+                int kg = ori__net_fsize(m, x->g);
                 int gb = vid[ori__uf_root(uf, m->fstart[x->g] + x->gi)], ga = vid[ori__uf_root(uf, m->fstart[x->g] + (x->gi + 1) % kg)];
                 int e2 = ori_pattern_add_edge(net->pattern, gb, ga, ORI_ASSIGN_BOUNDARY, 0.0);
                 edge_of[2 * k + 1] = e2;
@@ -834,7 +891,7 @@ static ori_unfold_net *make_net(const net_ctx *c, const bool *in_tree, const int
     memcpy(net->src, m->src, (size_t)m->src_start[m->nf] * sizeof(int));
     int buf[1024];
     for (int f = 0; f < m->nf; ++f) {
-        int k = fsize(m, f);
+        int k = ori__net_fsize(m, f);
         int *b = k <= 1024 ? buf : ori__alloc((size_t)k * sizeof *b);
         for (int i = 0; i < k; ++i) b[i] = vid[ori__uf_root(uf, m->fstart[f] + i)];
         ori_pattern_add_face(net->pattern, b, k);
@@ -973,14 +1030,14 @@ static char *canonical(const net_ctx *c, const bool *in_tree)
             const fedge *x = &c->e[k];
             int f = side ? x->g : x->f, i = side ? x->gi : x->fi;
             if (f < 0) continue;
-            ori_v2 P = c->pos[m->fstart[f] + i], Q = c->pos[m->fstart[f] + (i + 1) % fsize(m, f)];
+            ori_v2 P = c->pos[m->fstart[f] + i], Q = c->pos[m->fstart[f] + (i + 1) % ori__net_fsize(m, f)];
             for (int dir = 0; dir < 2; ++dir)
                 for (int mir = 0; mir < 2; ++mir) {
                     ori_v2 o = dir ? Q : P, t = ori_v2_normalize(ori_v2_sub(dir ? P : Q, o));
                     int ns = 0;
                     for (int g = 0; g < m->nf; ++g)
-                        for (int j = 0; j < fsize(m, g); ++j) {
-                            ori_v2 a = ori_v2_sub(c->pos[m->fstart[g] + j], o), b = ori_v2_sub(c->pos[m->fstart[g] + (j + 1) % fsize(m, g)], o);
+                        for (int j = 0; j < ori__net_fsize(m, g); ++j) {
+                            ori_v2 a = ori_v2_sub(c->pos[m->fstart[g] + j], o), b = ori_v2_sub(c->pos[m->fstart[g] + (j + 1) % ori__net_fsize(m, g)], o);
                             double ax = a.x * t.x + a.y * t.y, ay = -a.x * t.y + a.y * t.x;
                             double bx = b.x * t.x + b.y * t.y, by = -b.x * t.y + b.y * t.x;
                             if (mir) ay = -ay, by = -by;
@@ -1023,8 +1080,8 @@ typedef struct enum_ctx {
 static void enum_visit(enum_ctx *E)
 {
     E->trees++;
-    layout(E->c, E->in_tree, 0, E->order, E->parent_edge, E->placed);
-    if (count_overlaps(E->c, E->tri_start, E->tri, NULL, 1) > 0) return;
+    ori__net_layout(E->c, E->in_tree, 0, E->order, E->parent_edge, E->placed);
+    if (ori__net_count_overlaps(E->c, E->tri_start, E->tri, NULL, 1) > 0) return;
     E->good++;
     char *s = canonical(E->c, E->in_tree);
     for (int i = 0; i < E->nclasses; ++i)
@@ -1037,7 +1094,7 @@ static void enum_visit(enum_ctx *E)
 
 // Enumerate spanning trees: decide edges in order (take / skip), pruning cycles and skips that
 // disconnect the rest.
-static bool connected_without(const net_ctx *c, const bool *decided_out, int nf)
+bool ori__net_connected_without(const net_ctx *c, const bool *decided_out, int nf)
 {
     int *uf = ori__alloc(((size_t)nf + 1) * sizeof *uf);
     for (int f = 0; f < nf; ++f) uf[f] = f;
@@ -1087,7 +1144,7 @@ static void enum_rec(enum_ctx *E, int k, int taken, bool *out)
         E->in_tree[k] = false;
     }
     out[k] = true;
-    if (connected_without(E->c, out, nf)) enum_rec(E, k + 1, taken, out);
+    if (ori__net_connected_without(E->c, out, nf)) enum_rec(E, k + 1, taken, out);
     out[k] = false;
 }
 
@@ -1106,21 +1163,21 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     *out = NULL;
     if (def->tries < 1) return ori__fail(error, ORI_ERR_RANGE, "tries must be at least 1");
     net_ctx c;
-    ctx_init(&c, m);
+    ori__net_ctx_init(&c, m);
     c.rng ^= (uint64_t)def->seed * 0x2545F4914F6CDD1DULL;
     if (!c.rng) c.rng = 1;
     int nf = m->nf;
     // connected?
     bool *none = ori__calloc((size_t)c.ne + 1, 1);
-    if (!connected_without(&c, none, nf)) {
+    if (!ori__net_connected_without(&c, none, nf)) {
         ori__free(none);
-        ctx_free(&c);
+        ori__net_ctx_free(&c);
         return ori__fail(error, ORI_ERR_TOPOLOGY, "the surface is not connected");
     }
     ori__free(none);
     int *tri_start = ori__alloc(((size_t)nf + 2) * sizeof *tri_start);
     int *tri = ori__alloc(((size_t)m->fstart[nf] + 1) * 3 * sizeof *tri);
-    build_tris(&c, tri_start, tri);
+    ori__net_build_tris(&c, tri_start, tri);
     bool *in_tree = ori__alloc(((size_t)c.ne + 1) * sizeof *in_tree), *best_tree = ori__alloc(((size_t)c.ne + 1) * sizeof *best_tree);
     double *w = ori__alloc(((size_t)c.ne + 1) * sizeof *w);
     int *order = ori__alloc(((size_t)nf + 1) * sizeof *order), *parent_edge = ori__alloc(((size_t)nf + 1) * sizeof *parent_edge);
@@ -1140,8 +1197,8 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         }
         mst(&c, w, in_tree);
         if (!tree_spans(&c, in_tree)) continue;
-        layout(&c, in_tree, 0, order, parent_edge, placed);
-        int ov = count_overlaps(&c, tri_start, tri, NULL, best_overlaps < 0 ? nf * nf : best_overlaps);
+        ori__net_layout(&c, in_tree, 0, order, parent_edge, placed);
+        int ov = ori__net_count_overlaps(&c, tri_start, tri, NULL, best_overlaps < 0 ? nf * nf : best_overlaps);
         if (best_overlaps < 0 || ov < best_overlaps) {
             best_overlaps = ov, best_try = t;
             memcpy(best_tree, in_tree, (size_t)c.ne * sizeof *in_tree);
@@ -1156,10 +1213,12 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     res.distinct_nets = -1;
     res.max_refold_error = -1.0;
     res.fold_order = ORI_FOLD_ORDER_NONE;
+    res.interior_vertices = -1;
+    res.max_angle_defect_deg = res.max_length_error = res.max_closing_error = res.fold_residual = -1.0;
     // split the best tree into pieces: faces in breadth-first order join their parent's piece
     // unless they overlap a face already there
     int *piece = ori__alloc(((size_t)nf + 1) * sizeof *piece);
-    layout(&c, best_tree, 0, order, parent_edge, placed);
+    ori__net_layout(&c, best_tree, 0, order, parent_edge, placed);
     int pieces = 1;
     if (best_overlaps == 0) {
         for (int f = 0; f < nf; ++f) piece[f] = 0;
@@ -1171,7 +1230,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         for (int f = 0; f < nf; ++f) {
             double *b = box + 4 * f;
             b[0] = b[2] = INFINITY, b[1] = b[3] = -INFINITY;
-            for (int q = 0; q < fsize(m, f); ++q) {
+            for (int q = 0; q < ori__net_fsize(m, f); ++q) {
                 ori_v2 pq = c.pos[m->fstart[f] + q];
                 b[0] = fmin(b[0], pq.x), b[1] = fmax(b[1], pq.x), b[2] = fmin(b[2], pq.y), b[3] = fmax(b[3], pq.y);
             }
@@ -1187,7 +1246,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
                 if (piece[g] != pp) continue;
                 const double *bf = box + 4 * f, *bg = box + 4 * g;
                 if (bf[0] >= bg[1] - tol || bg[0] >= bf[1] - tol || bf[2] >= bg[3] - tol || bg[2] >= bf[3] - tol) continue;
-                clash = faces_overlap(&c, f, g, tri_start, tri, tol);
+                clash = ori__net_faces_overlap(&c, f, g, tri_start, tri, tol);
             }
             if (clash) {
                 best_tree[k] = false;
@@ -1208,9 +1267,10 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         ori__free(ren);
     }
     res.pieces = pieces;
-    res.overlaps = count_overlaps(&c, tri_start, tri, piece, nf * nf);
+    for (int k = 0; k < c.ne; ++k) res.cuts += c.e[k].g >= 0 && !best_tree[k];
+    res.overlaps = ori__net_count_overlaps(&c, tri_start, tri, piece, nf * nf);
     res.best_try = best_try;
-    ori_unfold_net *net = make_net(&c, best_tree, piece, pieces);
+    ori_unfold_net *net = ori__net_make(&c, best_tree, piece, pieces);
     if (pieces == 1) {
         bool coll = false;
         res.max_refold_error = refold_error(net, m->diag, &coll, &res.fold_order);
@@ -1244,7 +1304,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     net->result = res;
     ori__free(piece), ori__free(tri_start), ori__free(tri), ori__free(in_tree), ori__free(best_tree), ori__free(w);
     ori__free(order), ori__free(parent_edge), ori__free(placed);
-    ctx_free(&c);
+    ori__net_ctx_free(&c);
     *out = net;
     return ORI_OK;
 }
@@ -1269,3 +1329,4 @@ int ori_unfold_net_face_source(const ori_unfold_net *net, int face, int *out, in
 
 int ori_unfold_net_glue(const ori_unfold_net *net, int edge) { return net->glue[edge]; }
 int ori_unfold_net_vertex_source(const ori_unfold_net *net, int vertex) { return net->vertex3d[vertex]; }
+ori_v3 ori_unfold_net_vertex_position(const ori_unfold_net *net, int vertex) { return net->shape[vertex]; }
