@@ -461,6 +461,10 @@
 /// Walking towards the flat state no step is longer than half the remaining drive, nor need
 /// be shorter than this (the last step lands on it). Radians (0.001°).
 #define ORI_KIN_MIN_APPROACH_RAD (ORI_KIN_SINGULAR_STEP_RAD / 1024.0)
+/// Non-moving creases all within this of flat make the flat state's neighbourhood a near-singular
+/// region (the branches pass within about their largest angle λ of each other near drive 0):
+/// steps there are at most max(|drive| / 2, λ / 8). Radians (10°).
+#define ORI_KIN_NEAR_FLAT_RAD 0.1745
 /// Closed form: the start of a walk has the branch label of the candidate within this of it (and
 /// none when both are: at or next to a double root the nearest-to-prediction rule stands). Radians.
 #define ORI_KIN_LABEL_MATCH_RAD 1e-9

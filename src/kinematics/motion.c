@@ -115,6 +115,7 @@ typedef struct ctx {
     // Walking towards the flat state (drive 0) to cross it: no step longer than half the
     // remaining distance, so that no step lands near the crossing from afar.
     bool approach_flat;
+    double approach_floor; // … nor need be shorter than this, and within 16 × this of it no longer (radians)
     int label; // closed form: the branch label followed (±1), 0 until known
 } ctx;
 
@@ -440,7 +441,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         // next output value, but through the escape's end (beyond it the tangent takes over).
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
         double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
-        if (c->approach_flat) hh = fmin(hh, fmax(0.5 * fabs(s), ORI_KIN_MIN_APPROACH_RAD));
+        if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         // A near-complete remainder is taken whole rather than left as a sliver.
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
@@ -602,7 +603,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         // the numeric solver.
         bool by_cone = first && t_first && !esc;
         double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
-        if (c->approach_flat) hh = fmin(hh, fmax(0.5 * fabs(s), ORI_KIN_MIN_APPROACH_RAD));
+        if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
         double pred[3];
@@ -821,6 +822,7 @@ static leg_result cross_flat(ctx *c, double s1, double step_out, bool rec)
     for (int halving = 0;; ++halving, sa *= 0.5) {
         if (sa != c->th[c->jd]) {
             c->approach_flat = true;
+            c->approach_floor = ORI_KIN_MIN_APPROACH_RAD;
             r = walk(c, sa, step_out, rec, NULL, NULL);
             c->approach_flat = false;
             if (r != LEG_OK || c->cancelled) goto done;
@@ -940,8 +942,15 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
         if (may_cross_flat(c, s, s1)) {
             r = classify_stop(c, cross_flat(c, s1, step_out, rec), s, false);
         } else {
-            // Towards the flat state (a singular point) no step lands near it from afar either.
-            c->approach_flat = s * s1 >= 0.0 && fabs(s1) < fabs(s) && flat_locks(c);
+            // Towards the flat state (a singular point) no step lands near it from afar either;
+            // with the non-moving creases nearly flat (within λ) the two branches pass within
+            // about λ of each other near drive 0: steps no longer than half the distance to the
+            // band |s| ≤ 2λ, and λ/8 within it, towards it and through it.
+            double lam = 0.0;
+            for (int j = 0; j < J; ++j)
+                if (c->col[j] < 0 && j != c->jd) lam = fmax(lam, fabs(c->th[j]));
+            c->approach_flat = lam <= ORI_KIN_NEAR_FLAT_RAD && (s * s1 < 0.0 || fabs(s1) < fabs(s));
+            c->approach_floor = fmax(ORI_KIN_MIN_APPROACH_RAD, 0.125 * lam);
             r = classify_stop(c, c->analytic ? analytic_walk(c, s1, step_out, rec, t, NULL) : walk(c, s1, step_out, rec, NULL, NULL), s, false);
             c->approach_flat = false;
         }
