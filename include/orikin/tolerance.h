@@ -446,7 +446,8 @@
 /// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop with a moving crease within
 /// ORI_TOL_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point; states found
 /// by that bisection fold a crease against its assignment only beyond ORI_TOL_KIN_STOP_SIGN_RAD
-/// (near a singular stop the numeric corrector leaves up to about 1e-5 rad: a crease crossing 0 there, measured 4.5e-6 rad). Radians.
+/// (near a singular stop the numeric corrector leaves up to about 1e-5 rad: a crease reaching 0
+/// there was at −4.5e-6 rad). Radians.
 #define ORI_TOL_KIN_STOP_DRIVE_RAD 1e-13
 #define ORI_TOL_KIN_STOP_LIMIT_RAD 1e-2
 #define ORI_TOL_KIN_STOP_SIGN_RAD 1e-4
@@ -463,7 +464,7 @@
 #define ORI_KIN_MIN_APPROACH_RAD (ORI_KIN_SINGULAR_STEP_RAD / 1024.0)
 /// Non-moving creases all within this of flat make the flat state's neighbourhood a near-singular
 /// region (the branches pass within about their largest angle λ of each other near drive 0):
-/// steps there are at most max(|drive| / 2, λ / 8). Radians (10°).
+/// towards and through drive 0 steps are at most max((|drive| − 2λ) / 2, λ / 8). Radians (10°).
 #define ORI_KIN_NEAR_FLAT_RAD 0.1745
 /// Closed form: the start of a walk has the branch label of the candidate within this of it (and
 /// none when both are: at or next to a double root the nearest-to-prediction rule stands). Radians.

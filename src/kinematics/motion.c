@@ -852,7 +852,8 @@ static leg_result cross_flat(ctx *c, double s1, double step_out, bool rec)
         for (int j = 0; j < J; ++j) pred[j] = c->col[j] >= 0 ? hermite(sa, tha[j], ta[j], sb, thb[j], ta[j], 0.5 * sa) : tha[j];
         heads = state_near(c, 0.5 * sa, pred, 0.5 * fabs(sa), x, &res, &ha, al);
     }
-    if (!heads) {        r = walk(c, s1, step_out, rec, NULL, NULL);
+    if (!heads) {
+        r = walk(c, s1, step_out, rec, NULL, NULL);
         goto done;
     }
     // The output values strictly between s_a and s_b (and the leg's end, when it lies there).
