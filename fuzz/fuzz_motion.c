@@ -3,7 +3,8 @@
 // by ori_motion_solve and run as two-fold sequences by ori_sequence_run. Invariants: no crash,
 // leak or sanitizer report; every frame's fold angles in [−180°, 180°] and residual ≤ 1e-9; the
 // closed form and the numeric continuation give the same verdict (and frame count) on every
-// spherical 4R from the flat sheet; what is written as FOLD reads back with the same angles.
+// spherical 4R from the flat sheet, and from a folded state it reached to a target anywhere
+// (through the flat state included); what is written as FOLD reads back with the same angles.
 #include "fuzz_kin.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -42,6 +43,32 @@ static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
         }
         if (ori_motion_frame_count(other) != ori_motion_frame_count(mo)) abort();
         ori_motion_destroy(other);
+        // And from a folded start (the last frame before any stop, the locked creases flat) to a
+        // target anywhere, through the flat state included (docs/kinematics.md §7.3).
+        int k = ori_motion_frame_count(mo) - (ori_motion_block_of(mo, NULL) ? 1 : 0);
+        int E = ori_mechanism_edge_count(m);
+        if (k > 1 && E <= 64) {
+            double start[64];
+            memcpy(start, ori_motion_frame_angles(mo, k - 1), sizeof(double) * (size_t)E);
+            d.start_angles_rad = start;
+            d.has_from = false;
+            d.to_rad = fk_range(b, -180.0, 180.0) * FK_DEG;
+            ori_motion *two[2] = {NULL, NULL};
+            for (int q = 0; q < 2; ++q) {
+                d.solver = q ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+                if (ori_motion_solve(m, &d, &two[q], &err) != ORI_OK) abort();
+                fk_check_motion(m, two[q]);
+            }
+            if (ori_motion_verdict_of(two[0]) != ori_motion_verdict_of(two[1]) ||
+                ori_motion_frame_count(two[0]) != ori_motion_frame_count(two[1])) {
+                fprintf(stderr, "from a folded start: closed form %s (%s), numeric %s (%s)\n",
+                        ori_motion_verdict_name(ori_motion_verdict_of(two[0])), ori_motion_reason(two[0]) ? ori_motion_reason(two[0]) : "",
+                        ori_motion_verdict_name(ori_motion_verdict_of(two[1])), ori_motion_reason(two[1]) ? ori_motion_reason(two[1]) : "");
+                abort();
+            }
+            ori_motion_destroy(two[0]);
+            ori_motion_destroy(two[1]);
+        }
     }
     ori_motion_destroy(mo);
 }

@@ -446,10 +446,11 @@
 /// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop with a moving crease within
 /// ORI_TOL_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point; states found
 /// by that bisection fold a crease against its assignment only beyond ORI_TOL_KIN_STOP_SIGN_RAD
-/// (near a turning point they are accurate to about √ORI_TOL_KIN_STOP_DRIVE_RAD). Radians.
+/// (near a singular stop the numeric corrector leaves up to about 1e-5 rad: a crease reaching 0
+/// there was at −4.5e-6 rad). Radians.
 #define ORI_TOL_KIN_STOP_DRIVE_RAD 1e-13
 #define ORI_TOL_KIN_STOP_LIMIT_RAD 1e-2
-#define ORI_TOL_KIN_STOP_SIGN_RAD 1e-6
+#define ORI_TOL_KIN_STOP_SIGN_RAD 1e-4
 /// Closed-form 4R: |c| of the input–output equation within this of 1 is a double root (acos(c)
 /// ≈ √(2(1 − |c|)) magnifies the rounding of A, B, C, about 1e-13 relative, to 1e-6 rad). Unitless.
 #define ORI_TOL_KIN_DOUBLE_ROOT 1e-12
@@ -487,5 +488,20 @@
 /// the geometry cannot tell mountain from valley, so a FOLD input's assignment (or the sign of its
 /// edges_foldAngle) gives the sign of its fold angle (nets and developed crease patterns alike).
 #define ORI_TOL_UNFOLD_FLAT_FOLD_RAD 1e-6
+
+/// Through the flat state (docs/kinematics.md §7.3): a steep branch is approached from
+/// ORI_KIN_SINGULAR_STEP_RAD before the crossing, halving at most this many times (to 1/1024 of
+/// it, 0.001°) until it is nearly straight there. Count.
+#define ORI_KIN_CROSS_HALVINGS 10
+/// Walking towards the flat state no step is longer than half the remaining drive, nor need
+/// be shorter than this (the last step lands on it). Radians (0.001°).
+#define ORI_KIN_MIN_APPROACH_RAD (ORI_KIN_SINGULAR_STEP_RAD / 1024.0)
+/// Non-moving creases all within this of flat make the flat state's neighbourhood a near-singular
+/// region (the branches pass within about their largest angle λ of each other near drive 0):
+/// towards and through drive 0 steps are at most max((|drive| − 2λ) / 2, λ / 8). Radians (10°).
+#define ORI_KIN_NEAR_FLAT_RAD 0.1745
+/// Closed form: the start of a walk has the branch label of the candidate within this of it (and
+/// none when both are: at or next to a double root the nearest-to-prediction rule stands). Radians.
+#define ORI_KIN_LABEL_MATCH_RAD 1e-9
 
 #endif

@@ -289,10 +289,12 @@ bool ori__kin_spherical_applicable(const ori_mechanism *m, const int *col_of_joi
 #define ORI_KIN_SPHERICAL_POLISH_MAX 4
 
 // All (≤ 2) closed-form solutions for the drive value: cand[k][0..2] = angles of the three free
-// joints. pred supplies values where the closed form is indeterminate (degenerate axes).
-// Returns the number of solutions.
+// joints, label[k] (may be NULL) their branch label: +1 or −1, the sign of ±acos in the
+// input–output equation's x2 = ψ ± acos(C/r), continuous along a branch between singular points;
+// 0 at a double root. pred supplies values where the closed form is indeterminate (degenerate
+// axes). Returns the number of solutions.
 int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th,
-                             double drive, const double pred[3], double cand[2][3]);
+                             double drive, const double pred[3], double cand[2][3], int label[2]);
 // Newton polish (minimum-norm steps) of the three free angles x at the drive value on the loop
 // equation; returns the final max-norm of P − I.
 double ori__kin_spherical_polish(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,

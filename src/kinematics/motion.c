@@ -110,6 +110,15 @@ typedef struct ctx {
     bool progress_on;
     double prog_from, prog_to;
     bool cancelled; // the progress callback returned false: the walks stop at their next step
+    // A leg walked in pieces (through a singular point, cross_flat): the output grid is
+    // grid0 + k·step up to grid_end, whatever piece is walking; a piece's own end is no output.
+    bool grid_set;
+    double grid0, grid_end;
+    // Walking towards the flat state (drive 0) to cross it: no step longer than half the
+    // remaining distance, so that no step lands near the crossing from afar.
+    bool approach_flat;
+    double approach_floor; // … nor need be shorter than this, and within 16 × this of it no longer (radians)
+    int label; // closed form: the branch label followed (±1), 0 until known
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -211,6 +220,33 @@ static void lagrange_weights(const double *xs, int n, double x, double *w)
     }
 }
 
+// The k-th output value of a walk to s1 from the grid origin s_start (s_start + k·step, no drift),
+// merged into the leg's end when within ORI_KIN_GRID_MERGE steps of it (merge), and capped at
+// s1. *out is false when the value is only the end of a piece of the leg (c->grid_set), not an
+// output value.
+static double grid_target(const ctx *c, double s_start, double s1, double sg, double step_out, int k, bool merge,
+                          bool *out)
+{
+    double end = c->grid_set ? c->grid_end : s1;
+    double t = s_start + sg * step_out * k;
+    if ((t - end) * sg >= 0.0 || (merge && fabs(t - end) < ORI_KIN_GRID_MERGE * step_out)) t = end;
+    *out = true;
+    if ((t - s1) * sg >= 0.0) {
+        *out = t == s1;
+        t = s1;
+    }
+    return t;
+}
+
+// The first grid index beyond the drive value s (1 for a walk that starts the grid).
+static int grid_first(const ctx *c, double s, double sg, double step_out)
+{
+    if (!c->grid_set) return 1;
+    int k = (int)floor((s - c->grid0) * sg / step_out) + 1;
+    while ((c->grid0 + sg * step_out * k - s) * sg <= 1e-9 * step_out) k++;
+    return k < 1 ? 1 : k;
+}
+
 // --- where a motion stops ------------------------------------------------------------------
 
 // The largest |angle| over the moving (free) creases of th; *joint receives which.
@@ -241,8 +277,12 @@ static double cand_distance(const double a[3], const double b[3])
 // Choose among closed-form candidates: the one nearest to the prediction, i.e. the smooth
 // continuation of the branch followed so far (as the numeric corrector does). Where the branch
 // starts (a singular start) the cone analysis chose it (by_cone below).
-static int choose_candidate(double cand[2][3], int nc, const double pred[3])
+// Along a branch the closed form's label (the sign of ±acos, see ori__kin_spherical_solve) does
+// not change between singular points: once known (c->label) it decides, whatever the step, so
+// that near a turning point or where the branches pass close the closed form cannot switch.
+static int choose_candidate(const ctx *c, double cand[2][3], const int label[2], int nc, const double pred[3])
 {
+    if (nc == 2 && c->label != 0 && label[0] != 0 && label[0] == -label[1]) return label[0] == c->label ? 0 : 1;
     return nc == 2 && cand_distance(cand[1], pred) < cand_distance(cand[0], pred) ? 1 : 0;
 }
 
@@ -264,9 +304,10 @@ static bool state_at(ctx *c, double s_new, double *out)
             fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
             pred[i] = c->th[fj[i]];
         }
-        int nc = ori__kin_spherical_solve(m, &c->sp, c->th, s_new, pred, cand);
+        int lab[2];
+        int nc = ori__kin_spherical_solve(m, &c->sp, c->th, s_new, pred, cand, lab);
         if (nc == 0) return false;
-        int k = choose_candidate(cand, nc, pred);
+        int k = choose_candidate(c, cand, lab, nc, pred);
         for (int i = 0; i < 3; ++i) out[fj[i]] = cand[k][i];
         return true;
     }
@@ -390,10 +431,10 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
     nh = 1;
     double h_max = fmin(step_out, ORI_KIN_MAX_STEP_RAD);
     double h = singular_first ? fmin(h_max, ORI_KIN_SINGULAR_STEP_RAD) : h_max;
-    int k_out = 1;
-    double s_start = c->th[c->jd];
-    double target = s_start + sg * step_out;
-    if ((target - s1) * sg >= 0.0 || !rec) target = s1;
+    double s_start = c->grid_set ? c->grid0 : c->th[c->jd];
+    int k_out = grid_first(c, c->th[c->jd], sg, step_out);
+    bool out_here = true;
+    double target = rec ? grid_target(c, s_start, s1, sg, step_out, k_out, c->grid_set, &out_here) : s1;
     bool first = true;
     for (;;) {
         s = c->th[c->jd];
@@ -404,6 +445,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         // next output value, but through the escape's end (beyond it the tangent takes over).
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
         double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
+        if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         // A near-complete remainder is taken whole rather than left as a sliver.
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
@@ -500,11 +542,10 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         first = false;
         if (its <= 3) h = fmin(2.0 * h, h_max);
         if (snew == target) {
-            if (rec) record(c);
+            if (rec && out_here) record(c);
             if (target == s1) break;
             k_out++;
-            target = s_start + sg * step_out * k_out; // the grid from + k·step, no drift
-            if ((target - s1) * sg >= 0.0 || fabs(target - s1) < ORI_KIN_GRID_MERGE * step_out) target = s1;
+            target = grid_target(c, s_start, s1, sg, step_out, k_out, true, &out_here);
         }
     }
     ori__free(t);
@@ -539,10 +580,20 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
     int nh = 1;
     hs[0] = s;
     for (int i = 0; i < 3; ++i) hx[0][i] = c->th[fj[i]];
-    double s_start = s;
-    int k_out = 1;
-    double target = s + sg * step_out;
-    if ((target - s1) * sg >= 0.0 || !rec) target = s1;
+    if (c->label == 0) {
+        // The start's own label: the candidate at the start's drive value that is the start.
+        double x0[3], cand0[2][3];
+        int lab0[2];
+        for (int i = 0; i < 3; ++i) x0[i] = c->th[fj[i]];
+        int nc0 = ori__kin_spherical_solve(m, &c->sp, c->th, s, x0, cand0, lab0);
+        for (int k = 0; k < nc0; ++k)
+            if (cand_distance(cand0[k], x0) <= ORI_KIN_LABEL_MATCH_RAD && (nc0 == 1 || cand_distance(cand0[1 - k], x0) > ORI_KIN_LABEL_MATCH_RAD))
+                c->label = lab0[k];
+    }
+    double s_start = c->grid_set ? c->grid0 : s;
+    int k_out = grid_first(c, s, sg, step_out);
+    bool out_here = true;
+    double target = rec ? grid_target(c, s_start, s1, sg, step_out, k_out, c->grid_set, &out_here) : s1;
     double h = ORI_KIN_TRACK_STEP_RAD;
     leg_result result = LEG_OK;
     bool first = true;
@@ -556,6 +607,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         // the numeric solver.
         bool by_cone = first && t_first && !esc;
         double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
+        if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
         double pred[3];
@@ -580,8 +632,9 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
             }
         }
         double cand[2][3];
-        int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, pred, cand);
-        int k = choose_candidate(cand, nc, pred);
+        int lab[2] = {0, 0};
+        int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, pred, cand, lab);
+        int k = choose_candidate(c, cand, lab, nc, pred);
         if (in_esc) {
             // The branch is the escape's: its interpolation, polished.
             double x[3] = {pred[0], pred[1], pred[2]};
@@ -628,6 +681,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         c->has_alt = nc == 2;
         if (nc == 2)
             for (int i = 0; i < 3; ++i) c->alt[i] = cand[1 - k][i];
+        if (lab[k] != 0) c->label = lab[k];
         for (int i = 0; i < 3; ++i) c->th[fj[i]] = cand[k][i];
         c->th[c->jd] = snew;
         if (nh == ORI_KIN_HISTORY) {
@@ -650,11 +704,10 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         first = false;
         h = fmin(2.0 * h, ORI_KIN_TRACK_STEP_RAD);
         if (snew == target) {
-            if (rec) record(c);
+            if (rec && out_here) record(c);
             if (target == s1) break;
             k_out++;
-            target = s_start + sg * step_out * k_out;
-            if ((target - s1) * sg >= 0.0 || fabs(target - s1) < ORI_KIN_GRID_MERGE * step_out) target = s1;
+            target = grid_target(c, s_start, s1, sg, step_out, k_out, true, &out_here);
         }
     }
     ori__free(scratch);
@@ -675,6 +728,204 @@ static leg_result classify_stop(const ctx *c, leg_result r, double s_start, bool
     return LEG_BLOCKED;
 }
 
+// --- through the flat state -----------------------------------------------------------------
+
+// The state at drive value snew nearest to the prediction pred (all joints; its free creases
+// matter), from the state c->th: the closed-form candidate nearest to it (*alt, *has_alt: the
+// other one), or the corrector from it. The numeric solver's jump test on the correction (a step
+// of size hh): false when the state found is not the one predicted, or is beyond ±π.
+static bool state_near(ctx *c, double snew, const double *pred, double hh, double *out, double *res, bool *has_alt,
+                       double alt[3])
+{
+    const ori_mechanism *m = c->m;
+    int J = m->joint_count;
+    memcpy(out, pred, sizeof(double) * (size_t)J);
+    out[c->jd] = snew;
+    *has_alt = false;
+    *res = -1.0;
+    double tn = 1.0;
+    for (int j = 0; j < J; ++j)
+        if (c->col[j] >= 0) tn = fmax(tn, fabs(pred[j] - c->th[j]) / fmax(hh, 1e-300));
+    if (c->analytic) {
+        const kin_loop *L = &m->loops[c->sp.loop];
+        int fj[3];
+        double p3[3], cand[2][3];
+        for (int i = 0; i < 3; ++i) {
+            fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
+            p3[i] = pred[fj[i]];
+        }
+        int lab[2];
+        int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, p3, cand, lab);
+        if (nc == 0) return false;
+        // Nearest to the prediction (a crossing: the label changes there), which sets the label.
+        int k = nc == 2 && cand_distance(cand[1], p3) < cand_distance(cand[0], p3) ? 1 : 0;
+        c->label = lab[k];
+        for (int i = 0; i < 3; ++i) out[fj[i]] = cand[k][i];
+        *has_alt = nc == 2;
+        if (nc == 2)
+            for (int i = 0; i < 3; ++i) alt[i] = cand[1 - k][i];
+    } else {
+        int its = 0;
+        bool ok = ori__kin_correct(c->solver, out, ORI_KIN_NEWTON_MAX, &its, res);
+        c->mo->stats.newton_iterations += its;
+        if (!ok) return false;
+    }
+    double move = 0.0;
+    for (int j = 0; j < J; ++j)
+        if (c->col[j] >= 0) move = fmax(move, fabs(out[j] - pred[j]));
+    return move <= ORI_KIN_MAX_CORRECTION * hh * tn + ORI_KIN_CORRECTION_SLACK_RAD && !beyond_limit(c, out);
+}
+
+// Whether a leg from s to s1 may pass through the flat state: the drive changes sign and every
+// crease that does not move (locked, F, J) is flat, so the flat sheet is a state of the motion.
+static bool flat_locks(const ctx *c)
+{
+    for (int j = 0; j < c->m->joint_count; ++j)
+        if (c->col[j] < 0 && j != c->jd && c->th[j] != 0.0) return false;
+    return true;
+}
+static bool may_cross_flat(const ctx *c, double s, double s1) { return s * s1 < 0.0 && flat_locks(c); }
+
+// A leg from a folded state through the flat state (drive 0) to s1 on the other side. The flat
+// state is a singular point: the two branches of a degree-4 vertex cross there (in general a
+// bifurcation), and close to it a corrector started from a large step cannot tell them apart.
+// The rule: the motion continues on the branch whose tangent continues the incoming one. With
+// every non-moving crease flat, the mirror image of a state (every angle negated) is a state (the
+// axes lie in the plane of the sheet, and M R(a, θ) M = R(a, −θ) for the reflection M in it), and
+// a smooth branch through the flat state is its own mirror image (same tangent line there): its
+// state at −s is exactly −θ(s). Both solvers: walk to s_a = ∓ORI_KIN_SINGULAR_STEP_RAD before the
+// crossing (or start there when nearer), state θ_a, tangent t_a; the departure is (−s_a, −θ_a,
+// t_a), exactly; the output states in between are the cubic Hermite interpolation of the two (odd,
+// so through the flat state, exactly flat at 0), corrected; the walk goes on from −s_a. The
+// branch must reach the flat state: |θ_a| of the order of |s_a t_a|, and the interpolation at
+// s_a/2 corrects within the jump test; else the leg is walked as usual.
+static leg_result cross_flat(ctx *c, double s1, double step_out, bool rec)
+{
+    const ori_mechanism *m = c->m;
+    int J = m->joint_count;
+    double s = c->th[c->jd];
+    double sg = s1 > s ? 1.0 : -1.0;
+    bool had_grid = c->grid_set;
+    double g0 = c->grid0, gend = c->grid_end;
+    if (!had_grid) {
+        c->grid_set = true;
+        c->grid0 = s;
+        c->grid_end = s1;
+    }
+    size_t bytes = sizeof(double) * (size_t)J;
+    double *tha = ori__alloc(bytes + sizeof(double)), *ta = ori__alloc(bytes + sizeof(double));
+    double *thb = ori__alloc(bytes + sizeof(double)), *pred = ori__alloc(bytes + sizeof(double));
+    double *x = ori__alloc(bytes + sizeof(double));
+    leg_result r = LEG_OK;
+    double sa = fabs(s) > ORI_KIN_SINGULAR_STEP_RAD ? -sg * ORI_KIN_SINGULAR_STEP_RAD : s, sb = -sa;
+    // Approach until the branch is nearly straight: its linear extrapolation to the flat state
+    // lands within a quarter of the state's size of it (a steep branch, as where two creases are
+    // nearly collinear, is approached closer: s_a halves, at most ORI_KIN_CROSS_HALVINGS times).
+    bool heads = false;
+    double big = 0.0;
+    for (int halving = 0;; ++halving, sa *= 0.5) {
+        if (sa != c->th[c->jd]) {
+            c->approach_flat = true;
+            c->approach_floor = ORI_KIN_MIN_APPROACH_RAD;
+            r = walk(c, sa, step_out, rec, NULL, NULL);
+            c->approach_flat = false;
+            if (r != LEG_OK || c->cancelled) goto done;
+        }
+        memcpy(tha, c->th, bytes);
+        if (!ori__kin_tangent(c->solver, tha, ta)) break;
+        big = 0.0;
+        double off = 0.0;
+        for (int j = 0; j < J; ++j)
+            if (c->col[j] >= 0) {
+                big = fmax(big, fabs(tha[j]));
+                off = fmax(off, fabs(tha[j] - sa * ta[j]));
+            }
+        if (off <= 0.25 * big + ORI_TOL_RESIDUAL) {
+            heads = true;
+            break;
+        }
+        if (halving == ORI_KIN_CROSS_HALVINGS) break;
+    }
+    sb = -sa;
+    for (int j = 0; j < J; ++j) thb[j] = c->col[j] >= 0 ? -tha[j] : tha[j];
+    thb[c->jd] = sb;
+    ta[c->jd] = 1.0;
+    bool ha = false;
+    double al[3], res = -1.0;
+    if (heads) {
+        for (int j = 0; j < J; ++j) pred[j] = c->col[j] >= 0 ? hermite(sa, tha[j], ta[j], sb, thb[j], ta[j], 0.5 * sa) : tha[j];
+        heads = state_near(c, 0.5 * sa, pred, 0.5 * fabs(sa), x, &res, &ha, al);
+    }
+    if (!heads) {
+        r = walk(c, s1, step_out, rec, NULL, NULL);
+        goto done;
+    }
+    // The output values strictly between s_a and s_b (and the leg's end, when it lies there).
+    bool ends_here = (sb - s1) * sg > 0.0;
+    double s_end = ends_here ? s1 : sb;
+    if (rec || ends_here) {
+        for (int k = grid_first(c, sa, sg, step_out);; ++k) {
+            bool out = true;
+            double g = rec ? grid_target(c, c->grid0, s_end, sg, step_out, k, true, &out) : s1;
+            if (!out || g == sb) break;
+            if (g == 0.0) {
+                memcpy(x, tha, bytes);
+                for (int j = 0; j < J; ++j)
+                    if (c->col[j] >= 0) x[j] = 0.0;
+                x[c->jd] = 0.0;
+                res = 0.0;
+                ha = false;
+            } else {
+                for (int j = 0; j < J; ++j)
+                    pred[j] = c->col[j] >= 0 ? hermite(sa, tha[j], ta[j], sb, thb[j], ta[j], g) : tha[j];
+                memcpy(c->th, tha, bytes);
+                if (!state_near(c, g, pred, fabs(g - sa), x, &res, &ha, al)) {
+                    // No state there (not expected on a branch through the flat state): a stop.
+                    locate_stop(c, g);
+                    r = LEG_BLOCKED;
+                    goto done;
+                }
+            }
+            memcpy(c->th, x, bytes);
+            c->last_residual = res;
+            c->has_alt = ha;
+            if (ha) memcpy(c->alt, al, sizeof al);
+            check_signs(c);
+            if (rec) record(c);
+            if (g == s1 || c->cancelled || !rec) break;
+        }
+    }
+    if (ends_here || c->cancelled) goto done; // c->th is the state at s1
+    // The departure, exactly the mirror image (the closed form's candidate nearest to it, or
+    // the corrector from it, to the same rounding).
+    memcpy(c->th, tha, bytes);
+    if (!state_near(c, sb, thb, fabs(sb - sa), x, &res, &ha, al)) {
+        locate_stop(c, sb);
+        r = LEG_BLOCKED;
+        goto done;
+    }
+    memcpy(c->th, x, bytes);
+    c->last_residual = res;
+    c->has_alt = ha;
+    if (ha) memcpy(c->alt, al, sizeof al);
+    check_signs(c);
+    if (sb == s1) {
+        if (rec) record(c);
+        goto done;
+    }
+    r = walk(c, s1, step_out, rec, NULL, NULL);
+done:
+    c->grid_set = had_grid;
+    c->grid0 = g0;
+    c->grid_end = gend;
+    ori__free(tha);
+    ori__free(ta);
+    ori__free(thb);
+    ori__free(pred);
+    ori__free(x);
+    return r;
+}
+
 // A leg from the current drive value to s1 (closed form or numeric). At a singular start, the cone analysis gives
 // the branch's tangent; the walk first escapes silently a fixed ORI_KIN_SINGULAR_STEP_RAD
 // along it (whatever the output step and the target), the rank is judged there, and the
@@ -686,13 +937,28 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
     int J = m->joint_count;
     double s = c->th[c->jd];
     if (s1 == s) return LEG_OK;
+    c->label = 0;
     double sg = s1 > s ? 1.0 : -1.0;
     double *t = ori__alloc(sizeof(double) * (size_t)(J + 1));
     leg_result r;
     if (!start_singular(c, t)) {
         // The closed form takes its first step along the tangent too (its own candidates are
         // told apart by nearness to the prediction).
-        r = classify_stop(c, c->analytic ? analytic_walk(c, s1, step_out, rec, t, NULL) : walk(c, s1, step_out, rec, NULL, NULL), s, false);
+        if (may_cross_flat(c, s, s1)) {
+            r = classify_stop(c, cross_flat(c, s1, step_out, rec), s, false);
+        } else {
+            // Towards the flat state (a singular point) no step lands near it from afar either;
+            // with the non-moving creases nearly flat (within λ) the two branches pass within
+            // about λ of each other near drive 0: steps no longer than half the distance to the
+            // band |s| ≤ 2λ, and λ/8 within it, towards it and through it.
+            double lam = 0.0;
+            for (int j = 0; j < J; ++j)
+                if (c->col[j] < 0 && j != c->jd) lam = fmax(lam, fabs(c->th[j]));
+            c->approach_flat = lam <= ORI_KIN_NEAR_FLAT_RAD && (s * s1 < 0.0 || fabs(s1) < fabs(s));
+            c->approach_floor = fmax(ORI_KIN_MIN_APPROACH_RAD, 0.125 * lam);
+            r = classify_stop(c, c->analytic ? analytic_walk(c, s1, step_out, rec, t, NULL) : walk(c, s1, step_out, rec, NULL, NULL), s, false);
+            c->approach_flat = false;
+        }
         ori__free(t);
         return r;
     }
@@ -744,6 +1010,7 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
         if (r != LEG_OK || !ori__kin_tangent(c->solver, c->th, esc.t1))
             for (int j = 0; j < J; ++j) esc.t1[j] = (esc.th1[j] - esc.th0[j]) / (esc.s1 - esc.s0);
         memcpy(c->th, esc.th0, sizeof(double) * (size_t)J);
+        c->label = 0;
         c->block_kind = ORI_BLOCK_NONE;
         c->block_joint = -1;
         r = classify_stop(c, walk(c, s1, step_out, rec, t, &esc), s, true);

@@ -162,8 +162,10 @@ double ori__kin_spherical_polish(const ori_mechanism *m, const kin_spherical *sp
 }
 
 int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
-                             const double pred[3], double cand[2][3])
+                             const double pred[3], double cand[2][3], int label[2])
 {
+    int lab[2];
+    if (!label) label = lab;
     ori_m3 C[4];
     ori_v3 a[4];
     loop_setup(m, sp, th, a, C);
@@ -216,6 +218,9 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         // Verify the loop with every crease at its value (after the polish).
         double dev = polish(a, C, drive, x);
         if (!(dev <= 0.5 * ORI_TOL_RESIDUAL)) continue; // half: the mechanism measures the loop its own way
+        // The branch label: the sign of ±acos in x2 = ψ ± acos(C/r), 0 at a double root or where
+        // the equation does not involve x2.
+        label[count] = nx2 == 2 && x2s[0] != x2s[1] ? (b == 0 ? 1 : -1) : 0;
         x1 = x[0];
         x2 = x[1];
         x3 = x[2];
@@ -223,7 +228,10 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         cand[count][1] = x2;
         cand[count][2] = x3;
         // Drop an exact duplicate (double root).
-        if (count == 1 && fabs(cand[0][0] - x1) + fabs(cand[0][1] - x2) + fabs(cand[0][2] - x3) == 0.0) continue;
+        if (count == 1 && fabs(cand[0][0] - x1) + fabs(cand[0][1] - x2) + fabs(cand[0][2] - x3) == 0.0) {
+            label[0] = 0;
+            continue;
+        }
         count++;
     }
     return count;
