@@ -106,15 +106,22 @@ run 1 layers examples/patterns/non-flat-foldable-vertex.fold
 
 
 # --- several degrees of freedom, and where a fold stops ----------------------------------------
-step "11. Several degrees of freedom: a waterbomb folded toward its targets; a fold that stops"
+step "11. Several degrees of freedom: a waterbomb folded toward its targets; a fold that stops; a rounded drawing made exact"
 run 0 generate waterbomb --rows 4 --cols 4 -o "$OUT/waterbomb.fold"
 run 0 fold "$OUT/waterbomb.fold" --fix 0 --percent 100 --step 25 -o "$OUT/waterbomb-folded.fold"
 run 0 fold tests/data/waterbomb-base.fold --fix 0 --drive 12 --to 60 --symmetric --step 30
 run 1 fold tests/data/kin-issue14-vertex.fold --fix 3 --drive 10 --to -180 --step 60 -o "$OUT/blocked.fold"
+# a drawing with rounded coordinates is rigid; moved by 2e-5 of its size it folds all the way
+run 1 fold tests/data/rounded-miura.fold --fix 0 --percent 100
+run 0 regularize tests/data/rounded-miura.fold --rigid -o "$OUT/miura-exact.fold"
+run 0 fold "$OUT/miura-exact.fold" --fix 0 --percent 100
 
 # --- unfolding ------------------------------------------------------------------------------------
-step "12. Unfolding: a cube to its 11 nets and back; a polygon convexified (Streinu)"
+step "12. Unfolding: a cube to its 11 nets and back; a folded Miura-ori back to its crease pattern; a polygon convexified (Streinu)"
 run 0 unfold tests/data/unfold/cube.obj --all -o "$OUT/cube-net.fold" --svg "$OUT/cube-net.svg"
+run 0 export tests/data/miura-4x4.fold --fix 0 --drive 4 --to 60 -o "$OUT/miura-folded.obj"
+run 0 unfold "$OUT/miura-folded.obj" -o "$OUT/miura-cp.fold"
+run 0 check "$OUT/miura-cp.fold"
 run 0 unfold-linkage tests/data/unfold/star.fold -o "$OUT/star-motion.fold"
 
 # --- studio (orikin view) -----------------------------------------------------------------
