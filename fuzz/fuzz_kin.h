@@ -128,7 +128,8 @@ static void fk_check_motion(const ori_mechanism *m, const ori_motion *mo)
 }
 
 // Frames (edge_count angles each, positions from the mechanism) written as FOLD text read back
-// as patterns with the same fold angles (to the writer's shortest exact decimals).
+// as patterns with the same fold angles (to the writer's shortest exact decimals, and its snapping
+// of degrees within ORI_TOL_PRINT_DEG of an integer).
 static void fk_check_written(const ori_pattern *p, const ori_mechanism *m, int frames, const double *const *angles)
 {
     ori_fold *doc = ori_fold_create();
@@ -152,7 +153,8 @@ static void fk_check_written(const ori_pattern *p, const ori_mechanism *m, int f
         bd.check_planarity = false;
         if (ori_fold_get_pattern(again, f + 1, &bd, &q, &err) != ORI_OK) abort();
         for (int e = 0; e < E; ++e)
-            if (fabs(ori_pattern_edge(q, e).fold_angle_rad - angles[f][e]) > 1e-12) abort();
+            if (fabs(ori_pattern_edge(q, e).fold_angle_rad - angles[f][e]) > 1e-12 + ori_deg_to_rad(ORI_TOL_PRINT_DEG))
+                abort(); // files snap degrees within ORI_TOL_PRINT_DEG of an integer (1.7e-12 rad)
         ori_pattern_destroy(q);
     }
     ori_fold_destroy(again);

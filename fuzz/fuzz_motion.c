@@ -20,6 +20,14 @@ static void check_written_motion(const ori_pattern *p, const ori_mechanism *m, c
     free(a);
 }
 
+// A crease within 1e-9 rad of ±180°.
+static bool fk_any_folded_flat(const double *a, int n)
+{
+    for (int e = 0; e < n; ++e)
+        if (fabs(a[e]) >= ORI_PI - 1e-9) return true;
+    return false;
+}
+
 static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
 {
     int locks[8];
@@ -44,9 +52,12 @@ static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
         if (ori_motion_frame_count(other) != ori_motion_frame_count(mo)) abort();
         ori_motion_destroy(other);
         // And from a folded start (the last frame before any stop, the locked creases flat) to a
-        // target anywhere, through the flat state included (docs/kinematics.md §7.3).
+        // target anywhere, through the flat state included (docs/kinematics.md §7.3). Not from a
+        // frame with a crease folded flat (±180°): that start is a singular point with two ways on,
+        // which of them is taken is not defined (§15), so the frame before it.
         int k = ori_motion_frame_count(mo) - (ori_motion_block_of(mo, NULL) ? 1 : 0);
         int E = ori_mechanism_edge_count(m);
+        while (k > 1 && fk_any_folded_flat(ori_motion_frame_angles(mo, k - 1), E)) k--;
         if (k > 1 && E <= 64) {
             double start[64];
             memcpy(start, ori_motion_frame_angles(mo, k - 1), sizeof(double) * (size_t)E);
