@@ -602,6 +602,10 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     for (int i = 0; i < nlocks; ++i) all_locks[i] = def->locked_edges[i];
     double reported = 0.0; // the progress fraction last reported (kept monotone)
     bool cancelled = false;
+    // The distance to the goal after each of the last ORI_MULTIFOLD_STALL_STEPS accepted steps
+    // (a ring): a fold that creeps without approaching the goal stops on it.
+    double stall_ring[ORI_MULTIFOLD_STALL_STEPS];
+    int stall_n = 0;
     while (!done && !cancelled) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
@@ -647,6 +651,18 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             break;
         }
         double D = goal_distance(m, joint_var, th, goal);
+        if (stall_n >= ORI_MULTIFOLD_STALL_STEPS) {
+            double before = stall_ring[stall_n % ORI_MULTIFOLD_STALL_STEPS]; // ORI_MULTIFOLD_STALL_STEPS steps ago
+            if (before - D < ORI_MULTIFOLD_STALL_REL * before) {
+                mo->verdict = ORI_MULTIFOLD_STATIONARY;
+                snprintf(mo->reason, sizeof mo->reason,
+                         "the motion comes no nearer to the goal: over the last %d steps its distance to the goal "
+                         "fell by %.2g %% (it creeps along a valley of the distance); it got %.4g %% of the way",
+                         ORI_MULTIFOLD_STALL_STEPS, before > 0.0 ? 100.0 * (before - D) / before : 0.0,
+                         D0 > 0.0 ? 100.0 * (1.0 - D / D0) : 100.0);
+                break;
+            }
+        }
         for (;;) {
             double sc = fmin(1.0, h / pmax);
             memcpy(trial, th, sizeof(double) * (size_t)J);
@@ -680,6 +696,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 for (int j = 0; j < J; ++j) moved = fmax(moved, fabs(trial[j] - th[j]));
                 memcpy(th, trial, sizeof(double) * (size_t)J);
                 mo->steps++;
+                stall_ring[stall_n++ % ORI_MULTIFOLD_STALL_STEPS] = D; // the distance before this step
                 last_res = res;
                 since += moved;
                 recorded = false;
@@ -729,6 +746,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                     }
                 for (int v = 0; v < nvar; ++v) gvar[v] /= nj[v] ? nj[v] : 1;
                 mo->pinned++;
+                stall_n = 0; // new variables: a new distance
                 last_res = res;
                 recorded = false;
                 done = false;
