@@ -371,6 +371,36 @@ Test(fold_modes, origami_simulator_drawings, .init = test_leak_setup, .fini = te
     ori_pattern_destroy(p);
 }
 
+// A fold that creeps (the flat-folder grids and Sailboat: 50 Newton iterations a step of
+// 2e-5 rad, after which 200000 steps would reach 2 % of the way) stops on its pace, not the step
+// count: stationary within a few hundred steps, short of the goal, every frame closed, the
+// distance to the goal never growing, and the reason saying how far it got.
+Test(fold_modes, creeping_fold_stops_on_its_pace, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *files[] = {"flat-folder/grids_002_brown_2x2_D1.fold", "flat-folder/instagram_001_traditional_Sailboat.fold"};
+    for (int i = 0; i < 2; ++i) {
+        ori_pattern *p = test_load_pattern(test_require_shared(files[i]), 0);
+        ori_mechanism *m = test_mechanism_of(p);
+        ori_multifold *mf = fold_targets(m, 1.0, NULL);
+        cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_STATIONARY, "%s: %s", files[i], ori_multifold_reason(mf));
+        int steps, rejected, newton;
+        ori_multifold_stats(mf, &steps, &rejected, &newton);
+        cr_assert_lt(steps, 1000, "%s: %d steps", files[i], steps);
+        cr_assert_geq(steps, ORI_MULTIFOLD_STALL_STEPS);
+        int F = ori_multifold_frame_count(mf);
+        double last = ori_multifold_frame_progress(mf, F - 1);
+        cr_assert(last > 0.0 && last < 0.01, "%s: progress %g", files[i], last);
+        for (int f = 1; f < F; ++f)
+            cr_assert_geq(ori_multifold_frame_progress(mf, f), ori_multifold_frame_progress(mf, f - 1) - 1e-15);
+        check_frames(m, mf, ori_deg_to_rad(10.0));
+        cr_assert_not_null(strstr(ori_multifold_reason(mf), "of the way"));
+        cr_assert_not_null(strstr(ori_multifold_reason(mf), "a fold may take 200000"));
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+}
+
 // A sequence step of the percent kind: parsed, written back, run, recorded (progress as the
 // drive), and any instant restored exactly (closed, between the recorded states).
 Test(fold_modes, sequence_percent_step, .init = test_leak_setup, .fini = test_leak_check)
