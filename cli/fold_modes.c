@@ -170,9 +170,40 @@ static json_t *int_array(const int *v, int n)
     return a;
 }
 
+// The lock-set search of an underdetermined fold's hint, with a progress bar on stderr when it
+// runs over a second (a large flat sheet: seconds); when it finds none, the hint says so.
+static int lock_suggestion(const char *cmd, const ori_mechanism *m, const double *angles, const int *drives, int ndrives,
+                           const int *locked, int nlocked, const int *group, char *buf, size_t size, json_t **locks)
+{
+    buf[0] = '\0';
+    int cap = ori_mechanism_edge_count(m) + 1;
+    int *out = malloc(sizeof(int) * (size_t)cap);
+    ori_error err;
+    cli_progress bar;
+    cli_progress_begin(&bar, cmd, "looking for a lock set");
+    int n = ori_mechanism_lock_set_progress(m, angles, drives, ndrives, locked, nlocked, group, out, cap,
+                                            cli_progress_fn, &bar, &err);
+    cli_progress_end(&bar);
+    if (n > 0) {
+        cli_lock_text(out, n, buf, size);
+        if (locks) {
+            *locks = json_array();
+            for (int i = 0; i < n; ++i) json_array_append_new(*locks, json_integer(out[i]));
+        }
+    } else {
+        snprintf(buf, size,
+                 "no lock set found (%s); or start from a folded frame (--percent first, then --frame), or use "
+                 "--symmetric",
+                 n == 0 ? "the search locked nothing" : err.message);
+    }
+    free(out);
+    return n;
+}
+
 int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *buf, size_t size, json_t **locks)
 {
-    return cli_lock_hint(k->mech, def, buf, size, locks);
+    return lock_suggestion("fold", k->mech, def->start_angles_rad, &def->driven_edge, 1, def->locked_edges,
+                           def->locked_count, NULL, buf, size, locks);
 }
 
 struct cli_fold_modes {
@@ -561,13 +592,9 @@ static int solve(modes_run *r)
                      "exact; see orikin check --tolerance, and orikin regularize --rigid to make the drawing exact",
                      near, worst);
     }
-    if (v == ORI_MULTIFOLD_UNDERDETERMINED) {
-        int *sugg = malloc(sizeof(int) * (size_t)(E + 1));
-        int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, sugg,
-                                       E + 1, &err);
-        if (n > 0) cli_lock_text(sugg, n, r->hint, sizeof r->hint);
-        free(sugg);
-    }
+    if (v == ORI_MULTIFOLD_UNDERDETERMINED)
+        lock_suggestion(r->cmd, m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, r->hint,
+                        sizeof r->hint, NULL);
     return CLI_EXIT_OK;
 }
 

@@ -263,6 +263,51 @@ Test(fold_modes, miura_drives, .init = test_leak_setup, .fini = test_leak_check)
     ori_pattern_destroy(p);
 }
 
+typedef struct lock_progress {
+    int calls;
+    double last;
+    bool monotone;
+    int cancel_after; // cancel on this call (0: never)
+} lock_progress;
+
+static bool lock_progress_fn(double f, void *user)
+{
+    lock_progress *lp = user;
+    lp->monotone = lp->monotone && f >= lp->last && f <= 1.0;
+    lp->last = f;
+    return ++lp->calls != lp->cancel_after;
+}
+
+// ori_mechanism_lock_set_progress: the same set as ori_mechanism_lock_set, the progress monotone
+// and 1 at the end; cancelled, it returns -1 with ORI_ERR_LIMIT.
+Test(fold_modes, lock_set_progress, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = waterbomb(2);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m);
+    int drive = -1;
+    for (int e = 0; e < E && drive < 0; ++e)
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY) drive = e;
+    int *a = malloc(sizeof(int) * (size_t)E), *b = malloc(sizeof(int) * (size_t)E);
+    ori_error err;
+    int na = ori_mechanism_lock_set(m, NULL, &drive, 1, NULL, 0, NULL, a, E, &err);
+    lock_progress lp = {0, 0.0, true, 0};
+    int nb = ori_mechanism_lock_set_progress(m, NULL, &drive, 1, NULL, 0, NULL, b, E, lock_progress_fn, &lp, &err);
+    cr_assert_gt(na, 0);
+    cr_assert_eq(na, nb);
+    for (int i = 0; i < na; ++i) cr_assert_eq(a[i], b[i]);
+    cr_assert(lp.monotone);
+    cr_assert_geq(lp.calls, 2);
+    cr_assert_float_eq(lp.last, 1.0, 0.0);
+    lock_progress stop = {0, 0.0, true, 1};
+    cr_assert_eq(ori_mechanism_lock_set_progress(m, NULL, &drive, 1, NULL, 0, NULL, b, E, lock_progress_fn, &stop, &err), -1);
+    cr_assert_eq(err.status, ORI_ERR_LIMIT);
+    free(a);
+    free(b);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // The lock set turns an underdetermined single-drive fold into a one-degree-of-freedom fold that
 // moves (by the ordinary solver: ori_motion_solve), on the waterbomb base and tessellations.
 Test(fold_modes, lock_set_makes_one_dof, .init = test_leak_setup, .fini = test_leak_check)
