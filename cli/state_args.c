@@ -496,6 +496,7 @@ static int load_sequence(const char *cmd, const cli_state_args *a, cli_state *s)
     s->mech = s->kin.mech;
     s->has_flat = true;
     s->frame_count = 1;
+    if (ori_sequence_resolve(s->seq, s->kin.flat, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
     ori_sequence_fold first = ori_sequence_fold_at(s->seq, 0);
     if (first.fixed_face < 0 || first.fixed_face >= ori_mechanism_face_count(s->mech))
         return cli_input_fail(cmd, a->path, "folds 0: fix: face %d does not exist (%d faces)", first.fixed_face,

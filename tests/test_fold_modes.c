@@ -446,6 +446,58 @@ Test(fold_modes, creeping_fold_stops_on_its_pace, .init = test_leak_setup, .fini
     }
 }
 
+// Sequence files name faces and creases by index, name or point: the strings survive a round
+// trip through ori_sequence_to_json, ori_sequence_run refuses them until ori_sequence_resolve,
+// which gives the indices of examples/open-corner.seq.json (face 4 = Obj1212, creases 11 and 12),
+// and an unknown name fails naming the fold and field, leaving the sequence unchanged.
+Test(fold_modes, sequence_named_references, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *text = "{\"pattern\": \"open-corner.fold\", \"folds\": [{\"fix\": \"Obj1212\", \"lock\": [\"@1,0.5\"], "
+                       "\"drive\": \"@0.5,0.5\", \"to\": 180}, {\"fix\": \"@0.7,0.3\", \"lock\": [12], \"drive\": "
+                       "\"@1,0.5\", \"to\": 90}]}";
+    ori_sequence *s = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_parse(text, strlen(text), &s, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_sequence_fold_at(s, 0).fixed_face, ORI_NULL_INDEX);
+    char *json = ori_sequence_to_json(s);
+    cr_assert_not_null(strstr(json, "\"fix\":\"Obj1212\""), "%s", json);
+    cr_assert_not_null(strstr(json, "\"drive\":\"@0.5,0.5\""), "%s", json);
+    ori_buffer_free(json);
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_ERR_ARGUMENT);
+    cr_assert_null(r);
+    cr_assert_str_eq(err.field, "folds");
+    cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_OK, "%s", err.message);
+    ori_sequence_fold f0 = ori_sequence_fold_at(s, 0), f1 = ori_sequence_fold_at(s, 1);
+    cr_assert_eq(f0.fixed_face, 4);
+    cr_assert_eq(f0.driven_edge, 12);
+    cr_assert_eq(f0.locked_count, 1);
+    cr_assert_eq(f0.locked[0], 11);
+    cr_assert_eq(f1.fixed_face, 4);
+    cr_assert_eq(f1.driven_edge, 11);
+    cr_assert_eq(f1.locked[0], 12);
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    const char *bad = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 4, \"drive\": 12, \"to\": 90}, {\"fix\": \"Obj9\", "
+                      "\"drive\": \"@9,9\", \"to\": 90}]}";
+    cr_assert_eq(ori_sequence_parse(bad, strlen(bad), &s, &err), ORI_OK);
+    cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_ERR_RANGE);
+    cr_assert_str_eq(err.field, "folds");
+    cr_assert_eq(err.element, 1);
+    cr_assert_not_null(strstr(err.message, "fix: no face named Obj9"), "%s", err.message);
+    cr_assert_eq(ori_sequence_fold_at(s, 1).fixed_face, ORI_NULL_INDEX); // unchanged
+    ori_sequence_destroy(s);
+    const char *malformed = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 4, \"drive\": \"Obj3\", \"to\": 90}]}";
+    cr_assert_eq(ori_sequence_parse(malformed, strlen(malformed), &s, &err), ORI_ERR_TYPE);
+    cr_assert_not_null(strstr(err.message, "\"drive\" must be a FOLD edge index or \"@x,y\""), "%s", err.message);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // A sequence step of the percent kind: parsed, written back, run, recorded (progress as the
 // drive), and any instant restored exactly (closed, between the recorded states).
 Test(fold_modes, sequence_percent_step, .init = test_leak_setup, .fini = test_leak_check)
