@@ -170,6 +170,11 @@ int act_load(const char *cmd, const char *path, const act_opts *o, act_input *in
         memset(in, 0, sizeof *in);
         return rc;
     }
+    if (in->seq && ori_sequence_resolve(in->seq, in->k.flat, &err) != ORI_OK) { // names and points in SEQ.json
+        rc = cli_input_error(cmd, path, &err);
+        act_free(in);
+        return rc;
+    }
     in->materials = ori_materials_create();
     if (o->materials && ori_materials_load_file(in->materials, o->materials, &err) != ORI_OK) {
         rc = cli_input_error(cmd, o->materials, &err);

@@ -227,7 +227,8 @@ static int run(int argc, char **argv)
             rc = CLI_EXIT_NEGATIVE;
         }
         if (rc == CLI_EXIT_OK && !o.json)
-            printf("%s: fold crease %d to %g deg (step %g deg), face %d fixed\n", path, fa.drive, fa.to_deg, fa.step_deg, fa.fix);
+            printf("%s: fold crease %d to %g deg (step %g deg), face %d fixed%s\n", path, fa.drive, fa.to_deg, fa.step_deg, fa.fix,
+                   fa.fix_default ? CLI_FOLD_DEFAULT_FIX_NOTE : "");
     }
     if (rc == CLI_EXIT_OK && seq && !o.json)
         printf("%s: %d folds of %s\n", path, ori_sequence_fold_count(in.seq), in.pattern_path);
@@ -247,7 +248,7 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_actuate = {
     "actuate",
     "size hinges and Lorentz actuation along a fold or sequence: moments, currents, field schedule",
-    "usage: orikin actuate FILE --fix FACE --drive EDGE --to DEG [fold options] [options]\n"
+    "usage: orikin actuate FILE [--fix FACE] --drive EDGE --to DEG [fold options] [options]\n"
     "       orikin actuate SEQ.json [options]\n"
     "\n"
     "Size the elastoplastic hinges and the Lorentz-force actuation of a fold or of a fold\n"

@@ -158,7 +158,8 @@ static int run(int argc, char **argv)
             char why[256];
             cli_collision_describe(&coll, st.source == CLI_STATE_SEQUENCE, why, sizeof why);
             double t = coll.ev.time;
-            if (st.source == CLI_STATE_FOLD && m.count > 1) t = coll.ev.time / (ori_motion_frame_count(st.motion) - 1);
+            if (coll.progress) t = coll.ev.drive_rad; // a fold in one of the modes: times are its progress
+            else if (st.source == CLI_STATE_FOLD && m.count > 1) t = coll.ev.time / (ori_motion_frame_count(st.motion) - 1);
             printf("note: the motion collides: %s, %.3g s into the animation; the frames after it show faces "
                    "passing through each other (orikin %s stops there)\n",
                    why, duration * t / (m.duration > 0.0 ? m.duration : 1.0), st.source == CLI_STATE_SEQUENCE ? "sequence" : "fold");
@@ -192,6 +193,7 @@ const cli_command cli_cmd_animate = {
     "  --fix F --drive E --to DEG [--from DEG] [--lock E1,...] [--solver S] [--linear L]\n"
     "  [--frame N]          a fold (see orikin fold), from frame N's state. F: a face index,\n"
     "                       name (Obj12) or @x,y; E: a crease index or @x,y; --lock 3,@0.5,1,9\n"
+    CLI_STATE_MODES_HELP
     "  --fps N              frames per second, 1 to 50 (default 15)\n"
     "  --duration S         seconds the motion takes, up to 3600 (default 3)\n"
     "  --size WxH           image size in pixels (default 800x600)\n"

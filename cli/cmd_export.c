@@ -161,6 +161,7 @@ const cli_command cli_cmd_export = {
     "  [--linear L]         a fold (see orikin fold); its last step, or with --animate every step.\n"
     "                       F: a face index, name (Obj12) or @x,y; E: a crease index or @x,y;\n"
     "                       --lock 3,@0.5,1,9\n"
+    CLI_STATE_MODES_HELP
     "  --at T               the instant T of a fold sequence (default: its end)\n"
     "  --thickness T        a closed solid T thick (pattern units); 0 = a two-sided sheet\n"
     "  --animate            the whole motion as a glTF animation (.gltf or .glb only)\n"

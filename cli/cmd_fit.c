@@ -133,7 +133,7 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_fit = {
     "fit",
     "transfer functions: polynomials of the constrained crease angles in the driven angle",
-    "usage: orikin fit FILE --fix FACE --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
+    "usage: orikin fit FILE [--fix FACE] --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
     "                  [--lock E1,E2,...] [--degree D] [--refine R] [--frame N] [--json]\n"
     "                  [-o OUT.fold]\n"
     "\n"

@@ -22,7 +22,8 @@ static void print_text(const cli_fold_args *a, const cli_kin *k, const ori_motio
     const ori_mechanism *m = k->mech;
     int E = ori_mechanism_edge_count(m), F = cli_collide_frames(col, ori_motion_frame_count(mo));
     ori_motion_stats st = ori_motion_stats_of(mo);
-    printf("%s: fold crease %d to %g deg (step %g deg), face %d fixed", a->path, a->drive, a->to_deg, a->step_deg, a->fix);
+    printf("%s: fold crease %d to %g deg (step %g deg), face %d fixed%s", a->path, a->drive, a->to_deg, a->step_deg, a->fix,
+           a->fix_default ? CLI_FOLD_DEFAULT_FIX_NOTE : "");
     if (a->lock_count) {
         printf(", locked");
         for (int i = 0; i < a->lock_count; ++i) printf("%s%d", i ? "," : " ", a->locks[i]);
@@ -215,7 +216,7 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_fold = {
     "fold",
     "fold rigidly: fix a face, lock creases, drive a crease; motion, branch and validity",
-    "usage: orikin fold FILE --fix FACE --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
+    "usage: orikin fold FILE [--fix FACE] --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
     "                   [--lock E1,E2,...] [--frame N] [--solver S] [--linear L]\n"
     "                   [--no-collisions] [--clearance D] [--force] [--json] [-o OUT]\n"
     "\n"
@@ -237,7 +238,8 @@ const cli_command cli_cmd_fold = {
     "Exit 0 valid, 1 invalid / not foldable / underdetermined / blocked / collision, 3 bad input.\n"
     "\n"
     "options:\n"
-    "  --fix FACE      face held fixed: FOLD index, name (Obj12) or @x,y (the face there)\n"
+    "  --fix FACE      face held fixed: FOLD index, name (Obj12) or @x,y (the face there);\n"
+    "                  default: the face at the centre of the sheet's bounding box (named)\n"
     "  --drive EDGE    driven crease: FOLD index or @x,y (the crease through the point)\n"
     "  --to DEG        final angle of the driven crease, -180 to 180\n"
     "  --from DEG      output from this angle (reached first, silently); default: current\n"

@@ -142,6 +142,7 @@ const cli_command cli_cmd_render = {
     "  --fix F --drive E --to DEG [--from DEG] [--step DEG] [--lock E1,...] [--solver S]\n"
     "  [--linear L]         a fold (see orikin fold); the state is its last step. F: a face index,\n"
     "                       name (Obj12) or @x,y; E: a crease index or @x,y; --lock 3,@0.5,1,9\n"
+    CLI_STATE_MODES_HELP
     "  --at T               the instant T of a fold sequence (default: its end)\n"
     "  --view cp|3d         the crease pattern or the posed sheet\n"
     "  --camera PRESET      iso (default), top, front, side or bottom\n"

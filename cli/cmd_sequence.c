@@ -226,6 +226,14 @@ static int run(int argc, char **argv)
         ori_sequence_destroy(s);
         return rc;
     }
+    // Faces and creases named by name or point ("fix": "Obj12", "drive": "@x,y"): against the pattern.
+    if (ori_sequence_resolve(s, k.flat, &err) != ORI_OK) {
+        rc = cli_input_error("sequence", a.path, &err);
+        cli_kin_free(&k);
+        free(pattern);
+        ori_sequence_destroy(s);
+        return rc;
+    }
     ori_sequence_fold first = ori_sequence_fold_at(s, 0);
     ori_rigid pose = ori_rigid_identity();
     if (first.fixed_face < 0 || first.fixed_face >= ori_mechanism_face_count(k.mech)) {

@@ -14,11 +14,14 @@
 #define MODES_NEAR_KAWASAKI_RAD 1e-3
 // A crease within this of its goal counts as at its goal in the text summary (radians).
 #define MODES_AT_GOAL_RAD 1e-7
+// Fractions of the way closer than this are a tie for "farthest" (the lowest crease is named).
+#define MODES_FRACTION_TIE 1e-9
 
 typedef struct modes_args {
     const char *path;
     const char *fix_spec;
     int fix;
+    bool fix_default; // no --fix: the face at the sheet's centre
     bool has_percent;
     double percent;
     int drives[MODES_MAX_LIST], ndrives;
@@ -64,9 +67,8 @@ static int parse_double_list(const char *s, double *out, int cap)
     }
 }
 
-static int parse(int argc, char **argv, modes_args *a)
+static int parse(const char *cmd, int argc, char **argv, modes_args *a)
 {
-    const char *cmd = "fold";
     memset(a, 0, sizeof *a);
     a->step_deg = 10.0;
     cli_seen seen = {0};
@@ -135,7 +137,6 @@ static int parse(int argc, char **argv, modes_args *a)
         }
     }
     if (!a->path) return cli_usage(cmd, "missing FILE");
-    if (!a->fix_spec) return cli_usage(cmd, "missing --fix FACE");
     if (a->has_percent) {
         if (a->ndrives || a->nto || a->nratio)
             return cli_usage(cmd, "--percent folds every crease toward its target: no --drive, --to or --ratio with it");
@@ -169,12 +170,44 @@ static json_t *int_array(const int *v, int n)
     return a;
 }
 
-int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *buf, size_t size, json_t **locks)
+// The lock-set search of an underdetermined fold's hint, with a progress bar on stderr when it
+// runs over a second (a large flat sheet: seconds); when it finds none, the hint says so.
+static int lock_suggestion(const char *cmd, const ori_mechanism *m, const double *angles, const int *drives, int ndrives,
+                           const int *locked, int nlocked, const int *group, char *buf, size_t size, json_t **locks)
 {
-    return cli_lock_hint(k->mech, def, buf, size, locks);
+    buf[0] = '\0';
+    int cap = ori_mechanism_edge_count(m) + 1;
+    int *out = malloc(sizeof(int) * (size_t)cap);
+    ori_error err;
+    cli_progress bar;
+    cli_progress_begin(&bar, cmd, "looking for a lock set");
+    int n = ori_mechanism_lock_set_progress(m, angles, drives, ndrives, locked, nlocked, group, out, cap,
+                                            cli_progress_fn, &bar, &err);
+    cli_progress_end(&bar);
+    if (n > 0) {
+        cli_lock_text(out, n, buf, size);
+        if (locks) {
+            *locks = json_array();
+            for (int i = 0; i < n; ++i) json_array_append_new(*locks, json_integer(out[i]));
+        }
+    } else {
+        snprintf(buf, size,
+                 "no lock set found (%s); or start from a folded frame (--percent first, then --frame), or use "
+                 "--symmetric",
+                 n == 0 ? "the search locked nothing" : err.message);
+    }
+    free(out);
+    return n;
 }
 
-typedef struct modes_run {
+int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *buf, size_t size, json_t **locks)
+{
+    return lock_suggestion("fold", k->mech, def->start_angles_rad, &def->driven_edge, 1, def->locked_edges,
+                           def->locked_count, NULL, buf, size, locks);
+}
+
+struct cli_fold_modes {
+    const char *cmd;
     modes_args a;
     cli_kin k;
     int *group;      // symmetry orbits (edge_count) or NULL
@@ -185,7 +218,8 @@ typedef struct modes_run {
     char hint[1024]; // an underdetermined fold's lock suggestion
     cli_collide_opts co;
     cli_collision col; // the motion's self-collision check (--no-collisions: unchecked)
-} modes_run;
+};
+typedef struct cli_fold_modes modes_run;
 
 // Frames shown and written: all of them, or those before the first collision.
 static int shown_frames(const modes_run *r) { return cli_collide_frames(&r->col, ori_multifold_frame_count(r->mf)); }
@@ -211,7 +245,29 @@ static int moving_creases(const modes_run *r, int *cols, int cap, int *total)
 typedef struct crease_row {
     int edge;
     double start, target, goal, reached, fraction;
+    bool still; // short of its goal and not moved from its start (within ORI_TOL_FOLD_SIGN_RAD)
 } crease_row;
+
+// The text summary of the rows: how many reached their goal, how many stayed at their start
+// while short of it, and the moving crease farthest from its goal by fraction of its way (the
+// lowest fraction; -1 when every moving crease is at its goal).
+typedef struct crease_summary {
+    int at, still, farthest;
+} crease_summary;
+
+static crease_summary summarize_creases(crease_row *rows, int n)
+{
+    crease_summary cs = {0, 0, -1};
+    for (int i = 0; i < n; ++i) {
+        crease_row *c = &rows[i];
+        bool at = fabs(c->reached - c->goal) <= MODES_AT_GOAL_RAD;
+        c->still = !at && fabs(c->reached - c->start) <= ORI_TOL_FOLD_SIGN_RAD;
+        if (at) cs.at++;
+        else if (c->still) cs.still++;
+        else if (cs.farthest < 0 || c->fraction < rows[cs.farthest].fraction - MODES_FRACTION_TIE) cs.farthest = i;
+    }
+    return cs;
+}
 
 static int crease_rows(const modes_run *r, crease_row *rows)
 {
@@ -228,7 +284,7 @@ static int crease_rows(const modes_run *r, crease_row *rows)
         if (j == ORI_NULL_INDEX || ori_mechanism_joint(m, j).kind != ORI_JOINT_REVOLUTE) continue;
         // Drives: the driven creases only (the others have no goal of their own).
         if (!r->a.has_percent && fabs(goal[e] - a0[e]) <= ORI_TOL_TARGET_RAD) continue;
-        crease_row c = {e, a0[e], r->a.has_percent ? target[e] : goal[e], goal[e], a1[e], 1.0};
+        crease_row c = {e, a0[e], r->a.has_percent ? target[e] : goal[e], goal[e], a1[e], 1.0, false};
         double span = c.goal - c.start;
         if (fabs(span) > ORI_TOL_TARGET_RAD) c.fraction = (c.reached - c.start) / span;
         else c.fraction = fabs(c.reached - c.start) <= ORI_TOL_FOLD_SIGN_RAD ? 1.0 : 0.0;
@@ -345,12 +401,12 @@ static void print_text(const modes_run *r)
     const ori_multifold *mf = r->mf;
     int E = ori_mechanism_edge_count(r->k.mech), F = shown_frames(r);
     if (a->has_percent) {
-        printf("%s: fold toward the targets, %g %% of the way (step %g deg), face %d fixed", a->path, a->percent,
-               a->step_deg, a->fix);
+        printf("%s: fold toward the targets, %g %% of the way (step %g deg), face %d fixed%s", a->path, a->percent,
+               a->step_deg, a->fix, a->fix_default ? CLI_FOLD_DEFAULT_FIX_NOTE : "");
     } else {
         printf("%s: drive", a->path);
         for (int i = 0; i < a->ndrives; ++i) printf("%s crease %d to %g deg", i ? "," : "", a->drives[i], a->to[i]);
-        printf(" together (step %g deg), face %d fixed", a->step_deg, a->fix);
+        printf(" together (step %g deg), face %d fixed%s", a->step_deg, a->fix, a->fix_default ? CLI_FOLD_DEFAULT_FIX_NOTE : "");
     }
     if (r->nlocks) {
         printf(", locked%s", a->lock_auto ? " (auto)" : "");
@@ -398,17 +454,20 @@ static void print_text(const modes_run *r)
     }
     free(ag);
     crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
-    int nr = crease_rows(r, rows), at = 0, worst = -1;
-    for (int i = 0; i < nr; ++i) {
-        if (fabs(rows[i].reached - rows[i].goal) <= MODES_AT_GOAL_RAD) at++;
-        if (worst < 0 || fabs(rows[i].reached - rows[i].goal) > fabs(rows[worst].reached - rows[worst].goal)) worst = i;
-    }
+    int nr = crease_rows(r, rows);
+    crease_summary cs = summarize_creases(rows, nr);
     if (nr > 0) {
-        printf("creases: %d of %d at their goal", at, nr);
-        if (worst >= 0 && at < nr)
-            printf("; farthest: crease %d at %.6g deg, goal %.6g deg (fraction %.4f)", rows[worst].edge,
-                   ori_rad_to_deg_output(rows[worst].reached), ori_rad_to_deg_output(rows[worst].goal),
-                   rows[worst].fraction);
+        printf("creases: %d of %d at their goal", cs.at, nr);
+        if (cs.farthest >= 0)
+            printf("; farthest of the moving: crease %d at %.6g deg, goal %.6g deg (fraction %.4f)", rows[cs.farthest].edge,
+                   ori_rad_to_deg_output(rows[cs.farthest].reached), ori_rad_to_deg_output(rows[cs.farthest].goal),
+                   rows[cs.farthest].fraction);
+        if (cs.still) {
+            printf("; %d did not move from their start:", cs.still);
+            for (int i = 0, k = 0; i < nr && k < 8; ++i)
+                if (rows[i].still) printf("%s%d", k++ ? "," : " ", rows[i].edge);
+            printf("%s (the rigid motion from this start leaves them there)", cs.still > 8 ? ",..." : "");
+        }
         printf(" (per crease: --json)\n");
     }
     free(rows);
@@ -441,7 +500,7 @@ static int check_edge(const modes_run *r, const char *option, int e)
 {
     int E = ori_mechanism_edge_count(r->k.mech);
     if (e < 0 || e >= E)
-        return cli_value_fail("fold", r->a.path, option, "no edge %d (the pattern has edges 0 to %d)", e, E - 1);
+        return cli_value_fail(r->cmd, r->a.path, option, "no edge %d (the pattern has edges 0 to %d)", e, E - 1);
     return CLI_EXIT_OK;
 }
 
@@ -451,7 +510,7 @@ static int solve(modes_run *r)
     const ori_mechanism *m = r->k.mech;
     int E = ori_mechanism_edge_count(m);
     ori_rigid pose;
-    int rc = cli_kin_fixed_pose("fold", a->path, &r->k, a->fix, &pose);
+    int rc = cli_kin_fixed_pose(r->cmd, a->path, &r->k, a->fix, &pose);
     if (rc != CLI_EXIT_OK) return rc;
     for (int i = 0; i < a->nlocks; ++i)
         if ((rc = check_edge(r, "--lock", a->locks[i])) != CLI_EXIT_OK) return rc;
@@ -469,12 +528,12 @@ static int solve(modes_run *r)
     if (a->lock_auto) {
         int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, a->locks, a->nlocks, r->group,
                                        r->locks + r->nlocks, E + 1 - r->nlocks, &err);
-        if (n < 0) return cli_input_error("fold", a->path, &err);
+        if (n < 0) return cli_input_error(r->cmd, a->path, &err);
         r->nlocks += n;
     }
     ori_status st;
     cli_progress bar; // a large sheet's solve may run for minutes
-    cli_progress_begin(&bar, "fold", "solving");
+    cli_progress_begin(&bar, r->cmd, "solving");
     if (a->has_percent) {
         ori_target_fold_def d = ori_default_target_fold_def();
         d.fixed_face = a->fix;
@@ -510,8 +569,8 @@ static int solve(modes_run *r)
     if (st != ORI_OK) {
         // A driven or locked crease the fold cannot use is a command-line value: usage error.
         for (int i = 0; i < a->ndrives && strcmp(err.field, "edges_vertices") == 0; ++i)
-            if (err.element == a->drives[i]) return cli_value_fail("fold", a->path, "--drive", "%s", err.message);
-        rc = cli_input_error("fold", a->path, &err);
+            if (err.element == a->drives[i]) return cli_value_fail(r->cmd, a->path, "--drive", "%s", err.message);
+        rc = cli_input_error(r->cmd, a->path, &err);
         return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
     }
     // A drawing with rounded coordinates is rigid where its exact design folds: say so.
@@ -533,13 +592,9 @@ static int solve(modes_run *r)
                      "exact; see orikin check --tolerance, and orikin regularize --rigid to make the drawing exact",
                      near, worst);
     }
-    if (v == ORI_MULTIFOLD_UNDERDETERMINED) {
-        int *sugg = malloc(sizeof(int) * (size_t)(E + 1));
-        int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, sugg,
-                                       E + 1, &err);
-        if (n > 0) cli_lock_text(sugg, n, r->hint, sizeof r->hint);
-        free(sugg);
-    }
+    if (v == ORI_MULTIFOLD_UNDERDETERMINED)
+        lock_suggestion(r->cmd, m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, r->hint,
+                        sizeof r->hint, NULL);
     return CLI_EXIT_OK;
 }
 
@@ -579,10 +634,142 @@ static int single_drive_auto(modes_run *r, int argc, char **argv)
     return rc;
 }
 
+// Load the pattern, resolve the faces and creases named, and solve (not the single-drive
+// --lock auto hand-over, which the fold command does itself).
+static int load_resolve(modes_run *r)
+{
+    const char *cmd = r->cmd;
+    int rc = cli_kin_load(cmd, r->a.path, r->a.frame, &r->k);
+    if (rc != CLI_EXIT_OK) return rc;
+    if (r->a.fix_spec) {
+        rc = cli_spec_face(cmd, r->a.path, r->k.flat, "--fix", r->a.fix_spec, &r->a.fix);
+    } else { // no --fix: the face at the sheet's centre
+        r->a.fix = cli_fold_default_fix(r->k.flat);
+        r->a.fix_default = true;
+    }
+    if (rc == CLI_EXIT_OK && r->a.drive_spec) { // the drives in order, repeats kept (refused by the solve)
+        r->a.ndrives = cli_spec_edges(cmd, r->a.path, r->k.flat, "--drive", r->a.drive_spec, false, r->a.drives, MODES_MAX_LIST);
+        if (r->a.ndrives < 0) rc = -r->a.ndrives;
+    }
+    if (rc == CLI_EXIT_OK && r->a.lock_spec) {
+        r->a.nlocks = cli_spec_edges(cmd, r->a.path, r->k.flat, "--lock", r->a.lock_spec, true, r->a.locks, MODES_MAX_LIST);
+        if (r->a.nlocks < 0) rc = -r->a.nlocks;
+    }
+    return rc;
+}
+
+int cli_fold_modes_open(const char *cmd, int argc, char **argv, cli_fold_modes **out)
+{
+    *out = NULL;
+    modes_run *r = calloc(1, sizeof *r);
+    if (!r) return cli_usage(cmd, "out of memory");
+    r->cmd = cmd;
+    int rc = parse(cmd, argc, argv, &r->a);
+    if (rc != CLI_EXIT_OK) {
+        free(r);
+        return rc;
+    }
+    *out = r;
+    return CLI_EXIT_OK;
+}
+
+int cli_fold_modes_solve(cli_fold_modes *r)
+{
+    int rc = load_resolve(r);
+    if (rc == CLI_EXIT_OK) rc = solve(r);
+    return rc;
+}
+
+int cli_fold_modes_resolve_step(cli_fold_modes *r, double step_deg)
+{
+    if (!(step_deg > 0.0)) return CLI_EXIT_OK;
+    ori_multifold *old = r->mf;
+    double keep = r->a.step_deg;
+    int *keep_locks = r->locks, keep_n = r->nlocks, *keep_group = r->group;
+    r->mf = NULL;
+    r->locks = NULL;
+    r->group = NULL;
+    r->a.step_deg = step_deg;
+    int rc = solve(r);
+    if (rc != CLI_EXIT_OK) { // keep the first solve
+        ori_multifold_destroy(r->mf);
+        free(r->locks);
+        free(r->group);
+        r->mf = old;
+        r->locks = keep_locks;
+        r->nlocks = keep_n;
+        r->group = keep_group;
+        r->a.step_deg = keep;
+        return rc;
+    }
+    ori_multifold_destroy(old);
+    free(keep_locks);
+    free(keep_group);
+    return CLI_EXIT_OK;
+}
+
+const ori_multifold *cli_fold_modes_result(const cli_fold_modes *r) { return r->mf; }
+cli_kin *cli_fold_modes_kin(cli_fold_modes *r) { return &r->k; }
+int cli_fold_modes_fixed_face(const cli_fold_modes *r) { return r->a.fix; }
+bool cli_fold_modes_fix_default(const cli_fold_modes *r) { return r->a.fix_default; }
+
+const int *cli_fold_modes_locks(const cli_fold_modes *r, int *count)
+{
+    *count = r->nlocks;
+    return r->locks;
+}
+
+double cli_fold_modes_span(const cli_fold_modes *r)
+{
+    const ori_multifold *mf = r->mf;
+    if (!mf || ori_multifold_frame_count(mf) == 0) return 0.0;
+    int E = ori_mechanism_edge_count(r->k.mech);
+    const double *a0 = ori_multifold_frame_angles(mf, 0), *goal = ori_multifold_goal(mf);
+    double span = 0.0;
+    for (int e = 0; e < E; ++e) span = fmax(span, fabs(goal[e] - a0[e]));
+    return ori_rad_to_deg(span);
+}
+
+void cli_fold_modes_label(const cli_fold_modes *r, char *buf, size_t size)
+{
+    const modes_args *a = &r->a;
+    const ori_multifold *mf = r->mf;
+    int F = mf ? ori_multifold_frame_count(mf) : 0;
+    double reached = F ? 100.0 * ori_multifold_frame_progress(mf, F - 1) : 0.0;
+    if (a->has_percent) {
+        snprintf(buf, size, "toward the targets, %g %%", a->percent);
+    } else {
+        size_t w = (size_t)snprintf(buf, size, "creases");
+        for (int i = 0; i < a->ndrives && w < size; ++i)
+            w += (size_t)snprintf(buf + w, size - w, "%s%d", i ? "," : " ", a->drives[i]);
+        if (w < size) w += (size_t)snprintf(buf + w, size - w, " to");
+        for (int i = 0; i < a->ndrives && w < size; ++i)
+            w += (size_t)snprintf(buf + w, size - w, "%s%g", i ? "," : " ", a->to[i]);
+        if (w < size) snprintf(buf + w, size - w, " deg");
+    }
+    if (mf && ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED) {
+        size_t w = strlen(buf);
+        if (w < size)
+            snprintf(buf + w, size - w, " (%s at %.3g %% of the way)", ori_multifold_verdict_name(ori_multifold_verdict_of(mf)),
+                     reached);
+    }
+}
+
+void cli_fold_modes_free(cli_fold_modes *r)
+{
+    if (!r) return;
+    ori_multifold_destroy(r->mf);
+    free(r->group);
+    free(r->locks);
+    cli_kin_free(&r->k);
+    free(r);
+}
+
 int cli_fold_modes_run(int argc, char **argv)
 {
     modes_run r;
     memset(&r, 0, sizeof r);
+    r.cmd = "fold";
     // The collision options come out of a copy: --lock auto with one drive hands the original
     // command line to the ordinary fold, which takes them itself.
     char **av = malloc(sizeof(char *) * (size_t)(argc + 1));
@@ -590,20 +777,10 @@ int cli_fold_modes_run(int argc, char **argv)
     av[argc] = NULL;
     int ac = argc;
     int rc = cli_collide_strip("fold", &ac, av, &r.co);
-    if (rc == CLI_EXIT_OK) rc = parse(ac, av, &r.a);
+    if (rc == CLI_EXIT_OK) rc = parse("fold", ac, av, &r.a);
     free(av);
     if (rc != CLI_EXIT_OK) return rc;
-    rc = cli_kin_load("fold", r.a.path, r.a.frame, &r.k);
-    if (rc != CLI_EXIT_OK) return rc;
-    rc = cli_spec_face("fold", r.a.path, r.k.flat, "--fix", r.a.fix_spec, &r.a.fix);
-    if (rc == CLI_EXIT_OK && r.a.drive_spec) { // the drives in order, repeats kept (refused by the solve)
-        r.a.ndrives = cli_spec_edges("fold", r.a.path, r.k.flat, "--drive", r.a.drive_spec, false, r.a.drives, MODES_MAX_LIST);
-        if (r.a.ndrives < 0) rc = -r.a.ndrives;
-    }
-    if (rc == CLI_EXIT_OK && r.a.lock_spec) {
-        r.a.nlocks = cli_spec_edges("fold", r.a.path, r.k.flat, "--lock", r.a.lock_spec, true, r.a.locks, MODES_MAX_LIST);
-        if (r.a.nlocks < 0) rc = -r.a.nlocks;
-    }
+    rc = load_resolve(&r);
     if (rc == CLI_EXIT_OK && r.a.lock_auto && r.a.ndrives == 1 && !r.a.symmetric && !r.a.has_percent) {
         rc = single_drive_auto(&r, argc, argv);
         cli_kin_free(&r.k);

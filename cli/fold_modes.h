@@ -14,6 +14,34 @@ bool cli_fold_modes_wanted(int argc, char **argv);
 // Run `orikin fold` in one of the modes; returns the exit code.
 int cli_fold_modes_run(int argc, char **argv);
 
+// The modes as a state for the commands that show one (render, animate, export, collide through
+// cli/state_args.c): the same parsing and solve as `orikin fold`, without its output.
+typedef struct cli_fold_modes cli_fold_modes;
+// Parse the fold options of argv (argv[0] the command, then FILE and the options: the modes' and
+// --fix, --lock, --step, --frame) for command cmd. Prints a usage error and returns its code, or
+// CLI_EXIT_OK with *out allocated (cli_fold_modes_free).
+int cli_fold_modes_open(const char *cmd, int argc, char **argv, cli_fold_modes **out);
+// Load FILE, resolve faces and creases (no --fix: cli_fold_default_fix) and solve. Prints the
+// error and returns its exit code on failure; a fold that stops short is not a failure (see the
+// result's verdict).
+int cli_fold_modes_solve(cli_fold_modes *r);
+// Solve again with output frames every step_deg (largest crease change between frames); on
+// failure the first solve is kept and the exit code returned (after the message).
+int cli_fold_modes_resolve_step(cli_fold_modes *r, double step_deg);
+// The result (owned by r), the loaded pattern and mechanism (owned by r), the fixed face (and
+// whether it is the default), the creases held fixed (given and automatic; owned by r).
+const ori_multifold *cli_fold_modes_result(const cli_fold_modes *r);
+cli_kin *cli_fold_modes_kin(cli_fold_modes *r);
+int cli_fold_modes_fixed_face(const cli_fold_modes *r);
+bool cli_fold_modes_fix_default(const cli_fold_modes *r);
+const int *cli_fold_modes_locks(const cli_fold_modes *r, int *count);
+// Largest change of any crease from the start to the goal (degrees).
+double cli_fold_modes_span(const cli_fold_modes *r);
+// What the fold is, for a picture's label: "toward the targets, 100 %", "creases 3,7 to 90,-90 deg",
+// followed by the verdict when it stopped short.
+void cli_fold_modes_label(const cli_fold_modes *r, char *buf, size_t size);
+void cli_fold_modes_free(cli_fold_modes *r);
+
 // A lock set that leaves the single-drive fold `def` one degree of freedom, as the text
 // "lock N more creases, e.g. --lock a,b,c" into buf (empty when none is found), and as a JSON
 // array when locks is not NULL (NULL stays NULL then). Returns the count, or -1.

@@ -47,6 +47,11 @@ int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const
                   int *face);
 int cli_spec_edge(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
                   int *edge);
+// The face held fixed when a fold gives no --fix: the face containing the centre of the flat
+// sheet's bounding box, else the face whose vertex centroid is nearest to it.
+int cli_fold_default_fix(const ori_pattern *p);
+// What the text output appends after "face N fixed" when N is that default.
+#define CLI_FOLD_DEFAULT_FIX_NOTE " (the face at the sheet's centre; --fix to choose)"
 // The number of creases in a list (the syntax only, nothing resolved), or -1 when malformed.
 int cli_spec_edge_count(const char *spec);
 // Resolve a list of at most cap creases into out (unique: drop repeats, e.g. the same crease
@@ -61,6 +66,7 @@ typedef struct cli_fold_args {
     const char *path;
     int fix, drive;
     bool has_fix, has_drive, has_to, has_from;
+    bool fix_default;     // no --fix: fix is cli_fold_default_fix (set by cli_fold_resolve)
     double to_deg, from_deg, step_deg;
     int locks[CLI_FOLD_MAX_LOCKS];
     int lock_count;

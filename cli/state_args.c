@@ -8,9 +8,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fold_modes.h"
 #include "progress.h"
 
-static const char *const fold_options[] = {"--fix", "--drive", "--to", "--from", "--step", "--lock", "--solver", "--linear"};
+// The fold options (with a value), those of the modes included; --symmetric takes none.
+static const char *const fold_options[] = {"--fix",  "--drive",  "--to",      "--from",  "--step",
+                                           "--lock", "--solver", "--linear", "--percent", "--ratio"};
 
 void cli_state_args_init(cli_state_args *a)
 {
@@ -56,12 +59,22 @@ int cli_state_option(const char *cmd, int argc, char **argv, int *i, cli_state_a
         a->has_at = true;
         return 1;
     }
-    if (is_fold_option(o)) {
-        for (int k = 2; k < a->fold_argc; k += 2)
+    bool flag = strcmp(o, "--symmetric") == 0;
+    if (flag || is_fold_option(o)) {
+        for (int k = 2; k < a->fold_argc; ++k) // options and values: a value never starts with "--"
             if (strcmp(a->fold_argv[k], o) == 0) {
                 *rc = cli_usage(cmd, "%s given twice", o);
                 return -1;
             }
+        if (flag) {
+            if (a->fold_argc == 0) a->fold_argc = 2;
+            if (a->fold_argc + 1 > CLI_STATE_MAX_FOLD_ARGS) {
+                *rc = cli_usage(cmd, "too many fold options");
+                return -1;
+            }
+            a->fold_argv[a->fold_argc++] = (char *)o;
+            return 1;
+        }
         const char *v = cli_option_value(cmd, argc, argv, i);
         if (!v) {
             *rc = CLI_EXIT_USAGE;
@@ -128,7 +141,19 @@ int cli_state_finish(const char *cmd, cli_state_args *a)
         a->fold_argv[n++] = (char *)"--frame";
         a->fold_argv[n++] = a->frame_text;
     }
-    int rc = cli_fold_parse(cmd, n, a->fold_argv, false, &a->fold);
+    a->fold_argc_all = n;
+    int rc;
+    if (cli_fold_modes_wanted(n, a->fold_argv)) {
+        // Toward the targets, several drives, --lock auto, --symmetric: `orikin fold`'s modes
+        // (fold_modes.c), parsed here for the usage errors and again when loading.
+        cli_fold_modes *probe = NULL;
+        if ((rc = cli_fold_modes_open(cmd, n, a->fold_argv, &probe)) != CLI_EXIT_OK) return rc;
+        cli_fold_modes_free(probe);
+        a->modes = true;
+        a->source = CLI_STATE_FOLD;
+        return CLI_EXIT_OK;
+    }
+    rc = cli_fold_parse(cmd, n, a->fold_argv, false, &a->fold);
     if (rc != CLI_EXIT_OK) return rc;
     a->source = CLI_STATE_FOLD;
     return CLI_EXIT_OK;
@@ -141,7 +166,10 @@ void cli_state_free(cli_state *s)
     ori_motion_destroy(s->motion);
     ori_record_destroy(s->record);
     ori_sequence_destroy(s->seq);
-    if (s->has_kin) {
+    if (s->modes) {
+        // The pattern and the mechanism belong to the modes' solve.
+        cli_fold_modes_free(s->modes);
+    } else if (s->has_kin) {
         // The pattern and the mechanism belong to kin.
         cli_kin_free(&s->kin);
     } else {
@@ -342,6 +370,58 @@ static int load_frame_pose(const char *cmd, const cli_state_args *a, bool need_p
     return CLI_EXIT_OK;
 }
 
+// Face poses of a state of a fold in one of the modes: forward kinematics from its fixed face.
+// placed where the frame's positions have it.
+static void modes_poses(const cli_state *s, const double *angles, const ori_v3 *pos, ori_rigid *poses)
+{
+    int f = cli_fold_modes_fixed_face(s->modes);
+    ori_rigid g = ori_rigid_identity();
+    ori_error err;
+    if (ori_mechanism_face_pose_from_coords(s->mech, f, pos, &g, &err) != ORI_OK) g = ori_rigid_identity();
+    ori_mechanism_face_poses(s->mech, angles, f, g, poses);
+}
+
+// A fold in one of the modes (--percent, several drives, --lock auto, --symmetric): its last
+// frame (the goal, or where the motion stopped short: said on stderr).
+static int load_modes(const char *cmd, const cli_state_args *a, cli_state *s)
+{
+    int rc = cli_fold_modes_open(cmd, a->fold_argc_all, (char **)a->fold_argv, &s->modes);
+    if (rc == CLI_EXIT_OK) rc = cli_fold_modes_solve(s->modes);
+    if (rc != CLI_EXIT_OK) return rc;
+    cli_kin *k = cli_fold_modes_kin(s->modes);
+    s->pattern = k->flat;
+    s->mech = k->mech;
+    s->has_flat = true;
+    s->frame_count = 1;
+    const ori_multifold *mf = cli_fold_modes_result(s->modes);
+    int nf = ori_multifold_frame_count(mf);
+    ori_multifold_verdict v = ori_multifold_verdict_of(mf);
+    if (v != ORI_MULTIFOLD_REACHED && nf < 2) {
+        fprintf(stderr, "orikin %s: %s: the fold is %s: %s\n", cmd, a->path, ori_multifold_verdict_name(v),
+                ori_multifold_reason(mf));
+        return CLI_EXIT_NEGATIVE;
+    }
+    if (v != ORI_MULTIFOLD_REACHED)
+        fprintf(stderr, "orikin %s: note: %s: the fold stops short (%s: %s); showing where it stops, %.3g %% of the way\n",
+                cmd, a->path, ori_multifold_verdict_name(v), ori_multifold_reason(mf),
+                100.0 * ori_multifold_frame_progress(mf, nf - 1));
+    if (cli_fold_modes_fix_default(s->modes))
+        fprintf(stderr, "orikin %s: note: face %d fixed%s\n", cmd, cli_fold_modes_fixed_face(s->modes),
+                CLI_FOLD_DEFAULT_FIX_NOTE);
+    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
+    s->positions = xcalloc((size_t)V, sizeof(ori_v3));
+    s->poses = xcalloc((size_t)F, sizeof(ori_rigid));
+    s->angles = xcalloc((size_t)E, sizeof(double));
+    ori_multifold_frame_vertices(mf, nf - 1, s->positions);
+    memcpy(s->angles, ori_multifold_frame_angles(mf, nf - 1), sizeof(double) * (size_t)E);
+    modes_poses(s, s->angles, s->positions, s->poses);
+    s->folded = true;
+    char what[128];
+    cli_fold_modes_label(s->modes, what, sizeof what);
+    snprintf(s->label, sizeof s->label, "%s", what);
+    return CLI_EXIT_OK;
+}
+
 static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
 {
     int rc = cli_kin_load(cmd, a->fold.path, a->fold.frame, &s->kin);
@@ -416,6 +496,7 @@ static int load_sequence(const char *cmd, const cli_state_args *a, cli_state *s)
     s->mech = s->kin.mech;
     s->has_flat = true;
     s->frame_count = 1;
+    if (ori_sequence_resolve(s->seq, s->kin.flat, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
     ori_sequence_fold first = ori_sequence_fold_at(s->seq, 0);
     if (first.fixed_face < 0 || first.fixed_face >= ori_mechanism_face_count(s->mech))
         return cli_input_fail(cmd, a->path, "folds 0: fix: face %d does not exist (%d faces)", first.fixed_face,
@@ -454,7 +535,7 @@ int cli_state_load(const char *cmd, const cli_state_args *a, bool need_pose, cli
     s->args = a;
     int rc;
     switch (a->source) {
-    case CLI_STATE_FOLD: rc = load_fold(cmd, a, s); break;
+    case CLI_STATE_FOLD: rc = a->modes ? load_modes(cmd, a, s) : load_fold(cmd, a, s); break;
     case CLI_STATE_SEQUENCE: rc = load_sequence(cmd, a, s); break;
     case CLI_STATE_FRAME:
     default: rc = load_frame(cmd, a, need_pose, s); break;
@@ -469,6 +550,11 @@ int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_
     if (s->source == CLI_STATE_SEQUENCE)
         return cli_collide_record(cmd, s->path, o, s->pattern, s->record, out);
     if (s->source != CLI_STATE_FOLD) return CLI_EXIT_OK;
+    if (s->modes) {
+        int nlocks;
+        const int *locks = cli_fold_modes_locks(s->modes, &nlocks);
+        return cli_collide_multifold(cmd, s->path, o, s->pattern, cli_fold_modes_result(s->modes), locks, nlocks, out);
+    }
     ori_motion_def def;
     int rc = cli_fold_def(cmd, &s->fold, &s->kin, &def);
     if (rc != CLI_EXIT_OK) return rc;
@@ -615,6 +701,42 @@ static int motion_of_fold(const char *cmd, cli_state *s, const cli_state_args *a
     return CLI_EXIT_OK;
 }
 
+// A fold in one of the modes: its frames, timed by their progress toward the goal (0 … 1); with
+// samples ≥ 2, solved again with frames as dense as the samples and shown evenly over the progress
+// (each sample the solved frame nearest to it).
+static int motion_of_modes(const char *cmd, cli_state *s, int samples, cli_motion *m)
+{
+    (void)cmd;
+    if (samples >= 2) {
+        double span = cli_fold_modes_span(s->modes);
+        int rc = span > 0.0 ? cli_fold_modes_resolve_step(s->modes, span / (samples - 1)) : CLI_EXIT_OK;
+        if (rc != CLI_EXIT_OK) return rc;
+    }
+    const ori_multifold *mf = cli_fold_modes_result(s->modes);
+    int n = ori_multifold_frame_count(mf);
+    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
+    int count = samples >= 2 ? samples : n;
+    motion_alloc(m, count, V, F, E, true, true);
+    double p0 = ori_multifold_frame_progress(mf, 0), p1 = ori_multifold_frame_progress(mf, n - 1);
+    int j = 0;
+    for (int i = 0; i < count; ++i) {
+        int k = i;
+        double t = ori_multifold_frame_progress(mf, samples >= 2 ? 0 : i);
+        if (samples >= 2) {
+            t = p0 + (p1 - p0) * i / (samples - 1);
+            while (j + 1 < n && fabs(ori_multifold_frame_progress(mf, j + 1) - t) <= fabs(ori_multifold_frame_progress(mf, j) - t))
+                j++;
+            k = j;
+        }
+        m->times[i] = t;
+        ori_multifold_frame_vertices(mf, k, m->positions + (size_t)i * V);
+        memcpy(m->angles + (size_t)i * E, ori_multifold_frame_angles(mf, k), sizeof(double) * (size_t)E);
+        modes_poses(s, m->angles + (size_t)i * E, m->positions + (size_t)i * V, m->poses + (size_t)i * F);
+    }
+    m->duration = m->times[count - 1] - m->times[0];
+    return CLI_EXIT_OK;
+}
+
 static int motion_of_sequence(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
     const ori_record *r = s->record;
@@ -658,7 +780,7 @@ int cli_state_motion(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
     memset(m, 0, sizeof *m);
     switch (s->source) {
-    case CLI_STATE_FOLD: return motion_of_fold(cmd, s, s->args, samples, m);
+    case CLI_STATE_FOLD: return s->modes ? motion_of_modes(cmd, s, samples, m) : motion_of_fold(cmd, s, s->args, samples, m);
     case CLI_STATE_SEQUENCE: return motion_of_sequence(cmd, s, samples, m);
     case CLI_STATE_FRAME:
     default: return motion_of_frames(cmd, s, samples, m);

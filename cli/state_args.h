@@ -6,8 +6,13 @@
 //                                     pattern posed from its edges_foldAngle (the loops must close)
 //   IN.svg | IN.opx | IN.cp           a drawing's crease pattern (read as every command reads it)
 //   IN.fold --fix F --drive E --to D  a fold (the kinematics options of `orikin fold`, faces and
-//                                     creases by index, name or @x,y as there); the state
-//     [--from --step --lock --solver --linear --frame N]     is the fold's last frame
+//                                     creases by index, name or @x,y as there; --fix optional:
+//                                     the face at the sheet's centre); the state is the fold's
+//     [--from --step --lock --solver --linear --frame N]     last frame
+//   IN --percent P | --drive E1,E2 --to A1,A2 [--ratio R1,R2] | --lock auto | --symmetric
+//                                     the modes of `orikin fold` (fold_modes.c, the same code):
+//                                     the state is where the fold ends (its goal, or where it stops
+//                                     short, said on stderr); a motion's times are its progress
 //   SEQ.json [--at T]                 a fold sequence at time T (default: its end)
 //
 // Usage:
@@ -23,6 +28,14 @@
 #include "kin_args.h"
 
 #define CLI_STATE_MAX_FOLD_ARGS 64
+
+// Help lines for the modes of `orikin fold` in the state options (render, animate, export).
+#define CLI_STATE_MODES_HELP                                                                                  \
+    "  --percent P | --drive E1,E2,... --to A1,A2,... [--ratio R1,...] | --lock auto | --symmetric\n"         \
+    "                       the modes of orikin fold (patterns with several degrees of freedom):\n"          \
+    "                       the state is where that fold ends (its goal, or where it stops short,\n"       \
+    "                       said on stderr); --fix is optional everywhere (default: the face at\n"       \
+    "                       the sheet's centre, named on stderr)\n"
 
 // Where the state comes from.
 typedef enum cli_state_source {
@@ -42,6 +55,9 @@ typedef struct cli_state_args {
     cli_fold_args fold;                       // parsed by cli_state_finish
     cli_state_source source;                  // decided by cli_state_finish
     char frame_text[24];                      // --frame's value passed on to the fold options
+    int fold_argc_all;                        // fold_argc with --frame added (cli_state_finish)
+    bool modes;                               // the fold options use a mode of `orikin fold` (fold_modes.h):
+                                              // --percent, several drives, --ratio, --lock auto, --symmetric
 } cli_state_args;
 
 void cli_state_args_init(cli_state_args *a);
@@ -85,6 +101,7 @@ typedef struct cli_state {
     ori_record *record;
     ori_motion *motion;
     double start_drive_rad;  // a fold: the driven crease's angle where the motion starts
+    struct cli_fold_modes *modes; // a fold in one of the modes: its solve (owns pattern and mechanism), else NULL
 } cli_state;
 
 // Load the chosen state. need_pose = false skips posing a crease-pattern frame (the crease view

@@ -263,6 +263,51 @@ Test(fold_modes, miura_drives, .init = test_leak_setup, .fini = test_leak_check)
     ori_pattern_destroy(p);
 }
 
+typedef struct lock_progress {
+    int calls;
+    double last;
+    bool monotone;
+    int cancel_after; // cancel on this call (0: never)
+} lock_progress;
+
+static bool lock_progress_fn(double f, void *user)
+{
+    lock_progress *lp = user;
+    lp->monotone = lp->monotone && f >= lp->last && f <= 1.0;
+    lp->last = f;
+    return ++lp->calls != lp->cancel_after;
+}
+
+// ori_mechanism_lock_set_progress: the same set as ori_mechanism_lock_set, the progress monotone
+// and 1 at the end; cancelled, it returns -1 with ORI_ERR_LIMIT.
+Test(fold_modes, lock_set_progress, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = waterbomb(2);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m);
+    int drive = -1;
+    for (int e = 0; e < E && drive < 0; ++e)
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY) drive = e;
+    int *a = malloc(sizeof(int) * (size_t)E), *b = malloc(sizeof(int) * (size_t)E);
+    ori_error err;
+    int na = ori_mechanism_lock_set(m, NULL, &drive, 1, NULL, 0, NULL, a, E, &err);
+    lock_progress lp = {0, 0.0, true, 0};
+    int nb = ori_mechanism_lock_set_progress(m, NULL, &drive, 1, NULL, 0, NULL, b, E, lock_progress_fn, &lp, &err);
+    cr_assert_gt(na, 0);
+    cr_assert_eq(na, nb);
+    for (int i = 0; i < na; ++i) cr_assert_eq(a[i], b[i]);
+    cr_assert(lp.monotone);
+    cr_assert_geq(lp.calls, 2);
+    cr_assert_float_eq(lp.last, 1.0, 0.0);
+    lock_progress stop = {0, 0.0, true, 1};
+    cr_assert_eq(ori_mechanism_lock_set_progress(m, NULL, &drive, 1, NULL, 0, NULL, b, E, lock_progress_fn, &stop, &err), -1);
+    cr_assert_eq(err.status, ORI_ERR_LIMIT);
+    free(a);
+    free(b);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // The lock set turns an underdetermined single-drive fold into a one-degree-of-freedom fold that
 // moves (by the ordinary solver: ori_motion_solve), on the waterbomb base and tessellations.
 Test(fold_modes, lock_set_makes_one_dof, .init = test_leak_setup, .fini = test_leak_check)
@@ -367,6 +412,88 @@ Test(fold_modes, origami_simulator_drawings, .init = test_leak_setup, .fini = te
     for (int e = 0; e < ori_mechanism_edge_count(m); ++e)
         if (fabs(goal[e]) > 0.0) cr_assert_geq(last[e] / goal[e], 0.99, "crease %d: %g of %g", e, last[e], goal[e]);
     ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// A fold that creeps (the flat-folder grids and Sailboat: 50 Newton iterations a step of
+// 2e-5 rad, after which 200000 steps would reach 2 % of the way) stops on its pace, not the step
+// count: stationary within a few hundred steps, short of the goal, every frame closed, the
+// distance to the goal never growing, and the reason saying how far it got.
+Test(fold_modes, creeping_fold_stops_on_its_pace, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *files[] = {"flat-folder/grids_002_brown_2x2_D1.fold", "flat-folder/instagram_001_traditional_Sailboat.fold"};
+    for (int i = 0; i < 2; ++i) {
+        ori_pattern *p = test_load_pattern(test_require_shared(files[i]), 0);
+        ori_mechanism *m = test_mechanism_of(p);
+        ori_multifold *mf = fold_targets(m, 1.0, NULL);
+        cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_STATIONARY, "%s: %s", files[i], ori_multifold_reason(mf));
+        int steps, rejected, newton;
+        ori_multifold_stats(mf, &steps, &rejected, &newton);
+        cr_assert_lt(steps, 1000, "%s: %d steps", files[i], steps);
+        cr_assert_geq(steps, ORI_MULTIFOLD_STALL_STEPS);
+        int F = ori_multifold_frame_count(mf);
+        double last = ori_multifold_frame_progress(mf, F - 1);
+        cr_assert(last > 0.0 && last < 0.01, "%s: progress %g", files[i], last);
+        for (int f = 1; f < F; ++f)
+            cr_assert_geq(ori_multifold_frame_progress(mf, f), ori_multifold_frame_progress(mf, f - 1) - 1e-15);
+        check_frames(m, mf, ori_deg_to_rad(10.0));
+        cr_assert_not_null(strstr(ori_multifold_reason(mf), "of the way"));
+        cr_assert_not_null(strstr(ori_multifold_reason(mf), "a fold may take 200000"));
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+}
+
+// Sequence files name faces and creases by index, name or point: the strings survive a round
+// trip through ori_sequence_to_json, ori_sequence_run refuses them until ori_sequence_resolve,
+// which gives the indices of examples/open-corner.seq.json (face 4 = Obj1212, creases 11 and 12),
+// and an unknown name fails naming the fold and field, leaving the sequence unchanged.
+Test(fold_modes, sequence_named_references, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *text = "{\"pattern\": \"open-corner.fold\", \"folds\": [{\"fix\": \"Obj1212\", \"lock\": [\"@1,0.5\"], "
+                       "\"drive\": \"@0.5,0.5\", \"to\": 180}, {\"fix\": \"@0.7,0.3\", \"lock\": [12], \"drive\": "
+                       "\"@1,0.5\", \"to\": 90}]}";
+    ori_sequence *s = NULL;
+    ori_error err;
+    cr_assert_eq(ori_sequence_parse(text, strlen(text), &s, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_sequence_fold_at(s, 0).fixed_face, ORI_NULL_INDEX);
+    char *json = ori_sequence_to_json(s);
+    cr_assert_not_null(strstr(json, "\"fix\":\"Obj1212\""), "%s", json);
+    cr_assert_not_null(strstr(json, "\"drive\":\"@0.5,0.5\""), "%s", json);
+    ori_buffer_free(json);
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_ERR_ARGUMENT);
+    cr_assert_null(r);
+    cr_assert_str_eq(err.field, "folds");
+    cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_OK, "%s", err.message);
+    ori_sequence_fold f0 = ori_sequence_fold_at(s, 0), f1 = ori_sequence_fold_at(s, 1);
+    cr_assert_eq(f0.fixed_face, 4);
+    cr_assert_eq(f0.driven_edge, 12);
+    cr_assert_eq(f0.locked_count, 1);
+    cr_assert_eq(f0.locked[0], 11);
+    cr_assert_eq(f1.fixed_face, 4);
+    cr_assert_eq(f1.driven_edge, 11);
+    cr_assert_eq(f1.locked[0], 12);
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    const char *bad = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 4, \"drive\": 12, \"to\": 90}, {\"fix\": \"Obj9\", "
+                      "\"drive\": \"@9,9\", \"to\": 90}]}";
+    cr_assert_eq(ori_sequence_parse(bad, strlen(bad), &s, &err), ORI_OK);
+    cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_ERR_RANGE);
+    cr_assert_str_eq(err.field, "folds");
+    cr_assert_eq(err.element, 1);
+    cr_assert_not_null(strstr(err.message, "fix: no face named Obj9"), "%s", err.message);
+    cr_assert_eq(ori_sequence_fold_at(s, 1).fixed_face, ORI_NULL_INDEX); // unchanged
+    ori_sequence_destroy(s);
+    const char *malformed = "{\"pattern\": \"x.fold\", \"folds\": [{\"fix\": 4, \"drive\": \"Obj3\", \"to\": 90}]}";
+    cr_assert_eq(ori_sequence_parse(malformed, strlen(malformed), &s, &err), ORI_ERR_TYPE);
+    cr_assert_not_null(strstr(err.message, "\"drive\" must be a FOLD edge index or \"@x,y\""), "%s", err.message);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }

@@ -560,6 +560,14 @@ ORI_API int ori_mechanism_lock_set(const ori_mechanism *mechanism, const double 
                                    int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
                                    int *out, int cap, ori_error *error);
 
+/// ori_mechanism_lock_set with progress: progress (may be NULL) is called before each probe round
+/// with the fraction of the rounds the search may take (monotone, 1 at the end); returning false
+/// cancels: −1 with ORI_ERR_LIMIT ("cancelled").
+ORI_API int ori_mechanism_lock_set_progress(const ori_mechanism *mechanism, const double *angles_rad,
+                                            const int *drive_edges, int drive_count, const int *locked_edges,
+                                            int locked_count, const int *edge_group, int *out, int cap,
+                                            ori_progress_fn *progress, void *progress_user, ori_error *error);
+
 /// The dense rank-revealing QR of ori_mechanism_lock_set is used up to this many Jacobian entries;
 /// above, a null-space basis from CHOLMOD projections and a QR of its transpose (sparse path).
 #define ORI_LOCKSET_DENSE_MAX_ENTRIES 4000000

@@ -46,6 +46,8 @@ typedef struct ori_sequence_fold {
 typedef struct ori_sequence ori_sequence;
 
 /// Parse a sequence: {"pattern": "FILE.fold", "frame": N (optional), "folds": [{"fix": F,
+/// (F a face index, name or "@x,y"; E and the lock items an edge index or "@x,y": names and
+/// points are kept until ori_sequence_resolve, fixed_face / driven_edge / locked[k] ORI_NULL_INDEX)
 /// "drive": E, "to": DEG, "step": DEG (default 10), "from": DEG (optional), "lock": [E…]
 /// (optional), "name": "…" (optional)}, …]}; a fold {"fix": F, "percent": P, "step", "lock",
 /// "name"} folds every crease toward its target instead (docs/kinematics.md §16; its record
@@ -53,6 +55,13 @@ typedef struct ori_sequence ori_sequence;
 /// the JSON line/column (syntax) or field "folds" and the fold index. Destroy with
 /// ori_sequence_destroy.
 ORI_API ori_status ori_sequence_parse(const char *json, size_t size, ori_sequence **out, ori_error *error);
+/// Resolve the faces and creases a sequence names by string — "fix": a face name ("Obj12") or
+/// "@x,y" (the face containing the point), "drive" and "lock" items: "@x,y" (the crease through
+/// the point) — against the flat crease pattern (frame 0) they refer to; indices are kept. Run
+/// this before ori_sequence_run when the file may hold such names (ori_sequence_run refuses
+/// unresolved ones). ORI_ERR_RANGE with field "folds" and the fold index on a name or point the
+/// pattern does not have ("fix: no face named Obj9"); the sequence is then unchanged.
+ORI_API ori_status ori_sequence_resolve(ori_sequence *sequence, const ori_pattern *flat, ori_error *error);
 /// Read and parse a sequence file.
 ORI_API ori_status ori_sequence_load_file(const char *path, ori_sequence **out, ori_error *error);
 /// Destroy a sequence; NULL is a no-op.

@@ -393,6 +393,13 @@
 #define ORI_MULTIFOLD_PIN_RAD 1e-6
 /// A target fold gives up after this many continuation steps (the verdict is then stationary).
 #define ORI_MULTIFOLD_MAX_STEPS 200000
+/// A target fold is stationary, stopped early, when at the pace of its last
+/// ORI_MULTIFOLD_STALL_STEPS accepted steps (the distance to the goal, 2-norm over the moving
+/// creases, fell by ΔD while the step length did not grow) the distance D left would take more
+/// than the ORI_MULTIFOLD_MAX_STEPS it may take: ΔD · (steps left) < ORI_MULTIFOLD_STALL_STEPS · D.
+/// Such a fold creeps (on the flat-folder grids: 50 Newton iterations a step at 2e-5 rad).
+/// Steps.
+#define ORI_MULTIFOLD_STALL_STEPS 50
 /// A corrector step that moves the prediction by more than this × the step (plus 1e-9 rad) is
 /// rejected as a jump to another branch. Unitless.
 #define ORI_MULTIFOLD_MAX_CORRECTION 2.0

@@ -162,17 +162,37 @@ static int verify(const ori_mechanism *m, const double *angles, const int *drive
     return score;
 }
 
+static int lock_set(const ori_mechanism *m, const double *angles, const int *drive_edges, int drive_count,
+                    const int *locked_edges, int locked_count, const int *edge_group, int *out, int cap, int method,
+                    ori_progress_fn *progress, void *user, ori_error *error);
+
 int ori_mechanism_lock_set(const ori_mechanism *m, const double *angles, const int *drive_edges, int drive_count,
                            const int *locked_edges, int locked_count, const int *edge_group, int *out, int cap,
                            ori_error *error)
 {
-    return ori__mechanism_lock_set_method(m, angles, drive_edges, drive_count, locked_edges, locked_count, edge_group,
-                                          out, cap, 0, error);
+    return lock_set(m, angles, drive_edges, drive_count, locked_edges, locked_count, edge_group, out, cap, 0, NULL, NULL,
+                    error);
+}
+
+int ori_mechanism_lock_set_progress(const ori_mechanism *m, const double *angles, const int *drive_edges,
+                                    int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
+                                    int *out, int cap, ori_progress_fn *progress, void *progress_user, ori_error *error)
+{
+    return lock_set(m, angles, drive_edges, drive_count, locked_edges, locked_count, edge_group, out, cap, 0, progress,
+                    progress_user, error);
 }
 
 int ori__mechanism_lock_set_method(const ori_mechanism *m, const double *angles, const int *drive_edges,
                                    int drive_count, const int *locked_edges, int locked_count, const int *edge_group,
                                    int *out, int cap, int method, ori_error *error)
+{
+    return lock_set(m, angles, drive_edges, drive_count, locked_edges, locked_count, edge_group, out, cap, method, NULL,
+                    NULL, error);
+}
+
+static int lock_set(const ori_mechanism *m, const double *angles, const int *drive_edges, int drive_count,
+                    const int *locked_edges, int locked_count, const int *edge_group, int *out, int cap, int method,
+                    ori_progress_fn *progress, void *user, ori_error *error)
 {
     ORI_ASSERT(m && (drive_edges || drive_count == 0) && (out || cap == 0));
     int J = m->joint_count, R = m->rows;
@@ -223,10 +243,16 @@ int ori__mechanism_lock_set_method(const ori_mechanism *m, const double *angles,
     // Strategies (tried until one verifies): the probe 0.1 or 0.3 rad from the start, columns
     // weighted by the creases' speed or unweighted.
     int best = 0;
-    for (int strategy = 0; strategy < 4 && best < 2; ++strategy) {
+    bool cancelled = false;
+    for (int strategy = 0; strategy < 4 && best < 2 && !cancelled; ++strategy) {
         double total = strategy < 2 ? ORI_LOCKSET_PROBE_RAD : ORI_LOCKSET_VERIFY_RAD;
         for (int v = 0; v < nvar; ++v) lock[v] = false;
         for (int round = 0; round < LOCKSET_ROUNDS; ++round) {
+            // Progress: the (strategy, round) pairs, at most 4 × LOCKSET_ROUNDS of them.
+            if (progress && !progress((strategy * LOCKSET_ROUNDS + round) / (4.0 * LOCKSET_ROUNDS), user)) {
+                cancelled = true;
+                break;
+            }
             int nsys = 0;
             for (int v = 0; v < nvar; ++v) sys_of_var[v] = is_drive[v] || lock[v] ? -1 : nsys++;
             for (int j = 0; j < J; ++j) sys_var[j] = joint_var[j] >= 0 ? sys_of_var[joint_var[j]] : -1;
@@ -293,7 +319,13 @@ int ori__mechanism_lock_set_method(const ori_mechanism *m, const double *angles,
             break;
         }
     }
-    if (n < 0 && too_free)
+    if (cancelled) {
+        n = -1;
+        ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    } else if (progress && !progress(1.0, user)) {
+        n = -1;
+        ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    } else if (n < 0 && too_free)
         ori__fail(error, ORI_ERR_UNSUPPORTED,
                   "the fold leaves too much freedom for a lock set (a null-space basis above %.0e entries): lock "
                   "creases by hand",

@@ -602,6 +602,11 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     for (int i = 0; i < nlocks; ++i) all_locks[i] = def->locked_edges[i];
     double reported = 0.0; // the progress fraction last reported (kept monotone)
     bool cancelled = false;
+    // The distance to the goal after each of the last ORI_MULTIFOLD_STALL_STEPS accepted steps
+    // (a ring): a fold that creeps without approaching the goal stops on it.
+    double stall_ring[ORI_MULTIFOLD_STALL_STEPS], path_ring[ORI_MULTIFOLD_STALL_STEPS], h_ring[ORI_MULTIFOLD_STALL_STEPS];
+    double path = 0.0; // length of the path so far (2-norm over the variables' joints)
+    int stall_n = 0;
     while (!done && !cancelled) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
@@ -647,6 +652,24 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             break;
         }
         double D = goal_distance(m, joint_var, th, goal);
+        if (stall_n >= ORI_MULTIFOLD_STALL_STEPS) {
+            int old = stall_n % ORI_MULTIFOLD_STALL_STEPS; // ORI_MULTIFOLD_STALL_STEPS steps ago
+            double before = stall_ring[old], walked = path - path_ring[old], fell = before - D;
+            // At the pace of the last steps (the step length not growing), the goal lies beyond
+            // the steps a fold may take: stop now rather than after them.
+            double left = (double)(ORI_MULTIFOLD_MAX_STEPS - mo->steps);
+            if (h <= h_ring[old] && fell * left < (double)ORI_MULTIFOLD_STALL_STEPS * D) {
+                mo->verdict = ORI_MULTIFOLD_STATIONARY;
+                snprintf(mo->reason, sizeof mo->reason,
+                         "the motion comes no nearer to the goal at a pace that could reach it: over the last %d "
+                         "steps it moved %.3g rad and its distance to the goal fell by %.3g rad (%.2g %%), so the "
+                         "%.4g rad left would take about %.3g more steps (a fold may take %d); it got %.4g %% of the way",
+                         ORI_MULTIFOLD_STALL_STEPS, walked, fell, before > 0.0 ? 100.0 * fell / before : 0.0, D,
+                         fell > 0.0 ? D / fell * ORI_MULTIFOLD_STALL_STEPS : INFINITY, ORI_MULTIFOLD_MAX_STEPS,
+                         D0 > 0.0 ? 100.0 * (1.0 - D / D0) : 100.0);
+                break;
+            }
+        }
         for (;;) {
             double sc = fmin(1.0, h / pmax);
             memcpy(trial, th, sizeof(double) * (size_t)J);
@@ -678,6 +701,13 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             if (accept) {
                 double moved = 0.0;
                 for (int j = 0; j < J; ++j) moved = fmax(moved, fabs(trial[j] - th[j]));
+                h_ring[stall_n % ORI_MULTIFOLD_STALL_STEPS] = h; // the step length, path and distance before this step
+                path_ring[stall_n % ORI_MULTIFOLD_STALL_STEPS] = path;
+                stall_ring[stall_n++ % ORI_MULTIFOLD_STALL_STEPS] = D;
+                double len = 0.0;
+                for (int j = 0; j < J; ++j)
+                    if (joint_var[j] >= 0) len += (trial[j] - th[j]) * (trial[j] - th[j]);
+                path += sqrt(len);
                 memcpy(th, trial, sizeof(double) * (size_t)J);
                 mo->steps++;
                 last_res = res;
@@ -729,6 +759,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                     }
                 for (int v = 0; v < nvar; ++v) gvar[v] /= nj[v] ? nj[v] : 1;
                 mo->pinned++;
+                stall_n = 0; // new variables: a new distance
                 last_res = res;
                 recorded = false;
                 done = false;

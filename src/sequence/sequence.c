@@ -3,14 +3,29 @@
 // instant by continuation from the recorded state before it.
 #include <orikin/sequence.h>
 
+#include <orikin/arrangement.h> // ori_pattern_find_edge_at: creases named by a point
+#include <orikin/tolerance.h>
+
+#include <math.h>
+#include <stdlib.h>
+
 #include "../core/json_internal.h"
 #include "../kinematics/multifold_internal.h" // ori__mf_close: restoring a fold toward the targets
+
+// A fold's faces and creases named by a string ("fix": "Obj12" or "@x,y", "drive": "@x,y",
+// "lock": ["@x,y", …]) until ori_sequence_resolve turns them into indices. NULL: an index.
+typedef struct fold_refs {
+    char *fix, *drive;
+    char *lock[ORI_SEQUENCE_MAX_LOCKS];
+} fold_refs;
 
 struct ori_sequence {
     char *pattern;
     int frame;
     int fold_count;
     ori_sequence_fold *folds;
+    fold_refs *refs; // fold_count entries
+    bool unresolved; // some reference is still a string
 };
 
 // Per fold of a run: where its fixed face is, its drive range, its first recorded frame.
@@ -53,15 +68,56 @@ static ori_status fold_fail(ori_error *error, int fold, const char *fmt, const c
     return ori__fail_at(error, ORI_ERR_TYPE, "folds", fold, fmt, what);
 }
 
-static ori_status read_index_field(json_t *obj, const char *key, int fold, bool required, int *out,
+// "@x,y": the point; false when the text is not of that form.
+static bool parse_point(const char *t, ori_v2 *p)
+{
+    if (t[0] != '@') return false;
+    char *end;
+    double x = strtod(t + 1, &end);
+    if (end == t + 1 || *end != ',') return false;
+    const char *y0 = end + 1;
+    double y = strtod(y0, &end);
+    if (end == y0 || *end != '\0' || !isfinite(x) || !isfinite(y)) return false;
+    *p = ori_v2_make(x, y);
+    return true;
+}
+
+// A face ("fix": an index, a face name or "@x,y") or a crease ("drive", lock items: an index or
+// "@x,y"); a string is kept in *ref (owned) and the index set to ORI_NULL_INDEX.
+static ori_status read_ref(json_t *v, const char *key, int fold, bool face, int *out, char **ref, ori_error *error)
+{
+    bool item = strcmp(key, "lock") == 0;
+    if (json_is_string(v)) {
+        const char *t = json_string_value(v);
+        ori_v2 p;
+        if (!parse_point(t, &p) && (!face || t[0] == '\0' || t[0] == '@' || strlen(t) >= ORI_NAME_MAX)) {
+            if (item) return fold_fail(error, fold, "%s", "\"lock\" must be an array of FOLD edge indices or \"@x,y\" points");
+            return fold_fail(error, fold,
+                             face ? "\"%s\" must be a FOLD face index, a face name or \"@x,y\" (a point in the face)"
+                                  : "\"%s\" must be a FOLD edge index or \"@x,y\" (a point on the crease)",
+                             key);
+        }
+        *ref = ori__strdup(t);
+        *out = ORI_NULL_INDEX;
+        return ORI_OK;
+    }
+    if (item && (!json_is_integer(v) || json_integer_value(v) < 0 || json_integer_value(v) > INT32_MAX))
+        return fold_fail(error, fold, "%s", "\"lock\" must be an array of FOLD edge indices or \"@x,y\" points");
+    if (!json_is_integer(v) || json_integer_value(v) < 0 || json_integer_value(v) > INT32_MAX)
+        return fold_fail(error, fold,
+                         face ? "\"%s\" must be a FOLD index (an integer ≥ 0), a face name or \"@x,y\""
+                              : "\"%s\" must be a FOLD index (an integer ≥ 0) or \"@x,y\"",
+                         key);
+    *out = (int)json_integer_value(v);
+    return ORI_OK;
+}
+
+static ori_status read_index_field(json_t *obj, const char *key, int fold, bool required, int *out, char **ref,
                                    ori_error *error)
 {
     json_t *v = json_object_get(obj, key);
     if (!v) return required ? fold_fail(error, fold, "missing \"%s\"", key) : ORI_OK;
-    if (!json_is_integer(v) || json_integer_value(v) < 0 || json_integer_value(v) > INT32_MAX)
-        return fold_fail(error, fold, "\"%s\" must be a FOLD index (an integer ≥ 0)", key);
-    *out = (int)json_integer_value(v);
-    return ORI_OK;
+    return read_ref(v, key, fold, strcmp(key, "fix") == 0, out, ref, error);
 }
 
 static ori_status read_angle_field(json_t *obj, const char *key, int fold, bool *present, double *out_rad,
@@ -78,7 +134,7 @@ static ori_status read_angle_field(json_t *obj, const char *key, int fold, bool 
     return ORI_OK;
 }
 
-static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, ori_error *error)
+static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, fold_refs *refs, ori_error *error)
 {
     memset(f, 0, sizeof *f);
     if (!json_is_object(obj)) return fold_fail(error, i, "%s", "a fold must be an object");
@@ -90,7 +146,7 @@ static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, ori_error
             return fold_fail(error, i, "unknown field \"%s\" (fix, drive, to, from, step, lock, name, percent)", key);
     }
     ori_status st;
-    if ((st = read_index_field(obj, "fix", i, true, &f->fixed_face, error)) != ORI_OK) return st;
+    if ((st = read_index_field(obj, "fix", i, true, &f->fixed_face, &refs->fix, error)) != ORI_OK) return st;
     bool has_to, has_step;
     json_t *percent = json_object_get(obj, "percent"); // a fold toward the targets (targets.c)
     if (percent) {
@@ -102,7 +158,7 @@ static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, ori_error
         f->fraction = json_number_value(percent) / 100.0;
         f->driven_edge = ORI_NULL_INDEX;
     } else {
-        if ((st = read_index_field(obj, "drive", i, true, &f->driven_edge, error)) != ORI_OK) return st;
+        if ((st = read_index_field(obj, "drive", i, true, &f->driven_edge, &refs->drive, error)) != ORI_OK) return st;
         if ((st = read_angle_field(obj, "to", i, &has_to, &f->to_rad, error)) != ORI_OK) return st;
         if (!has_to) return fold_fail(error, i, "missing \"%s\"", "to");
         if ((st = read_angle_field(obj, "from", i, &f->has_from, &f->from_rad, error)) != ORI_OK) return st;
@@ -117,16 +173,17 @@ static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, ori_error
     }
     json_t *lock = json_object_get(obj, "lock");
     if (lock) {
-        if (!json_is_array(lock)) return fold_fail(error, i, "%s", "\"lock\" must be an array of FOLD edge indices");
+        if (!json_is_array(lock))
+            return fold_fail(error, i, "%s", "\"lock\" must be an array of FOLD edge indices or \"@x,y\" points");
         if (json_array_size(lock) > ORI_SEQUENCE_MAX_LOCKS)
             return ori__fail_at(error, ORI_ERR_LIMIT, "folds", i, "more than %d locked creases", ORI_SEQUENCE_MAX_LOCKS);
         size_t k;
         json_t *e;
         json_array_foreach(lock, k, e)
         {
-            if (!json_is_integer(e) || json_integer_value(e) < 0 || json_integer_value(e) > INT32_MAX)
-                return fold_fail(error, i, "%s", "\"lock\" must be an array of FOLD edge indices");
-            f->locked[f->locked_count++] = (int)json_integer_value(e);
+            int c = f->locked_count;
+            if ((st = read_ref(e, "lock", i, false, &f->locked[c], &refs->lock[c], error)) != ORI_OK) return st;
+            f->locked_count++;
         }
     }
     json_t *name = json_object_get(obj, "name");
@@ -180,8 +237,13 @@ ori_status ori_sequence_parse(const char *text, size_t size, ori_sequence **out,
     }
     s->fold_count = (int)json_array_size(folds);
     s->folds = ori__calloc((size_t)s->fold_count, sizeof *s->folds);
-    for (int i = 0; i < s->fold_count && st == ORI_OK; ++i)
-        st = parse_fold(json_array_get(folds, (size_t)i), i, &s->folds[i], error);
+    s->refs = ori__calloc((size_t)s->fold_count, sizeof *s->refs);
+    for (int i = 0; i < s->fold_count && st == ORI_OK; ++i) {
+        st = parse_fold(json_array_get(folds, (size_t)i), i, &s->folds[i], &s->refs[i], error);
+        fold_refs *r = &s->refs[i];
+        s->unresolved = s->unresolved || r->fix || r->drive;
+        for (int k = 0; k < s->folds[i].locked_count; ++k) s->unresolved = s->unresolved || r->lock[k];
+    }
 done:
     json_decref(root);
     if (st != ORI_OK) {
@@ -205,12 +267,111 @@ ori_status ori_sequence_load_file(const char *path, ori_sequence **out, ori_erro
     return st;
 }
 
+static void free_refs(fold_refs *r)
+{
+    ori__free(r->fix);
+    ori__free(r->drive);
+    for (int k = 0; k < ORI_SEQUENCE_MAX_LOCKS; ++k) ori__free(r->lock[k]);
+    memset(r, 0, sizeof *r);
+}
+
 void ori_sequence_destroy(ori_sequence *s)
 {
     if (!s) return;
+    for (int i = 0; s->refs && i < s->fold_count; ++i) free_refs(&s->refs[i]);
+    ori__free(s->refs);
     ori__free(s->pattern);
     ori__free(s->folds);
     ori__free(s);
+}
+
+// Point in face f of the flat pattern: 1 inside, 0 outside, -1 on its boundary (within tol).
+static int face_contains(const ori_pattern *p, int f, ori_v2 q, double tol)
+{
+    int n = ori_pattern_face_size(p, f);
+    if (n < 3) return 0;
+    int *vs = ori__alloc(sizeof(int) * (size_t)n);
+    ori_pattern_face_vertices(p, f, vs, n);
+    bool inside = false;
+    int result = 0;
+    for (int i = 0, j = n - 1; i < n; j = i++) {
+        ori_v3 a = ori_pattern_vertex(p, vs[j]), b = ori_pattern_vertex(p, vs[i]);
+        double dx = b.x - a.x, dy = b.y - a.y, len = hypot(dx, dy);
+        double t = len > 0 ? ((q.x - a.x) * dx + (q.y - a.y) * dy) / (len * len) : 0.0;
+        if (t >= 0.0 && t <= 1.0 && len > 0 && fabs((q.x - a.x) * dy - (q.y - a.y) * dx) / len <= tol) {
+            result = -1;
+            break;
+        }
+        if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * dx / dy) inside = !inside;
+    }
+    ori__free(vs);
+    return result < 0 ? -1 : inside ? 1 : 0;
+}
+
+static ori_status resolve_face(const ori_pattern *p, int fold, const char *ref, double tol, int *out, ori_error *error)
+{
+    ori_v2 q;
+    if (!parse_point(ref, &q)) {
+        int f = ori_pattern_find_face_by_name(p, ref);
+        if (f == ORI_NULL_INDEX) return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold, "fix: no face named %s", ref);
+        *out = f;
+        return ORI_OK;
+    }
+    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
+        int c = face_contains(p, f, q, tol);
+        if (c < 0)
+            return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold,
+                                "fix: (%g, %g) lies on an edge of face %d: give a point inside a face", q.x, q.y, f);
+        if (c > 0) {
+            *out = f;
+            return ORI_OK;
+        }
+    }
+    return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold, "fix: no face contains (%g, %g)", q.x, q.y);
+}
+
+static ori_status resolve_edge(const ori_pattern *p, int fold, const char *key, const char *ref, int *out,
+                               ori_error *error)
+{
+    ori_v2 q;
+    parse_point(ref, &q); // checked when parsed
+    int e = ori_pattern_find_edge_at(p, q);
+    if (e == ORI_NULL_INDEX)
+        return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold, "%s: no crease passes through (%g, %g)", key, q.x, q.y);
+    *out = e;
+    return ORI_OK;
+}
+
+ori_status ori_sequence_resolve(ori_sequence *s, const ori_pattern *flat, ori_error *error)
+{
+    ORI_ASSERT(s && flat);
+    if (!s->unresolved) return ORI_OK;
+    int nv = ori_pattern_vertex_count(flat);
+    ori_v3 lo = nv ? ori_pattern_vertex(flat, 0) : (ori_v3){0, 0, 0}, hi = lo;
+    for (int v = 1; v < nv; ++v) {
+        ori_v3 c = ori_pattern_vertex(flat, v);
+        lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
+    }
+    double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
+    // Resolve into copies: the sequence is unchanged on failure.
+    ori_sequence_fold *folds = ori__alloc(sizeof *folds * (size_t)s->fold_count);
+    memcpy(folds, s->folds, sizeof *folds * (size_t)s->fold_count);
+    ori_status st = ORI_OK;
+    for (int i = 0; i < s->fold_count && st == ORI_OK; ++i) {
+        const fold_refs *r = &s->refs[i];
+        ori_sequence_fold *f = &folds[i];
+        if (r->fix) st = resolve_face(flat, i, r->fix, tol, &f->fixed_face, error);
+        if (st == ORI_OK && r->drive) st = resolve_edge(flat, i, "drive", r->drive, &f->driven_edge, error);
+        for (int k = 0; k < f->locked_count && st == ORI_OK; ++k)
+            if (r->lock[k]) st = resolve_edge(flat, i, "lock", r->lock[k], &f->locked[k], error);
+    }
+    if (st == ORI_OK) {
+        memcpy(s->folds, folds, sizeof *folds * (size_t)s->fold_count);
+        for (int i = 0; i < s->fold_count; ++i) free_refs(&s->refs[i]);
+        s->unresolved = false;
+    }
+    ori__free(folds);
+    return st;
 }
 
 const char *ori_sequence_pattern_path(const ori_sequence *s) { ORI_ASSERT(s); return s->pattern; }
@@ -236,17 +397,19 @@ char *ori_sequence_to_json(const ori_sequence *s)
         const ori_sequence_fold *f = &s->folds[i];
         json_t *o = json_object();
         if (f->name[0]) json_object_set_new(o, "name", json_string(f->name));
-        json_object_set_new(o, "fix", json_integer(f->fixed_face));
+        const fold_refs *r = &s->refs[i];
+        json_object_set_new(o, "fix", r->fix ? json_string(r->fix) : json_integer(f->fixed_face));
         if (f->targets) {
             json_object_set_new(o, "percent", json_real(100.0 * f->fraction));
         } else {
-            json_object_set_new(o, "drive", json_integer(f->driven_edge));
+            json_object_set_new(o, "drive", r->drive ? json_string(r->drive) : json_integer(f->driven_edge));
             if (f->has_from) json_object_set_new(o, "from", degrees(f->from_rad));
             json_object_set_new(o, "to", degrees(f->to_rad));
         }
         json_object_set_new(o, "step", degrees(f->step_rad));
         json_t *lock = json_array();
-        for (int k = 0; k < f->locked_count; ++k) json_array_append_new(lock, json_integer(f->locked[k]));
+        for (int k = 0; k < f->locked_count; ++k)
+            json_array_append_new(lock, r->lock[k] ? json_string(r->lock[k]) : json_integer(f->locked[k]));
         json_object_set_new(o, "lock", lock);
         json_array_append_new(folds, o);
     }
@@ -388,6 +551,16 @@ ori_status ori_sequence_run_progress(const ori_sequence *s, const ori_mechanism 
     seq_progress sp = {progress, progress_user, 0, s->fold_count > 0 ? s->fold_count : 1};
     *out = NULL;
     ori_error_clear(error);
+    for (int i = 0; i < s->fold_count && s->unresolved; ++i) {
+        const fold_refs *r = &s->refs[i];
+        const char *ref = r->fix ? r->fix : r->drive;
+        for (int k = 0; !ref && k < s->folds[i].locked_count; ++k) ref = r->lock[k];
+        if (ref)
+            return ori__fail_at(error, ORI_ERR_ARGUMENT, "folds", i,
+                                "\"%s\" names a face or crease by name or point: resolve it against the pattern "
+                                "first (ori_sequence_resolve)",
+                                ref);
+    }
     ori_record *r = ori__calloc(1, sizeof *r);
     r->mechanism = m;
     r->fold_count = s->fold_count;
