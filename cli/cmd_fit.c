@@ -112,8 +112,10 @@ static int run(int argc, char **argv)
         json_object_set_new(out, "creases", arr);
         cli_print_json(out);
     } else {
-        printf("%s: transfer functions of crease %d, %g to %g deg, degree %d, %d samples (step %g deg)\n", a.path,
-               a.drive, from, a.to_deg, d, ori_fit_sample_count(fit), a.step_deg);
+        printf("%s: transfer functions of crease %d, %g to %g deg, degree %d, %d samples (step %g deg), face %d "
+               "fixed%s\n",
+               a.path, a.drive, from, a.to_deg, d, ori_fit_sample_count(fit), a.step_deg, a.fix,
+               a.fix_default ? CLI_FOLD_DEFAULT_FIX_NOTE : "");
         printf("theta(x) = c0 + c1 x + ... (x = crease %d in degrees, theta in degrees)\n", a.drive);
         for (int i = 0; i < n; ++i) {
             ori_fit_crease c = ori_fit_crease_of(fit, i);

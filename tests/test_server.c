@@ -268,6 +268,33 @@ Test(server, sequence_equals_cli_json)
     studio_destroy(s);
 }
 
+// A sequence naming its faces (Obj1212, "@x,y") and creases ("@x,y"): the studio resolves them
+// as orikin sequence does, on the command line and POSTed, and the record equals the CLI's.
+Test(server, sequence_with_names_equals_cli_json)
+{
+    const char *named = "tests/data/open-corner-named.seq.json";
+    studio *s = open_studio(named);
+    json_t *api = call_json(s, "GET", "/api/sequence", NULL, NULL, 200);
+    char args[256];
+    snprintf(args, sizeof args, "sequence %s --json", named);
+    json_t *cli = cli_json(args, 0);
+    assert_same(api, cli, "named sequence");
+    json_t *f0 = json_array_get(json_object_get(api, "folds"), 0);
+    cr_assert_eq(json_integer_value(json_object_get(f0, "fix")), 4); // Obj1212 is face 4
+    cr_assert_eq(json_integer_value(json_object_get(f0, "drive")), 12); // @0.5,0.5 is crease 12
+    json_decref(api);
+    char *text = test_read_text(named);
+    api = call_json(s, "POST", "/api/sequence", NULL, text, 200);
+    free(text);
+    json_object_set_new(cli, "sequence", json_string("studio"));
+    assert_same(api, cli, "posted named sequence");
+    json_decref(api);
+    json_decref(cli);
+    json_decref(call_json(s, "POST", "/api/sequence", NULL,
+                          "{\"pattern\": \"p.fold\", \"folds\": [{\"fix\": \"Obj9\", \"drive\": 12, \"to\": 90}]}", 400));
+    studio_destroy(s);
+}
+
 // Any instant of the sequence: without the scrubbing cache the answer is the CLI's, exactly;
 // with it (the states of a fine grid, each solved exactly) it agrees to 1e-9.
 Test(server, sequence_at_equals_cli_json)

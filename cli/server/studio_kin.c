@@ -803,6 +803,11 @@ void studio_run_sequence(studio *s, ori_sequence *seq, const char *label, const 
         studio_fail_error(out, 400, &err);
         ok = false;
     }
+    // faces by name or "@x,y" and creases by "@x,y" (as orikin sequence resolves them)
+    if (ok && ori_sequence_resolve(seq, model->pattern, &err) != ORI_OK) {
+        studio_fail_error(out, 400, &err);
+        ok = false;
+    }
     double work = 0.0;
     for (int k = 0; ok && k < ori_sequence_fold_count(seq); ++k) {
         ori_sequence_fold f = ori_sequence_fold_at(seq, k);
