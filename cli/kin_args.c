@@ -224,29 +224,6 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
 
 // --- naming faces and creases: one code path for every command ----------------------------------
 
-// Crossing-number test of point q against face f's polygon: 1 inside, 0 outside, -1 on its
-// boundary (within tol).
-static int face_contains(const ori_pattern *p, int f, ori_v2 q, double tol)
-{
-    int n = ori_pattern_face_size(p, f);
-    int *vs = malloc(sizeof(int) * (size_t)(n > 0 ? n : 1));
-    if (!vs) return 0;
-    ori_pattern_face_vertices(p, f, vs, n);
-    bool inside = false;
-    int result = 0;
-    for (int i = 0, j = n - 1; i < n; j = i++) {
-        ori_v3 a = ori_pattern_vertex(p, vs[j]), b = ori_pattern_vertex(p, vs[i]);
-        double dx = b.x - a.x, dy = b.y - a.y, len = hypot(dx, dy);
-        double t = len > 0 ? ((q.x - a.x) * dx + (q.y - a.y) * dy) / (len * len) : 0.0;
-        if (t >= 0.0 && t <= 1.0 && len > 0 && fabs((q.x - a.x) * dy - (q.y - a.y) * dx) / len <= tol) {
-            result = -1;
-            break;
-        }
-        if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * dx / dy) inside = !inside;
-    }
-    free(vs);
-    return result < 0 ? -1 : inside ? 1 : 0;
-}
 
 int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
                   int *face)
@@ -263,21 +240,14 @@ int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const
     double xy[2];
     if (!cli_parse_doubles(spec + 1, xy, 2))
         return cli_usage(cmd, "%s: a face is an index, a name or @x,y, got '%s'", option, spec);
-    ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
-    for (int v = 1; v < ori_pattern_vertex_count(p); ++v) {
-        ori_v3 c = ori_pattern_vertex(p, v);
-        lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
-    }
-    double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
-    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
-        int c = face_contains(p, f, ori_v2_make(xy[0], xy[1]), tol);
-        if (c < 0)
-            return cli_value_fail(cmd, path, option, "(%g, %g) lies on an edge of face %d: give a point inside a face",
-                                  xy[0], xy[1], f);
-        if (c > 0) {
-            *face = f;
-            return CLI_EXIT_OK;
-        }
+    bool on_edge;
+    int f = ori_pattern_find_face_at(p, ori_v2_make(xy[0], xy[1]), &on_edge);
+    if (f != ORI_NULL_INDEX && on_edge)
+        return cli_value_fail(cmd, path, option, "(%g, %g) lies on an edge of face %d: give a point inside a face",
+                              xy[0], xy[1], f);
+    if (f != ORI_NULL_INDEX) {
+        *face = f;
+        return CLI_EXIT_OK;
     }
     return cli_value_fail(cmd, path, option, "no face contains (%g, %g) (see orikin info --faces)", xy[0], xy[1]);
 }
@@ -295,14 +265,13 @@ int cli_fold_default_fix(const ori_pattern *p)
     double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
     // The face containing the centre; else (the centre on a crease, or in a hole) the face whose
     // vertex centroid is nearest to it, the lowest index on a tie.
+    bool on_edge;
+    int inside = ori_pattern_find_face_at(p, c, &on_edge);
+    if (inside != ORI_NULL_INDEX && !on_edge) return inside;
     int best = 0;
     double best_d = INFINITY;
     int *vs = NULL, cap = 0;
     for (int f = 0; f < nf; ++f) {
-        if (face_contains(p, f, c, tol) > 0) {
-            best = f;
-            break;
-        }
         int n = ori_pattern_face_size(p, f);
         if (n <= 0) continue;
         if (n > cap) {

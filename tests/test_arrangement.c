@@ -693,6 +693,38 @@ Test(arrangement, find_edge_at_point)
     ori_pattern_destroy(p);
 }
 
+// The face at a point: each quadrant of a 2 × 2 sheet creased along both middles, a point on a
+// crease (its face named, on_edge set) and a point off the sheet.
+Test(arrangement, find_face_at_point)
+{
+    ori_pattern *p = sheet(2, 2);
+    insert_ok(p, 0, 1, 2, 1, ORI_ASSIGN_MOUNTAIN, NULL);
+    insert_ok(p, 1, 0, 1, 2, ORI_ASSIGN_VALLEY, NULL);
+    cr_assert_eq(ori_pattern_face_count(p), 4);
+    const double q[4][2] = {{0.5, 0.5}, {1.5, 0.5}, {0.5, 1.5}, {1.5, 1.5}};
+    int seen[4] = {-1, -1, -1, -1};
+    for (int k = 0; k < 4; ++k) {
+        bool on_edge = true;
+        int f = ori_pattern_find_face_at(p, ori_v2_make(q[k][0], q[k][1]), &on_edge);
+        cr_assert(f >= 0 && f < 4 && !on_edge, "point %d: face %d", k, f);
+        for (int j = 0; j < k; ++j) cr_assert_neq(seen[j], f, "two quadrants in face %d", f);
+        seen[k] = f;
+        // the face found holds the point: its vertices' box does
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        int vs[8], n = ori_pattern_face_vertices(p, f, vs, 8);
+        for (int i = 0; i < n; ++i) {
+            ori_v3 v = ori_pattern_vertex(p, vs[i]);
+            lo[0] = fmin(lo[0], v.x), lo[1] = fmin(lo[1], v.y), hi[0] = fmax(hi[0], v.x), hi[1] = fmax(hi[1], v.y);
+        }
+        cr_assert(lo[0] <= q[k][0] && q[k][0] <= hi[0] && lo[1] <= q[k][1] && q[k][1] <= hi[1]);
+    }
+    bool on_edge = false;
+    cr_assert_neq(ori_pattern_find_face_at(p, ori_v2_make(0.5, 1.0), &on_edge), ORI_NULL_INDEX);
+    cr_assert(on_edge);
+    cr_assert_eq(ori_pattern_find_face_at(p, ori_v2_make(2.5, 0.5), NULL), ORI_NULL_INDEX);
+    ori_pattern_destroy(p);
+}
+
 // Creases across real crease patterns (other projects' files, read in place): the result
 // builds with the planarity check and its faces still tile the sheet.
 static double total_area(const ori_pattern *p)

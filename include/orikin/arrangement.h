@@ -8,7 +8,8 @@
 /// left of the segment.
 ///
 /// Functions: ori_default_insert_def, ori_pattern_insert_segment, ori_pattern_insert_segments,
-/// ori_pattern_from_segments, ori_pattern_find_edge_at, ori_pattern_edges_on_segment.
+/// ori_pattern_from_segments, ori_pattern_find_edge_at, ori_pattern_find_face_at,
+/// ori_pattern_edges_on_segment.
 ///
 /// Robustness: every topological decision (which side of a line, crossing or not, collinear,
 /// inside a face corner) is an exact ori_orient2d_sign on stored coordinates; crossing points
@@ -106,6 +107,11 @@ ORI_API ori_status ori_pattern_from_segments(const ori_segment *segments, int co
 /// The edge passing within ORI_TOL_ON_LINE_REL × diagonal of point (the nearest one), or
 /// ORI_NULL_INDEX. Works on an unbuilt pattern; flat patterns only (uses x, y).
 ORI_API int ori_pattern_find_edge_at(const ori_pattern *pattern, ori_v2 point);
+
+/// The face containing point (crossing-number test on the flat pattern's x, y), or
+/// ORI_NULL_INDEX. A point within ORI_TOL_ON_LINE_REL × diagonal of a face's boundary returns that
+/// face with *on_edge true (on_edge may be NULL); the lowest such face index wins.
+ORI_API int ori_pattern_find_face_at(const ori_pattern *pattern, ori_v2 point, bool *on_edge);
 
 /// Edges lying along the segment ab (both end points within ORI_TOL_ON_LINE_REL × diagonal of
 /// it), in order of their index; writes up to cap into out and returns the total count.

@@ -1880,6 +1880,39 @@ int ori_pattern_find_edge_at(const ori_pattern *p, ori_v2 x)
     return found;
 }
 
+int ori_pattern_find_face_at(const ori_pattern *p, ori_v2 x, bool *on_edge)
+{
+    ORI_ASSERT(p);
+    double tol = ORI_TOL_ON_LINE_REL * ori_pattern_diagonal(p);
+    if (on_edge) *on_edge = false;
+    int cap = 0, *vs = NULL;
+    int found = ORI_NULL_INDEX;
+    for (int f = 0; f < ori_pattern_face_count(p) && found == ORI_NULL_INDEX; ++f) {
+        int n = ori_pattern_face_size(p, f);
+        if (n < 3) continue;
+        if (n > cap) {
+            ori__free(vs);
+            cap = n;
+            vs = ori__alloc(sizeof(int) * (size_t)cap);
+        }
+        ori_pattern_face_vertices(p, f, vs, n);
+        bool inside = false, edge = false;
+        for (int i = 0, j = n - 1; i < n && !edge; j = i++) { // crossing number, boundary within tol
+            ori_v2 a = ori__pattern_v2(p, vs[j]), b = ori__pattern_v2(p, vs[i]);
+            if (seg_dist2(a, b, x) <= tol * tol) edge = true;
+            else if ((a.y > x.y) != (b.y > x.y) && x.x < a.x + (x.y - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
+        }
+        if (edge) {
+            if (on_edge) *on_edge = true;
+            found = f;
+        } else if (inside) {
+            found = f;
+        }
+    }
+    ori__free(vs);
+    return found;
+}
+
 int ori_pattern_edges_on_segment(const ori_pattern *p, ori_v2 a, ori_v2 b, int *out, int cap)
 {
     ORI_ASSERT(p && (out || cap == 0));

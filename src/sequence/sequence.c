@@ -3,7 +3,7 @@
 // instant by continuation from the recorded state before it.
 #include <orikin/sequence.h>
 
-#include <orikin/arrangement.h> // ori_pattern_find_edge_at: creases named by a point
+#include <orikin/arrangement.h> // ori_pattern_find_edge_at, _face_at: faces and creases named by a point
 #include <orikin/tolerance.h>
 
 #include <math.h>
@@ -285,30 +285,7 @@ void ori_sequence_destroy(ori_sequence *s)
     ori__free(s);
 }
 
-// Point in face f of the flat pattern: 1 inside, 0 outside, -1 on its boundary (within tol).
-static int face_contains(const ori_pattern *p, int f, ori_v2 q, double tol)
-{
-    int n = ori_pattern_face_size(p, f);
-    if (n < 3) return 0;
-    int *vs = ori__alloc(sizeof(int) * (size_t)n);
-    ori_pattern_face_vertices(p, f, vs, n);
-    bool inside = false;
-    int result = 0;
-    for (int i = 0, j = n - 1; i < n; j = i++) {
-        ori_v3 a = ori_pattern_vertex(p, vs[j]), b = ori_pattern_vertex(p, vs[i]);
-        double dx = b.x - a.x, dy = b.y - a.y, len = hypot(dx, dy);
-        double t = len > 0 ? ((q.x - a.x) * dx + (q.y - a.y) * dy) / (len * len) : 0.0;
-        if (t >= 0.0 && t <= 1.0 && len > 0 && fabs((q.x - a.x) * dy - (q.y - a.y) * dx) / len <= tol) {
-            result = -1;
-            break;
-        }
-        if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * dx / dy) inside = !inside;
-    }
-    ori__free(vs);
-    return result < 0 ? -1 : inside ? 1 : 0;
-}
-
-static ori_status resolve_face(const ori_pattern *p, int fold, const char *ref, double tol, int *out, ori_error *error)
+static ori_status resolve_face(const ori_pattern *p, int fold, const char *ref, int *out, ori_error *error)
 {
     ori_v2 q;
     if (!parse_point(ref, &q)) {
@@ -317,15 +294,14 @@ static ori_status resolve_face(const ori_pattern *p, int fold, const char *ref, 
         *out = f;
         return ORI_OK;
     }
-    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
-        int c = face_contains(p, f, q, tol);
-        if (c < 0)
-            return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold,
-                                "fix: (%g, %g) lies on an edge of face %d: give a point inside a face", q.x, q.y, f);
-        if (c > 0) {
-            *out = f;
-            return ORI_OK;
-        }
+    bool on_edge;
+    int f = ori_pattern_find_face_at(p, q, &on_edge);
+    if (f != ORI_NULL_INDEX && on_edge)
+        return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold,
+                            "fix: (%g, %g) lies on an edge of face %d: give a point inside a face", q.x, q.y, f);
+    if (f != ORI_NULL_INDEX) {
+        *out = f;
+        return ORI_OK;
     }
     return ori__fail_at(error, ORI_ERR_RANGE, "folds", fold, "fix: no face contains (%g, %g)", q.x, q.y);
 }
@@ -346,13 +322,6 @@ ori_status ori_sequence_resolve(ori_sequence *s, const ori_pattern *flat, ori_er
 {
     ORI_ASSERT(s && flat);
     if (!s->unresolved) return ORI_OK;
-    int nv = ori_pattern_vertex_count(flat);
-    ori_v3 lo = nv ? ori_pattern_vertex(flat, 0) : (ori_v3){0, 0, 0}, hi = lo;
-    for (int v = 1; v < nv; ++v) {
-        ori_v3 c = ori_pattern_vertex(flat, v);
-        lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
-    }
-    double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
     // Resolve into copies: the sequence is unchanged on failure.
     ori_sequence_fold *folds = ori__alloc(sizeof *folds * (size_t)s->fold_count);
     memcpy(folds, s->folds, sizeof *folds * (size_t)s->fold_count);
@@ -360,7 +329,7 @@ ori_status ori_sequence_resolve(ori_sequence *s, const ori_pattern *flat, ori_er
     for (int i = 0; i < s->fold_count && st == ORI_OK; ++i) {
         const fold_refs *r = &s->refs[i];
         ori_sequence_fold *f = &folds[i];
-        if (r->fix) st = resolve_face(flat, i, r->fix, tol, &f->fixed_face, error);
+        if (r->fix) st = resolve_face(flat, i, r->fix, &f->fixed_face, error);
         if (st == ORI_OK && r->drive) st = resolve_edge(flat, i, "drive", r->drive, &f->driven_edge, error);
         for (int k = 0; k < f->locked_count && st == ORI_OK; ++k)
             if (r->lock[k]) st = resolve_edge(flat, i, "lock", r->lock[k], &f->locked[k], error);
