@@ -442,7 +442,8 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         if (s == s1 && (!rec || target == s1)) break;
         double dist = fabs(target - s);
         // Within the escape the prediction does not depend on the step: go straight to the
-        // next output value, but through the escape's end (beyond it the tangent takes over).
+        // next output value, but through the escape's end (beyond it the tangent takes over);
+        // after a rejection no longer than the halved step h (else the same step is retried).
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
         double hh = in_esc ? fmin(h, fmin(dist, fabs(esc->s1 - s))) : fmin(h, dist);
         if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
