@@ -442,9 +442,10 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         if (s == s1 && (!rec || target == s1)) break;
         double dist = fabs(target - s);
         // Within the escape the prediction does not depend on the step: go straight to the
-        // next output value, but through the escape's end (beyond it the tangent takes over).
+        // next output value, but through the escape's end (beyond it the tangent takes over);
+        // after a rejection no longer than the halved step h (else the same step is retried).
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
-        double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
+        double hh = in_esc ? fmin(h, fmin(dist, fabs(esc->s1 - s))) : fmin(h, dist);
         if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         // A near-complete remainder is taken whole rather than left as a sliver.
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
@@ -606,7 +607,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         // Out of the start the branch is the tangent's (the cone's at a singular start), as for
         // the numeric solver.
         bool by_cone = first && t_first && !esc;
-        double hh = in_esc ? fmin(dist, fabs(esc->s1 - s)) : fmin(h, dist);
+        double hh = in_esc ? fmin(h, fmin(dist, fabs(esc->s1 - s))) : fmin(h, dist);
         if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
