@@ -370,7 +370,7 @@ Test(solver_agree, seed_3_vertex_continues_its_branch_through_the_flat_state)
 // open, docs/kinematics.md §15: this vertex's verdict depends on the target inside the escape —
 // 0.1° numeric "invalid assignment" against closed form "not rigidly foldable", 1° both
 // "invalid assignment".)
-Test(solver_agree, seed_43_target_inside_the_escape_ends, .timeout = 60)
+Test(solver_agree, seed_43_target_inside_the_escape_ends)
 {
     const char *text = "{\"vertices_coords\":[[0,0],[-0.40166386505816126,-0.91578716932840853],[0.95933369085541864,-0.28227445791236588],"
                        "[0.13844060916544279,0.99037073751898641],[-0.95962305510809975,0.28128916101584311]],"
