@@ -20,13 +20,16 @@ static void check_written_motion(const ori_pattern *p, const ori_mechanism *m, c
     free(a);
 }
 
-// A crease within 1e-9 rad of ±180°.
-static bool fk_any_folded_flat(const double *a, int n)
+// A crease within tol rad of ±180°.
+static bool fk_any_near_limit(const double *a, int n, double tol)
 {
     for (int e = 0; e < n; ++e)
-        if (fabs(a[e]) >= ORI_PI - 1e-9) return true;
+        if (fabs(a[e]) >= ORI_PI - tol) return true;
     return false;
 }
+
+// A crease folded flat (within 1e-9 rad of ±180°).
+static bool fk_any_folded_flat(const double *a, int n) { return fk_any_near_limit(a, n, 1e-9); }
 
 static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
 {
@@ -43,6 +46,17 @@ static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
         d.solver = ORI_SOLVER_NUMERIC;
         if (ori_motion_solve(m, &d, &other, &err) != ORI_OK) abort();
         fk_check_motion(m, other);
+        // A start with a crease within the stop tolerance of ±180° (a `from` near the fully folded
+        // state) is a singular start whose way on is not defined (docs/kinematics.md §15): the
+        // solvers may say "blocked" or "not rigidly foldable" there. Compared elsewhere.
+        bool limit_start = ori_motion_frame_count(other) > 0 &&
+                           fk_any_near_limit(ori_motion_frame_angles(other, 0), ori_mechanism_edge_count(m),
+                                             ORI_TOL_KIN_STOP_SIGN_RAD);
+        if (limit_start) {
+            ori_motion_destroy(other);
+            ori_motion_destroy(mo);
+            return;
+        }
         if (ori_motion_verdict_of(other) != ori_motion_verdict_of(mo)) {
             fprintf(stderr, "closed form: %s (%s)\nnumeric: %s (%s)\n", ori_motion_verdict_name(ori_motion_verdict_of(mo)),
                     ori_motion_reason(mo) ? ori_motion_reason(mo) : "", ori_motion_verdict_name(ori_motion_verdict_of(other)),
