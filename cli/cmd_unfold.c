@@ -184,7 +184,7 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "valleys", json_integer(nvl));
             json_object_set_new(o, "interior_vertices", json_integer(r.interior_vertices));
             json_object_set_new(o, "overlaps", json_integer(0));
-            json_object_set_new(o, "max_angle_defect_deg", json_real(r.max_angle_defect_deg));
+            json_object_set_new(o, "max_angle_defect_deg", json_real(ori_rad_to_deg(r.max_angle_defect_rad)));
             json_object_set_new(o, "max_length_error", json_real(r.max_length_error));
             json_object_set_new(o, "max_closing_error", json_real(r.max_closing_error));
             json_object_set_new(o, "fold_residual", r.fold_residual >= 0.0 ? json_real(r.fold_residual) : json_null());
@@ -194,7 +194,7 @@ static int run(int argc, char **argv)
             printf("developed without cuts: a crease pattern, %d crease%s (%d mountain, %d valley%s), %d faces\n",
                    nm + nvl + nfl, nm + nvl + nfl == 1 ? "" : "s", nm, nvl, nfl ? ", some flat" : "", r.faces);
             printf("%d interior vertices, largest angle defect %.3g°, edge lengths kept within %.3g (relative)\n",
-                   r.interior_vertices, r.max_angle_defect_deg, r.max_length_error);
+                   r.interior_vertices, ori_rad_to_deg(r.max_angle_defect_rad), r.max_length_error);
             if (r.refolded)
                 printf("folded back to the shape within %.3g (relative; loop residual %.3g)\n", r.max_refold_error,
                        r.fold_residual);

@@ -155,7 +155,7 @@ static void round_trip(ori_generate_def g, double to_deg, const char *what)
     cr_assert_eq(r.cuts, 0);
     cr_assert_eq(r.faces, ori_pattern_face_count(p), "%s: no faces merged", what);
     cr_assert_gt(r.interior_vertices, 0);
-    cr_assert_leq(r.max_angle_defect_deg, 1e-10, "%s: angle defect %g°", what, r.max_angle_defect_deg);
+    cr_assert_leq(ori_rad_to_deg(r.max_angle_defect_rad), 1e-10, "%s: angle defect %g°", what, ori_rad_to_deg(r.max_angle_defect_rad));
     cr_assert_leq(r.max_length_error, 1e-12, "%s: %g", what, r.max_length_error);
     cr_assert_leq(r.max_closing_error, 1e-12, "%s: %g", what, r.max_closing_error);
     double dcp = cp_distance(p, net), dang = angle_distance(p, angles, net);
@@ -165,7 +165,7 @@ static void round_trip(ori_generate_def g, double to_deg, const char *what)
     cr_assert_leq(r.fold_residual, 1e-9, "%s: loop residual %g", what, r.fold_residual);
     cr_assert_leq(r.max_refold_error, 1e-9, "%s: refolded %g off the shape", what, r.max_refold_error);
     cr_log_info("%s: %d faces, %d interior vertices, CP %.2g, angles %.2g rad, defect %.2g°, refold %.2g", what, r.faces,
-                r.interior_vertices, dcp, dang, r.max_angle_defect_deg, r.max_refold_error);
+                r.interior_vertices, dcp, dang, ori_rad_to_deg(r.max_angle_defect_rad), r.max_refold_error);
     ori_unfold_net_destroy(net);
     ori_unfold_mesh_destroy(m);
     ori_pattern_destroy(p);
@@ -354,7 +354,7 @@ static ori_unfold_result develop_shared(const char *rel, double tol_rad, int cre
     ori_fold_destroy(doc);
     cr_log_info("%s: %d faces, %d creases, %d interior vertices, defect %.3g°, length %.3g, closing %.3g, residual %.3g, "
                 "refold %.3g",
-                rel, r.faces, n, r.interior_vertices, r.max_angle_defect_deg, r.max_length_error, r.max_closing_error,
+                rel, r.faces, n, r.interior_vertices, ori_rad_to_deg(r.max_angle_defect_rad), r.max_length_error, r.max_closing_error,
                 r.fold_residual, r.max_refold_error);
     ori_unfold_net_destroy(net);
     ori_unfold_mesh_destroy(m);
@@ -366,7 +366,7 @@ Test(develop, shared_folded_forms)
     // Hull's rigidly folded square twist (6 digits): 4 interior vertices
     ori_unfold_result r = develop_shared("fold-spec/squaretwist.fold", 0.0, 12);
     cr_assert_eq(r.interior_vertices, 4);
-    cr_assert_leq(r.max_angle_defect_deg, 1e-3);
+    cr_assert_leq(ori_rad_to_deg(r.max_angle_defect_rad), 1e-3);
     cr_assert_leq(r.max_length_error, 1e-5);
     cr_assert_leq(r.max_refold_error, 1e-5);
     // Ku's three-fold example and the folded diagonal: integer coordinates, exact
@@ -376,7 +376,7 @@ Test(develop, shared_folded_forms)
     cr_assert_leq(r.max_refold_error, 1e-12);
     // Rabbit Ear's kabuto, frame 0 (a folded form; full double coordinates)
     r = develop_shared("rabbit-ear/fold_kabuto.fold", 0.0, 20);
-    cr_assert_leq(r.max_angle_defect_deg, 1e-10);
+    cr_assert_leq(ori_rad_to_deg(r.max_angle_defect_rad), 1e-10);
     cr_assert_leq(r.max_refold_error, 1e-12);
     // Rabbit Ear's 3D bird base is a relaxed simulation, not an isometric fold: refused at the
     // default tolerance (vertex 10 sums to 360.165°), developed within 0.2°
@@ -386,7 +386,7 @@ Test(develop, shared_folded_forms)
     cr_assert_eq(ori_unfold_load_mesh(path, &m, &err), ORI_OK);
     refused(m, "vertices_coords", 10, "360.165°");
     r = develop_shared("rabbit-ear/fold_bird-base-3d.fold", 0.2 * DEG, 20);
-    cr_assert_leq(r.max_angle_defect_deg, 0.2);
+    cr_assert_leq(ori_rad_to_deg(r.max_angle_defect_rad), 0.2);
     cr_assert_leq(r.max_refold_error, 1e-3);
 }
 

@@ -149,7 +149,7 @@ typedef struct ori_unfold_result {
     int cuts;                 ///< interior edges of the shape cut open (0 when developed)
     bool developed;           ///< developed without cuts into a crease pattern (ori_unfold_develop)
     int interior_vertices;    ///< developed: interior vertices of the sheet; −1 for nets
-    double max_angle_defect_deg; ///< developed: largest |360° − face angle sum| at an interior vertex (degrees); −1 for nets
+    double max_angle_defect_rad; ///< developed: largest |2π − face angle sum| at an interior vertex (radians); −1 for nets
     double max_length_error;  ///< developed: largest |flat − 3D length| / 3D length of an edge; −1 for nets
     double max_closing_error; ///< developed: largest gap between the two laid-out copies of an edge off the layout tree / the diagonal; −1 for nets
     double fold_residual;     ///< developed: loop-closure residual of the crease pattern at its fold angles (ori_mechanism_residual); −1 for nets

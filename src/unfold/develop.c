@@ -17,14 +17,13 @@
 #include "../core/core_internal.h"
 #include "unfold_internal.h"
 
-#define DEV_PI 3.14159265358979323846
 
 // Interior angle of a counter-clockwise polygon's corner i (radians, in (0, 2π)).
 static double corner_angle(const ori_v2 *p, int k, int i)
 {
     ori_v2 a = ori_v2_sub(p[(i + 1) % k], p[i]), b = ori_v2_sub(p[(i + k - 1) % k], p[i]);
     double t = atan2(ori_v2_cross(a, b), ori_v2_dot(a, b));
-    return t < 0.0 ? t + 2.0 * DEV_PI : t;
+    return t < 0.0 ? t + 2.0 * ORI_PI : t;
 }
 
 // Fold the crease pattern back with the kinematics: face 0 placed where the shape has it, the
@@ -100,14 +99,14 @@ ori_status ori_unfold_develop(const ori_mesh *m, double tolerance_rad, ori_unfol
     for (int v = 0; v < nv; ++v) {
         if (!used[v] || boundary[v]) continue;
         res.interior_vertices++;
-        double d = fabs(sum[v] - 2.0 * DEV_PI);
+        double d = fabs(sum[v] - 2.0 * ORI_PI);
         if (worst_v < 0 || d > worst_defect) worst_defect = d, worst_v = v;
     }
-    res.max_angle_defect_deg = worst_v >= 0 ? worst_defect * 180.0 / DEV_PI : 0.0;
+    res.max_angle_defect_rad = worst_v >= 0 ? worst_defect : 0.0;
     if (st == ORI_OK && worst_v >= 0 && worst_defect > tol_angle)
         st = ori__fail_at(error, ORI_ERR_NOT_FOUND, "vertices_coords", worst_v,
                           "not developable at vertex %d: its face angles sum to %.6g° (a flat sheet has 360°)", worst_v,
-                          sum[worst_v] * 180.0 / DEV_PI);
+                          ori_rad_to_deg(sum[worst_v]));
 
     // 2. lay out along a breadth-first tree; the edges off the tree must close
     int *order = ori__alloc(((size_t)nf + 1) * sizeof *order), *parent_edge = ori__alloc(((size_t)nf + 1) * sizeof *parent_edge);

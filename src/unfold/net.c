@@ -1214,7 +1214,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     res.max_refold_error = -1.0;
     res.fold_order = ORI_FOLD_ORDER_NONE;
     res.interior_vertices = -1;
-    res.max_angle_defect_deg = res.max_length_error = res.max_closing_error = res.fold_residual = -1.0;
+    res.max_angle_defect_rad = res.max_length_error = res.max_closing_error = res.fold_residual = -1.0;
     // split the best tree into pieces: faces in breadth-first order join their parent's piece
     // unless they overlap a face already there
     int *piece = ori__alloc(((size_t)nf + 1) * sizeof *piece);
