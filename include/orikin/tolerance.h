@@ -511,4 +511,8 @@
 /// none when both are: at or next to a double root the nearest-to-prediction rule stands). Radians.
 #define ORI_KIN_LABEL_MATCH_RAD 1e-9
 
+/// Output grid of a fold: a grid drive within this fraction of the step past the current drive
+/// counts as reached (the next output frame is the one after it). Unitless.
+#define ORI_TOL_KIN_GRID_REL 1e-9
+
 #endif

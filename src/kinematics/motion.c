@@ -243,7 +243,7 @@ static int grid_first(const ctx *c, double s, double sg, double step_out)
 {
     if (!c->grid_set) return 1;
     int k = (int)floor((s - c->grid0) * sg / step_out) + 1;
-    while ((c->grid0 + sg * step_out * k - s) * sg <= 1e-9 * step_out) k++;
+    while ((c->grid0 + sg * step_out * k - s) * sg <= ORI_TOL_KIN_GRID_REL * step_out) k++;
     return k < 1 ? 1 : k;
 }
 
