@@ -515,4 +515,10 @@
 /// counts as reached (the next output frame is the one after it). Unitless.
 #define ORI_TOL_KIN_GRID_REL 1e-9
 
+/// Leaving a singular start (docs/kinematics.md §6.3): the output states between the start and the
+/// escape's first node are the cubic Hermite interpolation of the two, corrected. The node is the
+/// escape's end, or (a steep branch, not yet nearly straight there) the state at half the distance,
+/// halving at most this many times (to 1/16384 of ORI_KIN_SINGULAR_STEP_RAD, 1.1e-6 rad). Count.
+#define ORI_KIN_ESCAPE_HALVINGS 14
+
 #endif

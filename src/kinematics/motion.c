@@ -393,6 +393,21 @@ typedef struct kin_escape {
     double *th0, *t0, *th1, *t1;
 } kin_escape;
 
+// Whether the branch from the escape's start (s0, th0, t0) to its node (s1, th1, t1) is nearly
+// straight: the state's change over the escape differs from either tangent's linear prediction by
+// at most a quarter of it (then the cubic Hermite interpolation of the two is accurate within).
+static bool escape_straight(const ctx *c, const kin_escape *e)
+{
+    double big = 0.0, off = 0.0, ds = e->s1 - e->s0;
+    for (int j = 0; j < c->m->joint_count; ++j)
+        if (c->col[j] >= 0) {
+            double d = e->th1[j] - e->th0[j];
+            big = fmax(big, fabs(d));
+            off = fmax(off, fmax(fabs(d - ds * e->t0[j]), fabs(d - ds * e->t1[j])));
+        }
+    return off <= 0.25 * big + ORI_TOL_RESIDUAL;
+}
+
 // Numeric walk from the current drive value to s1, recording at each output value.
 //
 // Predictor: with fewer than ORI_KIN_HISTORY accepted states, the tangent (one linear solve)
@@ -502,7 +517,10 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         c->mo->stats.newton_iterations += its;
         double move = 0.0;
         for (int j = 0; j < J; ++j) move = fmax(move, fabs(trial[j] - pred[j]));
-        bool accept = ok && move <= ORI_KIN_MAX_CORRECTION * hh * tn + ORI_KIN_CORRECTION_SLACK_RAD;
+        // Within the escape the prediction is the escape's interpolation, not a step's: its
+        // correction is measured against the change from the singular start.
+        double hj = in_esc ? fabs(snew - esc->s0) : hh;
+        bool accept = ok && move <= ORI_KIN_MAX_CORRECTION * hj * tn + ORI_KIN_CORRECTION_SLACK_RAD;
         // A moving crease turned past ±π within this step (or only seems to, near a fully folded
         // state): halve; a stop there is located by locate_stop.
         if (accept && beyond_limit(c, trial)) accept = false;
@@ -992,10 +1010,6 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
     memcpy(worst, c->worst, sizeof(double) * (size_t)J);
     memcpy(worst_at, c->worst_at, sizeof(double) * (size_t)J);
     r = classify_stop(c, walk(c, se, ORI_KIN_SINGULAR_STEP_RAD, false, t, NULL), s, true);
-    memcpy(c->worst, worst, sizeof(double) * (size_t)J);
-    memcpy(c->worst_at, worst_at, sizeof(double) * (size_t)J);
-    ori__free(worst);
-    ori__free(worst_at);
     if (r == LEG_OK) {
         // Out of the singular start the constrained Jacobian must be regular, else the fold
         // leaves freedom the drive does not fix.
@@ -1005,11 +1019,35 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
             r = LEG_UNDER;
         }
     }
-    if (r == LEG_OK || r == LEG_BLOCKED) {
+    if ((r == LEG_OK || r == LEG_BLOCKED) && !c->cancelled) {
+        // The escape's first node: its end, where the branch is nearly straight from the start;
+        // else (a steep branch: two creases nearly collinear turn by 170° within 0.1° of drive)
+        // the state at half the distance, walked afresh from the start along the cone tangent.
         esc.s1 = c->th[c->jd];
         memcpy(esc.th1, c->th, sizeof(double) * (size_t)J);
-        if (r != LEG_OK || !ori__kin_tangent(c->solver, c->th, esc.t1))
+        bool straight = r == LEG_OK && ori__kin_tangent(c->solver, c->th, esc.t1) && escape_straight(c, &esc);
+        if (!straight)
             for (int j = 0; j < J; ++j) esc.t1[j] = (esc.th1[j] - esc.th0[j]) / (esc.s1 - esc.s0);
+        double delta = fabs(esc.s1 - s);
+        double *tk = ori__alloc(sizeof(double) * (size_t)(J + 1));
+        for (int k = 0; !straight && k < ORI_KIN_ESCAPE_HALVINGS && !c->cancelled; ++k) {
+            delta *= 0.5;
+            memcpy(c->th, esc.th0, sizeof(double) * (size_t)J);
+            c->label = 0;
+            if (walk(c, s + sg * delta, delta, false, t, NULL) != LEG_OK) break; // keep the node before
+            if (!ori__kin_tangent(c->solver, c->th, tk)) continue;
+            esc.s1 = c->th[c->jd];
+            memcpy(esc.th1, c->th, sizeof(double) * (size_t)J);
+            memcpy(esc.t1, tk, sizeof(double) * (size_t)J);
+            straight = escape_straight(c, &esc);
+        }
+        ori__free(tk);
+    }
+    memcpy(c->worst, worst, sizeof(double) * (size_t)J);
+    memcpy(c->worst_at, worst_at, sizeof(double) * (size_t)J);
+    ori__free(worst);
+    ori__free(worst_at);
+    if ((r == LEG_OK || r == LEG_BLOCKED) && !c->cancelled) {
         memcpy(c->th, esc.th0, sizeof(double) * (size_t)J);
         c->label = 0;
         c->block_kind = ORI_BLOCK_NONE;
