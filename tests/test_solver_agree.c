@@ -46,8 +46,11 @@ static ori_pattern *vertex_pattern(int n, const double *theta, const char *assig
     return p;
 }
 
-// Seeds of the multi-seed property test (each about 1 s in a release build).
+// Seeds of the multi-seed property test (each about 1 s in a release build; more by hand with
+// -DORI_TEST_AGREE_SEEDS=80).
+#ifndef ORI_TEST_AGREE_SEEDS
 #define ORI_TEST_AGREE_SEEDS 10
+#endif
 
 static double frand(double lo, double hi) { return lo + (hi - lo) * drand48(); }
 
@@ -128,17 +131,32 @@ static void compare(const ori_mechanism *m, ori_motion_def d, const char *what)
     ori_motion_destroy(mo[1]);
 }
 
+// Whether every crease that `small` folds against its assignment is folded so by `big` too (the
+// same fold to a farther target on the same branch).
+static bool violations_within(const ori_motion *small, const ori_motion *big)
+{
+    for (int i = 0; i < ori_motion_violation_count(small); ++i) {
+        bool found = false;
+        for (int k = 0; k < ori_motion_violation_count(big); ++k)
+            found = found || ori_motion_violation(big, k).edge == ori_motion_violation(small, i).edge;
+        if (!found) return false;
+    }
+    return true;
+}
+
 // Counts of one sample: verdicts, stop kinds, folds compared, and folds through the flat state
 // or from folded starts near it.
 typedef struct agree_sample {
     int verdicts[5], stops[3];
     int cases, through_flat, near_flat;
+    int in_escape; // folds from the flat sheet to a target inside the escape (1e-6° … 1°)
 } agree_sample;
 
 // `trials` random vertices from seed `seed`, up to four fold specifications each.
 static agree_sample run_sample(long seed, int trials)
 {
     srand48(seed);
+    unsigned short esc_rng[3] = {(unsigned short)seed, (unsigned short)(seed >> 16), 0x3a7};
     agree_sample S;
     memset(&S, 0, sizeof S);
     int *verdicts = S.verdicts, *stops = S.stops;
@@ -265,8 +283,36 @@ static agree_sample run_sample(long seed, int trials)
                 // A singular stop names the creases that move there without the drive.
                 if (blk.kind == ORI_BLOCK_SINGULAR) cr_assert_gt(blk.singular_count, 0, "%s", what);
             }
-            ori_motion_destroy(mo);
+            ori_motion_verdict v_big = ori_motion_verdict_of(mo);
+            ori_motion *big = mo;
             S.cases++;
+            if (spec < 2) {
+                // From the flat sheet (a singular start) the same fold to a target inside the escape
+                // (1e-6° … 1°, log-uniform; a random stream of its own, so that the sample above
+                // stays the same): the same verdict from both solvers, and one that agrees with the
+                // fold's beyond (issue 7 §3): no motion or more freedom for both or for neither, and
+                // a crease folded against its assignment within the escape is still so beyond.
+                ori_motion_def e = d;
+                e.to_rad = (d.to_rad < 0.0 ? -1.0 : 1.0) * pow(10.0, -6.0 + 6.0 * erand48(esc_rng)) * DEG;
+                w = snprintf(what, sizeof what, "trial %d spec %d (inside the escape): degree %d, fix %d, drive %d to %.17g° step %.17g°, locked",
+                             trial, spec, n, e.fixed_face, drive, e.to_rad / DEG, e.step_rad / DEG);
+                for (int i = 0; i < nl; ++i) w += snprintf(what + w, sizeof what - (size_t)w, " %d", locks[i]);
+                compare(m, e, what);
+                cr_assert_eq(ori_motion_solve(m, &e, &mo, &err), ORI_OK);
+                ori_motion_verdict v_small = ori_motion_verdict_of(mo);
+                bool none_small = v_small == ORI_MOTION_NOT_RIGIDLY_FOLDABLE || v_small == ORI_MOTION_UNDERDETERMINED;
+                bool none_big = v_big == ORI_MOTION_NOT_RIGIDLY_FOLDABLE || v_big == ORI_MOTION_UNDERDETERMINED;
+                cr_assert(none_small == none_big && (!none_small || v_small == v_big), "%s (%s): %s there, %s to %.17g°", what,
+                          last_text, ori_motion_verdict_name(v_small), ori_motion_verdict_name(v_big), d.to_rad / DEG);
+                if (v_small == ORI_MOTION_INVALID_ASSIGNMENT)
+                    cr_assert_eq(v_big, ORI_MOTION_INVALID_ASSIGNMENT, "%s (%s): invalid there, %s to %.17g°", what, last_text,
+                                 ori_motion_verdict_name(v_big), d.to_rad / DEG);
+                cr_assert(violations_within(mo, big), "%s (%s): %s there, %s to %.17g°", what, last_text, ori_motion_reason(mo),
+                          ori_motion_reason(big), d.to_rad / DEG);
+                ori_motion_destroy(mo);
+                S.in_escape++;
+            }
+            ori_motion_destroy(big);
         }
         ori_mechanism_destroy(m);
         ori_pattern_destroy(p);
@@ -286,10 +332,11 @@ Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angl
     cr_assert_gt(verdicts[ORI_MOTION_INVALID_ASSIGNMENT], 20);
     cr_assert_gt(S.through_flat, 40);
     cr_assert_gt(S.near_flat, 40);
+    cr_assert_gt(S.in_escape, 200);
     cr_log_info("%d folds (%d through the flat state, %d from within 10° of it): valid %d, invalid %d, not foldable %d, "
-                "blocked %d; stops: crease limit %d, singular %d",
+                "blocked %d; stops: crease limit %d, singular %d; %d more from flat to a target inside the escape",
                 cases, S.through_flat, S.near_flat, verdicts[0], verdicts[1], verdicts[2], verdicts[4],
-                stops[ORI_BLOCK_CREASE_LIMIT], stops[ORI_BLOCK_SINGULAR]);
+                stops[ORI_BLOCK_CREASE_LIMIT], stops[ORI_BLOCK_SINGULAR], S.in_escape);
     cr_assert_gt(stops[ORI_BLOCK_CREASE_LIMIT], 5);
     cr_assert_gt(stops[ORI_BLOCK_SINGULAR], 5);
 }
@@ -298,15 +345,18 @@ Test(solver_agree, random_vertices_and_fold_specs_give_the_same_verdict_and_angl
 // rule for the flat state, 9 of seeds 1–10 had a disagreement through it or next to it.
 Test(solver_agree, more_seeds_agree_through_the_flat_state, .timeout = 600)
 {
-    int cases = 0, through = 0;
+    int cases = 0, through = 0, in_escape = 0;
     for (long seed = 1; seed <= ORI_TEST_AGREE_SEEDS; ++seed) {
         agree_sample S = run_sample(seed, 160);
         cases += S.cases;
         through += S.through_flat;
+        in_escape += S.in_escape;
     }
     cr_assert_gt(cases, 500 * ORI_TEST_AGREE_SEEDS);
     cr_assert_gt(through, 40 * ORI_TEST_AGREE_SEEDS);
-    cr_log_info("seeds 1–%d: %d folds, %d through the flat state", ORI_TEST_AGREE_SEEDS, cases, through);
+    cr_assert_gt(in_escape, 200 * ORI_TEST_AGREE_SEEDS);
+    cr_log_info("seeds 1–%d: %d folds, %d through the flat state; %d more from flat to a target inside the escape",
+                ORI_TEST_AGREE_SEEDS, cases, through, in_escape);
 }
 
 // A degree-4 vertex, folded to 30° (crease 2) and driven through the flat state to −141.7°: the
@@ -462,6 +512,94 @@ Test(solver_agree, seed_43_verdict_does_not_depend_on_the_target_or_the_step)
     cr_assert_gt(cases, 50);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
+}
+
+// Vertices of the steep-branch test (24: about 1 s; more by hand with -DORI_TEST_STEEP_VERTICES=400).
+#ifndef ORI_TEST_STEEP_VERTICES
+#define ORI_TEST_STEEP_VERTICES 24
+#endif
+
+// Steep branches out of the flat state, as the seed-43 vertex's: random degree-4 vertices whose
+// creases 1 and 3 are 0.01° … 3° from collinear (two creases then turn up to thousands of times
+// as fast as the drive next to the flat state), random assignment, fixed face, drive and
+// direction, folded from flat to every target 1e-6° … 90° with two steps. Both solvers give the
+// same verdict, frames and angles; the verdict does not depend on the step; and it does not
+// depend on the target but through what the target reaches: "not rigidly foldable" or
+// "underdetermined" for every target or for none, and the creases folded against their
+// assignment up to a target are so up to every farther one.
+Test(solver_agree, steep_vertices_from_flat_agree_at_every_target)
+{
+    srand48(4343);
+    const double targets[] = {1e-6, 1e-4, 0.01, 0.1, 0.40315497733798683, 0.5, 0.9, 1, 2, 10, 90};
+    const double steps[] = {0.25, 30};
+    enum { NT = sizeof targets / sizeof *targets };
+    int verdicts[5] = {0}, cases = 0;
+    for (int trial = 0; trial < ORI_TEST_STEEP_VERTICES; ++trial) {
+        double base = frand(0.0, 360.0), eps = (drand48() < 0.5 ? -1.0 : 1.0) * pow(10.0, frand(-2.0, 0.5));
+        double theta[4] = {(base - frand(30.0, 150.0)) * DEG, base * DEG, (base + frand(30.0, 150.0)) * DEG,
+                           (base + 180.0 + eps) * DEG};
+        char assign[4];
+        for (int i = 0; i < 4; ++i) assign[i] = drand48() < 0.5 ? 'M' : 'V';
+        ori_pattern *p = vertex_pattern(4, theta, assign);
+        ori_mechanism *m = test_mechanism_of(p);
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = (int)(drand48() * 4);
+        d.driven_edge = (int)(drand48() * 4);
+        double sign = drand48() < 0.5 ? -1.0 : 1.0;
+        for (int solver = 0; solver < 2; ++solver) {
+            d.solver = solver ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+            ori_motion *prev = NULL;
+            bool none = false;
+            for (int ti = 0; ti < NT; ++ti) {
+                ori_motion *mo[2] = {NULL, NULL};
+                for (int si = 0; si < 2; ++si) {
+                    d.to_rad = sign * targets[ti] * DEG;
+                    d.step_rad = steps[si] * DEG;
+                    char what[256];
+                    snprintf(what, sizeof what, "steep vertex %d (creases 1, 3 %.3g° from collinear, %.4s), fix %d, drive %d to %.17g° step %g°",
+                             trial, eps, assign, d.fixed_face, d.driven_edge, d.to_rad / DEG, steps[si]);
+                    if (solver == 0) {
+                        compare(m, d, what);
+                        cases++;
+                    }
+                    ori_error err;
+                    cr_assert_eq(ori_motion_solve(m, &d, &mo[si], &err), ORI_OK, "%s", err.message);
+                    ori_motion_verdict v = ori_motion_verdict_of(mo[si]);
+                    if (solver == 0 && si == 1) verdicts[v]++;
+                    bool nv = v == ORI_MOTION_NOT_RIGIDLY_FOLDABLE || v == ORI_MOTION_UNDERDETERMINED;
+                    if (ti == 0 && si == 0) none = nv;
+                    cr_assert_eq(nv, none, "%s (%s): %s (%s), but %s at %g°", what, last_text, ori_motion_verdict_name(v),
+                                 ori_motion_reason(mo[si]), none ? "no motion" : "a motion", targets[0]);
+                    if (si == 1) {
+                        // The step changes nothing but the frames in between.
+                        cr_assert_eq(v, ori_motion_verdict_of(mo[0]), "%s (%s): %s, %s with step %g°", what, last_text,
+                                     ori_motion_verdict_name(v), ori_motion_verdict_name(ori_motion_verdict_of(mo[0])), steps[0]);
+                        int n0 = ori_motion_frame_count(mo[0]), n1 = ori_motion_frame_count(mo[1]);
+                        if (n0 && n1) {
+                            const double *a0 = ori_motion_frame_angles(mo[0], n0 - 1), *a1 = ori_motion_frame_angles(mo[1], n1 - 1);
+                            for (int e = 0; e < 4; ++e)
+                                cr_assert(fabs(a0[e] - a1[e]) <= 1e-8 * fmax(1.0, fabs(a0[e])), "%s (%s): crease %d at %.15g° vs %.15g°",
+                                          what, last_text, e, a1[e] / DEG, a0[e] / DEG);
+                        }
+                        cr_assert(!prev || violations_within(prev, mo[1]), "%s (%s): a crease folded against its assignment "
+                                  "at %g° is not at %g° (%s / %s)", what, last_text, targets[ti - 1], targets[ti],
+                                  ori_motion_reason(prev), ori_motion_reason(mo[1]));
+                    }
+                }
+                ori_motion_destroy(prev);
+                prev = mo[1];
+                ori_motion_destroy(mo[0]);
+            }
+            ori_motion_destroy(prev);
+        }
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+    cr_log_info("steep vertices: %d folds: valid %d, invalid %d, not foldable %d, underdetermined %d, blocked %d", cases,
+                verdicts[0], verdicts[1], verdicts[2], verdicts[3], verdicts[4]);
+    cr_assert_gt(cases, 16 * ORI_TEST_STEEP_VERTICES);
+    cr_assert_gt(verdicts[ORI_MOTION_INVALID_ASSIGNMENT], ORI_TEST_STEEP_VERTICES);
+    cr_assert_gt(verdicts[ORI_MOTION_VALID] + verdicts[ORI_MOTION_BLOCKED], 10);
 }
 
 // The issue's vertex: the closed form folded crease 9 to −294.4° and called it valid.
