@@ -394,11 +394,12 @@ typedef struct kin_escape {
 } kin_escape;
 
 // Whether the branch from the escape's start (s0, th0, t0) to its node (s1, th1, t1) is nearly
-// straight: the state's change over the escape differs from either tangent's linear prediction by
-// at most a quarter of it (then the cubic Hermite interpolation of the two is accurate within).
+// straight: the state's change over the escape (the drive's included) differs from either
+// tangent's linear prediction by at most a quarter of it (then the cubic Hermite interpolation of
+// the two is accurate within).
 static bool escape_straight(const ctx *c, const kin_escape *e)
 {
-    double big = 0.0, off = 0.0, ds = e->s1 - e->s0;
+    double ds = e->s1 - e->s0, big = fabs(ds), off = 0.0;
     for (int j = 0; j < c->m->joint_count; ++j)
         if (c->col[j] >= 0) {
             double d = e->th1[j] - e->th0[j];
