@@ -526,7 +526,8 @@ Test(solver_agree, seed_43_verdict_does_not_depend_on_the_target_or_the_step)
 // same verdict, frames and angles; the verdict does not depend on the step; and it does not
 // depend on the target but through what the target reaches: "not rigidly foldable" or
 // "underdetermined" for every target or for none, and the creases folded against their
-// assignment up to a target are so up to every farther one.
+// assignment up to a target are so up to every farther one. And from 0.05° and 5° on the branch
+// back through the flat state, both solvers the same.
 Test(solver_agree, steep_vertices_from_flat_agree_at_every_target)
 {
     srand48(4343);
@@ -597,6 +598,31 @@ Test(solver_agree, steep_vertices_from_flat_agree_at_every_target)
                 ori_motion_destroy(mo[0]);
             }
             ori_motion_destroy(prev);
+        }
+        // And back through the flat state from a state on the steep branch (inside the escape and
+        // beyond it) to the other side (section 7.3): both solvers the same.
+        for (int q = 0; q < 2; ++q) {
+            ori_motion_def f = d;
+            f.solver = ORI_SOLVER_NUMERIC;
+            f.to_rad = sign * (q ? 5.0 : 0.05) * DEG;
+            f.step_rad = 30 * DEG;
+            ori_motion *mo = NULL;
+            ori_error err;
+            cr_assert_eq(ori_motion_solve(m, &f, &mo, &err), ORI_OK, "%s", err.message);
+            double start[8] = {0};
+            int n = ori_motion_frame_count(mo) - (ori_motion_block_of(mo, NULL) ? 1 : 0);
+            if (n > 1) memcpy(start, ori_motion_frame_angles(mo, n - 1), sizeof(double) * 8);
+            ori_motion_destroy(mo);
+            if (n <= 1) continue;
+            f.start_angles_rad = start;
+            for (int ti = 0; ti < 3; ++ti) {
+                f.to_rad = -sign * (ti == 0 ? 0.01 : ti == 1 ? 1.0 : 10.0) * DEG;
+                char what[256];
+                snprintf(what, sizeof what, "steep vertex %d, fix %d, drive %d from %g° through flat to %g°", trial, f.fixed_face,
+                         f.driven_edge, start[f.driven_edge] / DEG, f.to_rad / DEG);
+                compare(m, f, what);
+                cases++;
+            }
         }
         ori_mechanism_destroy(m);
         ori_pattern_destroy(p);
