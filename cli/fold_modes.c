@@ -3,6 +3,7 @@
 #include "fold_modes.h"
 
 #include "collide_args.h"
+#include "output_guard.h"
 #include "progress.h"
 
 #include <math.h>
@@ -598,6 +599,28 @@ static int solve(modes_run *r)
     return CLI_EXIT_OK;
 }
 
+// The output guard (output_guard.h): at least the largest crease change to the goal (percent)
+// or of a drive (several drives) over the step, frames; asks for --force beyond it.
+static int guard_output(const modes_run *r, bool force)
+{
+    const modes_args *a = &r->a;
+    const ori_pattern *p = r->k.flat;
+    int E = ori_pattern_edge_count(p), V = ori_pattern_vertex_count(p);
+    double change = 0.0;
+    if (a->has_percent) {
+        double *tgt = malloc(sizeof(double) * (size_t)(E + 1));
+        ori_target_angles_default(p, tgt);
+        for (int e = 0; e < E; ++e) change = fmax(change, fabs(a->percent / 100.0 * (tgt[e] - r->k.angles[e])));
+        free(tgt);
+    } else {
+        for (int i = 0; i < a->ndrives && i < a->nto; ++i)
+            change = fmax(change, fabs(ori_deg_to_rad(a->to[i]) - r->k.angles[a->drives[i]]));
+    }
+    double frames = floor(change / ori_deg_to_rad(a->step_deg)) + 1.0;
+    double bytes = (a->out ? frames * (3.0 * V + E) * 20.0 : 0.0) + (a->json ? frames * E * 20.0 : 0.0);
+    return cli_guard_check(r->cmd, frames, bytes, force);
+}
+
 extern const cli_command cli_cmd_fold;
 
 // One drive with --lock auto (and nothing else of the modes): the lock set, then the ordinary
@@ -777,6 +800,8 @@ int cli_fold_modes_run(int argc, char **argv)
     av[argc] = NULL;
     int ac = argc;
     int rc = cli_collide_strip("fold", &ac, av, &r.co);
+    bool force = false;
+    if (rc == CLI_EXIT_OK) rc = cli_guard_strip("fold", &ac, av, &force);
     if (rc == CLI_EXIT_OK) rc = parse("fold", ac, av, &r.a);
     free(av);
     if (rc != CLI_EXIT_OK) return rc;
@@ -786,6 +811,7 @@ int cli_fold_modes_run(int argc, char **argv)
         cli_kin_free(&r.k);
         return rc;
     }
+    if (rc == CLI_EXIT_OK) rc = guard_output(&r, force);
     if (rc == CLI_EXIT_OK) rc = solve(&r);
     if (rc == CLI_EXIT_OK)
         rc = cli_collide_multifold("fold", r.a.path, &r.co, r.k.flat, r.mf, r.locks, r.nlocks, &r.col);

@@ -1129,3 +1129,38 @@ Test(kinematics, miura_30x30_fold_matches_its_fingerprint_and_last_frame_only_ke
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
+
+// The verdict does not depend on the output step past the escape from the flat state (issue 7
+// §3): a 3 × 3 Miura-ori folded from flat to just past the escape's end (1.0028°, the escape
+// ends at ORI_KIN_SINGULAR_STEP_RAD = 1.00268°) with output steps of 1e-5° used to be "blocked"
+// at the escape's end: the first step out extrapolated through the escape's states (fixed only
+// to O(δ²) off the branch), was rejected, and the halved step fell below ORI_KIN_MIN_STEP_RAD.
+// Every step now gives a valid fold to the same state.
+Test(kinematics, miura_past_the_escape_is_valid_for_every_output_step)
+{
+    const int n = 3;
+    ori_pattern *p = test_miura(n, n, 1.0, sqrt(1.25), atan2(1.0, 0.5), NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    double sg;
+    int E = ori_pattern_edge_count(p);
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = miura_drive(p, n, &sg);
+    d.to_rad = sg * ori_deg_to_rad(1.0028);
+    d.last_frame_only = true;
+    const double steps_deg[] = {1e-5, 3e-5, 1e-4, 1e-2, 1.0, 30.0};
+    double *ref = malloc(sizeof(double) * (size_t)E);
+    for (size_t i = 0; i < sizeof steps_deg / sizeof steps_deg[0]; ++i) {
+        d.step_rad = ori_deg_to_rad(steps_deg[i]);
+        ori_motion *mo = solve(m, &d);
+        cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "step %g°: %s", steps_deg[i], ori_motion_reason(mo));
+        const double *a = ori_motion_frame_angles(mo, ori_motion_frame_count(mo) - 1);
+        cr_assert_float_eq(a[d.driven_edge], d.to_rad, 1e-12);
+        if (i == 0) memcpy(ref, a, sizeof(double) * (size_t)E);
+        for (int e = 0; e < E; ++e)
+            cr_assert_float_eq(a[e] / DEG, ref[e] / DEG, 1e-9, "step %g°, crease %d", steps_deg[i], e);
+        ori_motion_destroy(mo);
+    }
+    free(ref);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

@@ -554,6 +554,10 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
             memmove(hs, hs + 1, sizeof(double) * (ORI_KIN_HISTORY - 1));
             nh--;
         }
+        // States within the escape are fixed by its interpolation only to O(δ²) off the branch
+        // (they close, but so does every state near a flat vertex): no extrapolation through
+        // them; the history starts afresh at the escape's end (its tangent is exact).
+        if (in_esc) nh = 0, hist0 = 0;
         memcpy(HIST(nh), c->th, sizeof(double) * (size_t)J);
         hs[nh++] = snew;
         c->mo->stats.steps++;

@@ -591,7 +591,11 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double D0 = goal_distance(m, joint_var, th, goal);
     ori__mf_record(mo, th, ori__kin_residual(m, th), D0 > 0.0 ? 0.0 : 1.0);
-    double hmax = fmin(def->step_rad, ORI_MULTIFOLD_MAX_STEP_RAD);
+    // The solver's steps do not depend on the output spacing (a fold's path and verdict are the
+    // same for every --step): frames between two steps are interpolated (below).
+    double hmax = ORI_MULTIFOLD_MAX_STEP_RAD;
+    double *mid = NULL; // the frames inside one step: J angles, residual, progress each
+    int mid_cap = 0;
     double h = hmax, since = 0.0;
     enum { WHY_NONE, WHY_NEWTON, WHY_LIMIT, WHY_FARTHER } why = WHY_NONE;
     int why_joint = -1;
@@ -698,9 +702,49 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 accept = false;
                 why = WHY_FARTHER;
             }
+            // Frames every def->step_rad of the largest crease change: those that fall inside this
+            // step are the chord from th to trial at that change, corrected onto the constraints;
+            // one that falls on its end is trial. A corrected state beyond ±π (or one that does not
+            // close) rejects the step as a crease limit would: the step passed too near it.
+            double moved = 0.0;
+            for (int j = 0; j < J; ++j) moved = fmax(moved, fabs(trial[j] - th[j]));
+            int nmid = 0, k = 1;
+            bool at_end = false;
+            for (; accept; ++k) {
+                double c = (double)k * def->step_rad - since; // the change from th where frame k falls
+                if (c > moved * (1.0 + ORI_MULTIFOLD_GRID_REL)) break;
+                if (c >= moved * (1.0 - ORI_MULTIFOLD_GRID_REL)) {
+                    at_end = true;
+                    break;
+                }
+                if (nmid == mid_cap) {
+                    mid_cap = 2 * mid_cap + 4;
+                    mid = ori__realloc(mid, sizeof(double) * (size_t)mid_cap * (size_t)(J + 2));
+                }
+                double *x = mid + (size_t)nmid * (size_t)(J + 2), u = c / moved, rm = 0.0;
+                for (int j = 0; j < J; ++j) x[j] = th[j] + u * (trial[j] - th[j]);
+                int im = 0;
+                bool closed = ori__mf_correct(&sys, x, &im, &rm);
+                for (int j = 0; j < J && closed; ++j)
+                    if (joint_var[j] >= 0 && !(fabs(x[j]) <= ORI_PI + ORI_TOL_NEWTON)) {
+                        closed = false;
+                        why = WHY_LIMIT;
+                        why_joint = j;
+                    }
+                if (!closed) {
+                    if (why != WHY_LIMIT) why = WHY_NEWTON;
+                    accept = false;
+                    break;
+                }
+                x[J] = rm;
+                x[J + 1] = D0 > 0.0 ? 1.0 - goal_distance(m, joint_var, x, goal) / D0 : 1.0;
+                nmid++;
+            }
             if (accept) {
-                double moved = 0.0;
-                for (int j = 0; j < J; ++j) moved = fmax(moved, fabs(trial[j] - th[j]));
+                for (int i = 0; i < nmid; ++i) {
+                    const double *x = mid + (size_t)i * (size_t)(J + 2);
+                    ori__mf_record(mo, x, x[J], x[J + 1]);
+                }
                 h_ring[stall_n % ORI_MULTIFOLD_STALL_STEPS] = h; // the step length, path and distance before this step
                 path_ring[stall_n % ORI_MULTIFOLD_STALL_STEPS] = path;
                 stall_ring[stall_n++ % ORI_MULTIFOLD_STALL_STEPS] = D;
@@ -708,16 +752,12 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 for (int j = 0; j < J; ++j)
                     if (joint_var[j] >= 0) len += (trial[j] - th[j]) * (trial[j] - th[j]);
                 path += sqrt(len);
+                since = at_end ? 0.0 : since + moved - (double)(k - 1) * def->step_rad;
                 memcpy(th, trial, sizeof(double) * (size_t)J);
                 mo->steps++;
                 last_res = res;
-                since += moved;
-                recorded = false;
-                if (since >= def->step_rad * (1.0 - ORI_MULTIFOLD_GRID_REL)) {
-                    ori__mf_record(mo, th, res, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0);
-                    since = 0.0;
-                    recorded = true;
-                }
+                recorded = at_end;
+                if (at_end) ori__mf_record(mo, th, res, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0);
                 if (its <= 5) h = fmin(2.0 * h, hmax);
                 if (def->progress) { // the distance to the goal only shrinks: 1 − D/D0 grows
                     reported = fmax(reported, fmin(1.0, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0));
@@ -811,6 +851,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     ori__free(jd);
     ori__free(trial);
     ori__free(pred);
+    ori__free(mid);
     if (!cancelled && def->progress) cancelled = !def->progress(1.0, def->progress_user);
     if (cancelled) {
         ori_multifold_destroy(mo);
