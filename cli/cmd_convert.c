@@ -28,7 +28,7 @@ static int run(int argc, char **argv)
     cli_input in;
     cli_input_init(&in);
     cli_seen seen = {0};
-    bool full_fold = false, json = false, label_faces = false, label_edges = false;
+    bool full_fold = false, json = false, label_faces = false, label_edges = false, out_by_o = false;
     for (int i = 1; i < argc; ++i) {
         int r = cli_input_option(cmd, argc, argv, &i, &in, &seen);
         if (r < 0) return -r;
@@ -43,6 +43,11 @@ static int run(int argc, char **argv)
             else if (strcmp(v, "edges") == 0) label_edges = true;
             else if (strcmp(v, "all") == 0) label_faces = label_edges = true;
             else return cli_usage(cmd, "--labels takes faces, edges or all, got '%s'", v);
+        } else if (strcmp(argv[i], "-o") == 0) { // OUT as every other command takes it
+            if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (out) return cli_usage(cmd, "OUT given twice (as OUT and with -o)");
+            out = v;
+            out_by_o = true;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             return cli_usage(cmd, "unknown option %s", argv[i]);
         } else if (!in_path) {
@@ -50,6 +55,7 @@ static int run(int argc, char **argv)
         } else if (!out) {
             out = argv[i];
         } else {
+            if (out_by_o) return cli_usage(cmd, "OUT given twice (as OUT and with -o)");
             return cli_usage(cmd, "expected IN and OUT only");
         }
     }
@@ -129,7 +135,7 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_convert = {
     "convert",
     "convert between FOLD, SVG, ORIPA .opx and .cp (by extension)",
-    "usage: orikin convert IN OUT [options]\n"
+    "usage: orikin convert IN OUT [options]   (or IN -o OUT)\n"
     "\n"
     "Read IN, validate it and write OUT; formats by extension: .fold, .svg (Origami Simulator\n"
     "colours), .opx and .cp (ORIPA); OUT - writes FOLD text to stdout. FOLD to FOLD is a\n"
@@ -145,6 +151,8 @@ const cli_command cli_cmd_convert = {
     "a one-line summary (--json: an object).\n"
     "\n"
     "options:\n" CLI_INPUT_HELP
+    "  -o OUT             the output, as the other commands take it (instead of the second\n"
+    "                     argument)\n"
     "  --full-fold        SVG output: mountains and valleys at opacity 1 (fold flat) whatever\n"
     "                     their fold angle (creases at 0 are written at 1 anyway: no target)\n"
     "  --labels WHAT      SVG output: write faces (index and name), edges (index) or all\n"
