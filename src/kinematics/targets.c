@@ -312,7 +312,12 @@ void ori__mf_record(ori_multifold *mo, const double *th, double residual, double
         mo->progress = ori__realloc(mo->progress, sizeof(double) * (size_t)mo->cap);
     }
     int k = mo->nframes++;
-    ori__kin_joints_to_edges(mo->m, th, mo->angles + (size_t)k * (size_t)(mo->edge_count + 1));
+    double *a = mo->angles + (size_t)k * (size_t)(mo->edge_count + 1);
+    ori__kin_joints_to_edges(mo->m, th, a);
+    // The steps accept a crease up to ORI_TOL_NEWTON beyond ±π (the corrector's precision); the
+    // frames hold it at ±π, so that no output angle leaves [−180°, 180°].
+    for (int e = 0; e < mo->edge_count; ++e)
+        if (fabs(a[e]) > ORI_PI && fabs(a[e]) <= ORI_PI + ORI_TOL_NEWTON) a[e] = a[e] > 0.0 ? ORI_PI : -ORI_PI;
     mo->residual[k] = residual;
     mo->progress[k] = progress;
 }
@@ -704,8 +709,9 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             }
             // Frames every def->step_rad of the largest crease change: those that fall inside this
             // step are the chord from th to trial at that change, corrected onto the constraints;
-            // one that falls on its end is trial. A corrected state beyond ±π (or one that does not
-            // close) rejects the step as a crease limit would: the step passed too near it.
+            // one that falls on its end is trial. The output never steers the solver: an
+            // interpolation that does not close, or closes beyond ±π, is replaced by the step's
+            // end (that frame then lies up to one step further on).
             double moved = 0.0;
             for (int j = 0; j < J; ++j) moved = fmax(moved, fabs(trial[j] - th[j]));
             int nmid = 0, k = 1;
@@ -724,16 +730,11 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 double *x = mid + (size_t)nmid * (size_t)(J + 2), u = c / moved, rm = 0.0;
                 for (int j = 0; j < J; ++j) x[j] = th[j] + u * (trial[j] - th[j]);
                 int im = 0;
-                bool closed = ori__mf_correct(&sys, x, &im, &rm);
+                bool closed = ori__mf_correct(&sys, x, &im, &rm) && rm <= ORI_TOL_RESIDUAL;
                 for (int j = 0; j < J && closed; ++j)
-                    if (joint_var[j] >= 0 && !(fabs(x[j]) <= ORI_PI + ORI_TOL_NEWTON)) {
-                        closed = false;
-                        why = WHY_LIMIT;
-                        why_joint = j;
-                    }
+                    if (joint_var[j] >= 0 && !(fabs(x[j]) <= ORI_PI + ORI_TOL_NEWTON)) closed = false;
                 if (!closed) {
-                    if (why != WHY_LIMIT) why = WHY_NEWTON;
-                    accept = false;
+                    at_end = true;
                     break;
                 }
                 x[J] = rm;
