@@ -8,8 +8,10 @@
 // exists), the driven crease is set exactly to s + h, and the corrector (solver.c) pulls the
 // prediction back onto the loop-closure manifold. A step is rejected, and halved, when the
 // corrector fails or moves the prediction by more than half the step (a jump to another
-// branch); easy steps (≤ 3 iterations) double the step up to ORI_KIN_MAX_STEP_RAD. Output
-// states land exactly on the requested drive values. At a singular start (the flat sheet) the
+// branch); easy steps (≤ 3 iterations) double the step up to ORI_KIN_MAX_STEP_RAD, and no moving
+// crease turns more than ORI_KIN_MAX_TURN_RAD in a step (a steep branch is followed in steps
+// short against its turn, whatever the output step). Output states land exactly on the
+// requested drive values. At a singular start (the flat sheet) the
 // tangent comes from the second-order cone analysis (cone.c), which also selects the branch.
 #include <lapacke.h>
 #include <math.h>
@@ -403,6 +405,10 @@ typedef struct kin_escape {
 // i-th oldest state. t_first (per unit drive, in the direction of motion) replaces the tangent
 // of the first step out of a singular start; esc (may be NULL) supplies the states up to the
 // escape.
+//
+// Step: at most min(output step, ORI_KIN_MAX_STEP_RAD) of drive, and at most ORI_KIN_MAX_TURN_RAD
+// over the last step's rate max |Δθ|/Δs, so that no moving crease turns further; a prediction
+// that still turns one further is shortened before it is corrected (outside the escape).
 #define ORI_KIN_HISTORY 6
 static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, const double *t_first,
                                const kin_escape *esc)
