@@ -516,11 +516,13 @@
 #define ORI_TOL_KIN_GRID_REL 1e-9
 
 /// Step control of both fold solvers along a steep branch: no moving crease turns by more than
-/// ORI_KIN_MAX_TURN_RAD in one internal step (radians; ORI_KIN_MAX_STEP_RAD bounds the drive). The step is capped at that turn over the last step's rate max |Δθ|/Δs, and
-/// a prediction that still turns a crease further is shortened to ORI_KIN_TURN_SHRINK × the
-/// bound before it is corrected (a factor below the 0.8 at which a step merges into a near
-/// remainder). An arc-length bound in the max norm: a step across a steep turn could otherwise be
-/// corrected onto another branch within half its predicted change (docs/kinematics.md §6.2).
+/// ORI_KIN_MAX_TURN_RAD in one internal step (radians; ORI_KIN_MAX_STEP_RAD bounds the drive).
+/// The step is capped at that turn over the last step's rate max |Δθ|/Δs, and a prediction that
+/// still turns a crease further is shortened to ORI_KIN_TURN_SHRINK × the bound before it is
+/// corrected (unitless; below the 0.8 at which a step merges into a near remainder, so that the
+/// shortening ends). An arc-length bound in the max norm: a step across a steep turn could
+/// otherwise be corrected onto another branch within half its predicted change
+/// (docs/kinematics.md §6.2).
 #define ORI_KIN_MAX_TURN_RAD 0.1
 #define ORI_KIN_TURN_SHRINK 0.75
 

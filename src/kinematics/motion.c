@@ -429,7 +429,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
 #define HIST(i) (hist + (size_t)(((hist0) + (i)) % ORI_KIN_HISTORY) * (size_t)J)
     double sp = 0.0;
     bool have_prev = false;
-    bool t_here = false; // t is the tangent at c->th (kept through rejected steps)
+    bool t_here = false; // t is the tangent at c->th (kept through a shortened prediction)
     double rate = 0.0;   // max |Δθ| / Δs of the last accepted step (0: none yet)
     leg_result result = LEG_OK;
     bool singular_first = t_first != NULL && esc == NULL;
@@ -537,6 +537,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         if (accept && beyond_limit(c, trial)) accept = false;
         if (!accept) {
             c->mo->stats.rejected_steps++;
+            t_here = false; // as before the turn bound: the tangent is computed afresh after a correction
             h = 0.5 * hh;
             nh = 1; // restart the history from the current state
             hist0 = 0;
