@@ -497,6 +497,67 @@ Test(solver_agree, seed_45_vertex_verdict_and_end_state_do_not_depend_on_the_ste
     ori_pattern_destroy(p);
 }
 
+// A degree-5 vertex with crease 3 locked at 10.12°, driven by crease 4 from 7.01° to −57.89° in
+// 7.25° steps (seed 312 of the property test): crease 0 turns from 14° to 175° between −7.49° and
+// −14.73° of drive (up to 22° per degree). The continuation used to jump to the other branch
+// there (crease 0 at −6.09° at −14.73°) and fold on to the target (10 frames) while the closed
+// form stopped at −22.35° where crease 0 reaches 180° (6 frames); both stop there now, at every
+// output step.
+Test(solver_agree, seed_312_vertex_follows_a_branch_turning_22_degrees_per_degree)
+{
+    const char *text = "{\"vertices_coords\":[[0,0],[0.76952699984201733,0.63861427835129392],[-0.68748389750550265,0.72619962177809183],"
+                       "[-0.76995993300647314,-0.63809223593824371],[0.29542784982970116,-0.95536505355021206],"
+                       "[0.83983081418780692,-0.54284823251130265]],"
+                       "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[1,2],[2,3],[3,4],[4,5],[5,1]],"
+                       "\"edges_assignment\":[\"M\",\"V\",\"M\",\"M\",\"V\",\"B\",\"B\",\"B\",\"B\",\"B\"]}";
+    snprintf(last_text, sizeof last_text, "%s", text);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    ori_fold_destroy(doc);
+    ori_mechanism *m = test_mechanism_of(p);
+    double start[8] = {0, 16.075465605143719 * DEG, -2.8449162172367046 * DEG, 10.122718284995926 * DEG,
+                       7.0119508693013568 * DEG};
+    int lock = 3;
+    const double steps[] = {7.2487354477871717, 1.0, 21.0, 60.0};
+    const int frames[] = {6, 31, 3, 2};
+    for (int si = 0; si < 4; ++si) {
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = 4;
+        d.driven_edge = 4;
+        d.locked_edges = &lock;
+        d.locked_count = 1;
+        d.start_angles_rad = start;
+        d.to_rad = -57.885179904616564 * DEG;
+        d.step_rad = steps[si] * DEG;
+        char what[96];
+        snprintf(what, sizeof what, "seed 312 vertex at %g° steps", steps[si]);
+        compare(m, d, what);
+        for (int k = 0; k < 2; ++k) {
+            d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+            ori_motion *mo = NULL;
+            cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+            cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s", what);
+            cr_assert_eq(ori_motion_frame_count(mo), frames[si], "%s: %d frames", what, ori_motion_frame_count(mo));
+            ori_motion_block b;
+            cr_assert(ori_motion_block_of(mo, &b), "%s", what);
+            cr_assert_eq(b.kind, ORI_BLOCK_CREASE_LIMIT, "%s", what);
+            cr_assert_eq(b.edge, 0, "%s", what);
+            cr_assert(fabs(b.drive_rad / DEG + 22.348865622) < 1e-6, "%s: stop at %.12g°", what, b.drive_rad / DEG);
+            if (si == 0) {
+                // Past the turn, on its branch (the other one has crease 0 at −6.09° there).
+                const double *a = ori_motion_frame_angles(mo, 3);
+                cr_assert(fabs(a[0] / DEG - 175.1578) < 1e-3, "%s: crease 0 at %.12g°", what, a[0] / DEG);
+            }
+            ori_motion_destroy(mo);
+        }
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // A degree-4 vertex folded from the flat state to a target inside the escape (0.403°, below
 // ORI_KIN_SINGULAR_STEP_RAD): both solvers used to hang (seed 43 of the property test; `orikin
 // fold` did not return) — a rejected step within the escape was retried at the same length
