@@ -518,7 +518,7 @@ Test(solver_agree, seed_312_vertex_follows_a_branch_turning_22_degrees_per_degre
     cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
     ori_fold_destroy(doc);
     ori_mechanism *m = test_mechanism_of(p);
-    double start[8] = {0, 16.075465605143719 * DEG, -2.8449162172367046 * DEG, 10.122718284995926 * DEG,
+    double start[16] = {0, 16.075465605143719 * DEG, -2.8449162172367046 * DEG, 10.122718284995926 * DEG,
                        7.0119508693013568 * DEG};
     int lock = 3;
     const double steps[] = {7.2487354477871717, 1.0, 21.0, 60.0};
