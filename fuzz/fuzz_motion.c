@@ -93,6 +93,35 @@ static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
             }
             ori_motion_destroy(two[0]);
             ori_motion_destroy(two[1]);
+            // The drive locked there at its folded angle, another crease driven (as the property
+            // test's spec 3): the branch through drive 0 can then be steep, or pass close to the
+            // other one (docs/kinematics.md §6.2). The same verdict and frame count at any step.
+            int nl = d.locked_count, locks2[9];
+            for (int i = 1; i < nl; ++i) locks2[i - 1] = d.locked_edges[i];
+            locks2[nl > 0 ? nl - 1 : 0] = d.driven_edge;
+            d.locked_edges = locks2;
+            d.locked_count = nl > 0 ? nl : 1;
+            d.driven_edge = fk_u8(b) % E;
+            d.to_rad = fk_range(b, -180.0, 180.0) * FK_DEG;
+            d.step_rad = fk_range(b, 1.0, 90.0) * FK_DEG;
+            bool ok = true;
+            for (int q = 0; q < 2; ++q) {
+                d.solver = q ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+                two[q] = NULL;
+                ok = ok && ori_motion_solve(m, &d, &two[q], &err) == ORI_OK;
+                if (two[q]) fk_check_motion(m, two[q]);
+            }
+            // Not a spherical 4R now (the closed form refuses it), or a start at ±180°: not compared.
+            ok = ok && !fk_any_near_limit(start, E, ORI_TOL_KIN_STOP_SIGN_RAD);
+            if (ok && (ori_motion_verdict_of(two[0]) != ori_motion_verdict_of(two[1]) ||
+                       ori_motion_frame_count(two[0]) != ori_motion_frame_count(two[1]))) {
+                fprintf(stderr, "a crease locked folded: closed form %s (%s), numeric %s (%s)\n",
+                        ori_motion_verdict_name(ori_motion_verdict_of(two[0])), ori_motion_reason(two[0]) ? ori_motion_reason(two[0]) : "",
+                        ori_motion_verdict_name(ori_motion_verdict_of(two[1])), ori_motion_reason(two[1]) ? ori_motion_reason(two[1]) : "");
+                abort();
+            }
+            ori_motion_destroy(two[0]);
+            ori_motion_destroy(two[1]);
         }
     }
     ori_motion_destroy(mo);

@@ -249,13 +249,12 @@ static agree_sample run_sample(long seed, int trials)
                 drive = next;
                 d.driven_edge = drive;
                 d.locked_count = nl;
-                // With the locked crease folded by less than 10° the two branches pass within
-                // about that angle of each other near drive 0 (no crossing, no singular point):
-                // the continuation's steps there are bounded by it (docs/kinematics.md §6.2), and
-                // the target is anywhere. Folded further, the branch through drive 0 can be
-                // steeper than the steps resolve (a crease from 0° to −158° over 21°): the target
-                // stays on the start's side (§15).
-                if (k > 1 && fabs(start[locks[nl - 1]]) > 10.0 * DEG && d.to_rad * start[drive] < 0.0) d.to_rad = -d.to_rad;
+                // The target is anywhere, through drive 0 included: with the locked crease folded
+                // by less than 10° the two branches pass within about that angle of each other
+                // near drive 0, and folded further the branch through drive 0 can be steep (a
+                // crease from 0° to −158.7° over 21° of drive, seed 45): the continuation's steps
+                // are bounded by the turn of every crease, whatever the output step
+                // (docs/kinematics.md §6.2).
             }
             if (spec == 2) {
                 double big = 0.0;
@@ -408,6 +407,202 @@ Test(solver_agree, seed_3_vertex_continues_its_branch_through_the_flat_state)
         for (int e = 0; e < 4; ++e)
             cr_assert(fabs(at[0][e] + at[1][e]) < 1e-10 * fmax(1.0, fabs(at[0][e])), "crease %d: %.15g° at 10°, %.15g° at −10°", e,
                       at[0][e] / DEG, at[1][e] / DEG);
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// A degree-6 vertex with creases 4 and 1 locked (at 0° and −26.23°), driven by crease 5 from
+// −12.97° to 62.49° (seed 45 of the property test): the branch through drive 0 is steep (crease 0
+// turns from 0° to −158.7° over the first 21° of drive, up to 15° per degree). With 21° output
+// steps the continuation used to take the other branch (crease 0 at +42.68° at 8.04°, a fold
+// "invalid assignment" to the target, 5 frames) while the closed form stopped at 45.81° where
+// crease 0 reaches −180° (4 frames). No crease now turns more than ORI_KIN_MAX_TURN_RAD in one
+// internal step: both solvers follow the branch at every output step and stop there.
+static const char *seed45_text =
+    "{\"vertices_coords\":[[0,0],[0.94147431802903969,0.33708472005084228],[-0.030737408720446401,0.99952749422172082],"
+    "[-0.62563991905167871,0.78011197381466268],[-0.92726223942934194,-0.37441252560308619],"
+    "[-0.47823510027826677,-0.87823185370483814],[0.75635971869232321,-0.65415592632007069]],"
+    "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[0,6],[1,2],[2,3],[3,4],[4,5],[5,6],[6,1]],"
+    "\"edges_assignment\":[\"M\",\"V\",\"V\",\"M\",\"M\",\"V\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\"]}";
+
+static ori_mechanism *seed45_vertex(ori_pattern **p)
+{
+    snprintf(last_text, sizeof last_text, "%s", seed45_text);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(seed45_text, strlen(seed45_text), &doc, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, p, &err), ORI_OK, "%s", err.message);
+    ori_fold_destroy(doc);
+    return test_mechanism_of(*p);
+}
+
+static const double seed45_start_deg[6] = {0, -26.233352821877389, 13.829645428056077, -18.825787412521748, 0,
+                                           -12.965902235715303};
+
+static ori_motion_def seed45_def(double *start, int *locks)
+{
+    for (int e = 0; e < 6; ++e) start[e] = seed45_start_deg[e] * DEG;
+    locks[0] = 4;
+    locks[1] = 1;
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = 2;
+    d.driven_edge = 5;
+    d.locked_edges = locks;
+    d.locked_count = 2;
+    d.start_angles_rad = start;
+    d.to_rad = 62.487006944788284 * DEG;
+    d.step_rad = 21.010120325623003 * DEG;
+    return d;
+}
+
+Test(solver_agree, seed_45_vertex_follows_its_steep_branch_at_21_degree_steps)
+{
+    ori_pattern *p = NULL;
+    ori_mechanism *m = seed45_vertex(&p);
+    double start[16] = {0};
+    int locks[2];
+    ori_motion_def d = seed45_def(start, locks);
+    compare(m, d, "seed 45 vertex, 21° steps");
+    for (int k = 0; k < 2; ++k) {
+        d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+        ori_motion *mo = NULL;
+        ori_error err;
+        cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s: %s",
+                     ori_motion_verdict_name(ori_motion_verdict_of(mo)), ori_motion_reason(mo));
+        // Frames: the start, 8.04°, 29.05° and the stop.
+        cr_assert_eq(ori_motion_frame_count(mo), 4);
+        ori_motion_block b;
+        cr_assert(ori_motion_block_of(mo, &b));
+        cr_assert_eq(b.kind, ORI_BLOCK_CREASE_LIMIT);
+        cr_assert_eq(b.edge, 0);
+        cr_assert(fabs(b.drive_rad / DEG - 45.80973548) < 1e-6, "stop at %.12g°", b.drive_rad / DEG);
+        // On the steep branch, not the other one (crease 0 at +42.68° there).
+        const double *a = ori_motion_frame_angles(mo, 1);
+        cr_assert(fabs(ori_motion_frame_drive(mo, 1) - (start[5] + d.step_rad)) < 1e-12, "frame 1 at %.12g°",
+                  ori_motion_frame_drive(mo, 1) / DEG);
+        cr_assert(fabs(a[0] / DEG + 158.7166) < 1e-3, "crease 0 at %.12g°", a[0] / DEG);
+        ori_motion_destroy(mo);
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// The same fold at output steps of 1°, 7°, 21° and 60° (and to 30°, before the stop, on the steep
+// branch's far side): the same verdict and stop with both solvers at every step, and the same
+// end state whatever the step.
+Test(solver_agree, seed_45_vertex_verdict_and_end_state_do_not_depend_on_the_step)
+{
+    ori_pattern *p = NULL;
+    ori_mechanism *m = seed45_vertex(&p);
+    const double steps[] = {1.0, 7.0, 21.0, 60.0};
+    const double targets[] = {62.487006944788284, 30.0};
+    for (int ti = 0; ti < 2; ++ti) {
+        double ref[16] = {0}, ref_stop = 0.0;
+        for (int si = 0; si < 4; ++si) {
+            double start[16] = {0};
+            int locks[2];
+            ori_motion_def d = seed45_def(start, locks);
+            d.to_rad = targets[ti] * DEG;
+            d.step_rad = steps[si] * DEG;
+            char what[128];
+            snprintf(what, sizeof what, "seed 45 vertex to %g° at %g° steps", targets[ti], steps[si]);
+            compare(m, d, what);
+            for (int k = 0; k < 2; ++k) {
+                d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+                ori_motion *mo = NULL;
+                ori_error err;
+                cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+                cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s: %s", what,
+                             ori_motion_verdict_name(ori_motion_verdict_of(mo)));
+                int n = ori_motion_frame_count(mo);
+                ori_motion_block b;
+                bool blocked = ori_motion_block_of(mo, &b);
+                cr_assert_eq(blocked, ti == 0, "%s", what);
+                const double *a = ori_motion_frame_angles(mo, n - 1);
+                if (si == 0 && k == 0) {
+                    memcpy(ref, a, sizeof(double) * 12);
+                    ref_stop = blocked ? b.drive_rad : 0.0;
+                }
+                if (blocked) {
+                    cr_assert_eq(b.edge, 0, "%s", what);
+                    cr_assert(fabs(b.drive_rad - ref_stop) <= 1e-6, "%s: stop at %.12g°, at 1° steps %.12g°", what,
+                              b.drive_rad / DEG, ref_stop / DEG);
+                } else {
+                    cr_assert_eq(ori_motion_frame_drive(mo, n - 1), d.to_rad, "%s", what);
+                    // Crease 0 well past its steep turn (−172.8° at 30°).
+                    cr_assert(a[0] < -170.0 * DEG, "%s: crease 0 at %.12g°", what, a[0] / DEG);
+                }
+                // The end state: to 1e-9° apart from the stop (located to 1e-6 rad in the drive).
+                double tol = blocked ? 1e-5 : 1e-9 * DEG;
+                for (int e = 0; e < 6; ++e)
+                    cr_assert(fabs(a[e] - ref[e]) <= tol, "%s (%s): crease %d at %.15g°, at 1° steps %.15g°", what,
+                              k ? "numeric" : "closed form", e, a[e] / DEG, ref[e] / DEG);
+                ori_motion_destroy(mo);
+            }
+        }
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// A degree-5 vertex with crease 3 locked at 10.12°, driven by crease 4 from 7.01° to −57.89° in
+// 7.25° steps (seed 312 of the property test): crease 0 turns from 14° to 175° between −7.49° and
+// −14.73° of drive (up to 22° per degree). The continuation used to jump to the other branch
+// there (crease 0 at −6.09° at −14.73°) and fold on to the target (10 frames) while the closed
+// form stopped at −22.35° where crease 0 reaches 180° (6 frames); both stop there now, at every
+// output step.
+Test(solver_agree, seed_312_vertex_follows_a_branch_turning_22_degrees_per_degree)
+{
+    const char *text = "{\"vertices_coords\":[[0,0],[0.76952699984201733,0.63861427835129392],[-0.68748389750550265,0.72619962177809183],"
+                       "[-0.76995993300647314,-0.63809223593824371],[0.29542784982970116,-0.95536505355021206],"
+                       "[0.83983081418780692,-0.54284823251130265]],"
+                       "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[1,2],[2,3],[3,4],[4,5],[5,1]],"
+                       "\"edges_assignment\":[\"M\",\"V\",\"M\",\"M\",\"V\",\"B\",\"B\",\"B\",\"B\",\"B\"]}";
+    snprintf(last_text, sizeof last_text, "%s", text);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    ori_fold_destroy(doc);
+    ori_mechanism *m = test_mechanism_of(p);
+    double start[16] = {0, 16.075465605143719 * DEG, -2.8449162172367046 * DEG, 10.122718284995926 * DEG,
+                       7.0119508693013568 * DEG};
+    int lock = 3;
+    const double steps[] = {7.2487354477871717, 1.0, 21.0, 60.0};
+    const int frames[] = {6, 31, 3, 2};
+    for (int si = 0; si < 4; ++si) {
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = 4;
+        d.driven_edge = 4;
+        d.locked_edges = &lock;
+        d.locked_count = 1;
+        d.start_angles_rad = start;
+        d.to_rad = -57.885179904616564 * DEG;
+        d.step_rad = steps[si] * DEG;
+        char what[96];
+        snprintf(what, sizeof what, "seed 312 vertex at %g° steps", steps[si]);
+        compare(m, d, what);
+        for (int k = 0; k < 2; ++k) {
+            d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+            ori_motion *mo = NULL;
+            cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+            cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s", what);
+            cr_assert_eq(ori_motion_frame_count(mo), frames[si], "%s: %d frames", what, ori_motion_frame_count(mo));
+            ori_motion_block b;
+            cr_assert(ori_motion_block_of(mo, &b), "%s", what);
+            cr_assert_eq(b.kind, ORI_BLOCK_CREASE_LIMIT, "%s", what);
+            cr_assert_eq(b.edge, 0, "%s", what);
+            cr_assert(fabs(b.drive_rad / DEG + 22.348865622) < 1e-6, "%s: stop at %.12g°", what, b.drive_rad / DEG);
+            if (si == 0) {
+                // Past the turn, on its branch (the other one has crease 0 at −6.09° there).
+                const double *a = ori_motion_frame_angles(mo, 3);
+                cr_assert(fabs(a[0] / DEG - 175.1578) < 1e-3, "%s: crease 0 at %.12g°", what, a[0] / DEG);
+            }
+            ori_motion_destroy(mo);
+        }
     }
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);

@@ -520,5 +520,15 @@
 /// escape's end, or (a steep branch, not yet nearly straight there) the state at half the distance,
 /// halving at most this many times (to 1/16384 of ORI_KIN_SINGULAR_STEP_RAD, 1.1e-6 rad). Count.
 #define ORI_KIN_ESCAPE_HALVINGS 14
+/// Step control of both fold solvers along a steep branch: no moving crease turns by more than
+/// ORI_KIN_MAX_TURN_RAD in one internal step (radians; ORI_KIN_MAX_STEP_RAD bounds the drive).
+/// The step is capped at that turn over the last step's rate max |Δθ|/Δs, and a prediction that
+/// still turns a crease further is shortened to ORI_KIN_TURN_SHRINK × the bound before it is
+/// corrected (unitless; below the 0.8 at which a step merges into a near remainder, so that the
+/// shortening ends). An arc-length bound in the max norm: a step across a steep turn could
+/// otherwise be corrected onto another branch within half its predicted change
+/// (docs/kinematics.md §6.2).
+#define ORI_KIN_MAX_TURN_RAD 0.1
+#define ORI_KIN_TURN_SHRINK 0.75
 
 #endif

@@ -8,8 +8,10 @@
 // exists), the driven crease is set exactly to s + h, and the corrector (solver.c) pulls the
 // prediction back onto the loop-closure manifold. A step is rejected, and halved, when the
 // corrector fails or moves the prediction by more than half the step (a jump to another
-// branch); easy steps (≤ 3 iterations) double the step up to ORI_KIN_MAX_STEP_RAD. Output
-// states land exactly on the requested drive values. At a singular start (the flat sheet) the
+// branch); easy steps (≤ 3 iterations) double the step up to ORI_KIN_MAX_STEP_RAD, and no moving
+// crease turns more than ORI_KIN_MAX_TURN_RAD in a step (a steep branch is followed in steps
+// short against its turn, whatever the output step). Output states land exactly on the
+// requested drive values. At a singular start (the flat sheet) the
 // tangent comes from the second-order cone analysis (cone.c), which also selects the branch.
 #include <lapacke.h>
 #include <math.h>
@@ -419,6 +421,10 @@ static bool escape_straight(const ctx *c, const kin_escape *e)
 // i-th oldest state. t_first (per unit drive, in the direction of motion) replaces the tangent
 // of the first step out of a singular start; esc (may be NULL) supplies the states up to the
 // escape.
+//
+// Step: at most min(output step, ORI_KIN_MAX_STEP_RAD) of drive, and at most ORI_KIN_MAX_TURN_RAD
+// over the last step's rate max |Δθ|/Δs, so that no moving crease turns further; a prediction
+// that still turns one further is shortened before it is corrected (outside the escape).
 #define ORI_KIN_HISTORY 6
 static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, const double *t_first,
                                const kin_escape *esc)
@@ -439,6 +445,8 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
 #define HIST(i) (hist + (size_t)(((hist0) + (i)) % ORI_KIN_HISTORY) * (size_t)J)
     double sp = 0.0;
     bool have_prev = false;
+    bool t_here = false; // t is the tangent at c->th (kept through a shortened prediction)
+    double rate = 0.0;   // max |Δθ| / Δs of the last accepted step (0: none yet)
     leg_result result = LEG_OK;
     bool singular_first = t_first != NULL && esc == NULL;
     if (t_first) memcpy(t, t_first, sizeof(double) * (size_t)J);
@@ -461,6 +469,8 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         // next output value, but through the escape's end (beyond it the tangent takes over);
         // after a rejection no longer than the halved step h (else the same step is retried).
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
+        // No crease turns more than ORI_KIN_MAX_TURN_RAD in a step, at the rate of the last one.
+        if (!in_esc && rate > 0.0) h = fmin(h, ORI_KIN_MAX_TURN_RAD / rate);
         double hh = in_esc ? fmin(h, fmin(dist, fabs(esc->s1 - s))) : fmin(h, dist);
         if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         // A near-complete remainder is taken whole rather than left as a sliver.
@@ -495,12 +505,13 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
                 tn = fmax(tn, fabs((y1[j] - y0[j]) * inv_ds));
             }
         } else {
-            if (!(singular_first && first) && !ori__kin_tangent(c->solver, c->th, t)) {
+            if (!(singular_first && first) && !t_here && !ori__kin_tangent(c->solver, c->th, t)) {
                 // No tangent: the state is singular (a limit of the drive, a bifurcation).
                 locate_stop(c, snew);
                 result = LEG_BLOCKED;
                 break;
             }
+            t_here = !(singular_first && first);
             for (int j = 0; j < J; ++j) {
                 double lin = c->th[j] + (snew - s) * t[j];
                 if (have_prev && fabs(snew - s) <= 2.0 * fabs(s - sp) && c->col[j] >= 0)
@@ -509,9 +520,27 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
                 tn = fmax(tn, fabs(t[j]));
             }
         }
+        pred[c->jd] = snew;
+        // The predicted state turns some crease by more than ORI_KIN_MAX_TURN_RAD (the branch
+        // steepens): shorten the step before correcting. A steep branch is followed in steps
+        // short against its turn, whatever the output step: a step across it could be corrected
+        // onto another branch that passes within half the predicted change.
+        if (!in_esc && !(singular_first && first)) {
+            double turn = 0.0;
+            for (int j = 0; j < J; ++j)
+                if (c->col[j] >= 0) turn = fmax(turn, fabs(pred[j] - c->th[j]));
+            if (turn > ORI_KIN_MAX_TURN_RAD) {
+                h = ORI_KIN_TURN_SHRINK * hh * ORI_KIN_MAX_TURN_RAD / turn;
+                if (h < ORI_KIN_MIN_STEP_RAD) {
+                    locate_stop(c, snew);
+                    result = LEG_BLOCKED;
+                    break;
+                }
+                continue;
+            }
+        }
         for (int j = 0; j < J; ++j) trial[j] = pred[j];
         trial[c->jd] = snew;
-        pred[c->jd] = snew;
         int its = 0;
         double res = 0.0;
         bool ok = ori__kin_correct(c->solver, trial, ORI_KIN_NEWTON_MAX, &its, &res);
@@ -527,6 +556,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         if (accept && beyond_limit(c, trial)) accept = false;
         if (!accept) {
             c->mo->stats.rejected_steps++;
+            t_here = false; // as before the turn bound: the tangent is computed afresh after a correction
             h = 0.5 * hh;
             nh = 1; // restart the history from the current state
             hist0 = 0;
@@ -548,7 +578,12 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
             sp = s;
             have_prev = true;
         }
+        rate = 0.0;
+        for (int j = 0; j < J; ++j)
+            if (c->col[j] >= 0) rate = fmax(rate, fabs(trial[j] - c->th[j]));
+        rate /= hh;
         for (int j = 0; j < J; ++j) c->th[j] = trial[j];
+        t_here = false;
         if (nh == ORI_KIN_HISTORY) {
             hist0 = (hist0 + 1) % ORI_KIN_HISTORY;
             memmove(hs, hs + 1, sizeof(double) * (ORI_KIN_HISTORY - 1));
@@ -619,6 +654,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
     bool out_here = true;
     double target = rec ? grid_target(c, s_start, s1, sg, step_out, k_out, c->grid_set, &out_here) : s1;
     double h = ORI_KIN_TRACK_STEP_RAD;
+    double rate = 0.0; // max |Δθ| / Δs of the last accepted step (0: none yet)
     leg_result result = LEG_OK;
     bool first = true;
     for (;;) {
@@ -630,6 +666,8 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         // Out of the start the branch is the tangent's (the cone's at a singular start), as for
         // the numeric solver.
         bool by_cone = first && t_first && !esc;
+        // The numeric solver's step control along a steep branch (ORI_KIN_MAX_TURN_RAD).
+        if (!in_esc && rate > 0.0) h = fmin(h, ORI_KIN_MAX_TURN_RAD / rate);
         double hh = in_esc ? fmin(h, fmin(dist, fabs(esc->s1 - s))) : fmin(h, dist);
         if (c->approach_flat) hh = fmin(hh, fmax(0.5 * (fabs(s) - 16.0 * c->approach_floor), c->approach_floor));
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
@@ -653,6 +691,19 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
                 lagrange_weights(hs, nh, snew, w);
                 pred[i] = 0.0;
                 for (int q = 0; q < nh; ++q) pred[i] += w[q] * hx[q][i];
+            }
+        }
+        if (!in_esc && !by_cone) {
+            double turn = 0.0;
+            for (int i = 0; i < 3; ++i) turn = fmax(turn, fabs(pred[i] - c->th[fj[i]]));
+            if (turn > ORI_KIN_MAX_TURN_RAD) {
+                h = ORI_KIN_TURN_SHRINK * hh * ORI_KIN_MAX_TURN_RAD / turn;
+                if (h < ORI_KIN_MIN_STEP_RAD) {
+                    locate_stop(c, snew);
+                    result = LEG_BLOCKED;
+                    break;
+                }
+                continue;
             }
         }
         double cand[2][3];
@@ -706,6 +757,9 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         if (nc == 2)
             for (int i = 0; i < 3; ++i) c->alt[i] = cand[1 - k][i];
         if (lab[k] != 0) c->label = lab[k];
+        rate = 0.0;
+        for (int i = 0; i < 3; ++i) rate = fmax(rate, fabs(cand[k][i] - c->th[fj[i]]));
+        rate /= hh;
         for (int i = 0; i < 3; ++i) c->th[fj[i]] = cand[k][i];
         c->th[c->jd] = snew;
         if (nh == ORI_KIN_HISTORY) {
