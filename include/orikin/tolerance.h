@@ -521,4 +521,9 @@
 /// halving at most this many times (to 1/16384 of ORI_KIN_SINGULAR_STEP_RAD, 1.1e-6 rad). Count.
 #define ORI_KIN_ESCAPE_HALVINGS 14
 
+/// A fully folded start (docs/kinematics.md §6.3): a moving crease within this of ±π is at the
+/// limit; the branch analysis lets it move only toward 0 (its admitted fold direction is −sign θ,
+/// whatever its assignment). Radians.
+#define ORI_TOL_KIN_FOLDED_RAD 1e-6
+
 #endif
