@@ -1,0 +1,231 @@
+// Kinematics from a fully folded start (docs/kinematics.md §6.3, "A fully folded start"): a
+// state with every moving crease at 0 or ±180° is a singular point like the flat sheet; the
+// branch analysis lets a crease at ±180° move only toward 0. Miura-ori folded flat and unfolded
+// again (the reverse path), a single degree-4 vertex with both solvers, a crease at ±180°
+// never driven past it.
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support.h"
+
+TestSuite(kinematics_folded, .init = test_leak_setup, .fini = test_leak_check);
+
+#define DEG (ORI_PI / 180.0)
+
+static ori_motion *solve(const ori_mechanism *m, const ori_motion_def *d)
+{
+    ori_motion *mo = NULL;
+    ori_error err;
+    ori_status st = ori_motion_solve(m, d, &mo, &err);
+    cr_assert_eq(st, ORI_OK, "%s", err.message);
+    return mo;
+}
+
+// The zig-zag crease of the middle cell of an n × n Miura-ori (test_miura's vertex numbering)
+// and the sign of its assignment.
+static int miura_drive(const ori_pattern *p, int n, double *sign)
+{
+    int e = ori_pattern_find_edge(p, (n / 2) * (n + 1) + n / 2, (n / 2 + 1) * (n + 1) + n / 2);
+    *sign = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    return e;
+}
+
+// The frame of mo whose drive is s (exactly, as both walks land on the grid), or -1.
+static int frame_at(const ori_motion *mo, double s)
+{
+    for (int k = 0; k < ori_motion_frame_count(mo); ++k)
+        if (fabs(ori_motion_frame_drive(mo, k) - s) <= 1e-12) return k;
+    return -1;
+}
+
+// Every frame of back lies on fwd's path: the state of fwd at the same drive value to tol
+// (radians); every angle within [−π, π]; and no crease turns away from 0 on the way (|θ| never
+// grows: the creases at ±180° can only unfold).
+static void assert_reverse_path(const ori_motion *fwd, const ori_motion *back, int edges, double tol)
+{
+    for (int k = 0; k < ori_motion_frame_count(back); ++k) {
+        double s = ori_motion_frame_drive(back, k);
+        int f = frame_at(fwd, s);
+        cr_assert_geq(f, 0, "frame %d at %.12g deg has no forward frame", k, s / DEG);
+        const double *a = ori_motion_frame_angles(back, k), *b = ori_motion_frame_angles(fwd, f);
+        for (int e = 0; e < edges; ++e) {
+            cr_assert_leq(fabs(a[e]), ORI_PI, "frame %d edge %d at %.17g", k, e, a[e]);
+            cr_assert_float_eq(a[e], b[e], tol, "frame %d (drive %.6f deg) edge %d: %.17g, forward %.17g", k, s / DEG, e,
+                               a[e], b[e]);
+            if (k > 0) {
+                const double *p = ori_motion_frame_angles(back, k - 1);
+                cr_assert_leq(fabs(a[e]), fabs(p[e]) + 1e-12, "frame %d edge %d turns away from 0", k, e);
+            }
+        }
+    }
+}
+
+// An n × n Miura-ori folded flat (the drive to ±180° by 1°: every crease at ±180°) and unfolded
+// from that last state to 0 by 1°, 10° and 60°: valid, and each frame is the forward fold's
+// state at the same drive (the reverse path) to 1e-9 rad, with both ends exact.
+static void miura_unfolds(int n)
+{
+    ori_pattern *p = test_miura(n, n, 1.0, 1.0, 60 * DEG, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_pattern_edge_count(p);
+    double sg;
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = miura_drive(p, n, &sg);
+    d.to_rad = sg * ORI_PI;
+    d.step_rad = 1 * DEG;
+    ori_motion *fwd = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(fwd), ORI_MOTION_VALID, "%s", ori_motion_reason(fwd));
+    int F = ori_motion_frame_count(fwd);
+    cr_assert_eq(F, 181);
+    // The forward fold ends within 1e-9 rad of ±180° (the corrector at a singular point); the
+    // unfold starts from the exact flat-folded state (as read back from a file: ±180).
+    const double *end = ori_motion_frame_angles(fwd, F - 1);
+    double *folded = malloc(sizeof(double) * (size_t)E);
+    int creases = 0;
+    for (int e = 0; e < E; ++e) {
+        folded[e] = end[e];
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_BOUNDARY) continue;
+        creases++;
+        cr_assert_geq(fabs(end[e]), ORI_PI - 1e-8, "edge %d at %.17g: not fully folded", e, end[e]);
+        folded[e] = end[e] > 0.0 ? ORI_PI : -ORI_PI;
+    }
+    cr_assert_gt(creases, 0);
+
+    const double steps[3] = {1, 10, 60};
+    for (int i = 0; i < 3; ++i) {
+        ori_motion_def u = d;
+        u.start_angles_rad = folded;
+        u.to_rad = 0.0;
+        u.step_rad = steps[i] * DEG;
+        ori_motion *back = solve(m, &u);
+        cr_assert_eq(ori_motion_verdict_of(back), ORI_MOTION_VALID, "%d x %d, step %g: %s", n, n, steps[i],
+                     ori_motion_reason(back));
+        int B = ori_motion_frame_count(back);
+        cr_assert_eq(B, (int)lround(180.0 / steps[i]) + 1, "step %g: %d frames", steps[i], B);
+        assert_reverse_path(fwd, back, E, 1e-9);
+        const double *flat = ori_motion_frame_angles(back, B - 1);
+        for (int e = 0; e < E; ++e) cr_assert_leq(fabs(flat[e]), 1e-9, "edge %d ends at %.3g", e, flat[e]);
+        for (int k = 0; k < B; ++k) cr_assert_leq(ori_motion_frame_residual(back, k), ORI_TOL_RESIDUAL);
+        ori_motion_destroy(back);
+    }
+    free(folded);
+    ori_motion_destroy(fwd);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+Test(kinematics_folded, miura_3x3_folded_flat_unfolds_along_the_reverse_path) { miura_unfolds(3); }
+
+Test(kinematics_folded, miura_4x4_folded_flat_unfolds_along_the_reverse_path) { miura_unfolds(4); }
+
+// One Miura vertex (a 2 × 2 Miura-ori: degree 4, every crease folds) folded flat by the closed
+// form, then unfolded from there by the closed form and by continuation: both valid, the same
+// frames to 1e-9°, on the forward path, every crease at 0 at the end.
+Test(kinematics_folded, degree4_vertex_folded_flat_unfolds_alike_with_both_solvers)
+{
+    ori_pattern *p = test_miura(2, 2, 1.0, 1.0, 60 * DEG, NULL);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_pattern_edge_count(p);
+    double sg;
+    ori_motion_def d = ori_default_motion_def();
+    d.driven_edge = miura_drive(p, 2, &sg);
+    d.to_rad = sg * ORI_PI;
+    d.step_rad = 10 * DEG;
+    d.solver = ORI_SOLVER_ANALYTIC;
+    ori_motion *fwd = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(fwd), ORI_MOTION_VALID, "%s", ori_motion_reason(fwd));
+    const double *folded = ori_motion_frame_angles(fwd, ori_motion_frame_count(fwd) - 1);
+    for (int e = 0; e < E; ++e)
+        if (ori_pattern_edge(p, e).assignment != ORI_ASSIGN_BOUNDARY) cr_assert_eq(fabs(folded[e]), ORI_PI);
+
+    ori_motion_def u = d;
+    u.start_angles_rad = folded;
+    u.to_rad = 0.0;
+    ori_motion *an = solve(m, &u);
+    u.solver = ORI_SOLVER_NUMERIC;
+    ori_motion *nu = solve(m, &u);
+    cr_assert_eq(ori_motion_verdict_of(an), ORI_MOTION_VALID, "%s", ori_motion_reason(an));
+    cr_assert_eq(ori_motion_verdict_of(nu), ORI_MOTION_VALID, "%s", ori_motion_reason(nu));
+    cr_assert(ori_motion_stats_of(an).analytic);
+    cr_assert(!ori_motion_stats_of(nu).analytic);
+    cr_assert_eq(ori_motion_frame_count(an), 19);
+    cr_assert_eq(ori_motion_frame_count(nu), 19);
+    for (int k = 0; k < 19; ++k) {
+        cr_assert_eq(ori_motion_frame_drive(an, k), ori_motion_frame_drive(nu, k));
+        const double *a = ori_motion_frame_angles(an, k), *b = ori_motion_frame_angles(nu, k);
+        for (int e = 0; e < E; ++e) cr_assert_float_eq(a[e], b[e], 1e-9 * DEG, "frame %d edge %d", k, e);
+    }
+    assert_reverse_path(fwd, an, E, 1e-9 * DEG);
+    assert_reverse_path(fwd, nu, E, 1e-9 * DEG);
+    ori_motion_destroy(an);
+    ori_motion_destroy(nu);
+    ori_motion_destroy(fwd);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// A partly fully folded start: examples/patterns/degree4-vertex.fold folded along its straight
+// line (creases (0,0)–(1,0) and (0,0)–(−1,0) at +180°, the other two flat; the sheet in one
+// plane, a singular start). From there (a) the other line folds — its creases to ±180° while
+// the folded pair stays at exactly +180°, never beyond; (b) the folded pair unfolds to 0. Both
+// solvers: the same verdicts and frames to 1e-9°.
+Test(kinematics_folded, degree4_vertex_half_folded_folds_on_or_back_alike_with_both_solvers)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/degree4-vertex.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_pattern_edge_count(p);
+    int right = test_edge_at(p, 0, 0, 1, 0), left = test_edge_at(p, 0, 0, -1, 0);
+    int up = ori_pattern_find_edge_at(p, ori_v2_make(0.2, 0.2 * sqrt(3.0))); // (0,0)–(1/√3, 1)
+    cr_assert_neq(up, ORI_NULL_INDEX);
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = test_face_at(p, 0.5, 0.5);
+    d.driven_edge = right;
+    d.to_rad = ORI_PI;
+    d.step_rad = 30 * DEG;
+    ori_motion *half = solve(m, &d);
+    cr_assert_eq(ori_motion_verdict_of(half), ORI_MOTION_VALID, "%s", ori_motion_reason(half));
+    const double *start = ori_motion_frame_angles(half, ori_motion_frame_count(half) - 1);
+    cr_assert_eq(start[right], ORI_PI);
+    cr_assert_eq(start[left], ORI_PI);
+    cr_assert_leq(fabs(start[up]), 1e-12);
+
+    for (int leg = 0; leg < 2; ++leg) {
+        ori_motion_def u = d;
+        u.start_angles_rad = start;
+        u.driven_edge = leg == 0 ? up : right;
+        u.to_rad = leg == 0 ? ORI_PI : 0.0;
+        u.solver = ORI_SOLVER_ANALYTIC;
+        ori_motion *an = solve(m, &u);
+        u.solver = ORI_SOLVER_NUMERIC;
+        ori_motion *nu = solve(m, &u);
+        cr_assert_eq(ori_motion_verdict_of(an), ORI_MOTION_VALID, "leg %d: %s", leg, ori_motion_reason(an));
+        cr_assert_eq(ori_motion_verdict_of(nu), ORI_MOTION_VALID, "leg %d: %s", leg, ori_motion_reason(nu));
+        int F = ori_motion_frame_count(an);
+        cr_assert_eq(F, 7);
+        cr_assert_eq(ori_motion_frame_count(nu), F);
+        for (int k = 0; k < F; ++k) {
+            const double *a = ori_motion_frame_angles(an, k), *b = ori_motion_frame_angles(nu, k);
+            for (int e = 0; e < E; ++e) {
+                cr_assert_float_eq(a[e], b[e], 1e-9 * DEG, "leg %d frame %d edge %d", leg, k, e);
+                cr_assert_leq(fabs(a[e]), ORI_PI);
+            }
+            if (leg == 0) {
+                // The folded pair holds at +180° exactly; the other line folds as the drive.
+                cr_assert_eq(a[right], ORI_PI, "frame %d: %.17g", k, a[right]);
+                cr_assert_eq(a[left], ORI_PI);
+                cr_assert_float_eq(fabs(a[up]), k * 30 * DEG, 1e-12);
+            } else {
+                // Unfolding: the pair together, the other line flat.
+                cr_assert_float_eq(a[left], a[right], 1e-12);
+                cr_assert_float_eq(a[right], ORI_PI - k * 30 * DEG, 1e-12);
+                cr_assert_leq(fabs(a[up]), 1e-12);
+            }
+        }
+        ori_motion_destroy(an);
+        ori_motion_destroy(nu);
+    }
+    ori_motion_destroy(half);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
