@@ -17,6 +17,11 @@
 // by Gauss–Newton from a seed whose signs follow the assignment. When the preferred choice has
 // no solution, other line combinations are enumerated (bounded) to tell an invalid assignment
 // (a motion exists but folds a crease the wrong way) from a rigid pattern (no motion at all).
+//
+// A fully folded start (moving creases at 0 or ±π: every face in one plane, stacked) is the same
+// kind of singular point; the expansion holds at any state. There a crease at ±π can only turn
+// toward 0: it counts as assigned −sign θ (θ − π sign θ folds from 0 that way), and a line that
+// turns it outward is infeasible.
 #include <lapacke.h>
 #include <math.h>
 
