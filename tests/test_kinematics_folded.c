@@ -165,6 +165,51 @@ Test(kinematics_folded, degree4_vertex_folded_flat_unfolds_alike_with_both_solve
     ori_pattern_destroy(p);
 }
 
+// Miura vertices of cell angle γ = 15°, 30°, …, 85° and aspect b/a = 0.5, 1, 2, each folded flat
+// (closed form, 15° steps) and unfolded from there by both solvers: valid alike, frames to 1e-9°.
+Test(kinematics_folded, miura_vertices_of_every_angle_unfold_alike_with_both_solvers)
+{
+    const double gammas[6] = {15, 30, 45, 60, 75, 85}, aspects[3] = {0.5, 1.0, 2.0};
+    for (int g = 0; g < 6; ++g)
+        for (int q = 0; q < 3; ++q) {
+            ori_pattern *p = test_miura(2, 2, 1.0, aspects[q], gammas[g] * DEG, NULL);
+            ori_mechanism *m = test_mechanism_of(p);
+            int E = ori_pattern_edge_count(p);
+            double sg;
+            ori_motion_def d = ori_default_motion_def();
+            d.driven_edge = miura_drive(p, 2, &sg);
+            d.to_rad = sg * ORI_PI;
+            d.step_rad = 15 * DEG;
+            d.solver = ORI_SOLVER_ANALYTIC;
+            ori_motion *fwd = solve(m, &d);
+            cr_assert_eq(ori_motion_verdict_of(fwd), ORI_MOTION_VALID, "γ %g: %s", gammas[g], ori_motion_reason(fwd));
+            ori_motion_def u = d;
+            u.start_angles_rad = ori_motion_frame_angles(fwd, ori_motion_frame_count(fwd) - 1);
+            u.to_rad = 0.0;
+            ori_motion *an = solve(m, &u);
+            u.solver = ORI_SOLVER_NUMERIC;
+            ori_motion *nu = solve(m, &u);
+            cr_assert_eq(ori_motion_verdict_of(an), ORI_MOTION_VALID, "γ %g b %g: %s", gammas[g], aspects[q],
+                         ori_motion_reason(an));
+            cr_assert_eq(ori_motion_verdict_of(nu), ORI_MOTION_VALID, "γ %g b %g: %s", gammas[g], aspects[q],
+                         ori_motion_reason(nu));
+            cr_assert_eq(ori_motion_frame_count(an), 13);
+            cr_assert_eq(ori_motion_frame_count(nu), 13);
+            for (int k = 0; k < 13; ++k) {
+                const double *a = ori_motion_frame_angles(an, k), *b = ori_motion_frame_angles(nu, k);
+                for (int e = 0; e < E; ++e)
+                    cr_assert_float_eq(a[e], b[e], 1e-9 * DEG, "γ %g b %g frame %d edge %d: %.17g vs %.17g", gammas[g],
+                                       aspects[q], k, e, a[e], b[e]);
+            }
+            assert_reverse_path(fwd, an, E, 1e-9 * DEG);
+            ori_motion_destroy(an);
+            ori_motion_destroy(nu);
+            ori_motion_destroy(fwd);
+            ori_mechanism_destroy(m);
+            ori_pattern_destroy(p);
+        }
+}
+
 // A partly fully folded start: examples/patterns/degree4-vertex.fold folded along its straight
 // line (creases (0,0)–(1,0) and (0,0)–(−1,0) at +180°, the other two flat; the sheet in one
 // plane, a singular start). From there (a) the other line folds — its creases to ±180° while
