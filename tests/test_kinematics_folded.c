@@ -274,3 +274,73 @@ Test(kinematics_folded, degree4_vertex_half_folded_folds_on_or_back_alike_with_b
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
+
+// The modes from a flat-folded state: the 1 × 1 waterbomb base folded to its targets (every crease
+// at ±180°), then (a) `--percent 0` from there is the start itself (the goal is P % of the way
+// from the start: reached, one frame, nothing moves); (b) three creases driven together to 0
+// (its first mountain and first two valleys) unfold it: reached, every angle within [−π, π] on the
+// way. It used to stop `limit` at once: the start's bias toward the assignment pushed the valleys
+// at +180° outward.
+Test(kinematics_folded, waterbomb_base_folded_flat_unfolds_by_drives_and_stays_at_percent_0)
+{
+    ori_generate_def g = ori_default_generate_def(ORI_TESS_WATERBOMB);
+    g.rows = g.cols = 1;
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_pattern_edge_count(p);
+    ori_target_fold_def t = ori_default_target_fold_def();
+    ori_multifold *full = NULL;
+    cr_assert_eq(ori_target_fold_solve(m, &t, &full, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(full), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(full));
+    const double *folded = ori_multifold_frame_angles(full, ori_multifold_frame_count(full) - 1);
+    int drives[3], nm = 0, nv = 0, nd = 0;
+    for (int e = 0; e < E; ++e) {
+        ori_assignment a = ori_pattern_edge(p, e).assignment;
+        if (a == ORI_ASSIGN_BOUNDARY) continue;
+        cr_assert_float_eq(fabs(folded[e]), ORI_PI, 1e-9, "edge %d", e);
+        if (a == ORI_ASSIGN_MOUNTAIN && nm++ == 0) drives[nd++] = e;
+        if (a == ORI_ASSIGN_VALLEY && nv++ < 2) drives[nd++] = e;
+    }
+    cr_assert_eq(nd, 3);
+
+    t.start_angles_rad = folded;
+    t.fraction = 0.0;
+    ori_multifold *stay = NULL;
+    cr_assert_eq(ori_target_fold_solve(m, &t, &stay, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(stay), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(stay));
+    cr_assert_eq(ori_multifold_frame_count(stay), 1);
+    for (int e = 0; e < E; ++e) cr_assert_float_eq(ori_multifold_frame_angles(stay, 0)[e], folded[e], 1e-12);
+
+    const double zero[3] = {0, 0, 0};
+    ori_drives_fold_def d = ori_default_drives_fold_def();
+    d.start_angles_rad = folded;
+    d.driven_edges = drives;
+    d.to_rad = zero;
+    d.driven_count = 3;
+    ori_multifold *un = NULL;
+    cr_assert_eq(ori_drives_fold_solve(m, &d, &un, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(un), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(un));
+    int F = ori_multifold_frame_count(un);
+    cr_assert_eq(F, 19);
+    for (int k = 0; k < F; ++k) {
+        const double *a = ori_multifold_frame_angles(un, k);
+        // (The target fold ends a rounding beyond ±π: 8.8e-14 rad on one crease; frame 0 is that start.)
+        for (int e = 0; e < E; ++e)
+            cr_assert_leq(fabs(a[e]), ORI_PI + 1e-12, "frame %d edge %d: %.17g (start %.17g)", k, e, a[e], folded[e]);
+        cr_assert_leq(ori_multifold_frame_residual(un, k), ORI_TOL_RESIDUAL);
+        // The drives move linearly from ±π to 0.
+        for (int i = 0; i < 3; ++i)
+            cr_assert_float_eq(a[drives[i]], folded[drives[i]] * (1.0 - k / 18.0), 1e-12, "frame %d drive %d", k, i);
+    }
+    // At the end the drives are flat and so (to the continuation's accuracy at the flat state,
+    // a singular point: §16.2) is the rest.
+    const double *last = ori_multifold_frame_angles(un, F - 1);
+    for (int e = 0; e < E; ++e) cr_assert_leq(fabs(last[e]), 1e-5, "edge %d at %.3g", e, last[e]);
+    ori_multifold_destroy(un);
+    ori_multifold_destroy(stay);
+    ori_multifold_destroy(full);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
