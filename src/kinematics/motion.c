@@ -1062,10 +1062,29 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
         c->label = 0;
         c->block_kind = ORI_BLOCK_NONE;
         c->block_joint = -1;
-        // From a fully folded start the leg may head for the flat state (unfolding).
-        approach_flat(c, s, s1);
-        r = classify_stop(c, walk(c, s1, step_out, rec, t, &esc), s, true);
-        c->approach_flat = false;
+        if (r == LEG_OK && may_cross_flat(c, s, s1) && esc.s1 * s > 0.0) {
+            // From a fully folded start through the flat state to the other side: the escape
+            // (as below), then the crossing as from any folded state (cross_flat: the branch
+            // goes on as its own mirror image), on one output grid from s.
+            bool had_grid = c->grid_set;
+            double g0 = c->grid0, gend = c->grid_end;
+            if (!had_grid) {
+                c->grid_set = true;
+                c->grid0 = s;
+                c->grid_end = s1;
+            }
+            r = walk(c, esc.s1, step_out, rec, t, &esc);
+            if (r == LEG_OK && !c->cancelled) r = cross_flat(c, s1, step_out, rec);
+            c->grid_set = had_grid;
+            c->grid0 = g0;
+            c->grid_end = gend;
+            r = classify_stop(c, r, s, true);
+        } else {
+            // From a fully folded start the leg may head for the flat state (unfolding).
+            approach_flat(c, s, s1);
+            r = classify_stop(c, walk(c, s1, step_out, rec, t, &esc), s, true);
+            c->approach_flat = false;
+        }
     }
     ori__free(esc.th0);
     ori__free(esc.th1);
