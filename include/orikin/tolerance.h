@@ -531,4 +531,9 @@
 #define ORI_KIN_MAX_TURN_RAD 0.1
 #define ORI_KIN_TURN_SHRINK 0.75
 
+/// A fully folded start (docs/kinematics.md §6.3): a moving crease within this of ±π is at the
+/// limit; the branch analysis lets it move only toward 0 (its admitted fold direction is −sign θ,
+/// whatever its assignment). Radians.
+#define ORI_TOL_KIN_FOLDED_RAD 1e-6
+
 #endif

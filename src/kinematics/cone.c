@@ -17,6 +17,11 @@
 // by Gauss–Newton from a seed whose signs follow the assignment. When the preferred choice has
 // no solution, other line combinations are enumerated (bounded) to tell an invalid assignment
 // (a motion exists but folds a crease the wrong way) from a rigid pattern (no motion at all).
+//
+// A fully folded start (moving creases at 0 or ±π: every face in one plane, stacked) is the same
+// kind of singular point; the expansion holds at any state. There a crease at ±π can only turn
+// toward 0: it counts as assigned −sign θ (θ − π sign θ folds from 0 that way), and a line that
+// turns it outward is infeasible.
 #include <lapacke.h>
 #include <math.h>
 
@@ -47,6 +52,7 @@ typedef struct choice {
 
 typedef struct cone_sys {
     const ori_mechanism *m;
+    const double *th; // the start state
     const int *col;
     int ncols, drive;
     double sign;
@@ -113,6 +119,19 @@ static int assigned_sign(const ori_mechanism *m, int joint)
     return a == ORI_ASSIGN_VALLEY ? 1 : a == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
 }
 
+// Whether the joint is at ±π at the start (fully folded: it can only move toward 0).
+static bool at_limit(const cone_sys *c, int joint) { return fabs(c->th[joint]) >= ORI_PI - ORI_TOL_KIN_FOLDED_RAD; }
+
+// The direction a crease's velocity must take from the start: away from 0 as assigned for a
+// crease short of ±π (0 = either); toward 0 for a crease at ±π, whatever its assignment. A
+// fully folded state is a flat state of the sheet with the frames of the creases at ±π flipped
+// (θ' = θ − π sign θ): there the crease folds from θ' = 0 toward −sign θ, as if so assigned.
+static int admitted_sign(const cone_sys *c, int joint)
+{
+    if (at_limit(c, joint)) return c->th[joint] > 0.0 ? -1 : 1;
+    return assigned_sign(c->m, joint);
+}
+
 // Assignment score of a local direction dir (best of both orientations unless the drive fixes
 // it): violations × K − agreements, K larger than any crease count. Fewer violations first, then
 // the branch that folds more assigned creases in their direction (a branch leaving assigned
@@ -135,11 +154,15 @@ static int line_score(const cone_sys *c, const int *joints, const double *dir, i
                 if (!(x * c->sign > thr)) feasible = false;
                 continue;
             }
-            int s = assigned_sign(c->m, joints[i]);
+            int s = admitted_sign(c, joints[i]);
             assigned += s != 0;
             if (s == 0 || !(fabs(x) > thr)) continue;
-            if (x * s < 0.0) bad++;
-            else good++;
+            if (x * s < 0.0) {
+                bad++;
+                if (at_limit(c, joints[i])) feasible = false; // beyond ±π: no motion at all
+            } else {
+                good++;
+            }
         }
         int score = feasible ? bad * SCORE_K - good : INT32_MAX / 4;
         if (score < best) {
@@ -599,7 +622,7 @@ static bool solve_choice(const cone_sys *c, const int *pick, double *x, int *ext
     *extra = 0;
     for (int j = 0; j < c->m->joint_count; ++j) {
         int col = c->col[j];
-        if (col >= 0 && j != c->drive) x[col] = 0.5 * assigned_sign(c->m, j);
+        if (col >= 0 && j != c->drive) x[col] = 0.5 * admitted_sign(c, j);
     }
     lsq L;
     lsq_init(&L, &E, probe);
@@ -642,7 +665,7 @@ static int score_of(const cone_sys *c, const double *x, int *violations)
     double thr = ORI_TOL_CONE_REL * big;
     int bad = 0, good = 0;
     for (int j = 0; j < c->m->joint_count; ++j) {
-        int s = assigned_sign(c->m, j);
+        int s = admitted_sign(c, j);
         if (s == 0 || j == c->drive || c->col[j] < 0) continue;
         double v = value_of(c, x, j);
         if (!(fabs(v) > thr)) continue;
@@ -728,6 +751,7 @@ kin_cone_result ori__kin_cone_budget(const ori_mechanism *m, const double *th, c
     cone_sys c;
     memset(&c, 0, sizeof c);
     c.m = m;
+    c.th = th;
     c.col = col_of_joint;
     c.ncols = ncols;
     c.drive = drive_joint;

@@ -188,13 +188,15 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
             }
             // At the start, which may be singular (the flat sheet, where many branches meet), add the
             // part of the assignment's direction that the first-order motions allow: the predictor
-            // then heads for the branch that folds the creases as assigned.
+            // then heads for the branch that folds the creases as assigned. A crease at ±180° (a
+            // fully folded start) can only turn toward 0, whatever its assignment.
             if (ok && t == 0.0 && bias) {
                 for (int v = 0; v < nfree; ++v) sgn[v] = 0.0;
                 for (int j = 0; j < J; ++j) {
                     ori_assignment as = m->joints[j].assignment;
-                    if (sys_var[j] >= 0)
-                        sgn[sys_var[j]] += as == ORI_ASSIGN_VALLEY ? rmax : as == ORI_ASSIGN_MOUNTAIN ? -rmax : 0.0;
+                    int dir = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+                    if (fabs(th[j]) >= ORI_PI - ORI_TOL_KIN_FOLDED_RAD) dir = th[j] > 0.0 ? -1 : 1;
+                    if (sys_var[j] >= 0) sgn[sys_var[j]] += dir * rmax;
                 }
                 ori__mf_jv(&s, sgn, jx);
                 if (ori__mf_minnorm(&s, jx, nx))

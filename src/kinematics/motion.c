@@ -1004,6 +1004,19 @@ done:
     return r;
 }
 
+// Towards the flat state (a singular point) no step lands near it from afar; with the
+// non-moving creases nearly flat (within λ) the two branches pass within about λ of each other
+// near drive 0: steps no longer than half the distance to the band |s| ≤ 2λ, and λ/8 within it,
+// towards it and through it (a leg from s to s1).
+static void approach_flat(ctx *c, double s, double s1)
+{
+    double lam = 0.0;
+    for (int j = 0; j < c->m->joint_count; ++j)
+        if (c->col[j] < 0 && j != c->jd) lam = fmax(lam, fabs(c->th[j]));
+    c->approach_flat = lam <= ORI_KIN_NEAR_FLAT_RAD && (s * s1 < 0.0 || fabs(s1) < fabs(s));
+    c->approach_floor = fmax(ORI_KIN_MIN_APPROACH_RAD, 0.125 * lam);
+}
+
 // A leg from the current drive value to s1 (closed form or numeric). At a singular start, the cone analysis gives
 // the branch's tangent; the walk first escapes silently a fixed ORI_KIN_SINGULAR_STEP_RAD
 // along it (whatever the output step and the target), the rank is judged there, and the
@@ -1025,15 +1038,7 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
         if (may_cross_flat(c, s, s1)) {
             r = classify_stop(c, cross_flat(c, s1, step_out, rec), s, false);
         } else {
-            // Towards the flat state (a singular point) no step lands near it from afar either;
-            // with the non-moving creases nearly flat (within λ) the two branches pass within
-            // about λ of each other near drive 0: steps no longer than half the distance to the
-            // band |s| ≤ 2λ, and λ/8 within it, towards it and through it.
-            double lam = 0.0;
-            for (int j = 0; j < J; ++j)
-                if (c->col[j] < 0 && j != c->jd) lam = fmax(lam, fabs(c->th[j]));
-            c->approach_flat = lam <= ORI_KIN_NEAR_FLAT_RAD && (s * s1 < 0.0 || fabs(s1) < fabs(s));
-            c->approach_floor = fmax(ORI_KIN_MIN_APPROACH_RAD, 0.125 * lam);
+            approach_flat(c, s, s1);
             r = classify_stop(c, c->analytic ? analytic_walk(c, s1, step_out, rec, t, NULL) : walk(c, s1, step_out, rec, NULL, NULL), s, false);
             c->approach_flat = false;
         }
@@ -1111,7 +1116,29 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
         c->label = 0;
         c->block_kind = ORI_BLOCK_NONE;
         c->block_joint = -1;
-        r = classify_stop(c, walk(c, s1, step_out, rec, t, &esc), s, true);
+        if (r == LEG_OK && may_cross_flat(c, s, s1) && esc.s1 * s > 0.0) {
+            // From a fully folded start through the flat state to the other side: the escape
+            // (as below), then the crossing as from any folded state (cross_flat: the branch
+            // goes on as its own mirror image), on one output grid from s.
+            bool had_grid = c->grid_set;
+            double g0 = c->grid0, gend = c->grid_end;
+            if (!had_grid) {
+                c->grid_set = true;
+                c->grid0 = s;
+                c->grid_end = s1;
+            }
+            r = walk(c, esc.s1, step_out, rec, t, &esc);
+            if (r == LEG_OK && !c->cancelled) r = cross_flat(c, s1, step_out, rec);
+            c->grid_set = had_grid;
+            c->grid0 = g0;
+            c->grid_end = gend;
+            r = classify_stop(c, r, s, true);
+        } else {
+            // From a fully folded start the leg may head for the flat state (unfolding).
+            approach_flat(c, s, s1);
+            r = classify_stop(c, walk(c, s1, step_out, rec, t, &esc), s, true);
+            c->approach_flat = false;
+        }
     }
     ori__free(esc.th0);
     ori__free(esc.th1);
