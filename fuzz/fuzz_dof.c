@@ -28,24 +28,20 @@ static void dof_at(fk_bytes *b, const ori_mechanism *m, const double *angles)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fk_bytes b = {data, size, 0};
-    ori_pattern *p = fk_pattern(&b);
-    if (p) {
-        ori_mechanism_def md = ori_default_mechanism_def();
-        md.pattern = p;
-        ori_mechanism *m = NULL;
+    ori_pattern *p = NULL;
+    ori_mechanism *m = NULL;
+    if (fk_mechanism(&b, &p, &m)) {
         ori_error err;
-        if (ori_mechanism_create(&md, &m, &err) == ORI_OK) {
-            dof_at(&b, m, NULL);
-            int locks[8];
-            ori_motion_def d = fk_fold(&b, m, locks);
-            ori_motion *mo = NULL;
-            if (ori_motion_solve(m, &d, &mo, &err) == ORI_OK) {
-                int n = ori_motion_frame_count(mo);
-                if (n > 0) dof_at(&b, m, ori_motion_frame_angles(mo, n - 1));
-                ori_motion_destroy(mo);
-            }
-            ori_mechanism_destroy(m);
+        dof_at(&b, m, NULL);
+        int locks[8];
+        ori_motion_def d = fk_fold(&b, m, locks);
+        ori_motion *mo = NULL;
+        if (ori_motion_solve(m, &d, &mo, &err) == ORI_OK) {
+            int n = ori_motion_frame_count(mo);
+            if (n > 0) dof_at(&b, m, ori_motion_frame_angles(mo, n - 1));
+            ori_motion_destroy(mo);
         }
+        ori_mechanism_destroy(m);
         ori_pattern_destroy(p);
     }
     if (ori_alloc_live_count() != 0) abort();

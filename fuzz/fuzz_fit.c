@@ -10,39 +10,35 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fk_bytes b = {data, size, 0};
-    ori_pattern *p = fk_pattern(&b);
-    if (p) {
-        ori_mechanism_def md = ori_default_mechanism_def();
-        md.pattern = p;
-        ori_mechanism *m = NULL;
+    ori_pattern *p = NULL;
+    ori_mechanism *m = NULL;
+    if (fk_mechanism(&b, &p, &m)) {
         ori_error err;
-        if (ori_mechanism_create(&md, &m, &err) == ORI_OK) {
-            ori_fit_def fd = ori_default_fit_def();
-            int locks[8];
-            fd.motion = fk_fold(&b, m, locks);
-            // Keep the refined grid small: step ≥ 5°.
-            if (fd.motion.step_rad < 5 * FK_DEG) fd.motion.step_rad = 5 * FK_DEG;
-            fd.degree = fk_u8(&b) % 13;
-            fd.refine = 1 + fk_u8(&b) % 10;
-            ori_fit *fit = NULL;
-            if (ori_fit_solve(m, &fd, &fit, &err) == ORI_OK) {
-                if (ori_fit_sample_count(fit) < 1) abort();
-                double coef[13];
-                for (int i = 0; i < ori_fit_crease_count(fit); ++i) {
-                    ori_fit_crease c = ori_fit_crease_of(fit, i);
-                    if (!(c.max_error_rad >= 0.0) || !isfinite(c.max_error_rad)) abort();
-                    if (c.edge < 0 || c.edge >= ori_mechanism_edge_count(m)) abort();
-                    int n = ori_fit_coefficients(fit, i, coef, 13);
-                    if (n != fd.degree + 1) abort();
-                    for (int q = 0; q < n; ++q)
-                        if (!isfinite(coef[q])) abort();
-                }
-                ori_fit_destroy(fit);
-            } else if (!err.message[0]) {
-                abort(); // a refusal says why
+        ori_fit_def fd = ori_default_fit_def();
+        int locks[8];
+        fd.motion = fk_fold(&b, m, locks);
+        // Keep the refined grid small: step ≥ 5°.
+        if (fd.motion.step_rad < 5 * FK_DEG) fd.motion.step_rad = 5 * FK_DEG;
+        fd.degree = fk_u8(&b) % 13;
+        fd.refine = 1 + fk_u8(&b) % 10;
+        ori_fit *fit = NULL;
+        if (ori_fit_solve(m, &fd, &fit, &err) == ORI_OK) {
+            if (ori_fit_sample_count(fit) < 1) abort();
+            double coef[13];
+            for (int i = 0; i < ori_fit_crease_count(fit); ++i) {
+                ori_fit_crease c = ori_fit_crease_of(fit, i);
+                if (!(c.max_error_rad >= 0.0) || !isfinite(c.max_error_rad)) abort();
+                if (c.edge < 0 || c.edge >= ori_mechanism_edge_count(m)) abort();
+                int n = ori_fit_coefficients(fit, i, coef, 13);
+                if (n != fd.degree + 1) abort();
+                for (int q = 0; q < n; ++q)
+                    if (!isfinite(coef[q])) abort();
             }
-            ori_mechanism_destroy(m);
+            ori_fit_destroy(fit);
+        } else if (!err.message[0]) {
+            abort(); // a refusal says why
         }
+        ori_mechanism_destroy(m);
         ori_pattern_destroy(p);
     }
     if (ori_alloc_live_count() != 0) abort();

@@ -10,6 +10,7 @@
 #define ORI_FUZZ_KIN_H
 
 #include <math.h>
+#include <stdbool.h>
 #include <orikin/orikin.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -82,6 +83,22 @@ static ori_pattern *fk_generated(fk_bytes *b)
 
 // The pattern of an input: byte 0 chooses.
 static ori_pattern *fk_pattern(fk_bytes *b) { return fk_u8(b) & 1 ? fk_generated(b) : fk_vertex(b); }
+
+// The input's pattern and its mechanism; false (both NULL) when either is refused. The caller
+// destroys both.
+static bool fk_mechanism(fk_bytes *b, ori_pattern **p, ori_mechanism **m)
+{
+    *m = NULL;
+    *p = fk_pattern(b);
+    if (!*p) return false;
+    ori_mechanism_def md = ori_default_mechanism_def();
+    md.pattern = *p;
+    ori_error err;
+    if (ori_mechanism_create(&md, m, &err) == ORI_OK) return true;
+    ori_pattern_destroy(*p);
+    *p = NULL;
+    return false;
+}
 
 // A fold specification on mechanism m; locks has room for 8. Starting flat; the target and
 // from (when set) on one side of the flat state.

@@ -166,17 +166,12 @@ static void sequence(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fk_bytes b = {data, size, 0};
-    ori_pattern *p = fk_pattern(&b);
-    if (p) {
-        ori_mechanism_def md = ori_default_mechanism_def();
-        md.pattern = p;
-        ori_mechanism *m = NULL;
-        ori_error err;
-        if (ori_mechanism_create(&md, &m, &err) == ORI_OK) {
-            if (fk_u8(&b) & 1) sequence(&b, p, m);
-            else fold(&b, p, m);
-            ori_mechanism_destroy(m);
-        }
+    ori_pattern *p = NULL;
+    ori_mechanism *m = NULL;
+    if (fk_mechanism(&b, &p, &m)) {
+        if (fk_u8(&b) & 1) sequence(&b, p, m);
+        else fold(&b, p, m);
+        ori_mechanism_destroy(m);
         ori_pattern_destroy(p);
     }
     if (ori_alloc_live_count() != 0) abort();
