@@ -484,6 +484,15 @@
 /// Linkage unfolding: a motion whose kept frames change a bar length by more than this
 /// (relative) or decrease a distance by more than this × the size fails. Unitless.
 #define ORI_TOL_LINKAGE_CHECK_REL 1e-9
+/// Linkage unfolding, choice of the drive by looking ahead: a candidate hull edge whose motion
+/// meets its nearest event no sooner than this × the linkage's size is taken at once (the
+/// others are not tried). Unitless.
+#define ORI_TOL_LINKAGE_DRIVE_AHEAD_REL 1e-6
+/// Linkage unfolding, adaptive step: the arc length along the unit tangent over which no edge
+/// turns by more than ORI_LINKAGE_STEP_TURN_RAD to first order (radians), and at most
+/// ORI_LINKAGE_STEP_MAX_REL × the linkage's size (unitless).
+#define ORI_LINKAGE_STEP_TURN_RAD 0.1
+#define ORI_LINKAGE_STEP_MAX_REL 0.05
 /// Developing a folded form without cuts (ori_unfold_develop): an interior vertex is flat when
 /// its face angles sum to 2π within ORI_TOL_DEVELOP_ANGLE_RAD (radians); the two laid-out copies
 /// of every edge off the layout tree meet within ORI_TOL_DEVELOP_CLOSE_REL × the diagonal. Loose
@@ -520,6 +529,9 @@
 /// escape's end, or (a steep branch, not yet nearly straight there) the state at half the distance,
 /// halving at most this many times (to 1/16384 of ORI_KIN_SINGULAR_STEP_RAD, 1.1e-6 rad). Count.
 #define ORI_KIN_ESCAPE_HALVINGS 14
+/// The escape's node is "nearly straight" when the state's change over it differs from either
+/// end tangent's linear prediction by at most this fraction of the change. Unitless.
+#define ORI_KIN_ESCAPE_STRAIGHT_REL 0.25
 /// Step control of both fold solvers along a steep branch: no moving crease turns by more than
 /// ORI_KIN_MAX_TURN_RAD in one internal step (radians; ORI_KIN_MAX_STEP_RAD bounds the drive).
 /// The step is capped at that turn over the last step's rate max |Δθ|/Δs, and a prediction that

@@ -408,7 +408,7 @@ static bool escape_straight(const ctx *c, const kin_escape *e)
             big = fmax(big, fabs(d));
             off = fmax(off, fmax(fabs(d - ds * e->t0[j]), fabs(d - ds * e->t1[j])));
         }
-    return off <= 0.25 * big + ORI_TOL_RESIDUAL;
+    return off <= ORI_KIN_ESCAPE_STRAIGHT_REL * big + ORI_TOL_RESIDUAL;
 }
 
 // Numeric walk from the current drive value to s1, recording at each output value.

@@ -697,7 +697,7 @@ static bool pick_drive(lk_run *R, int prev_a, int prev_b)
     for (int i = 0; i < nc; ++i) ca[i] = L->e[cand[i]].a, cb[i] = L->e[cand[i]].b;
     ori_v2 *t = ori__alloc((size_t)n * sizeof *t);
     int best = 0;
-    double best_score = -1.0, enough = 1e-6 * L->scale;
+    double best_score = -1.0, enough = ORI_TOL_LINKAGE_DRIVE_AHEAD_REL * L->scale;
     for (int i = 0; i < nc && nc > 1; ++i) {
         int e = find_edge(L, ca[i], cb[i]);
         remove_edge(L, e);
@@ -865,11 +865,10 @@ static double coord_of(const lk *L, const lk_sys *S, const ori_v2 *t, int k)
 }
 
 // Adaptive step from the velocity field: the arc length along the unit tangent t over which no
-// edge (drive included) turns by more than ORI_LINKAGE_STEP_TURN radians to first order, and
-// at most 5% of the linkage's size. Far from events the reflex angles need no step limit of
+// edge (drive included) turns by more than ORI_LINKAGE_STEP_TURN_RAD to first order, and at
+// most ORI_LINKAGE_STEP_MAX_REL of the linkage's size. Far from events the reflex angles need no step limit of
 // their own: each decreases monotonically (the motion is expansive), so an event is a single
 // sign change of its sine at the step's ends, found by root-finding whatever the step.
-#define ORI_LINKAGE_STEP_TURN 0.1
 static double step_cap(const lk *L, const ori_v2 *t)
 {
     double rate = 0.0;
@@ -879,8 +878,8 @@ static double step_cap(const lk *L, const ori_v2 *t)
         double len = ori_v2_norm(ori_v2_sub(L->p[a], L->p[b]));
         rate = fmax(rate, ori_v2_norm(ori_v2_sub(t[a], t[b])) / len);
     }
-    double cap = 0.05 * L->scale;
-    return rate > 0.0 ? fmin(cap, ORI_LINKAGE_STEP_TURN / rate) : cap;
+    double cap = ORI_LINKAGE_STEP_MAX_REL * L->scale;
+    return rate > 0.0 ? fmin(cap, ORI_LINKAGE_STEP_TURN_RAD / rate) : cap;
 }
 
 static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
