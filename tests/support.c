@@ -217,6 +217,33 @@ ori_mechanism *test_mechanism_of(const ori_pattern *p)
     return m;
 }
 
+ori_pattern *test_pattern_of_text(const char *fold_text)
+{
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(fold_text, strlen(fold_text), &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    ori_fold_destroy(doc);
+    return p;
+}
+
+ori_motion *test_solve(const ori_mechanism *m, const ori_motion_def *d)
+{
+    ori_motion *mo = NULL;
+    ori_error err;
+    ori_status st = ori_motion_solve(m, d, &mo, &err);
+    cr_assert_eq(st, ORI_OK, "%s", err.message);
+    return mo;
+}
+
+int test_miura_drive(const ori_pattern *p, int n, double *sign)
+{
+    int e = ori_pattern_find_edge(p, (n / 2) * (n + 1) + n / 2, (n / 2 + 1) * (n + 1) + n / 2);
+    *sign = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    return e;
+}
+
 ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad, ori_edge_class **classes)
 {
     ori_generate_def g = ori_default_generate_def(ORI_TESS_MIURA);

@@ -41,6 +41,10 @@ int test_vertex_at(const ori_pattern *p, double x, double y);
 int test_face_at(const ori_pattern *p, double x, double y);
 // The mechanism of a built flat pattern (fails the test on error).
 ori_mechanism *test_mechanism_of(const ori_pattern *p);
+// The crease pattern of frame 0 of FOLD text (asserts it loads); the caller destroys it.
+ori_pattern *test_pattern_of_text(const char *fold_text);
+// ori_motion_solve, asserting ORI_OK; the caller destroys the motion.
+ori_motion *test_solve(const ori_mechanism *m, const ori_motion_def *d);
 
 // The thesis' open corner (examples/patterns/open-corner.fold, 2 × 2 with the centre (1, 1)) with
 // its mechanism; creases and faces found by coordinates, as the file's order may change: the
@@ -70,5 +74,7 @@ bool test_vertex_flat_foldable(const ori_pattern *p, int vertex, char *why, size
 // classes (may be NULL) receives one ori_edge_class per edge (free with ori_buffer_free).
 // Fails the test on error.
 ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad, ori_edge_class **classes);
+// The zig-zag crease of the middle cell of test_miura(n, n, …) and the sign of its assignment.
+int test_miura_drive(const ori_pattern *p, int n, double *sign);
 
 #endif

@@ -15,20 +15,6 @@ TestSuite(kinematics, .init = test_leak_setup, .fini = test_leak_check);
 
 // --- helpers ---------------------------------------------------------------------------
 
-
-
-
-
-static ori_motion *solve(const ori_mechanism *m, const ori_motion_def *d)
-{
-    ori_motion *mo = NULL;
-    ori_error err;
-    ori_status st = ori_motion_solve(m, d, &mo, &err);
-    cr_assert_eq(st, ORI_OK, "%s", err.message);
-    return mo;
-}
-
-
 static ori_motion_def first_fold(const test_open_corner *c, ori_solver solver, double to_deg)
 {
     static int lock;
@@ -102,7 +88,7 @@ Test(kinematics, open_corner_first_fold_closed_form)
 {
     test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
-    ori_motion *mo = solve(c.m, &d);
+    ori_motion *mo = test_solve(c.m, &d);
     cr_assert(ori_motion_stats_of(mo).analytic);
     check_first_fold_at_90(&c, mo);
     // Every branch: the spherical 4R's other solution at Θ1 = 90° has up = −60° and right,
@@ -128,7 +114,7 @@ Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
     test_open_corner c = test_open_corner_load();
     ori_motion_def da = first_fold(&c, ORI_SOLVER_ANALYTIC, 180);
     ori_motion_def dn = first_fold(&c, ORI_SOLVER_NUMERIC, 180);
-    ori_motion *ma = solve(c.m, &da), *mn = solve(c.m, &dn);
+    ori_motion *ma = test_solve(c.m, &da), *mn = test_solve(c.m, &dn);
     cr_assert_not(ori_motion_stats_of(mn).analytic);
     cr_assert_eq(ori_motion_verdict_of(mn), ORI_MOTION_VALID);
     cr_assert_eq(ori_motion_frame_count(ma), ori_motion_frame_count(mn));
@@ -151,7 +137,7 @@ Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
     ori_motion_destroy(mn);
     // The 90° reference values from the numeric path as well.
     ori_motion_def d90 = first_fold(&c, ORI_SOLVER_NUMERIC, 90);
-    ori_motion *m90 = solve(c.m, &d90);
+    ori_motion *m90 = test_solve(c.m, &d90);
     check_first_fold_at_90(&c, m90);
     ori_motion_destroy(m90);
     test_open_corner_free(&c);
@@ -161,7 +147,7 @@ Test(kinematics, open_corner_frame_a_frame_b_split)
 {
     test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
-    ori_motion *mo = solve(c.m, &d);
+    ori_motion *mo = test_solve(c.m, &d);
     ori_vertex_split s;
     cr_assert(ori_motion_split(mo, &s));
     cr_assert_eq(s.vertex, test_vertex_at(c.p, 1, 1));
@@ -208,7 +194,7 @@ Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
     c.m = test_mechanism_of(c.p);
     for (int s = ORI_SOLVER_ANALYTIC; s <= ORI_SOLVER_NUMERIC; ++s) {
         ori_motion_def d = first_fold(&c, (ori_solver)s, -90);
-        ori_motion *mo = solve(c.m, &d);
+        ori_motion *mo = test_solve(c.m, &d);
         cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
         const char *why = ori_motion_reason(mo);
         char want[96];
@@ -232,7 +218,7 @@ Test(kinematics, driving_a_crease_against_its_own_assignment_is_invalid)
 {
     test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, -30);
-    ori_motion *mo = solve(c.m, &d);
+    ori_motion *mo = test_solve(c.m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
     char want[96];
     snprintf(want, sizeof want, "the driven crease %d is assigned valley but is driven to -30°", c.diag);
@@ -246,7 +232,7 @@ Test(kinematics, open_corner_without_a_lock_is_underdetermined)
     test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.locked_count = 0;
-    ori_motion *mo = solve(c.m, &d);
+    ori_motion *mo = test_solve(c.m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_UNDERDETERMINED);
     cr_assert(strstr(ori_motion_reason(mo), "lock 1 more crease"), "%s", ori_motion_reason(mo));
     cr_assert_eq(ori_motion_frame_count(mo), 0);
@@ -260,7 +246,7 @@ static void second_fold(ori_solver solver)
 {
     test_open_corner c = test_open_corner_load();
     ori_motion_def d1 = first_fold(&c, solver, 180);
-    ori_motion *m1 = solve(c.m, &d1);
+    ori_motion *m1 = test_solve(c.m, &d1);
     cr_assert_eq(ori_motion_verdict_of(m1), ORI_MOTION_VALID);
     const double *state = ori_motion_frame_angles(m1, ori_motion_frame_count(m1) - 1);
     ori_motion_def d2 = ori_default_motion_def();
@@ -272,7 +258,7 @@ static void second_fold(ori_solver solver)
     d2.locked_edges = &c.diag;
     d2.locked_count = 1;
     d2.solver = solver;
-    ori_motion *m2 = solve(c.m, &d2);
+    ori_motion *m2 = test_solve(c.m, &d2);
     cr_assert_eq(ori_motion_verdict_of(m2), ORI_MOTION_VALID, "%s", ori_motion_reason(m2));
     for (int k = 0; k < ori_motion_frame_count(m2); ++k) {
         const double *a = ori_motion_frame_angles(m2, k);
@@ -314,7 +300,7 @@ Test(kinematics, a_fold_from_any_state_keeps_the_fixed_face_in_its_world_pose)
     // the rigid motion that maps one onto the other; LR does not move.
     test_open_corner c = test_open_corner_load();
     ori_motion_def d1 = first_fold(&c, ORI_SOLVER_AUTO, 120);
-    ori_motion *m1 = solve(c.m, &d1);
+    ori_motion *m1 = test_solve(c.m, &d1);
     int last = ori_motion_frame_count(m1) - 1;
     ori_rigid g[5];
     ori_motion_frame_face_poses(m1, last, g);
@@ -329,7 +315,7 @@ Test(kinematics, a_fold_from_any_state_keeps_the_fixed_face_in_its_world_pose)
     d2.locked_count = 1;
     for (int s = ORI_SOLVER_ANALYTIC; s <= ORI_SOLVER_NUMERIC; ++s) {
         d2.solver = (ori_solver)s;
-        ori_motion *m2 = solve(c.m, &d2);
+        ori_motion *m2 = test_solve(c.m, &d2);
         cr_assert_eq(ori_motion_verdict_of(m2), ORI_MOTION_VALID);
         cr_assert_eq(ori_motion_frame_count(m2), 4);
         check_frames(c.m, c.p, m2);
@@ -351,7 +337,7 @@ Test(kinematics, from_reaches_the_start_silently)
     d.has_from = true;
     d.from_rad = 30 * DEG;
     d.step_rad = 20 * DEG;
-    ori_motion *mo = solve(c.m, &d);
+    ori_motion *mo = test_solve(c.m, &d);
     cr_assert_eq(ori_motion_frame_count(mo), 4); // 30, 50, 70, 90
     cr_assert_eq(ori_motion_frame_drive(mo, 0), 30 * DEG);
     cr_assert_float_eq(ori_motion_frame_angles(mo, 0)[c.right] / DEG, 10.728583121609052, 1e-9);
@@ -387,7 +373,7 @@ static void miura_case(int n, ori_linear linear)
     md.to_rad = sg * 170 * DEG;
     md.step_rad = 17 * DEG;
     md.linear = linear;
-    ori_motion *mo = solve(m, &md);
+    ori_motion *mo = test_solve(m, &md);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%dx%d: %s", n, n, ori_motion_reason(mo));
     cr_assert_eq(ori_motion_frame_count(mo), 11);
     cr_assert_eq(ori_motion_dof(mo), 1, "%dx%d", n, n); // 1 DOF away from the flat state
@@ -465,7 +451,7 @@ Test(kinematics, miura_with_a_flipped_crease_is_invalid_and_names_it)
     md.driven_edge = drive;
     md.to_rad = sg * 60 * DEG;
     md.step_rad = 30 * DEG;
-    ori_motion *mo = solve(m, &md);
+    ori_motion *mo = test_solve(m, &md);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s: %s",
                  ori_motion_verdict_name(ori_motion_verdict_of(mo)), ori_motion_reason(mo));
     char want[32];
@@ -492,7 +478,7 @@ Test(kinematics, single_square_twist_is_not_rigidly_foldable)
         md.driven_edge = e;
         md.to_rad = (a == ORI_ASSIGN_VALLEY ? 1 : -1) * 90 * DEG;
         md.step_rad = 10 * DEG;
-        ori_motion *mo = solve(m, &md);
+        ori_motion *mo = test_solve(m, &md);
         cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_NOT_RIGIDLY_FOLDABLE, "drive %d: %s", e,
                      ori_motion_reason(mo));
         cr_assert_eq(ori_motion_frame_count(mo), 0);
@@ -518,7 +504,7 @@ Test(kinematics, transfer_functions_of_the_first_fold)
     cr_assert_eq(ori_fit_crease_count(fit), 3); // right, up, left
     ori_motion_def exact = first_fold(&c, ORI_SOLVER_AUTO, 90);
     exact.step_rad = 1 * DEG;
-    ori_motion *mo = solve(c.m, &exact);
+    ori_motion *mo = test_solve(c.m, &exact);
     for (int i = 0; i < 3; ++i) {
         ori_fit_crease fc = ori_fit_crease_of(fit, i);
         cr_assert(fc.edge == c.right || fc.edge == c.up || fc.edge == c.left);
@@ -600,14 +586,14 @@ Test(kinematics, slightly_rounded_start_states_are_projected)
 {
     test_open_corner c = test_open_corner_load();
     ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
-    ori_motion *m1 = solve(c.m, &d);
+    ori_motion *m1 = test_solve(c.m, &d);
     double st[13];
     memcpy(st, ori_motion_frame_angles(m1, 5), sizeof st);
     for (int e = 0; e < 13; ++e) st[e] = nearbyint(st[e] / DEG * 1e6) / 1e6 * DEG; // 6 decimals
     cr_assert_gt(ori_mechanism_residual(c.m, st), ORI_TOL_RESIDUAL);
     ori_motion_def d2 = first_fold(&c, ORI_SOLVER_NUMERIC, 90);
     d2.start_angles_rad = st;
-    ori_motion *m2 = solve(c.m, &d2);
+    ori_motion *m2 = test_solve(c.m, &d2);
     cr_assert_eq(ori_motion_verdict_of(m2), ORI_MOTION_VALID);
     check_frames(c.m, c.p, m2);
     ori_motion_destroy(m1);
@@ -716,7 +702,7 @@ Test(kinematics, a_ring_around_a_hole_folds_along_its_diagonal)
     d.driven_edge = e0;
     d.to_rad = 120 * DEG;
     d.step_rad = 30 * DEG;
-    ori_motion *mo = solve(m, &d);
+    ori_motion *mo = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
     for (int k = 0; k < ori_motion_frame_count(mo); ++k) {
         const double *a = ori_motion_frame_angles(mo, k);
@@ -736,7 +722,7 @@ Test(kinematics, a_pinwheel_ring_around_a_hole_is_rigid)
     d.driven_edge = 12;
     d.to_rad = 60 * DEG;
     d.step_rad = 30 * DEG;
-    ori_motion *mo = solve(m, &d);
+    ori_motion *mo = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_NOT_RIGIDLY_FOLDABLE, "%s", ori_motion_reason(mo));
     ori_motion_destroy(mo);
     ori_mechanism_destroy(m);
@@ -754,7 +740,7 @@ Test(kinematics, a_ring_around_a_hole_folds_with_the_sweep)
     d.to_rad = 120 * DEG;
     d.step_rad = 30 * DEG;
     d.linear = ORI_LINEAR_SWEEP;
-    ori_motion *mo = solve(m, &d);
+    ori_motion *mo = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
     ori_motion_stats st = ori_motion_stats_of(mo);
     cr_assert(st.sweep);
@@ -772,7 +758,7 @@ Test(kinematics, a_ring_around_a_hole_folds_with_the_sweep)
     // The pinwheel ring stays rigid whichever linear algebra corrects.
     p = ring(false);
     m = test_mechanism_of(p);
-    mo = solve(m, &d);
+    mo = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_NOT_RIGIDLY_FOLDABLE, "%s", ori_motion_reason(mo));
     ori_motion_destroy(mo);
     ori_mechanism_destroy(m);
@@ -781,13 +767,6 @@ Test(kinematics, a_ring_around_a_hole_folds_with_the_sweep)
 
 // --- the sweep corrector ----------------------------------------------------------------------
 
-// The middle zig-zag crease of an n × n generated Miura-ori and its valley/mountain sign.
-static int miura_drive(const ori_pattern *p, int n, double *sign)
-{
-    int e = ori_pattern_find_edge(p, (n / 2) * (n + 1) + n / 2, (n / 2 + 1) * (n + 1) + n / 2);
-    *sign = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
-    return e;
-}
 
 Test(kinematics, sweep_and_cholmod_agree_on_a_large_miura_sheet)
 {
@@ -797,17 +776,17 @@ Test(kinematics, sweep_and_cholmod_agree_on_a_large_miura_sheet)
     ori_mechanism *m = test_mechanism_of(p);
     double sg;
     ori_motion_def d = ori_default_motion_def();
-    d.driven_edge = miura_drive(p, n, &sg);
+    d.driven_edge = test_miura_drive(p, n, &sg);
     d.to_rad = sg * 5 * DEG;
     d.step_rad = 5 * DEG;
-    ori_motion *start = solve(m, &d);
+    ori_motion *start = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(start), ORI_MOTION_VALID);
     d.start_angles_rad = ori_motion_frame_angles(start, ori_motion_frame_count(start) - 1);
     d.to_rad = sg * 150 * DEG;
     d.step_rad = 5 * DEG;
-    ori_motion *sw = solve(m, &d);
+    ori_motion *sw = test_solve(m, &d);
     d.linear = ORI_LINEAR_SPARSE;
-    ori_motion *ch = solve(m, &d);
+    ori_motion *ch = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(sw), ORI_MOTION_VALID, "%s", ori_motion_reason(sw));
     cr_assert_eq(ori_motion_verdict_of(ch), ORI_MOTION_VALID, "%s", ori_motion_reason(ch));
     cr_assert_eq(ori_motion_frame_count(sw), 30);
@@ -883,7 +862,7 @@ Test(kinematics, sweep_hands_a_singular_state_to_cholmod)
     ori_pattern *p = test_miura(4, 4, MIURA_A, MIURA_B, MIURA_GAMMA, NULL);
     ori_mechanism *m = test_mechanism_of(p);
     double sg;
-    int drive = miura_drive(p, 4, &sg);
+    int drive = test_miura_drive(p, 4, &sg);
     int jd = ori_mechanism_edge_joint(m, drive);
     int *col = malloc(sizeof(int) * (size_t)m->joint_count);
     double *th = calloc((size_t)m->joint_count, sizeof(double));
@@ -916,10 +895,10 @@ Test(kinematics, rank_test_factors_the_normal_matrix_of_the_state_itself)
     ori_mechanism *m = test_mechanism_of(p);
     double sg;
     ori_motion_def d = ori_default_motion_def();
-    d.driven_edge = miura_drive(p, 6, &sg);
+    d.driven_edge = test_miura_drive(p, 6, &sg);
     d.to_rad = sg * 60 * DEG;
     d.step_rad = 60 * DEG;
-    ori_motion *mo = solve(m, &d);
+    ori_motion *mo = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID);
     int jd = ori_mechanism_edge_joint(m, d.driven_edge);
     int *col = malloc(sizeof(int) * (size_t)m->joint_count);
@@ -985,10 +964,10 @@ Test(kinematics, progress_is_monotone_and_cancels)
     ori_mechanism *m = test_mechanism_of(p);
     double sg;
     ori_motion_def d = ori_default_motion_def();
-    d.driven_edge = miura_drive(p, n, &sg);
+    d.driven_edge = test_miura_drive(p, n, &sg);
     d.to_rad = sg * 5 * DEG;
     d.step_rad = 5 * DEG;
-    ori_motion *start = solve(m, &d);
+    ori_motion *start = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(start), ORI_MOTION_VALID, "%s", ori_motion_reason(start));
     d.start_angles_rad = ori_motion_frame_angles(start, ori_motion_frame_count(start) - 1);
     d.to_rad = sg * 150 * DEG;
@@ -1069,15 +1048,15 @@ Test(kinematics, miura_30x30_fold_matches_its_fingerprint_and_last_frame_only_ke
     ori_mechanism *m = test_mechanism_of(p);
     double sg;
     ori_motion_def d = ori_default_motion_def();
-    d.driven_edge = miura_drive(p, n, &sg);
+    d.driven_edge = test_miura_drive(p, n, &sg);
     d.to_rad = sg * ori_deg_to_rad(5.0);
     d.step_rad = ori_deg_to_rad(5.0);
-    ori_motion *start = solve(m, &d);
+    ori_motion *start = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(start), ORI_MOTION_VALID, "%s", ori_motion_reason(start));
     d.start_angles_rad = ori_motion_frame_angles(start, ori_motion_frame_count(start) - 1);
     d.to_rad = sg * ori_deg_to_rad(175.0);
     d.step_rad = ori_deg_to_rad(170.0 / 100.0);
-    ori_motion *mo = solve(m, &d);
+    ori_motion *mo = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "%s", ori_motion_reason(mo));
     cr_assert_eq(ori_motion_dof(mo), 1);
     int F = ori_motion_frame_count(mo), E = ori_pattern_edge_count(p);
@@ -1110,7 +1089,7 @@ Test(kinematics, miura_30x30_fold_matches_its_fingerprint_and_last_frame_only_ke
     for (int k = 0; k < F; ++k) cr_assert_leq(ori_mechanism_residual(m, ori_motion_frame_angles(mo, k)), ORI_TOL_RESIDUAL);
 
     d.last_frame_only = true;
-    ori_motion *last = solve(m, &d);
+    ori_motion *last = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(last), ORI_MOTION_VALID);
     cr_assert_eq(ori_motion_frame_count(last), 1);
     ori_motion_stats s1 = ori_motion_stats_of(mo), s2 = ori_motion_stats_of(last);
@@ -1144,14 +1123,14 @@ Test(kinematics, miura_past_the_escape_is_valid_for_every_output_step)
     double sg;
     int E = ori_pattern_edge_count(p);
     ori_motion_def d = ori_default_motion_def();
-    d.driven_edge = miura_drive(p, n, &sg);
+    d.driven_edge = test_miura_drive(p, n, &sg);
     d.to_rad = sg * ori_deg_to_rad(1.0028);
     d.last_frame_only = true;
     const double steps_deg[] = {1e-5, 3e-5, 1e-4, 1e-2, 1.0, 30.0};
     double *ref = malloc(sizeof(double) * (size_t)E);
     for (size_t i = 0; i < sizeof steps_deg / sizeof steps_deg[0]; ++i) {
         d.step_rad = ori_deg_to_rad(steps_deg[i]);
-        ori_motion *mo = solve(m, &d);
+        ori_motion *mo = test_solve(m, &d);
         cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "step %g°: %s", steps_deg[i], ori_motion_reason(mo));
         const double *a = ori_motion_frame_angles(mo, ori_motion_frame_count(mo) - 1);
         cr_assert_float_eq(a[d.driven_edge], d.to_rad, 1e-12);

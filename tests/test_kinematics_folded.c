@@ -15,24 +15,6 @@ TestSuite(kinematics_folded, .init = test_leak_setup, .fini = test_leak_check);
 
 #define DEG (ORI_PI / 180.0)
 
-static ori_motion *solve(const ori_mechanism *m, const ori_motion_def *d)
-{
-    ori_motion *mo = NULL;
-    ori_error err;
-    ori_status st = ori_motion_solve(m, d, &mo, &err);
-    cr_assert_eq(st, ORI_OK, "%s", err.message);
-    return mo;
-}
-
-// The zig-zag crease of the middle cell of an n × n Miura-ori (test_miura's vertex numbering)
-// and the sign of its assignment.
-static int miura_drive(const ori_pattern *p, int n, double *sign)
-{
-    int e = ori_pattern_find_edge(p, (n / 2) * (n + 1) + n / 2, (n / 2 + 1) * (n + 1) + n / 2);
-    *sign = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
-    return e;
-}
-
 // The frame of mo whose drive is s (exactly, as both walks land on the grid), or -1.
 static int frame_at(const ori_motion *mo, double s)
 {
@@ -73,10 +55,10 @@ static void miura_unfolds(int n)
     int E = ori_pattern_edge_count(p);
     double sg;
     ori_motion_def d = ori_default_motion_def();
-    d.driven_edge = miura_drive(p, n, &sg);
+    d.driven_edge = test_miura_drive(p, n, &sg);
     d.to_rad = sg * ORI_PI;
     d.step_rad = 1 * DEG;
-    ori_motion *fwd = solve(m, &d);
+    ori_motion *fwd = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(fwd), ORI_MOTION_VALID, "%s", ori_motion_reason(fwd));
     int F = ori_motion_frame_count(fwd);
     cr_assert_eq(F, 181);
@@ -100,7 +82,7 @@ static void miura_unfolds(int n)
         u.start_angles_rad = folded;
         u.to_rad = 0.0;
         u.step_rad = steps[i] * DEG;
-        ori_motion *back = solve(m, &u);
+        ori_motion *back = test_solve(m, &u);
         cr_assert_eq(ori_motion_verdict_of(back), ORI_MOTION_VALID, "%d x %d, step %g: %s", n, n, steps[i],
                      ori_motion_reason(back));
         int B = ori_motion_frame_count(back);
@@ -131,11 +113,11 @@ Test(kinematics_folded, degree4_vertex_folded_flat_unfolds_alike_with_both_solve
     int E = ori_pattern_edge_count(p);
     double sg;
     ori_motion_def d = ori_default_motion_def();
-    d.driven_edge = miura_drive(p, 2, &sg);
+    d.driven_edge = test_miura_drive(p, 2, &sg);
     d.to_rad = sg * ORI_PI;
     d.step_rad = 10 * DEG;
     d.solver = ORI_SOLVER_ANALYTIC;
-    ori_motion *fwd = solve(m, &d);
+    ori_motion *fwd = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(fwd), ORI_MOTION_VALID, "%s", ori_motion_reason(fwd));
     const double *folded = ori_motion_frame_angles(fwd, ori_motion_frame_count(fwd) - 1);
     for (int e = 0; e < E; ++e)
@@ -144,9 +126,9 @@ Test(kinematics_folded, degree4_vertex_folded_flat_unfolds_alike_with_both_solve
     ori_motion_def u = d;
     u.start_angles_rad = folded;
     u.to_rad = 0.0;
-    ori_motion *an = solve(m, &u);
+    ori_motion *an = test_solve(m, &u);
     u.solver = ORI_SOLVER_NUMERIC;
-    ori_motion *nu = solve(m, &u);
+    ori_motion *nu = test_solve(m, &u);
     cr_assert_eq(ori_motion_verdict_of(an), ORI_MOTION_VALID, "%s", ori_motion_reason(an));
     cr_assert_eq(ori_motion_verdict_of(nu), ORI_MOTION_VALID, "%s", ori_motion_reason(nu));
     cr_assert(ori_motion_stats_of(an).analytic);
@@ -179,18 +161,18 @@ Test(kinematics_folded, miura_vertices_of_every_angle_unfold_alike_with_both_sol
             int E = ori_pattern_edge_count(p);
             double sg;
             ori_motion_def d = ori_default_motion_def();
-            d.driven_edge = miura_drive(p, 2, &sg);
+            d.driven_edge = test_miura_drive(p, 2, &sg);
             d.to_rad = sg * ORI_PI;
             d.step_rad = 15 * DEG;
             d.solver = ORI_SOLVER_ANALYTIC;
-            ori_motion *fwd = solve(m, &d);
+            ori_motion *fwd = test_solve(m, &d);
             cr_assert_eq(ori_motion_verdict_of(fwd), ORI_MOTION_VALID, "γ %g: %s", gammas[g], ori_motion_reason(fwd));
             ori_motion_def u = d;
             u.start_angles_rad = ori_motion_frame_angles(fwd, ori_motion_frame_count(fwd) - 1);
             u.to_rad = 0.0;
-            ori_motion *an = solve(m, &u);
+            ori_motion *an = test_solve(m, &u);
             u.solver = ORI_SOLVER_NUMERIC;
-            ori_motion *nu = solve(m, &u);
+            ori_motion *nu = test_solve(m, &u);
             cr_assert_eq(ori_motion_verdict_of(an), ORI_MOTION_VALID, "γ %g b %g: %s", gammas[g], aspects[q],
                          ori_motion_reason(an));
             cr_assert_eq(ori_motion_verdict_of(nu), ORI_MOTION_VALID, "γ %g b %g: %s", gammas[g], aspects[q],
@@ -223,12 +205,7 @@ static ori_pattern *vertex4(const double t[4], const char *assign, char *text, s
                             "],\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[1,2],[2,3],[3,4],[4,1]],\"edges_assignment\":[");
     for (int i = 0; i < 4; ++i) len += (size_t)snprintf(text + len, size - len, "\"%c\",", assign[i]);
     snprintf(text + len, size - len, "\"B\",\"B\",\"B\",\"B\"]}");
-    ori_fold *doc = NULL;
-    ori_error err;
-    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK, "%s", err.message);
-    ori_pattern *p = NULL;
-    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
-    ori_fold_destroy(doc);
+    ori_pattern *p = test_pattern_of_text(text);
     return p;
 }
 
@@ -258,7 +235,7 @@ Test(kinematics_folded, random_flat_foldable_vertices_unfold_alike_with_both_sol
             d.to_rad = as[0] == 'V' ? ORI_PI : -ORI_PI;
             d.step_rad = 15 * DEG;
             d.solver = ORI_SOLVER_ANALYTIC;
-            ori_motion *fwd = solve(m, &d);
+            ori_motion *fwd = test_solve(m, &d);
             const double *end = ori_motion_frame_angles(fwd, ori_motion_frame_count(fwd) - 1);
             bool folded = ori_motion_verdict_of(fwd) == ORI_MOTION_VALID;
             for (int e = 0; e < 4 && folded; ++e) folded = fabs(end[e]) >= ORI_PI - 1e-9;
@@ -269,9 +246,9 @@ Test(kinematics_folded, random_flat_foldable_vertices_unfold_alike_with_both_sol
                     u.start_angles_rad = end;
                     u.driven_edge = drive;
                     u.to_rad = 0.0;
-                    ori_motion *an = solve(m, &u);
+                    ori_motion *an = test_solve(m, &u);
                     u.solver = ORI_SOLVER_NUMERIC;
-                    ori_motion *nu = solve(m, &u);
+                    ori_motion *nu = test_solve(m, &u);
                     cr_assert_eq(ori_motion_verdict_of(an), ORI_MOTION_VALID, "%s drive %d: %s", text, drive,
                                  ori_motion_reason(an));
                     cr_assert_eq(ori_motion_verdict_of(nu), ORI_MOTION_VALID, "%s drive %d: %s", text, drive,
@@ -302,9 +279,9 @@ Test(kinematics_folded, random_flat_foldable_vertices_unfold_alike_with_both_sol
                 ori_motion_def w = d;
                 w.start_angles_rad = end;
                 w.to_rad = -d.to_rad;
-                ori_motion *an = solve(m, &w);
+                ori_motion *an = test_solve(m, &w);
                 w.solver = ORI_SOLVER_NUMERIC;
-                ori_motion *nu = solve(m, &w);
+                ori_motion *nu = test_solve(m, &w);
                 cr_assert_eq(ori_motion_verdict_of(an), ori_motion_verdict_of(nu), "%s through flat: %s / %s", text,
                              ori_motion_reason(an), ori_motion_reason(nu));
                 int F = ori_motion_frame_count(an);
@@ -353,7 +330,7 @@ Test(kinematics_folded, degree4_vertex_half_folded_folds_on_or_back_alike_with_b
     d.driven_edge = right;
     d.to_rad = ORI_PI;
     d.step_rad = 30 * DEG;
-    ori_motion *half = solve(m, &d);
+    ori_motion *half = test_solve(m, &d);
     cr_assert_eq(ori_motion_verdict_of(half), ORI_MOTION_VALID, "%s", ori_motion_reason(half));
     const double *start = ori_motion_frame_angles(half, ori_motion_frame_count(half) - 1);
     cr_assert_eq(start[right], ORI_PI);
@@ -366,9 +343,9 @@ Test(kinematics_folded, degree4_vertex_half_folded_folds_on_or_back_alike_with_b
         u.driven_edge = leg == 0 ? up : right;
         u.to_rad = leg == 0 ? ORI_PI : 0.0;
         u.solver = ORI_SOLVER_ANALYTIC;
-        ori_motion *an = solve(m, &u);
+        ori_motion *an = test_solve(m, &u);
         u.solver = ORI_SOLVER_NUMERIC;
-        ori_motion *nu = solve(m, &u);
+        ori_motion *nu = test_solve(m, &u);
         cr_assert_eq(ori_motion_verdict_of(an), ORI_MOTION_VALID, "leg %d: %s", leg, ori_motion_reason(an));
         cr_assert_eq(ori_motion_verdict_of(nu), ORI_MOTION_VALID, "leg %d: %s", leg, ori_motion_reason(nu));
         int F = ori_motion_frame_count(an);

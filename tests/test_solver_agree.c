@@ -37,12 +37,7 @@ static ori_pattern *vertex_pattern(int n, const double *theta, const char *assig
     for (int i = 0; i < n; ++i) len += (size_t)snprintf(text + len, sizeof text - len, ",\"B\"");
     snprintf(text + len, sizeof text - len, "]}");
     snprintf(last_text, sizeof last_text, "%s", text);
-    ori_fold *doc = NULL;
-    ori_error err;
-    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK, "%s", err.message);
-    ori_pattern *p = NULL;
-    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
-    ori_fold_destroy(doc);
+    ori_pattern *p = test_pattern_of_text(text);
     return p;
 }
 
@@ -429,11 +424,7 @@ static const char *seed45_text =
 static ori_mechanism *seed45_vertex(ori_pattern **p)
 {
     snprintf(last_text, sizeof last_text, "%s", seed45_text);
-    ori_fold *doc = NULL;
-    ori_error err;
-    cr_assert_eq(ori_fold_load_string(seed45_text, strlen(seed45_text), &doc, &err), ORI_OK, "%s", err.message);
-    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, p, &err), ORI_OK, "%s", err.message);
-    ori_fold_destroy(doc);
+    *p = test_pattern_of_text(seed45_text);
     return test_mechanism_of(*p);
 }
 
@@ -561,12 +552,7 @@ Test(solver_agree, seed_312_vertex_follows_a_branch_turning_22_degrees_per_degre
                        "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[1,2],[2,3],[3,4],[4,5],[5,1]],"
                        "\"edges_assignment\":[\"M\",\"V\",\"M\",\"M\",\"V\",\"B\",\"B\",\"B\",\"B\",\"B\"]}";
     snprintf(last_text, sizeof last_text, "%s", text);
-    ori_fold *doc = NULL;
-    ori_error err;
-    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK, "%s", err.message);
-    ori_pattern *p = NULL;
-    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
-    ori_fold_destroy(doc);
+    ori_pattern *p = test_pattern_of_text(text);
     ori_mechanism *m = test_mechanism_of(p);
     double start[16] = {0, 16.075465605143719 * DEG, -2.8449162172367046 * DEG, 10.122718284995926 * DEG,
                        7.0119508693013568 * DEG};
@@ -587,8 +573,7 @@ Test(solver_agree, seed_312_vertex_follows_a_branch_turning_22_degrees_per_degre
         compare(m, d, what);
         for (int k = 0; k < 2; ++k) {
             d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
-            ori_motion *mo = NULL;
-            cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+            ori_motion *mo = test_solve(m, &d);
             cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s", what);
             cr_assert_eq(ori_motion_frame_count(mo), frames[si], "%s: %d frames", what, ori_motion_frame_count(mo));
             ori_motion_block b;
@@ -630,12 +615,7 @@ static const char seed43_text[] =
 Test(solver_agree, seed_43_verdict_does_not_depend_on_the_target_or_the_step)
 {
     snprintf(last_text, sizeof last_text, "%s", seed43_text);
-    ori_fold *doc = NULL;
-    ori_error lerr;
-    cr_assert_eq(ori_fold_load_string(seed43_text, strlen(seed43_text), &doc, &lerr), ORI_OK, "%s", lerr.message);
-    ori_pattern *p = NULL;
-    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &lerr), ORI_OK, "%s", lerr.message);
-    ori_fold_destroy(doc);
+    ori_pattern *p = test_pattern_of_text(seed43_text);
     ori_mechanism *m = test_mechanism_of(p);
     const double targets[] = {1e-6, 1e-4, 0.01, 0.1, 0.40315497733798683, 0.5, 0.9, 1, 2, 10, 90};
     const double steps[] = {1e-6, 1e-3, 0.01, 0.25, 1, 30, 60};
@@ -836,12 +816,7 @@ Test(solver_agree, the_issue_vertex_stops_where_crease_9_reaches_minus_180)
         "{\"vertices_coords\":[[-0.026,0.298],[-1,-0.184],[-0.181,-1],[1,0.936],[-0.817,1],[1,1],[-1,1],[-1,-1],[1,-1]],"
         "\"edges_vertices\":[[1,7],[7,2],[2,8],[8,3],[3,5],[5,4],[4,6],[6,1],[0,1],[0,2],[0,3],[0,4]],"
         "\"edges_assignment\":[\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"V\",\"M\",\"M\",\"M\"]}";
-    ori_fold *doc = NULL;
-    ori_error err;
-    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK);
-    ori_pattern *p = NULL;
-    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK);
-    ori_fold_destroy(doc);
+    ori_pattern *p = test_pattern_of_text(text);
     ori_mechanism *m = test_mechanism_of(p);
     ori_motion_def d = ori_default_motion_def();
     d.fixed_face = 3;
@@ -851,8 +826,7 @@ Test(solver_agree, the_issue_vertex_stops_where_crease_9_reaches_minus_180)
     compare(m, d, "issue 14 vertex");
     for (int k = 0; k < 2; ++k) {
         d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
-        ori_motion *mo = NULL;
-        cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK);
+        ori_motion *mo = test_solve(m, &d);
         cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_BLOCKED);
         ori_motion_block b;
         cr_assert(ori_motion_block_of(mo, &b));
