@@ -13,6 +13,8 @@
 
 #include "support.h"
 
+#include <criterion/parameterized.h>
+
 TestSuite(solver_agree, .init = test_leak_setup, .fini = test_leak_check);
 
 #define DEG (ORI_PI / 180.0)
@@ -139,6 +141,32 @@ static bool violations_within(const ori_motion *small, const ori_motion *big)
     return true;
 }
 
+// Output steps (degrees) at which run_sample solves each specification again, besides its own.
+static const double *agree_steps_deg;
+static int agree_step_count;
+
+// Two solutions of one specification at different output steps end alike: the same verdict,
+// stop kind and end state (to the stop's accuracy where blocked, 1e-9° × the end's slope else).
+static void same_end(const ori_motion *a, const ori_motion *b, int E, const char *what)
+{
+    cr_assert_eq(ori_motion_verdict_of(a), ori_motion_verdict_of(b), "%s (%s): %s vs %s at the sample's step", what, last_text,
+                 ori_motion_verdict_name(ori_motion_verdict_of(b)), ori_motion_verdict_name(ori_motion_verdict_of(a)));
+    ori_motion_block ba, bb;
+    bool blocked = ori_motion_block_of(a, &ba);
+    cr_assert_eq(blocked, ori_motion_block_of(b, &bb), "%s (%s): stops at one step only", what, last_text);
+    if (blocked) cr_assert_eq(ba.kind, bb.kind, "%s (%s): stop kinds %d vs %d", what, last_text, bb.kind, ba.kind);
+    int na = ori_motion_frame_count(a), nb = ori_motion_frame_count(b);
+    if (na == 0 || nb == 0) {
+        cr_assert_eq(na, nb, "%s (%s): frames %d vs %d", what, last_text, nb, na);
+        return;
+    }
+    const double *ea = ori_motion_frame_angles(a, na - 1), *eb = ori_motion_frame_angles(b, nb - 1);
+    double tol = blocked ? ORI_TOL_KIN_STOP_LIMIT_RAD : 1e-7 * DEG;
+    for (int e = 0; e < E; ++e)
+        cr_assert(fabs(ea[e] - eb[e]) <= tol, "%s (%s): end crease %d at %.15g° vs %.15g°", what, last_text, e, eb[e] / DEG,
+                  ea[e] / DEG);
+}
+
 // Counts of one sample: verdicts, stop kinds, folds compared, and folds through the flat state
 // or from folded starts near it.
 typedef struct agree_sample {
@@ -258,8 +286,8 @@ static agree_sample run_sample(long seed, int trials)
                 if (start[drive] * d.to_rad < 0.0) S.through_flat++;
             }
             char what[512];
-            int w = snprintf(what, sizeof what, "trial %d spec %d: degree %d, fix %d, drive %d to %.17g° step %.17g°, locked",
-                             trial, spec, n, d.fixed_face, drive, d.to_rad / DEG, d.step_rad / DEG);
+            int w = snprintf(what, sizeof what, "seed %ld trial %d spec %d: degree %d, fix %d, drive %d to %.17g° step %.17g°, locked",
+                             seed, trial, spec, n, d.fixed_face, drive, d.to_rad / DEG, d.step_rad / DEG);
             for (int i = 0; i < nl; ++i) w += snprintf(what + w, sizeof what - (size_t)w, " %d", locks[i]);
             if (spec >= 2) {
                 w += snprintf(what + w, sizeof what - (size_t)w, " (folded start");
@@ -270,6 +298,20 @@ static agree_sample run_sample(long seed, int trials)
             ori_motion *mo = NULL;
             ori_error err;
             cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK);
+            // The same specification at other output steps: the solvers agree there too, on the
+            // same verdict and end state as at the sample's own step.
+            for (int k = 0; k < agree_step_count; ++k) {
+                ori_motion_def o = d;
+                o.step_rad = agree_steps_deg[k] * DEG;
+                char what_k[640];
+                snprintf(what_k, sizeof what_k, "%s at %g° steps", what, agree_steps_deg[k]);
+                compare(m, o, what_k);
+                o.solver = ORI_SOLVER_NUMERIC;
+                ori_motion *mk = NULL;
+                cr_assert_eq(ori_motion_solve(m, &o, &mk, &err), ORI_OK);
+                same_end(mo, mk, E, what_k);
+                ori_motion_destroy(mk);
+            }
             verdicts[ori_motion_verdict_of(mo)]++;
             ori_motion_block blk;
             if (ori_motion_block_of(mo, &blk)) {
@@ -288,8 +330,8 @@ static agree_sample run_sample(long seed, int trials)
                 // a crease folded against its assignment within the escape is still so beyond.
                 ori_motion_def e = d;
                 e.to_rad = (d.to_rad < 0.0 ? -1.0 : 1.0) * pow(10.0, -6.0 + 6.0 * erand48(esc_rng)) * DEG;
-                w = snprintf(what, sizeof what, "trial %d spec %d (inside the escape): degree %d, fix %d, drive %d to %.17g° step %.17g°, locked",
-                             trial, spec, n, e.fixed_face, drive, e.to_rad / DEG, e.step_rad / DEG);
+                w = snprintf(what, sizeof what, "seed %ld trial %d spec %d (inside the escape): degree %d, fix %d, drive %d to %.17g° step %.17g°, locked",
+                             seed, trial, spec, n, e.fixed_face, drive, e.to_rad / DEG, e.step_rad / DEG);
                 for (int i = 0; i < nl; ++i) w += snprintf(what + w, sizeof what - (size_t)w, " %d", locks[i]);
                 compare(m, e, what);
                 cr_assert_eq(ori_motion_solve(m, &e, &mo, &err), ORI_OK);
@@ -351,6 +393,30 @@ Test(solver_agree, more_seeds_agree_through_the_flat_state, .timeout = 600)
     cr_assert_gt(in_escape, 200 * ORI_TEST_AGREE_SEEDS);
     cr_log_info("seeds 1–%d: %d folds, %d through the flat state; %d more from flat to a target inside the escape",
                 ORI_TEST_AGREE_SEEDS, cases, through, in_escape);
+}
+
+// Seeds of the every-step property test (each about 5 s in a release build; more by hand with
+// -DORI_TEST_AGREE_STEP_SEEDS=400).
+#ifndef ORI_TEST_AGREE_STEP_SEEDS
+#define ORI_TEST_AGREE_STEP_SEEDS 2
+#endif
+
+ParameterizedTestParameters(solver_agree, every_output_step_gives_the_same_verdict_and_angles)
+{
+    static long seeds[ORI_TEST_AGREE_STEP_SEEDS];
+    for (int i = 0; i < ORI_TEST_AGREE_STEP_SEEDS; ++i) seeds[i] = i + 1;
+    return cr_make_param_array(long, seeds, ORI_TEST_AGREE_STEP_SEEDS);
+}
+
+// Each specification of a seed solved also at output steps of 1°, 7°, 21° and 60°: the solvers
+// agree at each, and every step ends where the sample's own does (issue 14 item 1, issue 7 §3).
+ParameterizedTest(long *seed, solver_agree, every_output_step_gives_the_same_verdict_and_angles, .timeout = 600)
+{
+    static const double steps[] = {1.0, 7.0, 21.0, 60.0};
+    agree_steps_deg = steps;
+    agree_step_count = 4;
+    agree_sample S = run_sample(*seed, 160);
+    cr_assert_gt(S.cases, 500);
 }
 
 // A degree-4 vertex, folded to 30° (crease 2) and driven through the flat state to −141.7°: the
