@@ -477,6 +477,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         if (!in_esc && dist - hh < 0.25 * hh) hh = dist;
         double snew = hh == dist ? target : in_esc && hh == fabs(esc->s1 - s) ? esc->s1 : s + sg * hh;
         bool secant = !in_esc && nh >= ORI_KIN_HISTORY && fabs(snew - s) <= 2.0 * fabs(s - hs[nh - 2]);
+        bool from_history = secant; // the prediction extrapolates earlier states
         double tn = 1.0;
         if (in_esc) {
             for (int j = 0; j < J; ++j) {
@@ -512,10 +513,10 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
                 break;
             }
             t_here = !(singular_first && first);
+            from_history = have_prev && fabs(snew - s) <= 2.0 * fabs(s - sp);
             for (int j = 0; j < J; ++j) {
                 double lin = c->th[j] + (snew - s) * t[j];
-                if (have_prev && fabs(snew - s) <= 2.0 * fabs(s - sp) && c->col[j] >= 0)
-                    lin = hermite(sp, thp[j], tp[j], s, c->th[j], t[j], snew);
+                if (from_history && c->col[j] >= 0) lin = hermite(sp, thp[j], tp[j], s, c->th[j], t[j], snew);
                 pred[j] = lin;
                 tn = fmax(tn, fabs(t[j]));
             }
@@ -529,13 +530,9 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
             double turn = 0.0;
             for (int j = 0; j < J; ++j)
                 if (c->col[j] >= 0) turn = fmax(turn, fabs(pred[j] - c->th[j]));
-            if (turn > ORI_KIN_MAX_TURN_RAD) {
-                h = ORI_KIN_TURN_SHRINK * hh * ORI_KIN_MAX_TURN_RAD / turn;
-                if (h < ORI_KIN_MIN_STEP_RAD) {
-                    locate_stop(c, snew);
-                    result = LEG_BLOCKED;
-                    break;
-                }
+            // (Down to ORI_KIN_MIN_STEP_RAD: a step that short is corrected and judged as any.)
+            if (turn > ORI_KIN_MAX_TURN_RAD && h > ORI_KIN_MIN_STEP_RAD) {
+                h = fmax(ORI_KIN_TURN_SHRINK * hh * ORI_KIN_MAX_TURN_RAD / turn, ORI_KIN_MIN_STEP_RAD);
                 continue;
             }
         }
@@ -562,6 +559,14 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
             hist0 = 0;
             memcpy(HIST(0), c->th, sizeof(double) * (size_t)J);
             hs[0] = s;
+            if (h < ORI_KIN_MIN_STEP_RAD && from_history) {
+                // Extrapolations of earlier states failed down to the shortest step (the branch
+                // bends sharply: a steep turn out of a flat state): the tangent alone gets that
+                // step once more before the walk stops.
+                have_prev = false;
+                h = hh;
+                continue;
+            }
             if (h < ORI_KIN_MIN_STEP_RAD) {
                 locate_stop(c, snew);
                 result = LEG_BLOCKED;
@@ -696,13 +701,9 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         if (!in_esc && !by_cone) {
             double turn = 0.0;
             for (int i = 0; i < 3; ++i) turn = fmax(turn, fabs(pred[i] - c->th[fj[i]]));
-            if (turn > ORI_KIN_MAX_TURN_RAD) {
-                h = ORI_KIN_TURN_SHRINK * hh * ORI_KIN_MAX_TURN_RAD / turn;
-                if (h < ORI_KIN_MIN_STEP_RAD) {
-                    locate_stop(c, snew);
-                    result = LEG_BLOCKED;
-                    break;
-                }
+            // (Down to ORI_KIN_MIN_STEP_RAD: a step that short is corrected and judged as any.)
+            if (turn > ORI_KIN_MAX_TURN_RAD && h > ORI_KIN_MIN_STEP_RAD) {
+                h = fmax(ORI_KIN_TURN_SHRINK * hh * ORI_KIN_MAX_TURN_RAD / turn, ORI_KIN_MIN_STEP_RAD);
                 continue;
             }
         }
@@ -719,6 +720,22 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
                 for (int i = 0; i < 3; ++i) cand[k][i] = x[i];
             } else {
                 nc = 0;
+            }
+        }
+        if (nc == 0 && !in_esc) {
+            // The closed form found no state its polish closes (two creases within about 1e-5°
+            // of collinear, next to the flat state: the input–output equation has lost the
+            // digits): the corrector on the loop equations from the prediction, judged as any.
+            memcpy(scratch, c->th, sizeof(double) * (size_t)J);
+            for (int i = 0; i < 3; ++i) scratch[fj[i]] = pred[i];
+            scratch[c->jd] = snew;
+            int its = 0;
+            double res = 0.0;
+            if (ori__kin_correct(c->solver, scratch, ORI_KIN_NEWTON_MAX, &its, &res)) {
+                for (int i = 0; i < 3; ++i) cand[0][i] = scratch[fj[i]];
+                lab[0] = 0;
+                nc = 1;
+                k = 0;
             }
         }
         if (nc > 0) {
@@ -740,12 +757,19 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         // No solution, a jump, or a moving crease turned past ±π within this step (or only seems
         // to, near a fully folded state): halve; a stop there is located by locate_stop.
         if (nc == 0 || jump || beyond_limit(c, scratch)) {
-            h = 0.5 * hh;
+            // As in the numeric walk: where extrapolations of earlier states failed down to the
+            // shortest step, the tangent gets that step once more before the walk stops.
+            bool from_history = !in_esc && !by_cone && !by_tangent && nh > 1;
             c->mo->stats.rejected_steps++;
             // Restart the history from the current state (the tangent predicts the next try).
             hs[0] = s;
             for (int i = 0; i < 3; ++i) hx[0][i] = c->th[fj[i]];
             nh = 1;
+            h = 0.5 * hh;
+            if (h < ORI_KIN_MIN_STEP_RAD && from_history) {
+                h = hh;
+                continue;
+            }
             if (h < ORI_KIN_MIN_STEP_RAD) {
                 locate_stop(c, snew);
                 result = LEG_BLOCKED;
@@ -797,12 +821,14 @@ static leg_result walk(ctx *c, double s1, double step_out, bool rec, const doubl
     return c->analytic ? analytic_walk(c, s1, step_out, rec, t_first, esc) : numeric_walk(c, s1, step_out, rec, t_first, esc);
 }
 
-// A stop within ORI_KIN_ESCAPE_RAD of a singular start (or before any step) is no motion at all.
+// A stop within ORI_KIN_ESCAPE_RAD of a singular start (or before any step) is no motion at all,
+// unless a moving crease reached ±180° there: a steep branch out of the flat state (two creases
+// within about 5e-4° of collinear) that folds a crease flat within that much drive is a motion.
 static leg_result classify_stop(const ctx *c, leg_result r, double s_start, bool singular)
 {
     if (r != LEG_BLOCKED) return r;
     double moved = fabs(c->blocked_at - s_start);
-    if (moved == 0.0 || (singular && moved < ORI_KIN_ESCAPE_RAD)) return LEG_NONE;
+    if (moved == 0.0 || (singular && moved < ORI_KIN_ESCAPE_RAD && c->block_kind != ORI_BLOCK_CREASE_LIMIT)) return LEG_NONE;
     return LEG_BLOCKED;
 }
 
