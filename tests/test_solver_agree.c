@@ -87,6 +87,12 @@ static void compare(const ori_mechanism *m, ori_motion_def d, const char *what)
     for (int f = 0; f < n; ++f) {
         // The stop frame is compared at its own accuracy (above).
         bool stop = blocked && f == n - 1;
+        // The same output grid: the angles below are compared at one drive value (the stop's, located
+        // by bisection, to 1e-6 rad above).
+        if (!stop)
+            cr_assert(fabs(ori_motion_frame_drive(mo[0], f) - ori_motion_frame_drive(mo[1], f)) <= 1e-12,
+                      "%s (%s): frame %d at %.17g° vs %.17g°", what, last_text, f, ori_motion_frame_drive(mo[0], f) / DEG,
+                      ori_motion_frame_drive(mo[1], f) / DEG);
         const double *a0 = ori_motion_frame_angles(mo[0], f), *a1 = ori_motion_frame_angles(mo[1], f);
         // Within 1° of the flat state or of ±180° (singular configurations: the numeric
         // corrector's residual 1e-13 then leaves about 1e-13 / σ_min in the angles) 1e-7°,
@@ -474,6 +480,82 @@ Test(solver_agree, seed_3_vertex_continues_its_branch_through_the_flat_state)
     }
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
+}
+
+// Two folds from a folded start 3° and 5° from the flat state through it (seeds 320 and 354 of the
+// every-step property test, trials 93 and 109, 1° steps): the output frame within 1e-4° of drive
+// 0 lay where the two branches through the flat state are 4.3e-4° and 4.2e-3° apart (in the
+// crease that differs most). The closed form merged its two roots there into their midpoint
+// (crease 1 at 0.000218° at 1.33e-5° of drive, half the branch's 0.000434°; crease 2 flat instead
+// of −1.32e-5°); the numeric corrector happened to find the branch. Both now take the states
+// within s_a/256 of drive 0 from the odd cubic through the incoming branch's state there
+// (docs/kinematics.md §7.3): the frame near 0 has every crease at the branch's own rate (its
+// state at 0.01° of drive over 0.01°), and the two solvers agree.
+typedef struct cross_case {
+    const char *text;
+    int n, fixed, drive, nl, locks[4], near_frame;
+    double start_deg[8], to_deg;
+} cross_case;
+
+static const cross_case cross_cases[2] = {
+    {"{\"vertices_coords\":[[0,0],[-0.13935556175356967,-0.9902424084073288],[0.73258099349473538,-0.68067987187096002],"
+     "[0.58436106956826539,0.81149377100075937],[-0.69016895354187258,0.72364826785318603],[-0.82109772787023305,-0.5707876323873361]],"
+     "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[1,2],[2,3],[3,4],[4,5],[5,1]],"
+     "\"edges_assignment\":[\"V\",\"V\",\"M\",\"V\",\"V\",\"B\",\"B\",\"B\",\"B\",\"B\"]}",
+     5, 0, 4, 1, {0}, 3, {0, 80.95600587787203, -2.9847939099409944, 80.865898526209776, 3.0000133062501342}, -132.94478384536617},
+    {"{\"vertices_coords\":[[0,0],[0.0066038683799426161,0.99997819422346423],[-0.51680429264348515,0.85610357031451922],"
+     "[-0.81306147882683866,0.58217783507096366],[-0.98699001920286689,0.16078153499057204],[-0.88868161398509438,-0.45852479645581617],"
+     "[0.014836528398951263,-0.99988993265512338],[0.90157667567186894,-0.43261934524991102],[0.89080911124995632,0.4543777363758737]],"
+     "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[0,6],[0,7],[0,8],[1,2],[2,3],[3,4],[4,5],[5,6],[6,7],[7,8],[8,1]],"
+     "\"edges_assignment\":[\"V\",\"M\",\"V\",\"V\",\"V\",\"M\",\"V\",\"M\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\"]}",
+     8, 0, 1, 4, {2, 3, 4, 6}, 5, {127.35504407530534, 5.0000879250653378, 0, 0, 0, 130.35159804853731, 0, -2.8739598914778273},
+     -121.37946151957495},
+};
+
+Test(solver_agree, frames_next_to_the_flat_state_follow_the_branch_through_it)
+{
+    for (int q = 0; q < 2; ++q) {
+        const cross_case *cc = &cross_cases[q];
+        snprintf(last_text, sizeof last_text, "%s", cc->text);
+        ori_pattern *p = test_pattern_of_text(cc->text);
+        ori_mechanism *m = test_mechanism_of(p);
+        double start[16] = {0};
+        for (int e = 0; e < cc->n; ++e) start[e] = cc->start_deg[e] * DEG;
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = cc->fixed;
+        d.driven_edge = cc->drive;
+        d.locked_edges = cc->locks;
+        d.locked_count = cc->nl;
+        d.start_angles_rad = start;
+        d.to_rad = cc->to_deg * DEG;
+        d.step_rad = 1.0 * DEG;
+        char what[96];
+        snprintf(what, sizeof what, "trial %d vertex at 1° steps", q ? 109 : 93);
+        compare(m, d, what);
+        for (int k = 0; k < 2; ++k) {
+            // The branch's rate at the flat state: its state at 0.01° of drive (well resolved
+            // there) over 0.01° (the branch is odd: the rate differs by O(s²), 1e-7 relative).
+            ori_motion_def r = d;
+            r.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+            r.to_rad = (cc->start_deg[cc->drive] > 0.0 ? 0.01 : -0.01) * DEG;
+            ori_motion *mr = test_solve(m, &r);
+            const double *ar = ori_motion_frame_angles(mr, ori_motion_frame_count(mr) - 1);
+            d.solver = r.solver;
+            ori_motion *mo = test_solve(m, &d);
+            double g = ori_motion_frame_drive(mo, cc->near_frame);
+            cr_assert(fabs(g) < 1e-4 * DEG, "%s: frame %d at %.6g°", what, cc->near_frame, g / DEG);
+            const double *a = ori_motion_frame_angles(mo, cc->near_frame);
+            for (int e = 0; e < cc->n; ++e) {
+                double rate = ar[e] / r.to_rad;
+                cr_assert(fabs(a[e] / g - rate) <= 1e-5 * fmax(1.0, fabs(rate)), "%s (%s): crease %d at %.15g° at %.6g° of drive (rate %.10g, the branch's %.10g)",
+                          what, k ? "numeric" : "closed form", e, a[e] / DEG, g / DEG, a[e] / g, rate);
+            }
+            ori_motion_destroy(mo);
+            ori_motion_destroy(mr);
+        }
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
 }
 
 // A degree-6 vertex with creases 4 and 1 locked (at 0° and −26.23°), driven by crease 5 from

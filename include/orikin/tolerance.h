@@ -548,4 +548,11 @@
 /// whatever its assignment). Radians.
 #define ORI_TOL_KIN_FOLDED_RAD 1e-6
 
+/// Through the flat state (docs/kinematics.md §7.3): the output states within s_n of drive 0 are
+/// the odd cubic through the incoming branch's state at s_n (and its mirror image), where s_n is
+/// the crossing's s_a halved this many times (1/256 of it: 0.0039° from 1°), not below
+/// ORI_KIN_MIN_APPROACH_RAD; nearer to the flat state neither solver tells the branches apart.
+/// Count.
+#define ORI_KIN_CROSS_NODE_HALVINGS 8
+
 #endif

@@ -890,6 +890,137 @@ static bool flat_locks(const ctx *c)
 }
 static bool may_cross_flat(const ctx *c, double s, double s1) { return s * s1 < 0.0 && flat_locks(c); }
 
+// Descending order of doubles (qsort).
+static int cmp_desc(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x < y) - (x > y);
+}
+
+// The output states of a crossing (cross_flat) strictly between s_a (state tha, tangent ta per
+// unit drive) and s_b = −s_a, and the leg's end s1 when it lies there (s_end: s1 then, else s_b),
+// recorded in order when rec. Next to the flat state neither solver tells the two branches apart
+// (they separate in proportion to the drive: the closed form's double root merges them within
+// about 1e-6 rad, and the corrector's error grows as 1/σ_min there), and a prediction corrected
+// there may land between them. So: the output value v with |v| ≥ s_n is the state of the
+// incoming branch walked from s_a towards 0 to ±|v| (the same walk as any, the drive's sign
+// that of s_a), mirrored when v lies beyond 0 (θ(−v) = −θ(v)); within s_n of 0 it is the odd
+// cubic through the node (s_n, θ_n, t_n) and its mirror, exactly flat at 0. The node is s_a
+// halved ORI_KIN_CROSS_NODE_HALVINGS times, not nearer than ORI_KIN_MIN_APPROACH_RAD (nor farther
+// than s_a): walked only when some output value lies within it. c->th ends at the last value's
+// state; LEG_BLOCKED (c->th at the stop, the values before it recorded) when a walk stops.
+static leg_result cross_flat_outputs(ctx *c, double s1, double s_end, double step_out, bool rec, const double *tha,
+                                     const double *ta)
+{
+    const ori_mechanism *m = c->m;
+    int J = m->joint_count, jd = c->jd;
+    size_t bytes = sizeof(double) * (size_t)J;
+    double sa = tha[jd], sg = sa < 0.0 ? 1.0 : -1.0, sb = -sa;
+    // The output values, in order.
+    int nv = 0, cap = 8;
+    double *gv = ori__alloc(sizeof(double) * (size_t)cap);
+    for (int k = grid_first(c, sa, sg, step_out);; ++k) {
+        bool out = true;
+        double g = rec ? grid_target(c, c->grid0, s_end, sg, step_out, k, true, &out) : s1;
+        if (!out || g == sb) break;
+        if (nv == cap) gv = ori__realloc(gv, sizeof(double) * (size_t)(cap *= 2));
+        gv[nv++] = g;
+        if (g == s1 || !rec) break;
+    }
+    // The distances from 0 walked to on the incoming branch, farthest first: the output values'
+    // beyond the node, and the node's when some value lies within it.
+    double sn = fmin(fabs(sa), fmax(ldexp(fabs(sa), -ORI_KIN_CROSS_NODE_HALVINGS), ORI_KIN_MIN_APPROACH_RAD));
+    double *wv = ori__alloc(sizeof(double) * (size_t)(nv + 1));
+    int nw = 0;
+    bool inner = false;
+    for (int i = 0; i < nv; ++i) {
+        if (fabs(gv[i]) >= sn) wv[nw++] = fabs(gv[i]);
+        else inner = true;
+    }
+    if (inner) wv[nw++] = sn;
+    qsort(wv, (size_t)nw, sizeof(double), cmp_desc);
+    int nu = 0;
+    for (int i = 0; i < nw; ++i)
+        if (nu == 0 || wv[i] != wv[nu - 1]) wv[nu++] = wv[i];
+    nw = nu;
+    double *ws = ori__alloc(bytes * (size_t)(nw + 1));
+    double *walt = ori__alloc(sizeof(double) * 3 * (size_t)(nw + 1));
+    bool *whas = ori__alloc(sizeof(bool) * (size_t)(nw + 1));
+    double *x = ori__alloc(bytes + sizeof(double)), *tn = ori__alloc(bytes + sizeof(double));
+    leg_result r = LEG_OK;
+    int walked = 0;
+    memcpy(c->th, tha, bytes);
+    for (int i = 0; i < nw && !c->cancelled; ++i) {
+        double v = sa < 0.0 ? -wv[i] : wv[i];
+        if (v != c->th[jd]) {
+            c->approach_flat = true;
+            c->approach_floor = ORI_KIN_MIN_APPROACH_RAD;
+            r = walk(c, v, step_out, false, NULL, NULL);
+            c->approach_flat = false;
+            if (r != LEG_OK) break;
+        }
+        memcpy(ws + (size_t)i * (size_t)J, c->th, bytes);
+        whas[i] = c->analytic && c->has_alt;
+        if (whas[i]) memcpy(walt + 3 * i, c->alt, sizeof c->alt);
+        walked = i + 1;
+    }
+    // The odd cubic θ(v) = α v + β v³ through the node (v_n, θ_n, t_n) and its mirror.
+    bool node = inner && walked == nw && r == LEG_OK;
+    if (node) {
+        const double *thn = ws + (size_t)(nw - 1) * (size_t)J;
+        double vn = thn[jd];
+        if (vn == tha[jd]) memcpy(tn, ta, bytes);
+        else if (!ori__kin_tangent(c->solver, thn, tn))
+            for (int j = 0; j < J; ++j) tn[j] = thn[j] / vn; // (not expected: a regular state)
+        for (int j = 0; j < J; ++j) {
+            double q = thn[j] / vn;
+            x[j] = 0.5 * (3.0 * q - tn[j]);                // α
+            tn[j] = (tn[j] - q) / (2.0 * vn * vn);        // β
+        }
+    }
+    double *stop = NULL;
+    if (r != LEG_OK) {
+        stop = ori__alloc(bytes + sizeof(double));
+        memcpy(stop, c->th, bytes);
+    }
+    double *alpha = x, *beta = tn, *y = ori__alloc(bytes + sizeof(double));
+    for (int i = 0; i < nv && !c->cancelled; ++i) {
+        double g = gv[i], a = fabs(g);
+        bool mirror = g * sa < 0.0, has_alt = false;
+        double alt[3] = {0.0, 0.0, 0.0};
+        if (a >= sn) {
+            int w = 0;
+            while (w < nw && wv[w] != a) ++w;
+            if (w >= walked || (mirror && r != LEG_OK)) break;
+            const double *src = ws + (size_t)w * (size_t)J;
+            for (int j = 0; j < J; ++j) y[j] = mirror && c->col[j] >= 0 ? -src[j] : src[j];
+            has_alt = whas[w];
+            for (int q = 0; q < 3 && has_alt; ++q) alt[q] = mirror ? -walt[3 * w + q] : walt[3 * w + q];
+        } else {
+            if (!node) break;
+            for (int j = 0; j < J; ++j) y[j] = c->col[j] >= 0 ? (g == 0.0 ? 0.0 : (alpha[j] + beta[j] * g * g) * g) : tha[j];
+        }
+        y[jd] = g;
+        memcpy(c->th, y, bytes);
+        c->last_residual = -1.0; // measured by record
+        c->has_alt = has_alt;
+        if (has_alt) memcpy(c->alt, alt, sizeof alt);
+        check_signs(c);
+        if (rec) record(c);
+    }
+    if (stop) memcpy(c->th, stop, bytes);
+    ori__free(stop);
+    ori__free(y);
+    ori__free(x);
+    ori__free(tn);
+    ori__free(ws);
+    ori__free(walt);
+    ori__free(whas);
+    ori__free(wv);
+    ori__free(gv);
+    return r;
+}
+
 // A leg from a folded state through the flat state (drive 0) to s1 on the other side. The flat
 // state is a singular point: the two branches of a degree-4 vertex cross there (in general a
 // bifurcation), and close to it a corrector started from a large step cannot tell them apart.
@@ -968,36 +1099,8 @@ static leg_result cross_flat(ctx *c, double s1, double step_out, bool rec)
     bool ends_here = (sb - s1) * sg > 0.0;
     double s_end = ends_here ? s1 : sb;
     if (rec || ends_here) {
-        for (int k = grid_first(c, sa, sg, step_out);; ++k) {
-            bool out = true;
-            double g = rec ? grid_target(c, c->grid0, s_end, sg, step_out, k, true, &out) : s1;
-            if (!out || g == sb) break;
-            if (g == 0.0) {
-                memcpy(x, tha, bytes);
-                for (int j = 0; j < J; ++j)
-                    if (c->col[j] >= 0) x[j] = 0.0;
-                x[c->jd] = 0.0;
-                res = 0.0;
-                ha = false;
-            } else {
-                for (int j = 0; j < J; ++j)
-                    pred[j] = c->col[j] >= 0 ? hermite(sa, tha[j], ta[j], sb, thb[j], ta[j], g) : tha[j];
-                memcpy(c->th, tha, bytes);
-                if (!state_near(c, g, pred, fabs(g - sa), x, &res, &ha, al)) {
-                    // No state there (not expected on a branch through the flat state): a stop.
-                    locate_stop(c, g);
-                    r = LEG_BLOCKED;
-                    goto done;
-                }
-            }
-            memcpy(c->th, x, bytes);
-            c->last_residual = res;
-            c->has_alt = ha;
-            if (ha) memcpy(c->alt, al, sizeof al);
-            check_signs(c);
-            if (rec) record(c);
-            if (g == s1 || c->cancelled || !rec) break;
-        }
+        r = cross_flat_outputs(c, s1, s_end, step_out, rec, tha, ta);
+        if (r != LEG_OK) goto done;
     }
     if (ends_here || c->cancelled) goto done; // c->th is the state at s1
     // The departure, exactly the mirror image (the closed form's candidate nearest to it, or
