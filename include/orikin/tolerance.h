@@ -548,4 +548,14 @@
 /// whatever its assignment). Radians.
 #define ORI_TOL_KIN_FOLDED_RAD 1e-6
 
+/// A stop located on the branch (docs/kinematics.md §7.1): from the bisection's last state both
+/// solvers continue the branch parametrised by its fastest crease, in steps from
+/// ORI_KIN_STOP_REFINE_FIRST_RAD doubling up to ORI_KIN_STOP_REFINE_MAX_RAD, at most
+/// ORI_TOL_KIN_STOP_LIMIT_RAD in all, until the drive turns back or a crease passes ±π; the event
+/// is bisected there. The stop is then a crease limit when a moving crease is within
+/// ORI_TOL_KIN_STOP_AT_LIMIT_RAD of ±π (the located state's accuracy, not a margin). Radians.
+#define ORI_KIN_STOP_REFINE_FIRST_RAD 1e-7
+#define ORI_KIN_STOP_REFINE_MAX_RAD 1e-3
+#define ORI_TOL_KIN_STOP_AT_LIMIT_RAD 1e-8
+
 #endif
