@@ -121,6 +121,7 @@ typedef struct ctx {
     bool approach_flat;
     double approach_floor; // … nor need be shorter than this, and within 16 × this of it no longer (radians)
     int label; // closed form: the branch label followed (±1), 0 until known
+    double leg_end; // the end of the leg being walked (a stop is never located beyond it)
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -412,9 +413,10 @@ static bool stop_event(ctx *c, stop_param *p, const double *y, double *ty, doubl
 }
 
 // Locate the stop near the state c->th (the bisection's last) on the branch parametrised by its
-// fastest crease, towards s_out (the end of the step that failed); true with c->th at the stop,
-// false (c->th untouched) when the branch cannot be followed there, no event lies within
-// ORI_TOL_KIN_STOP_LIMIT_RAD of u, or the branch reaches s_out first (no stop on this step).
+// fastest crease, towards s_out (the end of the step that failed, which may lie short of the stop
+// when the steps shrank below the minimum); true with c->th at the stop, false (c->th untouched)
+// when the branch cannot be followed there, no event lies within ORI_TOL_KIN_STOP_LIMIT_RAD of u,
+// or the branch reaches the leg's end first (no stop before it).
 static bool refine_stop(ctx *c, double s_out)
 {
     const ori_mechanism *m = c->m;
@@ -469,7 +471,7 @@ static bool refine_stop(ctx *c, double s_out)
             bracket = true;
             break;
         }
-        if ((y[c->jd] - s_out) * sg >= 0.0) goto done;
+        if ((y[c->jd] - c->leg_end) * sg >= 0.0) goto done;
         memcpy(x, y, sizeof(double) * (size_t)J);
         memcpy(tx, ty, sizeof(double) * (size_t)J);
         walked += h;
@@ -488,7 +490,7 @@ static bool refine_stop(ctx *c, double s_out)
         memcpy(x, y, sizeof(double) * (size_t)J);
         memcpy(tx, ty, sizeof(double) * (size_t)J);
     }
-    if ((x[c->jd] - s_out) * sg >= 0.0) goto done;
+    if ((x[c->jd] - c->leg_end) * sg >= 0.0) goto done;
     memcpy(c->th, x, sizeof(double) * (size_t)J);
     found = true;
 done:
@@ -1207,6 +1209,7 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
     double s = c->th[c->jd];
     if (s1 == s) return LEG_OK;
     c->label = 0;
+    c->leg_end = s1;
     double sg = s1 > s ? 1.0 : -1.0;
     double *t = ori__alloc(sizeof(double) * (size_t)(J + 1));
     leg_result r;
