@@ -450,7 +450,8 @@
 #define ORI_TOL_UNFOLD_MERGE_RAD 1e-9
 #define ORI_TOL_UNFOLD_OVERLAP_REL 1e-9
 /// Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
-/// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop with a moving crease within
+/// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop that cannot be located on the branch from there
+/// (ORI_TOL_KIN_STOP_AT_LIMIT_RAD below) with a moving crease within
 /// ORI_TOL_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point; states found
 /// by that bisection fold a crease against its assignment only beyond ORI_TOL_KIN_STOP_SIGN_RAD
 /// (near a singular stop the numeric corrector leaves up to about 1e-5 rad: a crease reaching 0
