@@ -744,6 +744,67 @@ Test(solver_agree, seed_312_vertex_follows_a_branch_turning_22_degrees_per_degre
     ori_pattern_destroy(p);
 }
 
+// A degree-6 vertex with creases 5 and 1 locked (at 0° and −0.39°), crease 4 driven from −0.11°
+// towards −149.15° (seed 319, trial 86, spec 3 of the every-step property test): the drive turns
+// back at −112.0906969275° (a turning point, no state beyond) with crease 2 at −179.4347°, 0.565°
+// from −180°. Both solvers used to stop by bisecting the drive, whose states near a turning point are
+// known only to about √ of its resolution: at 21° output steps the numeric state was 0.008° short
+// (crease 2 at −179.4268°), outside the 0.573° margin of a crease limit, the closed form's inside
+// it: "singular" and "crease limit". Both now locate the turning point on the branch parametrised
+// by its fastest crease: the same stop, "singular", at every output step, its state to 1e-9°.
+Test(solver_agree, turning_point_half_a_degree_from_the_crease_limit_is_singular_at_every_step)
+{
+    const char *text = "{\"vertices_coords\":[[0,0],[-0.32460499437654666,0.94584966967579054],[-0.9817125502388615,0.19036929559020505],"
+                       "[-0.31443557930645344,-0.94927881387199142],[0.80716763741166875,-0.59032228919062923],"
+                       "[0.93502073400252139,0.35459304418641108],[0.44266467801757192,0.89668722687211255]],"
+                       "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[0,6],[1,2],[2,3],[3,4],[4,5],[5,6],[6,1]],"
+                       "\"edges_assignment\":[\"M\",\"M\",\"V\",\"M\",\"M\",\"V\",\"B\",\"B\",\"B\",\"B\",\"B\",\"B\"]}";
+    snprintf(last_text, sizeof last_text, "%s", text);
+    ori_pattern *p = test_pattern_of_text(text);
+    ori_mechanism *m = test_mechanism_of(p);
+    const double start_deg[6] = {0, -0.39494522333754389, 0.077216650917243709, -0.31939588192746166, -0.11297843326445299, 0};
+    double start[16] = {0};
+    for (int e = 0; e < 6; ++e) start[e] = start_deg[e] * DEG;
+    int locks[2] = {5, 1};
+    const double steps[] = {19.238404536069719, 1.0, 7.0, 21.0, 60.0};
+    double ref[6] = {0};
+    for (int si = 0; si < 5; ++si) {
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = 4;
+        d.driven_edge = 4;
+        d.locked_edges = locks;
+        d.locked_count = 2;
+        d.start_angles_rad = start;
+        d.to_rad = -149.15055352409581 * DEG;
+        d.step_rad = steps[si] * DEG;
+        char what[96];
+        snprintf(what, sizeof what, "seed 319 vertex at %g° steps", steps[si]);
+        compare(m, d, what);
+        for (int k = 0; k < 2; ++k) {
+            d.solver = k ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+            ori_motion *mo = test_solve(m, &d);
+            cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT, "%s", what);
+            ori_motion_block b;
+            cr_assert(ori_motion_block_of(mo, &b), "%s", what);
+            cr_assert_eq(b.kind, ORI_BLOCK_SINGULAR, "%s (%s): stop kind %d", what, k ? "numeric" : "closed form", b.kind);
+            cr_assert_gt(b.singular_count, 0, "%s", what);
+            cr_assert(fabs(b.drive_rad / DEG + 112.0906969275) < 1e-9, "%s: stop at %.13g°", what, b.drive_rad / DEG);
+            int n = ori_motion_frame_count(mo);
+            const double *a = ori_motion_frame_angles(mo, n - 1);
+            cr_assert(ori_motion_frame_residual(mo, n - 1) <= 1e-13, "%s: residual %g", what, ori_motion_frame_residual(mo, n - 1));
+            // Crease 2 short of −180° by 0.565°: a turning point, not the crease limit.
+            cr_assert(fabs(a[2] / DEG + 179.4347125876) < 1e-9, "%s: crease 2 at %.13g°", what, a[2] / DEG);
+            if (si == 0 && k == 0) memcpy(ref, a, sizeof ref);
+            for (int e = 0; e < 6; ++e)
+                cr_assert(fabs(a[e] - ref[e]) <= 1e-9 * DEG, "%s (%s): stop crease %d at %.15g°, closed form at the sample's step %.15g°",
+                          what, k ? "numeric" : "closed form", e, a[e] / DEG, ref[e] / DEG);
+            ori_motion_destroy(mo);
+        }
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // A degree-4 vertex (V M M V, not flat-foldable: creases 1 and 3 are 0.1° from collinear) driven
 // from the flat state. Its two branches through the flat state fold, with crease 0 driven up
 // (valley), creases 1, 2, 3 as (−, −, −) (creases 1 and 3 turning about 1930× as fast as the

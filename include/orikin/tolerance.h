@@ -450,7 +450,8 @@
 #define ORI_TOL_UNFOLD_MERGE_RAD 1e-9
 #define ORI_TOL_UNFOLD_OVERLAP_REL 1e-9
 /// Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
-/// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop with a moving crease within
+/// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop that cannot be located on the branch from there
+/// (ORI_TOL_KIN_STOP_AT_LIMIT_RAD below) with a moving crease within
 /// ORI_TOL_KIN_STOP_LIMIT_RAD of ±π is the crease limit, any other a singular point; states found
 /// by that bisection fold a crease against its assignment only beyond ORI_TOL_KIN_STOP_SIGN_RAD
 /// (near a singular stop the numeric corrector leaves up to about 1e-5 rad: a crease reaching 0
@@ -554,5 +555,15 @@
 /// ORI_KIN_MIN_APPROACH_RAD; nearer to the flat state neither solver tells the branches apart.
 /// Count.
 #define ORI_KIN_CROSS_NODE_HALVINGS 8
+
+/// A stop located on the branch (docs/kinematics.md §7.1): from the bisection's last state both
+/// solvers continue the branch parametrised by its fastest crease, in steps from
+/// ORI_KIN_STOP_REFINE_FIRST_RAD doubling up to ORI_KIN_STOP_REFINE_MAX_RAD, at most
+/// ORI_TOL_KIN_STOP_LIMIT_RAD in all, until the drive turns back or a crease passes ±π; the event
+/// is bisected there. The stop is then a crease limit when a moving crease is within
+/// ORI_TOL_KIN_STOP_AT_LIMIT_RAD of ±π (the located state's accuracy, not a margin). Radians.
+#define ORI_KIN_STOP_REFINE_FIRST_RAD 1e-7
+#define ORI_KIN_STOP_REFINE_MAX_RAD 1e-3
+#define ORI_TOL_KIN_STOP_AT_LIMIT_RAD 1e-8
 
 #endif

@@ -197,10 +197,10 @@ int ori__kin_solver_sweep_iterations(const kin_solver *s);
 int ori__kin_solver_nullity(kin_solver *s, const double *th);
 
 
-// Where a motion stops: the drive is bisected at most this many times (tolerances:
-// ORI_TOL_KIN_STOP_* in tolerance.h). (A crease folded flat onto its neighbour is often also a
-// turning point of the drive, where the numeric corrector reaches the stop only to about √ of the
-// drive's resolution.)
+// Where a motion stops: the drive is bisected at most this many times, and so is the event of
+// the stop located on the branch in its fastest crease (tolerances: ORI_TOL_KIN_STOP_* in
+// tolerance.h). (A crease folded flat onto its neighbour is often also a turning point of the
+// drive, where a state at a drive value is known only to about √ of the drive's resolution.)
 #define ORI_KIN_STOP_BISECTIONS 200
 // Creases whose component in the null vector at a singular stop is at least this fraction of
 // the largest are named as the singular set (the Jacobian is decomposed densely up to

@@ -121,6 +121,7 @@ typedef struct ctx {
     bool approach_flat;
     double approach_floor; // … nor need be shorter than this, and within 16 × this of it no longer (radians)
     int label; // closed form: the branch label followed (±1), 0 until known
+    double leg_end; // the end of the leg being walked (a stop is never located beyond it)
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -337,15 +338,184 @@ static bool state_at(ctx *c, double s_new, double *out)
     return ok;
 }
 
+// --- a stop located on a regular parametrisation ------------------------------------------
+//
+// Near a turning point of the drive (dθ/ds unbounded) the drive is no parameter of the branch:
+// a state at a drive value is known only to about √ of its resolution, and the numeric stop found
+// by bisecting the drive lies up to about 1e-4 rad short of the closed form's. The branch is
+// regular in the crease u = θ_k that moves fastest there, so both solvers continue it in u from
+// the bisection's last state (closed form: the 4R solved for u; numeric: the corrector with θ_k
+// held) until the first of two events: the drive turns back (ds/du changes sign: a turning point,
+// ORI_BLOCK_SINGULAR) or a moving crease passes ±π (ORI_BLOCK_CREASE_LIMIT); the event is then
+// bisected in u. The stop is a crease limit when a moving crease is within
+// ORI_TOL_KIN_STOP_AT_LIMIT_RAD of ±π there (a turning point at the limit included).
+
+// The branch parametrised by the joint k instead of the drive.
+typedef struct stop_param {
+    int k;
+    int *col;          // the columns with k held and the drive free
+    kin_solver *solver; // numeric corrector and tangent in that parametrisation
+    kin_spherical sp;  // closed form in that parametrisation (c->analytic)
+} stop_param;
+
+// The state at u = θ_k continued from the state x (its tangent tx = dθ/du) by one step: the
+// closed-form solution nearest to the linear prediction, or the corrector from it, with the
+// continuation's jump test. False when there is none.
+static bool state_at_u(ctx *c, stop_param *p, const double *x, const double *tx, double u, double *out)
+{
+    const ori_mechanism *m = c->m;
+    int J = m->joint_count;
+    double du = u - x[p->k], tn = 1.0;
+    for (int j = 0; j < J; ++j) {
+        out[j] = x[j];
+        if (p->col[j] >= 0) {
+            out[j] = x[j] + du * tx[j];
+            tn = fmax(tn, fabs(tx[j]));
+        }
+    }
+    out[p->k] = u;
+    double move = 0.0;
+    if (c->analytic) {
+        const kin_loop *L = &m->loops[p->sp.loop];
+        int fj[3];
+        double pred[3], cand[2][3];
+        for (int i = 0; i < 3; ++i) {
+            fj[i] = m->entries[L->first + p->sp.free_entry[i]].joint;
+            pred[i] = out[fj[i]];
+        }
+        int nc = ori__kin_spherical_solve(m, &p->sp, x, u, pred, cand, NULL);
+        if (nc == 0) return false;
+        int q = nc == 2 && cand_distance(cand[1], pred) < cand_distance(cand[0], pred) ? 1 : 0;
+        move = cand_distance(cand[q], pred);
+        for (int i = 0; i < 3; ++i) out[fj[i]] = cand[q][i];
+    } else {
+        double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
+        memcpy(pred, out, sizeof(double) * (size_t)J);
+        int its = 0;
+        double res = 0.0;
+        bool ok = ori__kin_correct(p->solver, out, ORI_KIN_NEWTON_MAX, &its, &res);
+        c->mo->stats.newton_iterations += its;
+        for (int j = 0; j < J; ++j) move = fmax(move, fabs(out[j] - pred[j]));
+        ori__free(pred);
+        if (!ok) return false;
+    }
+    return move <= ORI_KIN_MAX_CORRECTION * fabs(du) * tn + ORI_KIN_CORRECTION_SLACK_RAD;
+}
+
+// Whether the stop's event lies at or before the state y (tangent ty in u): a moving crease past
+// ±π, or the drive turned back (ds/du of the other sign than g0); false with *ok = false when y
+// has no tangent.
+static bool stop_event(ctx *c, stop_param *p, const double *y, double *ty, double g0, bool *ok)
+{
+    *ok = ori__kin_tangent(p->solver, y, ty);
+    if (!*ok) return false;
+    return beyond_limit(c, y) || ty[c->jd] * g0 <= 0.0;
+}
+
+// Locate the stop near the state c->th (the bisection's last) on the branch parametrised by its
+// fastest crease, towards s_out (the end of the step that failed, which may lie short of the stop
+// when the steps shrank below the minimum); true with c->th at the stop, false (c->th untouched)
+// when the branch cannot be followed there, no event lies within ORI_TOL_KIN_STOP_LIMIT_RAD of u,
+// or the branch reaches the leg's end first (no stop before it).
+static bool refine_stop(ctx *c, double s_out)
+{
+    const ori_mechanism *m = c->m;
+    int J = m->joint_count;
+    double *t = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *x = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *tx = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *y = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *ty = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    stop_param p = {-1, NULL, NULL, {0, 0, {0, 0, 0}}};
+    bool found = false;
+    if (!ori__kin_tangent(c->solver, c->th, t)) goto done;
+    double big = 0.0;
+    for (int j = 0; j < J; ++j)
+        if (c->col[j] >= 0 && fabs(t[j]) > big) {
+            big = fabs(t[j]);
+            p.k = j;
+        }
+    if (p.k < 0) goto done;
+    p.col = ori__alloc(sizeof(int) * (size_t)(J + 1));
+    memcpy(p.col, c->col, sizeof(int) * (size_t)J);
+    p.col[c->jd] = c->col[p.k];
+    p.col[p.k] = KIN_DRIVE;
+    kin_solver_opts opts = {ORI_LINEAR_AUTO, false};
+    p.solver = ori__kin_solver_create(m, p.col, c->ncols, p.k, &opts);
+    if (c->analytic && !ori__kin_spherical_applicable(m, p.col, p.k, &p.sp)) goto done;
+    // The bisection's last state, on the branch at its own u (the closed form's may be a double
+    // root just beyond a turning point, which closes its loop only to about 1e-10).
+    memset(tx, 0, sizeof(double) * (size_t)J);
+    if (!state_at_u(c, &p, c->th, tx, c->th[p.k], x) || !ori__kin_tangent(p.solver, x, tx)) goto done;
+    double g0 = tx[c->jd], sg = s_out > c->th[c->jd] ? 1.0 : -1.0;
+    if (g0 == 0.0) {
+        memcpy(c->th, x, sizeof(double) * (size_t)J); // exactly at the turning point
+        found = true;
+        goto done;
+    }
+    // Walk in u, the drive advancing (ds = g0 du towards sg), until the event is passed.
+    double d = g0 * sg > 0.0 ? 1.0 : -1.0, h = ORI_KIN_STOP_REFINE_FIRST_RAD, walked = 0.0, ub = 0.0;
+    bool bracket = false;
+    while (walked < ORI_TOL_KIN_STOP_LIMIT_RAD) {
+        double u = x[p.k] + d * h;
+        bool ok = true;
+        if (!state_at_u(c, &p, x, tx, u, y)) {
+            h *= 0.5;
+            if (h < ORI_TOL_KIN_STOP_DRIVE_RAD) goto done;
+            continue;
+        }
+        bool ev = stop_event(c, &p, y, ty, g0, &ok);
+        if (!ok) goto done;
+        if (ev) {
+            ub = u;
+            bracket = true;
+            break;
+        }
+        if ((y[c->jd] - c->leg_end) * sg >= 0.0) goto done;
+        memcpy(x, y, sizeof(double) * (size_t)J);
+        memcpy(tx, ty, sizeof(double) * (size_t)J);
+        walked += h;
+        h = fmin(2.0 * h, ORI_KIN_STOP_REFINE_MAX_RAD);
+    }
+    if (!bracket) goto done;
+    // Bisect the event in u: x stays before it.
+    for (int it = 0; it < ORI_KIN_STOP_BISECTIONS && fabs(ub - x[p.k]) > ORI_TOL_KIN_STOP_DRIVE_RAD; ++it) {
+        double mid = 0.5 * (x[p.k] + ub);
+        if (mid == x[p.k] || mid == ub) break;
+        bool ok = true;
+        if (!state_at_u(c, &p, x, tx, mid, y) || stop_event(c, &p, y, ty, g0, &ok) || !ok) {
+            ub = mid;
+            continue;
+        }
+        memcpy(x, y, sizeof(double) * (size_t)J);
+        memcpy(tx, ty, sizeof(double) * (size_t)J);
+    }
+    if ((x[c->jd] - c->leg_end) * sg >= 0.0) goto done;
+    memcpy(c->th, x, sizeof(double) * (size_t)J);
+    found = true;
+done:
+    if (p.solver) ori__kin_solver_destroy(p.solver);
+    ori__free(p.col);
+    ori__free(t);
+    ori__free(x);
+    ori__free(tx);
+    ori__free(y);
+    ori__free(ty);
+    return found;
+}
+
 // A step from the accepted state c->th towards s_out failed: it took a moving crease past ±π,
 // or found no state (a limit of the drive, a singular point). Bisect the drive between the two
-// for the last state that exists within [−π, π]; c->th ends there and the stop is classified:
-// ORI_BLOCK_CREASE_LIMIT when a moving crease is then at ±π, else ORI_BLOCK_SINGULAR. The same
+// for the last state that exists within [−π, π], then locate the stop from there on the branch
+// (refine_stop: where the drive turns back or a crease reaches ±π); c->th ends there and the stop
+// is classified: ORI_BLOCK_CREASE_LIMIT when a moving crease is then at ±π (within
+// ORI_TOL_KIN_STOP_AT_LIMIT_RAD; within ORI_TOL_KIN_STOP_LIMIT_RAD of the bisection's state when
+// the branch cannot be followed there, e.g. at a bifurcation), else ORI_BLOCK_SINGULAR. The same
 // search serves both solvers, so that they stop at the same place.
 static void locate_stop(ctx *c, double s_out)
 {
     int J = c->m->joint_count;
-    double lo = c->th[c->jd], hi = s_out;
+    double s0 = c->th[c->jd], lo = s0, hi = s_out;
     double *x = ori__alloc(sizeof(double) * (size_t)(J + 1));
     for (int it = 0; it < ORI_KIN_STOP_BISECTIONS && fabs(hi - lo) > ORI_TOL_KIN_STOP_DRIVE_RAD; ++it) {
         double mid = 0.5 * (lo + hi);
@@ -365,7 +535,17 @@ static void locate_stop(ctx *c, double s_out)
     c->blocked_at = lo;
     int j;
     double a = max_free_angle(c, c->th, &j);
-    c->block_kind = a >= ORI_PI - ORI_TOL_KIN_STOP_LIMIT_RAD ? ORI_BLOCK_CREASE_LIMIT : ORI_BLOCK_SINGULAR;
+    // The limit margin of a stop found by the bisection alone, whose state may lie short of the
+    // stop (near a turning point, or on a very steep branch).
+    double margin = ORI_TOL_KIN_STOP_LIMIT_RAD;
+    if (a < ORI_PI - ORI_TOL_KIN_STOP_AT_LIMIT_RAD && lo != s0 && refine_stop(c, s_out)) {
+        // Located on the branch: the crease limit needs a crease at ±π to the stop's accuracy.
+        c->blocked_at = c->th[c->jd];
+        check_signs_within(c, ORI_TOL_KIN_STOP_SIGN_RAD);
+        a = max_free_angle(c, c->th, &j);
+        margin = ORI_TOL_KIN_STOP_AT_LIMIT_RAD;
+    }
+    c->block_kind = a >= ORI_PI - margin ? ORI_BLOCK_CREASE_LIMIT : ORI_BLOCK_SINGULAR;
     c->block_joint = c->block_kind == ORI_BLOCK_CREASE_LIMIT ? j : -1;
 }
 
@@ -1158,6 +1338,7 @@ static leg_result run_leg(ctx *c, double s1, double step_out, bool rec)
     double s = c->th[c->jd];
     if (s1 == s) return LEG_OK;
     c->label = 0;
+    c->leg_end = s1;
     double sg = s1 > s ? 1.0 : -1.0;
     double *t = ori__alloc(sizeof(double) * (size_t)(J + 1));
     leg_result r;
