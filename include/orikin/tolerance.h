@@ -548,4 +548,11 @@
 /// whatever its assignment). Radians.
 #define ORI_TOL_KIN_FOLDED_RAD 1e-6
 
+/// The dense corrector (small patterns: a single vertex) goes on from a residual within
+/// ORI_TOL_NEWTON until its state is this close to the closing one, |r|₂ / σ_min(J_F) (or a
+/// step no longer halves the residual: the round-off floor). The residual alone left up to
+/// 2.5e-11 rad where the free creases are nearly coplanar (σ_min 4e-3), against the closed
+/// form's 1e-14 (docs/kinematics.md §6.1). Radians.
+#define ORI_TOL_NEWTON_STATE_RAD 1e-13
+
 #endif
