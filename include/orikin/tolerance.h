@@ -550,9 +550,9 @@
 
 /// The dense corrector (small patterns: a single vertex) goes on from a residual within
 /// ORI_TOL_NEWTON until its state is this close to the closing one, |r|₂ / σ_min(J_F) (or a
-/// step no longer halves the residual: the round-off floor). The residual alone left up to
-/// 2.5e-11 rad where the free creases are nearly coplanar (σ_min 4e-3), against the closed
-/// form's 1e-14 (docs/kinematics.md §6.1). Radians.
-#define ORI_TOL_NEWTON_STATE_RAD 1e-13
+/// step no longer halves the residual: the round-off floor). The residual alone left 2e-11 rad
+/// (1.1e-9°) where a vertex's free creases are nearly coplanar (σ_min 2e-3); the closed form's
+/// polish follows the same rule (docs/kinematics.md §5, §6.1). Radians.
+#define ORI_TOL_NEWTON_STATE_RAD 1e-14
 
 #endif
