@@ -565,5 +565,11 @@
 #define ORI_KIN_STOP_REFINE_FIRST_RAD 1e-7
 #define ORI_KIN_STOP_REFINE_MAX_RAD 1e-3
 #define ORI_TOL_KIN_STOP_AT_LIMIT_RAD 1e-8
+/// The dense corrector (small patterns: a single vertex) goes on from a residual within
+/// ORI_TOL_NEWTON until its state is this close to the closing one, |r|₂ / σ_min(J_F) (or a
+/// step no longer halves the residual: the round-off floor). The residual alone left 2e-11 rad
+/// (1.1e-9°) where a vertex's free creases are nearly coplanar (σ_min 2e-3); the closed form's
+/// polish follows the same rule (docs/kinematics.md §5, §6.1). Radians.
+#define ORI_TOL_NEWTON_STATE_RAD 1e-14
 
 #endif

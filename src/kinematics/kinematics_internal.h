@@ -180,6 +180,9 @@ void ori__kin_solver_destroy(kin_solver *s);
 // when the residual max-norm reaches ORI_TOL_RESIDUAL (iterating on towards ORI_TOL_NEWTON).
 // *iterations receives the corrector iterations; *residual the final max-norm of P − I.
 bool ori__kin_correct(kin_solver *s, double *th, int max_iter, int *iterations, double *residual);
+// Of the last call's iterations, those taken after the residual reached ORI_TOL_NEWTON (the
+// dense polish towards ORI_TOL_NEWTON_STATE_RAD): no measure of the prediction's quality.
+int ori__kin_solver_polish_iterations(const kin_solver *s);
 // Tangent dθ/d(drive) of the constrained curve at th (joint space, drive component 1). False
 // when the linear solve fails.
 bool ori__kin_tangent(kin_solver *s, const double *th, double *t);

@@ -784,7 +784,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         c->last_residual = res;
         check_signs(c);
         first = false;
-        if (its <= 3) h = fmin(2.0 * h, h_max);
+        if (its - ori__kin_solver_polish_iterations(c->solver) <= 3) h = fmin(2.0 * h, h_max);
         if (snew == target) {
             if (rec && out_here) record(c);
             if (target == s1) break;

@@ -86,47 +86,95 @@ static double near_to(double x, double reference)
     return reference + ori_wrap_angle(x - reference);
 }
 
-// Loop product R(a0, drive) C0 R(a1, x1) C1 R(a2, x2) C2 R(a3, x3) C3 and, when w is not NULL,
-// the spatial axes of the three free rotations (the Jacobian columns of its rotation vector).
-static ori_m3 loop_product(const ori_v3 a[4], const ori_m3 C[4], double drive, const double x[3], ori_v3 w[3])
+// The loop at drive value `drive` and free angles x (the other creases at th), evaluated as
+// the mechanism does (a product of unit quaternions: P − I and the rotation vector without
+// cancellation against the identity, so that near the flat state they keep their relative
+// precision; the matrix product's P − I has an absolute floor of 1e-16, which left 5e-12 rad in
+// the angles where σ_min is 1e-5). Fills the rotation vector r of P and, when w is not NULL, the
+// spatial axes of the three free rotations (the Jacobian's columns); returns max |P − I|.
+static double loop_eval(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive, const double x[3],
+                        double r[3], ori_v3 w[3])
 {
-    ori_m3 P = ori_m3_mul(ori_m3_rotation(a[0], drive), C[0]);
-    for (int k = 0; k < 3; ++k) {
-        if (w) w[k] = ori_m3_apply(P, a[k + 1]);
-        P = ori_m3_mul(ori_m3_mul(P, ori_m3_rotation(a[k + 1], x[k])), C[k + 1]);
+    const kin_loop *L = &m->loops[sp->loop];
+    double qw = 1.0, qx = 0.0, qy = 0.0, qz = 0.0;
+    for (int i = 0; i < L->count; ++i) {
+        const kin_entry *en = &m->entries[L->first + i];
+        double t = th[en->joint];
+        int k = -1;
+        if (i == sp->drive_entry) t = drive;
+        for (int f = 0; f < 3; ++f)
+            if (i == sp->free_entry[f]) k = f;
+        if (k >= 0) t = x[k];
+        const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
+        if (k >= 0 && w) {
+            // The axis rotated by the product so far: a + 2w(v × a) + 2 v × (v × a).
+            double tx = 2.0 * (qy * az - qz * ay), ty = 2.0 * (qz * ax - qx * az), tz = 2.0 * (qx * ay - qy * ax);
+            w[k] = ori_v3_make(ax + qw * tx + (qy * tz - qz * ty), ay + qw * ty + (qz * tx - qx * tz),
+                               az + qw * tz + (qx * ty - qy * tx));
+        }
+        double hc = cos(0.5 * t), hs = sin(0.5 * t);
+        double va = qx * ax + qy * ay + qz * az;
+        double nx = hc * qx + hs * (qw * ax + (qy * az - qz * ay));
+        double ny = hc * qy + hs * (qw * ay + (qz * ax - qx * az));
+        double nz = hc * qz + hs * (qw * az + (qx * ay - qy * ax));
+        qw = hc * qw - hs * va;
+        qx = nx;
+        qy = ny;
+        qz = nz;
     }
-    return P;
-}
-
-static double loop_deviation(ori_m3 P)
-{
+    if (qw < 0.0) {
+        qw = -qw;
+        qx = -qx;
+        qy = -qy;
+        qz = -qz;
+    }
+    double d[9] = {-2.0 * (qy * qy + qz * qz), 2.0 * (qx * qy - qw * qz),  2.0 * (qx * qz + qw * qy),
+                   2.0 * (qx * qy + qw * qz),  -2.0 * (qx * qx + qz * qz), 2.0 * (qy * qz - qw * qx),
+                   2.0 * (qx * qz - qw * qy),  2.0 * (qy * qz + qw * qx),  -2.0 * (qx * qx + qy * qy)};
     double dev = 0.0;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) dev = fmax(dev, fabs(P.m[i][j] - (i == j ? 1.0 : 0.0)));
-    return dev;
+    for (int k = 0; k < 9; ++k) dev = fmax(dev, fabs(d[k]));
+    double n = sqrt(qx * qx + qy * qy + qz * qz);
+    double f = n < ORI_KIN_ROTVEC_SERIES_MAX ? 2.0 * (1.0 + n * n / 6.0) : 2.0 * atan2(n, qw) / n;
+    r[0] = f * qx;
+    r[1] = f * qy;
+    r[2] = f * qz;
+    return isfinite(dev) && isfinite(f) ? dev : INFINITY;
 }
 
-// Newton polish of a candidate (minimum-norm steps: near the flat state the three free axes
-// are almost coplanar). The input–output equation loses half the digits where its two roots
-// merge (acos near ±1: the flat state, a turning point), so the closed form is the start and
-// the loop equation itself the judge. Returns the final deviation of P from I.
-static double polish(const ori_v3 a[4], const ori_m3 C[4], double drive, double x[3])
+// Newton polish of a candidate on the loop equation itself (minimum-norm steps: near the flat
+// state the three free axes are almost coplanar). The input–output equation loses half the
+// digits where its two roots merge (acos near ±1: the flat state, a turning point), so the
+// closed form is the start and the loop equation the judge. Like the numeric corrector
+// (solver.c), it goes on from a deviation within ORI_TOL_NEWTON until |r|₂ / σ_min is within
+// ORI_TOL_NEWTON_STATE_RAD or a step no longer halves |r|₂ (the round-off floor). Returns the
+// final deviation of P from I.
+static double polish(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive, double x[3])
 {
     ori_v3 w[3];
-    double dev = loop_deviation(loop_product(a, C, drive, x, w));
-    for (int it = 0; it < ORI_KIN_SPHERICAL_POLISH_MAX && dev > ORI_TOL_NEWTON; ++it) {
-        ori_v3 r = ori__kin_rotvec(loop_product(a, C, drive, x, w));
+    double r[3], r2[3];
+    double dev = loop_eval(m, sp, th, drive, x, r, w);
+    double rn = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (int it = 0; it < ORI_KIN_SPHERICAL_POLISH_MAX && isfinite(dev); ++it) {
         double A[9] = {w[0].x, w[0].y, w[0].z, w[1].x, w[1].y, w[1].z, w[2].x, w[2].y, w[2].z};
-        double b[3] = {-r.x, -r.y, -r.z}, sv[3];
+        double b[3] = {-r[0], -r[1], -r[2]}, sv[3];
         lapack_int rank;
         if (LAPACKE_dgelss(LAPACK_COL_MAJOR, 3, 3, 1, A, 3, b, 3, sv, ORI_TOL_RANK_REL, &rank) != 0) break;
+        bool close = dev <= ORI_TOL_NEWTON;
+        if (close && rank > 0 && rn <= ORI_TOL_NEWTON_STATE_RAD * sv[rank - 1]) break;
         double y[3] = {x[0] + b[0], x[1] + b[1], x[2] + b[2]};
-        double d2 = loop_deviation(loop_product(a, C, drive, y, NULL));
-        if (!(d2 < dev)) break;
+        ori_v3 wy[3];
+        double d2 = loop_eval(m, sp, th, drive, y, r2, wy);
+        double rn2 = sqrt(r2[0] * r2[0] + r2[1] * r2[1] + r2[2] * r2[2]);
+        if (close ? !(rn2 < rn) : !(d2 < dev)) break;
+        bool halved = rn2 <= 0.5 * rn;
         dev = d2;
-        x[0] = y[0];
-        x[1] = y[1];
-        x[2] = y[2];
+        rn = rn2;
+        for (int k = 0; k < 3; ++k) {
+            x[k] = y[k];
+            r[k] = r2[k];
+            w[k] = wy[k];
+        }
+        if (close && !halved) break;
     }
     return dev;
 }
@@ -155,10 +203,7 @@ static void loop_setup(const ori_mechanism *m, const kin_spherical *sp, const do
 double ori__kin_spherical_polish(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
                                  double x[3])
 {
-    ori_v3 a[4];
-    ori_m3 C[4];
-    loop_setup(m, sp, th, a, C);
-    return polish(a, C, drive, x);
+    return polish(m, sp, th, drive, x);
 }
 
 int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
@@ -216,7 +261,7 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
         x3 = near_to(ok ? x3 : pred[2], pred[2]);
         double x[3] = {x1, x2, x3};
         // Verify the loop with every crease at its value (after the polish).
-        double dev = polish(a, C, drive, x);
+        double dev = polish(m, sp, th, drive, x);
         if (!(dev <= 0.5 * ORI_TOL_RESIDUAL)) continue; // half: the mechanism measures the loop its own way
         // The branch label: the sign of ±acos in x2 = ψ ± acos(C/r), 0 at a double root or where
         // the equation does not involve x2.
