@@ -801,6 +801,10 @@ Test(solver_agree, turning_point_half_a_degree_from_the_crease_limit_is_singular
             ori_motion_destroy(mo);
         }
     }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // A degree-8 vertex with creases 3, 0, 6 and 7 locked flat, crease 5 driven from the flat sheet
 // to −114.9° at 1° steps (seed 98 of the every-step property test, trial 92). Its three free
 // creases are nearly coplanar (σ_min of the loop's Jacobian 2.8e-3 at −14°): the numeric corrector
