@@ -572,4 +572,11 @@
 /// polish follows the same rule (docs/kinematics.md §5, §6.1). Radians.
 #define ORI_TOL_NEWTON_STATE_RAD 1e-14
 
+
+/// Out of a singular start on a branch whose tangent turns a crease faster than this many times
+/// the drive (two creases within about 1e-4° of collinear: 2.3e5 at 1e-4°), the closed-form walk
+/// takes the corrector's state where the input–output equation has roots but its polish closes
+/// none (docs/kinematics.md §15, extremely steep branches). Unitless.
+#define ORI_KIN_STEEP_START_RATE 1e4
+
 #endif

@@ -298,6 +298,11 @@ bool ori__kin_spherical_applicable(const ori_mechanism *m, const int *col_of_joi
 // axes). Returns the number of solutions.
 int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th,
                              double drive, const double pred[3], double cand[2][3], int label[2]);
+// The same; *reachable (may be NULL) tells whether the input–output equation has roots at the
+// drive value (false beyond a limit of the drive), so that no solution with *reachable means
+// that the polish closed none of them.
+int ori__kin_spherical_solve_ex(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
+                                const double pred[3], double cand[2][3], int label[2], bool *reachable);
 // Newton polish (minimum-norm steps) of the three free angles x at the drive value on the loop
 // equation; returns the final max-norm of P − I.
 double ori__kin_spherical_polish(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,

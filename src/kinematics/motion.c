@@ -814,6 +814,9 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
     int fj[3];
     for (int i = 0; i < 3; ++i) fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
     double s = c->th[c->jd];
+    const double s_walk0 = s; // a singular start when t_first
+    bool steep_start = false;     // … out of which the branch turns very fast
+    for (int i = 0; i < 3 && t_first; ++i) steep_start = steep_start || fabs(t_first[fj[i]]) > ORI_KIN_STEEP_START_RATE;
     if (s1 == s) return LEG_OK;
     double *scratch = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double sg = s1 > s ? 1.0 : -1.0;
@@ -889,7 +892,8 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         }
         double cand[2][3];
         int lab[2] = {0, 0};
-        int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, pred, cand, lab);
+        bool reachable = false;
+        int nc = ori__kin_spherical_solve_ex(m, &c->sp, c->th, snew, pred, cand, lab, &reachable);
         int k = choose_candidate(c, cand, lab, nc, pred);
         if (in_esc) {
             // The branch is the escape's: its interpolation, polished.
@@ -902,10 +906,14 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
                 nc = 0;
             }
         }
-        if (nc == 0 && !in_esc) {
-            // The closed form found no state its polish closes (two creases within about 1e-5°
-            // of collinear, next to the flat state: the input–output equation has lost the
-            // digits): the corrector on the loop equations from the prediction, judged as any.
+        if (nc == 0 && reachable && !in_esc && steep_start && fabs(snew - s_walk0) < ORI_KIN_ESCAPE_RAD) {
+            // Out of a singular start on a branch turning more than ORI_KIN_STEEP_START_RATE times
+            // as fast as the drive, the input–output equation has roots but the polish closed none
+            // of them (two creases within about 1e-5° of collinear, next to the flat state: the
+            // equation has lost the digits): the corrector on the loop equations from the
+            // prediction, judged as any. (No roots: beyond a limit of the drive, no state. Else the
+            // closed form is left on its own: near a turning point the corrector would find states
+            // beyond it.)
             memcpy(scratch, c->th, sizeof(double) * (size_t)J);
             for (int i = 0; i < 3; ++i) scratch[fj[i]] = pred[i];
             scratch[c->jd] = snew;

@@ -209,8 +209,17 @@ double ori__kin_spherical_polish(const ori_mechanism *m, const kin_spherical *sp
 int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
                              const double pred[3], double cand[2][3], int label[2])
 {
+    return ori__kin_spherical_solve_ex(m, sp, th, drive, pred, cand, label, NULL);
+}
+
+int ori__kin_spherical_solve_ex(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive,
+                                const double pred[3], double cand[2][3], int label[2], bool *reachable)
+{
     int lab[2];
+    bool reach_dummy;
     if (!label) label = lab;
+    if (!reachable) reachable = &reach_dummy;
+    *reachable = false;
     ori_m3 C[4];
     ori_v3 a[4];
     loop_setup(m, sp, th, a, C);
@@ -232,11 +241,13 @@ int ori__kin_spherical_solve(const ori_mechanism *m, const kin_spherical *sp, co
     if (!(r > ORI_TOL_AXIS_DEGENERATE)) {
         // Degenerate: the equation does not involve x2 (it holds or fails for all x2).
         if (fabs(Cc) > ORI_TOL_AXIS_DEGENERATE) return 0;
+        *reachable = true;
         x2s[0] = pred[1];
         nx2 = 1;
     } else {
         double c = Cc / r;
         if (c > 1.0 + ORI_TOL_BRANCH_MERGE || c < -1.0 - ORI_TOL_BRANCH_MERGE) return 0; // unreachable
+        *reachable = true;
         if (c > 1.0) c = 1.0;
         if (c < -1.0) c = -1.0;
         // Within rounding of a double root (the branches crossing, e.g. at the flat state of a
