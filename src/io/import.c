@@ -18,7 +18,8 @@ ori_format ori_format_from_path(const char *path)
     char ext[8];
     size_t n = strlen(dot + 1);
     if (n == 0 || n >= sizeof ext) return ORI_FORMAT_UNKNOWN;
-    for (size_t i = 0; i <= n; ++i) ext[i] = (char)tolower((unsigned char)dot[1 + i]);
+    for (size_t i = 0; i < n && i + 1 < sizeof ext; ++i) ext[i] = (char)tolower((unsigned char)dot[1 + i]);
+    ext[n] = '\0';
     if (strcmp(ext, "fold") == 0) return ORI_FORMAT_FOLD;
     if (strcmp(ext, "svg") == 0) return ORI_FORMAT_SVG;
     if (strcmp(ext, "opx") == 0) return ORI_FORMAT_OPX;
