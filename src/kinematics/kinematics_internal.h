@@ -82,6 +82,10 @@ double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, doub
 
 // Residual only (max-norm of P − I), joint angles.
 double ori__kin_residual(const ori_mechanism *m, const double *th);
+// One vertex loop L (3 rows) at the joint angles th, as ori__kin_eval evaluates it: rot (3
+// values) receives the rotation vector of P, axes (L->count, may be NULL) the spatial axis of each
+// crossing (the Jacobian's columns). Returns max |P − I| (NaN when not finite).
+double ori__kin_vertex_loop_eval(const ori_mechanism *m, const kin_loop *L, const double *th, double rot[3], ori_v3 *axes);
 
 // Second-order term of every loop along direction v (joint space): for each loop, the vector
 // ½ Σ_{i<j} v_i v_j [ξ_i, ξ_j] with spatial twists at state th (rows like res).

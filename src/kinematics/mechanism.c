@@ -625,25 +625,29 @@ static double m3_dev_identity(ori_m3 r)
 // accumulated into cols. The residual is log P = φ k from the quaternion (φ = 2 atan2(|v|, w),
 // w ≥ 0), and the returned max-norm of P − I is taken from P − I = 2w[v]× + 2[v]×², which has no
 // cancellation against the identity.
-static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *res, double *cols,
-                               const double *half)
+// rot (3 values) receives the residual and axes (L->count, optional) each crossing's spatial axis.
+static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const double *th, double *rot, double *cols,
+                               const double *half, ori_v3 *axes)
 {
     double w = 1.0, x = 0.0, y = 0.0, z = 0.0;
     for (int i = 0; i < L->count; ++i) {
         const kin_entry *en = &m->entries[L->first + i];
         const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
-        if (cols) {
-            double *c = cols + 6 * (L->col_first + en->col);
-            if (i == 0) {
-                c[0] += ax;
-                c[1] += ay;
-                c[2] += az;
-            } else {
+        if (cols || axes) {
+            double sx = ax, sy = ay, sz = az;
+            if (i > 0) {
                 double tx = 2.0 * (y * az - z * ay), ty = 2.0 * (z * ax - x * az), tz = 2.0 * (x * ay - y * ax);
-                c[0] += ax + w * tx + (y * tz - z * ty);
-                c[1] += ay + w * ty + (z * tx - x * tz);
-                c[2] += az + w * tz + (x * ty - y * tx);
+                sx = ax + w * tx + (y * tz - z * ty);
+                sy = ay + w * ty + (z * tx - x * tz);
+                sz = az + w * tz + (x * ty - y * tx);
             }
+            if (cols) {
+                double *c = cols + 6 * (L->col_first + en->col);
+                c[0] += sx;
+                c[1] += sy;
+                c[2] += sz;
+            }
+            if (axes) axes[i] = ori_v3_make(sx, sy, sz);
         }
         double hc, hs;
         if (half) {
@@ -680,16 +684,21 @@ static double eval_vertex_loop(const ori_mechanism *m, const kin_loop *L, const 
         sum += a;
     }
     if (isnan(sum) || isnan(w)) dev = NAN;
-    if (res) {
+    if (rot) {
         // |v| = sin(φ/2): φ/|v| = 2 (1 + |v|²/6 + 3|v|⁴/40 + …), the series exact in double
         // precision below ORI_KIN_ROTVEC_SERIES_MAX.
         double n = sqrt(x * x + y * y + z * z);
         double f = n < ORI_KIN_ROTVEC_SERIES_MAX ? 2.0 * (1.0 + n * n / 6.0) : 2.0 * atan2(n, w) / n;
-        res[L->row0 + 0] = f * x;
-        res[L->row0 + 1] = f * y;
-        res[L->row0 + 2] = f * z;
+        rot[0] = f * x;
+        rot[1] = f * y;
+        rot[2] = f * z;
     }
     return dev;
+}
+
+double ori__kin_vertex_loop_eval(const ori_mechanism *m, const kin_loop *L, const double *th, double rot[3], ori_v3 *axes)
+{
+    return eval_vertex_loop(m, L, th, rot, NULL, NULL, axes);
 }
 
 // Hole loop (6 rows): rigid motions, translation rows divided by the diagonal.
@@ -746,7 +755,7 @@ double ori__kin_eval(const ori_mechanism *m, const double *th, double *res, doub
         // accumulated: one pass over them instead of a memset of all first (192 MB on a 1000 ×
         // 1000 sheet) and a second pass.
         if (cols) memset(cols + 6 * (size_t)L->col_first, 0, sizeof(double) * 6 * (size_t)L->col_count);
-        double dev = L->rows == 3 ? eval_vertex_loop(m, L, th, res, cols, half) : eval_hole_loop(m, L, th, res, cols);
+        double dev = L->rows == 3 ? eval_vertex_loop(m, L, th, res ? res + L->row0 : NULL, cols, half, NULL) : eval_hole_loop(m, L, th, res, cols);
         if (dev > worst || isnan(dev)) worst = dev;
     }
     return isnan(worst) ? INFINITY : worst;

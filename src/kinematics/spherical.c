@@ -19,6 +19,7 @@
 // stands in; every candidate is verified by its loop residual.
 #include <lapacke.h>
 #include <math.h>
+#include <string.h>
 
 #include "kinematics_internal.h"
 
@@ -86,59 +87,28 @@ static double near_to(double x, double reference)
     return reference + ori_wrap_angle(x - reference);
 }
 
-// The loop at drive value `drive` and free angles x (the other creases at th), evaluated as
-// the mechanism does (a product of unit quaternions: P − I and the rotation vector without
-// cancellation against the identity, so that near the flat state they keep their relative
-// precision; the matrix product's P − I has an absolute floor of 1e-16, which left 5e-12 rad in
-// the angles where σ_min is 1e-5). Fills the rotation vector r of P and, when w is not NULL, the
-// spatial axes of the three free rotations (the Jacobian's columns); returns max |P − I|.
+// The loop at drive value `drive` and free angles x (the other creases at th), evaluated by the
+// mechanism's own loop evaluation (ori__kin_vertex_loop_eval: a product of unit quaternions, P − I
+// and the rotation vector without cancellation against the identity, so that near the flat state
+// they keep their relative precision; a matrix product's P − I has an absolute floor of 1e-16,
+// which left 5e-12 rad in the angles where σ_min is 1e-5). Fills the rotation vector r of P and,
+// when w is not NULL, the spatial axes of the three free rotations (the Jacobian's columns);
+// returns max |P − I|, INFINITY when not finite.
 static double loop_eval(const ori_mechanism *m, const kin_spherical *sp, const double *th, double drive, const double x[3],
                         double r[3], ori_v3 w[3])
 {
     const kin_loop *L = &m->loops[sp->loop];
-    double qw = 1.0, qx = 0.0, qy = 0.0, qz = 0.0;
-    for (int i = 0; i < L->count; ++i) {
-        const kin_entry *en = &m->entries[L->first + i];
-        double t = th[en->joint];
-        int k = -1;
-        if (i == sp->drive_entry) t = drive;
-        for (int f = 0; f < 3; ++f)
-            if (i == sp->free_entry[f]) k = f;
-        if (k >= 0) t = x[k];
-        const double ax = en->axis.x, ay = en->axis.y, az = en->axis.z;
-        if (k >= 0 && w) {
-            // The axis rotated by the product so far: a + 2w(v × a) + 2 v × (v × a).
-            double tx = 2.0 * (qy * az - qz * ay), ty = 2.0 * (qz * ax - qx * az), tz = 2.0 * (qx * ay - qy * ax);
-            w[k] = ori_v3_make(ax + qw * tx + (qy * tz - qz * ty), ay + qw * ty + (qz * tx - qx * tz),
-                               az + qw * tz + (qx * ty - qy * tx));
-        }
-        double hc = cos(0.5 * t), hs = sin(0.5 * t);
-        double va = qx * ax + qy * ay + qz * az;
-        double nx = hc * qx + hs * (qw * ax + (qy * az - qz * ay));
-        double ny = hc * qy + hs * (qw * ay + (qz * ax - qx * az));
-        double nz = hc * qz + hs * (qw * az + (qx * ay - qy * ax));
-        qw = hc * qw - hs * va;
-        qx = nx;
-        qy = ny;
-        qz = nz;
-    }
-    if (qw < 0.0) {
-        qw = -qw;
-        qx = -qx;
-        qy = -qy;
-        qz = -qz;
-    }
-    double d[9] = {-2.0 * (qy * qy + qz * qz), 2.0 * (qx * qy - qw * qz),  2.0 * (qx * qz + qw * qy),
-                   2.0 * (qx * qy + qw * qz),  -2.0 * (qx * qx + qz * qz), 2.0 * (qy * qz - qw * qx),
-                   2.0 * (qx * qz - qw * qy),  2.0 * (qy * qz + qw * qx),  -2.0 * (qx * qx + qy * qy)};
-    double dev = 0.0;
-    for (int k = 0; k < 9; ++k) dev = fmax(dev, fabs(d[k]));
-    double n = sqrt(qx * qx + qy * qy + qz * qz);
-    double f = n < ORI_KIN_ROTVEC_SERIES_MAX ? 2.0 * (1.0 + n * n / 6.0) : 2.0 * atan2(n, qw) / n;
-    r[0] = f * qx;
-    r[1] = f * qy;
-    r[2] = f * qz;
-    return isfinite(dev) && isfinite(f) ? dev : INFINITY;
+    double *t = ori__alloc(sizeof(double) * (size_t)(m->joint_count + 1));
+    memcpy(t, th, sizeof(double) * (size_t)m->joint_count);
+    t[m->entries[L->first + sp->drive_entry].joint] = drive;
+    for (int f = 0; f < 3; ++f) t[m->entries[L->first + sp->free_entry[f]].joint] = x[f];
+    ori_v3 *axes = w ? ori__alloc(sizeof(ori_v3) * (size_t)L->count) : NULL;
+    double dev = ori__kin_vertex_loop_eval(m, L, t, r, axes);
+    if (w)
+        for (int f = 0; f < 3; ++f) w[f] = axes[sp->free_entry[f]];
+    ori__free(axes);
+    ori__free(t);
+    return isfinite(dev) && isfinite(r[0]) && isfinite(r[1]) && isfinite(r[2]) ? dev : INFINITY;
 }
 
 // Newton polish of a candidate on the loop equation itself (minimum-norm steps: near the flat
