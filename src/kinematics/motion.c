@@ -272,6 +272,13 @@ static bool beyond_limit(const ctx *c, const double *th)
     return max_free_angle(c, th, NULL) > ORI_PI + ORI_TOL_FOLD_SIGN_RAD;
 }
 
+// The joints of a spherical split's three free crossings, in its order.
+static void free_joints(const ori_mechanism *m, const kin_spherical *sp, int fj[3])
+{
+    const kin_loop *L = &m->loops[sp->loop];
+    for (int i = 0; i < 3; ++i) fj[i] = m->entries[L->first + sp->free_entry[i]].joint;
+}
+
 static double cand_distance(const double a[3], const double b[3])
 {
     return fmax(fabs(a[0] - b[0]), fmax(fabs(a[1] - b[1]), fabs(a[2] - b[2])));
@@ -300,13 +307,10 @@ static bool state_at(ctx *c, double s_new, double *out)
     memcpy(out, c->th, sizeof(double) * (size_t)J);
     out[c->jd] = s_new;
     if (c->analytic) {
-        const kin_loop *L = &m->loops[c->sp.loop];
         int fj[3];
         double pred[3], cand[2][3];
-        for (int i = 0; i < 3; ++i) {
-            fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
-            pred[i] = c->th[fj[i]];
-        }
+        free_joints(m, &c->sp, fj);
+        for (int i = 0; i < 3; ++i) pred[i] = c->th[fj[i]];
         int lab[2];
         int nc = ori__kin_spherical_solve(m, &c->sp, c->th, s_new, pred, cand, lab);
         if (nc == 0) return false;
@@ -376,13 +380,10 @@ static bool state_at_u(ctx *c, stop_param *p, const double *x, const double *tx,
     out[p->k] = u;
     double move = 0.0;
     if (c->analytic) {
-        const kin_loop *L = &m->loops[p->sp.loop];
         int fj[3];
         double pred[3], cand[2][3];
-        for (int i = 0; i < 3; ++i) {
-            fj[i] = m->entries[L->first + p->sp.free_entry[i]].joint;
-            pred[i] = out[fj[i]];
-        }
+        free_joints(m, &p->sp, fj);
+        for (int i = 0; i < 3; ++i) pred[i] = out[fj[i]];
         int nc = ori__kin_spherical_solve(m, &p->sp, x, u, pred, cand, NULL);
         if (nc == 0) return false;
         int q = nc == 2 && cand_distance(cand[1], pred) < cand_distance(cand[0], pred) ? 1 : 0;
@@ -809,10 +810,9 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
                                 const kin_escape *esc)
 {
     const ori_mechanism *m = c->m;
-    const kin_loop *L = &m->loops[c->sp.loop];
     int J = m->joint_count;
     int fj[3];
-    for (int i = 0; i < 3; ++i) fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
+    free_joints(m, &c->sp, fj);
     double s = c->th[c->jd];
     const double s_walk0 = s; // a singular start when t_first
     bool steep_start = false;     // … out of which the branch turns very fast
@@ -1039,13 +1039,10 @@ static bool state_near(ctx *c, double snew, const double *pred, double hh, doubl
     for (int j = 0; j < J; ++j)
         if (c->col[j] >= 0) tn = fmax(tn, fabs(pred[j] - c->th[j]) / fmax(hh, 1e-300));
     if (c->analytic) {
-        const kin_loop *L = &m->loops[c->sp.loop];
         int fj[3];
         double p3[3], cand[2][3];
-        for (int i = 0; i < 3; ++i) {
-            fj[i] = m->entries[L->first + c->sp.free_entry[i]].joint;
-            p3[i] = pred[fj[i]];
-        }
+        free_joints(m, &c->sp, fj);
+        for (int i = 0; i < 3; ++i) p3[i] = pred[fj[i]];
         int lab[2];
         int nc = ori__kin_spherical_solve(m, &c->sp, c->th, snew, p3, cand, lab);
         if (nc == 0) return false;
