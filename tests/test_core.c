@@ -214,6 +214,79 @@ Test(core, atomic_write_refuses_devices_and_directories)
     test_tmpdir_remove(dir);
 }
 
+// Contents of a small file, or "" when it does not exist.
+static const char *slurp(const char *path, char *buf, size_t cap)
+{
+    buf[0] = '\0';
+    FILE *f = fopen(path, "rb");
+    if (!f) return buf;
+    size_t n = fread(buf, 1, cap - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+    return buf;
+}
+
+Test(core, a_batch_writes_every_output_or_none)
+{
+    char *dir = test_tmpdir();
+    char a[600], b[600], bad[600], buf[64];
+    snprintf(a, sizeof a, "%s/a.obj", dir);
+    snprintf(b, sizeof b, "%s/a.mtl", dir);
+    snprintf(bad, sizeof bad, "%s/sub", dir);
+    write_ok(b, "mine");
+    cr_assert_eq(mkdir(bad, 0700), 0);
+    // One output fails (a directory): the other, already written, is not renamed into place and
+    // the user's file stays as it was.
+    ori_file_batch *batch = ori_file_batch_create();
+    cr_assert_null(ori_file_batch_set_current(batch));
+    write_ok(b, "new mtl");
+    ori_error err;
+    cr_assert_eq(ori_file_write_atomic(bad, "x", 1, &err), ORI_ERR_IO);
+    cr_assert_eq(ori_file_batch_count(batch), 1);
+    cr_assert_str_eq(slurp(b, buf, sizeof buf), "mine");
+    cr_assert_eq(count_entries(dir, ".tmp."), 1); // staged, not yet in place
+    cr_assert_eq(ori_file_batch_set_current(NULL), batch);
+    ori_file_batch_destroy(batch);
+    cr_assert_str_eq(slurp(b, buf, sizeof buf), "mine");
+    cr_assert_eq(count_entries(dir, ".tmp."), 0);
+    // Every output written: all appear at commit, not before; a path written twice keeps the later.
+    batch = ori_file_batch_create();
+    ori_file_batch_set_current(batch);
+    write_ok(a, "first");
+    write_ok(a, "obj");
+    write_ok(b, "mtl");
+    ori_file_batch_set_current(NULL);
+    cr_assert_eq(ori_file_batch_count(batch), 2);
+    cr_assert_str_eq(slurp(a, buf, sizeof buf), "");
+    cr_assert_str_eq(slurp(b, buf, sizeof buf), "mine");
+    cr_assert_eq(ori_file_batch_commit(batch, &err), ORI_OK, "%s", err.message);
+    ori_file_batch_destroy(batch);
+    cr_assert_str_eq(slurp(a, buf, sizeof buf), "obj");
+    cr_assert_str_eq(slurp(b, buf, sizeof buf), "mtl");
+    cr_assert_eq(count_entries(dir, ".tmp."), 0);
+    // A write outside a batch is in place at once.
+    write_ok(a, "direct");
+    cr_assert_str_eq(slurp(a, buf, sizeof buf), "direct");
+    ori_file_batch_destroy(NULL);
+    test_tmpdir_remove(dir);
+}
+
+Test(core, a_signal_removes_the_staged_outputs_of_a_batch)
+{
+    char *dir = test_tmpdir();
+    char a[600];
+    snprintf(a, sizeof a, "%s/a.fold", dir);
+    ori_file_batch *batch = ori_file_batch_create();
+    ori_file_batch_set_current(batch);
+    write_ok(a, "staged");
+    ori_file_batch_set_current(NULL);
+    cr_assert_eq(count_entries(dir, ".tmp."), 1);
+    cr_assert_eq(ori_file_remove_temporaries(), 1); // what a SIGINT handler calls
+    cr_assert_eq(count_entries(dir, ".tmp."), 0);
+    ori_file_batch_destroy(batch);
+    test_tmpdir_remove(dir);
+}
+
 Test(core, atomic_write_goes_through_symbolic_links)
 {
     char *dir = test_tmpdir();

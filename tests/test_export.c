@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "support.h"
@@ -224,6 +225,20 @@ Test(export, obj_files_name_their_material_library_and_it_defines_every_material
     ori_error err;
     cr_assert_eq(ori_mesh_export_file(m, &d, "/nonexistent-dir/x.obj", &err), ORI_ERR_IO);
     cr_assert_eq(access("/nonexistent-dir/x.mtl", F_OK), -1);
+    // Nor does it touch a library the user has there (it deleted it before: the .mtl was
+    // written first, then removed when the OBJ failed).
+    char bad[512], mine[512];
+    snprintf(bad, sizeof bad, "%s/x.obj", dir);
+    snprintf(mine, sizeof mine, "%s/x.mtl", dir);
+    FILE *f = fopen(mine, "w");
+    cr_assert_not_null(f);
+    fputs("mine\n", f);
+    fclose(f);
+    cr_assert_eq(mkdir(bad, 0700), 0);
+    cr_assert_eq(ori_mesh_export_file(m, &d, bad, &err), ORI_ERR_IO);
+    char *kept = slurp(mine);
+    cr_assert_str_eq(kept, "mine\n");
+    free(kept);
     test_tmpdir_remove(dir);
     ori_mesh_destroy(m);
     state_free(&s);

@@ -4,7 +4,7 @@
 /// Functions: ori_status_name, ori_status_message, ori_error_clear, ori_error_format,
 /// ori_set_allocator, ori_set_assert_hook, ori_set_oom_hook, ori_alloc_live_count,
 /// ori_alloc_live_bytes, ori_alloc_peak_bytes, ori_alloc_reset_peak, ori_buffer_free,
-/// ori_file_read_all, ori_file_write_atomic, ori_file_remove_temporaries, ori_version_string.
+/// ori_file_read_all, ori_file_write_atomic, ori_file_batch_*, ori_file_remove_temporaries, ori_version_string.
 #ifndef ORIKIN_BASE_H
 #define ORIKIN_BASE_H
 
@@ -124,8 +124,29 @@ ORI_API ori_status ori_file_read_all(const char *path, size_t max_bytes, char **
 /// an existing file the process may not write (e.g. mode 0444) is refused with ORI_ERR_IO. The
 /// new file keeps the replaced file's mode (and owner where permitted); a new file gets 0666
 /// less the umask. While the temporary file exists, ori_file_remove_temporaries can remove it.
+/// The data is synced before the rename and the directory after (durable across a power loss);
+/// the rename breaks hard links (other links keep the old contents). In a current batch
+/// (ori_file_batch) the file is staged and renamed by ori_file_batch_commit.
 ORI_API ori_status ori_file_write_atomic(const char *path, const void *data, size_t size,
                                          ori_error *error);
+
+/// A set of outputs written all or none: while a batch is current in a thread, every
+/// ori_file_write_atomic of that thread (and so every writer of the library that takes a path)
+/// writes and syncs its temporary file but does not rename it; ori_file_batch_commit renames
+/// them all, ori_file_batch_destroy removes what was not committed. Writing a path twice keeps
+/// the later contents.
+typedef struct ori_file_batch ori_file_batch;
+/// A new, empty batch; destroy it with ori_file_batch_destroy.
+ORI_API ori_file_batch *ori_file_batch_create(void);
+/// Make batch the current one of this thread (NULL: none); returns the previous one.
+ORI_API ori_file_batch *ori_file_batch_set_current(ori_file_batch *batch);
+/// Number of files staged in batch (0 for NULL).
+ORI_API int ori_file_batch_count(const ori_file_batch *batch);
+/// Rename every staged file into place and sync their directories. Call once. On a failure
+/// (rare: every target was checked when staged) the remaining files are removed unrenamed.
+ORI_API ori_status ori_file_batch_commit(ori_file_batch *batch, ori_error *error);
+/// Remove the staged files not committed and free the batch (no longer current). NULL: no-op.
+ORI_API void ori_file_batch_destroy(ori_file_batch *batch);
 
 /// Remove the temporary files of every ori_file_write_atomic still in progress (in any thread)
 /// and return how many were removed. Async-signal-safe: meant for the SIGINT/SIGTERM handler

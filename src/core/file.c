@@ -1,6 +1,13 @@
 // Whole-file read and atomic write (temporary file beside the target, then rename), so that a
 // failed command never leaves a partial output.
 //
+// Durability is that of SQLite and git: the temporary file is synced before the rename and the
+// directory after it, so that after a power loss the path holds the old contents or the new,
+// never neither. A batch (ori_file_batch) stages several outputs the same way and renames them
+// all only when every one was written, so a command with several outputs writes all or none.
+// The rename replaces the directory entry: other hard links to the old file keep the old
+// contents (as with git and most editors' safe saves).
+//
 // Reading opens without blocking and checks the file type on the open descriptor before
 // reading anything, so a FIFO or a device fails at once instead of waiting for a writer.
 //
@@ -293,6 +300,128 @@ static bool write_all(int fd, const char *data, size_t size)
     return true;
 }
 
+// fsync the directory holding path, so that a rename into it survives a power loss (ext4 and
+// XFS order a rename after the data only when asked). Best effort: a file system that cannot
+// sync a directory (EINVAL) is not an error.
+static bool sync_directory_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    size_t dir = slash ? (size_t)(slash - path) + (slash == path ? 1 : 0) : 0;
+    char *d = ori__alloc(dir + 2);
+    if (dir) memcpy(d, path, dir), d[dir] = '\0';
+    else d[0] = '.', d[1] = '\0';
+    bool ok = true;
+    int fd = open(d, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0) {
+        if (fsync(fd) != 0 && errno != EINVAL && errno != EROFS) ok = false;
+        close(fd);
+    }
+    ori__free(d);
+    return ok;
+}
+
+// --- batches of outputs --------------------------------------------------------------------------
+
+typedef struct staged {
+    char *tmp, *target;
+    int slot;
+} staged;
+
+struct ori_file_batch {
+    staged *files;
+    int count, capacity;
+    bool committed;
+};
+
+// The batch ori_file_write_atomic stages into, per thread (ori_file_batch_set_current).
+static _Thread_local ori_file_batch *current_batch;
+
+ori_file_batch *ori_file_batch_create(void)
+{
+    ori_file_batch *b = ori__alloc(sizeof *b);
+    memset(b, 0, sizeof *b);
+    return b;
+}
+
+ori_file_batch *ori_file_batch_set_current(ori_file_batch *batch)
+{
+    ori_file_batch *previous = current_batch;
+    current_batch = batch;
+    return previous;
+}
+
+static void stage(ori_file_batch *b, char *tmp, char *target, int slot)
+{
+    for (int i = 0; i < b->count; ++i)
+        if (strcmp(b->files[i].target, target) == 0) { // written again: the later contents win
+            unlink(b->files[i].tmp);
+            temp_untrack(b->files[i].slot);
+            ori__free(b->files[i].tmp);
+            ori__free(target);
+            b->files[i].tmp = tmp;
+            b->files[i].slot = slot;
+            return;
+        }
+    if (b->count == b->capacity) {
+        int cap = b->capacity ? 2 * b->capacity : 4;
+        staged *f = ori__alloc((size_t)cap * sizeof *f);
+        if (b->count) memcpy(f, b->files, (size_t)b->count * sizeof *f);
+        ori__free(b->files);
+        b->files = f;
+        b->capacity = cap;
+    }
+    b->files[b->count++] = (staged){tmp, target, slot};
+}
+
+int ori_file_batch_count(const ori_file_batch *batch)
+{
+    return batch ? batch->count : 0;
+}
+
+ori_status ori_file_batch_commit(ori_file_batch *b, ori_error *error)
+{
+    ORI_ASSERT(b && !b->committed);
+    b->committed = true;
+    int e = 0, failed = -1;
+    for (int i = 0; i < b->count; ++i) {
+        if (e == 0 && rename(b->files[i].tmp, b->files[i].target) != 0) e = errno, failed = i;
+        if (e != 0) unlink(b->files[i].tmp);
+        temp_untrack(b->files[i].slot);
+    }
+    bool synced = true;
+    for (int i = 0; i < b->count && e == 0; ++i) {
+        bool seen = false; // one fsync per directory
+        for (int j = 0; j < i && !seen; ++j) {
+            const char *a = strrchr(b->files[i].target, '/'), *c = strrchr(b->files[j].target, '/');
+            size_t la = a ? (size_t)(a - b->files[i].target) : 0, lc = c ? (size_t)(c - b->files[j].target) : 0;
+            seen = la == lc && memcmp(b->files[i].target, b->files[j].target, la) == 0;
+        }
+        if (!seen && !sync_directory_of(b->files[i].target)) synced = false, e = errno;
+    }
+    if (e != 0)
+        return ori__fail(error, ORI_ERR_IO, "cannot write %s: %s", failed >= 0 ? b->files[failed].target : "the outputs",
+                         synced ? strerror(e) : "cannot sync the directory");
+    return ORI_OK;
+}
+
+void ori_file_batch_destroy(ori_file_batch *b)
+{
+    if (!b) return;
+    if (current_batch == b) current_batch = NULL;
+    for (int i = 0; i < b->count; ++i) {
+        if (!b->committed) {
+            unlink(b->files[i].tmp);
+            temp_untrack(b->files[i].slot);
+        }
+        ori__free(b->files[i].tmp);
+        ori__free(b->files[i].target);
+    }
+    ori__free(b->files);
+    ori__free(b);
+}
+
+// --- atomic write ------------------------------------------------------------------------------
+
 ori_status ori_file_write_atomic(const char *path, const void *data, size_t size, ori_error *error)
 {
     ORI_ASSERT(path && (data || size == 0));
@@ -343,10 +472,18 @@ ori_status ori_file_write_atomic(const char *path, const void *data, size_t size
         }
         if (fchmod(fd, mode) != 0) ok = false, e = errno;
     }
+    // The data reaches the disk before the rename makes it the file (as SQLite and git do), so
+    // that a power loss leaves the old file or the new one, never an empty one.
+    if (ok && fsync(fd) != 0 && errno != EINVAL) ok = false, e = errno;
     if (close(fd) != 0 && ok) ok = false, e = errno;
+    if (ok && current_batch) { // staged: renamed with the rest of the batch, or removed with it
+        stage(current_batch, tmp, target, slot);
+        return ORI_OK;
+    }
     if (ok && rename(tmp, target) != 0) ok = false, e = errno;
     if (!ok) unlink(tmp);
     temp_untrack(slot);
+    if (ok && !sync_directory_of(target)) ok = false, e = errno;
     ori__free(tmp);
     ori__free(target);
     if (!ok) return ori__fail(error, ORI_ERR_IO, "cannot write: %s", strerror(e ? e : EIO));

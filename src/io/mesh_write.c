@@ -497,13 +497,15 @@ ori_status ori_mesh_export_file(const ori_mesh *m, const ori_export_def *def, co
     size_t size = 0, msize = 0;
     ori_status st = ori_mesh_export(m, &d, &data, &size, error);
     if (st == ORI_OK && mtl) st = ori_mesh_export_mtl(&d, &mdata, &msize, error);
-    bool mtl_written = false;
-    if (st == ORI_OK && mtl) {
-        st = ori_file_write_atomic(mtl, mdata, msize, error);
-        mtl_written = st == ORI_OK;
-    }
+    // The OBJ and its material library are written both or neither: a batch of the caller's,
+    // else one of our own (a failure leaves the user's files as they were).
+    ori_file_batch *own = NULL, *outer = ori_file_batch_set_current(NULL);
+    ori_file_batch_set_current(outer ? outer : (own = ori_file_batch_create()));
+    if (st == ORI_OK && mtl) st = ori_file_write_atomic(mtl, mdata, msize, error);
     if (st == ORI_OK) st = ori_file_write_atomic(path, data, size, error);
-    if (st != ORI_OK && mtl_written) remove(mtl);
+    ori_file_batch_set_current(outer);
+    if (own && st == ORI_OK) st = ori_file_batch_commit(own, error);
+    ori_file_batch_destroy(own);
     ori__free(data);
     ori__free(mdata);
     ori__free(mtl);
