@@ -16,6 +16,7 @@ enum cli_exit {
     CLI_EXIT_USAGE = 2,    // bad command line
     CLI_EXIT_INPUT = 3,    // bad input file or value
     CLI_EXIT_INTERNAL = 4, // internal failure
+    CLI_EXIT_PARTIAL = 5,  // stopped at a budget (--limit, --timeout, Ctrl-C of a search): the answer is partial
 };
 
 // A subcommand: cli/cmd_<id>.c defines `const cli_command cli_cmd_<id>`.

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "progress.h"
 
 #define CMD "unfold"
 
@@ -39,13 +40,18 @@ static const char help[] =
     "                     coordinates rounded to 6 digits); larger for relaxed or simulated forms\n"
     "  --tries N          spanning trees to try (default 50)\n"
     "  --seed N           seed of the random trees (default 1)\n"
-    "  --all              enumerate every spanning tree (up to 24 faces) and count the distinct nets\n"
-    "                     up to rotation and reflection (implies --cut)\n"
+    "  --all              enumerate every spanning tree and count the distinct nets up to rotation\n"
+    "                     and reflection (implies --cut); bounded by --limit and --timeout, past which\n"
+    "                     the count is a lower bound (exit 5)\n"
+    "  --limit N          with --all: spanning trees to enumerate at most (default 10000000)\n"
+    "  --timeout SECONDS  with --all: stop enumerating after this long (default: none)\n"
     "  -o, --output FILE  write the net as FOLD (faces_orikin:source, edges_orikin:glue); a developed\n"
     "                     crease pattern with its folded form as frame 1\n"
     "  --svg FILE         draw the net as SVG\n"
     "  --json             print {developable, cuts, pieces, faces, overlaps, max_refold_error, ...}\n"
     "                     as JSON (developed: max_angle_defect_deg, max_length_error, ...)\n"
+    "\n"
+    "exit codes: 0 done, 3 bad shape, 5 --all stopped at --limit or --timeout (a lower bound)\n"
     "\n"
     "examples:\n"
     "  orikin unfold tests/data/unfold/cube.obj --all -o cube-net.fold --json\n"
@@ -102,7 +108,8 @@ static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *svg = NULL, *v;
     bool json = false, cut = false, develop_only = false;
-    double dev_tol_deg = 0.0;
+    double dev_tol_deg = 0.0, timeout_s = 0.0;
+    bool limit_given = false;
     ori_unfold_def def = ori_default_unfold_def();
     cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
@@ -127,6 +134,17 @@ static int run(int argc, char **argv)
             if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
             if (!cli_parse_int(v, &def.tries) || def.tries < 1 || def.tries > 1000000)
                 return cli_usage(CMD, "--tries needs an integer from 1 to 1000000, got '%s'", v);
+        } else if (strcmp(argv[i], "--limit") == 0) {
+            double n;
+            if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &n) || !(n >= 1.0) || n > 1e15 || n != floor(n))
+                return cli_usage(CMD, "--limit needs a number of spanning trees from 1 to 1e15, got '%s'", v);
+            def.max_trees = (long long)n;
+            limit_given = true;
+        } else if (strcmp(argv[i], "--timeout") == 0) {
+            if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &timeout_s) || !(timeout_s > 0.0) || timeout_s > 1e9)
+                return cli_usage(CMD, "--timeout needs seconds in (0, 1e9], got '%s'", v);
         } else if (strcmp(argv[i], "--seed") == 0) {
             int s;
             if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
@@ -142,6 +160,12 @@ static int run(int argc, char **argv)
     }
     if (!path) return cli_usage(CMD, "missing SHAPE");
     if (develop_only && (cut || def.all)) return cli_usage(CMD, "--develop cannot be combined with %s", cut ? "--cut" : "--all");
+    if ((limit_given || timeout_s > 0.0) && !def.all)
+        return cli_usage(CMD, "%s bounds --all: give --all too", limit_given ? "--limit" : "--timeout");
+    cli_deadline deadline;
+    cli_progress_begin(&deadline.bar, CMD, "enumerating spanning trees");
+    deadline.seconds = timeout_s;
+    def.progress = cli_deadline_fn, def.progress_user = &deadline;
     ori_error err;
     ori_error_clear(&err);
     ori_mesh *mesh = NULL;
@@ -161,6 +185,7 @@ static int run(int argc, char **argv)
         ori_unfold_mesh_destroy(mesh);
         return cli_input_error(CMD, path, &err);
     }
+    cli_progress_end(&deadline.bar);
     ori_unfold_result r = ori_unfold_net_result(net);
     const ori_pattern *cp = ori_unfold_net_pattern(net);
     int nm = 0, nvl = 0, nfl = 0;
@@ -216,6 +241,8 @@ static int run(int argc, char **argv)
                 json_object_set_new(o, "distinct_nets", r.distinct_nets >= 0 ? json_integer(r.distinct_nets) : json_null());
                 json_object_set_new(o, "spanning_trees", json_integer(r.spanning_trees));
                 json_object_set_new(o, "overlap_free_trees", json_integer(r.overlap_free_trees));
+                json_object_set_new(o, "spanning_trees_total", json_real(r.spanning_trees_total));
+                json_object_set_new(o, "complete", json_boolean(r.all_complete));
             }
             cli_print_json(o); // takes o
         } else {
@@ -229,10 +256,16 @@ static int run(int argc, char **argv)
                        : r.fold_order == ORI_FOLD_ORDER_LEAVES_FIRST ? "without collision one crease at a time, leaves first"
                        : r.fold_order == ORI_FOLD_ORDER_ROOT_FIRST   ? "without collision one crease at a time, root first"
                                                                      : "every fold order tried collides");
-            if (def.all && r.distinct_nets >= 0)
-                printf("%d distinct nets (up to rotation and reflection) from %d of %d spanning trees\n", r.distinct_nets,
+            if (def.all && r.all_complete)
+                printf("%d distinct nets (up to rotation and reflection) from %lld of %lld spanning trees\n", r.distinct_nets,
                        r.overlap_free_trees, r.spanning_trees);
+            else if (def.all)
+                printf("at least %d distinct nets (up to rotation and reflection): stopped at %s after %lld of %.6g "
+                       "spanning trees (%lld without overlap); a larger --limit or --timeout counts more\n",
+                       r.distinct_nets, r.spanning_trees >= def.max_trees ? "--limit" : "--timeout", r.spanning_trees,
+                       r.spanning_trees_total, r.overlap_free_trees);
         }
+        if (def.all && !r.all_complete) rc = CLI_EXIT_PARTIAL;
     }
     ori_unfold_net_destroy(net);
     ori_unfold_mesh_destroy(mesh);

@@ -42,7 +42,8 @@ static void print_overview(FILE *out)
             "\n"
             "  help CMD   the help of one command (same as orikin CMD -h)\n"
             "\n"
-            "exit codes: 0 ok, 1 checked and negative, 2 usage, 3 bad input, 4 internal\n"
+            "exit codes: 0 ok, 1 checked and negative, 2 usage, 3 bad input, 4 internal, 5 stopped at a\n"
+            "budget (--limit, --timeout): a partial answer\n"
             "example: orikin check examples/patterns/open-corner.fold\n");
 }
 
@@ -110,5 +111,23 @@ int main(int argc, char **argv)
     cli_set_command(cmd->name);
     for (int i = 2; i < argc; ++i)
         if (cli_is_help(argv[i])) return cli_finish(cli_print_help(cmd));
-    return cli_finish(cmd->run(argc - 1, argv + 1));
+    // The studio saves as it serves: its writes land at once.
+    if (cmd == &cli_cmd_view) return cli_finish(cmd->run(argc - 1, argv + 1));
+    // A command's outputs land together: every file the library writes for it is staged and
+    // renamed into place only when the command succeeds (or answers "no" with its outputs:
+    // a blocked fold's partial motion, a partial count), so a failure halfway through leaves
+    // every earlier output as it was.
+    ori_file_batch *batch = ori_file_batch_create();
+    ori_file_batch_set_current(batch);
+    int rc = cmd->run(argc - 1, argv + 1);
+    ori_file_batch_set_current(NULL);
+    if (rc == CLI_EXIT_OK || rc == CLI_EXIT_NEGATIVE || rc == CLI_EXIT_PARTIAL) {
+        ori_error err;
+        if (ori_file_batch_commit(batch, &err) != ORI_OK) {
+            fprintf(stderr, "orikin %s: %s\n", cmd->name, err.message);
+            rc = CLI_EXIT_INPUT;
+        }
+    }
+    ori_file_batch_destroy(batch);
+    return cli_finish(rc);
 }

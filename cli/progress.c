@@ -76,3 +76,11 @@ void cli_progress_end(cli_progress *p)
     }
     p->shown = false;
 }
+
+bool cli_deadline_fn(double fraction, void *user)
+{
+    cli_deadline *d = user;
+    cli_progress_update(&d->bar, fraction);
+    if (d->seconds > 0.0 && now_s() - d->bar.start > d->seconds) d->expired = true;
+    return !d->expired;
+}

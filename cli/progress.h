@@ -26,4 +26,14 @@ bool cli_progress_fn(double fraction, void *user);
 // Finish: completes the bar (or prints the elapsed time) when anything was shown.
 void cli_progress_end(cli_progress *p);
 
+// A progress bar with a time budget (--timeout): the ori_progress_fn cli_deadline_fn draws the
+// bar and cancels the operation (returns false) once `seconds` have passed since the bar began
+// (seconds ≤ 0: no budget). The library then ends with a partial answer.
+typedef struct cli_deadline {
+    cli_progress bar;
+    double seconds;
+    bool expired; // the budget ran out
+} cli_deadline;
+bool cli_deadline_fn(double fraction, void *user);
+
 #endif

@@ -420,3 +420,30 @@ Test(cli, huffman_drawings_import_as_one_sheet_saying_what_was_joined)
         ori_pattern_destroy(p);
     }
 }
+
+// A command with several outputs writes all of them or none (issue: `layers -o old.fold --svg
+// nodir/x.svg` replaced old.fold, then failed on the SVG): every output is staged and renamed
+// only when the command succeeds.
+Test(cli, a_command_with_several_outputs_writes_all_or_none)
+{
+    char *dir = test_tmpdir(), old[600], svg[600], bad[600], *out = NULL;
+    snprintf(old, sizeof old, "%s/old.fold", dir);
+    snprintf(bad, sizeof bad, "%s/nodir/x.svg", dir);
+    snprintf(svg, sizeof svg, "%s/x.svg", dir);
+    write_file(old, "old\n", 4);
+    char args[2000];
+    snprintf(args, sizeof args, "layers examples/patterns/degree6-vertex.fold -o %s --svg %s", old, bad);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    free(out);
+    char *kept = test_read_text(old);
+    cr_assert_str_eq(kept, "old\n", "the first output was replaced although the second failed");
+    free(kept);
+    snprintf(args, sizeof args, "layers examples/patterns/degree6-vertex.fold -o %s --svg %s", old, svg);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    char *now = test_read_text(old), *pic = test_read_text(svg);
+    cr_assert(strstr(now, "faceOrders"), "both written on success");
+    cr_assert(strstr(pic, "<svg"));
+    free(now), free(pic);
+    test_tmpdir_remove(dir);
+}

@@ -449,6 +449,16 @@
 #define ORI_TOL_UNFOLD_PLANAR_REL 1e-6
 #define ORI_TOL_UNFOLD_MERGE_RAD 1e-9
 #define ORI_TOL_UNFOLD_OVERLAP_REL 1e-9
+/// Nets: a corner closer than ORI_TOL_UNFOLD_CONTACT_REL × the diagonal to another part of the
+/// net's boundary (but its own vertex) is a contact: the net would touch itself, which a FOLD
+/// file cannot hold (two vertices at one point), so such a tree is avoided or split into pieces.
+#define ORI_TOL_UNFOLD_CONTACT_REL 1e-6
+/// Nets: a net without overlap that touches itself is mended by up to
+/// ORI_UNFOLD_UNTOUCH_SWAPS_PER_TRY × tries swaps of a tree edge for a cut (a count, no unit).
+#define ORI_UNFOLD_UNTOUCH_SWAPS_PER_TRY 20
+/// Nets (--all): lengths are compared in units of 1/ORI_UNFOLD_NET_QUANTA of the shape's
+/// diagonal and turns of 1/ORI_UNFOLD_NET_QUANTA of π, so congruent nets have equal forms.
+#define ORI_UNFOLD_NET_QUANTA 1e6
 /// Where a motion stops (a moving crease reaching ±π, no state beyond): the drive is bisected
 /// down to ORI_TOL_KIN_STOP_DRIVE_RAD; a stop that cannot be located on the branch from there
 /// (ORI_TOL_KIN_STOP_AT_LIMIT_RAD below) with a moving crease within

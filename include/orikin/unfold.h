@@ -115,12 +115,14 @@ ORI_API int ori_unfold_mesh_vertex_count(const ori_mesh *mesh);
 typedef struct ori_unfold_def {
     int tries;          ///< spanning trees tried (steepest edge, random, flattest first in turn), ≥ 1
     unsigned seed;      ///< seed of the random directions and weights
-    bool all;           ///< also enumerate every spanning tree (small shapes) and count distinct nets
-    int all_max_faces;  ///< --all is skipped above this many faces (distinct_nets −1)
+    bool all;           ///< also enumerate every spanning tree and count the distinct nets
+    long long max_trees; ///< with all: stop after this many spanning trees (all_complete false), ≥ 1
+    ori_progress_fn *progress; ///< with all: called with the fraction of trees enumerated; false cancels (a partial count)
+    void *progress_user; ///< passed to progress
     int internal_value; ///< set by ori_default_unfold_def; do not change
 } ori_unfold_def;
 
-/// Defaults: 50 tries, seed 1, no enumeration, enumeration up to 24 faces.
+/// Defaults: 50 tries, seed 1, no enumeration, at most 10^7 spanning trees, no progress.
 ORI_API ori_unfold_def ori_default_unfold_def(void);
 
 /// How the net is folded back without collision.
@@ -143,10 +145,12 @@ typedef struct ori_unfold_result {
     double max_refold_error;  ///< largest vertex distance of the refolded net to the shape / the diagonal; −1 when not refolded
     bool motion_collides;     ///< every fold order tried made faces penetrate (checked in steps)
     ori_fold_order fold_order; ///< the first collision-free order: together, else leaves first, else root first
-    int distinct_nets;        ///< with all: overlap-free nets up to congruence (rotations, reflections); −1 otherwise
-    int spanning_trees;       ///< with all: spanning trees enumerated
-    int overlap_free_trees;   ///< with all: of which without overlap
-    int cuts;                 ///< interior edges of the shape cut open (0 when developed)
+    int distinct_nets;        ///< with all: overlap-free nets up to congruence (rotations, reflections), a lower bound when !all_complete; −1 otherwise
+    long long spanning_trees; ///< with all: spanning trees enumerated
+    long long overlap_free_trees; ///< with all: of which without overlap
+    double spanning_trees_total; ///< with all: spanning trees of the face graph (Kirchhoff's theorem; exact below 2^53)
+    bool all_complete;        ///< with all: every spanning tree was enumerated (else stopped by max_trees or progress)
+    int cuts;                 ///< interior edges of the shape cut open (0 when developed; a cut whose sides meet again is a crease)
     bool developed;           ///< developed without cuts into a crease pattern (ori_unfold_develop)
     int interior_vertices;    ///< developed: interior vertices of the sheet; −1 for nets
     double max_angle_defect_rad; ///< developed: largest |2π − face angle sum| at an interior vertex (radians); −1 for nets

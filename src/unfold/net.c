@@ -3,6 +3,7 @@
 // trees; several tries) → the net laid out in the plane → overlap test of every pair of faces
 // (broad phase on boxes, separating axes on the convex pieces of the faces) → a crease pattern
 // whose fold angles rebuild the shape, checked by folding it back with orikin's kinematics.
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +16,7 @@
 #include <orikin/unfold.h>
 
 #include "../core/core_internal.h"
+#include "../core/hash.h"
 #include "unfold_internal.h"
 
 
@@ -25,7 +27,7 @@ ori_unfold_def ori_default_unfold_def(void)
     memset(&d, 0, sizeof d);
     d.tries = 50;
     d.seed = 1;
-    d.all_max_faces = 24;
+    d.max_trees = 10000000;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -249,11 +251,11 @@ ori_status ori_unfold_mesh_create(const ori_v3 *coords, int vertex_count, const 
         if (!ori__coord_ok(coords[i].x) || !ori__coord_ok(coords[i].y) || !ori__coord_ok(coords[i].z))
             return ori__fail_at(error, ORI_ERR_RANGE, "vertices_coords", i, "coordinate not finite");
     ori_v3 *v = ori__alloc(((size_t)vertex_count + 1) * sizeof *v);
-    memcpy(v, coords, (size_t)vertex_count * sizeof *v);
+    if (vertex_count) memcpy(v, coords, (size_t)vertex_count * sizeof *v); // (no memcpy from NULL)
     int *fs = ori__alloc(((size_t)face_count + 1) * sizeof *fs);
     memcpy(fs, face_start, ((size_t)face_count + 1) * sizeof *fs);
     int *fv = ori__alloc(((size_t)fs[face_count] + 1) * sizeof *fv);
-    memcpy(fv, face_vertices, (size_t)fs[face_count] * sizeof *fv);
+    if (fs[face_count]) memcpy(fv, face_vertices, (size_t)fs[face_count] * sizeof *fv);
     ori_status st = build_mesh(v, vertex_count, fs, fv, face_count, out, error);
     if (st != ORI_OK) ori__free(v);
     ori__free(fs), ori__free(fv);
@@ -710,6 +712,68 @@ bool ori__net_faces_overlap(const net_ctx *c, int f, int g, const int *tri_start
     return false;
 }
 
+static double point_segment_distance(ori_v2 p, ori_v2 a, ori_v2 b)
+{
+    ori_v2 d = ori_v2_sub(b, a);
+    double len2 = ori_v2_dot(d, d), t = len2 > 0.0 ? ori_v2_dot(ori_v2_sub(p, a), d) / len2 : 0.0;
+    t = fmin(1.0, fmax(0.0, t));
+    return ori_v2_norm(ori_v2_sub(p, ori_v2_add(a, ori_v2_scale(d, t))));
+}
+
+// Whether a corner of f lies within tol of g's boundary other than as the same 3D vertex at the
+// same place (which the net welds): the net would touch itself there, and a FOLD file cannot
+// hold two vertices at one point, nor a vertex on another's edge.
+static bool corners_touch(const net_ctx *c, int f, int g, double tol)
+{
+    const ori_mesh *m = c->m;
+    int kf = ori__net_fsize(m, f), kg = ori__net_fsize(m, g);
+    for (int i = 0; i < kf; ++i) {
+        ori_v2 p = c->pos[m->fstart[f] + i];
+        int v = m->fv[m->fstart[f] + i];
+        for (int j = 0; j < kg; ++j) {
+            int j0 = m->fstart[g] + j, j1 = m->fstart[g] + (j + 1) % kg;
+            ori_v2 a = c->pos[j0], b = c->pos[j1];
+            if (point_segment_distance(p, a, b) > tol) continue;
+            if ((m->fv[j0] == v && ori_v2_norm(ori_v2_sub(p, a)) <= tol) ||
+                (m->fv[j1] == v && ori_v2_norm(ori_v2_sub(p, b)) <= tol))
+                continue;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool ori__net_faces_touch(const net_ctx *c, int f, int g)
+{
+    double tol = ORI_TOL_UNFOLD_CONTACT_REL * c->m->diag;
+    return corners_touch(c, f, g, tol) || corners_touch(c, g, f, tol);
+}
+
+// Pairs of faces that touch (ori__net_faces_touch) without overlapping, counted.
+static int count_touching(const net_ctx *c)
+{
+    const ori_mesh *m = c->m;
+    face_box *b = ori__alloc(((size_t)m->nf + 1) * sizeof *b);
+    for (int f = 0; f < m->nf; ++f) {
+        face_box x = {INFINITY, -INFINITY, INFINITY, -INFINITY, f};
+        for (int i = 0; i < ori__net_fsize(m, f); ++i) {
+            ori_v2 p = c->pos[m->fstart[f] + i];
+            x.x0 = fmin(x.x0, p.x), x.x1 = fmax(x.x1, p.x), x.y0 = fmin(x.y0, p.y), x.y1 = fmax(x.y1, p.y);
+        }
+        b[f] = x;
+    }
+    qsort(b, (size_t)m->nf, sizeof *b, cmp_box);
+    double tol = ORI_TOL_UNFOLD_CONTACT_REL * m->diag;
+    int count = 0;
+    for (int i = 0; i < m->nf; ++i)
+        for (int j = i + 1; j < m->nf && b[j].x0 <= b[i].x1 + tol; ++j) {
+            if (b[j].y0 > b[i].y1 + tol || b[i].y0 > b[j].y1 + tol) continue;
+            if (ori__net_faces_touch(c, b[i].f, b[j].f)) count++;
+        }
+    ori__free(b);
+    return count;
+}
+
 void ori__net_build_tris(const net_ctx *c, int *tri_start, int *tri)
 {
     const ori_mesh *m = c->m;
@@ -822,6 +886,47 @@ static void piece_offsets(const net_ctx *c, const int *piece, int pieces, ori_v2
     ori__free(x0);
 }
 
+static _Thread_local const int *g_corner_v3; // qsort has no context argument
+static int cmp_corner_v3(const void *x, const void *y)
+{
+    int a = *(const int *)x, b = *(const int *)y;
+    return g_corner_v3[a] != g_corner_v3[b] ? (g_corner_v3[a] > g_corner_v3[b]) - (g_corner_v3[a] < g_corner_v3[b]) : a - b;
+}
+
+// Unite (in uf) the copies of a 3D vertex that the layout puts on the same point: around a
+// flat vertex (angle sum 2π) the wedges that cuts separate close up again. Left apart they
+// would be two vertices at one place, which no FOLD reader takes (orikin's refuses them).
+// "The same point" is the pattern reader's own test (ORI_TOL_LENGTH_REL of the net's extent),
+// so whatever that test would see as coincident is welded here.
+static void weld_coincident_copies(const net_ctx *c, const int *piece, const ori_v2 *off, int *uf)
+{
+    const ori_mesh *m = c->m;
+    int nh = m->fstart[m->nf];
+    if (nh < 2) return;
+    int *corner = ori__alloc((size_t)nh * sizeof *corner), *face = ori__alloc((size_t)nh * sizeof *face);
+    ori_v2 *p = ori__alloc((size_t)nh * sizeof *p);
+    for (int f = 0; f < m->nf; ++f)
+        for (int i = m->fstart[f]; i < m->fstart[f + 1]; ++i) face[i] = f;
+    ori_v2 lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+    for (int i = 0; i < nh; ++i) {
+        corner[i] = i;
+        p[i] = ori_v2_add(c->pos[i], off[piece[face[i]]]);
+        lo.x = fmin(lo.x, p[i].x), lo.y = fmin(lo.y, p[i].y), hi.x = fmax(hi.x, p[i].x), hi.y = fmax(hi.y, p[i].y);
+    }
+    double tol = ORI_TOL_LENGTH_REL * ori_v2_norm(ori_v2_sub(hi, lo));
+    g_corner_v3 = m->fv;
+    qsort(corner, (size_t)nh, sizeof *corner, cmp_corner_v3);
+    for (int s = 0, t; s < nh; s = t) {
+        for (t = s + 1; t < nh && m->fv[corner[t]] == m->fv[corner[s]];) ++t;
+        for (int a = s; a < t; ++a)
+            for (int b = a + 1; b < t; ++b) {
+                int ra = ori__uf_root(uf, corner[a]), rb = ori__uf_root(uf, corner[b]);
+                if (ra != rb && ori_v2_norm(ori_v2_sub(p[corner[a]], p[corner[b]])) <= tol) uf[ra] = rb;
+            }
+    }
+    ori__free(corner), ori__free(face), ori__free(p);
+}
+
 ori_unfold_net *ori__net_make(const net_ctx *c, const bool *in_tree, const int *piece, int pieces)
 {
     const ori_mesh *m = c->m;
@@ -842,6 +947,7 @@ ori_unfold_net *ori__net_make(const net_ctx *c, const bool *in_tree, const int *
     }
     ori_v2 *off = ori__alloc(((size_t)pieces + 1) * sizeof *off);
     piece_offsets(c, piece, pieces, off);
+    weld_coincident_copies(c, piece, off, uf);
     int *vid = ori__alloc(((size_t)nh + 1) * sizeof *vid);
     for (int i = 0; i < nh; ++i) vid[i] = -1;
     ori_unfold_net *net = ori__calloc(1, sizeof *net);
@@ -867,7 +973,15 @@ ori_unfold_net *ori__net_make(const net_ctx *c, const bool *in_tree, const int *
         const fedge *x = &c->e[k];
         int kf = ori__net_fsize(m, x->f);
         int fa = vid[ori__uf_root(uf, m->fstart[x->f] + x->fi)], fb = vid[ori__uf_root(uf, m->fstart[x->f] + (x->fi + 1) % kf)];
-        if (in_tree[k]) {
+        // A cut whose two sides lie on each other (both ends welded: a zero-width slit through
+        // flat vertices) is no cut: it is written as the crease it is in the shape.
+        bool closed = false;
+        if (!in_tree[k] && x->g >= 0) {
+            int kg = ori__net_fsize(m, x->g);
+            int gb = vid[ori__uf_root(uf, m->fstart[x->g] + x->gi)], ga = vid[ori__uf_root(uf, m->fstart[x->g] + (x->gi + 1) % kg)];
+            closed = (fa == ga && fb == gb) || (fa == gb && fb == ga);
+        }
+        if (in_tree[k] || closed) {
             ori_assignment as = x->angle < 0.0 ? ORI_ASSIGN_MOUNTAIN : x->angle > 0.0 ? ORI_ASSIGN_VALLEY : ORI_ASSIGN_FLAT;
             int e = ori_pattern_add_edge(net->pattern, fa, fb, as, x->angle);
             edge_of[2 * k] = edge_of[2 * k + 1] = e;
@@ -1005,66 +1119,265 @@ static double refold_error(ori_unfold_net *net, double diag, bool *collides, ori
 
 // --- congruence classes of nets (for --all) -------------------------------------------------
 
-// Canonical text of a net up to rotations, translations and reflections: every placement of a
-// cut edge on the x-axis (both directions, both mirror images), segments rounded and sorted;
-// the least string wins.
-static int cmp_seg(const void *x, const void *y)
-{
-    const long long *a = x, *b = y;
-    for (int i = 0; i < 4; ++i)
-        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
-    return 0;
-}
+// A laid-out tree net is one simple outline, every net vertex on it (around any vertex at least
+// one edge is cut, else its faces would close a cycle of the tree), and its creases are chords
+// between outline corners. Its canonical form: the outline walked with the sheet on the left,
+// one token group per outline corner (the length of the edge leaving it, the turn at its end,
+// the creases leaving the corner as offsets to their other corner along the outline, in the
+// order the walk crosses them), quantised, at the least of its n rotations and n mirrored
+// readings. Two nets are congruent (rotation, translation, reflection) exactly when their forms
+// are equal, so the classes are a hash set of forms, and no layout is compared twice.
 
-static char *canonical(const net_ctx *c, const bool *in_tree)
+typedef struct outline_ws {
+    int *he_edge, *he_twin, *he_next; // per half-edge (corner) of the mesh
+    int *corner_of;                   // per outline position: the cut half-edge leaving it
+    int *cross_pos, *cross_edge, ncross; // creases crossed, in walk order, with their position
+    int *first_pos;                   // per edge: position where first crossed (−1)
+    long long *len, *turn;            // per outline position
+    int *chord;                       // per crossing: offset to the crease's other corner
+    long long *form;                  // the canonical form (tokens)
+    int n, form_len;
+} outline_ws;
+
+static void outline_ws_init(outline_ws *w, const net_ctx *c)
 {
     const ori_mesh *m = c->m;
     int nh = m->fstart[m->nf];
-    long long *seg = ori__alloc(((size_t)nh + 1) * 4 * sizeof *seg);
-    size_t cap = (size_t)nh * 4 * 24 + 16;
-    char *best = NULL, *cur = ori__alloc(cap);
-    double q = 1e6 / m->diag;
+    size_t H = (size_t)nh + 1, E = (size_t)c->ne + 1;
+    w->he_edge = ori__alloc(H * sizeof(int)), w->he_twin = ori__alloc(H * sizeof(int)), w->he_next = ori__alloc(H * sizeof(int));
+    w->corner_of = ori__alloc(H * sizeof(int)), w->cross_pos = ori__alloc(2 * E * sizeof(int));
+    w->cross_edge = ori__alloc(2 * E * sizeof(int)), w->first_pos = ori__alloc(E * sizeof(int));
+    w->len = ori__alloc(H * sizeof(long long)), w->turn = ori__alloc(H * sizeof(long long));
+    w->chord = ori__alloc(2 * E * sizeof(int));
+    w->form = ori__alloc((3 * H + 2 * E) * sizeof(long long));
     for (int k = 0; k < c->ne; ++k) {
-        if (in_tree[k]) continue;
-        for (int side = 0; side < 2; ++side) {
-            const fedge *x = &c->e[k];
-            int f = side ? x->g : x->f, i = side ? x->gi : x->fi;
-            if (f < 0) continue;
-            ori_v2 P = c->pos[m->fstart[f] + i], Q = c->pos[m->fstart[f] + (i + 1) % ori__net_fsize(m, f)];
-            for (int dir = 0; dir < 2; ++dir)
-                for (int mir = 0; mir < 2; ++mir) {
-                    ori_v2 o = dir ? Q : P, t = ori_v2_normalize(ori_v2_sub(dir ? P : Q, o));
-                    int ns = 0;
-                    for (int g = 0; g < m->nf; ++g)
-                        for (int j = 0; j < ori__net_fsize(m, g); ++j) {
-                            ori_v2 a = ori_v2_sub(c->pos[m->fstart[g] + j], o), b = ori_v2_sub(c->pos[m->fstart[g] + (j + 1) % ori__net_fsize(m, g)], o);
-                            double ax = a.x * t.x + a.y * t.y, ay = -a.x * t.y + a.y * t.x;
-                            double bx = b.x * t.x + b.y * t.y, by = -b.x * t.y + b.y * t.x;
-                            if (mir) ay = -ay, by = -by;
-                            long long r[4] = {llround(ax * q), llround(ay * q), llround(bx * q), llround(by * q)};
-                            if (r[0] > r[2] || (r[0] == r[2] && r[1] > r[3])) {
-                                long long t0 = r[0], t1 = r[1];
-                                r[0] = r[2], r[1] = r[3], r[2] = t0, r[3] = t1;
-                            }
-                            memcpy(seg + 4 * ns++, r, sizeof r);
-                        }
-                    qsort(seg, (size_t)ns, 4 * sizeof *seg, cmp_seg);
-                    // dedupe shared segments (creases appear twice)
-                    size_t len = 0;
-                    for (int s = 0; s < ns; ++s) {
-                        if (s && cmp_seg(seg + 4 * s, seg + 4 * (s - 1)) == 0) continue;
-                        len += (size_t)snprintf(cur + len, cap - len, "%lld,%lld,%lld,%lld;", seg[4 * s], seg[4 * s + 1],
-                                                seg[4 * s + 2], seg[4 * s + 3]);
-                    }
-                    if (!best || strcmp(cur, best) < 0) {
-                        ori__free(best);
-                        best = ori__strdup(cur);
-                    }
-                }
+        const fedge *x = &c->e[k];
+        int a = m->fstart[x->f] + x->fi, b = x->g >= 0 ? m->fstart[x->g] + x->gi : -1;
+        w->he_edge[a] = k, w->he_twin[a] = b;
+        if (b >= 0) w->he_edge[b] = k, w->he_twin[b] = a;
+    }
+    for (int f = 0; f < m->nf; ++f)
+        for (int i = m->fstart[f]; i < m->fstart[f + 1]; ++i) w->he_next[i] = i + 1 < m->fstart[f + 1] ? i + 1 : m->fstart[f];
+}
+
+static void outline_ws_free(outline_ws *w)
+{
+    ori__free(w->he_edge), ori__free(w->he_twin), ori__free(w->he_next), ori__free(w->corner_of), ori__free(w->cross_pos);
+    ori__free(w->cross_edge), ori__free(w->first_pos), ori__free(w->len), ori__free(w->turn), ori__free(w->chord);
+    ori__free(w->form);
+}
+
+// The tokens of corner i of the outline read from position `start` in direction dir (+1
+// along the walk, −1 mirrored: the mirror image walked the other way) into out; returns their
+// count: the length of the edge leaving the corner, the turn at that edge's end, the number of
+// creases at the corner, their offsets to their other corners.
+static int corner_tokens(const outline_ws *w, const int *cstart, int start, int dir, int i, long long *out)
+{
+    int n = w->n, p = dir > 0 ? start + i : start - i;
+    p = p >= n ? p - n : p < 0 ? p + n : p;
+    // mirrored, corner p's leaving edge is the walk's edge p − 1, and its turn the walk's at p − 2
+    int e = dir > 0 ? p : (p == 0 ? n - 1 : p - 1), tt = dir > 0 ? p : (p >= 2 ? p - 2 : p + n - 2);
+    int t = 0, a = cstart[p], b = cstart[p + 1];
+    out[t++] = w->len[e];
+    out[t++] = w->turn[tt];
+    out[t++] = b - a;
+    if (dir > 0)
+        for (int j = a; j < b; ++j) out[t++] = w->chord[j];
+    else
+        for (int j = b - 1; j >= a; --j) out[t++] = w->chord[j] ? n - w->chord[j] : 0;
+    return t;
+}
+
+// Compare the reading (start, dir) with form[0 … len): −1, 0 or 1, generated corner by corner
+// and stopped at the first difference (most readings differ in their first tokens).
+static int compare_reading(const outline_ws *w, const int *cstart, int start, int dir, const long long *form, int len)
+{
+    long long g[3 + 64];
+    int t = 0;
+    for (int i = 0; i < w->n; ++i) {
+        int k = corner_tokens(w, cstart, start, dir, i, g);
+        for (int j = 0; j < k; ++j, ++t) {
+            if (t >= len) return 1;
+            if (g[j] != form[t]) return g[j] < form[t] ? -1 : 1;
         }
     }
-    ori__free(seg), ori__free(cur);
-    return best;
+    return t < len ? -1 : 0;
+}
+
+static int write_reading(const outline_ws *w, const int *cstart, int start, int dir, long long *out)
+{
+    int t = 0;
+    for (int i = 0; i < w->n; ++i) t += corner_tokens(w, cstart, start, dir, i, out + t);
+    return t;
+}
+
+// The canonical form of the laid-out tree net into w->form (w->form_len tokens); false when the
+// outline is not one cycle through every cut half-edge (such a layout is not a one-piece net).
+static bool net_form(const net_ctx *c, const bool *in_tree, outline_ws *w, int *cstart, double q, double qa)
+{
+    const ori_mesh *m = c->m;
+    int nh = m->fstart[m->nf], cut = 0, start = -1;
+    for (int h = 0; h < nh; ++h)
+        if (!in_tree[w->he_edge[h]]) {
+            cut++;
+            if (start < 0) start = h;
+        }
+    if (start < 0) return false;
+    for (int k = 0; k < c->ne; ++k) w->first_pos[k] = -1;
+    w->n = 0, w->ncross = 0;
+    int h = start;
+    do {
+        if (w->n >= cut) return false;
+        int p = w->n++;
+        w->corner_of[p] = h;
+        int g = w->he_next[h];
+        // around the end corner: cross the creases up to the next cut half-edge, which starts
+        // the next outline edge (position p + 1, mod n once n is known)
+        while (in_tree[w->he_edge[g]]) {
+            w->cross_pos[w->ncross] = p + 1, w->cross_edge[w->ncross++] = w->he_edge[g];
+            g = w->he_next[w->he_twin[g]];
+        }
+        ori_v2 A = c->pos[h], B = c->pos[w->he_next[h]], C = c->pos[w->he_next[g]];
+        ori_v2 u = ori_v2_sub(B, A), v = ori_v2_sub(C, B);
+        w->len[p] = llround(ori_v2_norm(u) * q);
+        w->turn[p] = llround(atan2(u.x * v.y - u.y * v.x, ori_v2_dot(u, v)) * qa);
+        h = g;
+    } while (h != start);
+    if (w->n != cut) return false;
+    int n = w->n;
+    // crossings in corner order (the walk visits corners in order, so they already are, but for
+    // the last edge's end, which is corner 0): rotate that group to the front
+    int tail = 0;
+    while (tail < w->ncross && w->cross_pos[w->ncross - 1 - tail] == n) tail++;
+    for (int i = 0; i < w->ncross; ++i) w->cross_pos[i] %= n;
+    if (tail) { // move the last `tail` crossings (corner 0) to the front, keeping their order
+        for (int r = 0; r < tail; ++r) {
+            int pe = w->cross_pos[w->ncross - 1], ee = w->cross_edge[w->ncross - 1];
+            memmove(w->cross_pos + 1, w->cross_pos, (size_t)(w->ncross - 1) * sizeof(int));
+            memmove(w->cross_edge + 1, w->cross_edge, (size_t)(w->ncross - 1) * sizeof(int));
+            w->cross_pos[0] = pe, w->cross_edge[0] = ee;
+        }
+    }
+    for (int i = 0; i <= n; ++i) cstart[i] = 0;
+    for (int i = 0; i < w->ncross; ++i) cstart[w->cross_pos[i] + 1]++;
+    for (int i = 0; i < n; ++i) cstart[i + 1] += cstart[i];
+    // each crease is crossed twice, once at each of its corners: offsets to the other corner
+    for (int i = 0; i < w->ncross; ++i) {
+        int k = w->cross_edge[i];
+        if (w->first_pos[k] < 0) w->first_pos[k] = i;
+    }
+    for (int i = 0; i < w->ncross; ++i) {
+        int k = w->cross_edge[i], j = w->first_pos[k];
+        if (j == i) // the first crossing: the second is the later one of the same edge
+            for (int l = i + 1; l < w->ncross; ++l)
+                if (w->cross_edge[l] == k) {
+                    j = l;
+                    break;
+                }
+        w->chord[i] = ((w->cross_pos[j] - w->cross_pos[i]) % n + n) % n;
+    }
+    for (int i = 0; i < n; ++i)
+        if (cstart[i + 1] - cstart[i] > 64) return false; // (a corner with more creases than a face can have corners)
+    w->form_len = write_reading(w, cstart, 0, 1, w->form);
+    for (int dir = 1; dir >= -1; dir -= 2)
+        for (int s = dir > 0 ? 1 : 0; s < n; ++s)
+            if (compare_reading(w, cstart, s, dir, w->form, w->form_len) < 0) w->form_len = write_reading(w, cstart, s, dir, w->form);
+    return true;
+}
+
+// A set of canonical forms (open addressing on a 64-bit hash; the forms kept for equality).
+typedef struct form_set {
+    uint64_t *hash;
+    long long **form;
+    int *len;
+    int cap, count;
+} form_set;
+
+static uint64_t form_hash(const long long *f, int n)
+{
+    uint64_t h = 0x9E3779B97F4A7C15u ^ (uint64_t)n;
+    for (int i = 0; i < n; ++i) h = ori__mix64(h ^ (uint64_t)f[i]);
+    return h;
+}
+
+static void form_set_grow(form_set *s)
+{
+    int cap = s->cap ? 2 * s->cap : 1024;
+    form_set t = {ori__calloc((size_t)cap, sizeof(uint64_t)), ori__calloc((size_t)cap, sizeof(long long *)),
+                  ori__calloc((size_t)cap, sizeof(int)), cap, s->count};
+    for (int i = 0; i < s->cap; ++i) {
+        if (!s->form[i]) continue;
+        int j = (int)(s->hash[i] & (uint64_t)(cap - 1));
+        while (t.form[j]) j = (j + 1) & (cap - 1);
+        t.hash[j] = s->hash[i], t.form[j] = s->form[i], t.len[j] = s->len[i];
+    }
+    ori__free(s->hash), ori__free(s->form), ori__free(s->len);
+    *s = t;
+}
+
+// Add the form; true when it was new.
+static bool form_set_add(form_set *s, const long long *f, int n)
+{
+    if (2 * (s->count + 1) > s->cap) form_set_grow(s);
+    uint64_t h = form_hash(f, n);
+    int j = (int)(h & (uint64_t)(s->cap - 1));
+    for (; s->form[j]; j = (j + 1) & (s->cap - 1))
+        if (s->hash[j] == h && s->len[j] == n && memcmp(s->form[j], f, (size_t)n * sizeof *f) == 0) return false;
+    s->hash[j] = h, s->len[j] = n;
+    s->form[j] = ori__alloc((size_t)n * sizeof *f + 1);
+    memcpy(s->form[j], f, (size_t)n * sizeof *f);
+    s->count++;
+    return true;
+}
+
+static void form_set_free(form_set *s)
+{
+    for (int i = 0; i < s->cap; ++i) ori__free(s->form[i]);
+    ori__free(s->hash), ori__free(s->form), ori__free(s->len);
+}
+
+// The number of spanning trees of the face graph (Kirchhoff: a cofactor of its Laplacian, by
+// Gaussian elimination with partial pivoting), as a double: exact below 2^53, else rounded;
+// INFINITY beyond the double range. For the progress of --all and its "X of Y trees".
+static double spanning_tree_count(const net_ctx *c)
+{
+    int n = c->m->nf - 1;
+    if (n <= 0) return 1.0;
+    double *L = ori__calloc((size_t)n * (size_t)n, sizeof *L);
+    for (int k = 0; k < c->ne; ++k) {
+        int a = c->e[k].f, b = c->e[k].g;
+        if (b < 0 || a == b) continue;
+        if (a < n) L[(size_t)a * n + a] += 1.0;
+        if (b < n) L[(size_t)b * n + b] += 1.0;
+        if (a < n && b < n) L[(size_t)a * n + b] -= 1.0, L[(size_t)b * n + a] -= 1.0;
+    }
+    double log_det = 0.0;
+    bool singular = false;
+    for (int col = 0; col < n && !singular; ++col) {
+        int piv = col;
+        for (int r = col + 1; r < n; ++r)
+            if (fabs(L[(size_t)r * n + col]) > fabs(L[(size_t)piv * n + col])) piv = r;
+        double d = L[(size_t)piv * n + col];
+        if (d == 0.0) {
+            singular = true;
+            break;
+        }
+        if (piv != col)
+            for (int j = 0; j < n; ++j) {
+                double t = L[(size_t)col * n + j];
+                L[(size_t)col * n + j] = L[(size_t)piv * n + j], L[(size_t)piv * n + j] = t;
+            }
+        log_det += log(fabs(d));
+        for (int r = col + 1; r < n; ++r) {
+            double f = L[(size_t)r * n + col] / d;
+            if (f == 0.0) continue;
+            for (int j = col; j < n; ++j) L[(size_t)r * n + j] -= f * L[(size_t)col * n + j];
+        }
+    }
+    ori__free(L);
+    if (singular) return 0.0;
+    double t = exp(log_det);
+    return t < 9007199254740992.0 ? round(t) : t;
 }
 
 typedef struct enum_ctx {
@@ -1073,27 +1386,31 @@ typedef struct enum_ctx {
     int *order, *parent_edge;
     bool *placed;
     int *tri_start, *tri;
-    char **classes;
-    int nclasses, cap, trees, good, limit;
+    int *uf, *size, *undo, nundo; // the tree's components (union-find with undo)
+    int *uf2, *cstart;      // scratch: union-find over faces; outline corners' crossing starts
+    outline_ws w;
+    form_set forms;
+    double q, qa;           // quantisation of lengths (per diagonal) and of turns (per radian)
+    double total;           // spanning trees in all (Kirchhoff)
+    long long trees, good, limit;
+    ori_progress_fn *progress;
+    void *progress_user;
+    bool stopped;           // the budget or the progress callback ended the enumeration
 } enum_ctx;
 
 static void enum_visit(enum_ctx *E)
 {
     E->trees++;
+    double all = fmin(E->total, (double)E->limit);
+    if (E->progress && (E->trees & 4095) == 0 && !E->progress(all > 0.0 ? fmin(1.0, (double)E->trees / all) : 0.0, E->progress_user))
+        E->stopped = true;
     ori__net_layout(E->c, E->in_tree, 0, E->order, E->parent_edge, E->placed);
     if (ori__net_count_overlaps(E->c, E->tri_start, E->tri, NULL, 1) > 0) return;
     E->good++;
-    char *s = canonical(E->c, E->in_tree);
-    for (int i = 0; i < E->nclasses; ++i)
-        if (strcmp(E->classes[i], s) == 0) {
-            ori__free(s);
-            return;
-        }
-    ORI__PUSH(E->classes, E->nclasses, E->cap, s);
+    if (net_form(E->c, E->in_tree, &E->w, E->cstart, E->q, E->qa)) form_set_add(&E->forms, E->w.form, E->w.form_len);
 }
 
-// Enumerate spanning trees: decide edges in order (take / skip), pruning cycles and skips that
-// disconnect the rest.
+// Whether the faces stay connected through the edges not decided out.
 bool ori__net_connected_without(const net_ctx *c, const bool *decided_out, int nf)
 {
     int *uf = ori__alloc(((size_t)nf + 1) * sizeof *uf);
@@ -1108,24 +1425,61 @@ bool ori__net_connected_without(const net_ctx *c, const bool *decided_out, int n
     return comps == 1;
 }
 
-static bool makes_cycle(const net_ctx *c, const bool *in_tree, int k)
+// The tree's components: a union-find by size without path compression, so that each union
+// can be undone in the order made (the enumeration takes and drops edges depth first).
+static int tree_root(const enum_ctx *E, int f)
 {
-    int nf = c->m->nf;
-    int *uf = ori__alloc(((size_t)nf + 1) * sizeof *uf);
-    for (int f = 0; f < nf; ++f) uf[f] = f;
-    for (int j = 0; j < c->ne; ++j) {
-        if (!in_tree[j]) continue;
-        int a = ori__uf_root(uf, c->e[j].f), b = ori__uf_root(uf, c->e[j].g);
-        uf[a] = b;
-    }
-    bool cyc = ori__uf_root(uf, c->e[k].f) == ori__uf_root(uf, c->e[k].g);
-    ori__free(uf);
-    return cyc;
+    while (E->uf[f] != f) f = E->uf[f];
+    return f;
 }
 
+// Take edge k into the tree (false: it would close a cycle; nothing changed).
+static bool tree_take(enum_ctx *E, int k)
+{
+    int a = tree_root(E, E->c->e[k].f), b = tree_root(E, E->c->e[k].g);
+    if (a == b) return false;
+    if (E->size[a] > E->size[b]) {
+        int t = a;
+        a = b, b = t;
+    }
+    E->uf[a] = b, E->size[b] += E->size[a];
+    E->undo[E->nundo++] = a;
+    return true;
+}
+
+static void tree_drop(enum_ctx *E)
+{
+    int a = E->undo[--E->nundo], b = E->uf[a];
+    E->uf[a] = a, E->size[b] -= E->size[a];
+}
+
+// Whether the tree's components are still joined by the edges after k (all undecided): else
+// skipping k leaves the faces apart. From a copy of the tree's union-find.
+static bool stays_connected(const enum_ctx *E, int k)
+{
+    const net_ctx *c = E->c;
+    int nf = c->m->nf, *uf = E->uf2, comps = 0;
+    for (int f = 0; f < nf; ++f) {
+        uf[f] = tree_root(E, f);
+        comps += uf[f] == f;
+    }
+    for (int j = k + 1; j < c->ne && comps > 1; ++j) {
+        if (c->e[j].g < 0) continue;
+        int a = ori__uf_root(uf, c->e[j].f), b = ori__uf_root(uf, c->e[j].g);
+        if (a != b) uf[a] = b, comps--;
+    }
+    return comps == 1;
+}
+
+// Enumerate spanning trees: decide edges in order (take / skip), pruning cycles and skips that
+// disconnect the rest; stops at E->limit trees or when the progress callback says so.
 static void enum_rec(enum_ctx *E, int k, int taken, bool *out)
 {
-    if (E->trees >= E->limit) return;
+    if (E->stopped) return;
+    if (E->trees >= E->limit) {
+        E->stopped = true;
+        return;
+    }
     int nf = E->c->m->nf;
     if (taken == nf - 1) {
         enum_visit(E);
@@ -1138,14 +1492,59 @@ static void enum_rec(enum_ctx *E, int k, int taken, bool *out)
         out[k] = false;
         return;
     }
-    if (!makes_cycle(E->c, E->in_tree, k)) {
+    if (tree_take(E, k)) {
         E->in_tree[k] = true;
         enum_rec(E, k + 1, taken + 1, out);
         E->in_tree[k] = false;
+        tree_drop(E);
     }
     out[k] = true;
-    if (ori__net_connected_without(E->c, out, nf)) enum_rec(E, k + 1, taken, out);
+    if (stays_connected(E, k)) enum_rec(E, k + 1, taken, out);
     out[k] = false;
+}
+
+// The parent face of f across its parent edge in a layout.
+static int parent_face(const net_ctx *c, const int *parent_edge, int f)
+{
+    int k = parent_edge[f];
+    return k < 0 ? -1 : c->e[k].f == f ? c->e[k].g : c->e[k].f;
+}
+
+// A tree without overlap whose net touches itself: swap a tree edge for a cut on the cycle the
+// cut closes (kept when the net touches itself no more often and overlaps nowhere), up to
+// `swaps` times, so that the net comes out in one piece that a FOLD file can hold. Random
+// trees find such nets only after hundreds of tries on a box with a hole. Returns the touching
+// count of in_tree on return (its layout in c->pos).
+static int untouch(net_ctx *c, bool *in_tree, int touching, int swaps, const int *tri_start, const int *tri, int *order,
+                   int *parent_edge, bool *placed)
+{
+    const ori_mesh *m = c->m;
+    int nf = m->nf;
+    int *depth = ori__alloc(((size_t)nf + 1) * sizeof *depth), *path = ori__alloc(((size_t)nf + 1) * sizeof *path);
+    for (int it = 0; it < swaps && touching > 0; ++it) {
+        ori__net_layout(c, in_tree, 0, order, parent_edge, placed);
+        for (int i = 0; i < nf; ++i) {
+            int f = order[i], p = parent_face(c, parent_edge, f);
+            depth[f] = p < 0 ? 0 : depth[p] + 1;
+        }
+        int k = (int)(rnd(c) % (uint64_t)c->ne);
+        if (in_tree[k] || c->e[k].g < 0) continue;
+        int np = 0;
+        for (int a = c->e[k].f, b = c->e[k].g; a != b;) { // the tree path between the cut's faces
+            if (depth[a] >= depth[b]) path[np++] = parent_edge[a], a = parent_face(c, parent_edge, a);
+            else path[np++] = parent_edge[b], b = parent_face(c, parent_edge, b);
+        }
+        if (np == 0) continue;
+        int r = path[rnd(c) % (uint64_t)np];
+        in_tree[k] = true, in_tree[r] = false;
+        ori__net_layout(c, in_tree, 0, order, parent_edge, placed);
+        int t = ori__net_count_overlaps(c, tri_start, tri, NULL, 1) > 0 ? INT_MAX : count_touching(c);
+        if (t <= touching) touching = t;
+        else in_tree[k] = false, in_tree[r] = true;
+    }
+    ori__net_layout(c, in_tree, 0, order, parent_edge, placed);
+    ori__free(depth), ori__free(path);
+    return touching;
 }
 
 // --- the solver ----------------------------------------------------------------------------
@@ -1182,7 +1581,9 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     double *w = ori__alloc(((size_t)c.ne + 1) * sizeof *w);
     int *order = ori__alloc(((size_t)nf + 1) * sizeof *order), *parent_edge = ori__alloc(((size_t)nf + 1) * sizeof *parent_edge);
     bool *placed = ori__alloc(((size_t)nf + 1) * sizeof *placed);
-    int best_overlaps = -1, tries = 0, best_try = -1;
+    // A tree's score: its overlaps first, then the places where the net touches itself
+    // (readable only as separate pieces); 0 ends the search.
+    int best_overlaps = -1, best_touching = 0, tries = 0, best_try = -1;
     for (int t = 0; t < def->tries; ++t) {
         tries++;
         int kind = t % 3;
@@ -1198,12 +1599,19 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         mst(&c, w, in_tree);
         if (!tree_spans(&c, in_tree)) continue;
         ori__net_layout(&c, in_tree, 0, order, parent_edge, placed);
-        int ov = ori__net_count_overlaps(&c, tri_start, tri, NULL, best_overlaps < 0 ? nf * nf : best_overlaps);
-        if (best_overlaps < 0 || ov < best_overlaps) {
-            best_overlaps = ov, best_try = t;
+        int ov = ori__net_count_overlaps(&c, tri_start, tri, NULL, best_overlaps < 0 ? nf * nf : best_overlaps + 1);
+        int touching = best_overlaps < 0 || ov <= best_overlaps ? count_touching(&c) : 0;
+        if (best_overlaps < 0 || ov < best_overlaps || (ov == best_overlaps && touching < best_touching)) {
+            best_overlaps = ov, best_touching = touching, best_try = t;
             memcpy(best_tree, in_tree, (size_t)c.ne * sizeof *in_tree);
         }
-        if (ov == 0) break;
+        if (ov == 0 && touching == 0) break;
+    }
+    if (best_overlaps == 0 && best_touching > 0) {
+        memcpy(in_tree, best_tree, (size_t)c.ne * sizeof *in_tree);
+        best_touching = untouch(&c, in_tree, best_touching, ORI_UNFOLD_UNTOUCH_SWAPS_PER_TRY * def->tries, tri_start, tri,
+                                order, parent_edge, placed);
+        memcpy(best_tree, in_tree, (size_t)c.ne * sizeof *in_tree);
     }
     ori_unfold_result res;
     memset(&res, 0, sizeof res);
@@ -1220,7 +1628,7 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
     int *piece = ori__alloc(((size_t)nf + 1) * sizeof *piece);
     ori__net_layout(&c, best_tree, 0, order, parent_edge, placed);
     int pieces = 1;
-    if (best_overlaps == 0) {
+    if (best_overlaps == 0 && best_touching == 0) {
         for (int f = 0; f < nf; ++f) piece[f] = 0;
     } else {
         for (int f = 0; f < nf; ++f) piece[f] = -1;
@@ -1240,13 +1648,14 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
             int pf = c.e[k].f == f ? c.e[k].g : c.e[k].f;
             int pp = piece[pf];
             bool clash = false;
-            double tol = ORI_TOL_UNFOLD_OVERLAP_REL * m->diag;
+            double tol = ORI_TOL_UNFOLD_OVERLAP_REL * m->diag, ctol = ORI_TOL_UNFOLD_CONTACT_REL * m->diag;
             for (int j = 0; j < i && !clash; ++j) {
                 int g = order[j];
                 if (piece[g] != pp) continue;
                 const double *bf = box + 4 * f, *bg = box + 4 * g;
-                if (bf[0] >= bg[1] - tol || bg[0] >= bf[1] - tol || bf[2] >= bg[3] - tol || bg[2] >= bf[3] - tol) continue;
-                clash = ori__net_faces_overlap(&c, f, g, tri_start, tri, tol);
+                if (bf[0] > bg[1] + ctol || bg[0] > bf[1] + ctol || bf[2] > bg[3] + ctol || bg[2] > bf[3] + ctol) continue;
+                bool apart = bf[0] >= bg[1] - tol || bg[0] >= bf[1] - tol || bf[2] >= bg[3] - tol || bg[2] >= bf[3] - tol;
+                clash = (!apart && ori__net_faces_overlap(&c, f, g, tri_start, tri, tol)) || ori__net_faces_touch(&c, f, g);
             }
             if (clash) {
                 best_tree[k] = false;
@@ -1267,10 +1676,10 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         ori__free(ren);
     }
     res.pieces = pieces;
-    for (int k = 0; k < c.ne; ++k) res.cuts += c.e[k].g >= 0 && !best_tree[k];
     res.overlaps = ori__net_count_overlaps(&c, tri_start, tri, piece, nf * nf);
     res.best_try = best_try;
     ori_unfold_net *net = ori__net_make(&c, best_tree, piece, pieces);
+    for (int e = 0; e < ori_pattern_edge_count(net->pattern); ++e) res.cuts += net->glue[e] > e; // (closed cuts are creases)
     if (pieces == 1) {
         bool coll = false;
         res.max_refold_error = refold_error(net, m->diag, &coll, &res.fold_order);
@@ -1283,23 +1692,30 @@ ori_status ori_unfold_solve(const ori_mesh *m, const ori_unfold_def *def, ori_un
         ori_pattern_build(net->pattern, &bd, &e2);
     }
     if (def->all) {
-        if (nf > def->all_max_faces) {
-            res.distinct_nets = -1;
-        } else {
-            enum_ctx E;
-            memset(&E, 0, sizeof E);
-            E.c = &c, E.in_tree = in_tree, E.order = order, E.parent_edge = parent_edge, E.placed = placed;
-            E.tri_start = tri_start, E.tri = tri, E.limit = 2000000;
-            for (int k = 0; k < c.ne; ++k) in_tree[k] = false;
-            bool *outk = ori__calloc((size_t)c.ne + 1, 1);
-            enum_rec(&E, 0, 0, outk);
-            ori__free(outk);
-            res.distinct_nets = E.nclasses;
-            res.spanning_trees = E.trees;
-            res.overlap_free_trees = E.good;
-            for (int i = 0; i < E.nclasses; ++i) ori__free(E.classes[i]);
-            ori__free(E.classes);
-        }
+        enum_ctx E;
+        memset(&E, 0, sizeof E);
+        E.c = &c, E.in_tree = in_tree, E.order = order, E.parent_edge = parent_edge, E.placed = placed;
+        E.tri_start = tri_start, E.tri = tri, E.limit = def->max_trees;
+        E.progress = def->progress, E.progress_user = def->progress_user;
+        E.uf = ori__alloc(((size_t)nf + 1) * sizeof *E.uf), E.uf2 = ori__alloc(((size_t)nf + 1) * sizeof *E.uf2);
+        E.size = ori__alloc(((size_t)nf + 1) * sizeof *E.size), E.undo = ori__alloc(((size_t)nf + 1) * sizeof *E.undo);
+        for (int f = 0; f < nf; ++f) E.uf[f] = f, E.size[f] = 1;
+        E.cstart = ori__alloc(((size_t)m->fstart[nf] + 2) * sizeof *E.cstart);
+        E.q = ORI_UNFOLD_NET_QUANTA / m->diag, E.qa = ORI_UNFOLD_NET_QUANTA / ORI_PI;
+        E.total = spanning_tree_count(&c);
+        outline_ws_init(&E.w, &c);
+        for (int k = 0; k < c.ne; ++k) in_tree[k] = false;
+        bool *outk = ori__calloc((size_t)c.ne + 1, 1);
+        enum_rec(&E, 0, 0, outk);
+        ori__free(outk);
+        res.distinct_nets = E.forms.count;
+        res.spanning_trees = E.trees;
+        res.overlap_free_trees = E.good;
+        res.spanning_trees_total = E.total;
+        res.all_complete = !E.stopped;
+        form_set_free(&E.forms);
+        outline_ws_free(&E.w);
+        ori__free(E.uf), ori__free(E.uf2), ori__free(E.size), ori__free(E.undo), ori__free(E.cstart);
     }
     net->result = res;
     ori__free(piece), ori__free(tri_start), ori__free(tri), ori__free(in_tree), ori__free(best_tree), ori__free(w);

@@ -75,6 +75,9 @@ void ori__net_build_tris(const net_ctx *c, int *tri_start, int *tri);
 // True when placed faces f and g overlap by more than tol (separating axes on their triangles).
 bool ori__net_faces_overlap(const net_ctx *c, int f, int g, const int *tri_start, const int *tri, double tol);
 // Overlapping pairs of placed faces within the same piece (piece NULL: all), counted up to limit.
+// Whether faces f and g of the laid-out net touch: a corner within ORI_TOL_UNFOLD_CONTACT_REL ×
+// the diagonal of the other's boundary, other than as the same 3D vertex (which is welded).
+bool ori__net_faces_touch(const net_ctx *c, int f, int g);
 int ori__net_count_overlaps(const net_ctx *c, const int *tri_start, const int *tri, const int *piece, int limit);
 // True when the face graph without the edges decided_out[k] is connected.
 bool ori__net_connected_without(const net_ctx *c, const bool *decided_out, int nf);
