@@ -414,7 +414,18 @@ Test(dynamics, bad_input)
     d.has_dt = true;
     d.dt_s = 2e-3; // larger than the duration
     cr_assert_eq(ori_simulation_run(&d, &s, &err), ORI_ERR_RANGE);
+    // The work asked for is bounded up front: a step of 1e-300 s (it overflowed the step count
+    // and the default step was used silently) and a duration of 1e6 s are refused, naming the
+    // least time step that would do.
+    d.dt_s = 1e-300;
+    cr_assert_eq(ori_simulation_run(&d, &s, &err), ORI_ERR_LIMIT);
+    cr_assert(strstr(err.message, "a larger time step (at least 1e-11 s)"), "%s", err.message);
     d.has_dt = false;
+    d.duration_s = 1e6;
+    cr_assert_eq(ori_simulation_run(&d, &s, &err), ORI_ERR_LIMIT);
+    cr_assert(strstr(err.message, "time steps of"), "%s", err.message);
+    cr_assert_null(s);
+    d.duration_s = 1e-3;
     d.fixed_face = 7;
     cr_assert_eq(ori_simulation_run(&d, &s, &err), ORI_ERR_RANGE);
     d.fixed_face = 0;

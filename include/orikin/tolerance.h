@@ -340,6 +340,9 @@
 /// A simulation keeps at most this many values per history (output frames × edges): about 0.4 GB
 /// for its angles, currents and plastic rotations.
 #define ORI_DYN_MAX_FRAME_VALUES 2e7
+/// Dynamics: a simulation takes at most ORI_DYN_MAX_STEPS integration steps (duration / time
+/// step, a count); more is refused before it starts (ORI_ERR_LIMIT, naming the least time step).
+#define ORI_DYN_MAX_STEPS 1e8
 // --- files and imports (io) ---------------------------------------------------------------------
 
 /// A fold angle read from a file that lies beyond ±π by at most this is read as ±π: the

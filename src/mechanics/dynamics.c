@@ -990,6 +990,16 @@ ori_status ori_simulation_run(const ori_simulation_def *def, ori_simulation **ou
     int frames = def->output_frames;
     double frame_dt = def->duration_s / (double)(frames - 1);
     double dt = def->has_dt ? def->dt_s : fmin(t_short / ORI_DYN_STEPS_PER_PERIOD, def->duration_s / 100.0);
+    // The work a simulation asks for is bounded before it starts (a step of 1e-300 s once
+    // overflowed the step count and silently fell back on the default step).
+    double steps = ceil(frame_dt / dt) * (double)(frames - 1);
+    if (!(steps <= ORI_DYN_MAX_STEPS)) {
+        st = ori__fail(error, ORI_ERR_LIMIT,
+                       "%.3g time steps of %.3g s over %.3g s are more than the %.3g a simulation takes: a larger time step "
+                       "(at least %.3g s) or a shorter duration",
+                       steps, dt, def->duration_s, (double)ORI_DYN_MAX_STEPS, def->duration_s / ORI_DYN_MAX_STEPS);
+        goto fail;
+    }
     int per = (int)ceil(frame_dt / dt);
     if (per < 1) per = 1;
     double h = frame_dt / per;
