@@ -2,6 +2,7 @@
 // the crease collection and composites, edit operations, and the thesis' open corner.
 #include <orikin/axioms.h>
 #include <orikin/collection.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "pattern/pattern_internal.h"
@@ -514,5 +515,33 @@ Test(authoring, open_corner_example_file)
 {
     ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
     check_open_corner(p);
+    ori_pattern_destroy(p);
+}
+
+// The face tree's names are indexed (a lookup was linear, and authoring quadratic in its output):
+// finding a node gives the first of its name, across growth of the index and after a clear.
+Test(authoring, tree_nodes_are_found_by_name_through_growth_and_clear)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    char name[32];
+    for (int i = 0; i < 1000; ++i) {
+        snprintf(name, sizeof name, "Obj%d", i);
+        cr_assert_eq(ori_pattern_add_tree_node(p, name, i ? i - 1 : ORI_NULL_INDEX), i);
+    }
+    cr_assert_eq(ori_pattern_add_tree_node(p, "Obj7", ORI_NULL_INDEX), 1000); // a second "Obj7"
+    for (int i = 0; i < 1000; ++i) {
+        snprintf(name, sizeof name, "Obj%d", i);
+        cr_assert_eq(ori_pattern_find_tree_node(p, name), i, "%s", name);
+    }
+    cr_assert_eq(ori_pattern_find_tree_node(p, "Obj1000"), ORI_NULL_INDEX);
+    ori_pattern *q = ori_pattern_clone(p);
+    cr_assert_eq(ori_pattern_find_tree_node(q, "Obj999"), 999);
+    ori_pattern_clear_tree(p);
+    cr_assert_eq(ori_pattern_find_tree_node(p, "Obj7"), ORI_NULL_INDEX);
+    cr_assert_eq(ori_pattern_add_tree_node(p, "Obj7", ORI_NULL_INDEX), 0);
+    cr_assert_eq(ori_pattern_find_tree_node(p, "Obj7"), 0);
+    cr_assert_eq(ori_pattern_find_tree_node(q, "Obj7"), 7);
+    ori_pattern_destroy(q);
     ori_pattern_destroy(p);
 }

@@ -462,6 +462,7 @@ static void delete_tree_node(ori_pattern *p, int node)
     for (int i = 0; i < p->tree_count; ++i)
         if (p->tree[i].parent > node) p->tree[i].parent--;
         else if (p->tree[i].parent == node) p->tree[i].parent = ORI_NULL_INDEX;
+    ori__pattern_reindex_tree(p);
 }
 
 static bool remove_from_cycle(cycle *c, int v)

@@ -20,6 +20,8 @@ struct ori_pattern {
     char (*face_names)[ORI_NAME_MAX]; // face_cap entries or NULL; "" = unnamed
     int tree_count, tree_cap;
     ori_tree_node *tree;
+    int *tree_hash;                 // open addressing over tree names: node index or -1 (the first of equal names)
+    int tree_hash_cap;              // a power of two > 2 × tree_count, or 0
     bool folded_form;
     bool has_fold_angles;
 
@@ -36,6 +38,8 @@ struct ori_pattern {
 
 // Grow face storage (offsets, names, vertex cycles) to hold the given totals.
 void ori__pattern_reserve_faces(ori_pattern *p, int faces, int face_vertices);
+// Rebuild the index of the tree's names after the tree was changed in place (a node deleted).
+void ori__pattern_reindex_tree(ori_pattern *p);
 // Drop derived topology (called by every topology mutation).
 void ori__pattern_invalidate(ori_pattern *p);
 // Twice the signed area of a face in the xy-plane (> 0: counter-clockwise).
