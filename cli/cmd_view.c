@@ -1,4 +1,5 @@
 // orikin view: the studio — serve the browser viewer and editor on loopback and open it.
+#define _DEFAULT_SOURCE // mkdtemp
 #define _POSIX_C_SOURCE 200809L
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -11,27 +12,73 @@
 #include "cli.h"
 #include "server/studio.h"
 
-// Open url in the desktop's browser (xdg-open) without waiting for it and without failing when
-// there is none: a detached grandchild with its output discarded.
-static void open_browser(const char *url)
+// Open a page in the desktop's browser (xdg-open) without waiting for it and without failing
+// when there is none: a detached grandchild with its output discarded, and the signals the
+// server blocks for itself (INT, TERM, HUP) unblocked and at their defaults again.
+static void open_browser(const char *target)
 {
     pid_t child = fork();
     if (child < 0) return;
     if (child == 0) {
         setsid();
         if (fork() == 0) {
+            sigset_t none;
+            sigemptyset(&none);
+            sigprocmask(SIG_SETMASK, &none, NULL);
+            signal(SIGINT, SIG_DFL), signal(SIGTERM, SIG_DFL), signal(SIGHUP, SIG_DFL), signal(SIGPIPE, SIG_DFL);
             int null = open("/dev/null", O_RDWR);
             if (null >= 0) {
                 dup2(null, STDIN_FILENO);
                 dup2(null, STDOUT_FILENO);
                 dup2(null, STDERR_FILENO);
             }
-            execlp("xdg-open", "xdg-open", url, (char *)NULL);
+            execlp("xdg-open", "xdg-open", target, (char *)NULL);
             _exit(127);
         }
         _exit(0);
     }
     waitpid(child, NULL, 0);
+}
+
+// The URL carries the session token; on a command line (xdg-open URL, then the browser's own)
+// any local user reads it in /proc/PID/cmdline. So the browser is handed a page instead, in a
+// directory of ours (mode 0700, in $XDG_RUNTIME_DIR or /tmp) and readable by us alone (0600),
+// that sends it on to the URL: the command lines show only the page's path. The page is
+// removed when the studio stops. Returns false (nothing left behind) when it cannot be made.
+typedef struct launch_page {
+    char dir[512], path[560];
+} launch_page;
+
+static bool launch_page_write(launch_page *lp, const char *url)
+{
+    const char *base = getenv("XDG_RUNTIME_DIR");
+    if (!base || base[0] != '/') base = "/tmp";
+    snprintf(lp->dir, sizeof lp->dir, "%s/orikin-view-XXXXXX", base);
+    if (!mkdtemp(lp->dir)) return false; // mode 0700
+    snprintf(lp->path, sizeof lp->path, "%s/open.html", lp->dir);
+    int fd = open(lp->path, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0600);
+    if (fd < 0) {
+        rmdir(lp->dir);
+        return false;
+    }
+    char page[1024];
+    int n = snprintf(page, sizeof page,
+                     "<!doctype html><meta charset=\"utf-8\"><meta name=\"referrer\" content=\"no-referrer\">"
+                     "<meta http-equiv=\"refresh\" content=\"0;url=%s\"><title>orikin studio</title>"
+                     "<p><a href=\"%s\">Open the orikin studio</a></p>\n", url, url);
+    bool ok = n > 0 && (size_t)n < sizeof page && write(fd, page, (size_t)n) == n;
+    if (close(fd) != 0) ok = false;
+    if (!ok) {
+        unlink(lp->path);
+        rmdir(lp->dir);
+    }
+    return ok;
+}
+
+static void launch_page_remove(const launch_page *lp)
+{
+    unlink(lp->path);
+    rmdir(lp->dir);
 }
 
 static bool is_loopback(const char *host)
@@ -110,9 +157,16 @@ static int run(int argc, char **argv)
     else snprintf(url, sizeof url, "http://%s:%d/?token=%s", shown, studio_http_port(h), token);
     printf("orikin view: %s\n", url);
     fflush(stdout);
-    if (!no_browser) open_browser(url);
+    launch_page lp;
+    bool page = false;
+    if (!no_browser) {
+        page = launch_page_write(&lp, url);
+        if (page) open_browser(lp.path);
+        else fprintf(stderr, "orikin view: cannot write the page that opens the browser: open the URL above\n");
+    }
     int sig = 0;
     sigwait(&stop, &sig);
+    if (page) launch_page_remove(&lp);
     studio_http_stop(h);
     studio_destroy(s);
     return CLI_EXIT_OK;

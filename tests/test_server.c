@@ -13,7 +13,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -1913,4 +1917,140 @@ Test(server, underdetermined_fold_lock_hint_equals_cli_json)
     json_decref(api);
     json_decref(cli);
     studio_destroy(s);
+}
+
+// Host parsing is strict (issue: "Host: 127.0.0.1:+PORT" was accepted, and of two Host headers
+// only the first was read): the port in decimal digits equal to ours, and one Host, Origin and
+// token header each.
+Test(server, http_parses_host_strictly_and_refuses_repeated_headers)
+{
+    served x = serve(OPEN_CORNER);
+    int p = x.port;
+    char req[512];
+    snprintf(req, sizeof req, "GET /api/session HTTP/1.1\r\nHost: 127.0.0.1:+%d\r\nX-Orikin-Token: " TOKEN
+                              "\r\nConnection: close\r\n\r\n", p);
+    cr_assert_eq(status_of(p, "%s", req), 403);
+    snprintf(req, sizeof req, "GET /api/session HTTP/1.1\r\nHost: 127.0.0.1:0%d\r\nX-Orikin-Token: " TOKEN
+                              "\r\nConnection: close\r\n\r\n", p);
+    cr_assert_eq(status_of(p, "%s", req), 403);
+    snprintf(req, sizeof req, "GET /api/session HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nHost: evil.example:%d\r\n"
+                              "X-Orikin-Token: " TOKEN "\r\nConnection: close\r\n\r\n", p, p);
+    cr_assert_eq(status_of(p, "%s", req), 400);
+    snprintf(req, sizeof req, "GET /api/session HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nX-Orikin-Token: " TOKEN
+                              "\r\nX-Orikin-Token: " TOKEN "\r\nConnection: close\r\n\r\n", p);
+    cr_assert_eq(status_of(p, "%s", req), 400);
+    snprintf(req, sizeof req, "GET /api/session HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nX-Orikin-Token: " TOKEN
+                              "\r\nOrigin: http://127.0.0.1:%d\r\nOrigin: http://evil.example\r\nConnection: close\r\n\r\n", p, p);
+    cr_assert_eq(status_of(p, "%s", req), 400);
+    snprintf(req, sizeof req, "GET /api/session HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nX-Orikin-Token: " TOKEN
+                              "\r\nConnection: close\r\n\r\n", p);
+    cr_assert_eq(status_of(p, "%s", req), 200);
+    unserve(&x);
+}
+
+// A local user without the token cannot shut the studio off (issue: 256 idle connections locked
+// everyone out, and a GET / with an endless body was read forever): 300 idle connections and a
+// slow body later, the page and the API still answer, and a body a route does not take is
+// refused before it is read.
+Test(server, http_keeps_serving_under_idle_connections_and_endless_bodies)
+{
+    served x = serve(OPEN_CORNER);
+    int p = x.port;
+    char host[64];
+    snprintf(host, sizeof host, "127.0.0.1:%d", p);
+    enum { IDLE = 300 };
+    int idle[IDLE];
+    for (int i = 0; i < IDLE; ++i) idle[i] = connect_to(p);
+    // a slow body: headers, one byte of the hundred announced, then nothing
+    int slow = connect_to(p);
+    char req[512];
+    int n = snprintf(req, sizeof req, "POST /api/fold HTTP/1.1\r\nHost: %s\r\nX-Orikin-Token: " TOKEN
+                                      "\r\nContent-Length: 100\r\n\r\n{", host);
+    cr_assert_eq(send(slow, req, (size_t)n, MSG_NOSIGNAL), n);
+    // an endless body on a page request: answered 413 at once, the body unread
+    int endless = connect_to(p);
+    n = snprintf(req, sizeof req, "GET / HTTP/1.1\r\nHost: %s\r\nTransfer-Encoding: chunked\r\n\r\n1000\r\n", host);
+    cr_assert_eq(send(endless, req, (size_t)n, MSG_NOSIGNAL), n);
+    http_reply r;
+    cr_assert(exchange(endless, "", 0, &r));
+    cr_assert_eq(r.status, 413);
+    free(r.body);
+    close(endless);
+    // the page and the API answer meanwhile
+    snprintf(req, sizeof req, "GET / HTTP/1.1\r\nHost: %s\r\nConnection: close\r\n\r\n", host);
+    cr_assert_eq(status_of(p, "%s", req), studio_assets_built() ? 200 : 503);
+    snprintf(req, sizeof req, "GET /api/session HTTP/1.1\r\nHost: %s\r\nX-Orikin-Token: " TOKEN "\r\nConnection: close\r\n\r\n", host);
+    cr_assert_eq(status_of(p, "%s", req), 200);
+    close(slow);
+    for (int i = 0; i < IDLE; ++i) close(idle[i]);
+    unserve(&x);
+}
+
+// orikin view hands the browser a page, not the URL (issue: `xdg-open URL?token=…` put the
+// token on a command line, which any local user reads in /proc/PID/cmdline): a stand-in
+// xdg-open records its arguments, the page's mode and its own blocked signals; the token is
+// not among the arguments, the page (0600, in a 0700 directory) leads to the URL with the token,
+// the launcher blocks no signal (it inherited INT, TERM and HUP blocked), and the page is gone
+// when the studio stops.
+Test(server, view_hands_the_browser_a_private_page_not_the_token)
+{
+    char *dir = test_tmpdir(), script[700], out[700], cmd[2400];
+    snprintf(out, sizeof out, "%s/out", dir);
+    cr_assert_eq(mkdir(out, 0700), 0);
+    snprintf(script, sizeof script, "%s/xdg-open", dir);
+    FILE *f = fopen(script, "w");
+    cr_assert_not_null(f);
+    fprintf(f, "#!/bin/sh\nstat -c %%a \"$1\" > '%s/mode'\nstat -c %%a \"$(dirname \"$1\")\" > '%s/dirmode'\n"
+               "cat \"$1\" > '%s/page'\ngrep SigBlk /proc/$$/status > '%s/sigblk'\necho \"$@\" > '%s/args.tmp'\n"
+               "mv '%s/args.tmp' '%s/args'\n",
+            out, out, out, out, out, out, out);
+    fclose(f);
+    cr_assert_eq(chmod(script, 0700), 0);
+    pid_t pid = fork();
+    cr_assert_geq(pid, 0);
+    if (pid == 0) {
+        snprintf(cmd, sizeof cmd, "%s/url", out);
+        int fd = open(cmd, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        dup2(fd, STDOUT_FILENO);
+        snprintf(cmd, sizeof cmd, "%s:%s", dir, getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin");
+        setenv("PATH", cmd, 1);
+        setenv("XDG_RUNTIME_DIR", dir, 1);
+        if (chdir(ORI_SOURCE_DIR) != 0) _exit(126);
+        execl(ORI_CLI_PATH, "orikin", "view", "--port", "0", OPEN_CORNER, (char *)NULL);
+        _exit(127);
+    }
+    char args_path[800], *args = NULL;
+    snprintf(args_path, sizeof args_path, "%s/args", out);
+    for (int i = 0; i < 200 && access(args_path, F_OK) != 0; ++i) usleep(50000);
+    args = test_read_text(args_path);
+    char p[800];
+    snprintf(p, sizeof p, "%s/url", out);
+    char *url = test_read_text(p);
+    const char *tok = strstr(url, "token=");
+    cr_assert_not_null(tok, "%s", url);
+    char token[2 * STUDIO_TOKEN_BYTES + 1];
+    snprintf(token, sizeof token, "%s", tok + 6);
+    cr_assert_null(strstr(args, token), "the token is on xdg-open's command line: %s", args);
+    cr_assert(strstr(args, "/open.html"), "%s", args);
+    snprintf(p, sizeof p, "%s/page", out);
+    char *page = test_read_text(p);
+    cr_assert(strstr(page, token), "the page leads to the URL with its token");
+    snprintf(p, sizeof p, "%s/mode", out);
+    char *mode = test_read_text(p);
+    cr_assert_str_eq(mode, "600\n");
+    snprintf(p, sizeof p, "%s/dirmode", out);
+    char *dirmode = test_read_text(p);
+    cr_assert_str_eq(dirmode, "700\n");
+    snprintf(p, sizeof p, "%s/sigblk", out);
+    char *blk = test_read_text(p);
+    cr_assert(strstr(blk, "0000000000000000"), "the launcher blocks signals: %s", blk);
+    kill(pid, SIGINT);
+    int status = 0;
+    cr_assert_eq(waitpid(pid, &status, 0), pid);
+    cr_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0, "status %d", status);
+    char page_path[800];
+    snprintf(page_path, sizeof page_path, "%.*s", (int)strcspn(args, "\n"), args);
+    cr_assert_neq(access(page_path, F_OK), 0, "the page is removed when the studio stops");
+    free(args), free(url), free(page), free(mode), free(dirmode), free(blk);
+    test_tmpdir_remove(dir);
 }

@@ -40,6 +40,12 @@
 #define STUDIO_UNDO_DEPTH 100
 // The session token: random bytes, written as hex.
 #define STUDIO_TOKEN_BYTES 16
+// Connections served at once, and the silence after which one is dropped: STUDIO_IDLE_SECONDS
+// before it has shown the session token (a local user's idle connections free their slot
+// soon), STUDIO_SESSION_IDLE_SECONDS once it has.
+#define STUDIO_MAX_CONNECTIONS 1024
+#define STUDIO_IDLE_SECONDS 10
+#define STUDIO_SESSION_IDLE_SECONDS 300
 
 typedef struct studio studio;
 

@@ -1,7 +1,10 @@
 // The HTTP front of the studio (libmicrohttpd, one thread per connection): every request must
-// name this server in its Host header (DNS rebinding), API requests must carry the session
-// token, bodies are size-limited before they are read, and the only files served are the web
-// assets embedded in the binary, looked up by exact path.
+// name this server in its Host header (DNS rebinding; one Host, Origin and token header each,
+// the port in decimal), API requests must carry the session token, bodies are size-limited
+// before they are read and never read past twice the limit (a page takes none), and the only files
+// served are the web assets embedded in the binary, looked up by exact path. Against a local
+// user who opens connections to shut others out: up to STUDIO_MAX_CONNECTIONS at once, and a
+// connection that has not shown the token is dropped after STUDIO_IDLE_SECONDS of silence.
 #define _DEFAULT_SOURCE
 #include <arpa/inet.h>
 #include <microhttpd.h>
@@ -9,6 +12,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 
 #include "studio_internal.h"
@@ -43,6 +48,7 @@ typedef struct conn {
     char *body;
     size_t size, cap;
     size_t limit;
+    size_t dropped; // bytes past the limit, read and dropped
     bool too_large;
 } conn;
 
@@ -157,9 +163,15 @@ static bool host_ok(const studio_http *h, struct MHD_Connection *c)
     if (!host) return false;
     const char *colon = strrchr(host, ':');
     if (!colon || (host[0] == '[' && colon < strchr(host, ']'))) return false;
-    char *end;
-    long port = strtol(colon + 1, &end, 10);
-    if (end == colon + 1 || *end || port != h->port) return false;
+    // The port in decimal digits only, equal to ours ("+PORT", " PORT" or "0x…" name no port).
+    long port = 0;
+    const char *d = colon + 1;
+    if (!*d || strlen(d) > 5) return false;
+    for (; *d; ++d) {
+        if (*d < '0' || *d > '9') return false;
+        port = 10 * port + (*d - '0');
+    }
+    if (port != h->port) return false;
     size_t n = (size_t)(colon - host);
     static const char *const loopback[] = {"127.0.0.1", "localhost", "[::1]"};
     for (size_t i = 0; i < sizeof loopback / sizeof loopback[0]; ++i)
@@ -191,6 +203,38 @@ static bool origin_ok(struct MHD_Connection *c)
     char expect[300];
     snprintf(expect, sizeof expect, "http://%s", host);
     return strcmp(origin, expect) == 0;
+}
+
+// Headers that must come once: a request with two Host, Origin or token headers is refused
+// (which one a check reads would be a guess, and an attacker's choice).
+typedef struct header_count {
+    int host, origin, token;
+} header_count;
+
+static enum MHD_Result count_header(void *cls, enum MHD_ValueKind kind, const char *key, const char *value)
+{
+    (void)kind;
+    (void)value;
+    header_count *n = cls;
+    if (strcasecmp(key, MHD_HTTP_HEADER_HOST) == 0) n->host++;
+    else if (strcasecmp(key, "Origin") == 0) n->origin++;
+    else if (strcasecmp(key, "X-Orikin-Token") == 0) n->token++;
+    return MHD_YES;
+}
+
+static bool headers_once(struct MHD_Connection *c)
+{
+    header_count n = {0, 0, 0};
+    MHD_get_connection_values(c, MHD_HEADER_KIND, count_header, &n);
+    return n.host <= 1 && n.origin <= 1 && n.token <= 1;
+}
+
+// Whether the request announces a body (a length above 0, or chunks).
+static bool has_body(struct MHD_Connection *c)
+{
+    const char *len = MHD_lookup_connection_value(c, MHD_HEADER_KIND, MHD_HTTP_HEADER_CONTENT_LENGTH);
+    if (len && strcmp(len, "0") != 0) return true;
+    return MHD_lookup_connection_value(c, MHD_HEADER_KIND, MHD_HTTP_HEADER_TRANSFER_ENCODING) != NULL;
 }
 
 typedef struct arg_list {
@@ -236,14 +280,22 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
         // Headers are in: refuse before reading any body.
         st = calloc(1, sizeof *st);
         *state = st;
+        if (!headers_once(c)) return send_error(c, 400, "refused: a Host, Origin or X-Orikin-Token header given twice");
         if (!host_ok(h, c)) return send_error(c, 403, "refused: the Host header does not name this server");
         bool get = strcmp(method, "GET") == 0, head = strcmp(method, "HEAD") == 0, post = strcmp(method, "POST") == 0;
         if (!api) {
             if (!get && !head) return send_error(c, 405, "only GET is allowed here");
-            st->limit = 0; // assets take no body
+            // Assets take no body: refused before a byte of it is read (an endless one was read
+            // forever, 512 MB and on).
+            if (has_body(c)) return send_error(c, 413, "a request for a page takes no body");
+            st->limit = 0;
             return MHD_YES;
         }
         if (!token_ok(h, c)) return send_error(c, 401, "refused: missing or wrong session token (X-Orikin-Token)");
+        // The token holder's connection may stay open while the page works; every other one is
+        // dropped after STUDIO_IDLE_SECONDS of silence, so idle connections cannot hold the
+        // server's slots.
+        MHD_set_connection_option(c, MHD_CONNECTION_OPTION_TIMEOUT, (unsigned int)STUDIO_SESSION_IDLE_SECONDS);
         if (!origin_ok(c)) return send_error(c, 403, "refused: cross-origin request");
         if (!get && !post) return send_error(c, 405, "only GET and POST are allowed");
         st->limit = studio_body_limit(h->s, url);
@@ -263,8 +315,11 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
         size_t n = *upload_data_size;
         *upload_data_size = 0;
         if (st->too_large || st->size + n > st->limit) {
+            // Dropped, then answered 413 at its end (libmicrohttpd answers only once a body is
+            // in); but never more than the limit again: an endless body is cut off there.
             st->too_large = true;
-            return MHD_YES; // keep reading (and dropping) until the end, then answer 413
+            st->dropped += n;
+            return st->dropped > st->limit ? MHD_NO : MHD_YES;
         }
         if (st->size + n > st->cap) {
             size_t cap = st->cap ? st->cap : 4096;
@@ -276,10 +331,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
         st->size += n;
         return MHD_YES;
     }
-    if (!api) {
-        if (st->too_large) return send_error(c, 413, "a request for a page takes no body");
-        return serve_asset(c, url, strcmp(method, "HEAD") == 0);
-    }
+    if (!api) return serve_asset(c, url, strcmp(method, "HEAD") == 0);
     if (st->too_large) {
         char msg[160];
         snprintf(msg, sizeof msg, "request body over the limit of %zu bytes", st->limit);
@@ -343,11 +395,19 @@ studio_http *studio_http_start(studio *s, const char *host, int port, const char
         free(h);
         return NULL;
     }
+    // Room for STUDIO_MAX_CONNECTIONS descriptors (a soft limit of 1024 would stop accepting
+    // first): raised up to the hard limit.
+    struct rlimit nofile;
+    if (getrlimit(RLIMIT_NOFILE, &nofile) == 0 && nofile.rlim_cur < (rlim_t)STUDIO_MAX_CONNECTIONS + 64) {
+        nofile.rlim_cur = nofile.rlim_max < (rlim_t)STUDIO_MAX_CONNECTIONS + 64 ? nofile.rlim_max : (rlim_t)STUDIO_MAX_CONNECTIONS + 64;
+        setrlimit(RLIMIT_NOFILE, &nofile);
+    }
     unsigned int flags = MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_THREAD_PER_CONNECTION | MHD_USE_POLL;
     if (h->ipv6) flags |= MHD_USE_IPv6;
     h->daemon = MHD_start_daemon(flags, (uint16_t)port, NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, addr,
                                  MHD_OPTION_NOTIFY_COMPLETED, on_completed, NULL, MHD_OPTION_CONNECTION_LIMIT,
-                                 (unsigned int)256, MHD_OPTION_CONNECTION_TIMEOUT, (unsigned int)300,
+                                 (unsigned int)STUDIO_MAX_CONNECTIONS, MHD_OPTION_CONNECTION_TIMEOUT,
+                                 (unsigned int)STUDIO_IDLE_SECONDS,
                                  MHD_OPTION_EXTERNAL_LOGGER, quiet_log, NULL, MHD_OPTION_UNESCAPE_CALLBACK, unescape, NULL,
                                  MHD_OPTION_END);
     if (!h->daemon) {
