@@ -57,6 +57,7 @@ class Report:
         return key in self._d
 
     def keys(self):
+        """The field names."""
         return self._d.keys()
 
     def as_dict(self) -> dict:
@@ -263,6 +264,7 @@ class Pattern:
     face_count = property(lambda self: self._p.face_count, doc="Number of faces.")
     frame_count = property(lambda self: self._p.frame_count, doc="Frames of the FOLD file it came from.")
     is_folded_form = property(lambda self: self._p.is_folded_form, doc="A folded form rather than a flat sheet.")
+    has_fold_angles = property(lambda self: self._p.has_fold_angles, doc="The edges carry fold angles (edges_foldAngle).")
     interior_vertex_count = property(lambda self: self._p.interior_vertex_count, doc="Vertices the paper surrounds.")
     diagonal = property(lambda self: self._p.diagonal, doc="Bounding-box diagonal (the length scale of tolerances).")
     source = property(lambda self: self._p.source, doc="The file it came from (or '<arrays>', '<fold>', ...).")
@@ -511,10 +513,23 @@ class Pattern:
         several_to = isinstance(to, (list, tuple, np.ndarray))
         lock_auto = isinstance(lock, str) and lock == "auto"
         modes = percent is not None or symmetric or ratio is not None or lock_auto or len(drives) > 1 or several_to
+        if modes:
+            for name, given in (("--from", from_ is not None), ("--solver", solver != "auto"),
+                                ("--linear", linear != "auto")):
+                if given:
+                    raise _usage(f"{name} applies to a single drive, not with --percent, several drives, --ratio, "
+                                 "--symmetric or --lock auto", name)
         locks = [] if lock_auto else _unique([self.edge(e, "--lock") for e in _edge_list(lock)])
         if not (step > 0):
             raise _usage(f"--step must be a positive angle in degrees, got {step:g}", "--step")
         start_angles, coords = self._start(frame, start)
+        if lock_auto and len(drives) == 1 and not several_to and percent is None and ratio is None and not symmetric:
+            # One drive with lock='auto': the lock set, then the ordinary fold (as the CLI).
+            locks = [int(e) for e in self._p.lock_set([self.edge(drives[0], "--drive")], lock=[], start=start_angles,
+                                                      progress=progress)]
+            if not locks:
+                raise _usage("--lock auto: nothing to lock, the drive leaves no freedom", "--lock")
+            modes = False
         # A fourth mode, compliant folding (bar-and-hinge, SPEC item 19), goes here once the
         # library has it.
         if not modes:
@@ -528,11 +543,6 @@ class Pattern:
                              locks, solver, linear, start_angles, coords, False, progress)
             motion = Motion(m, self, fix_default)
         else:
-            for name, given in (("--from", from_ is not None), ("--solver", solver != "auto"),
-                                ("--linear", linear != "auto")):
-                if given:
-                    raise _usage(f"{name} applies to a single drive, not with --percent, several drives, --ratio, "
-                                 "--symmetric or --lock auto", name)
             group = self._p.symmetry()[0] if symmetric else None
             if percent is not None:
                 if drives or to is not None or ratio is not None:
@@ -572,15 +582,24 @@ class Pattern:
 
     def state(self, angles=None, *, fix=None, frame: Optional[int] = None) -> "State":
         """A posed state: fold angles in degrees (closed exactly onto the loop-closure manifold
-        when they nearly close, then posed from face fix), or frame N of the file; None: the
-        pattern's own coordinates (the flat sheet, or a folded form)."""
-        if frame is not None:
-            a, coords, is3d = self._p.frame_state(frame)
-            if is3d or not np.any(a):
-                return State(self, a, coords, label=f"frame {frame}")
-            angles = np.degrees(a)
+        when they nearly close, then posed with face fix, default the centre face, where the flat
+        sheet has it); or, without angles, frame N of the file (default the pattern's own) as
+        `orikin render --frame N` shows it: a folded form's coordinates, a crease pattern posed
+        from its edges_foldAngle (face 0 in place), the flat sheet when it has none."""
         if angles is None:
-            return State(self, None, self.vertices)
+            k = self._p.frame if frame is None else frame
+            a, coords, is3d = self._p.frame_state(k, True)
+            label = f"frame {k}"
+            if is3d or self.is_folded_form or not np.any(a):
+                return State(self, a if self.has_fold_angles or is3d else None, coords, label=label)
+            try:
+                closed, pos = self._p.pose(a, 0)
+            except InputError as e:
+                if e.status != "ERR_ARGUMENT":
+                    raise
+                raise _usage(f"{self.source}: frame {k}: its edges_foldAngle are not a folded state (the loops around "
+                             "the vertices do not close): fold it with fix, drive and to") from None
+            return State(self, closed, pos, label=label)
         fix_index = self.center_face() if fix is None else self.face(fix, "--fix")
         closed, pos = self._p.pose(np.radians(np.asarray(angles, dtype=float)), fix_index)
         return State(self, closed, pos)
@@ -730,6 +749,16 @@ class State:
 
 # --- motions -------------------------------------------------------------------------------------
 
+def _describe(c: "CollisionEvent", with_fold: bool) -> str:
+    """A collision as the CLI words it (cli_collision_describe)."""
+    verb = {"near": "come closer than the clearance", "touching": "touch (within the clearance)"}.get(
+        c.kind, "pass through each other (stacked layers)" if c.stacked else "penetrate")
+    fold = f"fold {c.fold + 1}, " if with_fold else ""
+    at = f"progress {c.progress:.9f}" if "progress" in c else f"drive {math.degrees(c.drive_rad):.6f} deg"
+    x, y, z = c.point
+    return f"faces {c.faces[0]} and {c.faces[1]} {verb} at {fold}step {c.step}, {at}, at ({x:.6g}, {y:.6g}, {z:.6g})"
+
+
 class Motion:
     """A solved fold: its frames (exact states), verdict and reason, the solver's figures.
 
@@ -776,8 +805,7 @@ class Motion:
 
     def _why(self) -> Optional[str]:
         if self.collision is not None:
-            c = self.collision
-            return f"faces {c.faces[0]} and {c.faces[1]} collide at frame {c.frame} (the motion stops at the last clean step)"
+            return _describe(self.collision, False) + " (the motion stops at the last clean step)"
         return self._i()["reason"]
 
     @property
@@ -807,10 +835,13 @@ class Motion:
         if self._i()["verdict"] != "underdetermined" or self.kind != "drive":
             return None
         try:
-            locks = self.pattern._p.lock_set([self.drive], lock=self.locked)
+            locks = [int(e) for e in self._m.lock_suggestion()]
         except Error as e:
             return f"no lock set found ({e.reason})"
-        return "lock {} more creases, e.g. lock={}".format(len(locks), sorted(set(self.locked) | set(locks)))
+        if not locks:
+            return "no lock set found (the search locked nothing)"
+        return "lock {} more crease{}, e.g. lock={} (or lock='auto')".format(len(locks), "" if len(locks) == 1 else "s",
+                                                                           self.locked + locks)
 
     # --- frames ---------------------------------------------------------------------------------
 
@@ -1018,9 +1049,9 @@ class Record:
 
     @property
     def reason(self) -> Optional[str]:
+        """Why the sequence is not valid (the failing fold's reason, or the collision), or None."""
         if self.collision is not None:
-            c = self.collision
-            return f"faces {c.faces[0]} and {c.faces[1]} collide at t = {c.time:.9g}"
+            return _describe(self.collision, True) + f", t = {self.collision.time:.9g} (the motion stops at the last clean step)"
         return self._info["reason"]
 
     @property
@@ -1030,6 +1061,7 @@ class Record:
 
     @property
     def angles_deg(self) -> np.ndarray:
+        """(states, E) fold angles in degrees (a copy)."""
         return np.degrees(self._r.angles())
 
     @property
@@ -1038,6 +1070,8 @@ class Record:
         return self._r.vertices()
 
     def info(self) -> dict:
+        """Everything `orikin sequence --json` reports about the run (a dict): verdict, reason,
+        failed_fold, completed_folds, partial_frames, duration, the folds."""
         d = dict(self._info)
         d["verdict"], d["valid"], d["reason"] = self.verdict, self.valid, self.reason
         d["collision"] = None if self.collision is None else self.collision.as_dict()
@@ -1049,6 +1083,9 @@ class Record:
         return State(self.pattern, angles, pos, drive, f"t = {t:g}")
 
     def collide(self, clearance: float = 0.0, *, progress: Progress = None) -> Optional[CollisionEvent]:
+        """Check every recorded step for self-collision (Record.load and Pattern.sequence do
+        unless collisions=False): the first contact, or None; afterwards the record shows the
+        states before it."""
         ev = self._r.collide(clearance, progress)
         self.collision = None if ev is None else CollisionEvent(ev)
         return self.collision
@@ -1059,10 +1096,12 @@ class Record:
 
     def animate(self, path=None, *, fps: float = 15.0, hold: float = 1.0, loop: bool = True,
                 progress: Progress = None, **options):
+        """The recorded states as an animated GIF (`orikin animate SEQ.json`): to path or bytes."""
         kw = _draw_kwargs(options)
         return _c.animate(self.pattern._p, self.vertices, self.angles, path, fps, hold, loop, progress, **kw)
 
     def export(self, path=None, *, format: Optional[str] = None, thickness: float = 0.0, t: Optional[float] = None):
+        """A mesh of the instant t (default: the end); see State.export."""
         return self.at(self.duration if t is None else t).export(path, format=format, thickness=thickness)
 
     def to_fold(self) -> dict:
@@ -1118,10 +1157,12 @@ class Layers:
 
     @property
     def satisfiable(self) -> bool:
+        """False once no flat-folded state is known to exist (then conflict says why)."""
         return self._l.info()["satisfiable"]
 
     @property
     def limited(self) -> bool:
+        """Some component reached the limit: count is a lower bound."""
         return self._l.info()["limited"]
 
     @property

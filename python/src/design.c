@@ -149,7 +149,10 @@ static PyObject *py_design_step(PyObject *mod, PyObject *args, PyObject *kw)
     } else {
         ori_pattern_destroy(p);
     }
-    bool rigid = out.applied && out.verdict && out.frames >= 2 && out.progress > 0.0 && out.against == 0;
+    // Rigidly foldable: the mechanism has a motion (generic DOF ≥ 1; a step of 1e-7 before a
+    // singular stop is no motion) and the fold toward the targets takes it, every crease as assigned.
+    bool moves = out.dof_ok && out.dof >= 0 ? out.dof > 0 : true;
+    bool rigid = out.applied && out.verdict && moves && out.frames >= 2 && out.progress > 0.0 && out.against == 0;
     if (out.applied && out.folds == 0) rigid = true;
     PyObject *edges = PyList_New(out.applied ? out.apply.edges_added : 0);
     for (int i = 0; edges && out.applied && i < out.apply.edges_added; ++i)

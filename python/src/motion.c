@@ -8,6 +8,7 @@
 
 typedef struct ori_py_motion {
     PyObject_HEAD
+    PyObject *weakrefs; // views' owners are checked for lifetime by weak references (tests)
     ori_motion *mo;    // a single-drive fold, or NULL
     ori_multifold *mf; // a fold with several degrees of freedom, or NULL
     PyObject *mech, *pattern;
@@ -26,6 +27,7 @@ typedef struct ori_py_motion {
 static void motion_dealloc(PyObject *obj)
 {
     ori_py_motion *self = (ori_py_motion *)obj;
+    if (self->weakrefs) PyObject_ClearWeakRefs(obj);
     ori_motion_destroy(self->mo); // before the mechanism it refers to
     ori_multifold_destroy(self->mf);
     PyMem_Free(self->start);
@@ -55,6 +57,7 @@ static ori_py_motion *motion_new(ori_py_pattern *pat, ori_py_mechanism *mech, co
 {
     ori_py_motion *self = PyObject_New(ori_py_motion, &ori_py_MotionType);
     if (!self) return NULL;
+    self->weakrefs = NULL;
     self->mo = NULL;
     self->mf = NULL;
     self->pattern = Py_NewRef((PyObject *)pat);
@@ -735,7 +738,8 @@ static PyObject *event_dict(const ori_collision_event *ev, bool progress)
                        PyUnicode_FromString(c->kind == ORI_CONTACT_PENETRATING ? "penetrating"
                                             : c->kind == ORI_CONTACT_NEAR      ? "near"
                                                                                : "touching"),
-                       "point", ori_py_v3(c->point), "distance", PyFloat_FromDouble(c->distance), NULL);
+                       "stacked", PyBool_FromLong(c->stacked), "point", ori_py_v3(c->point), "distance",
+                       PyFloat_FromDouble(c->distance), NULL);
 }
 
 // collide(clearance, progress): check the motion frame by frame for self-collision (as
@@ -783,6 +787,28 @@ static PyObject *motion_collide(PyObject *obj, PyObject *args, PyObject *kw)
     return event_dict(&ev, self->mf != NULL);
 }
 
+// lock_suggestion(): the lock set that leaves this single-drive fold one degree of freedom
+// (what an underdetermined fold's hint names, as the CLI's): a list, or an exception.
+static PyObject *motion_lock_suggestion(PyObject *obj, PyObject *args)
+{
+    ori_py_motion *self = (ori_py_motion *)obj;
+    if (!self->mo) return PyErr_Format(PyExc_ValueError, "a lock suggestion is for a fold with one driven crease");
+    const ori_mechanism *m = mech_of(self);
+    int cap = ori_mechanism_edge_count(m) + 1;
+    int *out = PyMem_Malloc(sizeof(int) * (size_t)cap);
+    if (!out) return PyErr_NoMemory();
+    ori_error err;
+    int n;
+    Py_BEGIN_ALLOW_THREADS
+    n = ori_mechanism_lock_set(m, self->start, &self->def.driven_edge, 1, self->locks, self->nlocks, NULL, out, cap, &err);
+    Py_END_ALLOW_THREADS
+    PyObject *r = NULL;
+    if (n < 0) ori_py_raise(ori_py_pattern_source((ori_py_pattern *)self->pattern), &err);
+    else r = ori_py_ints(out, n);
+    PyMem_Free(out);
+    return r;
+}
+
 static PyObject *motion_counts(PyObject *obj, void *what)
 {
     ori_py_motion *self = (ori_py_motion *)obj;
@@ -814,12 +840,14 @@ static PyMethodDef motion_methods[] = {
     {"other_branch", motion_other_branch, METH_VARARGS, "other_branch(k): the other closed-form branch or None."},
     {"at", motion_at, METH_VARARGS, "at(t): (angles, positions, drive) at fraction t of the motion."},
     {"collide", KW motion_collide, METH_VARARGS | METH_KEYWORDS, "collide(clearance, progress): the first contact or None."},
+    {"lock_suggestion", motion_lock_suggestion, METH_NOARGS, "The lock set leaving one degree of freedom (a list)."},
     {NULL, NULL, 0, NULL},
 };
 
 PyTypeObject ori_py_MotionType = {
     PyVarObject_HEAD_INIT(NULL, 0).tp_name = "orikin._orikin.Motion",
     .tp_basicsize = sizeof(ori_py_motion),
+    .tp_weaklistoffset = offsetof(ori_py_motion, weakrefs),
     .tp_dealloc = motion_dealloc,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc = "A solved fold (ori_motion or ori_multifold) with the pattern and mechanism it refers to.",

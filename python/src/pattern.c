@@ -270,7 +270,10 @@ static PyObject *py_from_arrays(PyObject *mod, PyObject *args, PyObject *kw)
                      (Py_ssize_t)ne);
         goto done;
     }
-    p = ori_pattern_create(NULL);
+    ori_pattern_def pd = ori_default_pattern_def();
+    pd.vertex_capacity = (int)nv;
+    pd.edge_capacity = (int)ne;
+    p = ori_pattern_create(&pd);
     bool is3d = PyArray_DIM(v, 1) == 3;
     bool lifted = false;
     const double *vc = PyArray_DATA(v);
@@ -433,6 +436,7 @@ static PyObject *pattern_counts(PyObject *self, void *what)
     case 5: return PyLong_FromLong(((ori_py_pattern *)self)->doc ? ori_fold_frame_count(((ori_py_pattern *)self)->doc) : 1);
     case 6: return PyLong_FromLong(ori_pattern_interior_vertex_count(p));
     case 7: return PyFloat_FromDouble(ori_pattern_diagonal(p));
+    case 9: return PyLong_FromLong(((ori_py_pattern *)self)->frame);
     default: return Py_NewRef(((ori_py_pattern *)self)->source);
     }
 }
@@ -549,8 +553,11 @@ static PyObject *pattern_find_face(PyObject *self, PyObject *args)
         const char *name = PyUnicode_AsUTF8(spec);
         if (!name) return NULL;
         int f = ori_pattern_find_face_by_name(pat->p, name);
+        if (f == ORI_NULL_INDEX && ori_pattern_find_tree_node(pat->p, name) != ORI_NULL_INDEX) // as cli_find_face_option
+            return ori_py_raise_value(src, option, "%s is not a folding element any more (it was split; see orikin tree)",
+                                      name);
         if (f == ORI_NULL_INDEX)
-            return ori_py_raise_value(src, option, "no face named %s (see orikin info --faces)", name);
+            return ori_py_raise_value(src, option, "no face named %s (see orikin info --faces %s)", name, src);
         return PyLong_FromLong(f);
     }
     ori_v2 x;
@@ -601,11 +608,13 @@ static PyObject *pattern_center_face(PyObject *self, PyObject *args)
 // The state of a frame of the pattern's file as the CLI's fold starts from it (cli_kin_load):
 // (angles, coordinates, folded): a folded frame's edges_foldAngle, else the flat state, and its
 // vertices (3D for a folded frame).
+// With as_drawn, a crease-pattern frame's angles are its own edges_foldAngle (the state render,
+// export and collide pose, cli/state_args.c) instead of the flat start.
 static PyObject *pattern_frame_state(PyObject *self, PyObject *args)
 {
     ori_py_pattern *pat = (ori_py_pattern *)self;
-    int frame;
-    if (!PyArg_ParseTuple(args, "i", &frame)) return NULL;
+    int frame, as_drawn = 0;
+    if (!PyArg_ParseTuple(args, "i|p", &frame, &as_drawn)) return NULL;
     const char *src = ori_py_pattern_source(pat);
     int frames = pat->doc ? ori_fold_frame_count(pat->doc) : 1;
     if (frame < 0 || frame >= frames)
@@ -640,7 +649,7 @@ static PyObject *pattern_frame_state(PyObject *self, PyObject *args)
     PyObject *coords = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
     if (angles && coords) {
         double *a = PyArray_DATA((PyArrayObject *)angles);
-        for (npy_intp e = 0; folded && e < E; ++e) a[e] = ori_pattern_edge(state, (int)e).fold_angle_rad;
+        for (npy_intp e = 0; (folded || as_drawn) && e < E; ++e) a[e] = ori_pattern_edge(state, (int)e).fold_angle_rad;
         ori_v3 *c = PyArray_DATA((PyArrayObject *)coords);
         for (npy_intp v = 0; v < V; ++v) c[v] = ori_pattern_vertex(state, (int)v);
     }
@@ -943,6 +952,7 @@ static PyGetSetDef pattern_getset[] = {
     {"interior_vertex_count", pattern_counts, NULL, "Vertices the paper surrounds (the ones checked and looped).", (void *)6},
     {"diagonal", pattern_counts, NULL, "Bounding-box diagonal: the length scale of every relative tolerance.", (void *)7},
     {"source", pattern_counts, NULL, "Where the pattern came from: the path, or '<arrays>', '<fold>', ...", (void *)8},
+    {"frame", pattern_counts, NULL, "The frame of its FOLD file the pattern is (0: the top level).", (void *)9},
     {NULL, NULL, NULL, NULL, NULL},
 };
 
@@ -958,7 +968,7 @@ static PyMethodDef pattern_methods[] = {
     {"find_face", pattern_find_face, METH_VARARGS, "find_face(spec, option): a face by index, name or point."},
     {"find_edge", pattern_find_edge, METH_VARARGS, "find_edge(spec, option): a crease by index or point."},
     {"center_face", pattern_center_face, METH_NOARGS, "The face a fold fixes when none is named."},
-    {"frame_state", pattern_frame_state, METH_VARARGS, "frame_state(k): (angles_rad, coords, is_3d) of frame k."},
+    {"frame_state", pattern_frame_state, METH_VARARGS, "frame_state(k, as_drawn): (angles_rad, coords, is_3d) of frame k."},
     {"to_fold_text", pattern_to_fold_text, METH_NOARGS, "The pattern as FOLD text."},
     {"save", pattern_save, METH_VARARGS, "save(path): FOLD, or SVG / CP / OPX by the extension."},
     {"with_states", KW pattern_with_states, METH_VARARGS | METH_KEYWORDS, "FOLD text with folded states appended."},

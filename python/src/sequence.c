@@ -7,6 +7,7 @@
 
 typedef struct ori_py_record {
     PyObject_HEAD
+    PyObject *weakrefs; // views' owners are checked for lifetime by weak references (tests)
     ori_record *r;
     ori_sequence *seq;
     PyObject *mech, *pattern;
@@ -17,6 +18,7 @@ typedef struct ori_py_record {
 static void record_dealloc(PyObject *obj)
 {
     ori_py_record *self = (ori_py_record *)obj;
+    if (self->weakrefs) PyObject_ClearWeakRefs(obj);
     ori_record_destroy(self->r); // before its mechanism
     ori_sequence_destroy(self->seq);
     Py_XDECREF(self->mech);
@@ -55,6 +57,7 @@ PyObject *ori_py_pattern_sequence(PyObject *self, PyObject *args, PyObject *kw)
         ori_py_state_free(&s);
         return NULL;
     }
+    rec->weakrefs = NULL;
     rec->r = NULL;
     rec->seq = NULL;
     rec->mech = Py_NewRef((PyObject *)mech);
@@ -241,7 +244,8 @@ static PyObject *record_collide(PyObject *obj, PyObject *args, PyObject *kw)
                        PyUnicode_FromString(k->kind == ORI_CONTACT_PENETRATING ? "penetrating"
                                             : k->kind == ORI_CONTACT_NEAR      ? "near"
                                                                                : "touching"),
-                       "point", ori_py_v3(k->point), "distance", PyFloat_FromDouble(k->distance), NULL);
+                       "stacked", PyBool_FromLong(k->stacked), "point", ori_py_v3(k->point), "distance",
+                       PyFloat_FromDouble(k->distance), NULL);
 }
 
 static PyObject *record_frames(PyObject *obj, void *what)
@@ -283,6 +287,7 @@ static PyMethodDef record_methods[] = {
 PyTypeObject ori_py_RecordType = {
     PyVarObject_HEAD_INIT(NULL, 0).tp_name = "orikin._orikin.Record",
     .tp_basicsize = sizeof(ori_py_record),
+    .tp_weaklistoffset = offsetof(ori_py_record, weakrefs),
     .tp_dealloc = record_dealloc,
     .tp_flags = Py_TPFLAGS_DEFAULT,
     .tp_doc = "A fold sequence run on a pattern (ori_record): the motion record.",
