@@ -472,13 +472,15 @@ typedef struct ori_target_fold_def {
     const int *locked_edges;         ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;           ///< NULL, or edge_count entries: creases with the same group ≥ 0 are kept at equal angles (e.g. symmetry orbits)
+    int max_steps;                   ///< most continuation steps (≤ 0: ORI_MULTIFOLD_MAX_STEPS), the bound of the pace test too;
+                                     ///< beyond: verdict STATIONARY, frames kept (a design search bounds each judgement so)
     ori_progress_fn *progress;       ///< called per accepted step with the fraction of the distance to the goal covered
                                      ///< (monotone, 1 at the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
     void *progress_user;
     int internal_value;              ///< set by ori_default_target_fold_def; do not change
 } ori_target_fold_def;
 
-/// Defaults: face 0 fixed at identity, flat start, file targets, fraction 1, step 10°.
+/// Defaults: face 0 fixed at identity, flat start, file targets, fraction 1, step 10°, ORI_MULTIFOLD_MAX_STEPS steps.
 ORI_API ori_target_fold_def ori_default_target_fold_def(void);
 
 /// Target angles of a flat crease pattern (edge_count entries, radians): the pattern's fold angle

@@ -662,6 +662,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double stall_ring[ORI_MULTIFOLD_STALL_STEPS], path_ring[ORI_MULTIFOLD_STALL_STEPS], h_ring[ORI_MULTIFOLD_STALL_STEPS];
     double path = 0.0; // length of the path so far (2-norm over the variables' joints)
     int stall_n = 0;
+    const int max_steps = def->max_steps > 0 ? def->max_steps : ORI_MULTIFOLD_MAX_STEPS;
     while (!done && !cancelled) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
@@ -675,11 +676,11 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             snprintf(mo->reason, sizeof mo->reason, "every crease reached its goal (within %.0e rad)", ORI_TOL_TARGET_RAD);
             break;
         }
-        if (mo->steps >= ORI_MULTIFOLD_MAX_STEPS) {
+        if (mo->steps >= max_steps) {
             mo->verdict = ORI_MULTIFOLD_STATIONARY;
             snprintf(mo->reason, sizeof mo->reason,
                      "the motion came no nearer to the goal within %d steps (it creeps along a valley of the distance)",
-                     ORI_MULTIFOLD_MAX_STEPS);
+                     max_steps);
             break;
         }
         if (!ori__mf_linearize(&sys, th)) {
@@ -712,7 +713,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             double before = stall_ring[old], walked = path - path_ring[old], fell = before - D;
             // At the pace of the last steps (the step length not growing), the goal lies beyond
             // the steps a fold may take: stop now rather than after them.
-            double left = (double)(ORI_MULTIFOLD_MAX_STEPS - mo->steps);
+            double left = (double)(max_steps - mo->steps);
             if (h <= h_ring[old] && fell * left < (double)ORI_MULTIFOLD_STALL_STEPS * D) {
                 mo->verdict = ORI_MULTIFOLD_STATIONARY;
                 snprintf(mo->reason, sizeof mo->reason,
@@ -720,7 +721,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                          "steps it moved %.3g rad and its distance to the goal fell by %.3g rad (%.2g %%), so the "
                          "%.4g rad left would take about %.3g more steps (a fold may take %d); it got %.4g %% of the way",
                          ORI_MULTIFOLD_STALL_STEPS, walked, fell, before > 0.0 ? 100.0 * fell / before : 0.0, D,
-                         fell > 0.0 ? D / fell * ORI_MULTIFOLD_STALL_STEPS : INFINITY, ORI_MULTIFOLD_MAX_STEPS,
+                         fell > 0.0 ? D / fell * ORI_MULTIFOLD_STALL_STEPS : INFINITY, max_steps,
                          D0 > 0.0 ? 100.0 * (1.0 - D / D0) : 100.0);
                 break;
             }

@@ -1,7 +1,8 @@
-// The whole-motion blocks that bindings view without copying (ori_motion_angles,
-// ori_motion_vertices, ori_multifold_angles, ori_multifold_vertices, ori_record_angles,
-// ori_record_vertices) and the state between a multifold's frames (ori_multifold_at): each block
-// holds exactly what the per-frame getters give, and a state between frames closes.
+// What the language bindings (python/) use: the whole-motion blocks they view without copying
+// (ori_motion_angles, ori_motion_vertices, ori_multifold_angles, ori_multifold_vertices,
+// ori_record_angles, ori_record_vertices) — each holds exactly what the per-frame getters give —,
+// the state between a multifold's frames (ori_multifold_at), which closes, and the bound on a
+// target fold's steps (ori_target_fold_def.max_steps) that keeps a design-search step short.
 #include <math.h>
 #include <string.h>
 
@@ -27,7 +28,7 @@ static const double *motion_frame_angles(const void *m, int k) { return ori_moti
 static void motion_frame_vertices(const void *m, int k, ori_v3 *p) { ori_motion_frame_vertices(m, k, p); }
 static const double *multifold_frame_angles(const void *m, int k) { return ori_multifold_frame_angles(m, k); }
 static void multifold_frame_vertices(const void *m, int k, ori_v3 *p) { ori_multifold_frame_vertices(m, k, p); }
-Test(views, motion_blocks_match_the_frames, .init = test_leak_setup, .fini = test_leak_check)
+Test(bindings, motion_blocks_match_the_frames, .init = test_leak_setup, .fini = test_leak_check)
 {
     test_open_corner c = test_open_corner_load();
     ori_motion_def d = ori_default_motion_def();
@@ -60,7 +61,7 @@ Test(views, motion_blocks_match_the_frames, .init = test_leak_setup, .fini = tes
     test_open_corner_free(&c);
 }
 
-Test(views, multifold_blocks_and_states_between_frames, .init = test_leak_setup, .fini = test_leak_check)
+Test(bindings, multifold_blocks_and_states_between_frames, .init = test_leak_setup, .fini = test_leak_check)
 {
     ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
     ori_mechanism *m = test_mechanism_of(p);
@@ -103,7 +104,7 @@ Test(views, multifold_blocks_and_states_between_frames, .init = test_leak_setup,
     ori_pattern_destroy(p);
 }
 
-Test(views, record_blocks_match_the_states, .init = test_leak_setup, .fini = test_leak_check)
+Test(bindings, record_blocks_match_the_states, .init = test_leak_setup, .fini = test_leak_check)
 {
     char *text = test_read_text(test_repo_path("examples/open-corner.seq.json"));
     cr_assert(text);
@@ -128,4 +129,35 @@ Test(views, record_blocks_match_the_states, .init = test_leak_setup, .fini = tes
     ori_record_destroy(r);
     ori_sequence_destroy(s);
     test_open_corner_free(&c);
+}
+
+Test(bindings, target_fold_max_steps_bounds_the_continuation, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_target_fold_def d = ori_default_target_fold_def();
+    cr_assert_eq(d.max_steps, 0, "default: the library's bound");
+    ori_multifold *mf = NULL;
+    ori_error err;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+    int steps;
+    ori_multifold_stats(mf, &steps, NULL, NULL);
+    cr_assert_gt(steps, 3);
+    ori_multifold_destroy(mf);
+    d.max_steps = 3;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_STATIONARY);
+    cr_assert(strstr(ori_multifold_reason(mf), "within 3 steps"), "%s", ori_multifold_reason(mf));
+    int bounded;
+    ori_multifold_stats(mf, &bounded, NULL, NULL);
+    cr_assert_eq(bounded, 3);
+    int F = ori_multifold_frame_count(mf);
+    cr_assert_geq(F, 1);
+    double pr = ori_multifold_frame_progress(mf, F - 1);
+    cr_assert(pr > 0.0 && pr < 1.0, "progress %g", pr);
+    cr_assert_leq(ori_multifold_frame_residual(mf, F - 1), ORI_TOL_RESIDUAL);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
 }
