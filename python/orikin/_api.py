@@ -147,10 +147,11 @@ class LinkageMotion(Report):
 
 class StepResult(Report):
     """One design-search step (DesignEnv.step): applied (the crease was added), error (why not),
-    edges (the new edges), creases (M, V and U creases now), rigid_foldable (the fold toward the
-    targets from the flat sheet moves and folds every crease as assigned), progress (how far it
-    got, 0 to 1), verdict (of that fold), dof (generic degrees of freedom; None when
-    undetermined), flat_dof, against_assignment, against_edge, collides (along that fold),
+    edges (the new edges), creases (M, V and U creases now), rigid_foldable (the mechanism has a
+    motion and the fold toward the targets from the flat sheet takes it, every crease as
+    assigned), progress (how far it got, 0 to 1), verdict (of that fold), dof (the degrees of
+    freedom along that motion; None when undetermined), flat_dof (the infinitesimal count at the
+    flat sheet), against_assignment, against_edge, collides (along that fold),
     collision (where), reward (the environment's), pattern (the observation), terminated,
     truncated."""
 

@@ -39,11 +39,14 @@ class DesignEnv:
 
     Each step adds the crease (a new pattern; the old one is kept by whoever holds it), then
     folds the pattern toward its targets (every crease to +-180 by its assignment, `percent` of
-    the way, from the flat sheet with the face `fix` held; default the centre face) and judges:
-    rigid_foldable (the fold moves and every crease folds as assigned), progress, dof (the
-    generic degrees of freedom of the mechanism: rank of the loop-closure Jacobian at a regular
-    state near the flat sheet), collides (self-collision along that fold). A crease that misses
-    the sheet leaves the pattern unchanged (applied False).
+    the way, from the flat sheet with the face `fix` held, default the centre face; at most
+    `max_steps` continuation steps, so that a fold creeping toward a stationary point stops in
+    milliseconds) and judges: rigid_foldable (the mechanism has a motion and the fold takes it,
+    every crease as assigned), progress (how far it got, 0 to 1), dof (the degrees of freedom
+    along that motion: the rank count of the loop-closure Jacobian half way, a regular state;
+    when the fold does not move, the generic probe at the flat sheet, within probe_budget
+    solves; None when undetermined), collides (self-collision along that fold, located to
+    1e-6). A crease that misses the sheet leaves the pattern unchanged (applied False).
 
     terminated: the step left the pattern not rigidly foldable or colliding (when
     terminate_on_failure); truncated: max_creases reached. reward(result) -> float (default
@@ -52,7 +55,8 @@ class DesignEnv:
 
     def __init__(self, sheet: Union[Pattern, float, Any] = 1.0, *, assignment: str = "V", fix=None,
                  percent: float = 100.0, step: float = 10.0, collisions: bool = True, clearance: float = 0.0,
-                 probe: bool = True, max_creases: Optional[int] = None, terminate_on_failure: bool = True,
+                 probe: bool = True, probe_budget: int = 32, max_steps: int = 2000,
+                 max_creases: Optional[int] = None, terminate_on_failure: bool = True,
                  reward: Callable[[StepResult], float] = default_reward):
         if isinstance(sheet, Pattern):
             self.sheet = sheet
@@ -69,6 +73,8 @@ class DesignEnv:
         self.collisions = collisions
         self.clearance = clearance
         self.probe = probe
+        self.probe_budget = probe_budget
+        self.max_steps = max_steps
         self.max_creases = max_creases
         self.terminate_on_failure = terminate_on_failure
         self.reward = reward
@@ -119,7 +125,7 @@ class DesignEnv:
             new = None
         else:
             new, info = _c.design_step(self.pattern._p, a, b, asg, face, not segment, fix, self.fraction, self.step_rad,
-                                       self.collisions, self.clearance, self.probe)
+                                       self.collisions, self.clearance, self.probe, self.max_steps, self.probe_budget)
         self.steps += 1
         if new is not None:
             self.pattern = Pattern(new)

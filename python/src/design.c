@@ -31,8 +31,21 @@ typedef struct step_in {
     int face;
     int fix;                  // ORI_NULL_INDEX: the face at the sheet's centre
     double fraction, step_rad, clearance;
+    int max_steps;            // of the fold toward the targets (≤ 0: the library's bound)
+    int probe_budget;         // of the DOF probe at the flat sheet when the fold does not move
     bool collisions, probe;
 } step_in;
+
+// The DOF at a state (radians per edge, NULL = flat): the rank count, and with a probe budget the
+// generic count near a singular state; false with out->err set when the analysis fails.
+static bool dof_at(const ori_mechanism *m, const double *angles, int probe_budget, ori_dof_result *r, ori_error *err)
+{
+    ori_dof_def dd = ori_default_dof_def();
+    dd.angles_rad = angles;
+    dd.probe_generic = probe_budget > 0;
+    dd.probe_budget = probe_budget;
+    return ori_mechanism_dof(m, &dd, r, err) == ORI_OK;
+}
 
 static void judge(ori_pattern *p, const step_in *in, step_out *out)
 {
@@ -42,16 +55,15 @@ static void judge(ori_pattern *p, const step_in *in, step_out *out)
     md.pattern = p;
     ori_mechanism *m = NULL;
     if (ori_mechanism_create(&md, &m, &out->err) != ORI_OK) return;
-    ori_dof_def dd = ori_default_dof_def();
-    dd.probe_generic = in->probe;
-    ori_dof_result dr;
-    if (ori_mechanism_dof(m, &dd, &dr, &out->err) == ORI_OK) {
-        out->dof_ok = true;
-        out->flat_dof = dr.dof;
-        // A regular state needs no probe: its DOF is the generic one.
-        out->dof = dr.generic_dof >= 0 ? dr.generic_dof : dr.undetermined ? -1 : dr.dof;
+    ori_dof_result flat;
+    if (!dof_at(m, NULL, 0, &flat, &out->err)) {
+        ori_mechanism_destroy(m);
+        return;
     }
+    out->flat_dof = flat.dof;
     if (out->folds == 0) { // a sheet without creases folds trivially (nothing moves)
+        out->dof_ok = true;
+        out->dof = 0;
         out->verdict = "reached";
         out->progress = 1.0;
         ori_mechanism_destroy(m);
@@ -61,6 +73,7 @@ static void judge(ori_pattern *p, const step_in *in, step_out *out)
     td.fixed_face = in->fix == ORI_NULL_INDEX ? ori_pattern_center_face(p) : in->fix;
     td.fraction = in->fraction;
     td.step_rad = in->step_rad;
+    td.max_steps = in->max_steps;
     ori_multifold *mf = NULL;
     if (ori_target_fold_solve(m, &td, &mf, &out->err) != ORI_OK) {
         ori_mechanism_destroy(m);
@@ -69,6 +82,22 @@ static void judge(ori_pattern *p, const step_in *in, step_out *out)
     out->verdict = ori_multifold_verdict_name(ori_multifold_verdict_of(mf));
     out->frames = ori_multifold_frame_count(mf);
     out->progress = out->frames ? ori_multifold_frame_progress(mf, out->frames - 1) : 0.0;
+    // The degrees of freedom: along the motion when the fold moves (a state half way, away from
+    // the flat sheet's singularity: the rank count is the generic one there), else the generic
+    // probe at the flat sheet (its budget bounded: a rigid vertex is proved in a few solves).
+    ori_dof_result r;
+    bool moved = out->frames >= 2 && out->progress > 0.0;
+    if (moved && dof_at(m, ori_multifold_frame_angles(mf, out->frames / 2), 0, &r, &out->err)) {
+        out->dof_ok = true;
+        out->dof = r.dof;
+    } else if (!moved && !in->probe) {
+        out->dof_ok = true;
+        out->dof = flat.dof;
+    } else if (!moved && dof_at(m, NULL, in->probe_budget, &r, &out->err)) {
+        out->dof_ok = true;
+        // A regular state needs no probe: its DOF is the generic one.
+        out->dof = r.generic_dof >= 0 ? r.generic_dof : r.undetermined ? -1 : r.dof;
+    }
     out->against_edge = ORI_NULL_INDEX;
     int E = ori_pattern_edge_count(p);
     for (int e = 0; e < E; ++e) { // as the CLI's modes report them (fold_modes.c)
@@ -101,18 +130,20 @@ static void judge(ori_pattern *p, const step_in *in, step_out *out)
 }
 
 // design_step(pattern, a, b, assignment, face, infinite, fix, fraction, step_rad, collisions,
-// clearance, probe): (the new pattern or None when the crease was not applied, what was found).
+// clearance, probe, max_steps, probe_budget): (the new pattern or None when the crease was not
+// applied, what was found).
 static PyObject *py_design_step(PyObject *mod, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"pattern", "a", "b", "assignment", "face", "infinite", "fix", "fraction", "step_rad",
-                             "collisions", "clearance", "probe", NULL};
+                             "collisions", "clearance", "probe", "max_steps", "probe_budget", NULL};
     PyObject *pobj, *ao, *bo;
     const char *asg = "V";
     step_in in = {.face = ORI_NULL_INDEX, .fix = ORI_NULL_INDEX, .fraction = 1.0, .step_rad = ORI_PI / 18,
-                  .clearance = 0.0, .collisions = true, .probe = true};
+                  .clearance = 0.0, .max_steps = 0, .probe_budget = 32, .collisions = true, .probe = true};
     int infinite = 1, collisions = 1, probe = 1;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O!OO|sipiddpdp", kwlist, &ori_py_PatternType, &pobj, &ao, &bo, &asg, &in.face,
-                                     &infinite, &in.fix, &in.fraction, &in.step_rad, &collisions, &in.clearance, &probe))
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O!OO|sipiddpdpii", kwlist, &ori_py_PatternType, &pobj, &ao, &bo, &asg,
+                                     &in.face, &infinite, &in.fix, &in.fraction, &in.step_rad, &collisions, &in.clearance,
+                                     &probe, &in.max_steps, &in.probe_budget))
         return NULL;
     ori_py_pattern *pat = (ori_py_pattern *)pobj;
     in.collisions = collisions;
