@@ -191,7 +191,15 @@ typedef struct ori_py_layers {
     PyObject_HEAD
     ori_layers *l;
     PyObject *pattern;
+    bool busy; // count() runs without the GIL: the solver is not to be touched meanwhile
 } ori_py_layers;
+
+static bool layers_free(ori_py_layers *self)
+{
+    if (!self->busy) return true;
+    PyErr_SetString(PyExc_RuntimeError, "this Layers object is counting in another thread");
+    return false;
+}
 
 static void layers_dealloc(PyObject *obj)
 {
@@ -235,6 +243,7 @@ PyObject *ori_py_pattern_layers(PyObject *self, PyObject *args, PyObject *kw)
     ori_py_layers *L = PyObject_New(ori_py_layers, &ori_py_LayersType);
     if (!L) return NULL;
     L->l = NULL;
+    L->busy = false;
     L->pattern = Py_NewRef(self);
     ori_error err;
     ori_status st;
@@ -256,11 +265,14 @@ PyObject *ori_py_pattern_layers(PyObject *self, PyObject *args, PyObject *kw)
 static PyObject *layers_count(PyObject *obj, PyObject *args, PyObject *kw)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     ori_error err;
     ori_status st;
+    self->busy = true;
     Py_BEGIN_ALLOW_THREADS
     st = ori_layers_count(self->l, &err);
     Py_END_ALLOW_THREADS
+    self->busy = false;
     if (st != ORI_OK) return ori_py_raise(layers_source(self), &err);
     Py_RETURN_NONE;
 }
@@ -268,6 +280,7 @@ static PyObject *layers_count(PyObject *obj, PyObject *args, PyObject *kw)
 static PyObject *layers_info(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     ori_layers_info i = ori_layers_get_info(self->l);
     PyObject *d = ori_py_dict(
         "faces", PyLong_FromLong(i.faces), "variables", PyLong_FromLong(i.variables), "taco_taco",
@@ -283,6 +296,7 @@ static PyObject *layers_info(PyObject *obj, PyObject *args)
 static PyObject *layers_states(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     if (!ori_layers_get_info(self->l).counted) return PyErr_Format(PyExc_ValueError, "the states are not counted yet");
     return big(ori_layers_state_count(self->l));
 }
@@ -290,6 +304,7 @@ static PyObject *layers_states(PyObject *obj, PyObject *args)
 static PyObject *layers_components(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     bool counted = ori_layers_get_info(self->l).counted;
     int n = ori_layers_component_count(self->l);
     PyObject *out = PyList_New(n);
@@ -308,6 +323,7 @@ static PyObject *layers_components(PyObject *obj, PyObject *args)
 static PyObject *layers_conflict(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     ori_layers_conflict c;
     if (!ori_layers_get_conflict(self->l, &c)) Py_RETURN_NONE;
     int n = ori_layers_conflict_faces(self->l, NULL, 0);
@@ -327,6 +343,7 @@ static PyObject *layers_conflict(PyObject *obj, PyObject *args)
 static PyObject *layers_select(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     PyObject *k;
     if (!PyArg_ParseTuple(args, "O!", &PyLong_Type, &k)) return NULL;
     PyObject *s = PyObject_Str(k);
@@ -342,6 +359,7 @@ static PyObject *layers_select(PyObject *obj, PyObject *args)
 static PyObject *layers_face_orders(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     int n = ori_layers_face_orders(self->l, NULL, 0);
     npy_intp dims[2] = {n, 3};
     PyObject *arr = PyArray_SimpleNew(2, dims, NPY_INT);
@@ -352,6 +370,7 @@ static PyObject *layers_face_orders(PyObject *obj, PyObject *args)
 static PyObject *layers_folded(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     const ori_pattern *p = ((ori_py_pattern *)self->pattern)->p;
     npy_intp V = ori_pattern_vertex_count(p), F = ori_pattern_face_count(p), dims[2] = {V, 2};
     PyObject *xy = PyArray_SimpleNew(2, dims, NPY_DOUBLE), *flip = PyArray_SimpleNew(1, &F, NPY_BOOL);
@@ -373,6 +392,7 @@ static PyObject *layers_folded(PyObject *obj, PyObject *args)
 static PyObject *layers_svg(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     char *text = NULL;
     size_t size = 0;
     ori_error err;
@@ -388,6 +408,7 @@ static PyObject *layers_svg(PyObject *obj, PyObject *args)
 static PyObject *layers_to_fold_text(PyObject *obj, PyObject *args)
 {
     ori_py_layers *self = (ori_py_layers *)obj;
+    if (!layers_free(self)) return NULL;
     ori_py_pattern *pat = (ori_py_pattern *)self->pattern;
     PyObject *text = PyObject_CallMethod(self->pattern, "to_fold_text", NULL);
     if (!text) return NULL;

@@ -188,9 +188,12 @@ static PyObject *py_load(PyObject *mod, PyObject *args, PyObject *kw)
         } else {
             ori_pattern *p = NULL;
             ori_status st;
-            Py_BEGIN_ALLOW_THREADS st = ori_import_file(path, ORI_FORMAT_UNKNOWN, NULL, &p, NULL, &err);
-            Py_END_ALLOW_THREADS if (st != ORI_OK) ori_py_raise(path, &err);
-            else {
+            Py_BEGIN_ALLOW_THREADS
+            st = ori_import_file(path, ORI_FORMAT_UNKNOWN, NULL, &p, NULL, &err);
+            Py_END_ALLOW_THREADS
+            if (st != ORI_OK) {
+                ori_py_raise(path, &err);
+            } else {
                 ori_fold *doc = ori_fold_create();
                 ori_fold_set_custom(doc, 0, "frame_classes", "[\"creasePattern\"]", NULL);
                 ori_fold_set_pattern(doc, 0, p, NULL);
@@ -200,8 +203,10 @@ static PyObject *py_load(PyObject *mod, PyObject *args, PyObject *kw)
     } else {
         ori_fold *doc = NULL;
         ori_status st;
-        Py_BEGIN_ALLOW_THREADS st = ori_fold_load_file(path, &doc, &err);
-        Py_END_ALLOW_THREADS if (st != ORI_OK) ori_py_raise(path, &err);
+        Py_BEGIN_ALLOW_THREADS
+        st = ori_fold_load_file(path, &doc, &err);
+        Py_END_ALLOW_THREADS
+        if (st != ORI_OK) ori_py_raise(path, &err);
         else result = pattern_of_doc(doc, frame, weld, path);
     }
     Py_DECREF(path_obj);
@@ -398,8 +403,10 @@ static PyObject *py_generate(PyObject *mod, PyObject *args, PyObject *kw)
     ori_status st;
     char source[64];
     snprintf(source, sizeof source, "<generated %s>", ori_tessellation_name(t));
-    Py_BEGIN_ALLOW_THREADS st = ori_generate(&d, &p, &classes, &err);
-    Py_END_ALLOW_THREADS if (st != ORI_OK) return ori_py_raise(source, &err);
+    Py_BEGIN_ALLOW_THREADS
+    st = ori_generate(&d, &p, &classes, &err);
+    Py_END_ALLOW_THREADS
+    if (st != ORI_OK) return ori_py_raise(source, &err);
     // The edge classes as FOLD's "orikin:edges_class", as `orikin generate` writes them.
     int E = ori_pattern_edge_count(p);
     size_t cap = 16 + (size_t)E * 14;
