@@ -26,9 +26,12 @@ class CMakeBuild(build_ext):
         build = Path(self.build_temp).resolve() / "cmake"
         build.mkdir(parents=True, exist_ok=True)
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(min(os.cpu_count() or 2, 4)))
+        # CMake asks the interpreter for numpy: without pip's isolation (its PYTHONPATH hides the
+        # interpreter's site-packages), as the installed package will run.
+        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONNOUSERSITE", "PYTHONHOME")}
         subprocess.check_call(["cmake", "-S", str(REPO), "-B", str(build), "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
-                               "-DORI_TESTS=OFF", "-DORI_PYTHON=ON", f"-DPython3_EXECUTABLE={sys.executable}"])
-        subprocess.check_call(["cmake", "--build", str(build), "--target", "orikin_python", "-j", jobs])
+                               "-DORI_TESTS=OFF", "-DORI_PYTHON=ON", f"-DPython3_EXECUTABLE={sys.executable}"], env=env)
+        subprocess.check_call(["cmake", "--build", str(build), "--target", "orikin_python", "-j", jobs], env=env)
         built = list((build / "python" / "orikin").glob("_orikin*.so"))
         if not built:
             raise RuntimeError(f"{build}: CMake did not build orikin._orikin (python3-dev and python3-numpy installed?)")
