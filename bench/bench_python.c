@@ -30,25 +30,6 @@
 #define MIURA_N 100
 #define DESIGN_SECONDS 2.0
 
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 static int py_fail(const char *what)
 {
     printf("   python: %s failed:\n", what);
@@ -122,7 +103,7 @@ static int run(void)
     for (int r = 0; r < ROUNDS; ++r) {
         for (int side = 0; side < 2; ++side) {
             bool py = (side + r) % 2 == 1; // alternate which goes first
-            double t0 = bench_now(), u0 = cpu_now();
+            double t0 = bench_now(), u0 = bench_cpu_now();
             if (py) {
                 PyObject *res = PyObject_CallMethod(fold, "fold", NULL);
                 if (!res) return py_fail("Pattern.fold");
@@ -130,7 +111,7 @@ static int run(void)
                 p_last = PyFloat_AsDouble(PyTuple_GetItem(res, 1));
                 p_res = PyFloat_AsDouble(PyTuple_GetItem(res, 2));
                 Py_DECREF(res); // (the motion was freed when fold() returned: inside the time, as below)
-                pw[r] = bench_now() - t0, pc[r] = cpu_now() - u0;
+                pw[r] = bench_now() - t0, pc[r] = bench_cpu_now() - u0;
             } else {
                 ori_motion *mo = NULL;
                 ori_error err;
@@ -138,11 +119,11 @@ static int run(void)
                 c_frames = ori_motion_frame_count(mo);
                 c_last = ori_motion_frame_angles(mo, c_frames - 1)[c.d.driven_edge];
                 ori_motion_destroy(mo);
-                cw[r] = bench_now() - t0, cc[r] = cpu_now() - u0;
+                cw[r] = bench_now() - t0, cc[r] = bench_cpu_now() - u0;
             }
         }
     }
-    double mcw = median(cw, ROUNDS), mcc = median(cc, ROUNDS), mpw = median(pw, ROUNDS), mpc = median(pc, ROUNDS);
+    double mcw = bench_median(cw, ROUNDS), mcc = bench_median(cc, ROUNDS), mpw = bench_median(pw, ROUNDS), mpc = bench_median(pc, ROUNDS);
     printf("   %dx%d Miura 5->175 deg (%d frames kept): C API %.3f s wall (%.3f s CPU), Python %.3f s wall (%.3f s CPU), "
            "median of %d alternating rounds\n",
            MIURA_N, MIURA_N, c_frames, mcw, mcc, mpw, mpc, ROUNDS);

@@ -259,6 +259,47 @@ PyObject *ori_py_dict(const char *key, ...)
     return d;
 }
 
+// --- collisions ---------------------------------------------------------------------------------
+
+ori_collider *ori_py_collider(const ori_py_pattern *pat, double clearance)
+{
+    const char *src = ori_py_pattern_source(pat);
+    ori_collider_def cd = ori_default_collider_def();
+    cd.pattern = pat->p;
+    cd.clearance = clearance;
+    ori_collider *c = NULL;
+    ori_error err;
+    if (ori_collider_create(&cd, &c, &err) == ORI_OK) return c;
+    if (err.status == ORI_ERR_RANGE) // as the CLI words it (collide_args.c)
+        ori_py_raise_value(src, "--clearance", "must be a length >= 0, got %g", clearance);
+    else ori_py_raise(src, &err);
+    return NULL;
+}
+
+static const char *contact_kind_name(ori_contact_kind k)
+{
+    return k == ORI_CONTACT_PENETRATING ? "penetrating" : k == ORI_CONTACT_NEAR ? "near" : "touching";
+}
+
+PyObject *ori_py_contact_dict(const ori_contact *c)
+{
+    return ori_py_dict("faces", Py_BuildValue("(ii)", c->face_a, c->face_b), "kind",
+                       PyUnicode_FromString(contact_kind_name(c->kind)), "adjacent", PyBool_FromLong(c->adjacent),
+                       "stacked", PyBool_FromLong(c->stacked), "collides", PyBool_FromLong(c->collides), "distance",
+                       PyFloat_FromDouble(c->distance), "point", ori_py_v3(c->point), NULL);
+}
+
+PyObject *ori_py_event_dict(const ori_collision_event *ev, bool progress)
+{
+    PyObject *d = ori_py_contact_dict(&ev->contact);
+    PyObject *more = ori_py_dict("frame", PyLong_FromLong(ev->frame), "fold", PyLong_FromLong(ev->fold), "step",
+                                 PyLong_FromLong(ev->step), progress ? "progress" : "drive_rad",
+                                 PyFloat_FromDouble(ev->drive_rad), "time", PyFloat_FromDouble(ev->time), NULL);
+    if (!d || !more || PyDict_Update(d, more) < 0) Py_CLEAR(d);
+    Py_XDECREF(more);
+    return d;
+}
+
 // --- module functions ----------------------------------------------------------------------------
 
 static PyObject *py_version(PyObject *self, PyObject *args) { return PyUnicode_FromString(ori_version_string()); }

@@ -187,6 +187,29 @@ static bool read_linear(const char *s, ori_linear *out)
 
 // --- the folds ------------------------------------------------------------------------------------
 
+// The Motion of a fold with several degrees of freedom from face fix (the caller solves into mf).
+static ori_py_motion *multifold_motion(ori_py_pattern *pat, const fold_inputs *in, int fix)
+{
+    ori_motion_def md = ori_default_motion_def();
+    md.fixed_face = fix;
+    md.fixed_pose = in->pose;
+    return motion_new(pat, in->mech, &md, in->start, in->locks, in->nlocks);
+}
+
+// The Motion once its solve returned st: itself, or NULL after raising (the Motion released).
+static PyObject *solved(ori_py_motion *mo, ori_status st, ori_py_progress *pp, ori_py_pattern *pat, const ori_error *err)
+{
+    if (st != ORI_OK) {
+        Py_DECREF(mo);
+        return ori_py_solve_failed(pp, ori_py_pattern_source(pat), err);
+    }
+    if (ori_py_progress_raise(pp)) { // a callback that raised after the solve's last check
+        Py_DECREF(mo);
+        return NULL;
+    }
+    return (PyObject *)mo;
+}
+
 PyObject *ori_py_pattern_fold(PyObject *self, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"fix", "drive", "to_rad", "step_rad", "from_rad", "lock", "solver", "linear", "start",
@@ -239,15 +262,7 @@ PyObject *ori_py_pattern_fold(PyObject *self, PyObject *args, PyObject *kw)
     st = ori_motion_solve(in.mech->m, &d, &mo->mo, &err);
     Py_END_ALLOW_THREADS
     fold_inputs_free(&in);
-    if (st != ORI_OK) {
-        Py_DECREF(mo);
-        return ori_py_solve_failed(&pp, ori_py_pattern_source(pat), &err);
-    }
-    if (ori_py_progress_raise(&pp)) { // a callback that raised after the solve's last check
-        Py_DECREF(mo);
-        return NULL;
-    }
-    return (PyObject *)mo;
+    return solved(mo, st, &pp, pat, &err);
 }
 
 PyObject *ori_py_pattern_target_fold(PyObject *self, PyObject *args, PyObject *kw)
@@ -284,10 +299,7 @@ PyObject *ori_py_pattern_target_fold(PyObject *self, PyObject *args, PyObject *k
     d.edge_group = in.group;
     d.progress = ori_py_progress_fn;
     d.progress_user = &pp;
-    ori_motion_def md = ori_default_motion_def();
-    md.fixed_face = fix;
-    md.fixed_pose = in.pose;
-    ori_py_motion *mo = motion_new(pat, in.mech, &md, in.start, in.locks, in.nlocks);
+    ori_py_motion *mo = multifold_motion(pat, &in, fix);
     if (!mo) {
         Py_XDECREF(tarr);
         fold_inputs_free(&in);
@@ -301,15 +313,7 @@ PyObject *ori_py_pattern_target_fold(PyObject *self, PyObject *args, PyObject *k
     Py_END_ALLOW_THREADS
     Py_XDECREF(tarr);
     fold_inputs_free(&in);
-    if (st != ORI_OK) {
-        Py_DECREF(mo);
-        return ori_py_solve_failed(&pp, ori_py_pattern_source(pat), &err);
-    }
-    if (ori_py_progress_raise(&pp)) {
-        Py_DECREF(mo);
-        return NULL;
-    }
-    return (PyObject *)mo;
+    return solved(mo, st, &pp, pat, &err);
 }
 
 PyObject *ori_py_pattern_drives_fold(PyObject *self, PyObject *args, PyObject *kw)
@@ -346,24 +350,14 @@ PyObject *ori_py_pattern_drives_fold(PyObject *self, PyObject *args, PyObject *k
     d.edge_group = in.group;
     d.progress = ori_py_progress_fn;
     d.progress_user = &pp;
-    ori_motion_def md = ori_default_motion_def();
-    md.fixed_face = fix;
-    md.fixed_pose = in.pose;
-    ori_py_motion *mo = motion_new(pat, in.mech, &md, in.start, in.locks, in.nlocks);
+    ori_py_motion *mo = multifold_motion(pat, &in, fix);
     if (!mo) goto done;
     ori_error err;
     ori_status st;
     Py_BEGIN_ALLOW_THREADS
     st = ori_drives_fold_solve(in.mech->m, &d, &mo->mf, &err);
     Py_END_ALLOW_THREADS
-    if (st != ORI_OK) {
-        Py_DECREF(mo);
-        ori_py_solve_failed(&pp, ori_py_pattern_source(pat), &err);
-    } else if (ori_py_progress_raise(&pp)) {
-        Py_DECREF(mo);
-    } else {
-        result = (PyObject *)mo;
-    }
+    result = solved(mo, st, &pp, pat, &err);
 done:
     Py_XDECREF(ta);
     PyMem_Free(dv);
@@ -729,19 +723,6 @@ fail:
     return NULL;
 }
 
-static PyObject *event_dict(const ori_collision_event *ev, bool progress)
-{
-    const ori_contact *c = &ev->contact;
-    return ori_py_dict("frame", PyLong_FromLong(ev->frame), "fold", PyLong_FromLong(ev->fold), "step",
-                       PyLong_FromLong(ev->step), progress ? "progress" : "drive_rad", PyFloat_FromDouble(ev->drive_rad),
-                       "time", PyFloat_FromDouble(ev->time), "faces", Py_BuildValue("(ii)", c->face_a, c->face_b), "kind",
-                       PyUnicode_FromString(c->kind == ORI_CONTACT_PENETRATING ? "penetrating"
-                                            : c->kind == ORI_CONTACT_NEAR      ? "near"
-                                                                               : "touching"),
-                       "stacked", PyBool_FromLong(c->stacked), "point", ori_py_v3(c->point), "distance",
-                       PyFloat_FromDouble(c->distance), NULL);
-}
-
 // collide(clearance, progress): check the motion frame by frame for self-collision (as
 // `orikin fold` does); afterwards the motion shows the frames before the first contact.
 // Returns the first contact as a dict, or None.
@@ -756,16 +737,9 @@ static PyObject *motion_collide(PyObject *obj, PyObject *args, PyObject *kw)
     if (!ori_py_progress_init(&pp, progress)) return NULL;
     ori_py_pattern *pat = (ori_py_pattern *)self->pattern;
     const char *src = ori_py_pattern_source(pat);
-    ori_collider_def cd = ori_default_collider_def();
-    cd.pattern = pat->p;
-    cd.clearance = clearance;
-    ori_collider *c = NULL;
+    ori_collider *c = ori_py_collider(pat, clearance);
+    if (!c) return NULL;
     ori_error err;
-    if (ori_collider_create(&cd, &c, &err) != ORI_OK) {
-        if (err.status == ORI_ERR_RANGE)
-            return ori_py_raise_value(src, "--clearance", "must be a length >= 0, got %g", clearance);
-        return ori_py_raise(src, &err);
-    }
     ori_collision_motion_def check = ori_default_collision_motion_def();
     check.progress = ori_py_progress_fn;
     check.progress_user = &pp;
@@ -784,7 +758,7 @@ static PyObject *motion_collide(PyObject *obj, PyObject *args, PyObject *kw)
     self->ev = ev;
     self->clearance = clearance;
     if (!ev.collides) Py_RETURN_NONE;
-    return event_dict(&ev, self->mf != NULL);
+    return ori_py_event_dict(&ev, self->mf != NULL);
 }
 
 // lock_suggestion(): the lock set that leaves this single-drive fold one degree of freedom

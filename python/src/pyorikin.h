@@ -136,6 +136,13 @@ const ori_record *ori_py_record_of(PyObject *obj, const ori_sequence **seq);
 ori_py_pattern *ori_py_motion_pattern(PyObject *obj);
 ori_py_pattern *ori_py_record_pattern(PyObject *obj);
 
+// A collision checker of the pattern's faces (NULL after raising: a negative clearance is the
+// CLI's --clearance message), a contact and the first contact along a motion as dicts
+// (progress: the event's parameter is the progress of a fold with several degrees of freedom).
+ori_collider *ori_py_collider(const ori_py_pattern *pat, double clearance);
+PyObject *ori_py_contact_dict(const ori_contact *contact);
+PyObject *ori_py_event_dict(const ori_collision_event *event, bool progress);
+
 // Module-level functions by file (each returns a PyMethodDef table ending with a NULL entry).
 extern PyMethodDef ori_py_pattern_functions[], ori_py_motion_functions[], ori_py_analysis_functions[],
     ori_py_state_functions[], ori_py_sequence_functions[], ori_py_actuation_functions[], ori_py_unfold_functions[],

@@ -213,16 +213,9 @@ static PyObject *record_collide(PyObject *obj, PyObject *args, PyObject *kw)
     ori_py_progress pp;
     if (!ori_py_progress_init(&pp, progress)) return NULL;
     const char *src = record_source(self);
-    ori_collider_def cd = ori_default_collider_def();
-    cd.pattern = ((ori_py_pattern *)self->pattern)->p;
-    cd.clearance = clearance;
-    ori_collider *c = NULL;
+    ori_collider *c = ori_py_collider((ori_py_pattern *)self->pattern, clearance);
+    if (!c) return NULL;
     ori_error err;
-    if (ori_collider_create(&cd, &c, &err) != ORI_OK) {
-        if (err.status == ORI_ERR_RANGE)
-            return ori_py_raise_value(src, "--clearance", "must be a length >= 0, got %g", clearance);
-        return ori_py_raise(src, &err);
-    }
     ori_collision_motion_def check = ori_default_collision_motion_def();
     check.progress = ori_py_progress_fn;
     check.progress_user = &pp;
@@ -237,15 +230,7 @@ static PyObject *record_collide(PyObject *obj, PyObject *args, PyObject *kw)
     self->checked = true;
     self->ev = ev;
     if (!ev.collides) Py_RETURN_NONE;
-    const ori_contact *k = &ev.contact;
-    return ori_py_dict("frame", PyLong_FromLong(ev.frame), "fold", PyLong_FromLong(ev.fold), "step", PyLong_FromLong(ev.step),
-                       "drive_rad", PyFloat_FromDouble(ev.drive_rad), "time", PyFloat_FromDouble(ev.time), "faces",
-                       Py_BuildValue("(ii)", k->face_a, k->face_b), "kind",
-                       PyUnicode_FromString(k->kind == ORI_CONTACT_PENETRATING ? "penetrating"
-                                            : k->kind == ORI_CONTACT_NEAR      ? "near"
-                                                                               : "touching"),
-                       "stacked", PyBool_FromLong(k->stacked), "point", ori_py_v3(k->point), "distance",
-                       PyFloat_FromDouble(k->distance), NULL);
+    return ori_py_event_dict(&ev, false);
 }
 
 static PyObject *record_frames(PyObject *obj, void *what)

@@ -352,11 +352,6 @@ done:
     return result;
 }
 
-static const char *contact_kind(ori_contact_kind k)
-{
-    return k == ORI_CONTACT_PENETRATING ? "penetrating" : k == ORI_CONTACT_NEAR ? "near" : "touching";
-}
-
 // collide(pattern, positions, clearance): self-collision of one state.
 static PyObject *py_collide(PyObject *mod, PyObject *args, PyObject *kw)
 {
@@ -369,16 +364,12 @@ static PyObject *py_collide(PyObject *mod, PyObject *args, PyObject *kw)
     const char *src = ori_py_pattern_source(pat);
     ori_py_state s;
     if (!ori_py_state_read(&s, pat, Py_None, positions)) return NULL;
-    ori_collider_def cd = ori_default_collider_def();
-    cd.pattern = pat->p;
-    cd.clearance = clearance;
-    ori_collider *c = NULL;
-    ori_error err;
-    if (ori_collider_create(&cd, &c, &err) != ORI_OK) {
+    ori_collider *c = ori_py_collider(pat, clearance);
+    if (!c) {
         ori_py_state_free(&s);
-        if (err.status == ORI_ERR_RANGE) return ori_py_raise_value(src, "--clearance", "must be a length >= 0, got %g", clearance);
-        return ori_py_raise(src, &err);
+        return NULL;
     }
+    ori_error err;
     int V = ori_pattern_vertex_count(pat->p);
     ori_v3 *own = NULL;
     const ori_v3 *pos = s.positions;
@@ -405,10 +396,7 @@ static PyObject *py_collide(PyObject *mod, PyObject *args, PyObject *kw)
         PyObject *contacts = PyList_New(n);
         for (int i = 0; contacts && i < n; ++i) {
             ori_contact k = ori_collider_contact(c, i);
-            PyObject *o = ori_py_dict("faces", Py_BuildValue("(ii)", k.face_a, k.face_b), "kind",
-                                      PyUnicode_FromString(contact_kind(k.kind)), "adjacent", PyBool_FromLong(k.adjacent),
-                                      "stacked", PyBool_FromLong(k.stacked), "collides", PyBool_FromLong(k.collides),
-                                      "distance", PyFloat_FromDouble(k.distance), "point", ori_py_v3(k.point), NULL);
+            PyObject *o = ori_py_contact_dict(&k);
             if (!o) {
                 Py_CLEAR(contacts);
                 break;
