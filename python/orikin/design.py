@@ -5,6 +5,7 @@ a reinforcement-learning (gym) environment or a search needs, one call into the 
 
 from __future__ import annotations
 
+import math
 from typing import Any, Callable, Optional, Union
 
 from . import _orikin as _c
@@ -69,7 +70,7 @@ class DesignEnv:
         self.assignment = assignment
         self.fix = fix
         self.fraction = percent / 100.0
-        self.step_rad = step * 3.141592653589793 / 180.0
+        self.step_rad = math.radians(step)
         self.collisions = collisions
         self.clearance = clearance
         self.probe = probe

@@ -467,29 +467,24 @@ static PyObject *motion_vertices(PyObject *obj, PyObject *args)
     return ori_py_view(obj, NPY_DOUBLE, 3, dims, NULL, v ? v : &none);
 }
 
-static PyObject *motion_drives(PyObject *obj, PyObject *args)
+// Per frame shown: the driven crease's angle or the progress (which 0), the residual (1).
+static PyObject *motion_column(ori_py_motion *self, int which)
 {
-    ori_py_motion *self = (ori_py_motion *)obj;
     npy_intp n = shown_frames(self);
     PyObject *arr = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
     if (!arr) return NULL;
     double *out = PyArray_DATA((PyArrayObject *)arr);
-    for (npy_intp k = 0; k < n; ++k)
-        out[k] = self->mo ? ori_motion_frame_drive(self->mo, (int)k) : ori_multifold_frame_progress(self->mf, (int)k);
+    for (npy_intp k = 0; k < n; ++k) {
+        int f = (int)k;
+        if (self->mo) out[k] = which ? ori_motion_frame_residual(self->mo, f) : ori_motion_frame_drive(self->mo, f);
+        else out[k] = which ? ori_multifold_frame_residual(self->mf, f) : ori_multifold_frame_progress(self->mf, f);
+    }
     return arr;
 }
 
-static PyObject *motion_residuals(PyObject *obj, PyObject *args)
-{
-    ori_py_motion *self = (ori_py_motion *)obj;
-    npy_intp n = shown_frames(self);
-    PyObject *arr = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
-    if (!arr) return NULL;
-    double *out = PyArray_DATA((PyArrayObject *)arr);
-    for (npy_intp k = 0; k < n; ++k)
-        out[k] = self->mo ? ori_motion_frame_residual(self->mo, (int)k) : ori_multifold_frame_residual(self->mf, (int)k);
-    return arr;
-}
+static PyObject *motion_drives(PyObject *obj, PyObject *args) { return motion_column((ori_py_motion *)obj, 0); }
+
+static PyObject *motion_residuals(PyObject *obj, PyObject *args) { return motion_column((ori_py_motion *)obj, 1); }
 
 static bool frame_index(const ori_py_motion *self, int *k)
 {
