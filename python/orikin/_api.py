@@ -1009,21 +1009,11 @@ class Record:
              progress: Progress = None) -> "Record":
         """Run a SEQ.json file: {"pattern": FILE.fold (relative to it), "frame": N, "folds": [...]}."""
         path = os.fspath(path)
-        try:
-            with open(path) as f:
-                doc = json.load(f)
-        except OSError as e:
-            raise _usage(f"{path}: cannot open: {e.strerror}") from None
-        except json.JSONDecodeError as e:
-            raise _usage(f"{path}: line {e.lineno}, column {e.colno}: {e.msg}") from None
-        pat_path = doc.get("pattern") if isinstance(doc, dict) else None
-        if not isinstance(pat_path, str):
-            raise _usage(f"{path}: pattern: must name the FOLD file of the crease pattern")
-        pat = Pattern.load(os.path.join(os.path.dirname(path), pat_path))
-        frame = int(doc.get("frame", 0))
+        _, pattern_path, frame = _c.sequence_file(path)  # the library's reader: the CLI's messages
+        with open(path, encoding="utf-8-sig") as f:
+            text = f.read()  # as written: faces and creases by name or point are resolved below
+        pat = Pattern.load(os.path.join(os.path.dirname(path), pattern_path))
         start, coords = pat._start(frame, None)
-        with open(path) as f:
-            text = f.read()
         r = cls(pat._p.sequence(text, start, coords, path, progress), pat)
         if collisions:
             r.collide(clearance)

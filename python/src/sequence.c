@@ -290,4 +290,29 @@ const ori_record *ori_py_record_of(PyObject *obj, const ori_sequence **seq)
 
 ori_py_pattern *ori_py_record_pattern(PyObject *obj) { return (ori_py_pattern *)((ori_py_record *)obj)->pattern; }
 
-PyMethodDef ori_py_sequence_functions[] = {{NULL, NULL, 0, NULL}};
+// sequence_file(path): (its text, the pattern path as written, the start frame), read and parsed
+// by the library (ori_sequence_load_file: the CLI's messages, with the JSON line and column).
+static PyObject *py_sequence_file(PyObject *mod, PyObject *args)
+{
+    PyObject *path_obj;
+    if (!PyArg_ParseTuple(args, "O&", PyUnicode_FSConverter, &path_obj)) return NULL;
+    const char *path = PyBytes_AS_STRING(path_obj);
+    ori_sequence *seq = NULL;
+    ori_error err;
+    PyObject *r = NULL;
+    if (ori_sequence_load_file(path, &seq, &err) != ORI_OK) {
+        ori_py_raise(path, &err);
+    } else {
+        char *text = ori_sequence_to_json(seq);
+        r = text ? Py_BuildValue("(ssi)", text, ori_sequence_pattern_path(seq), ori_sequence_frame(seq)) : PyErr_NoMemory();
+        ori_buffer_free(text);
+    }
+    ori_sequence_destroy(seq);
+    Py_DECREF(path_obj);
+    return r;
+}
+
+PyMethodDef ori_py_sequence_functions[] = {
+    {"sequence_file", py_sequence_file, METH_VARARGS, "sequence_file(path): (JSON text, pattern path, frame)."},
+    {NULL, NULL, 0, NULL},
+};

@@ -92,3 +92,14 @@ def test_a_from_fold_dict_error_has_the_line_of_the_json():
     with pytest.raises(orikin.InputError) as e:
         orikin.Pattern.from_fold('{"vertices_coords": [[0, 0]')
     assert e.value.line == 1 and e.value.status == "ERR_PARSE"
+
+
+def test_a_bad_sequence_file_raises_the_clis_message(monkeypatch, tmp_path):
+    bad = tmp_path / "bad.seq.json"
+    bad.write_text('{"pattern": "x.fold", "folds": [')
+    monkeypatch.chdir(repo("."))
+    for path in ("nope.seq.json", str(bad)):
+        want = cli_error(f"sequence {path}")
+        with pytest.raises(orikin.InputError) as e:
+            orikin.Record.load(path)
+        assert str(e.value) == want
