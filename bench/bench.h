@@ -14,6 +14,10 @@ typedef struct bench_scenario {
 
 // Monotonic wall clock in seconds.
 double bench_now(void);
+// CPU time of this process in seconds (all its threads): steadier than wall time on a shared machine.
+double bench_cpu_now(void);
+// The median of n values (sorts v in place).
+double bench_median(double *v, int n);
 // Peak resident set size in bytes since the scenario started (VmHWM, reset before each
 // scenario), 0 if unknown.
 int64_t bench_peak_rss(void);

@@ -17,13 +17,6 @@
 
 #define DEG (ORI_PI / 180.0)
 
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static ori_pattern *miura(int n)
 {
     ori_generate_def g = ori_default_generate_def(ORI_TESS_MIURA);
@@ -126,10 +119,10 @@ static int dynamics(void)
     sd.settle = false;
     ori_alloc_reset_peak();
     int64_t base = ori_alloc_live_bytes();
-    double t0 = bench_now(), c0 = cpu_now();
+    double t0 = bench_now(), c0 = bench_cpu_now();
     ori_simulation *s = NULL;
     ori_status st = ori_simulation_run(&sd, &s, &err);
-    double t1 = bench_now(), c1 = cpu_now();
+    double t1 = bench_now(), c1 = bench_cpu_now();
     if (st != ORI_OK) {
         printf("   dynamics failed: %s\n", err.message);
         return 1;
@@ -189,10 +182,10 @@ static int sizing(void)
     sd.sequence = seq;
     ori_alloc_reset_peak();
     int64_t base = ori_alloc_live_bytes();
-    double t2 = bench_now(), c2 = cpu_now();
+    double t2 = bench_now(), c2 = bench_cpu_now();
     ori_sizing *z = NULL;
     ori_status st = ori_sizing_solve(&sd, &z, &err);
-    double t3 = bench_now(), c3 = cpu_now();
+    double t3 = bench_now(), c3 = bench_cpu_now();
     if (st != ORI_OK) {
         printf("   sizing failed: %s\n", err.message);
         return 1;

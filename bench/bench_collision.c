@@ -14,13 +14,6 @@
 #include <orikin/generate.h>
 #include <orikin/kinematics.h>
 
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static int one(int rows, int cols)
 {
     ori_generate_def g = ori_default_generate_def(ORI_TESS_MIURA);
@@ -63,9 +56,9 @@ static int one(int rows, int cols)
     ori_collision_result r;
     double best = INFINITY;
     for (int rep = 0; rep < 5; ++rep) {
-        double t0 = cpu_now();
+        double t0 = bench_cpu_now();
         if (ori_collider_check(c, pos, &r, &err) != ORI_OK) return 1;
-        best = fmin(best, cpu_now() - t0);
+        best = fmin(best, bench_cpu_now() - t0);
     }
     double heap = (double)(ori_alloc_peak_bytes() - base);
     double all = (double)nf * (nf - 1) / 2.0;
@@ -81,9 +74,9 @@ static int one(int rows, int cols)
     base = ori_alloc_live_bytes();
     ori_collision_motion_def md2 = ori_default_collision_motion_def();
     ori_collision_event ev;
-    double t0 = cpu_now(), w0 = bench_now();
+    double t0 = bench_cpu_now(), w0 = bench_now();
     if (ori_collision_check_motion(c, m, &d, mo, &md2, &ev, &err) != ORI_OK) return 1;
-    double t1 = cpu_now(), w1 = bench_now();
+    double t1 = bench_cpu_now(), w1 = bench_now();
     printf("   %3dx%-3d whole motion 5->175 deg, %d frames: %.3f s CPU (%.3f s wall), %.1f ms per frame, %s; heap %.0f "
            "bytes per face\n",
            rows, cols, ori_motion_frame_count(mo), t1 - t0, w1 - w0, 1e3 * (t1 - t0) / ori_motion_frame_count(mo),

@@ -10,13 +10,6 @@
 #include <orikin/generate.h>
 #include <orikin/kinematics.h>
 
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static int one(const char *name, ori_tessellation kind, int rows, int cols)
 {
     ori_generate_def g = ori_default_generate_def(kind);
@@ -35,9 +28,9 @@ static int one(const char *name, ori_tessellation kind, int rows, int cols)
     }
     ori_dof_def d = ori_default_dof_def();
     ori_dof_result r;
-    double t0 = bench_now(), c0 = cpu_now();
+    double t0 = bench_now(), c0 = bench_cpu_now();
     ori_status st = ori_mechanism_dof(m, &d, &r, &err);
-    double t1 = bench_now(), c1 = cpu_now();
+    double t1 = bench_now(), c1 = bench_cpu_now();
     if (st == ORI_OK) {
         char nearby[64];
         if (r.undetermined) snprintf(nearby, sizeof nearby, "undetermined");

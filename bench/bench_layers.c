@@ -21,13 +21,6 @@
 
 #include "bench.h"
 
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 typedef struct timing {
     double setup_cpu, solve_cpu, setup_wall, solve_wall;
     int64_t peak;
@@ -52,18 +45,18 @@ static timing measure_limited(const ori_pattern *p, int threads, uint64_t limit,
         ori_error err;
         int64_t base = ori_alloc_live_bytes();
         ori_alloc_reset_peak();
-        double c0 = cpu_now(), w0 = bench_now();
+        double c0 = bench_cpu_now(), w0 = bench_now();
         if (ori_layers_create(p, &def, &L, &err) != ORI_OK) {
             snprintf(t.states, sizeof t.states, "error: %.80s", err.message);
             return t;
         }
-        double c1 = cpu_now(), w1 = bench_now();
+        double c1 = bench_cpu_now(), w1 = bench_now();
         if (ori_layers_count(L, &err) != ORI_OK) {
             ori_layers_destroy(L);
             snprintf(t.states, sizeof t.states, "error: %.80s", err.message);
             return t;
         }
-        double c2 = cpu_now(), w2 = bench_now();
+        double c2 = bench_cpu_now(), w2 = bench_now();
         t.setup_cpu = fmin(t.setup_cpu, c1 - c0);
         t.solve_cpu = fmin(t.solve_cpu, c2 - c1);
         t.setup_wall = fmin(t.setup_wall, w1 - w0);

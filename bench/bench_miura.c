@@ -32,14 +32,6 @@ static ori_pattern *miura(int rows, int cols)
     return ori_generate(&g, &p, NULL, &err) == ORI_OK ? p : NULL;
 }
 
-// CPU time of this process (seconds): steadier than wall time on a shared machine.
-static double cpu_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 // Reset the peak resident set size (Linux: "5" to /proc/self/clear_refs): the RSS peak printed
 // is the fold's, not the flat → 5° setup's (its second-order analysis peaks higher).
 static void reset_peak_rss(void)
@@ -80,10 +72,10 @@ static int one(int n)
     ori_alloc_reset_peak();
     reset_peak_rss();
     int64_t base = ori_alloc_live_bytes();
-    double t2 = bench_now(), c2 = cpu_now();
+    double t2 = bench_now(), c2 = bench_cpu_now();
     ori_motion *mo = NULL;
     if (ori_motion_solve(m, &d, &mo, &err) != ORI_OK) return 1;
-    double t3 = bench_now(), c3 = cpu_now();
+    double t3 = bench_now(), c3 = bench_cpu_now();
 
     ori_motion_stats st = ori_motion_stats_of(mo);
     printf("   %3dx%-3d %5d creases: flat->5deg %.3f s; 5->175deg %.3f s wall (%.3f s CPU), %d frames, %d steps "

@@ -252,49 +252,7 @@ int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const
     return cli_value_fail(cmd, path, option, "no face contains (%g, %g) (see orikin info --faces)", xy[0], xy[1]);
 }
 
-int cli_fold_default_fix(const ori_pattern *p)
-{
-    int nv = ori_pattern_vertex_count(p), nf = ori_pattern_face_count(p);
-    if (nv == 0 || nf == 0) return 0;
-    ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
-    for (int v = 1; v < nv; ++v) {
-        ori_v3 c = ori_pattern_vertex(p, v);
-        lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
-    }
-    ori_v2 c = ori_v2_make(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
-    double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
-    // The face containing the centre; else (the centre on a crease, or in a hole) the face whose
-    // vertex centroid is nearest to it, the lowest index on a tie.
-    bool on_edge;
-    int inside = ori_pattern_find_face_at(p, c, &on_edge);
-    if (inside != ORI_NULL_INDEX && !on_edge) return inside;
-    int best = 0;
-    double best_d = INFINITY;
-    int *vs = NULL, cap = 0;
-    for (int f = 0; f < nf; ++f) {
-        int n = ori_pattern_face_size(p, f);
-        if (n <= 0) continue;
-        if (n > cap) {
-            cap = n;
-            free(vs);
-            vs = malloc(sizeof(int) * (size_t)cap);
-            if (!vs) return best;
-        }
-        ori_pattern_face_vertices(p, f, vs, n);
-        double x = 0.0, y = 0.0;
-        for (int i = 0; i < n; ++i) {
-            ori_v3 q = ori_pattern_vertex(p, vs[i]);
-            x += q.x / n, y += q.y / n;
-        }
-        double d = hypot(x - c.x, y - c.y);
-        if (d < best_d - tol) {
-            best_d = d;
-            best = f;
-        }
-    }
-    free(vs);
-    return best;
-}
+int cli_fold_default_fix(const ori_pattern *p) { return ori_pattern_center_face(p); }
 
 int cli_spec_edge(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
                   int *edge)

@@ -27,6 +27,12 @@ libqhull-dev
 libdouble-conversion-dev
 poppler-utils
 chromium
+python3-dev
+python3-numpy
+python3-pytest
+python3-setuptools
+python3-wheel
+python3-matplotlib
 "
 # Node.js and npm come with the machine on most set-ups; from Debian when they are missing.
 if ! command -v npm >/dev/null 2>&1; then

@@ -9,7 +9,7 @@
 ///
 /// Functions: ori_default_insert_def, ori_pattern_insert_segment, ori_pattern_insert_segments,
 /// ori_pattern_from_segments, ori_pattern_find_edge_at, ori_pattern_find_face_at,
-/// ori_pattern_edges_on_segment.
+/// ori_pattern_center_face, ori_pattern_edges_on_segment.
 ///
 /// Robustness: every topological decision (which side of a line, crossing or not, collinear,
 /// inside a face corner) is an exact ori_orient2d_sign on stored coordinates; crossing points
@@ -112,6 +112,12 @@ ORI_API int ori_pattern_find_edge_at(const ori_pattern *pattern, ori_v2 point);
 /// ORI_NULL_INDEX. A point within ORI_TOL_ON_LINE_REL × diagonal of a face's boundary returns that
 /// face with *on_edge true (on_edge may be NULL); the lowest such face index wins.
 ORI_API int ori_pattern_find_face_at(const ori_pattern *pattern, ori_v2 point, bool *on_edge);
+
+/// The face a fold holds fixed when none is named (the CLI's default --fix, the Python binding's
+/// default fix): the face containing the centre of the flat sheet's bounding box, else (the
+/// centre on a crease or in a hole) the face whose vertex centroid is nearest to it, the lowest
+/// index on a tie (within ORI_TOL_ON_LINE_REL × diagonal); 0 for a pattern without faces.
+ORI_API int ori_pattern_center_face(const ori_pattern *pattern);
 
 /// Edges lying along the segment ab (both end points within ORI_TOL_ON_LINE_REL × diagonal of
 /// it), in order of their index; writes up to cap into out and returns the total count.

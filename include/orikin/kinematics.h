@@ -15,12 +15,13 @@
 /// ori_motion_verdict_name, ori_motion_reason, ori_motion_violation_count,
 /// ori_motion_violation, ori_motion_frame_count, ori_motion_frame_drive,
 /// ori_motion_frame_angles, ori_motion_frame_residual, ori_motion_frame_face_poses,
-/// ori_motion_frame_vertices, ori_motion_frame_other_branch, ori_motion_frame_end_effector, ori_motion_fixed_face,
+/// ori_motion_frame_vertices, ori_motion_angles, ori_motion_vertices, ori_motion_frame_other_branch, ori_motion_frame_end_effector, ori_motion_fixed_face,
 /// ori_motion_fixed_pose, ori_motion_split, ori_motion_stats_of, ori_motion_block_of, ori_motion_dof,
 /// ori_default_fit_def, ori_fit_solve, ori_fit_destroy, ori_fit_crease_count,
 /// ori_fit_crease_of, ori_fit_sample_count, ori_fit_coefficients, ori_fit_eval,
 /// ori_default_target_fold_def, ori_target_angles_default, ori_target_fold_solve,
-/// ori_default_drives_fold_def, ori_drives_fold_solve, ori_multifold_* (result getters),
+/// ori_default_drives_fold_def, ori_drives_fold_solve, ori_multifold_* (result getters, ori_multifold_angles,
+/// ori_multifold_vertices, ori_multifold_at),
 /// ori_mechanism_lock_set, ori_mechanism_symmetries, ori_mechanism_symmetry_orbits.
 ///
 /// Frames and signs. The reference configuration is the flat sheet in z = 0 with faces
@@ -366,6 +367,15 @@ ORI_API double ori_motion_frame_residual(const ori_motion *motion, int frame);
 ORI_API void ori_motion_frame_face_poses(const ori_motion *motion, int frame, ori_rigid *poses);
 /// World vertex positions of a frame (vertex_count entries).
 ORI_API void ori_motion_frame_vertices(const ori_motion *motion, int frame, ori_v3 *positions);
+/// Fold angles of every frame in one block owned by the motion: frame k's edge_count angles start
+/// at the result + k × *frame_stride (frame_stride ≥ edge_count, may be NULL). Valid until the
+/// motion is destroyed; NULL when there are no frames. For bindings that view, not copy.
+ORI_API const double *ori_motion_angles(const ori_motion *motion, int *frame_stride);
+/// World vertex positions of every frame in one block owned by the motion: frame_count ×
+/// vertex_count entries, frame-major (frame k as ori_motion_frame_vertices gives it). Computed on
+/// the first call (not safe against a concurrent first call on the same motion), then kept until
+/// the motion is destroyed; NULL when there are no frames.
+ORI_API const ori_v3 *ori_motion_vertices(ori_motion *motion);
 /// Closed-form folds return every branch: the fold angles (edge_count entries) of the spherical
 /// 4R's other solution at the frame's drive value. False when there is none (a double root,
 /// the start frame, or the numeric solver).
@@ -462,13 +472,15 @@ typedef struct ori_target_fold_def {
     const int *locked_edges;         ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;           ///< NULL, or edge_count entries: creases with the same group ≥ 0 are kept at equal angles (e.g. symmetry orbits)
+    int max_steps;                   ///< most continuation steps (≤ 0: ORI_MULTIFOLD_MAX_STEPS), the bound of the pace test too;
+                                     ///< beyond: verdict STATIONARY, frames kept (a design search bounds each judgement so)
     ori_progress_fn *progress;       ///< called per accepted step with the fraction of the distance to the goal covered
                                      ///< (monotone, 1 at the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
     void *progress_user;
     int internal_value;              ///< set by ori_default_target_fold_def; do not change
 } ori_target_fold_def;
 
-/// Defaults: face 0 fixed at identity, flat start, file targets, fraction 1, step 10°.
+/// Defaults: face 0 fixed at identity, flat start, file targets, fraction 1, step 10°, ORI_MULTIFOLD_MAX_STEPS steps.
 ORI_API ori_target_fold_def ori_default_target_fold_def(void);
 
 /// Target angles of a flat crease pattern (edge_count entries, radians): the pattern's fold angle
@@ -537,6 +549,20 @@ ORI_API double ori_multifold_frame_residual(const ori_multifold *fold, int k);
 ORI_API double ori_multifold_frame_progress(const ori_multifold *fold, int k);
 /// World vertex positions of frame k (vertex_count entries).
 ORI_API void ori_multifold_frame_vertices(const ori_multifold *fold, int k, ori_v3 *positions);
+/// Fold angles of every frame in one block owned by the result, as ori_motion_angles: frame k
+/// starts at the result + k × *frame_stride (may be NULL). NULL when there are no frames.
+ORI_API const double *ori_multifold_angles(const ori_multifold *fold, int *frame_stride);
+/// World vertex positions of every frame in one block owned by the result (frame_count ×
+/// vertex_count, frame-major), computed on the first call as ori_motion_vertices; NULL without frames.
+ORI_API const ori_v3 *ori_multifold_vertices(ori_multifold *fold);
+/// The state at progress (between the first and the last frame's, ori_multifold_frame_progress):
+/// the two frames around it interpolated linearly in the progress and closed onto the
+/// loop-closure manifold with locked_edges held (the fold's locks; may be NULL when
+/// locked_count is 0), as the collision check and ori_record_at do between frames. Writes
+/// angles_rad (edge_count) and, when not NULL, positions (vertex_count). Fails with ORI_ERR_RANGE
+/// outside the frames' progress or without frames, ORI_ERR_NOT_CONVERGED when the state does not close.
+ORI_API ori_status ori_multifold_at(const ori_multifold *fold, const int *locked_edges, int locked_count,
+                                    double progress, double *angles_rad, ori_v3 *positions, ori_error *error);
 /// The goal angles (edge_count entries, radians; owned): targets scaled by the fraction, or the
 /// drives' final angles (other creases: their start angle).
 ORI_API const double *ori_multifold_goal(const ori_multifold *fold);

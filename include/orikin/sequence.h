@@ -9,7 +9,8 @@
 /// ori_record_fold_count, ori_record_completed_folds, ori_record_partial_frames, ori_record_verdict, ori_record_reason,
 /// ori_record_failed_fold, ori_record_frame_count, ori_record_frame_time,
 /// ori_record_frame_fold, ori_record_frame_drive, ori_record_frame_angles,
-/// ori_record_frame_residual, ori_record_frame_vertices, ori_record_duration, ori_record_at.
+/// ori_record_frame_residual, ori_record_frame_vertices, ori_record_angles, ori_record_vertices,
+/// ori_record_duration, ori_record_at.
 ///
 /// Time: T runs from 0 (the start state) to the number of completed folds; T = k + s with
 /// 0 ≤ s ≤ 1 is the fraction s of fold k + 1's drive range (T = 1.5: halfway through fold 2).
@@ -130,6 +131,12 @@ ORI_API const double *ori_record_frame_angles(const ori_record *record, int fram
 ORI_API double ori_record_frame_residual(const ori_record *record, int frame);
 /// World vertex positions of a recorded state (vertex_count entries). Owned by the record.
 ORI_API const ori_v3 *ori_record_frame_vertices(const ori_record *record, int frame);
+/// Fold angles of every recorded state in one block owned by the record: state k's edge_count
+/// angles start at the result + k × *frame_stride (may be NULL). NULL when there are no states.
+ORI_API const double *ori_record_angles(const ori_record *record, int *frame_stride);
+/// World vertex positions of every recorded state in one block owned by the record
+/// (frame_count × vertex_count, frame-major). NULL when there are no states.
+ORI_API const ori_v3 *ori_record_vertices(const ori_record *record);
 /// The end of time: the number of completed folds.
 ORI_API double ori_record_duration(const ori_record *record);
 

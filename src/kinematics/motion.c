@@ -39,6 +39,7 @@ struct ori_motion {
     bool has_split;
     ori_vertex_split split;
     ori_v3 *ee_a, *ee_b;
+    ori_v3 *vertices; // every frame's vertex positions, computed by the first ori_motion_vertices
     ori_motion_stats stats;
     int dof;
     ori_motion_block block;
@@ -77,6 +78,7 @@ void ori_motion_destroy(ori_motion *mo)
     ori__free(mo->has_alt);
     ori__free(mo->ee_a);
     ori__free(mo->ee_b);
+    ori__free(mo->vertices);
     ori__free(mo);
 }
 
@@ -2017,3 +2019,22 @@ bool ori_motion_block_of(const ori_motion *mo, ori_motion_block *out)
     return true;
 }
 int ori_motion_dof(const ori_motion *mo) { ORI_ASSERT(mo); return mo->dof; }
+
+const double *ori_motion_angles(const ori_motion *mo, int *frame_stride)
+{
+    ORI_ASSERT(mo);
+    if (frame_stride) *frame_stride = mo->edge_count + 1;
+    return mo->nframes > 0 ? mo->angles : NULL;
+}
+
+const ori_v3 *ori_motion_vertices(ori_motion *mo)
+{
+    ORI_ASSERT(mo);
+    if (mo->nframes == 0) return NULL;
+    if (!mo->vertices) {
+        size_t V = (size_t)ori_mechanism_vertex_count(mo->m);
+        mo->vertices = ori__alloc(sizeof(ori_v3) * ((size_t)mo->nframes * V + 1));
+        for (int k = 0; k < mo->nframes; ++k) ori_motion_frame_vertices(mo, k, mo->vertices + (size_t)k * V);
+    }
+    return mo->vertices;
+}

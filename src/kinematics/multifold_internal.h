@@ -72,6 +72,7 @@ struct ori_multifold {
     double *goal;   // edge_count + 1
     int steps, rejected, newton;
     int pinned; // creases held at ±180° (their own target) while the others went on
+    ori_v3 *vertices; // every frame's vertex positions, computed by the first ori_multifold_vertices
 };
 
 ori_multifold *ori__mf_result_create(const ori_mechanism *m, int fixed_face, ori_rigid fixed_pose);

@@ -329,6 +329,7 @@ void ori_multifold_destroy(ori_multifold *mo)
     ori__free(mo->residual);
     ori__free(mo->progress);
     ori__free(mo->goal);
+    ori__free(mo->vertices);
     ori__free(mo);
 }
 
@@ -398,6 +399,51 @@ void ori_multifold_frame_vertices(const ori_multifold *mo, int k, ori_v3 *positi
     ORI_ASSERT(mo && positions);
     ori_mechanism_vertex_positions(mo->m, ori_multifold_frame_angles(mo, k), mo->fixed_face, mo->fixed_pose,
                                    positions);
+}
+
+const double *ori_multifold_angles(const ori_multifold *mo, int *frame_stride)
+{
+    ORI_ASSERT(mo);
+    if (frame_stride) *frame_stride = mo->edge_count + 1;
+    return mo->nframes > 0 ? mo->angles : NULL;
+}
+
+const ori_v3 *ori_multifold_vertices(ori_multifold *mo)
+{
+    ORI_ASSERT(mo);
+    if (mo->nframes == 0) return NULL;
+    if (!mo->vertices) {
+        size_t V = (size_t)ori_mechanism_vertex_count(mo->m);
+        mo->vertices = ori__alloc(sizeof(ori_v3) * ((size_t)mo->nframes * V + 1));
+        for (int k = 0; k < mo->nframes; ++k) ori_multifold_frame_vertices(mo, k, mo->vertices + (size_t)k * V);
+    }
+    return mo->vertices;
+}
+
+ori_status ori_multifold_at(const ori_multifold *mo, const int *locked_edges, int locked_count, double progress,
+                            double *angles_rad, ori_v3 *positions, ori_error *error)
+{
+    ORI_ASSERT(mo && angles_rad && (locked_count == 0 || locked_edges));
+    ori_error_clear(error);
+    int n = mo->nframes;
+    if (n == 0 || !(progress >= mo->progress[0] && progress <= mo->progress[n - 1]))
+        return ori__fail(error, ORI_ERR_RANGE, "progress %g is outside the frames' [%g, %g]", progress,
+                         n ? mo->progress[0] : 0.0, n ? mo->progress[n - 1] : 0.0);
+    // The frames' progress increases: the bracket is the last frame at or before the progress.
+    int k = 0;
+    while (k + 1 < n && mo->progress[k + 1] <= progress) k++;
+    const double *a0 = ori_multifold_frame_angles(mo, k);
+    if (k + 1 == n || mo->progress[k] == progress) {
+        memcpy(angles_rad, a0, sizeof(double) * (size_t)mo->edge_count);
+    } else {
+        const double *a1 = ori_multifold_frame_angles(mo, k + 1);
+        double w = (progress - mo->progress[k]) / (mo->progress[k + 1] - mo->progress[k]);
+        for (int e = 0; e < mo->edge_count; ++e) angles_rad[e] = a0[e] + w * (a1[e] - a0[e]);
+        ori_status st = ori__mf_close(mo->m, locked_edges, locked_count, angles_rad, error);
+        if (st != ORI_OK) return st;
+    }
+    if (positions) ori_mechanism_vertex_positions(mo->m, angles_rad, mo->fixed_face, mo->fixed_pose, positions);
+    return ORI_OK;
 }
 
 const double *ori_multifold_goal(const ori_multifold *mo)
@@ -616,6 +662,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double stall_ring[ORI_MULTIFOLD_STALL_STEPS], path_ring[ORI_MULTIFOLD_STALL_STEPS], h_ring[ORI_MULTIFOLD_STALL_STEPS];
     double path = 0.0; // length of the path so far (2-norm over the variables' joints)
     int stall_n = 0;
+    const int max_steps = def->max_steps > 0 ? def->max_steps : ORI_MULTIFOLD_MAX_STEPS;
     while (!done && !cancelled) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
@@ -629,11 +676,11 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             snprintf(mo->reason, sizeof mo->reason, "every crease reached its goal (within %.0e rad)", ORI_TOL_TARGET_RAD);
             break;
         }
-        if (mo->steps >= ORI_MULTIFOLD_MAX_STEPS) {
+        if (mo->steps >= max_steps) {
             mo->verdict = ORI_MULTIFOLD_STATIONARY;
             snprintf(mo->reason, sizeof mo->reason,
                      "the motion came no nearer to the goal within %d steps (it creeps along a valley of the distance)",
-                     ORI_MULTIFOLD_MAX_STEPS);
+                     max_steps);
             break;
         }
         if (!ori__mf_linearize(&sys, th)) {
@@ -666,7 +713,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             double before = stall_ring[old], walked = path - path_ring[old], fell = before - D;
             // At the pace of the last steps (the step length not growing), the goal lies beyond
             // the steps a fold may take: stop now rather than after them.
-            double left = (double)(ORI_MULTIFOLD_MAX_STEPS - mo->steps);
+            double left = (double)(max_steps - mo->steps);
             if (h <= h_ring[old] && fell * left < (double)ORI_MULTIFOLD_STALL_STEPS * D) {
                 mo->verdict = ORI_MULTIFOLD_STATIONARY;
                 snprintf(mo->reason, sizeof mo->reason,
@@ -674,7 +721,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                          "steps it moved %.3g rad and its distance to the goal fell by %.3g rad (%.2g %%), so the "
                          "%.4g rad left would take about %.3g more steps (a fold may take %d); it got %.4g %% of the way",
                          ORI_MULTIFOLD_STALL_STEPS, walked, fell, before > 0.0 ? 100.0 * fell / before : 0.0, D,
-                         fell > 0.0 ? D / fell * ORI_MULTIFOLD_STALL_STEPS : INFINITY, ORI_MULTIFOLD_MAX_STEPS,
+                         fell > 0.0 ? D / fell * ORI_MULTIFOLD_STALL_STEPS : INFINITY, max_steps,
                          D0 > 0.0 ? 100.0 * (1.0 - D / D0) : 100.0);
                 break;
             }

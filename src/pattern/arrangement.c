@@ -1864,6 +1864,47 @@ ori_status ori_pattern_from_segments(const ori_segment *segs, int count, const o
     return ORI_OK;
 }
 
+int ori_pattern_center_face(const ori_pattern *p)
+{
+    ORI_ASSERT(p);
+    int nv = ori_pattern_vertex_count(p), nf = ori_pattern_face_count(p);
+    if (nv == 0 || nf == 0) return 0;
+    ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
+    for (int v = 1; v < nv; ++v) {
+        ori_v3 c = ori_pattern_vertex(p, v);
+        lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
+    }
+    ori_v2 c = ori_v2_make(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
+    double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
+    bool on_edge;
+    int inside = ori_pattern_find_face_at(p, c, &on_edge);
+    if (inside != ORI_NULL_INDEX && !on_edge) return inside;
+    int best = 0, cap = 0, *vs = NULL;
+    double best_d = INFINITY;
+    for (int f = 0; f < nf; ++f) {
+        int n = ori_pattern_face_size(p, f);
+        if (n <= 0) continue;
+        if (n > cap) {
+            ori__free(vs);
+            cap = n;
+            vs = ori__alloc(sizeof(int) * (size_t)cap);
+        }
+        ori_pattern_face_vertices(p, f, vs, n);
+        double x = 0.0, y = 0.0;
+        for (int i = 0; i < n; ++i) {
+            ori_v3 q = ori_pattern_vertex(p, vs[i]);
+            x += q.x / n, y += q.y / n;
+        }
+        double d = hypot(x - c.x, y - c.y);
+        if (d < best_d - tol) {
+            best_d = d;
+            best = f;
+        }
+    }
+    ori__free(vs);
+    return best;
+}
+
 int ori_pattern_find_edge_at(const ori_pattern *p, ori_v2 x)
 {
     ORI_ASSERT(p);

@@ -706,6 +706,19 @@ const ori_v3 *ori_record_frame_vertices(const ori_record *r, int i)
     return r->positions + (size_t)i * (size_t)r->vertex_count;
 }
 
+const double *ori_record_angles(const ori_record *r, int *frame_stride)
+{
+    ORI_ASSERT(r);
+    if (frame_stride) *frame_stride = r->edge_count;
+    return r->frame_count > 0 ? r->angles : NULL;
+}
+
+const ori_v3 *ori_record_vertices(const ori_record *r)
+{
+    ORI_ASSERT(r);
+    return r->frame_count > 0 ? r->positions : NULL;
+}
+
 // A fold toward the targets at time t: the recorded states around t interpolated linearly in
 // time, then closed exactly onto the loop-closure manifold (minimum-norm Newton, targets.c).
 static ori_status record_at_targets(const ori_record *r, int j, int base, double t, double *angles, ori_v3 *positions,
