@@ -167,6 +167,10 @@ int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, or
         }
         return cli_input_error(cmd, path, &err);
     }
+    int absent = ori_pattern_absent_fold_angle_count(*pattern);
+    if (absent > 0)
+        fprintf(stderr, "orikin %s: %s: note: %d edge(s) have a null edges_foldAngle (e.g. Origami Simulator's boundary "
+                        "edges): read as 0\n", cmd, path, absent);
     return CLI_EXIT_OK;
 }
 

@@ -808,3 +808,46 @@ Test(fold, a_file_too_big_for_the_memory_is_refused_up_front)
     ori_fold_destroy(doc);
     test_tmpdir_remove(dir);
 }
+
+// Origami Simulator's "Save Simulation as FOLD" writes null fold angles on boundary edges: they
+// read as absent (0, counted), and a rewrite keeps them null; any other non-number still fails.
+Test(fold, null_fold_angles_read_as_absent_and_stay_null)
+{
+    const char *text = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1]],"
+                       " \"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[0,2]],"
+                       " \"edges_assignment\": [\"B\",\"B\",\"B\",\"B\",\"V\"],"
+                       " \"edges_foldAngle\": [null, null, 0, null, 90]}";
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(load_text(text, &doc, &err), ORI_OK);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_absent_fold_angle_count(p), 3);
+    cr_assert_eq(ori_pattern_edge(p, 0).fold_angle_rad, 0.0);
+    cr_assert_float_eq(ori_pattern_edge(p, 4).fold_angle_rad, ORI_PI / 2, 1e-15);
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, &err), ORI_OK);
+    char *out = ori_fold_to_string(doc);
+    json_error_t je;
+    json_t *again = json_loads(out, 0, &je);
+    cr_assert_not_null(again);
+    json_t *fa = json_object_get(again, "edges_foldAngle");
+    cr_assert(json_is_null(json_array_get(fa, 0)) && json_is_null(json_array_get(fa, 3)), "%s", out);
+    cr_assert_eq(json_integer_value(json_array_get(fa, 2)), 0);
+    cr_assert_float_eq(json_number_value(json_array_get(fa, 4)), 90.0, 1e-12);
+    // A changed angle on a null edge is written as a number.
+    ori_pattern_set_fold_angle(p, 0, ORI_PI / 4);
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, &err), ORI_OK);
+    ori_buffer_free(out);
+    out = ori_fold_to_string(doc);
+    json_decref(again);
+    again = json_loads(out, 0, &je);
+    fa = json_object_get(again, "edges_foldAngle");
+    cr_assert_float_eq(json_number_value(json_array_get(fa, 0)), 45.0, 1e-12, "%s", out);
+    cr_assert(json_is_null(json_array_get(fa, 1)));
+    json_decref(again);
+    ori_buffer_free(out);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    expect_error("{\"vertices_coords\": [[0,0],[1,0]], \"edges_vertices\": [[0,1]], \"edges_foldAngle\": [\"x\"]}",
+                 ORI_ERR_TYPE, "edges_foldAngle 0: not a number");
+}

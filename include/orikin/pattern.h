@@ -7,7 +7,7 @@
 /// ori_pattern_clone, ori_pattern_add_vertex, ori_pattern_add_edge, ori_pattern_add_face,
 /// ori_pattern_set_vertex, ori_pattern_set_assignment, ori_pattern_set_fold_angle,
 /// ori_pattern_clear_faces, ori_default_build_def, ori_pattern_build, ori_pattern_is_built,
-/// counts and element getters, topology queries, face names and the face tree.
+/// ori_pattern_absent_fold_angle_count, counts and element getters, topology queries, face names and the face tree.
 ///
 /// Indices are FOLD indices: loading never reorders vertices, edges or faces. Mutating a
 /// pattern invalidates its derived topology until the next ori_pattern_build.
@@ -141,6 +141,9 @@ ORI_API bool ori_pattern_is_folded_form(const ori_pattern *pattern);
 ORI_API bool ori_pattern_is_3d(const ori_pattern *pattern);
 /// Whether edges carry explicit fold angles.
 ORI_API bool ori_pattern_has_fold_angles(const ori_pattern *pattern);
+/// Edges whose FOLD edges_foldAngle entry was null (Origami Simulator writes null on boundary
+/// edges): read as absent, angle 0. 0 for patterns not read from FOLD.
+ORI_API int ori_pattern_absent_fold_angle_count(const ori_pattern *pattern);
 /// Length of the bounding-box diagonal (the length scale of every relative tolerance); 1 for
 /// an empty or single-point pattern.
 ORI_API double ori_pattern_diagonal(const ori_pattern *pattern);

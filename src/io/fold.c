@@ -286,14 +286,21 @@ static ori_status edge_assignment(const ori__field *ea, int64_t e, ori_assignmen
     return ORI_OK;
 }
 
-// Edge e's fold angle in radians; ±180° within ORI_TOL_FILE_ANGLE_RAD is ±π.
-static ori_status edge_angle(const ori__field *ef, int64_t e, double *out, ori_error *error)
+// Edge e's fold angle in radians; ±180° within ORI_TOL_FILE_ANGLE_RAD is ±π. A null entry
+// (Origami Simulator's exports write null on boundary edges) is an absent angle: 0, *absent set.
+static ori_status edge_angle(const ori__field *ef, int64_t e, double *out, bool *absent, ori_error *error)
 {
     double deg;
+    *absent = false;
     if (ef->pk && ef->pk->kind == ORI__PK_NUMS) {
         deg = ori__pk_num(ef->pk, e);
     } else {
         json_t *num = ef->pk ? NULL : json_array_get(ef->json, (size_t)e);
+        if (json_is_null(num)) {
+            *absent = true;
+            *out = 0.0;
+            return ORI_OK;
+        }
         if (!json_is_number(num)) return ori__fail_at(error, ORI_ERR_TYPE, "edges_foldAngle", (int)e, "not a number");
         deg = json_number_value(num);
     }
@@ -331,8 +338,10 @@ static ori_status read_edges(const ori_fold *doc, int frame, ori_pattern *p, ori
         ori_assignment a = ORI_ASSIGN_UNASSIGNED;
         double angle = 0.0;
         if (st == ORI_OK && ea) st = edge_assignment(ea, e, &a, error);
-        if (st == ORI_OK && ef) st = edge_angle(ef, e, &angle, error);
+        bool absent = false;
+        if (st == ORI_OK && ef) st = edge_angle(ef, e, &angle, &absent, error);
         if (st != ORI_OK) return st;
+        p->absent_fold_angles += absent;
         ori_pattern_add_edge(p, v[0], v[1], a, angle);
     }
     p->has_fold_angles = ef != NULL;
@@ -508,6 +517,26 @@ static ori__packed *pattern_angles_packed(const ori_pattern *p, const ori__field
     return pk;
 }
 
+// The pattern's angles as a JSON array that keeps the file's null entries (absent angles, read
+// as 0) where the angle is still 0; NULL when the old field has no null to keep.
+static json_t *angles_keeping_nulls(const ori_pattern *p, const ori__field *old)
+{
+    if (!old || old->pk || !json_is_array(old->json) || json_array_size(old->json) != (size_t)p->edge_count) return NULL;
+    bool any = false;
+    for (int e = 0; e < p->edge_count && !any; ++e)
+        any = json_is_null(json_array_get(old->json, (size_t)e)) && p->edges[e].fold_angle_rad == 0.0;
+    if (!any) return NULL;
+    json_t *a = json_array();
+    for (int e = 0; e < p->edge_count; ++e) {
+        json_t *o = json_array_get(old->json, (size_t)e);
+        double rad = p->edges[e].fold_angle_rad, deg;
+        if (json_is_null(o) && rad == 0.0) json_array_append_new(a, json_null());
+        else if (old_angle(old, e, &deg) && ori_deg_to_rad(deg) == rad) json_array_append(a, o);
+        else json_array_append_new(a, json_real(ori_rad_to_deg_output(rad)));
+    }
+    return a;
+}
+
 static ori__packed *edges_packed(const ori_pattern *p)
 {
     ori__packed *pk = ori__pk_new(ORI__PK_ROWS, true, 2 * (int64_t)p->edge_count);
@@ -550,14 +579,16 @@ static bool any_face_name(const ori_pattern *p)
     return false;
 }
 
-// The pattern's fields into a frame; angles are its edges_foldAngle when the pattern has fold
-// angles (NULL: written from the pattern).
-static void write_pattern_fields(ori__frame *fr, const ori_pattern *p, ori__packed *angles, bool three)
+// The pattern's fields into a frame; angles (or angles_json) are its edges_foldAngle when the
+// pattern has fold angles (both NULL: written from the pattern).
+static void write_pattern_fields(ori__frame *fr, const ori_pattern *p, ori__packed *angles, json_t *angles_json,
+                                 bool three)
 {
     ori__frame_set(fr, "vertices_coords", NULL, coords_packed(p->vertices, p->vertex_count, three));
     ori__frame_set(fr, "edges_vertices", NULL, edges_packed(p));
     ori__frame_set(fr, "edges_assignment", NULL, assignments_packed(p));
-    if (p->has_fold_angles) ori__frame_set(fr, "edges_foldAngle", NULL, angles ? angles : pattern_angles_packed(p, NULL));
+    if (p->has_fold_angles && angles_json) ori__frame_set(fr, "edges_foldAngle", angles_json, NULL);
+    else if (p->has_fold_angles) ori__frame_set(fr, "edges_foldAngle", NULL, angles ? angles : pattern_angles_packed(p, NULL));
     else ori__frame_del(fr, "edges_foldAngle");
     if (p->face_count > 0) ori__frame_set(fr, "faces_vertices", NULL, faces_packed(p));
     if (any_face_name(p)) {
@@ -681,7 +712,9 @@ ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, 
     bool same = field_count(old_coords) == p->vertex_count && same_edges(frame_field(doc, frame, "edges_vertices"), p) &&
                 same_faces(frame_field(doc, frame, "faces_vertices"), p);
     // (The old angles may be this frame's own field, replaced below: the new ones first.)
-    ori__packed *angles = p->has_fold_angles ? pattern_angles_packed(p, frame_field(doc, frame, "edges_foldAngle")) : NULL;
+    const ori__field *old_angles = frame_field(doc, frame, "edges_foldAngle");
+    json_t *angles_json = p->has_fold_angles ? angles_keeping_nulls(p, old_angles) : NULL;
+    ori__packed *angles = p->has_fold_angles && !angles_json ? pattern_angles_packed(p, old_angles) : NULL;
     // A field the pattern does not have, or a stale derived one, can only be removed from a frame
     // that does not inherit it: such a frame first takes its inherited fields in.
     bool detach = !same || (!p->has_fold_angles && inherited(doc, frame, "edges_foldAngle")) ||
@@ -690,7 +723,7 @@ ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, 
                   (p->tree_count == 0 && inherited(doc, frame, ORI__KEY_FACE_TREE));
     if (detach) detach_frame(doc, frame);
     ori__frame *fr = &doc->frames[frame];
-    write_pattern_fields(fr, p, angles, three);
+    write_pattern_fields(fr, p, angles, angles_json, three);
     if (!same)
         for (size_t i = 0; i < sizeof derived_fields / sizeof derived_fields[0]; ++i) ori__frame_del(fr, derived_fields[i]);
     return ORI_OK;
@@ -748,7 +781,7 @@ int ori_fold_append_frame(ori_fold *doc, const ori_pattern *p, const char *frame
     ORI_ASSERT(parent == ORI_NULL_INDEX || (parent >= 0 && parent < ori_fold_frame_count(doc)));
     ori__frame *fr = new_frame(doc, frame_class, title);
     if (parent == ORI_NULL_INDEX) {
-        write_pattern_fields(fr, p, NULL, ori_pattern_is_3d(p));
+        write_pattern_fields(fr, p, NULL, NULL, ori_pattern_is_3d(p));
     } else {
         double *a = ori__alloc(sizeof(double) * (size_t)(p->edge_count ? p->edge_count : 1));
         for (int e = 0; e < p->edge_count; ++e) a[e] = p->edges[e].fold_angle_rad;

@@ -24,6 +24,7 @@ struct ori_pattern {
     int tree_hash_cap;              // a power of two > 2 × tree_count, or 0
     bool folded_form;
     bool has_fold_angles;
+    int absent_fold_angles;         // edges whose file fold angle was null (read as 0)
 
     // Derived topology, valid while built is true.
     bool built;
