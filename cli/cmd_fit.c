@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "kin_args.h"
+#include "output_guard.h"
 
 // -o: the exact samples the fit was made from, as folded-form frames of the pattern (as orikin
 // fold writes them), with the transfer functions under "orikin:fit".
@@ -49,8 +50,11 @@ static int write_samples(const cli_fold_args *a, const cli_kin *k, const ori_fit
 
 static int run(int argc, char **argv)
 {
+    bool force;
+    int rc = cli_guard_strip("fit", &argc, argv, &force);
+    if (rc != CLI_EXIT_OK) return rc;
     cli_fold_args a;
-    int rc = cli_fold_parse("fit", argc, argv, true, &a);
+    rc = cli_fold_parse("fit", argc, argv, true, &a);
     if (rc != CLI_EXIT_OK) return rc;
     if (a.degree < 0 || a.degree > 12) return cli_usage("fit", "--degree must be 0 to 12");
     if (a.refine < 1) return cli_usage("fit", "--refine must be at least 1");
@@ -66,6 +70,14 @@ static int run(int argc, char **argv)
     }
     fd.degree = a.degree;
     fd.refine = a.refine;
+    // The samples and the error grid R times finer: bounded before the run.
+    double from0 = fd.motion.has_from ? fd.motion.from_rad : fd.motion.start_angles_rad ? fd.motion.start_angles_rad[a.drive] : 0.0;
+    double samples = floor(fabs(fd.motion.to_rad - from0) / fd.motion.step_rad) + 2.0;
+    rc = cli_guard_solves("fit", samples * (1.0 + a.refine), "--step or a smaller --refine", force);
+    if (rc != CLI_EXIT_OK) {
+        cli_kin_free(&k);
+        return rc;
+    }
     ori_fit *fit = NULL;
     ori_error err;
     ori_status st = ori_fit_solve(k.mech, &fd, &fit, &err);
@@ -136,7 +148,7 @@ const cli_command cli_cmd_fit = {
     "fit",
     "transfer functions: polynomials of the constrained crease angles in the driven angle",
     "usage: orikin fit FILE [--fix FACE] --drive EDGE --to DEG [--from DEG] [--step DEG]\n"
-    "                  [--lock E1,E2,...] [--degree D] [--refine R] [--frame N] [--json]\n"
+    "                  [--lock E1,E2,...] [--degree D] [--refine R] [--frame N] [--force] [--json]\n"
     "                  [-o OUT.fold]\n"
     "\n"
     "Solve the fold exactly at every --step (as orikin fold), fit each constrained crease angle\n"
@@ -152,6 +164,7 @@ const cli_command cli_cmd_fit = {
     "                creases by index or @x,y)\n"
     "  --degree D    polynomial degree, 0 to 12; default 4\n"
     "  --refine R    error grid: step / R; default 10\n"
+    "  --force       solve even when the samples and the error grid exceed 1000000 states\n"
     "  --json        print {degree, drive, from_deg, to_deg, step_deg, samples, creases:\n"
     "                [{edge, coefficients, max_error_deg}]}\n"
     "  -o OUT.fold   write FILE with the exact samples as folded-form frames (as orikin fold)\n"

@@ -31,3 +31,10 @@ int cli_guard_check(const char *cmd, double frames, double bytes, bool force)
     return cli_usage(cmd, "this run would write about %.2g GB (more than %.0f GB): add --force to write it", bytes / 1e9,
                      CLI_GUARD_MAX_BYTES / 1e9);
 }
+
+int cli_guard_solves(const char *cmd, double solves, const char *option, bool force)
+{
+    if (force || solves <= CLI_GUARD_MAX_SOLVES) return CLI_EXIT_OK;
+    return cli_usage(cmd, "this run would solve %.3g states (more than %d): a larger %s, or add --force", solves,
+                     CLI_GUARD_MAX_SOLVES, option);
+}

@@ -27,6 +27,9 @@ extern "C" {
 
 /// Most creases one fold may lock.
 #define ORI_SEQUENCE_MAX_LOCKS 64
+/// Most output states one fold of a sequence may ask for: its "step" is at least
+/// 360° / ORI_SEQUENCE_MAX_FOLD_STATES (a smaller step is ORI_ERR_RANGE, naming the fold).
+#define ORI_SEQUENCE_MAX_FOLD_STATES 100000
 
 /// One fold of a sequence (FOLD indices, radians).
 typedef struct ori_sequence_fold {

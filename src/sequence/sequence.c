@@ -169,6 +169,10 @@ static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, fold_refs
     if (has_step) {
         if (!json_is_number(step) || !(json_number_value(step) > 0.0) || json_number_value(step) > 360.0)
             return ori__fail_at(error, ORI_ERR_RANGE, "folds", i, "\"step\" must be a number of degrees in (0, 360]");
+        if (json_number_value(step) < 360.0 / ORI_SEQUENCE_MAX_FOLD_STATES)
+            return ori__fail_at(error, ORI_ERR_RANGE, "folds", i,
+                                "\"step\" %g deg asks for more than %d states in one fold: at least %g deg",
+                                json_number_value(step), ORI_SEQUENCE_MAX_FOLD_STATES, 360.0 / ORI_SEQUENCE_MAX_FOLD_STATES);
         f->step_rad = ori_deg_to_rad(json_number_value(step));
     }
     json_t *lock = json_object_get(obj, "lock");
