@@ -90,10 +90,12 @@ static int run(int argc, char **argv)
 {
     const char *path = NULL, *host = NULL;
     int port = 0;
-    bool has_port = false, no_browser = false;
+    bool has_port = false, no_browser = false, no_autosave = false;
     for (int i = 1; i < argc; ++i) {
         const char *v;
-        if (strcmp(argv[i], "--no-browser") == 0) {
+        if (strcmp(argv[i], "--no-autosave") == 0) {
+            no_autosave = true;
+        } else if (strcmp(argv[i], "--no-browser") == 0) {
             no_browser = true;
         } else if (strcmp(argv[i], "--port") == 0) {
             if (has_port) return cli_usage("view", "--port given twice");
@@ -122,12 +124,17 @@ static int run(int argc, char **argv)
     }
     studio_def def = studio_default_def();
     def.path = path;
+    def.autosave = !no_autosave;
     studio *s = NULL;
     char err[1024];
     if (studio_create(&def, &s, err, sizeof err) != 0) {
         fprintf(stderr, "orikin view: %s\n", err);
         return CLI_EXIT_INPUT;
     }
+    char journal[1024];
+    if (studio_recovery_pending(s, journal, sizeof journal))
+        fprintf(stderr, "orikin view: note: %s holds unsaved edits of an earlier session: the page offers to recover "
+                        "or discard them\n", journal);
     char token[2 * STUDIO_TOKEN_BYTES + 1];
     if (!studio_token_make(token, sizeof token)) {
         studio_destroy(s);
@@ -168,6 +175,9 @@ static int run(int argc, char **argv)
     sigwait(&stop, &sig);
     if (page) launch_page_remove(&lp);
     studio_http_stop(h);
+    if (studio_unsaved(s, journal, sizeof journal))
+        fprintf(stderr, "orikin view: note: the document has unsaved edits; they are kept in %s and offered at the next "
+                        "orikin view of this file\n", journal);
     studio_destroy(s);
     return CLI_EXIT_OK;
 }
@@ -176,20 +186,26 @@ const cli_command cli_cmd_view = {
     "view",
     "the studio: author, verify, fold and watch in the browser (a local web app)",
     "usage: orikin view [FILE.fold|.svg|.opx|.cp|SEQ.json] [--port N] [--host ADDR] [--no-browser]\n"
+    "                   [--no-autosave]\n"
     "\n"
     "Serve the studio, orikin's browser viewer and editor, on this machine and open it: the\n"
     "crease pattern in 2D with its face tree (collection patterns, axioms, flip, move, remove,\n"
     "undo), the checks drawn on it, the fold specification by clicks (fix a face, drive and\n"
     "lock creases) with the verdict, the 3D view, and the folding manager's slider over a\n"
     "whole fold sequence. Every computation is the library's own. Prints one line with the\n"
-    "URL (it carries the session token every request needs) and serves until Ctrl-C. Files\n"
-    "are written only on an explicit Save; without FILE the studio starts from a blank square.\n"
+    "URL (it carries the session token every request needs) and serves until Ctrl-C. FILE is\n"
+    "written only on an explicit Save, which asks first when FILE changed on disk meanwhile;\n"
+    "unsaved edits survive a crash in an autosave beside it. Without FILE the studio starts\n"
+    "from a blank square.\n"
     "\n"
     "options:\n"
     "  --port N       port to listen on; 0 (the default) picks a free one\n"
     "  --host ADDR    listen on this numeric address instead of 127.0.0.1 (prints a warning:\n"
     "                 other machines can then connect; they still need the token)\n"
     "  --no-browser   do not open a browser (print the URL only)\n"
+    "  --no-autosave  keep no journal of unsaved edits (by default they are written to\n"
+    "                 .FILE.orikin-autosave beside FILE after every edit and offered at the\n"
+    "                 next orikin view of FILE; Save removes it)\n"
     "\n"
     "exit codes: 0 stopped by Ctrl-C, 2 bad command line, 3 bad file or address, 4 the web\n"
     "assets were not built\n"

@@ -38,6 +38,7 @@ static studio *open_studio_def(const char *path, size_t cache_bytes)
     studio_def d = studio_default_def();
     d.path = path;
     d.cache_bytes = cache_bytes;
+    d.autosave = strncmp(path ? path : "", "/tmp/", 5) == 0; // never a journal beside the repository's files
     studio *s = NULL;
     char err[1024] = "";
     cr_assert_eq(studio_create(&d, &s, err, sizeof err), 0, "%s", err);
@@ -2052,5 +2053,116 @@ Test(server, view_hands_the_browser_a_private_page_not_the_token)
     snprintf(page_path, sizeof page_path, "%.*s", (int)strcspn(args, "\n"), args);
     cr_assert_neq(access(page_path, F_OK), 0, "the page is removed when the studio stops");
     free(args), free(url), free(page), free(mode), free(dirmode), free(blk);
+    test_tmpdir_remove(dir);
+}
+
+// Save-back of a file changed on disk since the studio read it asks first (409 conflict), and
+// writes only with "overwrite": true; a save then makes the disk's state the known one again.
+Test(server, save_back_refuses_a_file_changed_on_disk_unless_told)
+{
+    char *dir = test_tmpdir();
+    char path[512], args[1024];
+    snprintf(path, sizeof path, "%s/corner.fold", dir);
+    snprintf(args, sizeof args, "cp '" ORI_SOURCE_DIR "/" OPEN_CORNER "' '%s'", path);
+    cr_assert_eq(system(args), 0);
+    studio *s = open_studio(path);
+    json_decref(call_json(s, "POST", "/api/edit", NULL, "{\"ops\": [{\"op\": \"flip\", \"edge\": 12}]}", 200));
+    // someone else edits the file meanwhile (another size, so even a coarse clock sees it)
+    FILE *f = fopen(path, "a");
+    cr_assert_not_null(f);
+    fputs("\n\n", f);
+    fclose(f);
+    char *theirs = test_read_text(path);
+    json_t *j = call_json(s, "POST", "/api/save", NULL, "{}", 409);
+    cr_assert(json_is_true(json_object_get(j, "conflict")));
+    cr_assert(strstr(json_string_value(json_object_get(j, "error")), "changed on disk"), "%s",
+              json_string_value(json_object_get(j, "error")));
+    json_decref(j);
+    char *on_disk = test_read_text(path);
+    cr_assert_str_eq(on_disk, theirs, "a refused save leaves their change");
+    free(on_disk);
+    json_decref(call_json(s, "POST", "/api/save", NULL, "{\"overwrite\": true}", 200));
+    char *doc = document(s);
+    on_disk = test_read_text(path);
+    cr_assert_str_eq(on_disk, doc);
+    free(on_disk);
+    free(doc);
+    // the studio's own write is the known state: the next save needs no overwrite
+    json_decref(call_json(s, "POST", "/api/edit", NULL, "{\"ops\": [{\"op\": \"flip\", \"edge\": 12}]}", 200));
+    json_decref(call_json(s, "POST", "/api/save", NULL, "{}", 200));
+    studio_response r = call(s, "POST", "/api/save", NULL, "{\"overwrite\": 1}");
+    cr_assert_eq(r.status, 400, "overwrite is a boolean");
+    studio_response_free(&r);
+    free(theirs);
+    studio_destroy(s);
+    test_tmpdir_remove(dir);
+}
+
+// Every edit is journaled beside the file (mode 0600) until it is saved; a session that ends
+// without saving leaves the journal, and the next one offers it: recover makes it the document
+// (undo goes back to the file), discard removes it. Undo back to the saved state removes it too.
+Test(server, unsaved_edits_survive_in_an_autosave_and_are_recovered)
+{
+    char *dir = test_tmpdir();
+    char path[512], journal[600], args[1024];
+    snprintf(path, sizeof path, "%s/corner.fold", dir);
+    snprintf(journal, sizeof journal, "%s/.corner.fold.orikin-autosave", dir);
+    snprintf(args, sizeof args, "cp '" ORI_SOURCE_DIR "/" OPEN_CORNER "' '%s'", path);
+    cr_assert_eq(system(args), 0);
+    char *orig = test_read_text(path);
+    studio *s = open_studio(path);
+    json_t *sess = call_json(s, "GET", "/api/session", NULL, NULL, 200);
+    cr_assert(json_is_null(json_object_get(sess, "recovery")) && json_is_false(json_object_get(sess, "unsaved")));
+    json_decref(sess);
+    struct stat st;
+    cr_assert_neq(stat(journal, &st), 0, "no journal before an edit");
+    json_decref(call_json(s, "POST", "/api/edit", NULL, "{\"ops\": [{\"op\": \"flip\", \"edge\": 12}]}", 200));
+    cr_assert_eq(stat(journal, &st), 0, "the edit is journaled");
+    cr_assert_eq(st.st_mode & 0777, 0600);
+    char *edited = document(s), *jtext = test_read_text(journal);
+    cr_assert_str_eq(jtext, edited, "the journal holds the document");
+    free(jtext);
+    char note[1024];
+    cr_assert(studio_unsaved(s, note, sizeof note));
+    cr_assert_str_eq(note, journal);
+    // undo to what the disk holds: nothing unsaved, no journal
+    json_decref(call_json(s, "POST", "/api/undo", NULL, "{}", 200));
+    cr_assert_neq(stat(journal, &st), 0);
+    cr_assert(!studio_unsaved(s, note, sizeof note));
+    json_decref(call_json(s, "POST", "/api/redo", NULL, "{}", 200));
+    cr_assert_eq(stat(journal, &st), 0);
+    studio_destroy(s); // the session ends without saving (a crash leaves the same)
+
+    s = open_studio(path);
+    cr_assert(studio_recovery_pending(s, note, sizeof note));
+    sess = call_json(s, "GET", "/api/session", NULL, NULL, 200);
+    cr_assert_str_eq(json_string_value(json_object_get(json_object_get(sess, "recovery"), "path")), journal);
+    json_decref(sess);
+    char *shown = document(s);
+    cr_assert_str_neq(shown, edited, "the file is shown until the user recovers");
+    free(shown);
+    json_t *r = call_json(s, "POST", "/api/recover", NULL, "{\"action\": \"recover\"}", 200);
+    cr_assert(json_is_true(json_object_get(r, "recovered")));
+    json_decref(r);
+    shown = document(s);
+    cr_assert_str_eq(shown, edited, "recovered");
+    free(shown);
+    json_decref(call_json(s, "POST", "/api/recover", NULL, "{\"action\": \"recover\"}", 409));
+    json_decref(call_json(s, "POST", "/api/save", NULL, "{}", 200));
+    cr_assert_neq(stat(journal, &st), 0, "saved: the journal is gone");
+    char *on_disk = test_read_text(path);
+    cr_assert_str_eq(on_disk, edited);
+    free(on_disk);
+    // discard
+    json_decref(call_json(s, "POST", "/api/edit", NULL, "{\"ops\": [{\"op\": \"flip\", \"edge\": 12}]}", 200));
+    studio_destroy(s);
+    s = open_studio(path);
+    json_decref(call_json(s, "POST", "/api/recover", NULL, "{\"action\": \"keep\"}", 400));
+    json_decref(call_json(s, "POST", "/api/recover", NULL, "{\"action\": \"discard\"}", 200));
+    cr_assert_neq(stat(journal, &st), 0, "discarded");
+    cr_assert(!studio_recovery_pending(s, note, sizeof note));
+    studio_destroy(s);
+    free(edited);
+    free(orig);
     test_tmpdir_remove(dir);
 }

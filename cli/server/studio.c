@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/random.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -25,6 +26,7 @@ studio_def studio_default_def(void)
     d.work_limit = STUDIO_WORK_LIMIT;
     d.render_pixels = STUDIO_RENDER_MAX_PIXELS;
     d.animation_pixels = STUDIO_ANIMATION_MAX_PIXELS;
+    d.autosave = true;
     return d;
 }
 
@@ -172,6 +174,7 @@ void studio_commit(studio *s, studio_model *model)
     install_model(s);
     s->version++;
     studio_drop_results(s);
+    studio_autosave(s);
 }
 
 void studio_commit_document(studio *s, ori_fold *doc, studio_model *model, const char *file, ori_format format,
@@ -194,6 +197,7 @@ void studio_commit_document(studio *s, ori_fold *doc, studio_model *model, const
     install_model(s);
     s->version++;
     studio_drop_results(s);
+    studio_autosave(s);
 }
 
 // Undo (from = undo stack, to = redo stack) or redo (the other way round).
@@ -219,6 +223,7 @@ static bool restore(studio *s, studio_step *from, int *from_count, studio_step *
     install_model(s);
     s->version++;
     studio_drop_results(s);
+    studio_autosave(s);
     return true;
 }
 
@@ -456,6 +461,14 @@ int studio_create(const studio_def *def, studio **out, char *err, size_t err_siz
         studio_destroy(s);
         return 3;
     }
+    // What is on disk now, and an autosave an earlier session left beside the file.
+    if (s->from_command_line && s->save_path[0]) studio_disk_remember(&s->doc_disk, s->save_path);
+    if (s->def.autosave && s->from_command_line && s->save_path[0]) {
+        studio_journal_path(s->save_path, s->journal, sizeof s->journal);
+        s->recovery = s->journal[0] && access(s->journal, F_OK) == 0;
+    }
+    if (s->seq_path[0]) studio_disk_remember(&s->seq_disk, s->seq_path);
+    s->saved_model = studio_model_ref(s->model);
     *out = s;
     return 0;
 }
@@ -467,6 +480,7 @@ void studio_destroy(studio *s)
     clear_stack(s->undo, &s->undo_count);
     clear_stack(s->redo, &s->redo_count);
     studio_model_unref(s->model);
+    studio_model_unref(s->saved_model);
     ori_fold_destroy(s->doc);
     pthread_mutex_destroy(&s->lock);
     pthread_mutex_destroy(&s->job_lock);
@@ -821,6 +835,16 @@ void studio_api_session(studio *s, const studio_request *req, studio_response *o
     json_object_set_new(o, "sequence_path", s->seq_path[0] ? json_string(shown) : json_null());
     json_object_set_new(o, "undo", json_integer(s->undo_count));
     json_object_set_new(o, "redo", json_integer(s->redo_count));
+    json_object_set_new(o, "unsaved", json_boolean(s->model != s->saved_model));
+    json_t *rec = json_null();
+    if (s->recovery) {
+        struct stat jst;
+        copy_string(shown, sizeof shown, s->journal);
+        studio_utf8_clean(shown);
+        rec = json_pack("{s:s,s:I}", "path", shown, "modified",
+                        (json_int_t)(stat(s->journal, &jst) == 0 ? (long long)jst.st_mtim.tv_sec : 0));
+    }
+    json_object_set_new(o, "recovery", rec);
     json_t *seq = json_null();
     if (s->seq) {
         seq = json_object();
@@ -919,6 +943,7 @@ static const route routes[] = {
     {"POST", "/api/undo", studio_api_undo},
     {"POST", "/api/redo", studio_api_redo},
     {"POST", "/api/save", studio_api_save},
+    {"POST", "/api/recover", studio_api_recover},
     {"GET", "/api/export", studio_api_export},
     {"POST", "/api/fold", studio_api_fold},
     {"GET", "/api/fold/frame", studio_api_fold_frame},

@@ -2,7 +2,8 @@
 // function (studio_handle: no HTTP, called directly by tests and the fuzz target), and the HTTP
 // front (libmicrohttpd: loopback, session token, Host check, embedded assets only).
 //
-// Functions: studio_default_def, studio_create, studio_destroy, studio_handle,
+// Functions: studio_default_def, studio_create, studio_unsaved, studio_recovery_pending,
+// studio_destroy, studio_handle,
 // studio_response_free, studio_body_limit, studio_version, studio_token_make,
 // studio_http_start, studio_http_port, studio_http_stop, studio_assets_built,
 // studio_asset_find.
@@ -59,6 +60,7 @@ typedef struct studio_def {
     double work_limit;     // bound on frames × elements of one computation
     double render_pixels;  // largest picture (width × height)
     double animation_pixels; // largest animation (width × height × frames)
+    bool autosave;         // journal unsaved edits beside the file and offer earlier ones (default true)
 } studio_def;
 
 studio_def studio_default_def(void);
@@ -66,6 +68,11 @@ studio_def studio_default_def(void);
 // Load def->path (or make the blank sheet) and, for a sequence, run it. Returns 0, or 3 (bad
 // input: the message, one line naming the file and where, is written into err).
 int studio_create(const studio_def *def, studio **out, char *err, size_t err_size);
+// Whether the document has edits that are not on disk; journal gets the autosave that holds
+// them ("" when there is none, e.g. a document dropped on the page).
+bool studio_unsaved(studio *s, char *journal, size_t size);
+// Whether an autosave of an earlier session waits for the page's recover or discard (journal: its path).
+bool studio_recovery_pending(studio *s, char *journal, size_t size);
 // Destroy a studio (NULL is a no-op). No request may be running.
 void studio_destroy(studio *s);
 

@@ -980,13 +980,27 @@ void studio_api_export(studio *s, const studio_request *req, studio_response *ou
     ori_buffer_free(text);
 }
 
+// 409 {"error", "conflict": true}: the file changed on disk since the studio read or wrote it;
+// the page asks, then posts again with "overwrite": true.
+static void save_conflict(studio_response *out, const char *path)
+{
+    char shown[STUDIO_PATH_MAX];
+    copy_string(shown, sizeof shown, path);
+    studio_utf8_clean(shown);
+    char msg[STUDIO_PATH_MAX + 160];
+    snprintf(msg, sizeof msg, "%s changed on disk since the studio read it: saving would overwrite that change", shown);
+    studio_respond_json(out, 409, json_pack("{s:s,s:b}", "error", msg, "conflict", 1));
+}
+
 void studio_api_save(studio *s, const studio_request *req, studio_response *out)
 {
     json_t *o = studio_body_object(req, out);
     if (!o) return;
-    static const char *const keys[] = {"what", NULL};
+    static const char *const keys[] = {"what", "overwrite", NULL};
     const char *what = "document";
-    if (!studio_check_keys(o, keys, out) || !studio_get_string(o, "what", false, &what, out)) {
+    bool overwrite = false;
+    if (!studio_check_keys(o, keys, out) || !studio_get_string(o, "what", false, &what, out) ||
+        !studio_get_bool(o, "overwrite", &overwrite, out)) {
         json_decref(o);
         return;
     }
@@ -1008,6 +1022,11 @@ void studio_api_save(studio *s, const studio_request *req, studio_response *out)
             return;
         }
         copy_string(path, sizeof path, s->save_path);
+        if (!overwrite && studio_disk_changed(&s->doc_disk, path)) {
+            pthread_mutex_unlock(&s->lock);
+            save_conflict(out, path);
+            return;
+        }
         if (s->save_format == ORI_FORMAT_FOLD) st = ori_fold_save_file(s->doc, path, &err);
         else st = ori_export_file(s->model->pattern, s->save_format, NULL, path, &err);
     } else {
@@ -1017,6 +1036,11 @@ void studio_api_save(studio *s, const studio_request *req, studio_response *out)
             return;
         }
         copy_string(path, sizeof path, s->seq_path);
+        if (!overwrite && studio_disk_changed(&s->seq_disk, path)) {
+            pthread_mutex_unlock(&s->lock);
+            save_conflict(out, path);
+            return;
+        }
         char *text = ori_sequence_to_json(s->seq->sequence);
         json_t *j = json_loads(text, 0, NULL);
         ori_buffer_free(text);
@@ -1037,6 +1061,8 @@ void studio_api_save(studio *s, const studio_request *req, studio_response *out)
             st = ORI_ERR_INTERNAL;
         }
     }
+    if (st == ORI_OK && doc) studio_mark_saved(s);
+    else if (st == ORI_OK) studio_disk_remember(&s->seq_disk, path);
     pthread_mutex_unlock(&s->lock);
     if (st != ORI_OK) {
         studio_fail_error(out, 500, &err);

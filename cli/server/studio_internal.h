@@ -95,6 +95,14 @@ typedef struct studio_step {
     bool from_command_line;
 } studio_step;
 
+// What a file on disk was when the studio last read or wrote it (a changed file is one whose
+// identity, size or modification time differs).
+typedef struct studio_disk {
+    bool known;
+    unsigned long long dev, ino;
+    long long size, mtime_sec, mtime_nsec;
+} studio_disk;
+
 struct studio {
     studio_def def;
     pthread_mutex_t lock;        // guards everything below but the job slot
@@ -112,6 +120,11 @@ struct studio {
     int undo_count;
     studio_step redo[STUDIO_UNDO_DEPTH];
     int redo_count;
+    studio_disk doc_disk;        // save_path as last read or written
+    studio_disk seq_disk;        // seq_path likewise
+    studio_model *saved_model;   // the state that is on disk (a reference; == model: nothing unsaved)
+    char journal[STUDIO_PATH_MAX]; // the autosave beside save_path ("" none)
+    bool recovery;               // a journal of an earlier session waits for recover or discard
     studio_seq *seq;             // the last sequence run on the current document
     studio_fold *fold;           // the last fold computed on the current document
 
@@ -175,6 +188,21 @@ void studio_commit_document(studio *s, ori_fold *doc, studio_model *model, const
 // Drop results computed on an older document (sequence, fold). Call locked.
 void studio_drop_results(studio *s);
 
+// --- the file on disk and the autosave (studio_disk.c) ----------------------------------------
+
+// Record what path is on disk now (known false when it cannot be stat'ed).
+void studio_disk_remember(studio_disk *d, const char *path);
+// Whether path changed on disk since studio_disk_remember (false when nothing was known).
+bool studio_disk_changed(const studio_disk *d, const char *path);
+// The autosave journal of a document saved to save_path: ".NAME.orikin-autosave" beside it.
+void studio_journal_path(const char *save_path, char *out, size_t size);
+// After a change of version: write the document to the journal (mode 0600) while it differs
+// from the file on disk, remove the journal when it no longer does. Not while a recovery
+// waits. Call locked; failures only leave the journal as it was.
+void studio_autosave(studio *s);
+// The document was written to save_path: it is what the disk holds now (journal removed).
+void studio_mark_saved(studio *s);
+
 // Build a flat pattern from an imported drawing or FOLD text: a new document and its model.
 // name gives the format by extension; false with a one-line message.
 bool studio_load_text(const char *name, const char *text, size_t size, ori_fold **doc, studio_model **model,
@@ -198,6 +226,7 @@ void studio_api_crease(studio *s, const studio_request *req, studio_response *ou
 void studio_api_axiom(studio *s, const studio_request *req, studio_response *out);
 void studio_api_edit(studio *s, const studio_request *req, studio_response *out);
 void studio_api_undo(studio *s, const studio_request *req, studio_response *out);
+void studio_api_recover(studio *s, const studio_request *req, studio_response *out);
 void studio_api_redo(studio *s, const studio_request *req, studio_response *out);
 void studio_api_save(studio *s, const studio_request *req, studio_response *out);
 void studio_api_export(studio *s, const studio_request *req, studio_response *out);

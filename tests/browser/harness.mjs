@@ -34,9 +34,11 @@ export async function loadPlaywright() {
 
 // Start the studio on FILE (relative to the repository) and return {url, stop}. It prints its URL
 // once the file is loaded (and a sequence run): startMs bounds that.
-export function startStudio(file, startMs = 30000) {
+export function startStudio(file, startMs = 30000, autosave = false) {
   return new Promise((resolve, reject) => {
+    // (no journal beside the repository's example files unless the test is about it)
     const args = ['view', '--port', '0', '--no-browser'];
+    if (!autosave) args.push('--no-autosave');
     if (file) args.push(file);
     const proc = spawn(ORIKIN, args, { cwd: SOURCE, stdio: ['ignore', 'pipe', 'pipe'] });
     let out = '', err = '';
@@ -162,7 +164,7 @@ export async function measurePng(page, png) {
 export async function run(name, file, body, options = {}) {
   const pw = await loadPlaywright();
   fs.mkdirSync(OUT, { recursive: true });
-  const studio = await startStudio(file, options.startMs);
+  const studio = await startStudio(file, options.startMs, options.autosave);
   let browser = null;
   const t0 = Date.now();
   try {

@@ -2,9 +2,10 @@
 // with the server's one-line message; computations that run over a second show progress.
 
 export class ApiError extends Error {
-  constructor(status, message) {
+  constructor(status, message, body = null) {
     super(message);
     this.status = status;
+    this.body = body; // the error's JSON ({error, conflict, …}) when there is one
   }
 }
 
@@ -65,11 +66,12 @@ export class Api {
 
   async read(res, as) {
     if (!res.ok) {
-      let message = res.statusText;
+      let message = res.statusText, body = null;
       try {
-        message = (await res.json()).error || message;
+        body = await res.json();
+        message = body.error || message;
       } catch (e) { /* not JSON */ }
-      throw new ApiError(res.status, message);
+      throw new ApiError(res.status, message, body);
     }
     if (as === 'response') return res;
     if (as === 'binary') return res.arrayBuffer();

@@ -95,6 +95,12 @@ async function refresh(force = false) {
   $('save-back').hidden = !session.save_path;
   $('save-back').title = session.save_path ? 'Write the document back to ' + session.save_path : '';
   $('save-seq').hidden = !session.sequence_path;
+  $('save-back').textContent = session.unsaved ? 'Save*' : 'Save';
+  $('recovery').hidden = !session.recovery;
+  if (session.recovery) {
+    const when = session.recovery.modified ? new Date(session.recovery.modified * 1000).toLocaleString() : 'earlier';
+    $('recovery-text').textContent = `Unsaved edits of ${session.file} from a session that ended without saving (${when}) are kept in ${session.recovery.path}.`;
+  }
   if (session.version !== state.version || force) {
     const changed = state.version !== -1;
     state.version = session.version;
@@ -1142,15 +1148,32 @@ function wire() {
     if (format) exportAs(format, of);
     ev.target.value = '';
   };
-  $('save-back').onclick = () => action(async () => {
-    if (!confirm(`Write the document to ${state.session.save_path}?`)) return;
-    const r = await api.post('save', { what: 'document' });
+  // Save-back: a file changed on disk since the studio read it is overwritten only when asked.
+  const saveBack = async (what, path) => {
+    if (!confirm(`Write the ${what} to ${path}?`)) return;
+    let r;
+    try {
+      r = await api.post('save', { what });
+    } catch (e) {
+      if (!(e instanceof ApiError && e.body && e.body.conflict)) throw e;
+      if (!confirm(`${e.message}.\n\nOverwrite it anyway?`)) { message('not saved: ' + e.message, true); return; }
+      r = await api.post('save', { what, overwrite: true });
+    }
     message('saved ' + r.saved);
+    await refresh();
+  };
+  $('save-back').onclick = () => action(() => saveBack('document', state.session.save_path));
+  $('save-seq').onclick = () => action(() => saveBack('sequence', state.session.sequence_path));
+  $('recover').onclick = () => action(async () => {
+    await api.post('recover', { action: 'recover' });
+    message('recovered the unsaved edits of an earlier session (Undo goes back to the file)');
+    await refresh();
   });
-  $('save-seq').onclick = () => action(async () => {
-    if (!confirm(`Write the sequence to ${state.session.sequence_path}?`)) return;
-    const r = await api.post('save', { what: 'sequence' });
-    message('saved ' + r.saved);
+  $('discard-recovery').onclick = () => action(async () => {
+    if (!confirm('Delete the unsaved edits of the earlier session for good?')) return;
+    await api.post('recover', { action: 'discard' });
+    message('discarded the autosave');
+    await refresh();
   });
   $('download-seq').onclick = () => {
     if (!state.folds.length) { message('no folds to download', true); return; }
