@@ -5,7 +5,7 @@ BUILD_FUZZ ?= build-fuzz
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 FUZZ_SECONDS ?= 60
 
-.PHONY: all build deps demo check check-asan bench fuzz fuzz-run install clean
+.PHONY: all build deps demo check check-asan bench fuzz fuzz-run fuzz-long install clean
 
 all: build
 
@@ -37,6 +37,11 @@ fuzz:
 
 fuzz-run: fuzz
 	@sh fuzz/run.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)
+
+# Hour-long runs outside CI (an hour per target by default; FUZZ_LONG_SECONDS to change).
+FUZZ_LONG_SECONDS ?= 3600
+fuzz-long: fuzz
+	@FUZZ_BUDGET=1000000 sh fuzz/run.sh $(BUILD_FUZZ) $(FUZZ_LONG_SECONDS)
 
 install: build
 	@cmake --install $(BUILD)
