@@ -67,6 +67,7 @@ typedef struct sweep_cfg {
     bool simulate;
     double sim_current, sim_duration, sim_dt;
     bool has_sim_dt;
+    int sim_fix;            // -1: the fold's fixed face (or the face at the sheet's centre)
     // layers
     bool layers;
     uint64_t layers_limit;

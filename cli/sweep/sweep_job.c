@@ -304,6 +304,7 @@ int sweep_cfg_parse(const json_t *t, const char *dir, sweep_cfg *c, char *err, s
     c->gravity = -1;
     c->reorientations = -1;
     c->layers_limit = ORI_LAYERS_NO_LIMIT;
+    c->sim_fix = -1;
     const json_t *base = json_object_get(t, "base"), *design = json_object_get(t, "design"), *job = json_object_get(t, "job");
     int rc = parse_base(base, dir, c, err, n);
     if (!rc && design) rc = parse_design(design, c, err, n);
@@ -343,9 +344,10 @@ int sweep_cfg_parse(const json_t *t, const char *dir, sweep_cfg *c, char *err, s
     }
     json_t *sim = json_object_get(job, "simulate");
     if (sim && !json_is_false(sim)) {
-        static const char *const skeys[] = {"current", "duration", "dt"};
-        if (!json_is_object(sim)) return sweep_fail(err, n, "job.simulate: must be {current, duration, dt}");
-        if (!KEYS_OK(sim, skeys, &bad)) return sweep_fail(err, n, "job.simulate.%s: unknown field (current, duration, dt)", bad);
+        static const char *const skeys[] = {"current", "duration", "dt", "fix"};
+        if (!json_is_object(sim)) return sweep_fail(err, n, "job.simulate: must be {current, duration, dt, fix}");
+        if (!KEYS_OK(sim, skeys, &bad)) return sweep_fail(err, n, "job.simulate.%s: unknown field (current, duration, dt, fix)", bad);
+        if (integer(sim, "fix", 0, 1 << 30, &c->sim_fix) < 0) return sweep_fail(err, n, "job.simulate.fix: must be a face index");
         c->simulate = true;
         if (num(sim, "current", &c->sim_current) <= 0 || !(c->sim_current >= 0))
             return sweep_fail(err, n, "job.simulate.current: must be a current >= 0 (A)");
@@ -773,6 +775,106 @@ static void failed(sweep_result *r, const char *why)
     snprintf(r->error, sizeof r->error, "%.*s", (int)sizeof r->error - 1, why);
 }
 
+// The dynamics as orikin simulate runs it: targets from the pattern's fold angles (else ±180° by
+// assignment), the field schedule the file's, or the one the sizing finds best along the
+// quasi-static fold of the reference crease toward its target (5° steps), else the fixed field.
+static void simulate(sweep_worker *w, const sweep_cfg *c, const ori_design *d, sweep_result *r)
+{
+    const bool *want = w->spec->outputs;
+    int E = ori_pattern_edge_count(w->pattern);
+    int fixed = c->sim_fix >= 0 ? c->sim_fix : c->fold ? w->fix : ori_pattern_center_face(w->pattern);
+    char why[SWEEP_ERROR_MAX];
+    if (fixed < 0 || fixed >= ori_pattern_face_count(w->pattern)) {
+        snprintf(why, sizeof why, "job.simulate.fix: no face %d (the pattern has faces 0 to %d)", fixed,
+                 ori_pattern_face_count(w->pattern) - 1);
+        failed(r, why);
+        return;
+    }
+    double *targets = malloc(sizeof(double) * (size_t)(E + 1));
+    bool angles = ori_pattern_has_fold_angles(w->pattern);
+    for (int e = 0; e < E; ++e) {
+        ori_edge ed = ori_pattern_edge(w->pattern, e);
+        targets[e] = angles ? ed.fold_angle_rad
+                     : ed.assignment == ORI_ASSIGN_VALLEY ? ORI_PI : ed.assignment == ORI_ASSIGN_MOUNTAIN ? -ORI_PI : 0.0;
+    }
+    ori_actuation a = ori_design_actuation(d);
+    ori_field_change sched[ORI_SCHEDULE_MAX];
+    int ns = 0;
+    bool fixed_field = c->fixed_field || !a.has_field;
+    ori_error e;
+    if (!(!c->fixed_field && c->reorientations < 0 && a.schedule_count > 0) && !fixed_field) {
+        int ref = a.reference_edge;
+        for (int ed = 0; ed < E && ref == ORI_NULL_INDEX; ++ed) {
+            ori_hinge h;
+            if (ori_design_hinge(d, ed, &h) && h.has_wire) ref = ed;
+        }
+        ori_motion *mo = NULL;
+        if (ref != ORI_NULL_INDEX) {
+            ori_motion_def md = ori_default_motion_def();
+            md.fixed_face = fixed;
+            md.driven_edge = ref;
+            md.to_rad = targets[ref];
+            md.step_rad = ori_deg_to_rad(5.0);
+            if (ori_motion_solve(w->mech, &md, &mo, &e) != ORI_OK || ori_motion_verdict_of(mo) != ORI_MOTION_VALID) {
+                ori_motion_destroy(mo);
+                mo = NULL;
+            }
+        }
+        if (mo) {
+            ori_sizing_def sd = ori_default_sizing_def();
+            sd.design = d;
+            sd.mechanism = w->mech;
+            sd.motion = mo;
+            sd.driven_edge = ref;
+            sd.schedule = ORI_SCHEDULE_OPTIMIZE;
+            sd.reorientations = c->reorientations;
+            ori_sizing *z = NULL;
+            ori_status st = ori_sizing_solve(&sd, &z, &e);
+            ori_motion_destroy(mo);
+            if (st != ORI_OK) {
+                fmt_error(why, sizeof why, "simulate", &e);
+                failed(r, why);
+                free(targets);
+                return;
+            }
+            ns = ori_sizing_schedule_count(z);
+            for (int i = 0; i < ns; ++i) sched[i] = ori_sizing_schedule_at(z, i);
+            ori_sizing_destroy(z);
+        } else {
+            fixed_field = true;
+        }
+    }
+    if (fixed_field && a.has_field) {
+        sched[0].edge = ORI_NULL_INDEX;
+        sched[0].from_rad = 0.0;
+        sched[0].field_t = a.field_t;
+        sched[0].fold = 0;
+        ns = 1;
+    }
+    ori_simulation_def sd = ori_default_simulation_def();
+    sd.design = d;
+    sd.mechanism = w->mech;
+    sd.fixed_face = fixed;
+    sd.target_angles_rad = targets;
+    sd.current_a = c->sim_current;
+    sd.schedule = sched;
+    sd.schedule_count = ns;
+    sd.duration_s = c->sim_duration;
+    sd.has_dt = c->has_sim_dt;
+    sd.dt_s = c->sim_dt;
+    ori_simulation *s = NULL;
+    if (ori_simulation_run(&sd, &s, &e) != ORI_OK) {
+        fmt_error(why, sizeof why, "simulate", &e);
+        failed(r, why);
+    } else {
+        ori_simulation_summary su = ori_simulation_summary_of(s);
+        if (want[SWEEP_OUT_SIM_REACHED]) set(r, SWEEP_OUT_SIM_REACHED, su.reached_target);
+        if (want[SWEEP_OUT_FOLD_TIME] && su.reached_target) set(r, SWEEP_OUT_FOLD_TIME, su.time_to_target_s);
+    }
+    ori_simulation_destroy(s);
+    free(targets);
+}
+
 void sweep_worker_run(sweep_worker *w, int64_t index, sweep_result *r)
 {
     memset(r, 0, sizeof *r);
@@ -858,28 +960,7 @@ void sweep_worker_run(sweep_worker *w, int64_t index, sweep_result *r)
         }
         ori_sizing_destroy(z);
     }
-    if (r->ok && c->simulate) {
-        ori_simulation_def sd = ori_default_simulation_def();
-        sd.design = d;
-        sd.mechanism = w->mech;
-        sd.fixed_face = c->fold ? w->fix : ori_pattern_center_face(w->pattern);
-        sd.current_a = c->sim_current;
-        sd.duration_s = c->sim_duration;
-        sd.has_dt = c->has_sim_dt;
-        sd.dt_s = c->sim_dt;
-        sd.output_frames = 2;
-        sd.settle = false;
-        ori_simulation *s = NULL;
-        if (ori_simulation_run(&sd, &s, &e) != ORI_OK) {
-            fmt_error(why, sizeof why, "simulate", &e);
-            failed(r, why);
-        } else {
-            ori_simulation_summary su = ori_simulation_summary_of(s);
-            if (want[SWEEP_OUT_SIM_REACHED]) set(r, SWEEP_OUT_SIM_REACHED, su.reached_target);
-            if (want[SWEEP_OUT_FOLD_TIME] && su.reached_target) set(r, SWEEP_OUT_FOLD_TIME, su.time_to_target_s);
-        }
-        ori_simulation_destroy(s);
-    }
+    if (r->ok && c->simulate) simulate(w, c, d, r);
     ori_design_destroy(d);
 done:
     if (!r->ok) { // a failed point keeps no partial figures
