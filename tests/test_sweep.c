@@ -224,6 +224,30 @@ Test(sweep, fold_time_equals_orikin_simulate)
     test_tmpdir_remove(dir);
 }
 
+Test(sweep, driven_wires_put_the_current_on_the_driven_crease)
+{
+    char *dir = test_tmpdir();
+    const char *spec = fmt("%s/w.json", dir), *db = fmt("%s/w.db", dir);
+    write_text(spec, "{\"base\": {\"generate\": \"miura\", \"rows\": 4, \"cols\": 4},"
+                     " \"design\": {\"unit\": \"mm\", \"wires\": \"$wires\", \"hinge\": {\"material\": \"Au\", \"width\": 10e-6,"
+                     " \"thickness\": 0.1e-6, \"wire\": {\"length\": 0.4e-3, \"lever\": 0.1e-3}}, \"panel\": {\"material\": \"Si\","
+                     " \"thickness\": 10e-6}, \"field\": [0, 0.06, 0.08]},"
+                     " \"parameters\": [{\"name\": \"wires\", \"values\": [\"driven\", \"every\"]}],"
+                     " \"job\": {\"fold\": {\"drive\": 10, \"to\": -60}, \"actuate\": true}}");
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", spec, db), &out), 0, "%s", out);
+    free(out);
+    json_t *pts = points_of(db);
+    json_t *one = json_array_get(pts, 0), *all = json_array_get(pts, 1);
+    cr_assert_str_eq(json_string_value(json_object_get(one, "status")), "ok");
+    cr_assert_eq(json_integer_value(json_object_get(one, "worst_edge")), 10);
+    // One wire must fold the whole mechanism alone: more current than when every crease pulls.
+    cr_assert(num(one, "mechanism_current") > num(all, "mechanism_current"), "%g %g", num(one, "mechanism_current"),
+              num(all, "mechanism_current"));
+    json_decref(pts);
+    test_tmpdir_remove(dir);
+}
+
 Test(sweep, a_killed_run_resumes_with_only_the_missing_points)
 {
     char *dir = test_tmpdir();

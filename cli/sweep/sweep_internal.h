@@ -33,6 +33,9 @@ typedef struct sweep_cfg {
     bool hinges_every;      // design.hinges "every" (default for a generated base)
     bool has_hinge;
     sweep_hinge_spec hinge;
+    int wires;              // design.wires: 0 every hinge (as the hinge says), 1 the fold's driven crease only, 2 the list
+    int wire_edges[SWEEP_MAX_LOCKS];
+    int wire_count;
     bool has_panel, has_panel_material, has_panel_thickness;
     char panel_material[ORI_MATERIAL_NAME_MAX];
     double panel_thickness;

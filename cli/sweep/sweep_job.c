@@ -187,11 +187,24 @@ static int parse_hinge(const json_t *h, sweep_hinge_spec *s, char *err, size_t n
 
 static int parse_design(const json_t *d, sweep_cfg *c, char *err, size_t n)
 {
-    static const char *const keys[] = {"unit", "hinges", "hinge", "panel", "field", "current_limit", "gravity"};
+    static const char *const keys[] = {"unit", "hinges", "hinge", "wires", "panel", "field", "current_limit", "gravity"};
     const char *bad;
     if (!json_is_object(d)) return sweep_fail(err, n, "design: must be an object");
     if (!KEYS_OK(d, keys, &bad))
-        return sweep_fail(err, n, "design.%s: unknown field (unit, hinges, hinge, panel, field, current_limit, gravity)", bad);
+        return sweep_fail(err, n, "design.%s: unknown field (unit, hinges, hinge, wires, panel, field, current_limit, gravity)", bad);
+    json_t *wires = json_object_get(d, "wires");
+    if (json_is_string(wires) && strcmp(json_string_value(wires), "every") == 0) c->wires = 0;
+    else if (json_is_string(wires) && strcmp(json_string_value(wires), "driven") == 0) c->wires = 1;
+    else if (json_is_array(wires) && json_array_size(wires) <= SWEEP_MAX_LOCKS) {
+        c->wires = 2;
+        for (size_t i = 0; i < json_array_size(wires); ++i) {
+            json_t *x = json_array_get(wires, i);
+            double v = json_number_value(x);
+            if (!json_is_number(x) || v != floor(v) || v < 0 || v > 1e9)
+                return sweep_fail(err, n, "design.wires[%zu]: must be a crease index", i);
+            c->wire_edges[c->wire_count++] = (int)v;
+        }
+    } else if (wires) return sweep_fail(err, n, "design.wires: must be \"every\", \"driven\" or a list of crease indices");
     char s[32];
     int r;
     if ((r = string(d, "unit", s, sizeof s)) < 0) return sweep_fail(err, n, "design.unit: must be a unit name");
@@ -371,6 +384,8 @@ int sweep_cfg_parse(const json_t *t, const char *dir, sweep_cfg *c, char *err, s
     }
     if ((c->actuate || c->simulate) && !design)
         if (!c->base_is_file) return sweep_fail(err, n, "design: a generated pattern has no hinges: give design.unit and design.hinge");
+    if (c->wires == 1 && (!c->fold || c->targets))
+        return sweep_fail(err, n, "design.wires: \"driven\" wires the fold's driven crease: needs job.fold with a drive");
     c->base_key = canonical(base, NULL, NULL);
     c->fold_key = canonical(base, f, col);
     return 0;
@@ -733,6 +748,12 @@ static bool make_design(sweep_worker *w, const sweep_cfg *c, ori_design **out, c
                 if (s->has_wire_length) h.wire.length_m = s->wire_length;
                 if (s->has_wire_lever) h.wire.lever_m = s->wire_lever;
                 if (s->wire_turns > 0) h.wire.turns = s->wire_turns;
+            }
+            if (c->wires == 1 && ed != w->drive) h.has_wire = false;
+            if (c->wires == 2) {
+                bool listed = false;
+                for (int i = 0; i < c->wire_count; ++i) listed |= c->wire_edges[i] == ed;
+                if (!listed) h.has_wire = false;
             }
             if (ori_design_set_hinge(d, ed, &h, &e) != ORI_OK) {
                 if (c->hinges_every && h.has_wire && !had) { // a wire that does not fit its panel: a plain hinge there
