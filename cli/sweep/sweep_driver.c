@@ -162,7 +162,7 @@ static void progress(sink_state *s, bool final)
         s->shown = true;
     } else {
         int decile = (int)(10 * frac);
-        if (final ? s->shown : decile > s->last_decile) {
+        if (final ? s->shown : decile > s->last_decile && decile < 10) {
             fprintf(stderr, "%s: %lld/%lld points (%d%%), %.3g points/s, ETA %s\n", s->prog, (long long)s->written,
                     (long long)s->total, (int)(100 * frac), rate, eta);
             s->last_decile = decile;
