@@ -46,7 +46,7 @@ static double mpi_run(const char *dir, int np, double *wall)
     char cmd[4096], out[8192] = "";
     snprintf(cmd, sizeof cmd,
              "rm -f '%s/np%d.db' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader "
-             "OMPI_MCA_btl_vader_single_copy_mechanism=none '%s' --oversubscribe -np %d '%s' '%s/spec.json' --db '%s/np%d.db' --quiet 2>&1",
+             "OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_oob_tcp_if_include=lo '%s' --oversubscribe -np %d '%s' '%s/spec.json' --db '%s/np%d.db' --quiet 2>&1",
              dir, np, ORI_MPIEXEC, np, ORI_SWEEP_MPI, dir, dir, np);
     double t0 = bench_now();
     FILE *f = popen(cmd, "r");

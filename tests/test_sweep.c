@@ -408,7 +408,7 @@ static int mpirun(int np, const char *args)
 {
     char cmd[8192];
     snprintf(cmd, sizeof cmd,
-             "cd '%s' && ASAN_OPTIONS=detect_leaks=0 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none "
+             "cd '%s' && ASAN_OPTIONS=detect_leaks=0 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_oob_tcp_if_include=lo "
              "OMPI_MCA_rmaps_base_oversubscribe=1 '%s' --oversubscribe -np %d '%s' %s > /dev/null 2>&1",
              ORI_SOURCE_DIR, ORI_MPIEXEC, np, ORI_SWEEP_MPI, args);
     int st = system(cmd);

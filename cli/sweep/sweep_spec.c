@@ -148,6 +148,9 @@ json_t *sweep_point_job(const sweep_spec *spec, int64_t index)
 
 // --- checking -------------------------------------------------------------------------------
 
+// Most values of one parameter whose job is parsed before the sweep runs.
+#define SWEEP_CHECK_VALUES 1000
+
 static bool is_identifier(const char *s)
 {
     if (!(isalpha((unsigned char)s[0]) || s[0] == '_')) return false;
@@ -385,8 +388,12 @@ static int load(sweep_spec *spec, char *err, size_t n)
     sweep_value values[SWEEP_MAX_PARAMS], base[SWEEP_MAX_PARAMS];
     sweep_point_values(spec, 0, base, NULL);
     for (int j = -1; j < spec->param_count; ++j) {
-        int m = j < 0 ? 1 : spec->params[j].kind == SWEEP_LIST || spec->params[j].kind == SWEEP_RANGE ? spec->params[j].count : 0;
-        for (int i = 0; i < m; ++i) {
+        int count = j < 0 ? 1 : spec->params[j].kind == SWEEP_LIST || spec->params[j].kind == SWEEP_RANGE ? spec->params[j].count : 0;
+        // At most SWEEP_CHECK_VALUES values of a long range or list, evenly spread, both ends
+        // included (the others fail their point at run time if they must).
+        int m = count < SWEEP_CHECK_VALUES ? count : SWEEP_CHECK_VALUES;
+        for (int q = 0; q < m; ++q) {
+            int i = count <= SWEEP_CHECK_VALUES ? q : (int)((int64_t)q * (count - 1) / (SWEEP_CHECK_VALUES - 1));
             memcpy(values, base, sizeof values);
             if (j >= 0) {
                 const sweep_param *p = &spec->params[j];
