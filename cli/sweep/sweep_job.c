@@ -409,6 +409,7 @@ struct sweep_worker {
     ori_pattern *pattern;
     ori_mechanism *mech;
     bool has_layers;
+    uint64_t layers_limit; // the limit has_layers was counted with
     char layers_error[SWEEP_ERROR_MAX];
     char layer_count[96];
     // The fold (key: cfg.fold_key).
@@ -502,6 +503,7 @@ static void load_base(sweep_worker *w, const sweep_cfg *c)
 static void count_layers(sweep_worker *w, const sweep_cfg *c)
 {
     w->has_layers = true;
+    w->layers_limit = c->layers_limit;
     w->layers_error[0] = '\0';
     ori_layers_def ld = ori_default_layers_def();
     ld.limit = c->layers_limit;
@@ -923,7 +925,7 @@ void sweep_worker_run(sweep_worker *w, int64_t index, sweep_result *r)
         goto done;
     }
     if (c->layers && want[SWEEP_OUT_LAYER_COUNT]) {
-        if (!w->has_layers) count_layers(w, c);
+        if (!w->has_layers || w->layers_limit != c->layers_limit) count_layers(w, c);
         if (w->layers_error[0]) {
             failed(r, w->layers_error);
             goto done;
