@@ -5,11 +5,13 @@
 // computes points too between messages. Rows are written by rank 0 in point order, as the serial
 // run writes them, so the database is the same whatever the number of ranks.
 //     mpirun -np 4 orikin-sweep-mpi SPEC.json --db out.db
+#define _POSIX_C_SOURCE 200809L
 #include <mpi.h>
 
 #include <cblas.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "sweep.h"
 
@@ -18,6 +20,22 @@ enum { TAG_START = 1, TAG_READY, TAG_WORK, TAG_RESULT, TAG_STOP };
 // Points a worker holds at once (one computing, the others queued), so that it never waits
 // for rank 0 while rank 0 computes a point of its own.
 #define SWEEP_MPI_DEPTH 2
+
+// A waiting rank polls this often instead of spinning in MPI_Probe: on a machine with more
+// ranks than free cores a spinning rank takes the core a computing one needs. The queued point
+// of SWEEP_MPI_DEPTH hides the latency.
+#define SWEEP_MPI_POLL_NS 50000
+
+static void wait_message(int source, int tag, MPI_Status *st)
+{
+    for (;;) {
+        int flag = 0;
+        MPI_Iprobe(source, tag, MPI_COMM_WORLD, &flag, st);
+        if (flag) return;
+        struct timespec ts = {0, SWEEP_MPI_POLL_NS};
+        nanosleep(&ts, NULL);
+    }
+}
 
 typedef struct mpi_ctx {
     int size;
@@ -92,7 +110,7 @@ static int master_run(void *ctxp, const sweep_spec *spec, const int64_t *todo, i
             sweep_worker_run(w, todo[pos], slot[pos]);
         } else { // everything is handed out: wait for a result
             MPI_Status st;
-            MPI_Probe(MPI_ANY_SOURCE, TAG_RESULT, MPI_COMM_WORLD, &st);
+            wait_message(MPI_ANY_SOURCE, TAG_RESULT, &st);
         }
     }
     free(slot);
@@ -107,7 +125,7 @@ static void worker_loop(const char *spec_path)
     sweep_result *r = malloc(sizeof *r);
     for (;;) {
         MPI_Status st;
-        MPI_Probe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &st);
+        wait_message(0, MPI_ANY_TAG, &st);
         if (st.MPI_TAG == TAG_STOP) {
             MPI_Recv(NULL, 0, MPI_BYTE, 0, TAG_STOP, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             break;
