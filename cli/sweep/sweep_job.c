@@ -327,6 +327,7 @@ int sweep_cfg_parse(const json_t *t, const char *dir, sweep_cfg *c, char *err, s
     const char *bad;
     if (!KEYS_OK(job, keys, &bad)) return sweep_fail(err, n, "job.%s: unknown stage (fold, collide, actuate, simulate, layers)", bad);
     json_t *f = json_object_get(job, "fold");
+    if (json_is_false(f) || json_is_null(f)) f = NULL;
     if (f && (rc = parse_fold(f, c, err, n))) return rc;
     json_t *col = json_object_get(job, "collide");
     int r;

@@ -206,6 +206,13 @@ static bool get_number(const json_t *v, double *out)
     return isfinite(*out);
 }
 
+// The job runs the stage (present and not false).
+static bool stage(const json_t *job, const char *name)
+{
+    const json_t *v = json_object_get(job, name);
+    return v && !json_is_false(v) && !json_is_null(v);
+}
+
 static int parse_param(sweep_spec *spec, json_t *o, int j, char *err, size_t n)
 {
     sweep_param *p = &spec->params[j];
@@ -355,8 +362,8 @@ static int load(sweep_spec *spec, char *err, size_t n)
     if (outs && (!json_is_array(outs) || json_array_size(outs) == 0))
         return sweep_fail(err, n, "outputs: must be a non-empty array of output names");
     for (int o = 0; o < SWEEP_OUT_COUNT; ++o) {
-        bool staged = json_object_get(job, outputs[o].job) != NULL;
-        if (o == SWEEP_OUT_COLLIDES || o == SWEEP_OUT_MIN_CLEARANCE) staged = staged && json_object_get(job, "fold");
+        bool staged = stage(job, outputs[o].job);
+        if (o == SWEEP_OUT_COLLIDES || o == SWEEP_OUT_MIN_CLEARANCE) staged = staged && stage(job, "fold");
         spec->outputs[o] = !outs && staged;
     }
     for (size_t i = 0; i < json_array_size(outs); ++i) {
@@ -374,9 +381,9 @@ static int load(sweep_spec *spec, char *err, size_t n)
                               names);
         }
         if (spec->outputs[found]) return sweep_fail(err, n, "outputs[%zu]: %s given twice", i, outputs[found].name);
-        if (!json_object_get(job, outputs[found].job))
+        if (!stage(job, outputs[found].job))
             return sweep_fail(err, n, "outputs[%zu]: %s needs job.%s", i, outputs[found].name, outputs[found].job);
-        if ((found == SWEEP_OUT_COLLIDES || found == SWEEP_OUT_MIN_CLEARANCE) && !json_object_get(job, "fold"))
+        if ((found == SWEEP_OUT_COLLIDES || found == SWEEP_OUT_MIN_CLEARANCE) && !stage(job, "fold"))
             return sweep_fail(err, n, "outputs[%zu]: %s needs job.fold (the motion it checks)", i, outputs[found].name);
         spec->outputs[found] = true;
     }
