@@ -25,6 +25,9 @@ libmicrohttpd-dev
 libgmp-dev
 libqhull-dev
 libdouble-conversion-dev
+libsqlite3-dev
+openmpi-bin
+libopenmpi-dev
 poppler-utils
 chromium
 python3-dev
