@@ -47,7 +47,7 @@ static double mpi_run(const char *dir, int np, double *wall)
     char cmd[4096], out[8192] = "";
     snprintf(cmd, sizeof cmd,
              "rm -f '%s/np%d.db' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader "
-             "OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_oob_tcp_if_include=lo '%s' --oversubscribe -np %d '%s' '%s/spec.json' --db '%s/np%d.db' --quiet 2>&1",
+             "OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_oob_tcp_if_include=lo '%s' --oversubscribe -np %d '%s' '%s/spec.json' -o '%s/np%d.db' --quiet 2>&1",
              dir, np, ORI_MPIEXEC, np, ORI_SWEEP_MPI, dir, dir, np);
     double t0 = bench_now();
     FILE *f = popen(cmd, "r");
@@ -79,7 +79,7 @@ static double two_shards(const char *dir, const char *spec)
             snprintf(shard, sizeof shard, "%d/2", i);
             unlink(db);
             if (!freopen("/dev/null", "w", stdout)) _exit(1);
-            char *argv[] = {"sweep", (char *)spec, "--db", db, "--shard", shard, "--quiet", NULL};
+            char *argv[] = {"sweep", (char *)spec, "-o", db, "--shard", shard, "--quiet", NULL};
             _exit(sweep_main("bench", 7, argv, NULL));
         }
     }
@@ -108,7 +108,7 @@ static int run(void)
     double serial = 1e30, cpu = 0.0;
     for (int k = 0; k < REPEATS; ++k) {
         unlink(db);
-        char *argv[] = {"sweep", spec, "--db", db, "--quiet", NULL};
+        char *argv[] = {"sweep", spec, "-o", db, "--quiet", NULL};
         fflush(stdout);
         int saved = dup(1), fds[2];
         if (pipe(fds) != 0) return 1;

@@ -7,7 +7,7 @@ static int run(int argc, char **argv) { return sweep_main("orikin sweep", argc, 
 const cli_command cli_cmd_sweep = {
     "sweep",
     "parameter sweeps: fold, collide, actuate, simulate, layers per design point; SQLite, resumable",
-    "usage: orikin sweep SPEC.json [--db OUT.db] [--shard I/N] [--commit N] [--csv FILE]\n"
+    "usage: orikin sweep SPEC.json [-o OUT.db] [--shard I/N] [--commit N] [--csv FILE]\n"
     "                    [--jsonl FILE] [--dry-run] [--quiet]\n"
     "       orikin sweep --merge OUT.db A.db B.db ... [--csv FILE] [--jsonl FILE]\n"
     "       orikin sweep --export DB.db [--csv FILE] [--jsonl FILE]\n"
@@ -29,7 +29,7 @@ const cli_command cli_cmd_sweep = {
     "naming the spec's field, e.g. job.fold.to) or database.\n"
     "\n"
     "options:\n"
-    "  --db FILE        the results database (default: SPEC without .json, + .db)\n"
+    "  -o FILE          the results database (default: SPEC without .json, + .db)\n"
     "  --shard I/N      compute only the points with index = I mod N (0 <= I < N), for job\n"
     "                   arrays and GNU parallel; combine the shards' databases with --merge\n"
     "  --commit N       points per transaction (default 16)\n"

@@ -117,7 +117,7 @@ Test(sweep, actuation_values_equal_orikin_actuate)
     char *dir = test_tmpdir();
     const char *db = fmt("%s/flap.db", dir);
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/flap.json --db '%s' --quiet", db), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/flap.json -o '%s' --quiet", db), &out), 0, "%s", out);
     free(out);
     json_t *pts = points_of(db);
     cr_assert_eq(json_array_size(pts), 4);
@@ -159,7 +159,7 @@ Test(sweep, fold_and_layers_values_equal_orikin_fold_and_layers)
                          " \"job\": {\"fold\": {\"fix\": 4, \"drive\": 12, \"lock\": [11], \"to\": \"$to\"}, \"collide\": true}}",
                          test_repo_path("examples/patterns/open-corner.fold")));
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", spec, db), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --quiet", spec, db), &out), 0, "%s", out);
     free(out);
     json_t *pts = points_of(db);
     cr_assert_eq(json_array_size(pts), 3);
@@ -180,7 +180,7 @@ Test(sweep, fold_and_layers_values_equal_orikin_fold_and_layers)
     spec = fmt("%s/layers.json", dir), db = fmt("%s/layers.db", dir);
     write_text(spec, "{\"base\": {\"generate\": \"miura\", \"rows\": \"$r\", \"cols\": 2},"
                      " \"parameters\": [{\"name\": \"r\", \"from\": 1, \"to\": 3, \"count\": 3}], \"job\": {\"layers\": true}}");
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", spec, db), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --quiet", spec, db), &out), 0, "%s", out);
     free(out);
     pts = points_of(db);
     cr_assert_eq(json_array_size(pts), 3);
@@ -205,7 +205,7 @@ Test(sweep, fold_time_equals_orikin_simulate)
                          " \"job\": {\"simulate\": {\"current\": \"$I\", \"duration\": 0.01, \"fix\": 0}}}",
                          test_repo_path("examples/patterns/thesis-flap.fold")));
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", spec, db), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --quiet", spec, db), &out), 0, "%s", out);
     free(out);
     json_t *pts = points_of(db);
     cr_assert_eq(json_array_size(pts), 2);
@@ -235,7 +235,7 @@ Test(sweep, driven_wires_put_the_current_on_the_driven_crease)
                      " \"parameters\": [{\"name\": \"wires\", \"values\": [\"driven\", \"every\"]}],"
                      " \"job\": {\"fold\": {\"drive\": 10, \"to\": -60}, \"actuate\": true}}");
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", spec, db), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --quiet", spec, db), &out), 0, "%s", out);
     free(out);
     json_t *pts = points_of(db);
     json_t *one = json_array_get(pts, 0), *all = json_array_get(pts, 1);
@@ -253,14 +253,14 @@ Test(sweep, a_killed_run_resumes_with_only_the_missing_points)
     char *dir = test_tmpdir();
     const char *ref = fmt("%s/ref.db", dir);
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/kill.json --db '%s' --quiet", ref), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/kill.json -o '%s' --quiet", ref), &out), 0, "%s", out);
     free(out);
     const char *db = fmt("%s/killed.db", dir);
     pid_t pid = fork();
     cr_assert_geq(pid, 0);
     if (pid == 0) {
         if (chdir(ORI_SOURCE_DIR) != 0) _exit(100);
-        execl(ORI_CLI_PATH, ORI_CLI_PATH, "sweep", "tests/data/sweep/kill.json", "--db", db, "--commit", "1", "--quiet", (char *)NULL);
+        execl(ORI_CLI_PATH, ORI_CLI_PATH, "sweep", "tests/data/sweep/kill.json", "-o", db, "--commit", "1", "--quiet", (char *)NULL);
         _exit(101);
     }
     // Kill it once some points are stored (polling the database as another reader would).
@@ -278,14 +278,14 @@ Test(sweep, a_killed_run_resumes_with_only_the_missing_points)
     cr_assert(kept >= 25 && kept < 240, "%lld points kept", (long long)kept);
     // The resumed run computes exactly the others.
     char *err = NULL;
-    cr_assert_eq(test_run_cli_split(fmt("sweep tests/data/sweep/kill.json --db '%s'", db), &out, &err), 0, "%s", err);
+    cr_assert_eq(test_run_cli_split(fmt("sweep tests/data/sweep/kill.json -o '%s'", db), &out, &err), 0, "%s", err);
     cr_assert(strstr(err, fmt("240 points, %lld stored in", (long long)kept)), "%s", err);
     cr_assert(strstr(out, fmt("%lld points computed", (long long)(240 - kept))), "%s", out);
     cr_assert(strstr(out, "240 of 240 stored"), "%s", out);
     free(out);
     free(err);
     // A third run has nothing left to do.
-    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/kill.json --db '%s' --quiet", db), &out), 0);
+    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/kill.json -o '%s' --quiet", db), &out), 0);
     cr_assert(strstr(out, "0 points computed"), "%s", out);
     free(out);
     char *a = rows_of(ref), *b = rows_of(db);
@@ -303,10 +303,10 @@ Test(sweep, shards_merged_equal_one_run)
     const char *one = fmt("%s/one.db", dir);
     char *out = NULL;
     const char *spec = "tests/data/sweep/flap.json";
-    cr_assert_eq(test_run_cli(fmt("sweep %s --db '%s' --quiet", spec, one), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep %s -o '%s' --quiet", spec, one), &out), 0, "%s", out);
     free(out);
     for (int i = 0; i < 3; ++i) {
-        cr_assert_eq(test_run_cli(fmt("sweep %s --db '%s/s%d.db' --shard %d/3 --quiet", spec, dir, i, i), &out), 0, "%s", out);
+        cr_assert_eq(test_run_cli(fmt("sweep %s -o '%s/s%d.db' --shard %d/3 --quiet", spec, dir, i, i), &out), 0, "%s", out);
         free(out);
     }
     cr_assert_eq(row_count(fmt("%s/s0.db", dir)), 2); // points 0 and 3
@@ -321,7 +321,7 @@ Test(sweep, shards_merged_equal_one_run)
     // A shard of another spec is refused, naming it; nothing is written.
     const char *other = fmt("%s/other.json", dir), *odb = fmt("%s/other.db", dir);
     write_text(other, fmt("{\"base\": \"%s\", \"job\": {\"layers\": true}}", test_repo_path("examples/patterns/thesis-flap.fold")));
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", other, odb), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --quiet", other, odb), &out), 0, "%s", out);
     free(out);
     const char *bad = fmt("%s/bad.db", dir);
     cr_assert_eq(test_run_cli(fmt("sweep --merge '%s' '%s/s0.db' '%s'", bad, dir, odb), &out), 3);
@@ -329,7 +329,7 @@ Test(sweep, shards_merged_equal_one_run)
     free(out);
     cr_assert_neq(access(bad, F_OK), 0);
     // Resuming into a database of another spec is refused too.
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", other, one), &out), 3);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --quiet", other, one), &out), 3);
     cr_assert(strstr(out, "holds the results of another spec"), "%s", out);
     free(out);
     test_tmpdir_remove(dir);
@@ -345,9 +345,9 @@ Test(sweep, seeded_draws_are_reproducible_and_follow_their_distribution)
                          " \"actuate\": true}, \"outputs\": [\"current_needed\"]}",
                          test_repo_path("examples/patterns/thesis-flap.fold")));
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s/a.db' --quiet", spec, dir), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s/a.db' --quiet", spec, dir), &out), 0, "%s", out);
     free(out);
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s/b.db' --quiet --shard 1/2", spec, dir), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s/b.db' --quiet --shard 1/2", spec, dir), &out), 0, "%s", out);
     free(out);
     json_t *a = points_of(fmt("%s/a.db", dir)), *b = points_of(fmt("%s/b.db", dir));
     cr_assert_eq(json_array_size(a), 400);
@@ -387,7 +387,7 @@ Test(sweep, a_failed_point_records_its_error_and_the_sweep_goes_on)
                          " \"job\": {\"fold\": {\"fix\": 4, \"drive\": \"$e\", \"lock\": [11], \"to\": 60}}}",
                          test_repo_path("examples/patterns/open-corner.fold")));
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep '%s' --db '%s' --quiet", spec, db), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --quiet", spec, db), &out), 0, "%s", out);
     cr_assert(strstr(out, "2 points computed"), "%s", out);
     cr_assert(strstr(out, "1 failed"), "%s", out);
     free(out);
@@ -420,13 +420,13 @@ Test(sweep, mpi_databases_are_identical_for_1_2_3_ranks)
     char *dir = test_tmpdir();
     const char *serial = fmt("%s/serial.db", dir);
     char *out = NULL;
-    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/mpi.json --db '%s' --quiet", serial), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/mpi.json -o '%s' --quiet", serial), &out), 0, "%s", out);
     free(out);
     char *want = rows_of(serial);
     cr_assert(strstr(want, "\"status\":\"ok\""));
     for (int np = 1; np <= 3; ++np) {
         const char *db = fmt("%s/np%d.db", dir, np);
-        cr_assert_eq(mpirun(np, fmt("tests/data/sweep/mpi.json --db '%s' --quiet", db)), 0, "np %d", np);
+        cr_assert_eq(mpirun(np, fmt("tests/data/sweep/mpi.json -o '%s' --quiet", db)), 0, "np %d", np);
         char *got = rows_of(db);
         cr_assert_str_eq(got, want, "np %d", np);
         free(got);
@@ -435,9 +435,9 @@ Test(sweep, mpi_databases_are_identical_for_1_2_3_ranks)
     }
     // An MPI run resumes a serial one that stopped halfway (a shard's points are there).
     const char *half = fmt("%s/half.db", dir);
-    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/mpi.json --db '%s' --quiet --shard 0/2", half), &out), 0, "%s", out);
+    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/mpi.json -o '%s' --quiet --shard 0/2", half), &out), 0, "%s", out);
     free(out);
-    cr_assert_eq(mpirun(2, fmt("tests/data/sweep/mpi.json --db '%s' --quiet", half)), 0);
+    cr_assert_eq(mpirun(2, fmt("tests/data/sweep/mpi.json -o '%s' --quiet", half)), 0);
     char *got = rows_of(half);
     cr_assert_str_eq(got, want);
     free(got);

@@ -163,7 +163,7 @@ int sweep_main(const char *prog, int argc, char **argv, const sweep_backend *bac
 // The parsed command line (shared with the MPI driver, which parses on every rank).
 typedef struct sweep_args {
     const char *spec_path;
-    const char *db_path;   // --db (default: SPEC without .json, + .db)
+    const char *db_path;   // -o (default: SPEC without .json, + .db)
     char *db_default;
     int shard, shards;     // --shard I/N (0 ≤ I < N); 0/1 without
     int commit_every;      // --commit N

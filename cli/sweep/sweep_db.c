@@ -140,7 +140,7 @@ int sweep_db_open(const char *path, const sweep_spec *spec, sweep_db **out, char
         char *hash = meta(d->db, "main", "spec_hash");
         bool same = hash && strcmp(hash, spec->hash) == 0;
         if (!same)
-            rc = sweep_fail(err, n, "%s: holds the results of another spec or base file (hash %s, this spec %s): use another --db or remove it",
+            rc = sweep_fail(err, n, "%s: holds the results of another spec or base file (hash %s, this spec %s): use another -o or remove it",
                             path, hash ? hash : "none", spec->hash);
         free(hash);
         if (rc) goto fail;

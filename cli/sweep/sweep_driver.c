@@ -47,7 +47,7 @@ int sweep_parse_args(const char *prog, int argc, char **argv, sweep_args *a)
     int nseen = 0;
     for (int i = 1; i < argc; ++i) {
         const char *o = argv[i];
-        bool valued = strcmp(o, "--db") == 0 || strcmp(o, "--shard") == 0 || strcmp(o, "--commit") == 0 || strcmp(o, "--csv") == 0 ||
+        bool valued = strcmp(o, "-o") == 0 || strcmp(o, "--shard") == 0 || strcmp(o, "--commit") == 0 || strcmp(o, "--csv") == 0 ||
                       strcmp(o, "--jsonl") == 0 || strcmp(o, "--merge") == 0 || strcmp(o, "--export") == 0;
         if (valued) {
             for (int s = 0; s < nseen; ++s)
@@ -55,7 +55,7 @@ int sweep_parse_args(const char *prog, int argc, char **argv, sweep_args *a)
             seen[nseen++] = o;
             if (i + 1 >= argc) return usage(prog, "%s needs a value", o);
             const char *v = argv[++i];
-            if (strcmp(o, "--db") == 0) a->db_path = v;
+            if (strcmp(o, "-o") == 0) a->db_path = v;
             else if (strcmp(o, "--csv") == 0) a->csv = v;
             else if (strcmp(o, "--jsonl") == 0) a->jsonl = v;
             else if (strcmp(o, "--merge") == 0) a->merge_out = v;

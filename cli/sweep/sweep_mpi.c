@@ -4,7 +4,7 @@
 // gets the next as soon as it returns a result, so uneven points balance themselves; rank 0
 // computes points too between messages. Rows are written by rank 0 in point order, as the serial
 // run writes them, so the database is the same whatever the number of ranks.
-//     mpirun -np 4 orikin-sweep-mpi SPEC.json --db out.db
+//     mpirun -np 4 orikin-sweep-mpi SPEC.json -o out.db
 #define _POSIX_C_SOURCE 200809L
 #include <mpi.h>
 
@@ -184,7 +184,7 @@ int main(int argc, char **argv)
         const char *spec_path = NULL;
         for (int i = 1; i < argc && !spec_path; ++i) {
             const char *o = argv[i];
-            if (strcmp(o, "--db") == 0 || strcmp(o, "--shard") == 0 || strcmp(o, "--commit") == 0 || strcmp(o, "--csv") == 0 ||
+            if (strcmp(o, "-o") == 0 || strcmp(o, "--shard") == 0 || strcmp(o, "--commit") == 0 || strcmp(o, "--csv") == 0 ||
                 strcmp(o, "--jsonl") == 0 || strcmp(o, "--merge") == 0 || strcmp(o, "--export") == 0)
                 ++i;
             else if (o[0] != '-' || !o[1]) spec_path = o;
