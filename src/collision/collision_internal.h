@@ -36,6 +36,9 @@ typedef struct col_bvh {
 void col_bvh_free(col_bvh *bvh);
 // Median-split hierarchy of n boxes (leaves of at most a few items).
 void col_bvh_build(col_bvh *bvh, const col_box *boxes, int n);
+// The same hierarchy over new boxes of the same items (each node's box the union of its items'):
+// the pairs it gives are exact, only the traversal's pruning degrades as the items move.
+void col_bvh_refit(col_bvh *bvh, const col_box *boxes);
 // Every pair a < b whose boxes are at most margin apart in every axis; fn returns false to stop.
 typedef bool col_pair_fn(void *user, int a, int b);
 void col_bvh_self_pairs(col_bvh *bvh, double margin, col_pair_fn *fn, void *user);
@@ -142,6 +145,10 @@ struct ori_collider {
     double tol_pen, tol_touch;
     double distance_bound;        // col_pair_test measures non-adjacent pairs exactly below this too
     col_bvh bvh;
+    // Today's motion checker (tests: the reference the incremental one is compared with): every
+    // step from nothing, no window of pairs, no sides kept from the step before, no shortcut in
+    // the pair test. Off by default.
+    bool reference;
 
     // results of the last check
     ori_contact *contacts;
@@ -186,6 +193,13 @@ void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_resu
 // clearance with the checker's own hierarchy when wanted, counts and picks the witness).
 void col_check_begin(ori_collider *c, ori_collision_result *out);
 void col_check_pair(ori_collider *c, ori_collision_result *out, bool want_clearance, int f, int g);
+// The same with the pair's col_adjacency_of already known.
+void col_check_pair_kind(ori_collider *c, ori_collision_result *out, bool want_clearance, int f, int g,
+                         col_adjacency kind);
 void col_check_end(ori_collider *c, bool want_clearance, ori_collision_result *out);
+
+// Motion checks (ori_collision_check_motion, _record, _multifold) with today's checker (true) or
+// the incremental one (false, the default); for the tests comparing them.
+void col_collider_set_reference(ori_collider *c, bool reference);
 
 #endif
