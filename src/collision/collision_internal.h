@@ -181,6 +181,9 @@ void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_p
 double col_face_distance(ori_collider *c, int f, int g, double bound, ori_v3 *pa, ori_v3 *pb);
 // Side of face a relative to face b's front side; *point = a point of the overlap (on b).
 col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point);
+// The same, first trying (convex faces) whether a line along a side parts them: faster where
+// they mostly do not overlap, slower where they do; the same answer.
+col_side col_face_side_parted(ori_collider *c, int a, int b, ori_v3 *point);
 // The same from a's vertices alone, whether or not a lies over b: ABOVE or BELOW when all are
 // beyond the penetration tolerance on that side, FLAT when all are within it, else MIXED.
 col_side col_face_side_quick(const ori_collider *c, int a, int b);

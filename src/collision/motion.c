@@ -564,7 +564,9 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         int k = t->slot;
         col_side qa = k >= 0 && w->q_at[k] == s->state_a ? (col_side)w->q[k] : col_face_side_quick(c, t->a, t->b);
         if ((qa == COL_SIDE_ABOVE || qa == COL_SIDE_BELOW) && qa == t->qb) continue;
-        t->sa = k >= 0 && w->side_at[k] == s->state_a ? (col_side)w->side[k] : col_face_side(c, t->a, t->b, NULL);
+        t->sa = k >= 0 && w->side_at[k] == s->state_a ? (col_side)w->side[k]
+                : c->reference                         ? col_face_side(c, t->a, t->b, NULL)
+                                                       : col_face_side_parted(c, t->a, t->b, NULL);
         t->open = t->adjacent ? 0 : 1; // until the sides at both ends agree
     }
     geom_swap(c, &s->a); // back to B
