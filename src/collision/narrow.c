@@ -645,6 +645,15 @@ void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_p
     out->cls = COL_APART;
     col_work *w = &c->work;
     const col_geom *gf = &c->geom[f], *gg = &c->geom[g];
+    // Faces joined by a crease meet only as coplanar layers (below): a vertex of either beyond
+    // the contact tolerance from the other's plane ends the test (not in the reference checker).
+    if (adjacency == COL_ADJ_CREASE && !c->reference) {
+        const int *fv = c->face_verts + c->face_off[f], *gv = c->face_verts + c->face_off[g];
+        for (int i = 0; i < face_size(c, f); ++i)
+            if (fabs(ori_v3_dot(gg->n, c->pos[fv[i]]) - gg->d) > c->tol_touch) return;
+        for (int j = 0; j < face_size(c, g); ++j)
+            if (fabs(ori_v3_dot(gf->n, c->pos[gv[j]]) - gf->d) > c->tol_touch) return;
+    }
     int n = load(c, f, w->pp), m = load(c, g, w->qq);
     double maxp = 0.0, maxq = 0.0;
     for (int i = 0; i < n; ++i) {
