@@ -155,13 +155,12 @@ typedef struct col_step {
     struct tracked {
         int a, b;
         bool crease;  // convex faces joined by a crease: they turn about its line, never through each other
-        col_side sa;  // side of a relative to b's front at the clean state (NONE when not needed)
-        col_side qb;  // side at B from a's vertices alone (col_face_side_quick)
+        unsigned char sa; // col_side of a relative to b's front at the clean state (NONE when not needed)
+        unsigned char qb; // col_side at B from a's vertices alone (col_face_side_quick)
         bool adjacent; // the faces share a vertex
         signed char open; // not decided by the layer sides (1; -1: and touching at B): the sweep decides
         unsigned char kind; // col_adjacency
-        int slot;     // the pair in s->w.cur (-1: the reference checker's, kept nowhere)
-    } *pairs;
+    } *pairs;            // the incremental checker's: in the order of s->w.cur
     double *reach, *bulge; // per face over the step: path-length bound and bulge off the chords
     double *pair_reach;    // per tracked pair: how far a can travel relative to b
     int npairs, pair_cap;
@@ -224,7 +223,6 @@ static bool collect_pair(void *user, int a, int b)
     s->pairs[s->npairs].crease = adj == COL_ADJ_CREASE;
     s->pairs[s->npairs].adjacent = adj != COL_ADJ_NONE;
     s->pairs[s->npairs].kind = (unsigned char)adj;
-    s->pairs[s->npairs].slot = -1;
     s->pairs[s->npairs].open = 0;
     s->pairs[s->npairs].sa = COL_SIDE_NONE;
     s->npairs++;
@@ -484,7 +482,6 @@ static void incremental_pairs(col_step *s, double margin)
         t->adjacent = t->kind != COL_ADJ_NONE;
         t->open = 0;
         t->sa = COL_SIDE_NONE;
-        t->slot = i;
     }
     s->npairs = n;
 }
@@ -561,7 +558,7 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         t->open = 0;
         if (t->crease) continue;
         // A was the B of the step before: its sides found then are A's
-        int k = t->slot;
+        int k = c->reference ? -1 : i;
         col_side qa = k >= 0 && w->q_at[k] == s->state_a ? (col_side)w->q[k] : col_face_side_quick(c, t->a, t->b);
         if ((qa == COL_SIDE_ABOVE || qa == COL_SIDE_BELOW) && qa == t->qb) continue;
         t->sa = k >= 0 && w->side_at[k] == s->state_a ? (col_side)w->side[k]
@@ -571,9 +568,9 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     }
     geom_swap(c, &s->a); // back to B
     for (int i = 0; i < s->npairs; ++i)
-        if (s->pairs[i].slot >= 0 && !s->pairs[i].crease) {
-            w->q[s->pairs[i].slot] = (unsigned char)s->pairs[i].qb;
-            w->q_at[s->pairs[i].slot] = bid;
+        if (!c->reference && !s->pairs[i].crease) {
+            w->q[i] = s->pairs[i].qb;
+            w->q_at[i] = bid;
         }
     memo_clear(&s->next);
     int flip = -1;
@@ -588,9 +585,9 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         }
         ori_v3 p;
         col_side now = col_face_side(c, s->pairs[i].a, s->pairs[i].b, &p);
-        if (s->pairs[i].slot >= 0) {
-            w->side[s->pairs[i].slot] = (unsigned char)now;
-            w->side_at[s->pairs[i].slot] = bid;
+        if (!c->reference) {
+            w->side[i] = (unsigned char)now;
+            w->side_at[i] = bid;
         }
         if (now == was || now == COL_SIDE_FLAT) s->pairs[i].open = 0;
         if (now == COL_SIDE_FLAT) memo_put(&s->next, key, (unsigned char)was);
