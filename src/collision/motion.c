@@ -424,12 +424,10 @@ static void incremental_pairs(col_step *s, double margin)
     w->un = 0;
     col_bvh_self_pairs(&s->bvh, margin, pair_collect, w);
     int n = w->un;
-    // sorted by (a, b): counted by a, then each a's few partners in order
-    if (!w->off) w->off = ori__alloc(sizeof(int) * (size_t)(F + 2));
-    int *off = w->off;
-    memset(off, 0, sizeof(int) * (size_t)(F + 2));
-    for (int i = 0; i < n; ++i) off[w->ua[i] + 2]++;
-    for (int f = 0; f < F; ++f) off[f + 2] += off[f + 1];
+    if (n > s->pair_cap) {
+        ORI__RESERVE(s->pairs, s->pair_cap, n);
+        s->pair_reach = ori__realloc(s->pair_reach, sizeof(double) * (size_t)s->pair_cap);
+    }
     col_pair_list spare = w->old; // the list before last, whose storage this step's takes
     w->old = w->cur;
     w->cur = spare;
@@ -437,23 +435,33 @@ static void incremental_pairs(col_step *s, double margin)
     pair_list_reserve(l, n + 1);
     int *fa = l->fa, *fb = l->fb;
     unsigned char *kind = l->kind;
-    for (int i = 0; i < n; ++i) fb[off[w->ua[i] + 1]++] = w->ub[i];
-    // now off[f] … off[f + 1] is face f's run
+    // sorted by (a, b): counted by b into s->pairs (as scratch), then stably by a into the list
+    if (!w->off) w->off = ori__alloc(sizeof(int) * (size_t)(F + 2));
+    int *off = w->off;
+    struct tracked *tmp = s->pairs;
+    memset(off, 0, sizeof(int) * (size_t)(F + 2));
+    for (int i = 0; i < n; ++i) off[w->ub[i] + 2]++;
+    for (int f = 0; f < F; ++f) off[f + 2] += off[f + 1];
+    for (int i = 0; i < n; ++i) {
+        int at = off[w->ub[i] + 1]++;
+        tmp[at].a = w->ua[i];
+        tmp[at].b = w->ub[i];
+    }
+    memset(off, 0, sizeof(int) * (size_t)(F + 2));
+    for (int i = 0; i < n; ++i) off[tmp[i].a + 2]++;
+    for (int f = 0; f < F; ++f) off[f + 2] += off[f + 1];
+    for (int i = 0; i < n; ++i) {
+        int at = off[tmp[i].a + 1]++;
+        fa[at] = tmp[i].a;
+        fb[at] = tmp[i].b;
+    }
+    // now off[f] … off[f + 1] is face f's run, in order
     int j0 = 0;
     for (int f = 0; f < F; ++f) {
         int lo = off[f], hi = off[f + 1];
-        for (int i = lo + 1; i < hi; ++i) {
-            int v = fb[i], j = i - 1;
-            while (j >= lo && fb[j] > v) {
-                fb[j + 1] = fb[j];
-                j--;
-            }
-            fb[j + 1] = v;
-        }
         int k = c->adj_off[f], kend = c->adj_off[f + 1];
         for (int i = lo; i < hi; ++i) {
             int g = fb[i];
-            fa[i] = f;
             while (k < kend && c->adj[k] < g) k++;
             kind[i] = k < kend && c->adj[k] == g ? c->adj_kind[k] : (unsigned char)COL_ADJ_NONE;
             // the sides the last step's list had for the pair (both lists sorted)
@@ -469,10 +477,6 @@ static void incremental_pairs(col_step *s, double margin)
         }
     }
     l->n = n;
-    if (n > s->pair_cap) {
-        ORI__RESERVE(s->pairs, s->pair_cap, n);
-        s->pair_reach = ori__realloc(s->pair_reach, sizeof(double) * (size_t)s->pair_cap);
-    }
     for (int i = 0; i < n; ++i) {
         struct tracked *t = &s->pairs[i];
         t->a = fa[i];
