@@ -101,27 +101,27 @@ typedef struct body_frame {
     ori_v3 o, e1, e2, n;
 } body_frame;
 
-// The pairs of the incremental checker's last step, sorted by (fa, fb), each with its layer
+// The pairs of the incremental checker's last step, sorted by (face, fb), each with its layer
 // sides as last found and the state they were found in: the next step's state A is that state
 // B, and most of its pairs are the same.
 typedef struct col_pair_list {
     int n, cap;
-    int *fa, *fb;              // the pairs, sorted by (fa, fb)
+    int *off;                  // face f's pairs are off[f] … off[f + 1] (faces + 2 ints)
+    int *fb;                   // their second faces, in order
     unsigned char *kind;       // col_adjacency of each pair
-    unsigned char *q, *side;   // col_face_side_quick and col_face_side of fa relative to fb …
+    unsigned char *q, *side;   // col_face_side_quick and col_face_side of f relative to fb …
     unsigned *q_at, *side_at;  // … at these states (0: not known)
 } col_pair_list;
 
 typedef struct col_pairs {
     col_pair_list cur, old;    // this step's, and the last step's (its storage reused)
-    // scratch: the pairs as the hierarchy gives them, and the start of each face's run
+    // scratch: the pairs as the hierarchy gives them
     int *ua, *ub, un, ucap;
-    int *off;
 } col_pairs;
 
 static void pair_list_free(col_pair_list *l)
 {
-    ori__free(l->fa);
+    ori__free(l->off);
     ori__free(l->fb);
     ori__free(l->kind);
     ori__free(l->q);
@@ -135,9 +135,8 @@ static void pair_list_reserve(col_pair_list *l, int n)
 {
     if (n <= l->cap) return;
     int cap = l->cap;
-    ORI__RESERVE(l->fa, cap, n);
+    ORI__RESERVE(l->fb, cap, n);
     size_t m = (size_t)cap;
-    l->fb = ori__realloc(l->fb, sizeof(int) * m);
     l->kind = ori__realloc(l->kind, m);
     l->q = ori__realloc(l->q, m);
     l->side = ori__realloc(l->side, m);
@@ -204,7 +203,6 @@ static void step_free(col_step *s)
     pair_list_free(&s->w.old);
     ori__free(s->w.ua);
     ori__free(s->w.ub);
-    ori__free(s->w.off);
     ori__free(s->pair_reach);
     ori__free(s->pairs);
     memo_free(&s->mem);
@@ -433,11 +431,11 @@ static void incremental_pairs(col_step *s, double margin)
     w->cur = spare;
     col_pair_list *l = &w->cur, *o = &w->old;
     pair_list_reserve(l, n + 1);
-    int *fa = l->fa, *fb = l->fb;
+    int *fb = l->fb;
     unsigned char *kind = l->kind;
     // sorted by (a, b): counted by b into s->pairs (as scratch), then stably by a into the list
-    if (!w->off) w->off = ori__alloc(sizeof(int) * (size_t)(F + 2));
-    int *off = w->off;
+    if (!l->off) l->off = ori__alloc(sizeof(int) * (size_t)(F + 2));
+    int *off = l->off;
     struct tracked *tmp = s->pairs;
     memset(off, 0, sizeof(int) * (size_t)(F + 2));
     for (int i = 0; i < n; ++i) off[w->ub[i] + 2]++;
@@ -451,22 +449,20 @@ static void incremental_pairs(col_step *s, double margin)
     for (int i = 0; i < n; ++i) off[tmp[i].a + 2]++;
     for (int f = 0; f < F; ++f) off[f + 2] += off[f + 1];
     for (int i = 0; i < n; ++i) {
-        int at = off[tmp[i].a + 1]++;
-        fa[at] = tmp[i].a;
-        fb[at] = tmp[i].b;
+        fb[off[tmp[i].a + 1]++] = tmp[i].b;
     }
     // now off[f] … off[f + 1] is face f's run, in order
-    int j0 = 0;
     for (int f = 0; f < F; ++f) {
         int lo = off[f], hi = off[f + 1];
         int k = c->adj_off[f], kend = c->adj_off[f + 1];
+        int j0 = o->n > 0 ? o->off[f] : 0, jend = o->n > 0 ? o->off[f + 1] : 0;
         for (int i = lo; i < hi; ++i) {
             int g = fb[i];
             while (k < kend && c->adj[k] < g) k++;
             kind[i] = k < kend && c->adj[k] == g ? c->adj_kind[k] : (unsigned char)COL_ADJ_NONE;
-            // the sides the last step's list had for the pair (both lists sorted)
-            while (j0 < o->n && (o->fa[j0] < f || (o->fa[j0] == f && o->fb[j0] < g))) j0++;
-            if (j0 < o->n && o->fa[j0] == f && o->fb[j0] == g) {
+            // the sides the last step's list had for the pair (both runs sorted)
+            while (j0 < jend && o->fb[j0] < g) j0++;
+            if (j0 < jend && o->fb[j0] == g) {
                 l->q[i] = o->q[j0];
                 l->q_at[i] = o->q_at[j0];
                 l->side[i] = o->side[j0];
@@ -477,16 +473,17 @@ static void incremental_pairs(col_step *s, double margin)
         }
     }
     l->n = n;
-    for (int i = 0; i < n; ++i) {
-        struct tracked *t = &s->pairs[i];
-        t->a = fa[i];
-        t->b = fb[i];
-        t->kind = kind[i];
-        t->crease = t->kind == COL_ADJ_CREASE;
-        t->adjacent = t->kind != COL_ADJ_NONE;
-        t->open = 0;
-        t->sa = COL_SIDE_NONE;
-    }
+    for (int f = 0; f < F; ++f)
+        for (int i = off[f]; i < off[f + 1]; ++i) {
+            struct tracked *t = &s->pairs[i];
+            t->a = f;
+            t->b = fb[i];
+            t->kind = kind[i];
+            t->crease = t->kind == COL_ADJ_CREASE;
+            t->adjacent = t->kind != COL_ADJ_NONE;
+            t->open = 0;
+            t->sa = COL_SIDE_NONE;
+        }
     s->npairs = n;
 }
 
