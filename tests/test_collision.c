@@ -1220,6 +1220,55 @@ Test(collision, the_cloud_refuses_bad_spacings)
     strip_free(&s);
 }
 
+// A hierarchy refitted to moved boxes gives every pair within the margin, each once: the same
+// pairs as a fresh one and as all pairs (the incremental checker refits between rebuilds).
+static bool count_pair(void *user, int a, int b)
+{
+    int *seen = user; // 64 × 64 counts
+    cr_assert_lt(a, b);
+    seen[a * 64 + b]++;
+    return true;
+}
+
+Test(collision, a_refitted_hierarchy_gives_the_pairs_of_all_pairs)
+{
+    uint64_t seed = 99;
+    col_box boxes[64];
+    for (int i = 0; i < 64; ++i) {
+        ori_v3 o = ori_v3_make(6 * lcg(&seed), 6 * lcg(&seed), 2 * lcg(&seed));
+        boxes[i].lo = o;
+        boxes[i].hi = ori_v3_add(o, ori_v3_make(lcg(&seed), lcg(&seed), lcg(&seed)));
+    }
+    col_bvh bvh;
+    memset(&bvh, 0, sizeof bvh);
+    col_bvh_build(&bvh, boxes, 64);
+    static int seen[64 * 64];
+    for (int round = 0; round < 12; ++round) {
+        // every box moves and grows or shrinks: far, in some rounds, from where it was built
+        double travel = round < 6 ? 0.3 : 3.0;
+        for (int i = 0; i < 64; ++i) {
+            ori_v3 d = ori_v3_make(travel * (lcg(&seed) - 0.5), travel * (lcg(&seed) - 0.5), travel * (lcg(&seed) - 0.5));
+            boxes[i].lo = ori_v3_add(boxes[i].lo, d);
+            boxes[i].hi = ori_v3_add(boxes[i].hi, ori_v3_add(d, ori_v3_make(0.2 * (lcg(&seed) - 0.3), 0.0, 0.0)));
+            if (boxes[i].hi.x < boxes[i].lo.x) boxes[i].hi.x = boxes[i].lo.x;
+        }
+        col_bvh_refit(&bvh, boxes);
+        double margin = 0.05 * round;
+        memset(seen, 0, sizeof seen);
+        col_bvh_self_pairs(&bvh, margin, count_pair, seen);
+        int near = 0;
+        for (int a = 0; a < 64; ++a)
+            for (int b = a + 1; b < 64; ++b) {
+                bool want = col_box_near(&boxes[a], &boxes[b], margin);
+                near += want;
+                cr_assert_eq(seen[a * 64 + b], want ? 1 : 0, "round %d: pair %d %d seen %d times", round, a, b,
+                             seen[a * 64 + b]);
+            }
+        cr_assert_gt(near, 10, "round %d: %d pairs", round, near);
+    }
+    col_bvh_free(&bvh);
+}
+
 // --- the incremental motion checker against the reference on random motions ------------------
 
 // Random two-flap strips (flap lengths, the standing flap's angle, the drive's end, the step and
