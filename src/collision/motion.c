@@ -161,7 +161,11 @@ typedef struct col_step {
         unsigned char kind; // col_adjacency
     } *pairs;            // the incremental checker's: in the order of s->w.cur
     double *reach, *bulge; // per face over the step: path-length bound and bulge off the chords
-    double *pair_reach;    // per tracked pair: how far a can travel relative to b
+    struct open_pair {
+        int i;             // a tracked pair left open at B
+        double reach;      // how far its face a can travel relative to its face b
+    } *opens;
+    int open_cap;
     int npairs, pair_cap;
     memo mem, next;  // orders at the clean state A, and at B when B is clean
     // the incremental checker (not the reference one)
@@ -203,7 +207,7 @@ static void step_free(col_step *s)
     pair_list_free(&s->w.old);
     ori__free(s->w.ua);
     ori__free(s->w.ub);
-    ori__free(s->pair_reach);
+    ori__free(s->opens);
     ori__free(s->pairs);
     memo_free(&s->mem);
     memo_free(&s->next);
@@ -212,9 +216,7 @@ static void step_free(col_step *s)
 static bool collect_pair(void *user, int a, int b)
 {
     col_step *s = user;
-    int cap = s->pair_cap;
     ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
-    if (s->pair_cap != cap) s->pair_reach = ori__realloc(s->pair_reach, sizeof(double) * (size_t)s->pair_cap);
     s->pairs[s->npairs].a = a;
     s->pairs[s->npairs].b = b;
     col_adjacency adj = col_adjacency_of(s->c, a, b);
@@ -422,10 +424,7 @@ static void incremental_pairs(col_step *s, double margin)
     w->un = 0;
     col_bvh_self_pairs(&s->bvh, margin, pair_collect, w);
     int n = w->un;
-    if (n > s->pair_cap) {
-        ORI__RESERVE(s->pairs, s->pair_cap, n);
-        s->pair_reach = ori__realloc(s->pair_reach, sizeof(double) * (size_t)s->pair_cap);
-    }
+    ORI__RESERVE(s->pairs, s->pair_cap, n);
     col_pair_list spare = w->old; // the list before last, whose storage this step's takes
     w->old = w->cur;
     w->cur = spare;
@@ -622,18 +621,21 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         if (!t->open) continue;
         double reach = c->reference ? relative_reach(s, t->a, t->b, b)
                                     : relative_reach_of(s, t->a, &s->fra[t->a], &s->frb[t->a], &s->fra[t->b], &s->frb[t->b], b);
-        s->pair_reach[i] = reach;
         ori_v3 pa, pb;
         double d = col_face_distance(c, t->a, t->b, reach, &pa, &pb);
         t->open = d >= reach ? 0 : d <= c->tol_touch ? -1 : 1; // -1: touching at B, decided below with A
-        open += t->open != 0;
+        if (t->open != 0) {
+            ORI__RESERVE(s->opens, s->open_cap, open + 1);
+            s->opens[open].i = i;
+            s->opens[open].reach = reach;
+            open++;
+        }
     }
     if (open == 0) return ORI_OK;
     geom_swap(c, &s->a);
-    for (int i = 0; i < s->npairs && !*split; ++i) {
-        struct tracked *t = &s->pairs[i];
-        if (!t->open) continue;
-        double reach = s->pair_reach[i];
+    for (int o = 0; o < open && !*split; ++o) {
+        struct tracked *t = &s->pairs[s->opens[o].i];
+        double reach = s->opens[o].reach;
         ori_v3 pa, pb;
         double d = col_face_distance(c, t->a, t->b, reach, &pa, &pb);
         bool touching_b = t->open < 0;
