@@ -145,9 +145,9 @@ struct ori_collider {
     double tol_pen, tol_touch;
     double distance_bound;        // col_pair_test measures non-adjacent pairs exactly below this too
     col_bvh bvh;
-    // Today's motion checker (tests: the reference the incremental one is compared with): every
-    // step from nothing, no window of pairs, no sides kept from the step before, no shortcut in
-    // the pair test. Off by default.
+    // The checker as it was before the incremental one (the reference the tests and the bench
+    // compare it with): every step from nothing (the hierarchy built again, no pair list, no
+    // sides kept from the step before) and no shortcut in the exact tests. Off by default.
     bool reference;
 
     // results of the last check
@@ -201,8 +201,8 @@ void col_check_pair_kind(ori_collider *c, ori_collision_result *out, bool want_c
                          col_adjacency kind);
 void col_check_end(ori_collider *c, bool want_clearance, ori_collision_result *out);
 
-// Motion checks (ori_collision_check_motion, _record, _multifold) with today's checker (true) or
-// the incremental one (false, the default); for the tests comparing them.
+// Checks with the reference checker (true) or the incremental one (false, the default): for the
+// tests and the bench comparing them.
 void col_collider_set_reference(ori_collider *c, bool reference);
 
 #endif
