@@ -115,8 +115,7 @@ typedef struct col_pair_list {
 
 typedef struct col_pairs {
     col_pair_list cur, old;    // this step's, and the last step's (its storage reused)
-    // scratch: the pairs as the hierarchy gives them
-    int *ua, *ub, un, ucap;
+    int *by_second;            // scratch: where each face's pairs as the second face start (faces + 2 ints)
 } col_pairs;
 
 static void pair_list_free(col_pair_list *l)
@@ -205,8 +204,7 @@ static void step_free(col_step *s)
     ori__free(s->frb);
     pair_list_free(&s->w.cur);
     pair_list_free(&s->w.old);
-    ori__free(s->w.ua);
-    ori__free(s->w.ub);
+    ori__free(s->w.by_second);
     ori__free(s->opens);
     ori__free(s->pairs);
     memo_free(&s->mem);
@@ -391,14 +389,11 @@ static double relative_reach_of(const col_step *s, int a, const body_frame *a_at
 
 static bool pair_collect(void *user, int a, int b)
 {
-    col_pairs *x = user;
-    if (x->un == x->ucap) {
-        ORI__RESERVE(x->ua, x->ucap, x->un + 1);
-        x->ub = ori__realloc(x->ub, sizeof(int) * (size_t)x->ucap);
-    }
-    x->ua[x->un] = a;
-    x->ub[x->un] = b;
-    x->un++;
+    col_step *s = user;
+    ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
+    s->pairs[s->npairs].a = a;
+    s->pairs[s->npairs].b = b;
+    s->npairs++;
     return true;
 }
 
@@ -421,10 +416,10 @@ static void incremental_pairs(col_step *s, double margin)
         col_bvh_refit(&s->bvh, s->swept);
         s->refits++;
     }
-    w->un = 0;
-    col_bvh_self_pairs(&s->bvh, margin, pair_collect, w);
-    int n = w->un;
-    ORI__RESERVE(s->pairs, s->pair_cap, n);
+    s->npairs = 0;
+    col_bvh_self_pairs(&s->bvh, margin, pair_collect, s);
+    int n = s->npairs;
+    struct tracked *tp = s->pairs;
     col_pair_list spare = w->old; // the list before last, whose storage this step's takes
     w->old = w->cur;
     w->cur = spare;
@@ -432,24 +427,29 @@ static void incremental_pairs(col_step *s, double margin)
     pair_list_reserve(l, n + 1);
     int *fb = l->fb;
     unsigned char *kind = l->kind;
-    // sorted by (a, b): counted by b into s->pairs (as scratch), then stably by a into the list
+    // sorted by (a, b) in place of the hierarchy's order: the first faces counted out by second
+    // face into the list (scratch), then placed by first face, second faces in order
     if (!l->off) l->off = ori__alloc(sizeof(int) * (size_t)(F + 2));
-    int *off = l->off;
-    struct tracked *tmp = s->pairs;
+    if (!w->by_second) w->by_second = ori__alloc(sizeof(int) * (size_t)(F + 2));
+    int *off = l->off, *offb = w->by_second;
     memset(off, 0, sizeof(int) * (size_t)(F + 2));
-    for (int i = 0; i < n; ++i) off[w->ub[i] + 2]++;
-    for (int f = 0; f < F; ++f) off[f + 2] += off[f + 1];
+    memset(offb, 0, sizeof(int) * (size_t)(F + 2));
     for (int i = 0; i < n; ++i) {
-        int at = off[w->ub[i] + 1]++;
-        tmp[at].a = w->ua[i];
-        tmp[at].b = w->ub[i];
+        off[tp[i].a + 2]++;
+        offb[tp[i].b + 2]++;
     }
-    memset(off, 0, sizeof(int) * (size_t)(F + 2));
-    for (int i = 0; i < n; ++i) off[tmp[i].a + 2]++;
-    for (int f = 0; f < F; ++f) off[f + 2] += off[f + 1];
-    for (int i = 0; i < n; ++i) {
-        fb[off[tmp[i].a + 1]++] = tmp[i].b;
+    for (int f = 0; f < F; ++f) {
+        off[f + 2] += off[f + 1];
+        offb[f + 2] += offb[f + 1];
     }
+    for (int i = 0; i < n; ++i) fb[offb[tp[i].b + 1]++] = tp[i].a;
+    for (int g = 0; g < F; ++g)
+        for (int j = offb[g]; j < offb[g + 1]; ++j) {
+            int fa = fb[j], at = off[fa + 1]++;
+            tp[at].a = fa;
+            tp[at].b = g;
+        }
+    for (int i = 0; i < n; ++i) fb[i] = tp[i].b;
     // now off[f] … off[f + 1] is face f's run, in order
     for (int f = 0; f < F; ++f) {
         int lo = off[f], hi = off[f + 1];
