@@ -1388,3 +1388,54 @@ Test(collision, the_incremental_checker_agrees_with_the_reference_on_random_miur
     cr_assert_gt(collided, 3, "%d of the random Miura folds collide", collided);
     cr_assert_gt(clean, 1, "%d of the random Miura folds are clean", clean);
 }
+
+// Hundreds of steps: the incremental checker numbers the states it keeps sides for with 255
+// ids and forgets the kept sides when they run out; across that, the events stay the
+// reference's (a strip that collides at step 264, one that lands touching after 360, and a
+// Miura-ori folded flat in 300 steps).
+Test(collision, the_incremental_checker_agrees_with_the_reference_over_hundreds_of_steps)
+{
+    motions_compared = 0;
+    double cases[2][3] = {{1.0, 2.0, 1.5}, {1.0, 1.0, 0.8}}; // g, l1, l2: collides at 131.8°; lands touching
+    for (int k = 0; k < 2; ++k) {
+        strip s = strip_make(cases[k][0], cases[k][1], cases[k][2]);
+        ori_collider *c = collider_of(s.p, 0);
+        double *start = calloc((size_t)ori_mechanism_edge_count(s.m), sizeof(double));
+        start[s.left_crease] = 90 * DEG;
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = s.middle;
+        d.start_angles_rad = start;
+        d.driven_edge = s.right_crease;
+        d.to_rad = 180 * DEG;
+        d.step_rad = 0.5 * DEG;
+        d.locked_edges = &s.left_crease;
+        d.locked_count = 1;
+        ori_motion *mo = NULL;
+        ori_error err;
+        cr_assert_eq(ori_motion_solve(s.m, &d, &mo, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_motion_frame_count(mo), 361);
+        ori_collision_motion_def cd = ori_default_collision_motion_def();
+        ori_collision_event ev;
+        cr_assert_eq(check_motion_both(c, s.m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ev.collides, k == 0);
+        if (k == 0) {
+            cr_assert_eq(ev.frame, 264); // 131.5° clean, 132° collides
+            cr_assert_float_eq(ev.drive_rad / DEG, acos(-1.0 / 1.5) / DEG, CONTACT_TOL_DEG);
+        }
+        ori_motion_destroy(mo);
+        free(start);
+        ori_collider_destroy(c);
+        strip_free(&s);
+    }
+    miura_fold x = miura_fold_make(3, 3, 0.6);
+    ori_collider *c = collider_of(x.p, 0);
+    cr_assert_gt(ori_motion_frame_count(x.mo), 255);
+    ori_collision_motion_def cd = ori_default_collision_motion_def();
+    ori_collision_event ev;
+    ori_error err;
+    cr_assert_eq(check_motion_both(c, x.m, &x.d, x.mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+    cr_assert(!ev.collides);
+    ori_collider_destroy(c);
+    miura_fold_free(&x);
+    cr_assert_eq(motions_compared, 3);
+}

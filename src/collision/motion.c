@@ -110,7 +110,7 @@ typedef struct col_pair_list {
     int *fb;                   // their second faces, in order
     unsigned char *kind;       // col_adjacency of each pair
     unsigned char *q, *side;   // col_face_side_quick and col_face_side of f relative to fb …
-    unsigned *q_at, *side_at;  // … at these states (0: not known)
+    unsigned char *q_at, *side_at; // … at these states (their ids; 0: not known)
 } col_pair_list;
 
 typedef struct col_pairs {
@@ -139,8 +139,8 @@ static void pair_list_reserve(col_pair_list *l, int n)
     l->kind = ori__realloc(l->kind, m);
     l->q = ori__realloc(l->q, m);
     l->side = ori__realloc(l->side, m);
-    l->q_at = ori__realloc(l->q_at, sizeof(unsigned) * m);
-    l->side_at = ori__realloc(l->side_at, sizeof(unsigned) * m);
+    l->q_at = ori__realloc(l->q_at, m);
+    l->side_at = ori__realloc(l->side_at, m);
     l->cap = cap;
 }
 
@@ -169,8 +169,8 @@ typedef struct col_step {
     memo mem, next;  // orders at the clean state A, and at B when B is clean
     // the incremental checker (not the reference one)
     body_frame *fra, *frb;     // per face over the step: its body frame at A and at B (sweep_bounds)
-    unsigned state_seq;        // the last state id given
-    unsigned state_a, state_b; // ids of the state A and of the last step's B
+    int state_seq;             // the last state id given (new_state_id)
+    unsigned char state_a, state_b; // ids of the state A (0: none) and of the last step's B
     col_pairs w;
     int refits;                // steps since the hierarchy of the swept boxes was built
 } col_step;
@@ -387,6 +387,23 @@ static double relative_reach_of(const col_step *s, int a, const body_frame *a_at
     return chord * k;
 }
 
+// A new state's id, 1 … 255 (0 names none): when they run out, every kept side is forgotten, A's
+// too, and the ids start again, so that an id kept with a side names one state.
+static unsigned char new_state_id(col_step *s)
+{
+    if (s->state_seq >= 255) {
+        col_pair_list *lists[2] = {&s->w.cur, &s->w.old};
+        for (int k = 0; k < 2; ++k)
+            if (lists[k]->n > 0) {
+                memset(lists[k]->q_at, 0, (size_t)lists[k]->n);
+                memset(lists[k]->side_at, 0, (size_t)lists[k]->n);
+            }
+        s->state_seq = 0;
+        s->state_a = s->state_b = 0;
+    }
+    return (unsigned char)++s->state_seq;
+}
+
 static bool pair_collect(void *user, int a, int b)
 {
     col_step *s = user;
@@ -503,10 +520,10 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     if (!s->a.valid) {
         if ((st = col_state_prepare(c, a, error)) != ORI_OK) return st;
         geom_save(c, &s->a);
-        s->state_a = ++s->state_seq;
+        s->state_a = new_state_id(s);
     }
     if ((st = col_state_prepare(c, b, error)) != ORI_OK) return st;
-    unsigned bid = ++s->state_seq;
+    unsigned char bid = new_state_id(s);
     s->state_b = bid;
     col_pair_list *w = &s->w.cur;
     // One traversal of the boxes swept from A to B gives both the candidates of B's check (the
@@ -559,9 +576,10 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         if (t->crease) continue;
         // A was the B of the step before: its sides found then are A's
         int k = c->reference ? -1 : i;
-        col_side qa = k >= 0 && w->q_at[k] == s->state_a ? (col_side)w->q[k] : col_face_side_quick(c, t->a, t->b);
+        bool kept = k >= 0 && s->state_a != 0;
+        col_side qa = kept && w->q_at[k] == s->state_a ? (col_side)w->q[k] : col_face_side_quick(c, t->a, t->b);
         if ((qa == COL_SIDE_ABOVE || qa == COL_SIDE_BELOW) && qa == t->qb) continue;
-        t->sa = k >= 0 && w->side_at[k] == s->state_a ? (col_side)w->side[k]
+        t->sa = kept && w->side_at[k] == s->state_a ? (col_side)w->side[k]
                 : c->reference                         ? col_face_side(c, t->a, t->b, NULL)
                                                        : col_face_side_parted(c, t->a, t->b, NULL);
         t->open = t->adjacent ? 0 : 1; // until the sides at both ends agree
@@ -807,7 +825,7 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
         if (st == ORI_OK) {
             col_check_prepared(c, false, &r);
             geom_save(c, &s.a);
-            s.state_a = ++s.state_seq;
+            s.state_a = new_state_id(&s);
             if (r.collides) {
                 out->collides = true;
                 out->frame = 0;
