@@ -10,12 +10,125 @@
 #include <string.h>
 
 #include <orikin/collision.h>
+#include <orikin/generate.h>
 
+#include "collision/collision_internal.h"
 #include "support.h"
 
 TestSuite(collision, .init = test_leak_setup, .fini = test_leak_check);
 
 #define DEG (ORI_PI / 180.0)
+
+// --- every motion check twice: the incremental checker and the reference one ---------------------
+
+// The motion checks of this suite go through these: the incremental checker (the default) and
+// then today's checker (col_collider_set_reference: every step from nothing) on the same
+// motion; the statuses, the events and the contacts the collider holds after must be the same,
+// to the last bit (the first contact to far better than 1e-9 of the drive).
+static void assert_same_contact(const ori_contact *a, const ori_contact *b, const char *what)
+{
+    cr_assert_eq(a->face_a, b->face_a, "%s: face_a %d, reference %d", what, a->face_a, b->face_a);
+    cr_assert_eq(a->face_b, b->face_b, "%s: face_b %d, reference %d", what, a->face_b, b->face_b);
+    cr_assert_eq(a->kind, b->kind, "%s: kind", what);
+    cr_assert_eq(a->adjacent, b->adjacent, "%s: adjacent", what);
+    cr_assert_eq(a->stacked, b->stacked, "%s: stacked", what);
+    cr_assert_eq(a->collides, b->collides, "%s: collides", what);
+    cr_assert(a->distance == b->distance, "%s: distance %.17g, reference %.17g", what, a->distance, b->distance);
+    cr_assert(a->point.x == b->point.x && a->point.y == b->point.y && a->point.z == b->point.z,
+              "%s: point (%.17g, %.17g, %.17g), reference (%.17g, %.17g, %.17g)", what, a->point.x, a->point.y,
+              a->point.z, b->point.x, b->point.y, b->point.z);
+}
+
+typedef struct checked {
+    ori_status st;
+    ori_collision_event ev;
+    int nk;
+    ori_contact *k;
+} checked;
+
+static checked checked_of(const ori_collider *c, ori_status st, const ori_collision_event *ev)
+{
+    checked x;
+    x.st = st;
+    x.ev = *ev;
+    x.nk = ori_collider_contact_count(c);
+    x.k = malloc(sizeof(ori_contact) * (size_t)(x.nk + 1));
+    for (int i = 0; i < x.nk; ++i) x.k[i] = ori_collider_contact(c, i);
+    return x;
+}
+
+static void assert_same_checked(checked *a, checked *b, const char *what)
+{
+    cr_assert_eq(a->st, b->st, "%s: status %d, reference %d", what, a->st, b->st);
+    if (a->st == ORI_OK) {
+        const ori_collision_event *x = &a->ev, *y = &b->ev;
+        cr_assert_eq(x->collides, y->collides, "%s: collides %d, reference %d", what, x->collides, y->collides);
+        if (x->collides) {
+            cr_assert_eq(x->frame, y->frame, "%s: frame %d, reference %d", what, x->frame, y->frame);
+            cr_assert_eq(x->fold, y->fold, "%s: fold", what);
+            cr_assert_eq(x->step, y->step, "%s: step", what);
+            cr_assert(x->drive_rad == y->drive_rad, "%s: drive %.17g, reference %.17g", what, x->drive_rad, y->drive_rad);
+            cr_assert(x->time == y->time, "%s: time %.17g, reference %.17g", what, x->time, y->time);
+            cr_assert_eq(x->states_solved, y->states_solved, "%s: states solved %d, reference %d", what, x->states_solved,
+                         y->states_solved);
+            assert_same_contact(&x->contact, &y->contact, what);
+        }
+        cr_assert_eq(a->nk, b->nk, "%s: %d contacts held, reference %d", what, a->nk, b->nk);
+        for (int i = 0; i < a->nk; ++i) assert_same_contact(&a->k[i], &b->k[i], what);
+    }
+    free(a->k);
+    free(b->k);
+}
+
+static int motions_compared;
+
+static ori_status check_motion_both(ori_collider *c, const ori_mechanism *m, const ori_motion_def *d, const ori_motion *mo,
+                                    const ori_collision_motion_def *cd, ori_collision_event *ev, ori_error *err)
+{
+    ori_collision_event e0;
+    ori_error err0;
+    col_collider_set_reference(c, true);
+    ori_status s0 = ori_collision_check_motion(c, m, d, mo, cd, &e0, &err0);
+    checked ref = checked_of(c, s0, &e0);
+    col_collider_set_reference(c, false);
+    ori_status st = ori_collision_check_motion(c, m, d, mo, cd, ev, err);
+    checked inc = checked_of(c, st, ev);
+    assert_same_checked(&inc, &ref, "fold");
+    motions_compared++;
+    return st;
+}
+
+static ori_status check_record_both(ori_collider *c, const ori_record *r, const ori_collision_motion_def *cd,
+                                    ori_collision_event *ev, ori_error *err)
+{
+    ori_collision_event e0;
+    ori_error err0;
+    col_collider_set_reference(c, true);
+    ori_status s0 = ori_collision_check_record(c, r, cd, &e0, &err0);
+    checked ref = checked_of(c, s0, &e0);
+    col_collider_set_reference(c, false);
+    ori_status st = ori_collision_check_record(c, r, cd, ev, err);
+    checked inc = checked_of(c, st, ev);
+    assert_same_checked(&inc, &ref, "sequence");
+    motions_compared++;
+    return st;
+}
+
+static ori_status check_multifold_both(ori_collider *c, const ori_multifold *mf, const int *locked, int locked_count,
+                                       const ori_collision_motion_def *cd, ori_collision_event *ev, ori_error *err)
+{
+    ori_collision_event e0;
+    ori_error err0;
+    col_collider_set_reference(c, true);
+    ori_status s0 = ori_collision_check_multifold(c, mf, locked, locked_count, cd, &e0, &err0);
+    checked ref = checked_of(c, s0, &e0);
+    col_collider_set_reference(c, false);
+    ori_status st = ori_collision_check_multifold(c, mf, locked, locked_count, cd, ev, err);
+    checked inc = checked_of(c, st, ev);
+    assert_same_checked(&inc, &ref, "multifold");
+    motions_compared++;
+    return st;
+}
 
 // --- building posed faces by hand --------------------------------------------------------------
 
@@ -462,7 +575,7 @@ static ori_collision_event strip_fold(strip *s, ori_collider *c, ori_motion **mo
     cr_assert_eq(ori_motion_frame_count(mo), 19);
     ori_collision_motion_def cd = ori_default_collision_motion_def();
     ori_collision_event ev;
-    cr_assert_eq(ori_collision_check_motion(c, s->m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(check_motion_both(c, s->m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
     free(start);
     if (mo_out) *mo_out = mo;
     else ori_motion_destroy(mo);
@@ -485,7 +598,7 @@ static ori_collision_event strip_sequence(strip *s, ori_collider *c, ori_record 
     cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID);
     ori_collision_motion_def cd = ori_default_collision_motion_def();
     ori_collision_event ev;
-    cr_assert_eq(ori_collision_check_record(c, r, &cd, &ev, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(check_record_both(c, r, &cd, &ev, &err), ORI_OK, "%s", err.message);
     ori_sequence_destroy(seq);
     if (rec_out) *rec_out = r;
     else ori_record_destroy(r);
@@ -568,7 +681,7 @@ Test(collision, a_tip_passing_through_within_one_large_step_is_found_at_its_firs
         }
         ori_collision_motion_def cd = ori_default_collision_motion_def();
         ori_collision_event ev;
-        cr_assert_eq(ori_collision_check_motion(c, s.m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(check_motion_both(c, s.m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
         cr_assert(ev.collides, "step %g", steps[i]);
         cr_assert_eq(ev.frame, n - 1);
         cr_assert_float_eq(ev.drive_rad / DEG, want, CONTACT_TOL_DEG, "step %g: %.9f", steps[i], ev.drive_rad / DEG);
@@ -676,7 +789,7 @@ Test(collision, miura_folded_flat_never_penetrates_and_ends_in_touching_layers)
     ori_collision_motion_def cd = ori_default_collision_motion_def();
     ori_collision_event ev;
     ori_error err;
-    cr_assert_eq(ori_collision_check_motion(c, x.m, &x.d, x.mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(check_motion_both(c, x.m, &x.d, x.mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
     cr_assert(!ev.collides, "frame %d faces %d %d", ev.frame, ev.contact.face_a, ev.contact.face_b);
     int nf = ori_motion_frame_count(x.mo), nv = ori_mechanism_vertex_count(x.m);
     cr_assert_eq(nf, 19);
@@ -928,7 +1041,7 @@ static ori_collision_event strip3_run(strip3 *s, int first, int second, int undo
     (void)nv;
     ori_collision_motion_def cd = ori_default_collision_motion_def();
     ori_collision_event ev;
-    cr_assert_eq(ori_collision_check_record(c, r, &cd, &ev, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(check_record_both(c, r, &cd, &ev, &err), ORI_OK, "%s", err.message);
     ori_collider_destroy(c);
     ori_record_destroy(r);
     ori_sequence_destroy(seq);
@@ -959,8 +1072,6 @@ Test(collision, a_layer_leaving_its_stack_through_the_layer_above_it_penetrates)
 }
 
 // --- the broad phase finds what all pairs find; the cloud agrees with the exact clearance ------
-
-#include "collision/collision_internal.h"
 
 // Brute force over all pairs with the same exact test: the contacts of ori_collider_check must
 // be exactly these, and its least clearance the least exact distance.
@@ -1107,4 +1218,224 @@ Test(collision, the_cloud_refuses_bad_spacings)
     cr_assert_eq(ori_collider_cloud(c, pos, &cd, &cr, &err), ORI_ERR_LIMIT);
     ori_collider_destroy(c);
     strip_free(&s);
+}
+
+// A hierarchy refitted to moved boxes gives every pair within the margin, each once: the same
+// pairs as a fresh one and as all pairs (the incremental checker refits between rebuilds).
+static bool count_pair(void *user, int a, int b)
+{
+    int *seen = user; // 64 × 64 counts
+    cr_assert_lt(a, b);
+    seen[a * 64 + b]++;
+    return true;
+}
+
+Test(collision, a_refitted_hierarchy_gives_the_pairs_of_all_pairs)
+{
+    uint64_t seed = 99;
+    col_box boxes[64];
+    for (int i = 0; i < 64; ++i) {
+        ori_v3 o = ori_v3_make(6 * lcg(&seed), 6 * lcg(&seed), 2 * lcg(&seed));
+        boxes[i].lo = o;
+        boxes[i].hi = ori_v3_add(o, ori_v3_make(lcg(&seed), lcg(&seed), lcg(&seed)));
+    }
+    col_bvh bvh;
+    memset(&bvh, 0, sizeof bvh);
+    col_bvh_build(&bvh, boxes, 64);
+    static int seen[64 * 64];
+    for (int round = 0; round < 12; ++round) {
+        // every box moves and grows or shrinks: far, in some rounds, from where it was built
+        double travel = round < 6 ? 0.3 : 3.0;
+        for (int i = 0; i < 64; ++i) {
+            ori_v3 d = ori_v3_make(travel * (lcg(&seed) - 0.5), travel * (lcg(&seed) - 0.5), travel * (lcg(&seed) - 0.5));
+            boxes[i].lo = ori_v3_add(boxes[i].lo, d);
+            boxes[i].hi = ori_v3_add(boxes[i].hi, ori_v3_add(d, ori_v3_make(0.2 * (lcg(&seed) - 0.3), 0.0, 0.0)));
+            if (boxes[i].hi.x < boxes[i].lo.x) boxes[i].hi.x = boxes[i].lo.x;
+        }
+        col_bvh_refit(&bvh, boxes);
+        double margin = 0.05 * round;
+        memset(seen, 0, sizeof seen);
+        col_bvh_self_pairs(&bvh, margin, count_pair, seen);
+        int near = 0;
+        for (int a = 0; a < 64; ++a)
+            for (int b = a + 1; b < 64; ++b) {
+                bool want = col_box_near(&boxes[a], &boxes[b], margin);
+                near += want;
+                cr_assert_eq(seen[a * 64 + b], want ? 1 : 0, "round %d: pair %d %d seen %d times", round, a, b,
+                             seen[a * 64 + b]);
+            }
+        cr_assert_gt(near, 10, "round %d: %d pairs", round, near);
+    }
+    col_bvh_free(&bvh);
+}
+
+// --- the incremental motion checker against the reference on random motions ------------------
+
+// Random two-flap strips (flap lengths, the standing flap's angle, the drive's end, the step and
+// the clearance drawn): folds (one drive), the same folds as sequences, and both creases driven
+// together (a multifold). Many collide (penetrating, or nearer than the clearance), found by
+// bisection after half steps; the rest are clean. Every check is compared with the reference.
+Test(collision, the_incremental_checker_agrees_with_the_reference_on_random_strips)
+{
+    uint64_t seed = 28;
+    int collided = 0, clean = 0;
+    motions_compared = 0;
+    for (int trial = 0; trial < 24; ++trial) {
+        double g = 0.5 + lcg(&seed), l1 = 0.5 + 2.0 * lcg(&seed), l2 = 0.5 + 2.5 * lcg(&seed);
+        double stand = 30.0 + 120.0 * lcg(&seed), to = 100.0 + 80.0 * lcg(&seed), step = 3.0 + 57.0 * lcg(&seed);
+        double clearance = trial % 3 == 0 ? 0.05 * lcg(&seed) : 0.0;
+        strip s = strip_make(g, l1, l2);
+        ori_collider *c = collider_of(s.p, clearance);
+        ori_error err;
+        // a fold: the left flap standing, the right one driven
+        double *start = calloc((size_t)ori_mechanism_edge_count(s.m), sizeof(double));
+        start[s.left_crease] = stand * DEG;
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = s.middle;
+        d.start_angles_rad = start;
+        d.driven_edge = s.right_crease;
+        d.to_rad = to * DEG;
+        d.step_rad = step * DEG;
+        d.locked_edges = &s.left_crease;
+        d.locked_count = 1;
+        ori_motion *mo = NULL;
+        cr_assert_eq(ori_motion_solve(s.m, &d, &mo, &err), ORI_OK, "%s", err.message);
+        ori_collision_motion_def cd = ori_default_collision_motion_def();
+        ori_collision_event ev;
+        cr_assert_eq(check_motion_both(c, s.m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+        collided += ev.collides;
+        clean += !ev.collides;
+        ori_motion_destroy(mo);
+        // the same as a sequence
+        char json[512];
+        snprintf(json, sizeof json,
+                 "{\"pattern\": \"strip.fold\", \"folds\": [{\"fix\": %d, \"drive\": %d, \"to\": %.6f, \"step\": %.6f, "
+                 "\"lock\": [%d]}, {\"fix\": %d, \"drive\": %d, \"to\": %.6f, \"step\": %.6f, \"lock\": [%d]}]}",
+                 s.middle, s.left_crease, stand, step, s.right_crease, s.middle, s.right_crease, to, step, s.left_crease);
+        ori_sequence *seq = NULL;
+        cr_assert_eq(ori_sequence_parse(json, strlen(json), &seq, &err), ORI_OK, "%s", err.message);
+        ori_record *r = NULL;
+        cr_assert_eq(ori_sequence_run(seq, s.m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(check_record_both(c, r, &cd, &ev, &err), ORI_OK, "%s", err.message);
+        collided += ev.collides;
+        clean += !ev.collides;
+        ori_record_destroy(r);
+        ori_sequence_destroy(seq);
+        // both flaps driven together
+        int drives[2] = {s.left_crease, s.right_crease};
+        double tos[2] = {stand * DEG, to * DEG};
+        ori_drives_fold_def dd = ori_default_drives_fold_def();
+        dd.fixed_face = s.middle;
+        dd.driven_edges = drives;
+        dd.to_rad = tos;
+        dd.driven_count = 2;
+        dd.step_rad = step * DEG;
+        ori_multifold *mf = NULL;
+        cr_assert_eq(ori_drives_fold_solve(s.m, &dd, &mf, &err), ORI_OK, "%s", err.message);
+        if (ori_multifold_frame_count(mf) > 1) {
+            cr_assert_eq(check_multifold_both(c, mf, NULL, 0, &cd, &ev, &err), ORI_OK, "%s", err.message);
+            collided += ev.collides;
+            clean += !ev.collides;
+        }
+        ori_multifold_destroy(mf);
+        free(start);
+        ori_collider_destroy(c);
+        strip_free(&s);
+    }
+    cr_assert_geq(motions_compared, 60);
+    cr_assert_gt(collided, 10, "%d of the random strip motions collide", collided);
+    cr_assert_gt(clean, 10, "%d of the random strip motions are clean", clean);
+}
+
+// Random small Miura-ori (rows, columns, sides and angle drawn) folded by a drawn crease toward
+// ±180° with drawn steps and fixed faces: stacked layers at the end (the orders kept from step to
+// step), and with a clearance, collisions of faces coming nearer than it.
+Test(collision, the_incremental_checker_agrees_with_the_reference_on_random_miura_folds)
+{
+    uint64_t seed = 1728;
+    int collided = 0, clean = 0;
+    motions_compared = 0;
+    for (int trial = 0; trial < 16; ++trial) {
+        int rows = 2 + (int)(3.0 * lcg(&seed)), cols = 2 + (int)(3.0 * lcg(&seed));
+        double a = 0.7 + 0.6 * lcg(&seed), b = 0.7 + 0.6 * lcg(&seed), gamma = (45.0 + 35.0 * lcg(&seed)) * DEG;
+        ori_pattern *p = test_miura(rows, cols, a, b, gamma, NULL);
+        ori_mechanism *m = test_mechanism_of(p);
+        int i = cols / 2, j = rows / 2;
+        int drive = ori_pattern_find_edge(p, j * (cols + 1) + i, (j + 1) * (cols + 1) + i);
+        cr_assert_neq(drive, ORI_NULL_INDEX);
+        double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = (int)(lcg(&seed) * ori_mechanism_face_count(m));
+        d.driven_edge = drive;
+        d.to_rad = sg * (160.0 + 20.0 * lcg(&seed)) * DEG;
+        d.step_rad = (4.0 + 26.0 * lcg(&seed)) * DEG;
+        ori_motion *mo = NULL;
+        ori_error err;
+        cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+        double clearance = trial % 3 ? 0.15 + 0.3 * lcg(&seed) : 0.0;
+        ori_collider *c = collider_of(p, clearance);
+        ori_collision_motion_def cd = ori_default_collision_motion_def();
+        ori_collision_event ev;
+        cr_assert_eq(check_motion_both(c, m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+        collided += ev.collides;
+        clean += !ev.collides;
+        ori_collider_destroy(c);
+        ori_motion_destroy(mo);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+    cr_assert_eq(motions_compared, 16);
+    cr_assert_gt(collided, 3, "%d of the random Miura folds collide", collided);
+    cr_assert_gt(clean, 1, "%d of the random Miura folds are clean", clean);
+}
+
+// Hundreds of steps: the incremental checker numbers the states it keeps sides for with 255
+// ids and forgets the kept sides when they run out; across that, the events stay the
+// reference's (a strip that collides at step 264, one that lands touching after 360, and a
+// Miura-ori folded flat in 300 steps).
+Test(collision, the_incremental_checker_agrees_with_the_reference_over_hundreds_of_steps)
+{
+    motions_compared = 0;
+    double cases[2][3] = {{1.0, 2.0, 1.5}, {1.0, 1.0, 0.8}}; // g, l1, l2: collides at 131.8°; lands touching
+    for (int k = 0; k < 2; ++k) {
+        strip s = strip_make(cases[k][0], cases[k][1], cases[k][2]);
+        ori_collider *c = collider_of(s.p, 0);
+        double *start = calloc((size_t)ori_mechanism_edge_count(s.m), sizeof(double));
+        start[s.left_crease] = 90 * DEG;
+        ori_motion_def d = ori_default_motion_def();
+        d.fixed_face = s.middle;
+        d.start_angles_rad = start;
+        d.driven_edge = s.right_crease;
+        d.to_rad = 180 * DEG;
+        d.step_rad = 0.5 * DEG;
+        d.locked_edges = &s.left_crease;
+        d.locked_count = 1;
+        ori_motion *mo = NULL;
+        ori_error err;
+        cr_assert_eq(ori_motion_solve(s.m, &d, &mo, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_motion_frame_count(mo), 361);
+        ori_collision_motion_def cd = ori_default_collision_motion_def();
+        ori_collision_event ev;
+        cr_assert_eq(check_motion_both(c, s.m, &d, mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ev.collides, k == 0);
+        if (k == 0) {
+            cr_assert_eq(ev.frame, 264); // 131.5° clean, 132° collides
+            cr_assert_float_eq(ev.drive_rad / DEG, acos(-1.0 / 1.5) / DEG, CONTACT_TOL_DEG);
+        }
+        ori_motion_destroy(mo);
+        free(start);
+        ori_collider_destroy(c);
+        strip_free(&s);
+    }
+    miura_fold x = miura_fold_make(3, 3, 0.6);
+    ori_collider *c = collider_of(x.p, 0);
+    cr_assert_gt(ori_motion_frame_count(x.mo), 255);
+    ori_collision_motion_def cd = ori_default_collision_motion_def();
+    ori_collision_event ev;
+    ori_error err;
+    cr_assert_eq(check_motion_both(c, x.m, &x.d, x.mo, &cd, &ev, &err), ORI_OK, "%s", err.message);
+    cr_assert(!ev.collides);
+    ori_collider_destroy(c);
+    miura_fold_free(&x);
+    cr_assert_eq(motions_compared, 3);
 }

@@ -110,6 +110,29 @@ void col_bvh_build(col_bvh *bvh, const col_box *boxes, int n)
 
 static bool is_leaf(const col_node *n) { return n->left < 0; }
 
+void col_bvh_refit(col_bvh *bvh, const col_box *boxes)
+{
+    bvh->boxes = boxes;
+    // children come after their parent (build numbers the nodes in pre-order)
+    for (int id = bvh->node_count - 1; id >= 0; --id) {
+        col_node *nd = &bvh->nodes[id];
+        col_box box;
+        if (is_leaf(nd)) {
+            box = boxes[bvh->items[nd->first]];
+            for (int i = nd->first + 1; i < nd->first + nd->count; ++i) {
+                const col_box *b = &boxes[bvh->items[i]];
+                box.lo = ori_v3_make(fmin(box.lo.x, b->lo.x), fmin(box.lo.y, b->lo.y), fmin(box.lo.z, b->lo.z));
+                box.hi = ori_v3_make(fmax(box.hi.x, b->hi.x), fmax(box.hi.y, b->hi.y), fmax(box.hi.z, b->hi.z));
+            }
+        } else {
+            const col_box *l = &bvh->nodes[nd->left].box, *r = &bvh->nodes[nd->right].box;
+            box.lo = ori_v3_make(fmin(l->lo.x, r->lo.x), fmin(l->lo.y, r->lo.y), fmin(l->lo.z, r->lo.z));
+            box.hi = ori_v3_make(fmax(l->hi.x, r->hi.x), fmax(l->hi.y, r->hi.y), fmax(l->hi.z, r->hi.z));
+        }
+        nd->box = box;
+    }
+}
+
 static void push2(col_bvh *bvh, int *top, int a, int b)
 {
     ORI__RESERVE(bvh->stack, bvh->stack_cap, *top + 2);

@@ -367,8 +367,17 @@ static void note_clearance(ori_collision_result *r, int f, int g, double d, ori_
 
 void col_check_pair(ori_collider *c, ori_collision_result *r, bool want_clearance, int f, int g)
 {
+    col_check_pair_kind(c, r, want_clearance, f, g, col_adjacency_of(c, f, g));
+}
+
+void col_collider_set_reference(ori_collider *c, bool reference)
+{
+    c->reference = reference;
+}
+
+void col_check_pair_kind(ori_collider *c, ori_collision_result *r, bool want_clearance, int f, int g, col_adjacency kind)
+{
     r->candidate_pairs++;
-    col_adjacency kind = col_adjacency_of(c, f, g);
     bool adj = kind != COL_ADJ_NONE;
     col_pair_result pr;
     // Nearby pairs are the likely nearest: measuring them below the least distance so far

@@ -36,6 +36,9 @@ typedef struct col_bvh {
 void col_bvh_free(col_bvh *bvh);
 // Median-split hierarchy of n boxes (leaves of at most a few items).
 void col_bvh_build(col_bvh *bvh, const col_box *boxes, int n);
+// The same hierarchy over new boxes of the same items (each node's box the union of its items'):
+// the pairs it gives are exact, only the traversal's pruning degrades as the items move.
+void col_bvh_refit(col_bvh *bvh, const col_box *boxes);
 // Every pair a < b whose boxes are at most margin apart in every axis; fn returns false to stop.
 typedef bool col_pair_fn(void *user, int a, int b);
 void col_bvh_self_pairs(col_bvh *bvh, double margin, col_pair_fn *fn, void *user);
@@ -142,6 +145,10 @@ struct ori_collider {
     double tol_pen, tol_touch;
     double distance_bound;        // col_pair_test measures non-adjacent pairs exactly below this too
     col_bvh bvh;
+    // The checker as it was before the incremental one (the reference the tests and the bench
+    // compare it with): every step from nothing (the hierarchy built again, no pair list, no
+    // sides kept from the step before) and no shortcut in the exact tests. Off by default.
+    bool reference;
 
     // results of the last check
     ori_contact *contacts;
@@ -174,6 +181,9 @@ void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_p
 double col_face_distance(ori_collider *c, int f, int g, double bound, ori_v3 *pa, ori_v3 *pb);
 // Side of face a relative to face b's front side; *point = a point of the overlap (on b).
 col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point);
+// The same, first trying (convex faces) whether a line along a side parts them: faster where
+// they mostly do not overlap, slower where they do; the same answer.
+col_side col_face_side_parted(ori_collider *c, int a, int b, ori_v3 *point);
 // The same from a's vertices alone, whether or not a lies over b: ABOVE or BELOW when all are
 // beyond the penetration tolerance on that side, FLAT when all are within it, else MIXED.
 col_side col_face_side_quick(const ori_collider *c, int a, int b);
@@ -186,6 +196,13 @@ void col_check_prepared(ori_collider *c, bool want_clearance, ori_collision_resu
 // clearance with the checker's own hierarchy when wanted, counts and picks the witness).
 void col_check_begin(ori_collider *c, ori_collision_result *out);
 void col_check_pair(ori_collider *c, ori_collision_result *out, bool want_clearance, int f, int g);
+// The same with the pair's col_adjacency_of already known.
+void col_check_pair_kind(ori_collider *c, ori_collision_result *out, bool want_clearance, int f, int g,
+                         col_adjacency kind);
 void col_check_end(ori_collider *c, bool want_clearance, ori_collision_result *out);
+
+// Checks with the reference checker (true) or the incremental one (false, the default): for the
+// tests and the bench comparing them.
+void col_collider_set_reference(ori_collider *c, bool reference);
 
 #endif

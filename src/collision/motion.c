@@ -94,6 +94,56 @@ typedef struct col_geomset {
     bool valid;
 } col_geomset;
 
+// A frame fixed on face f, the same material frame in every state (the checker's in-plane frame
+// may pick another vertex when two are equally far): origin at the face's first vertex, e1
+// towards the first vertex not at the same place (chosen in state A, kept in B), n its normal.
+typedef struct body_frame {
+    ori_v3 o, e1, e2, n;
+} body_frame;
+
+// The pairs of the incremental checker's last step, sorted by (face, fb), each with its layer
+// sides as last found and the state they were found in: the next step's state A is that state
+// B, and most of its pairs are the same.
+typedef struct col_pair_list {
+    int n, cap;
+    int *off;                  // face f's pairs are off[f] … off[f + 1] (faces + 2 ints)
+    int *fb;                   // their second faces, in order
+    unsigned char *kind;       // col_adjacency of each pair
+    unsigned char *q, *side;   // col_face_side_quick and col_face_side of f relative to fb …
+    unsigned char *q_at, *side_at; // … at these states (their ids; 0: not known)
+} col_pair_list;
+
+typedef struct col_pairs {
+    col_pair_list cur, old;    // this step's, and the last step's (its storage reused)
+    int *by_second;            // scratch: where each face's pairs as the second face start (faces + 2 ints)
+} col_pairs;
+
+static void pair_list_free(col_pair_list *l)
+{
+    ori__free(l->off);
+    ori__free(l->fb);
+    ori__free(l->kind);
+    ori__free(l->q);
+    ori__free(l->side);
+    ori__free(l->q_at);
+    ori__free(l->side_at);
+    memset(l, 0, sizeof *l);
+}
+
+static void pair_list_reserve(col_pair_list *l, int n)
+{
+    if (n <= l->cap) return;
+    int cap = l->cap;
+    ORI__RESERVE(l->fb, cap, n);
+    size_t m = (size_t)cap;
+    l->kind = ori__realloc(l->kind, m);
+    l->q = ori__realloc(l->q, m);
+    l->side = ori__realloc(l->side, m);
+    l->q_at = ori__realloc(l->q_at, m);
+    l->side_at = ori__realloc(l->side_at, m);
+    l->cap = cap;
+}
+
 typedef struct col_step {
     ori_collider *c;
     col_bvh bvh;     // over the swept boxes
@@ -103,15 +153,26 @@ typedef struct col_step {
     struct tracked {
         int a, b;
         bool crease;  // convex faces joined by a crease: they turn about its line, never through each other
-        col_side sa;  // side of a relative to b's front at the clean state (NONE when not needed)
-        col_side qb;  // side at B from a's vertices alone (col_face_side_quick)
+        unsigned char sa; // col_side of a relative to b's front at the clean state (NONE when not needed)
+        unsigned char qb; // col_side at B from a's vertices alone (col_face_side_quick)
         bool adjacent; // the faces share a vertex
         signed char open; // not decided by the layer sides (1; -1: and touching at B): the sweep decides
-    } *pairs;
+        unsigned char kind; // col_adjacency
+    } *pairs;            // the incremental checker's: in the order of s->w.cur
     double *reach, *bulge; // per face over the step: path-length bound and bulge off the chords
-    double *pair_reach;    // per tracked pair: how far a can travel relative to b
+    struct open_pair {
+        int i;             // a tracked pair left open at B
+        double reach;      // how far its face a can travel relative to its face b
+    } *opens;
+    int open_cap;
     int npairs, pair_cap;
     memo mem, next;  // orders at the clean state A, and at B when B is clean
+    // the incremental checker (not the reference one)
+    body_frame *fra, *frb;     // per face over the step: its body frame at A and at B (sweep_bounds)
+    int state_seq;             // the last state id given (new_state_id)
+    unsigned char state_a, state_b; // ids of the state A (0: none) and of the last step's B
+    col_pairs w;
+    int refits;                // steps since the hierarchy of the swept boxes was built
 } col_step;
 
 static void step_init(col_step *s, ori_collider *c)
@@ -125,6 +186,8 @@ static void step_init(col_step *s, ori_collider *c)
     s->swept = ori__alloc(sizeof(col_box) * (size_t)c->face_count);
     s->reach = ori__alloc(sizeof(double) * (size_t)c->face_count);
     s->bulge = ori__alloc(sizeof(double) * (size_t)c->face_count);
+    s->fra = ori__alloc(sizeof(body_frame) * (size_t)c->face_count);
+    s->frb = ori__alloc(sizeof(body_frame) * (size_t)c->face_count);
 }
 
 static void step_free(col_step *s)
@@ -137,7 +200,12 @@ static void step_free(col_step *s)
     ori__free(s->swept);
     ori__free(s->reach);
     ori__free(s->bulge);
-    ori__free(s->pair_reach);
+    ori__free(s->fra);
+    ori__free(s->frb);
+    pair_list_free(&s->w.cur);
+    pair_list_free(&s->w.old);
+    ori__free(s->w.by_second);
+    ori__free(s->opens);
     ori__free(s->pairs);
     memo_free(&s->mem);
     memo_free(&s->next);
@@ -146,14 +214,13 @@ static void step_free(col_step *s)
 static bool collect_pair(void *user, int a, int b)
 {
     col_step *s = user;
-    int cap = s->pair_cap;
     ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
-    if (s->pair_cap != cap) s->pair_reach = ori__realloc(s->pair_reach, sizeof(double) * (size_t)s->pair_cap);
     s->pairs[s->npairs].a = a;
     s->pairs[s->npairs].b = b;
     col_adjacency adj = col_adjacency_of(s->c, a, b);
     s->pairs[s->npairs].crease = adj == COL_ADJ_CREASE;
     s->pairs[s->npairs].adjacent = adj != COL_ADJ_NONE;
+    s->pairs[s->npairs].kind = (unsigned char)adj;
     s->pairs[s->npairs].open = 0;
     s->pairs[s->npairs].sa = COL_SIDE_NONE;
     s->npairs++;
@@ -209,13 +276,6 @@ static double turn_angle(ori_v3 u, ori_v3 v)
     return atan2(ori_v3_norm(ori_v3_cross(u, v)), ori_v3_dot(u, v));
 }
 
-// A frame fixed on face f, the same material frame in every state (the checker's in-plane frame
-// may pick another vertex when two are equally far): origin at the face's first vertex, e1
-// towards the first vertex not at the same place (chosen in state A, kept in B), n its normal.
-typedef struct body_frame {
-    ori_v3 o, e1, e2, n;
-} body_frame;
-
 static int frame_vertex(const ori_collider *c, int f, const ori_v3 *pos)
 {
     int first = c->face_off[f];
@@ -268,6 +328,8 @@ static void sweep_bounds(col_step *s, const ori_v3 *b)
     for (int f = 0; f < c->face_count; ++f) {
         int j = frame_vertex(c, f, s->a.pos);
         body_frame fa = body_frame_of(c, f, j, s->a.pos, s->a.geom[f].n), fb = body_frame_of(c, f, j, b, c->geom[f].n);
+        s->fra[f] = fa;
+        s->frb[f] = fb;
         double k = arc_factor(&fa, &fb);
         double chord = 0.0;
         for (int i = c->face_off[f]; i < c->face_off[f + 1]; ++i) {
@@ -291,12 +353,24 @@ static ori_v3 body_back(const body_frame *fa, const body_frame *fb, ori_v3 x)
 // How far face a can travel relative to face b over the step: a's motion seen from b (b's own
 // motion undone), bounded as in sweep_bounds. Two neighbouring faces of a sheet that moves as a
 // whole move little relative to each other even when both travel far.
+static double relative_reach_of(const col_step *s, int a, const body_frame *a_at_a, const body_frame *a_at_b,
+                                const body_frame *b_at_a, const body_frame *b_at_b, const ori_v3 *pos_b);
+
 static double relative_reach(const col_step *s, int a, int b, const ori_v3 *pos_b)
 {
     const ori_collider *c = s->c;
     int ja = frame_vertex(c, a, s->a.pos), jb = frame_vertex(c, b, s->a.pos);
     body_frame aA = body_frame_of(c, a, ja, s->a.pos, s->a.geom[a].n), aB = body_frame_of(c, a, ja, pos_b, c->geom[a].n);
     body_frame bA = body_frame_of(c, b, jb, s->a.pos, s->a.geom[b].n), bB = body_frame_of(c, b, jb, pos_b, c->geom[b].n);
+    return relative_reach_of(s, a, &aA, &aB, &bA, &bB, pos_b);
+}
+
+// The same from the faces' body frames at A and B (those of sweep_bounds: the same values).
+static double relative_reach_of(const col_step *s, int a, const body_frame *a_at_a, const body_frame *a_at_b,
+                                const body_frame *b_at_a, const body_frame *b_at_b, const ori_v3 *pos_b)
+{
+    const ori_collider *c = s->c;
+    body_frame aA = *a_at_a, aB = *a_at_b, bA = *b_at_a, bB = *b_at_b;
     // a's frame at B seen from b, against a's frame at A
     body_frame rel;
     rel.o = body_back(&bA, &bB, aB.o);
@@ -311,6 +385,122 @@ static double relative_reach(const col_step *s, int a, int b, const ori_v3 *pos_
         if (d > chord) chord = d;
     }
     return chord * k;
+}
+
+// A new state's id, 1 … 255 (0 names none): when they run out, every kept side is forgotten, A's
+// too, and the ids start again, so that an id kept with a side names one state.
+static unsigned char new_state_id(col_step *s)
+{
+    if (s->state_seq >= 255) {
+        col_pair_list *lists[2] = {&s->w.cur, &s->w.old};
+        for (int k = 0; k < 2; ++k)
+            if (lists[k]->n > 0) {
+                memset(lists[k]->q_at, 0, (size_t)lists[k]->n);
+                memset(lists[k]->side_at, 0, (size_t)lists[k]->n);
+            }
+        s->state_seq = 0;
+        s->state_a = s->state_b = 0;
+    }
+    return (unsigned char)++s->state_seq;
+}
+
+static bool pair_collect(void *user, int a, int b)
+{
+    col_step *s = user;
+    ORI__RESERVE(s->pairs, s->pair_cap, s->npairs + 1);
+    s->pairs[s->npairs].a = a;
+    s->pairs[s->npairs].b = b;
+    s->npairs++;
+    return true;
+}
+
+// After this many steps on a refitted hierarchy, it is built again.
+#define REFIT_STEPS 8
+
+// The incremental checker's pairs of the step: those of the swept boxes within margin (the same
+// as the reference checker's), from the hierarchy of the step before refitted to the new boxes
+// (built again every REFIT_STEPS steps), sorted, each with its adjacency (from the sorted
+// adjacency lists) and with the sides the last step's list had for it; into s->pairs.
+static void incremental_pairs(col_step *s, double margin)
+{
+    ori_collider *c = s->c;
+    col_pairs *w = &s->w;
+    int F = c->face_count;
+    if (s->bvh.node_count == 0 || s->refits >= REFIT_STEPS || s->bvh.boxes != s->swept) {
+        col_bvh_build(&s->bvh, s->swept, F);
+        s->refits = 0;
+    } else {
+        col_bvh_refit(&s->bvh, s->swept);
+        s->refits++;
+    }
+    s->npairs = 0;
+    col_bvh_self_pairs(&s->bvh, margin, pair_collect, s);
+    int n = s->npairs;
+    struct tracked *tp = s->pairs;
+    col_pair_list spare = w->old; // the list before last, whose storage this step's takes
+    w->old = w->cur;
+    w->cur = spare;
+    col_pair_list *l = &w->cur, *o = &w->old;
+    pair_list_reserve(l, n + 1);
+    int *fb = l->fb;
+    unsigned char *kind = l->kind;
+    // sorted by (a, b) in place of the hierarchy's order: the first faces counted out by second
+    // face into the list (scratch), then placed by first face, second faces in order
+    if (!l->off) l->off = ori__alloc(sizeof(int) * (size_t)(F + 2));
+    if (!w->by_second) w->by_second = ori__alloc(sizeof(int) * (size_t)(F + 2));
+    int *off = l->off, *offb = w->by_second;
+    memset(off, 0, sizeof(int) * (size_t)(F + 2));
+    memset(offb, 0, sizeof(int) * (size_t)(F + 2));
+    for (int i = 0; i < n; ++i) {
+        off[tp[i].a + 2]++;
+        offb[tp[i].b + 2]++;
+    }
+    for (int f = 0; f < F; ++f) {
+        off[f + 2] += off[f + 1];
+        offb[f + 2] += offb[f + 1];
+    }
+    for (int i = 0; i < n; ++i) fb[offb[tp[i].b + 1]++] = tp[i].a;
+    for (int g = 0; g < F; ++g)
+        for (int j = offb[g]; j < offb[g + 1]; ++j) {
+            int fa = fb[j], at = off[fa + 1]++;
+            tp[at].a = fa;
+            tp[at].b = g;
+        }
+    for (int i = 0; i < n; ++i) fb[i] = tp[i].b;
+    // now off[f] … off[f + 1] is face f's run, in order
+    for (int f = 0; f < F; ++f) {
+        int lo = off[f], hi = off[f + 1];
+        int k = c->adj_off[f], kend = c->adj_off[f + 1];
+        int j0 = o->n > 0 ? o->off[f] : 0, jend = o->n > 0 ? o->off[f + 1] : 0;
+        for (int i = lo; i < hi; ++i) {
+            int g = fb[i];
+            while (k < kend && c->adj[k] < g) k++;
+            kind[i] = k < kend && c->adj[k] == g ? c->adj_kind[k] : (unsigned char)COL_ADJ_NONE;
+            // the sides the last step's list had for the pair (both runs sorted)
+            while (j0 < jend && o->fb[j0] < g) j0++;
+            if (j0 < jend && o->fb[j0] == g) {
+                l->q[i] = o->q[j0];
+                l->q_at[i] = o->q_at[j0];
+                l->side[i] = o->side[j0];
+                l->side_at[i] = o->side_at[j0];
+            } else {
+                l->q_at[i] = l->side_at[i] = 0;
+            }
+        }
+    }
+    l->n = n;
+    for (int f = 0; f < F; ++f)
+        for (int i = off[f]; i < off[f + 1]; ++i) {
+            struct tracked *t = &s->pairs[i];
+            t->a = f;
+            t->b = fb[i];
+            t->kind = kind[i];
+            t->crease = t->kind == COL_ADJ_CREASE;
+            t->adjacent = t->kind != COL_ADJ_NONE;
+            t->open = 0;
+            t->sa = COL_SIDE_NONE;
+        }
+    s->npairs = n;
 }
 
 // Check the step from the clean state a (orders s->mem) to b. On a collision *hit is set and
@@ -330,8 +520,12 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     if (!s->a.valid) {
         if ((st = col_state_prepare(c, a, error)) != ORI_OK) return st;
         geom_save(c, &s->a);
+        s->state_a = new_state_id(s);
     }
     if ((st = col_state_prepare(c, b, error)) != ORI_OK) return st;
+    unsigned char bid = new_state_id(s);
+    s->state_b = bid;
+    col_pair_list *w = &s->w.cur;
     // One traversal of the boxes swept from A to B gives both the candidates of B's check (the
     // pairs whose boxes at B are near) and the pairs whose layer order is compared.
     int F = c->face_count;
@@ -340,23 +534,29 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     sweep_bounds(s, b);
     for (int f = 0; f < F; ++f) {
         const col_box *x = &s->a.boxes[f], *y = &c->boxes[f];
-        col_box *w = &s->swept[f];
+        col_box *sw = &s->swept[f];
         double h = s->bulge[f];
-        w->lo.x = (x->lo.x < y->lo.x ? x->lo.x : y->lo.x) - h;
-        w->lo.y = (x->lo.y < y->lo.y ? x->lo.y : y->lo.y) - h;
-        w->lo.z = (x->lo.z < y->lo.z ? x->lo.z : y->lo.z) - h;
-        w->hi.x = (x->hi.x > y->hi.x ? x->hi.x : y->hi.x) + h;
-        w->hi.y = (x->hi.y > y->hi.y ? x->hi.y : y->hi.y) + h;
-        w->hi.z = (x->hi.z > y->hi.z ? x->hi.z : y->hi.z) + h;
+        sw->lo.x = (x->lo.x < y->lo.x ? x->lo.x : y->lo.x) - h;
+        sw->lo.y = (x->lo.y < y->lo.y ? x->lo.y : y->lo.y) - h;
+        sw->lo.z = (x->lo.z < y->lo.z ? x->lo.z : y->lo.z) - h;
+        sw->hi.x = (x->hi.x > y->hi.x ? x->hi.x : y->hi.x) + h;
+        sw->hi.y = (x->hi.y > y->hi.y ? x->hi.y : y->hi.y) + h;
+        sw->hi.z = (x->hi.z > y->hi.z ? x->hi.z : y->hi.z) + h;
     }
     s->npairs = 0;
-    col_bvh_build(&s->bvh, s->swept, F);
-    col_bvh_self_pairs(&s->bvh, margin, collect_pair, s);
+    if (!c->reference) {
+        incremental_pairs(s, margin);
+    } else {
+        col_bvh_build(&s->bvh, s->swept, F);
+        col_bvh_self_pairs(&s->bvh, margin, collect_pair, s);
+    }
     ori_collision_result r;
     col_check_begin(c, &r);
     for (int i = 0; i < s->npairs; ++i)
-        if (col_box_near(&c->boxes[s->pairs[i].a], &c->boxes[s->pairs[i].b], near))
-            col_check_pair(c, &r, false, s->pairs[i].a, s->pairs[i].b);
+        if (col_box_near(&c->boxes[s->pairs[i].a], &c->boxes[s->pairs[i].b], near)) {
+            if (c->reference) col_check_pair(c, &r, false, s->pairs[i].a, s->pairs[i].b);
+            else col_check_pair_kind(c, &r, false, s->pairs[i].a, s->pairs[i].b, (col_adjacency)s->pairs[i].kind);
+        }
     col_check_end(c, false, &r);
     if (r.collides) {
         *hit = true;
@@ -374,12 +574,22 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         t->sa = COL_SIDE_NONE;
         t->open = 0;
         if (t->crease) continue;
-        col_side qa = col_face_side_quick(c, t->a, t->b);
+        // A was the B of the step before: its sides found then are A's
+        int k = c->reference ? -1 : i;
+        bool kept = k >= 0 && s->state_a != 0;
+        col_side qa = kept && w->q_at[k] == s->state_a ? (col_side)w->q[k] : col_face_side_quick(c, t->a, t->b);
         if ((qa == COL_SIDE_ABOVE || qa == COL_SIDE_BELOW) && qa == t->qb) continue;
-        t->sa = col_face_side(c, t->a, t->b, NULL);
+        t->sa = kept && w->side_at[k] == s->state_a ? (col_side)w->side[k]
+                : c->reference                         ? col_face_side(c, t->a, t->b, NULL)
+                                                       : col_face_side_parted(c, t->a, t->b, NULL);
         t->open = t->adjacent ? 0 : 1; // until the sides at both ends agree
     }
     geom_swap(c, &s->a); // back to B
+    for (int i = 0; i < s->npairs; ++i)
+        if (!c->reference && !s->pairs[i].crease) {
+            w->q[i] = s->pairs[i].qb;
+            w->q_at[i] = bid;
+        }
     memo_clear(&s->next);
     int flip = -1;
     ori_v3 flip_point = ori_v3_make(0.0, 0.0, 0.0);
@@ -393,6 +603,10 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
         }
         ori_v3 p;
         col_side now = col_face_side(c, s->pairs[i].a, s->pairs[i].b, &p);
+        if (!c->reference) {
+            w->side[i] = (unsigned char)now;
+            w->side_at[i] = bid;
+        }
         if (now == was || now == COL_SIDE_FLAT) s->pairs[i].open = 0;
         if (now == COL_SIDE_FLAT) memo_put(&s->next, key, (unsigned char)was);
         bool flipped = (was == COL_SIDE_ABOVE && now == COL_SIDE_BELOW) || (was == COL_SIDE_BELOW && now == COL_SIDE_ABOVE);
@@ -423,19 +637,23 @@ static ori_status step_check(col_step *s, const ori_v3 *a, const ori_v3 *b, bool
     for (int i = 0; i < s->npairs; ++i) {
         struct tracked *t = &s->pairs[i];
         if (!t->open) continue;
-        double reach = relative_reach(s, t->a, t->b, b);
-        s->pair_reach[i] = reach;
+        double reach = c->reference ? relative_reach(s, t->a, t->b, b)
+                                    : relative_reach_of(s, t->a, &s->fra[t->a], &s->frb[t->a], &s->fra[t->b], &s->frb[t->b], b);
         ori_v3 pa, pb;
         double d = col_face_distance(c, t->a, t->b, reach, &pa, &pb);
         t->open = d >= reach ? 0 : d <= c->tol_touch ? -1 : 1; // -1: touching at B, decided below with A
-        open += t->open != 0;
+        if (t->open != 0) {
+            ORI__RESERVE(s->opens, s->open_cap, open + 1);
+            s->opens[open].i = i;
+            s->opens[open].reach = reach;
+            open++;
+        }
     }
     if (open == 0) return ORI_OK;
     geom_swap(c, &s->a);
-    for (int i = 0; i < s->npairs && !*split; ++i) {
-        struct tracked *t = &s->pairs[i];
-        if (!t->open) continue;
-        double reach = s->pair_reach[i];
+    for (int o = 0; o < open && !*split; ++o) {
+        struct tracked *t = &s->pairs[s->opens[o].i];
+        double reach = s->opens[o].reach;
         ori_v3 pa, pb;
         double d = col_face_distance(c, t->a, t->b, reach, &pa, &pb);
         bool touching_b = t->open < 0;
@@ -453,6 +671,7 @@ static void step_advance(col_step *s, const ori_v3 *pos)
     s->next = t;
     geom_save(s->c, &s->a);
     s->a.pos = pos;
+    s->state_a = s->state_b;
 }
 
 // --- bisection -------------------------------------------------------------------------------
@@ -606,6 +825,7 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
         if (st == ORI_OK) {
             col_check_prepared(c, false, &r);
             geom_save(c, &s.a);
+            s.state_a = new_state_id(&s);
             if (r.collides) {
                 out->collides = true;
                 out->frame = 0;

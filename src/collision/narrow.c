@@ -173,6 +173,17 @@ static double plane_gap(const col_geom *g, const ori_v3 *p, int n)
     return lo > 0.0 ? lo : hi < 0.0 ? -hi : 0.0;
 }
 
+// plane_gap from the signed distances d of the n vertices.
+static double gap_of(const double *d, int n)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < n; ++i) {
+        lo = d[i] < lo ? d[i] : lo;
+        hi = d[i] > hi ? d[i] : hi;
+    }
+    return lo > 0.0 ? lo : hi < 0.0 ? -hi : 0.0;
+}
+
 // Squared gap between two boxes (0 when they overlap).
 static double box_gap2(const col_box *a, const col_box *b) { return col_box_dist2(a, b); }
 
@@ -400,7 +411,37 @@ col_side col_face_side_quick(const ori_collider *c, int a, int b)
     return COL_SIDE_MIXED;
 }
 
-col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point)
+// Whether the convex polygons p (n points) and q (m) lie on two sides of a line along one of
+// their edges' directions, overlapping across it by at most eps: then every convex piece of
+// their intersection lies in a strip of width eps, and is at most eps wide (2·area/perimeter).
+static bool split_by_a_side(const ori_v2 *p, int n, const ori_v2 *q, int m, double eps)
+{
+    for (int pass = 0; pass < 2; ++pass) {
+        const ori_v2 *e = pass ? q : p;
+        int ne = pass ? m : n;
+        for (int i = 0; i < ne; ++i) {
+            ori_v2 d = ori_v2_sub(e[(i + 1) % ne], e[i]);
+            double len = sqrt(ori_v2_dot(d, d));
+            if (!(len > 0.0)) continue;
+            ori_v2 u = ori_v2_make(-d.y / len, d.x / len);
+            double plo = INFINITY, phi = -INFINITY, qlo = INFINITY, qhi = -INFINITY;
+            for (int k = 0; k < n; ++k) {
+                double t = ori_v2_dot(p[k], u);
+                plo = t < plo ? t : plo;
+                phi = t > phi ? t : phi;
+            }
+            for (int k = 0; k < m; ++k) {
+                double t = ori_v2_dot(q[k], u);
+                qlo = t < qlo ? t : qlo;
+                qhi = t > qhi ? t : qhi;
+            }
+            if (phi <= qlo + eps || qhi <= plo + eps) return true;
+        }
+    }
+    return false;
+}
+
+static col_side face_side(ori_collider *c, int a, int b, ori_v3 *point, bool try_split)
 {
     col_work *w = &c->work;
     const col_geom *ga = &c->geom[a], *gb = &c->geom[b];
@@ -408,6 +449,12 @@ col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point)
     int n = load(c, a, w->pp), m = load(c, b, w->qq);
     to_frame(gb, w->pp, n, w->p2);
     to_frame(gb, w->qq, m, w->q2);
+    // Convex faces that one line parts, up to an eighth of the contact tolerance, have no overlap
+    // piece wider than the tolerance: no side, what the clipping below finds (its round-off is
+    // far below the rest of the tolerance), without clipping.
+    if (try_split && c->tri_off[a + 1] == c->tri_off[a] && c->tri_off[b + 1] == c->tri_off[b] &&
+        split_by_a_side(w->p2, n, w->q2, m, 0.125 * c->tol_touch))
+        return COL_SIDE_NONE;
     overlap_out o;
     overlap(c, a, w->p2, b, w->q2, c->tol_touch, true, &o);
     if (!o.any) return COL_SIDE_NONE;
@@ -420,6 +467,10 @@ col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point)
     if (o.hmin < -t) return COL_SIDE_BELOW;
     return COL_SIDE_FLAT;
 }
+
+col_side col_face_side(ori_collider *c, int a, int b, ori_v3 *point) { return face_side(c, a, b, point, false); }
+
+col_side col_face_side_parted(ori_collider *c, int a, int b, ori_v3 *point) { return face_side(c, a, b, point, true); }
 
 // --- crossing planes -------------------------------------------------------------------------
 
@@ -572,6 +623,26 @@ static bool one_side_beyond(const ori_collider *c, int f, const double *d, int n
     return !(pos && neg);
 }
 
+// Of face f's vertices other than the shared ones (signed distances d to the other face's
+// plane): whether all are beyond the contact tolerance from it (*far), and whether all lie on one
+// side of it beyond 1.5 tolerances (*one_side).
+static void away_vertices(const ori_collider *c, int f, const double *d, int n, const int *sv, int ns, bool *far,
+                          bool *one_side)
+{
+    const int *fv = c->face_verts + c->face_off[f];
+    double tol = c->tol_touch, wide = 1.5 * c->tol_touch;
+    bool pos = false, neg = false, near = false;
+    *far = true;
+    for (int i = 0; i < n; ++i) {
+        if (is_shared(sv, ns, fv[i])) continue;
+        if (!(fabs(d[i]) > tol)) *far = false;
+        if (d[i] > wide) pos = true;
+        else if (d[i] < -wide) neg = true;
+        else near = true;
+    }
+    *one_side = !near && !(pos && neg);
+}
+
 static bool stacked(ori_collider *c, int f, int g, int n, int m, col_pair_result *out)
 {
     col_work *w = &c->work;
@@ -594,6 +665,15 @@ void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_p
     out->cls = COL_APART;
     col_work *w = &c->work;
     const col_geom *gf = &c->geom[f], *gg = &c->geom[g];
+    // Faces joined by a crease meet only as coplanar layers (below): a vertex of either beyond
+    // the contact tolerance from the other's plane ends the test (not in the reference checker).
+    if (adjacency == COL_ADJ_CREASE && !c->reference) {
+        const int *fv = c->face_verts + c->face_off[f], *gv = c->face_verts + c->face_off[g];
+        for (int i = 0; i < face_size(c, f); ++i)
+            if (fabs(ori_v3_dot(gg->n, c->pos[fv[i]]) - gg->d) > c->tol_touch) return;
+        for (int j = 0; j < face_size(c, g); ++j)
+            if (fabs(ori_v3_dot(gf->n, c->pos[gv[j]]) - gf->d) > c->tol_touch) return;
+    }
     int n = load(c, f, w->pp), m = load(c, g, w->qq);
     double maxp = 0.0, maxq = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -603,6 +683,14 @@ void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_p
     for (int j = 0; j < m; ++j) {
         w->dq[j] = ori_v3_dot(gf->n, w->qq[j]) - gf->d;
         maxq = fmax(maxq, fabs(w->dq[j]));
+    }
+    // Faces sharing no vertex with one of them beyond the distance bound from the other's plane
+    // are apart: what the distance test below returns at once from the same separating-plane
+    // bound, found here without loading the faces again (not in the reference checker).
+    if (!adjacent && !c->reference) {
+        double bound = 2.0 * (c->tol_touch > c->clearance ? c->tol_touch : c->clearance);
+        if (c->distance_bound > bound) bound = c->distance_bound;
+        if (gap_of(w->dp, n) >= bound || gap_of(w->dq, m) >= bound) return;
     }
     bool coplanar = maxp <= c->tol_touch && maxq <= c->tol_touch;
     // Two convex faces joined by a crease lie in half-planes of their common line: away from
@@ -660,6 +748,18 @@ void col_pair_test(ori_collider *c, int f, int g, col_adjacency adjacency, col_p
     int sv[64];
     int ns = col_shared_vertices(c, f, g, sv, 64);
     if (ns <= 64 && one_side_beyond(c, f, w->dp, n, sv, ns) && one_side_beyond(c, g, w->dq, m, sv, ns)) return;
+    // Nothing touches away from the shared vertices either when no other vertex is within the
+    // tolerance of the other face's plane (the vertex tests below skip them all) and one face's
+    // other vertices all lie on one side of the other's plane beyond 1.5 tolerances: its edges
+    // without a shared end are then more than 1.25 tolerances from every edge of the other face
+    // (which lies within a quarter tolerance of its plane), so no edge test below touches either
+    // (not in the reference checker).
+    if (!c->reference && ns <= 64) {
+        bool fv_far, gv_far, f_side, g_side;
+        away_vertices(c, f, w->dp, n, sv, ns, &fv_far, &f_side);
+        away_vertices(c, g, w->dq, m, sv, ns, &gv_far, &g_side);
+        if (fv_far && gv_far && (f_side || g_side)) return;
+    }
     ori_v3 p;
     if (away_touch(c, f, g, sv, ns < 64 ? ns : 64, &p)) {
         out->cls = COL_TOUCH;
