@@ -325,3 +325,148 @@ Test(fab, cli_errors)
     FILE *f = fopen("/tmp/orikin-fab-unitless.gds", "rb");
     cr_assert_null(f, "nothing written on an input error");
 }
+
+// --- fabrication tolerance ---------------------------------------------------------------
+
+// The thesis' first fold of the open corner (2 × 2 sheet): diagonal to 90°, the down crease
+// locked, the lower triangle fixed.
+typedef struct corner_fold {
+    test_open_corner oc;
+    int locks[1];
+    ori_motion_def def;
+} corner_fold;
+
+static void corner_fold_init(corner_fold *c, double to_deg)
+{
+    c->oc = test_open_corner_load();
+    c->locks[0] = c->oc.down;
+    c->def = ori_default_motion_def();
+    c->def.fixed_face = c->oc.t2;
+    c->def.driven_edge = c->oc.diag;
+    c->def.to_rad = to_deg * ORI_PI / 180.0;
+    c->def.step_rad = 10.0 * ORI_PI / 180.0;
+    c->def.locked_edges = c->locks;
+    c->def.locked_count = 1;
+}
+
+static ori_tolerance *run_tolerance(corner_fold *c, double sigma, int samples, uint64_t seed, int threads)
+{
+    ori_tolerance_def td = ori_default_tolerance_def();
+    td.pattern = c->oc.p;
+    td.motion = &c->def;
+    td.vertex_sigma = sigma;
+    td.samples = samples;
+    td.seed = seed;
+    td.threads = threads;
+    ori_tolerance *t = NULL;
+    ori_error err;
+    cr_assert_eq(ori_tolerance_run(&td, &t, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    return t;
+}
+
+Test(fab, tolerance_zero_sigma_is_the_nominal_fold)
+{
+    corner_fold c;
+    corner_fold_init(&c, 90.0);
+    ori_tolerance *t = run_tolerance(&c, 0.0, 5, 7, 1);
+    cr_assert_eq(ori_tolerance_failed_count(t), 0);
+    for (int i = 0; i < 5; ++i) {
+        ori_tolerance_sample s = ori_tolerance_sample_at(t, i);
+        cr_assert(s.folded);
+        cr_assert_eq(s.position_error, 0.0);
+        cr_assert_eq(s.end_effector_error, 0.0);
+        cr_assert_eq(s.normal_error_rad, 0.0);
+        cr_assert_eq(s.angle_error_rad, 0.0);
+    }
+    ori_tolerance_destroy(t);
+    test_open_corner_free(&c.oc);
+}
+
+// The same seed gives the same samples bit for bit, whatever the threads; another seed others.
+Test(fab, tolerance_reproducible)
+{
+    corner_fold c;
+    corner_fold_init(&c, 90.0);
+    ori_tolerance *a = run_tolerance(&c, 1e-3, 40, 42, 1), *b = run_tolerance(&c, 1e-3, 40, 42, 2),
+                  *d = run_tolerance(&c, 1e-3, 40, 43, 1);
+    int differ = 0;
+    for (int i = 0; i < 40; ++i) {
+        ori_tolerance_sample x = ori_tolerance_sample_at(a, i), y = ori_tolerance_sample_at(b, i),
+                             z = ori_tolerance_sample_at(d, i);
+        cr_assert(x.folded);
+        cr_assert(memcmp(&x, &y, sizeof x) == 0, "sample %d differs between 1 and 2 threads", i);
+        differ += x.position_error != z.position_error;
+        cr_assert_gt(x.position_error, 0.0);
+    }
+    cr_assert_gt(differ, 35, "another seed, other samples");
+    // the statistics are those of the samples
+    ori_tolerance_stats s = ori_tolerance_stats_of(a, ORI_TOLERANCE_METRIC_POSITION);
+    double sum = 0.0, mx = 0.0;
+    for (int i = 0; i < 40; ++i) sum += ori_tolerance_sample_at(a, i).position_error,
+                                 mx = fmax(mx, ori_tolerance_sample_at(a, i).position_error);
+    cr_assert_eq(s.count, 40);
+    cr_assert_float_eq(s.mean, sum / 40, 1e-15);
+    cr_assert_eq(s.max, mx);
+    cr_assert(s.min <= s.p50 && s.p50 <= s.p90 && s.p90 <= s.p95 && s.p95 <= s.p99 && s.p99 <= s.max);
+    ori_tolerance_destroy(a);
+    ori_tolerance_destroy(b);
+    ori_tolerance_destroy(d);
+    test_open_corner_free(&c.oc);
+}
+
+// Small perturbations: the same draws scaled by 2 (same seed) double every sample's error to
+// first order: the error is linear in σ (relative deviation O(σ)).
+Test(fab, tolerance_linear_in_small_sigma)
+{
+    corner_fold c;
+    corner_fold_init(&c, 90.0);
+    ori_tolerance *a = run_tolerance(&c, 1e-6, 20, 5, 1), *b = run_tolerance(&c, 2e-6, 20, 5, 1);
+    for (int i = 0; i < 20; ++i) {
+        ori_tolerance_sample x = ori_tolerance_sample_at(a, i), y = ori_tolerance_sample_at(b, i);
+        cr_assert(x.folded && y.folded);
+        cr_assert_float_eq(y.position_error / x.position_error, 2.0, 1e-3, "sample %d: %.9g", i,
+                           y.position_error / x.position_error);
+        cr_assert_float_eq(y.normal_error_rad / x.normal_error_rad, 2.0, 1e-3);
+        cr_assert_float_eq(y.end_effector_error / x.end_effector_error, 2.0, 1e-3);
+        // a vertex perturbed by δ moves by at least about δ: the error is of the order of σ
+        cr_assert(x.position_error > 1e-8 && x.position_error < 1e-4, "%g", x.position_error);
+    }
+    ori_tolerance_destroy(a);
+    ori_tolerance_destroy(b);
+    test_open_corner_free(&c.oc);
+}
+
+Test(fab, tolerance_errors_and_cli)
+{
+    corner_fold c;
+    corner_fold_init(&c, 90.0);
+    ori_tolerance_def td = ori_default_tolerance_def();
+    td.pattern = c.oc.p;
+    td.motion = &c.def;
+    td.vertex_sigma = -1.0;
+    ori_tolerance *t = NULL;
+    ori_error err;
+    cr_assert_eq(ori_tolerance_run(&td, &t, &err), ORI_ERR_RANGE);
+    cr_assert_str_eq(err.field, "vertex_sigma");
+    td.vertex_sigma = 0.0;
+    td.samples = 0;
+    cr_assert_eq(ori_tolerance_run(&td, &t, &err), ORI_ERR_RANGE);
+    cr_assert_null(t);
+    test_open_corner_free(&c.oc);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli("tolerance examples/patterns/open-corner.fold --drive 12 --to 90", &out), 2);
+    cr_assert(strstr(out, "--vertex-sigma"), "%s", out);
+    free(out);
+    cr_assert_eq(test_run_cli("tolerance examples/patterns/open-corner.fold --vertex-sigma 1um --drive 12 --to 90", &out), 3);
+    cr_assert(strstr(out, "unitless"), "%s", out);
+    free(out);
+    char *a = NULL, *b = NULL;
+    const char *args = "tolerance examples/patterns/open-corner-gold.fold --vertex-sigma 1um --fix 4 --drive 12 --lock 11 "
+                       "--to 90 --samples 50 --seed 9 --json";
+    cr_assert_eq(test_run_cli(args, &a), 0, "%s", a);
+    cr_assert_eq(test_run_cli(args, &b), 0);
+    cr_assert_str_eq(a, b, "the seed reproduces the output");
+    cr_assert(strstr(a, "\"samples\":50") && strstr(a, "\"failed\":0") && strstr(a, "\"vertex_sigma\":1,"), "%s", a);
+    free(a);
+    free(b);
+}

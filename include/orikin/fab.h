@@ -2,19 +2,27 @@
 /// layout (panels shrunk by the hinge gap, hinge metal strips, the actuation wires with their
 /// pads, alignment marks, a label) written as a GDSII stream, and cutting files for laser
 /// cutters and plotters (DXF R12 with CUT / MOUNTAIN / VALLEY layers, an SVG with dashed or
-/// perforated creases). docs/fabrication.md has the layers and the conventions.
+/// perforated creases); and the fabrication tolerance of a fold: the distribution of its final
+/// pose's error over seeded random perturbations of the pattern. docs/fabrication.md has the
+/// layers and the conventions.
 ///
 /// Functions: ori_default_fab_def, ori_fab_layout_create, ori_fab_layout_destroy,
 /// ori_fab_layer_name, ori_fab_layer_description, ori_fab_shape_count, ori_fab_shape_at,
 /// ori_fab_layout_meters_per_unit, ori_default_gds_def, ori_gds_real8, ori_gds_write,
-/// ori_fab_layer_map, ori_default_cut_def, ori_dxf_write, ori_cut_svg_write, ori_crease_dashes.
+/// ori_fab_layer_map, ori_default_cut_def, ori_dxf_write, ori_cut_svg_write, ori_crease_dashes,
+/// ori_default_tolerance_def, ori_tolerance_run, ori_tolerance_destroy, ori_tolerance_sample_count,
+/// ori_tolerance_sample_at, ori_tolerance_failed_count, ori_tolerance_contact_count,
+/// ori_tolerance_stats_of, ori_tolerance_sample_metric.
 ///
 /// Coordinates: pattern units (the file's frame_unit) with y up, as in FOLD; GDSII and DXF keep
 /// y up, the SVG flips it (y down) as every SVG writer of orikin does.
 #ifndef ORIKIN_FAB_H
 #define ORIKIN_FAB_H
 
+#include <stdint.h>
+
 #include "actuation.h"
+#include "kinematics.h"
 #include "base.h"
 #include "math.h"
 #include "pattern.h"
@@ -179,6 +187,87 @@ ORI_API char *ori_dxf_write(const ori_pattern *pattern, const ori_cut_def *def);
 /// own <line> (laser drivers ignore stroke-dasharray). Free with ori_buffer_free; NULL when the
 /// pattern is not flat.
 ORI_API char *ori_cut_svg_write(const ori_pattern *pattern, const ori_cut_def *def);
+
+// --- fabrication tolerance -----------------------------------------------------------------
+
+/// Two vertices of the nominal folded state closer than this × the sheet's diagonal meet there
+/// (a closing seam): their distance in a perturbed sample is that sample's gap. Unitless.
+#define ORI_TOLERANCE_CONTACT_REL 1e-6
+
+/// Most samples of one analysis.
+#define ORI_TOLERANCE_MAX_SAMPLES 100000000
+
+/// A tolerance analysis; get it from ori_default_tolerance_def().
+typedef struct ori_tolerance_def {
+    const ori_pattern *pattern;    ///< built flat crease pattern (the nominal design)
+    const ori_motion_def *motion;  ///< the fold every sample makes (fixed face, drive, target, locks, start angles);
+                                   ///< copied; last_frame_only and progress are set by the analysis
+    double vertex_sigma;           ///< standard deviation of each vertex coordinate (x and y independently), pattern units (≥ 0)
+    int samples;                   ///< number of perturbed samples (1 … ORI_TOLERANCE_MAX_SAMPLES)
+    uint64_t seed;                 ///< the random stream: the same seed gives the same samples (sample k's draws depend on seed and k only)
+    int threads;                   ///< worker threads (≤ 1: the calling thread only); the results do not depend on it
+    ori_progress_fn *progress;     ///< called after each sample (from the calling thread) with the fraction done; may be NULL;
+                                   ///< returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
+    void *progress_user;
+    int internal_value;            ///< set by ori_default_tolerance_def; do not change
+} ori_tolerance_def;
+
+/// Defaults: no pattern or fold (set them), σ = 0, 100 samples, seed 1, one thread.
+ORI_API ori_tolerance_def ori_default_tolerance_def(void);
+
+/// The errors of one sample's final pose against the nominal one (the fixed face's frame: the
+/// fixed face is held where the flat sheet has it in both).
+typedef struct ori_tolerance_sample {
+    bool folded;              ///< the sample built and folded to the end (a valid motion); the errors below are meaningful only then
+    double position_error;    ///< largest distance of a vertex from its nominal final position (pattern units)
+    double end_effector_error;///< single-vertex folds: distance of the end effector (Frame B's free vertex, in Frame A) from its nominal; 0 otherwise
+    double normal_error_rad;  ///< largest angle between a face's normal and its nominal
+    double angle_error_rad;   ///< largest |fold angle − nominal| over the creases
+    double gap;               ///< largest distance between two vertices that meet in the nominal final state (pattern units; 0 when none meet)
+} ori_tolerance_sample;
+
+/// The metrics of a sample, for ori_tolerance_stats_of.
+typedef enum ori_tolerance_metric {
+    ORI_TOLERANCE_METRIC_POSITION = 0,
+    ORI_TOLERANCE_METRIC_END_EFFECTOR,
+    ORI_TOLERANCE_METRIC_NORMAL,
+    ORI_TOLERANCE_METRIC_ANGLE,
+    ORI_TOLERANCE_METRIC_GAP,
+    ORI_TOLERANCE_METRIC_COUNT
+} ori_tolerance_metric;
+
+/// Distribution of a metric over the samples that folded.
+typedef struct ori_tolerance_stats {
+    int count;                   ///< samples that folded
+    double mean, sd;             ///< mean and sample standard deviation (0 for one sample)
+    double min, max;
+    double p50, p90, p95, p99;   ///< percentiles (linear interpolation between order statistics)
+} ori_tolerance_stats;
+
+/// Opaque result of an analysis.
+typedef struct ori_tolerance ori_tolerance;
+
+/// Fold the nominal pattern, then `samples` copies of it with every vertex moved by a normal
+/// deviate of σ in x and in y (seeded: splitmix64 per sample, Box–Muller), each folded with the
+/// same motion (ori_motion_solve, rigid), and compare each final pose with the nominal one.
+/// A sample whose perturbed pattern does not build or whose fold is not valid is counted as
+/// not folded. Fails with ORI_ERR_RANGE (σ, samples), ORI_ERR_ARGUMENT (the nominal fold is not
+/// valid: its reason in the message) or the motion's error. Destroy with ori_tolerance_destroy.
+ORI_API ori_status ori_tolerance_run(const ori_tolerance_def *def, ori_tolerance **out, ori_error *error);
+/// Destroy an analysis; NULL is a no-op.
+ORI_API void ori_tolerance_destroy(ori_tolerance *tolerance);
+/// Number of samples.
+ORI_API int ori_tolerance_sample_count(const ori_tolerance *tolerance);
+/// A sample by index, by value.
+ORI_API ori_tolerance_sample ori_tolerance_sample_at(const ori_tolerance *tolerance, int index);
+/// Samples that did not fold.
+ORI_API int ori_tolerance_failed_count(const ori_tolerance *tolerance);
+/// Vertex pairs that meet in the nominal final state (the gap metric's pairs).
+ORI_API int ori_tolerance_contact_count(const ori_tolerance *tolerance);
+/// The distribution of a metric over the samples that folded (all zero when none did).
+ORI_API ori_tolerance_stats ori_tolerance_stats_of(const ori_tolerance *tolerance, ori_tolerance_metric metric);
+/// A metric of a sample.
+ORI_API double ori_tolerance_sample_metric(const ori_tolerance_sample *sample, ori_tolerance_metric metric);
 
 #ifdef __cplusplus
 }
