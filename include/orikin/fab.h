@@ -26,6 +26,7 @@
 #include "base.h"
 #include "math.h"
 #include "pattern.h"
+#include "tolerance.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -189,10 +190,6 @@ ORI_API char *ori_dxf_write(const ori_pattern *pattern, const ori_cut_def *def);
 ORI_API char *ori_cut_svg_write(const ori_pattern *pattern, const ori_cut_def *def);
 
 // --- fabrication tolerance -----------------------------------------------------------------
-
-/// Two vertices of the nominal folded state closer than this × the sheet's diagonal meet there
-/// (a closing seam): their distance in a perturbed sample is that sample's gap. Unitless.
-#define ORI_TOLERANCE_CONTACT_REL 1e-6
 
 /// Most samples of one analysis.
 #define ORI_TOLERANCE_MAX_SAMPLES 100000000

@@ -195,7 +195,7 @@ static ori_status add_panel(ori_fab_layout *l, const ori_fab_def *d, double mpu,
         ori_v2 na = v2(-da.y, da.x), nb = v2(-db.y, db.x);
         ori_v2 pa = add(a1, mul(na, off[h])), pb = add(a1, mul(nb, off[i]));
         double c = cross(da, db);
-        if (fabs(c) < ORI_TOL_ON_LINE_REL) { // collinear: one point, or a step between the offsets
+        if (fabs(c) < ORI_TOL_ANGLE_EQUAL_RAD) { // collinear (sin of the turn): one point, or a step between the offsets
             out[m++] = pa;
             if (fabs(off[h] - off[i]) > 0.0) out[m++] = pb;
             continue;
@@ -218,12 +218,13 @@ static ori_status add_panel(ori_fab_layout *l, const ori_fab_def *d, double mpu,
 
 static ori_v2 face_centroid(const ori_pattern *p, int f)
 {
-    int vs[256];
+    int n = ori_pattern_face_size(p, f);
+    int *vs = ori__alloc(sizeof(int) * (size_t)n);
+    ori_pattern_face_vertices(p, f, vs, n);
     ori_v2 c = v2(0, 0);
-    int k = ori_pattern_face_vertices(p, f, vs, 256);
-    if (k > 256) k = 256;
-    for (int i = 0; i < k; ++i) c = add(c, vxy(p, vs[i]));
-    return mul(c, 1.0 / k);
+    for (int i = 0; i < n; ++i) c = add(c, vxy(p, vs[i]));
+    ori__free(vs);
+    return mul(c, 1.0 / n);
 }
 
 // The wire of crease e on face wf: one turn is a U from the crease (leads across it to two

@@ -278,7 +278,7 @@ ori_status ori_tolerance_run(const ori_tolerance_def *d, ori_tolerance **out, or
     }
     // Contacts: vertex pairs that meet in the nominal final state but not in the flat sheet.
     int nv = ori_pattern_vertex_count(d->pattern), cap = 0;
-    double tol = ORI_TOLERANCE_CONTACT_REL * ori_pattern_diagonal(d->pattern);
+    double tol = ORI_TOL_FAB_CONTACT_REL * ori_pattern_diagonal(d->pattern);
     for (int i = 0; i < nv; ++i)
         for (int j = i + 1; j < nv; ++j)
             if (ori_v3_norm(ori_v3_sub(J.nominal.vertices[i], J.nominal.vertices[j])) < tol) {
