@@ -470,3 +470,62 @@ Test(fab, tolerance_errors_and_cli)
     free(a);
     free(b);
 }
+
+// Hinge widths: the thesis flap (one gold hinge, 500 µm silicon panel) sized per sample. M_p ∝ w
+// and the current follows M_p, so with the same seed the current's change doubles with σ_w (to first order: 2e-5 here);
+// σ_w = 0 gives the nominal current; 5 % widths spread the current by 5 %.
+Test(fab, tolerance_hinge_widths_and_current)
+{
+    ori_fold *doc = NULL;
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(test_repo_path("examples/patterns/thesis-flap.fold"), &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK);
+    ori_motion_def md = ori_default_motion_def();
+    md.fixed_face = 0;
+    md.driven_edge = 0;
+    md.to_rad = ORI_PI;
+    md.step_rad = 15.0 * ORI_PI / 180.0;
+    ori_design_def dd = ori_default_design_def();
+    dd.doc = doc;
+    ori_tolerance_def td = ori_default_tolerance_def();
+    td.pattern = p;
+    td.motion = &md;
+    td.design = &dd;
+    td.samples = 30;
+    td.seed = 3;
+    ori_tolerance *t0 = NULL, *t1 = NULL, *t2 = NULL, *t2b = NULL;
+    cr_assert_eq(ori_tolerance_run(&td, &t0, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    double nominal = ori_tolerance_nominal_current(t0);
+    cr_assert(nominal > 1e-3 && nominal < 0.02, "%g A", nominal);
+    for (int i = 0; i < 30; ++i) cr_assert_eq(ori_tolerance_sample_at(t0, i).current_a, nominal);
+    td.width_sigma_rel = 0.01;
+    cr_assert_eq(ori_tolerance_run(&td, &t1, &err), ORI_OK);
+    td.width_sigma_rel = 0.02;
+    cr_assert_eq(ori_tolerance_run(&td, &t2, &err), ORI_OK);
+    td.threads = 2;
+    cr_assert_eq(ori_tolerance_run(&td, &t2b, &err), ORI_OK);
+    for (int i = 0; i < 30; ++i) {
+        double c1 = ori_tolerance_sample_at(t1, i).current_a, c2 = ori_tolerance_sample_at(t2, i).current_a;
+        cr_assert_float_eq((c2 - nominal) / (c1 - nominal), 2.0, 1e-3, "sample %d: %.12g %.12g %.12g", i, nominal, c1, c2);
+        cr_assert_eq(c2, ori_tolerance_sample_at(t2b, i).current_a, "threads give the same sizing");
+    }
+    ori_tolerance_destroy(t0);
+    ori_tolerance_destroy(t1);
+    ori_tolerance_destroy(t2);
+    ori_tolerance_destroy(t2b);
+    td.threads = 1;
+    td.samples = 400;
+    td.width_sigma_rel = 0.05;
+    cr_assert_eq(ori_tolerance_run(&td, &t0, &err), ORI_OK);
+    ori_tolerance_stats s = ori_tolerance_stats_of(t0, ORI_TOLERANCE_METRIC_CURRENT);
+    cr_assert_eq(s.count, 400);
+    cr_assert(s.sd / s.mean > 0.044 && s.sd / s.mean < 0.056, "relative spread %g for 5 %% widths", s.sd / s.mean);
+    cr_assert_float_eq(s.mean / nominal, 1.0, 0.01);
+    ori_tolerance_destroy(t0);
+    td.width_sigma_rel = -1.0;
+    cr_assert_eq(ori_tolerance_run(&td, &t0, &err), ORI_ERR_RANGE);
+    cr_assert_str_eq(err.field, "width_sigma_rel");
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+}

@@ -11,7 +11,8 @@
 /// ori_fab_layout_meters_per_unit, ori_default_gds_def, ori_gds_real8, ori_gds_write,
 /// ori_fab_layer_map, ori_default_cut_def, ori_dxf_write, ori_cut_svg_write, ori_crease_dashes,
 /// ori_default_tolerance_def, ori_tolerance_run, ori_tolerance_destroy, ori_tolerance_sample_count,
-/// ori_tolerance_sample_at, ori_tolerance_failed_count, ori_tolerance_contact_count,
+/// ori_tolerance_sample_at, ori_tolerance_failed_count, ori_tolerance_nominal_current,
+/// ori_tolerance_contact_count,
 /// ori_tolerance_stats_of, ori_tolerance_sample_metric.
 ///
 /// Coordinates: pattern units (the file's frame_unit) with y up, as in FOLD; GDSII and DXF keep
@@ -203,6 +204,10 @@ typedef struct ori_tolerance_def {
     int samples;                   ///< number of perturbed samples (1 … ORI_TOLERANCE_MAX_SAMPLES)
     uint64_t seed;                 ///< the random stream: the same seed gives the same samples (sample k's draws depend on seed and k only)
     int threads;                   ///< worker threads (≤ 1: the calling thread only); the results do not depend on it
+    const ori_design_def *design;  ///< NULL, or the design (hinges, wires, field) to size every sample's fold with (ori_sizing_solve,
+                                   ///< the design's schedule rules): the current it needs is a metric; its pattern field is ignored (the
+                                   ///< nominal pattern's panel masses and wire places are used for every sample)
+    double width_sigma_rel;        ///< with design: each hinge's width × (1 + this × a normal deviate), drawn after the vertices (≥ 0)
     ori_progress_fn *progress;     ///< called after each sample (from the calling thread) with the fraction done; may be NULL;
                                    ///< returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
     void *progress_user;
@@ -221,6 +226,7 @@ typedef struct ori_tolerance_sample {
     double normal_error_rad;  ///< largest angle between a face's normal and its nominal
     double angle_error_rad;   ///< largest |fold angle − nominal| over the creases
     double gap;               ///< largest distance between two vertices that meet in the nominal final state (pattern units; 0 when none meet)
+    double current_a;         ///< with a design: the largest current a wire needs along the sample's fold (A; INFINITY when the field cannot drive it); 0 otherwise
 } ori_tolerance_sample;
 
 /// The metrics of a sample, for ori_tolerance_stats_of.
@@ -230,6 +236,7 @@ typedef enum ori_tolerance_metric {
     ORI_TOLERANCE_METRIC_NORMAL,
     ORI_TOLERANCE_METRIC_ANGLE,
     ORI_TOLERANCE_METRIC_GAP,
+    ORI_TOLERANCE_METRIC_CURRENT,
     ORI_TOLERANCE_METRIC_COUNT
 } ori_tolerance_metric;
 
@@ -248,8 +255,10 @@ typedef struct ori_tolerance ori_tolerance;
 /// deviate of σ in x and in y (seeded: splitmix64 per sample, Box–Muller), each folded with the
 /// same motion (ori_motion_solve, rigid), and compare each final pose with the nominal one.
 /// A sample whose perturbed pattern does not build or whose fold is not valid is counted as
-/// not folded. Fails with ORI_ERR_RANGE (σ, samples), ORI_ERR_ARGUMENT (the nominal fold is not
-/// valid: its reason in the message) or the motion's error. Destroy with ori_tolerance_destroy.
+/// not folded. With a design each sample's hinges get perturbed widths and its fold is sized (a
+/// width that the draw makes ≤ 0 fails the sample). Fails with ORI_ERR_RANGE (σ, samples),
+/// ORI_ERR_ARGUMENT (the nominal fold is not valid: its reason in the message), the design's or
+/// the nominal sizing's error, or the motion's error. Destroy with ori_tolerance_destroy.
 ORI_API ori_status ori_tolerance_run(const ori_tolerance_def *def, ori_tolerance **out, ori_error *error);
 /// Destroy an analysis; NULL is a no-op.
 ORI_API void ori_tolerance_destroy(ori_tolerance *tolerance);
@@ -259,6 +268,8 @@ ORI_API int ori_tolerance_sample_count(const ori_tolerance *tolerance);
 ORI_API ori_tolerance_sample ori_tolerance_sample_at(const ori_tolerance *tolerance, int index);
 /// Samples that did not fold.
 ORI_API int ori_tolerance_failed_count(const ori_tolerance *tolerance);
+/// With a design: the current the nominal fold needs (A); 0 without.
+ORI_API double ori_tolerance_nominal_current(const ori_tolerance *tolerance);
 /// Vertex pairs that meet in the nominal final state (the gap metric's pairs).
 ORI_API int ori_tolerance_contact_count(const ori_tolerance *tolerance);
 /// The distribution of a metric over the samples that folded (all zero when none did).

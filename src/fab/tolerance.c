@@ -13,6 +13,7 @@
 struct ori_tolerance {
     ori_tolerance_sample *samples;
     int count, failed, contacts;
+    double nominal_current;
 };
 
 ori_tolerance_def ori_default_tolerance_def(void)
@@ -36,6 +37,7 @@ void ori_tolerance_destroy(ori_tolerance *t)
 int ori_tolerance_sample_count(const ori_tolerance *t) { ORI_ASSERT(t); return t->count; }
 int ori_tolerance_failed_count(const ori_tolerance *t) { ORI_ASSERT(t); return t->failed; }
 int ori_tolerance_contact_count(const ori_tolerance *t) { ORI_ASSERT(t); return t->contacts; }
+double ori_tolerance_nominal_current(const ori_tolerance *t) { ORI_ASSERT(t); return t->nominal_current; }
 
 ori_tolerance_sample ori_tolerance_sample_at(const ori_tolerance *t, int i)
 {
@@ -51,6 +53,7 @@ double ori_tolerance_sample_metric(const ori_tolerance_sample *s, ori_tolerance_
     case ORI_TOLERANCE_METRIC_NORMAL: return s->normal_error_rad;
     case ORI_TOLERANCE_METRIC_ANGLE: return s->angle_error_rad;
     case ORI_TOLERANCE_METRIC_GAP: return s->gap;
+    case ORI_TOLERANCE_METRIC_CURRENT: return s->current_a;
     default: return 0.0;
     }
 }
@@ -127,6 +130,8 @@ typedef struct pose_state {
     double *angles;
     bool has_ee;
     ori_v3 ee;
+    double current_a;  // with a design: the sizing's current
+    ori_design *design; // this worker's copy of the design (hinge widths set per sample), or NULL
 } pose_state;
 
 typedef struct job {
@@ -136,6 +141,8 @@ typedef struct job {
     pose_state nominal;
     int *pairs; // contact pairs, 2 per pair
     int pair_count;
+    ori_hinge *hinges; // the nominal hinges (edge_count), with has_hinge
+    bool *has_hinge;
     ori_tolerance_sample *out;
     atomic_int next, done;
     atomic_bool cancel;
@@ -172,6 +179,17 @@ static bool fold_one(const job *J, ori_pattern *p, pose_state *st, ori_error *er
         memcpy(st->angles, ori_motion_frame_angles(mo, last), sizeof(double) * (size_t)ne);
         ori_v3 b;
         st->has_ee = ori_motion_frame_end_effector(mo, last, &st->ee, &b);
+        if (st->design) {
+            ori_sizing_def sd = ori_default_sizing_def();
+            sd.design = st->design;
+            sd.mechanism = m;
+            sd.motion = mo;
+            sd.driven_edge = J->motion.driven_edge;
+            ori_sizing *z = NULL;
+            ok = ori_sizing_solve(&sd, &z, error) == ORI_OK;
+            st->current_a = ok ? ori_sizing_summary_of(z).current_needed_a : 0.0;
+            ori_sizing_destroy(z);
+        }
     }
     ori_motion_destroy(mo);
     ori_mechanism_destroy(m);
@@ -184,6 +202,8 @@ static void pose_alloc(pose_state *st, const ori_pattern *p)
     st->normals = ori__alloc(sizeof(ori_v3) * (size_t)(ori_pattern_face_count(p) + 1));
     st->angles = ori__alloc(sizeof(double) * (size_t)(ori_pattern_edge_count(p) + 1));
     st->has_ee = false;
+    st->current_a = 0.0;
+    st->design = NULL;
 }
 
 static void pose_free(pose_state *st)
@@ -191,6 +211,7 @@ static void pose_free(pose_state *st)
     ori__free(st->vertices);
     ori__free(st->normals);
     ori__free(st->angles);
+    ori_design_destroy(st->design);
 }
 
 static void run_sample(job *J, int k, pose_state *st)
@@ -213,7 +234,17 @@ static void run_sample(job *J, int k, pose_state *st)
         ori_pattern_destroy(p);
         p = ori_pattern_clone(J->pattern);
     }
-    s->folded = fold_one(J, p, st, NULL, NULL, NULL, 0);
+    bool widths_ok = true;
+    for (int e = 0; st->design && e < ori_pattern_edge_count(p); ++e) {
+        if (!J->has_hinge[e]) continue;
+        double a, b;
+        normal2(&state, &a, &b);
+        ori_hinge h = J->hinges[e];
+        h.width_m *= 1.0 + d->width_sigma_rel * a;
+        if (h.has_wire && J->hinges[e].wire.width_m == J->hinges[e].width_m) h.wire.width_m = h.width_m; // the default conductor
+        if (!(h.width_m > 0.0) || ori_design_set_hinge(st->design, e, &h, NULL) != ORI_OK) widths_ok = false;
+    }
+    s->folded = widths_ok && fold_one(J, p, st, NULL, NULL, NULL, 0);
     if (s->folded) {
         const pose_state *n = &J->nominal;
         for (int v = 0; v < nv; ++v) s->position_error = fmax(s->position_error, ori_v3_norm(ori_v3_sub(st->vertices[v], n->vertices[v])));
@@ -223,24 +254,37 @@ static void run_sample(job *J, int k, pose_state *st)
         if (st->has_ee && n->has_ee) s->end_effector_error = ori_v3_norm(ori_v3_sub(st->ee, n->ee));
         for (int i = 0; i < J->pair_count; ++i)
             s->gap = fmax(s->gap, ori_v3_norm(ori_v3_sub(st->vertices[J->pairs[2 * i]], st->vertices[J->pairs[2 * i + 1]])));
+        s->current_a = st->current_a;
     }
     ori_pattern_destroy(p);
 }
 
+typedef struct worker_arg {
+    job *J;
+    pose_state st;
+} worker_arg;
+
 static void *worker(void *arg)
 {
-    job *J = arg;
-    pose_state st;
-    pose_alloc(&st, J->pattern);
+    worker_arg *w = arg;
+    job *J = w->J;
     for (;;) {
         if (atomic_load(&J->cancel)) break;
         int k = atomic_fetch_add(&J->next, 1);
         if (k >= J->def->samples) break;
-        run_sample(J, k, &st);
+        run_sample(J, k, &w->st);
         atomic_fetch_add(&J->done, 1);
     }
-    pose_free(&st);
     return NULL;
+}
+
+// A worker's design: created here, in the calling thread (the design reads the FOLD document).
+static ori_status make_design(const ori_tolerance_def *d, pose_state *st, ori_error *error)
+{
+    if (!d->design) return ORI_OK;
+    ori_design_def dd = *d->design;
+    dd.pattern = d->pattern;
+    return ori_design_create(&dd, &st->design, error);
 }
 
 ori_status ori_tolerance_run(const ori_tolerance_def *d, ori_tolerance **out, ori_error *error)
@@ -251,16 +295,23 @@ ori_status ori_tolerance_run(const ori_tolerance_def *d, ori_tolerance **out, or
         return ori__fail(error, ORI_ERR_ARGUMENT, "tolerance: a built pattern and a fold are needed");
     if (!(d->vertex_sigma >= 0.0) || !isfinite(d->vertex_sigma))
         return ori__fail_at(error, ORI_ERR_RANGE, "vertex_sigma", ORI_NULL_INDEX, "the vertex sigma must be a finite length ≥ 0");
+    if (!(d->width_sigma_rel >= 0.0) || !isfinite(d->width_sigma_rel))
+        return ori__fail_at(error, ORI_ERR_RANGE, "width_sigma_rel", ORI_NULL_INDEX, "the width sigma must be a finite number ≥ 0");
     if (d->samples < 1 || d->samples > ORI_TOLERANCE_MAX_SAMPLES)
         return ori__fail_at(error, ORI_ERR_RANGE, "samples", ORI_NULL_INDEX, "samples must be 1 to %d", ORI_TOLERANCE_MAX_SAMPLES);
     job J;
     memset(&J, 0, sizeof J);
     J.def = d;
     J.motion = *d->motion;
-    J.motion.last_frame_only = true;
+    J.motion.last_frame_only = !d->design; // the sizing follows every frame
     J.motion.progress = NULL;
     J.pattern = d->pattern;
     pose_alloc(&J.nominal, d->pattern);
+    ori_status st0 = make_design(d, &J.nominal, error);
+    if (st0 != ORI_OK) {
+        pose_free(&J.nominal);
+        return st0;
+    }
     ori_pattern *nom = ori_pattern_clone(d->pattern);
     ori_motion_verdict verdict = ORI_MOTION_VALID;
     char reason[256] = "";
@@ -287,6 +338,10 @@ ori_status ori_tolerance_run(const ori_tolerance_def *d, ori_tolerance **out, or
                 J.pairs[2 * J.pair_count + 1] = j;
                 J.pair_count++;
             }
+    int ne = ori_pattern_edge_count(d->pattern);
+    J.hinges = ori__calloc((size_t)(ne ? ne : 1), sizeof *J.hinges);
+    J.has_hinge = ori__calloc((size_t)(ne ? ne : 1), sizeof *J.has_hinge);
+    for (int e = 0; J.nominal.design && e < ne; ++e) J.has_hinge[e] = ori_design_hinge(J.nominal.design, e, &J.hinges[e]);
     J.out = ori__calloc((size_t)d->samples, sizeof *J.out);
     atomic_init(&J.next, 0);
     atomic_init(&J.done, 0);
@@ -294,14 +349,29 @@ ori_status ori_tolerance_run(const ori_tolerance_def *d, ori_tolerance **out, or
     int extra = d->threads > 1 ? d->threads - 1 : 0;
     if (extra > d->samples - 1) extra = d->samples - 1;
     pthread_t *tids = ori__alloc(sizeof(pthread_t) * (size_t)(extra ? extra : 1));
+    worker_arg *args = ori__calloc((size_t)(extra ? extra : 1), sizeof *args);
     int started = 0;
-    for (int i = 0; i < extra; ++i)
-        if (pthread_create(&tids[i], NULL, worker, &J) == 0) started++;
-    // the calling thread works too, reporting progress between its samples
-    pose_state st;
-    pose_alloc(&st, d->pattern);
-    bool cancelled = false;
-    for (;;) {
+    ori_status design_status = ORI_OK;
+    for (int i = 0; i < extra && design_status == ORI_OK; ++i) {
+        args[i].J = &J;
+        pose_alloc(&args[i].st, d->pattern);
+        if ((design_status = make_design(d, &args[i].st, error)) != ORI_OK) break;
+        if (pthread_create(&tids[i], NULL, worker, &args[i]) == 0) started++;
+    }
+    // the calling thread works too, reporting progress between its samples (with the nominal's design)
+    pose_state st = J.nominal;
+    J.nominal.design = NULL;
+    double nominal_current = st.current_a;
+    pose_alloc(&J.nominal, d->pattern); // (kept for the comparisons: copy the nominal pose back)
+    memcpy(J.nominal.vertices, st.vertices, sizeof(ori_v3) * (size_t)ori_pattern_vertex_count(d->pattern));
+    memcpy(J.nominal.normals, st.normals, sizeof(ori_v3) * (size_t)ori_pattern_face_count(d->pattern));
+    memcpy(J.nominal.angles, st.angles, sizeof(double) * (size_t)ne);
+    J.nominal.has_ee = st.has_ee;
+    J.nominal.ee = st.ee;
+    J.nominal.current_a = nominal_current;
+    bool cancelled = design_status != ORI_OK;
+    if (cancelled) atomic_store(&J.cancel, true);
+    for (; !cancelled;) {
         int k = atomic_fetch_add(&J.next, 1);
         if (k >= d->samples) break;
         run_sample(&J, k, &st);
@@ -314,18 +384,24 @@ ori_status ori_tolerance_run(const ori_tolerance_def *d, ori_tolerance **out, or
     }
     pose_free(&st);
     for (int i = 0; i < started; ++i) pthread_join(tids[i], NULL);
+    for (int i = 0; i < extra; ++i)
+        if (args[i].J) pose_free(&args[i].st);
+    ori__free(args);
     ori__free(tids);
     pose_free(&J.nominal);
     ori__free(J.pairs);
+    ori__free(J.hinges);
+    ori__free(J.has_hinge);
     if (cancelled) {
         ori__free(J.out);
-        return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+        return design_status != ORI_OK ? design_status : ori__fail(error, ORI_ERR_LIMIT, "cancelled");
     }
     if (d->progress) d->progress(1.0, d->progress_user);
     ori_tolerance *t = ori__calloc(1, sizeof *t);
     t->samples = J.out;
     t->count = d->samples;
     t->contacts = J.pair_count;
+    t->nominal_current = nominal_current;
     for (int i = 0; i < t->count; ++i) t->failed += !t->samples[i].folded;
     *out = t;
     return ORI_OK;
