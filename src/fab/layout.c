@@ -184,6 +184,7 @@ static ori_status add_panel(ori_fab_layout *l, const ori_fab_def *d, double mpu,
         off[i] = edge_gap(d, mpu, es[ccw ? k : (k - 1 + n) % n]) * 0.5;
     }
     ori_v2 *out = ori__alloc(sizeof(ori_v2) * (size_t)n * 2);
+    int *from = ori__alloc(sizeof(int) * (size_t)n * 2); // the face edge (of q) that starts at out[k]; −1 for a step
     int m = 0;
     for (int i = 0; i < n; ++i) {
         int h = (i - 1 + n) % n;
@@ -196,18 +197,22 @@ static ori_status add_panel(ori_fab_layout *l, const ori_fab_def *d, double mpu,
         ori_v2 pa = add(a1, mul(na, off[h])), pb = add(a1, mul(nb, off[i]));
         double c = cross(da, db);
         if (fabs(c) < ORI_TOL_ANGLE_EQUAL_RAD) { // collinear (sin of the turn): one point, or a step between the offsets
-            out[m++] = pa;
-            if (fabs(off[h] - off[i]) > 0.0) out[m++] = pb;
+            if (fabs(off[h] - off[i]) > 0.0) from[m] = -1, out[m++] = pa;
+            from[m] = i, out[m++] = pb;
             continue;
         }
         // pa + s·da = pb + t·db
         double s = cross(sub(pb, pa), db) / c;
-        out[m++] = add(pa, mul(da, s));
+        from[m] = i, out[m++] = add(pa, mul(da, s));
     }
-    double area = signed_area(out, m);
+    // A gap too wide for the panel turns an offset edge around (or the polygon inside out).
+    bool valid = signed_area(out, m) > 0.0;
+    for (int k = 0; k < m && valid; ++k)
+        if (from[k] >= 0) valid = dot(sub(out[(k + 1) % m], out[k]), sub(q[(from[k] + 1) % n], q[from[k]])) > 0.0;
+    ori__free(from);
     ori_status st = ORI_OK;
-    if (!(area > 0.0)) st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f,
-                                        "the hinge gap leaves face %d no panel", f);
+    if (!valid) st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f,
+                                 "the hinge gap leaves face %d no panel (--gap: narrower than the panel)", f);
     else add_shape(l, ORI_FAB_PANEL, ORI_FAB_POLYGON, f, out, m, 0.0, NULL);
     ori__free(out);
     ori__free(off);
