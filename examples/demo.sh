@@ -91,6 +91,12 @@ echo "(the open corner with gold hinges, folded as the thesis does: two folds, o
 run 0 actuate examples/open-corner-gold.seq.json
 run 0 simulate examples/open-corner-gold.seq.json --current 0.02 --duration 0.012 --damping 0.2 --frames 13 \
     -o "$OUT/open-corner-gold-folding.fold"
+echo "(the sized device to its fabrication files: the lithography mask with its layer map, a laser"
+echo " cutter's SVG of the paper model, and the tolerance of the first fold to 1 um vertex errors)"
+run 0 fab examples/patterns/open-corner-gold.fold --fix 4 -o "$OUT/open-corner-gold.gds"
+run 0 fab examples/patterns/open-corner.fold --scale 50 -o "$OUT/open-corner-laser.svg"
+run 0 tolerance examples/patterns/open-corner-gold.fold --vertex-sigma 1um --fix 4 --drive 12 --lock 11 --to 90 \
+    --step 10 --samples 200
 # --- io: finding faces and edges; drawings from other tools ----------------------------------
 step "9. Finding faces and edges by index and name; drawings in and out"
 run 0 info "$OUT/open-corner.fold" --faces --edges

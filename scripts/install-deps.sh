@@ -36,6 +36,8 @@ python3-pytest
 python3-setuptools
 python3-wheel
 python3-matplotlib
+python3-gdspy
+python3-ezdxf
 "
 # Node.js and npm come with the machine on most set-ups; from Debian when they are missing.
 if ! command -v npm >/dev/null 2>&1; then

@@ -592,4 +592,9 @@
 /// none (docs/kinematics.md §15, extremely steep branches). Unitless.
 #define ORI_KIN_STEEP_START_RATE 1e4
 
+/// Fabrication tolerance (ori_tolerance_run): two vertices of the nominal folded state closer
+/// than this × the sheet's diagonal meet there (a closing seam); their distance in a perturbed
+/// sample is that sample's seam gap. Unitless (relative length).
+#define ORI_TOL_FAB_CONTACT_REL 1e-6
+
 #endif
