@@ -1009,3 +1009,18 @@ Test(formats, a_drawing_whose_lines_all_weld_away_is_refused)
     cr_assert_eq(ori_pattern_edge_count(p), 3);
     ori_pattern_destroy(p);
 }
+
+// libxml2's messages can span lines ("Input is not proper UTF-8, indicate encoding !\nBytes:
+// 0xFF …"): the error is one line (the CLI prints one line per error).
+Test(formats, xml_errors_are_one_line)
+{
+    const char text[] = "<svg xmlns=\"http://www.w3.org/2000/svg\"><line x1=\"0\" y1=\"0\" x2=\"1\" y2=\"1\" "
+                        "stroke=\"#000\" id=\"\xff\xfe\"/></svg>";
+    ori_segment *seg = NULL;
+    int n = 0;
+    ori_error err;
+    cr_assert_eq(ori_svg_read_segments(text, sizeof text - 1, &seg, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_null(strchr(err.message, '\n'), "%s", err.message);
+    cr_assert(strstr(err.message, "UTF-8") && strstr(err.message, "; Bytes: 0xFF 0xFE"), "%s", err.message);
+    cr_assert_gt(err.line, 0);
+}

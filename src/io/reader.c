@@ -96,9 +96,19 @@ static void keep_first_error(ori__xml_first_error *first, const xmlError *xe)
     size_t n = strlen(m);
     while (n > 0 && (m[n - 1] == ' ' || m[n - 1] == '\t' || m[n - 1] == '\n' || m[n - 1] == '\r' || m[n - 1] == '\f'))
         --n;
-    if (n >= sizeof first->message) n = sizeof first->message - 1;
-    memcpy(first->message, m, n);
-    first->message[n] = '\0';
+    // one line: libxml2's multi-line messages ("… UTF-8, indicate encoding !\nBytes: 0xFF …")
+    // joined with "; "
+    size_t w = 0;
+    for (size_t i = 0; i < n && w + 3 < sizeof first->message; ++i) {
+        if (m[i] == '\n' || m[i] == '\r') {
+            while (i + 1 < n && (m[i + 1] == '\n' || m[i + 1] == '\r' || m[i + 1] == ' ' || m[i + 1] == '\t')) ++i;
+            first->message[w++] = ';';
+            first->message[w++] = ' ';
+        } else {
+            first->message[w++] = m[i];
+        }
+    }
+    first->message[w] = '\0';
 }
 
 void ori__xml_reader_error(void *user, xmlErrorPtr xe) { keep_first_error(user, xe); }
