@@ -453,6 +453,11 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
                 "size (%.3g), within the width its lines are drawn with (%.3g): --gaps 0 keeps them apart\n",
                 cmd, path, s->gaps_closed, s->largest_gap_rel, s->largest_gap_rel / s->gap_rel * s->stroke_width,
                 s->stroke_width);
+    if (s->clipped > 0)
+        fprintf(stderr,
+                "orikin %s: %s: note: clipped the creases drawn past the border: %d crease piece(s) outside the sheet "
+                "dropped (%d face(s))\n",
+                cmd, path, s->clipped, s->clipped_faces);
     if (s->dangling > 0) {
         ori_v3 x = ori_pattern_vertex(p, s->dangling_example);
         fprintf(stderr, "orikin %s: %s: warning: %d crease end(s) touch nothing (e.g. vertex %d at (%g, %g))", cmd, path,

@@ -1009,3 +1009,92 @@ Test(formats, a_drawing_whose_lines_all_weld_away_is_refused)
     cr_assert_eq(ori_pattern_edge_count(p), 3);
     ori_pattern_destroy(p);
 }
+
+// Creases drawn past the border (Lang's drawings in Origami Simulator) make faces outside the
+// sheet, joined to it only across the border: the import clips them at the border. A square
+// [0, 10]² with two creases from the top side that cross 0.5 below the bottom side (a triangle
+// outside, tails past it) and a vertical crease overshooting both sides by 1 (tails without
+// faces): only the sheet is left, every edge inside it, its faces the square's area, and its
+// mechanism (which refuses a sheet that falls apart) builds.
+Test(formats, creases_drawn_past_the_border_are_clipped)
+{
+    char *dir = test_tmpdir();
+    char path[600];
+    snprintf(path, sizeof path, "%s/overshoot.svg", dir);
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    // (SVG y down: the bottom side is y = 10; the creases cross at (5, 10.5).)
+    fprintf(f, "<svg xmlns='http://www.w3.org/2000/svg'><g stroke-width='0.05'>\n"
+               "<rect x='0' y='0' width='10' height='10' stroke='#000'/>\n"
+               "<line x1='2' y1='0' x2='5.9' y2='13.65' stroke='#f00'/>\n"
+               "<line x1='8' y1='0' x2='4.1' y2='13.65' stroke='#f00'/>\n"
+               "<line x1='3' y1='-1' x2='3' y2='11' stroke='#00f'/>\n"
+               "</g></svg>\n");
+    fclose(f);
+    ori_import_stats stats;
+    ori_pattern *p = import_ok(path, &stats);
+    cr_assert_eq(stats.clipped_faces, 1, "%d", stats.clipped_faces);
+    cr_assert_eq(stats.clipped, 6, "%d", stats.clipped); // 2 triangle sides, 2 tails below it, 2 vertical tails
+    cr_assert_eq(stats.dangling, 0);
+    cr_assert_eq(stats.parts, 1);
+    double area = 0.0;
+    for (int fc = 0; fc < ori_pattern_face_count(p); ++fc) area += 0.5 * fabs(ori__pattern_face_area2(p, fc));
+    cr_assert_float_eq(area, 100.0, 1e-9);
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 x = ori_pattern_vertex(p, v);
+        cr_assert(x.x >= -1e-12 && x.x <= 10 + 1e-12 && x.y <= 1e-12 && x.y >= -10 - 1e-12, "vertex %d (%g, %g)", v, x.x, x.y);
+    }
+    // every boundary edge has the sheet on one side only
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        int fs[2];
+        ori_pattern_edge_faces(p, e, fs);
+        bool border = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_BOUNDARY;
+        cr_assert_eq((fs[0] == ORI_NULL_INDEX) + (fs[1] == ORI_NULL_INDEX), border ? 1 : 0, "edge %d", e);
+    }
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    // The CLI says so in one note, and dof folds it.
+    char args[1024], *out = NULL;
+    snprintf(args, sizeof args, "dof '%s'", path);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "clipped the creases drawn past the border: 6 crease piece(s)"), "%s", out);
+    cr_assert_not(strstr(out, "falls apart"), "%s", out);
+    free(out);
+    // A drawing without a closed border is left alone (nothing is outside of nothing).
+    snprintf(path, sizeof path, "%s/open.svg", dir);
+    f = fopen(path, "w");
+    fprintf(f, "<svg xmlns='http://www.w3.org/2000/svg'><g stroke-width='0.05'>\n"
+               "<polyline points='0,10 0,0 10,0 10,10' stroke='#000'/>\n"
+               "<line x1='0' y1='5' x2='10' y2='5' stroke='#f00'/><line x1='0' y1='10' x2='10' y2='10' stroke='#f00'/>\n"
+               "</g></svg>\n");
+    fclose(f);
+    p = import_ok(path, &stats);
+    cr_assert_eq(stats.clipped, 0);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    ori_pattern_destroy(p);
+    test_tmpdir_remove(dir);
+}
+
+// Origami Simulator's drawings of Lang (creases overshooting the border) fold as one sheet.
+Test(formats, shared_drawings_with_creases_past_the_border_fold_as_one_sheet)
+{
+    static const char *const names[] = {"Origami_langCardinal.svg", "Origami_langKnlDragon.svg",
+                                        "Tessellations_langHoneycomb.svg", "Tessellations_huffmanWaterbomb.svg"};
+    int found = 0;
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i) {
+        char rel[256];
+        snprintf(rel, sizeof rel, "origamisimulator/%s", names[i]);
+        const char *path = test_shared_path(rel);
+        if (!path) continue;
+        found++;
+        char args[1024], *out = NULL;
+        snprintf(args, sizeof args, "dof '%s'", path);
+        int rc = test_run_cli(args, &out);
+        cr_assert_eq(rc, 0, "%s: exit %d: %s", names[i], rc, out);
+        cr_assert(strstr(out, "clipped the creases drawn past the border"), "%s: %s", names[i], out);
+        cr_assert_not(strstr(out, "falls apart"), "%s: %s", names[i], out);
+        free(out);
+    }
+    if (!found) cr_skip("../shared/patterns/origamisimulator is absent");
+}

@@ -71,6 +71,8 @@ typedef struct ori_import_stats {
     double dangling_gap_rel; ///< how far the farthest of them is from another line, × the diagonal (0 when none within ORI_IMPORT_GAP_MAX_REL)
     int parts;               ///< separate pieces of the result (connected components; 1 is one sheet)
     int part_example;        ///< a vertex of a piece other than the one holding vertex 0, ORI_NULL_INDEX when one piece
+    int clipped;             ///< crease edges dropped outside the sheet: drawn past a border (B/C edges) that encloses the rest
+    int clipped_faces;       ///< faces those creases made outside the sheet (dropped with them)
 } ori_import_stats;
 
 /// Read an SVG document (text of size bytes) into segments: stroke colour → assignment, stroke

@@ -492,6 +492,66 @@ static ori_segment *close_gaps(const ori_pattern *p, double gap, int *n, int *cl
     return segs;
 }
 
+// Creases drawn past the border (a drawing's lines overshooting its outline) make faces outside
+// the sheet, joined to it only across the border: the sheet "falls apart" when folded. Faces
+// reached from outside the drawing across creases (not B or C edges) lie outside the sheet;
+// when there are some and they cover less than the rest, the edges with no face of the sheet on
+// either side are dropped. Returns the segments of the rest (NULL when nothing is clipped) with
+// their count in *n, the creases dropped in *clipped and the faces outside in *faces.
+static ori_segment *clip_outside(const ori_pattern *p, int *n, int *clipped, int *faces)
+{
+    *n = *clipped = *faces = 0;
+    int nf = p->face_count, ne = p->edge_count;
+    if (nf == 0) return NULL;
+    char *out = ori__calloc((size_t)nf, 1);
+    int *queue = ori__alloc(sizeof(int) * (size_t)nf);
+    int head = 0, tail = 0;
+    for (int e = 0; e < ne; ++e) {
+        int l = p->edge_faces[2 * e], r = p->edge_faces[2 * e + 1];
+        if (is_cut_or_boundary(p->edges[e].assignment) || (l == ORI_NULL_INDEX) == (r == ORI_NULL_INDEX)) continue;
+        int f = l == ORI_NULL_INDEX ? r : l;
+        if (!out[f]) out[f] = 1, queue[tail++] = f;
+    }
+    while (head < tail) {
+        int f = queue[head++];
+        for (int k = p->face_offsets[f]; k < p->face_offsets[f + 1]; ++k) {
+            int e = p->face_edges[k];
+            if (is_cut_or_boundary(p->edges[e].assignment)) continue;
+            for (int s = 0; s < 2; ++s) {
+                int g = p->edge_faces[2 * e + s];
+                if (g != ORI_NULL_INDEX && !out[g]) out[g] = 1, queue[tail++] = g;
+            }
+        }
+    }
+    double area_out = 0.0, area_in = 0.0;
+    for (int f = 0; f < nf; ++f) {
+        double a = fabs(ori__pattern_face_area2(p, f));
+        if (out[f]) area_out += a;
+        else area_in += a;
+    }
+    ori__free(queue);
+    // (No border drawn, or one that is open: everything is reached, nothing is clipped.)
+    if (tail == 0 || !(area_out < area_in)) {
+        ori__free(out);
+        return NULL;
+    }
+    ori_segment *segs = ori__alloc(sizeof(ori_segment) * (size_t)ne);
+    for (int e = 0; e < ne; ++e) {
+        const ori_edge *ed = &p->edges[e];
+        int l = p->edge_faces[2 * e], r = p->edge_faces[2 * e + 1];
+        bool sheet = (l != ORI_NULL_INDEX && !out[l]) || (r != ORI_NULL_INDEX && !out[r]);
+        if (!sheet) {
+            *clipped += !is_cut_or_boundary(ed->assignment);
+            continue;
+        }
+        ori_segment s = {ori__pattern_v2(p, ed->v[0]), ori__pattern_v2(p, ed->v[1]), ed->assignment, ed->fold_angle_rad};
+        segs[(*n)++] = s;
+    }
+    *faces = tail;
+    ori__free(out);
+    return segs;
+}
+
 // Dangling ends and separate pieces of the result, with examples and how far the dangling ends
 // are from another line (up to ORI_IMPORT_GAP_MAX_REL of the diagonal).
 static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
@@ -574,6 +634,18 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         st = n > 0 ? pipeline(fixed, n, def, weld, &p, error) : ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
         ori__free(fixed);
     }
+    // Creases drawn past the border: clipped at it (the faces outside the sheet are dropped).
+    int clipped = 0, clipped_faces = 0;
+    if (st == ORI_OK) {
+        int n;
+        ori_segment *kept = clip_outside(p, &n, &clipped, &clipped_faces);
+        if (kept) {
+            ori_pattern_destroy(p);
+            p = NULL;
+            st = pipeline(kept, n, def, weld, &p, error);
+            ori__free(kept);
+        }
+    }
     // Every line shorter than the weld (a drawing whose extent comes from a far-away stray line):
     // nothing is left, which is no crease pattern.
     if (st == ORI_OK && p->edge_count == 0)
@@ -591,6 +663,8 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         stats->gap_rel = gap_rel;
         stats->gaps_closed = closed;
         stats->largest_gap_rel = largest / diag;
+        stats->clipped = clipped;
+        stats->clipped_faces = clipped_faces;
         diagnose(p, diag, stats);
     }
     *out = p;
