@@ -1098,3 +1098,61 @@ Test(formats, shared_drawings_with_creases_past_the_border_fold_as_one_sheet)
     }
     if (!found) cr_skip("../shared/patterns/origamisimulator is absent");
 }
+
+// A drawing split by lines that were drawn to meet and miss (Origami Simulator's whirlpool): a
+// square whose middle crease is drawn twice, 0.003 apart, the bottom side in two halves ending on
+// them: the strip between the two is outside the paper, and only the top side joins the halves.
+// The import says the paper is 2 pieces that no crease joins, names a vertex and the smallest
+// weld tolerance that joins them; with it the sheet is one and folds.
+Test(formats, a_sheet_split_by_lines_that_miss_is_reported_with_the_tolerance_that_joins_it)
+{
+    char *dir = test_tmpdir();
+    char path[600];
+    snprintf(path, sizeof path, "%s/split.svg", dir);
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    fprintf(f, "<svg xmlns='http://www.w3.org/2000/svg'><g stroke-width='0.05'>\n"
+               "<line x1='0' y1='0' x2='10' y2='0' stroke='#000'/><line x1='0' y1='10' x2='5' y2='10' stroke='#000'/>\n"
+               "<line x1='5.003' y1='10' x2='10' y2='10' stroke='#000'/>\n"
+               "<line x1='0' y1='0' x2='0' y2='10' stroke='#000'/><line x1='10' y1='0' x2='10' y2='10' stroke='#000'/>\n"
+               "<line x1='5' y1='0' x2='5' y2='10' stroke='#f00'/><line x1='5.003' y1='0' x2='5.003' y2='10' stroke='#f00'/>\n"
+               "</g></svg>\n");
+    fclose(f);
+    ori_import_stats stats;
+    ori_pattern *p = import_ok(path, &stats);
+    cr_assert_eq(stats.parts, 1);
+    cr_assert_eq(stats.sheets, 2);
+    cr_assert_neq(stats.split_vertex, ORI_NULL_INDEX);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    // 0.003 of a diagonal of 14.14 is 2.1e-4: the doublings of 5e-5 join it at 4e-4
+    cr_assert_float_eq(stats.split_tolerance_rel, 4e-4, 1e-15, "%g", stats.split_tolerance_rel);
+    ori_pattern_destroy(p);
+    ori_import_def def = ori_default_import_def();
+    def.weld_rel = stats.split_tolerance_rel;
+    ori_error err;
+    cr_assert_eq(ori_import_file(path, ORI_FORMAT_UNKNOWN, &def, &p, &stats, &err), ORI_OK);
+    cr_assert_eq(stats.sheets, 1);
+    cr_assert_eq(stats.split_vertex, ORI_NULL_INDEX);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 1); // the crease drawn twice is one
+    ori_mechanism_destroy(test_mechanism_of(p));
+    ori_pattern_destroy(p);
+    char args[1024], *out = NULL;
+    snprintf(args, sizeof args, "convert '%s' '%s/split.fold'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "the paper is 2 pieces that no crease joins"), "%s", out);
+    cr_assert(strstr(out, "--tolerance 0.0004 joins them"), "%s", out);
+    free(out);
+    // Origami Simulator's whirlpool: the same, and the tolerance it names folds it.
+    const char *w = test_shared_path("origamisimulator/Tessellations_whirlpool.svg");
+    if (w) {
+        p = import_ok(w, &stats);
+        cr_assert(stats.split_tolerance_rel > 0.0);
+        ori_pattern_destroy(p);
+        def.weld_rel = stats.split_tolerance_rel;
+        cr_assert_eq(ori_import_file(w, ORI_FORMAT_UNKNOWN, &def, &p, &stats, &err), ORI_OK);
+        cr_assert_eq(stats.sheets, 1);
+        ori_mechanism_destroy(test_mechanism_of(p));
+        ori_pattern_destroy(p);
+    }
+    test_tmpdir_remove(dir);
+}

@@ -73,6 +73,9 @@ typedef struct ori_import_stats {
     int part_example;        ///< a vertex of a piece other than the one holding vertex 0, ORI_NULL_INDEX when one piece
     int clipped;             ///< crease edges dropped outside the sheet: drawn past a border (B/C edges) that encloses the rest
     int clipped_faces;       ///< faces those creases made outside the sheet (dropped with them)
+    int sheets;              ///< pieces of paper: faces joined across creases (1 for one sheet)
+    int split_vertex;        ///< a vertex of a piece that is joined to another by lines but by no crease (the sheet is split and falls apart when folded), ORI_NULL_INDEX when none
+    double split_tolerance_rel; ///< ori_import_file: the smallest weld tolerance (a doubling of def's, up to the line width) that joins the split pieces; 0 when none or not split
 } ori_import_stats;
 
 /// Read an SVG document (text of size bytes) into segments: stroke colour → assignment, stroke

@@ -575,6 +575,36 @@ static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
         if (d <= reach) stats->dangling_gap_rel = fmax(stats->dangling_gap_rel, d / diag);
     }
     if (grid) line_grid_free(&g);
+    // Sheets: faces joined across creases. Two sheets in one connected part of the drawing (joined
+    // by boundary or cut lines, at corners or by lines with no paper on either side) are a
+    // drawing split there: lines drawn to meet that miss each other, a border drawn through the
+    // sheet. Folding says it falls apart.
+    int nf = p->face_count;
+    stats->sheets = 0;
+    stats->split_vertex = ORI_NULL_INDEX;
+    if (nf > 0) {
+        int *sheet = ori__alloc(sizeof(int) * (size_t)nf);
+        for (int f = 0; f < nf; ++f) sheet[f] = f;
+        for (int e = 0; e < p->edge_count; ++e) {
+            int l = p->edge_faces[2 * e], r = p->edge_faces[2 * e + 1];
+            if (l == ORI_NULL_INDEX || r == ORI_NULL_INDEX || is_cut_or_boundary(p->edges[e].assignment)) continue;
+            int a = ori__uf_root(sheet, l), b = ori__uf_root(sheet, r);
+            if (a != b) sheet[a < b ? b : a] = a < b ? a : b;
+        }
+        for (int f = 0; f < nf; ++f) stats->sheets += ori__uf_root(sheet, f) == f;
+        // (split: two sheets in one connected part of the drawing)
+        int *comp = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1)), *held = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+        ori__pattern_parts(p, comp);
+        for (int v = 0; v < nv; ++v) held[v] = ORI_NULL_INDEX;
+        for (int f = 0; f < nf && stats->split_vertex == ORI_NULL_INDEX; ++f) {
+            int r = ori__uf_root(sheet, f), v = p->face_vertices[p->face_offsets[f]], c = comp[v];
+            if (held[c] == ORI_NULL_INDEX) held[c] = r;
+            else if (held[c] != r) stats->split_vertex = v;
+        }
+        ori__free(comp);
+        ori__free(held);
+        ori__free(sheet);
+    }
     int *comp = deg; // (reused)
     stats->parts = ori__pattern_parts(p, comp);
     stats->part_example = ORI_NULL_INDEX;
@@ -589,7 +619,7 @@ static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
 // Planarise, close the gaps, check for islands; stats (may be NULL) receives the diagnosis.
 // stroke_width: the drawing's line width in its units (0: unknown).
 static ori_status to_pattern(const ori_segment *segs, int count, const ori_import_def *def, double stroke_width,
-                             ori_pattern **out, ori_import_stats *stats, ori_error *error)
+                             bool suggest, ori_pattern **out, ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(out && count >= 0 && (segs || count == 0));
     *out = NULL;
@@ -666,6 +696,23 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         stats->clipped = clipped;
         stats->clipped_faces = clipped_faces;
         diagnose(p, diag, stats);
+        stats->split_tolerance_rel = 0.0;
+        // Split by boundary lines: lines drawn to meet may miss by more than the weld; find the
+        // smallest doubling of the weld, up to the drawn line width (or 32 times the weld when
+        // the drawing has none), that makes the split sheets one.
+        double reach = fmin(fmax(gap_rel, 32.0 * def->weld_rel), ORI_IMPORT_GAP_MAX_REL);
+        for (double w = 2.0 * def->weld_rel; suggest && stats->split_vertex != ORI_NULL_INDEX && w <= reach; w *= 2.0) {
+            ori_import_def wider = *def;
+            wider.weld_rel = w;
+            ori_import_stats s2;
+            ori_pattern *q = NULL;
+            ori_status st2 = to_pattern(segs, count, &wider, stroke_width, false, &q, &s2, NULL);
+            ori_pattern_destroy(q);
+            if (st2 == ORI_OK && s2.split_vertex == ORI_NULL_INDEX) {
+                stats->split_tolerance_rel = w;
+                break;
+            }
+        }
     }
     *out = p;
     return ORI_OK;
@@ -674,7 +721,7 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
 ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori_import_def *def, ori_pattern **out,
                                    ori_error *error)
 {
-    return to_pattern(segs, count, def, 0.0, out, NULL, error);
+    return to_pattern(segs, count, def, 0.0, false, out, NULL, error);
 }
 
 ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def, ori_pattern **out,
@@ -688,7 +735,7 @@ ori_status ori_import_file(const char *path, ori_format format, const ori_import
     ori_status st = ori_read_segments(path, format, &segs, &n, &found, error);
     if (stats) *stats = found;
     if (st != ORI_OK) return st;
-    st = to_pattern(segs, n, def, found.stroke_width, out, &found, error);
+    st = to_pattern(segs, n, def, found.stroke_width, true, out, &found, error);
     ori__free(segs);
     if (stats) *stats = found;
     return st;
