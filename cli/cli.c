@@ -443,6 +443,9 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
                 cmd, path, s->ignored_elements, s->ignored_colour);
     else if (s->ignored_elements > 0)
         fprintf(stderr, "orikin %s: %s: warning: %d auxiliary or cut-model line(s) skipped\n", cmd, path, s->ignored_elements);
+    if (s->degenerate_aux > 0)
+        fprintf(stderr, "orikin %s: %s: note: %d of them had a coordinate that is not a number (NaN or Infinity)\n", cmd,
+                path, s->degenerate_aux);
     if (s->unsupported_elements > 0)
         fprintf(stderr, "orikin %s: %s: warning: %d element(s) orikin does not read (use, image, text…) skipped\n", cmd,
                 path, s->unsupported_elements);

@@ -1156,3 +1156,53 @@ Test(formats, a_sheet_split_by_lines_that_miss_is_reported_with_the_tolerance_th
     }
     test_tmpdir_remove(dir);
 }
+
+// ORIPA auxiliary lines whose coordinates are no number (XMLEncoder's NaN, Infinity; "nan" in
+// .cp) are skipped and counted, not a reason to refuse the file; a crease with one still fails
+// with its line.
+Test(formats, oripa_auxiliary_lines_with_nan_coordinates_are_skipped)
+{
+    const char *opx = "<java>\n"
+                      "<object class='oripa.OriLineProxy'><void property='type'><int>0</int></void>\n"
+                      "<void property='x0'><double>NaN</double></void><void property='y1'><double>-Infinity</double></void></object>\n"
+                      "<object class='oripa.OriLineProxy'><void property='type'><int>2</int></void>\n"
+                      "<void property='x1'><double>4</double></void><void property='y1'><double>3</double></void></object>\n"
+                      "</java>";
+    ori_segment *s;
+    int n;
+    ori_import_stats stats;
+    ori_error err;
+    cr_assert_eq(ori_opx_read_segments(opx, strlen(opx), &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 1);
+    cr_assert_eq(stats.ignored_elements, 1);
+    cr_assert_eq(stats.degenerate_aux, 1);
+    assert_seg(&s[0], 0, 0, 4, -3, ORI_ASSIGN_MOUNTAIN, -ORI_PI);
+    ori_buffer_free(s);
+    const char *bad = "<java>\n<object class='oripa.OriLineProxy'><void property='type'><int>3</int></void>\n"
+                      "<void property='x0'>\n<double>NaN</double></void></object></java>";
+    cr_assert_eq(ori_opx_read_segments(bad, strlen(bad), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 4);
+    cr_assert(strstr(err.message, "x0 is not a finite number"), "%s", err.message);
+    const char *cp = "1 0 0 10 0\n0 nan 0 NaN 1\n4 -inf 1 2 Infinity\n2 0 0 10 0\n";
+    cr_assert_eq(ori_cp_read_segments(cp, strlen(cp), &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 2);
+    cr_assert_eq(stats.ignored_elements, 2);
+    cr_assert_eq(stats.degenerate_aux, 2);
+    ori_buffer_free(s);
+    const char *badcp = "1 0 0 10 0\n2 0 nan 10 0\n";
+    cr_assert_eq(ori_cp_read_segments(badcp, strlen(badcp), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 2);
+    const char *word = "0 nanny 0 1 1\n";
+    cr_assert_eq(ori_cp_read_segments(word, strlen(word), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    // The CLI notes it once and reads the file.
+    char *dir = test_tmpdir(), path[600], args[1024], *out = NULL;
+    snprintf(path, sizeof path, "%s/aux.cp", dir);
+    FILE *f = fopen(path, "w");
+    fputs("1 0 0 10 0\n1 10 0 10 10\n1 10 10 0 10\n1 0 10 0 0\n2 0 0 10 10\n0 NaN 0 1 1\n", f);
+    fclose(f);
+    snprintf(args, sizeof args, "info '%s'", path);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "note: 1 of them had a coordinate that is not a number"), "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
+}

@@ -62,6 +62,7 @@ typedef struct ori_import_stats {
     int ignored_elements;    ///< SVG elements with a stroke that is no crease colour; ORIPA aux/cut-model lines
     char ignored_colour[32]; ///< SVG: the first such stroke, as written ("" when none)
     int unsupported_elements;///< SVG elements skipped because orikin does not read them (use, image, text…)
+    int degenerate_aux;      ///< ORIPA auxiliary lines with a coordinate that is no number (NaN, Infinity): skipped (also in ignored_elements)
     double stroke_width;     ///< SVG: the median drawn width of the crease lines, in drawing units (0: unknown)
     double gap_rel;          ///< ori_import_file: the gap closed (def gap_rel, resolved), × the diagonal
     int gaps_closed;         ///< dangling crease ends extended onto a line (or overshoots dropped)
