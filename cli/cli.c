@@ -424,6 +424,18 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
         if (!in->import_option) in->import_option = a;
         return 1;
     }
+    if (strcmp(a, "--flatten-curves") == 0) {
+        if (!(v = cli_option_once(cmd, argc, argv, i, seen))) return -CLI_EXIT_USAGE;
+        int n;
+        if (!cli_parse_int(v, &n) || n < 1 || n > ORI_IMPORT_CURVE_SEGMENTS_MAX) {
+            cli_usage(cmd, "--flatten-curves needs a whole number of segments per curve in [1, %d], got '%s'",
+                      ORI_IMPORT_CURVE_SEGMENTS_MAX, v);
+            return -CLI_EXIT_USAGE;
+        }
+        in->import.curve_segments = n;
+        if (!in->import_option) in->import_option = a;
+        return 1;
+    }
     if (strcmp(a, "--keep-collinear") == 0 || strcmp(a, "--keep-holes") == 0) {
         if (a[7] == 'c') in->import.merge_collinear = false;
         else in->import.remove_holes = false;
@@ -434,7 +446,8 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
 }
 
 // What the import of a drawing found, as warnings that say what would fix it.
-static void import_warnings(const char *cmd, const char *path, const ori_pattern *p, const ori_import_stats *s)
+static void import_warnings(const char *cmd, const char *path, const ori_pattern *p, const ori_import_stats *s,
+                            int curve_segments)
 {
     if (s->ignored_elements > 0 && s->ignored_colour[0])
         fprintf(stderr,
@@ -443,6 +456,11 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
                 cmd, path, s->ignored_elements, s->ignored_colour);
     else if (s->ignored_elements > 0)
         fprintf(stderr, "orikin %s: %s: warning: %d auxiliary or cut-model line(s) skipped\n", cmd, path, s->ignored_elements);
+    if (s->flattened_curves > 0)
+        fprintf(stderr,
+                "orikin %s: %s: note: %d curve(s), arc(s) or circle(s) flattened into %d straight crease(s) each "
+                "(--flatten-curves): an approximation of the drawing\n",
+                cmd, path, s->flattened_curves, curve_segments);
     if (s->degenerate_aux > 0)
         fprintf(stderr, "orikin %s: %s: note: %d of them had a coordinate that is not a number (NaN or Infinity)\n", cmd,
                 path, s->degenerate_aux);
@@ -506,7 +524,7 @@ int cli_input_load(const char *cmd, const char *path, cli_input *in, ori_fold **
     if (!in->drawing) return cli_load_pattern(cmd, path, in->frame, in->weld, doc, pattern);
     ori_error err;
     ori_status st = ori_import_file(path, f, &in->import, pattern, &in->stats, &err);
-    if (st == ORI_OK || st == ORI_ERR_NOT_FOUND) import_warnings(cmd, path, *pattern, &in->stats); // (why nothing was found)
+    if (st == ORI_OK || st == ORI_ERR_NOT_FOUND) import_warnings(cmd, path, *pattern, &in->stats, in->import.curve_segments); // (why nothing was found)
     if (st != ORI_OK) return cli_input_error(cmd, path, &err);
     *doc = ori_fold_create();
     ori_fold_set_custom(*doc, 0, "frame_classes", "[\"creasePattern\"]", NULL);

@@ -1206,3 +1206,99 @@ Test(formats, oripa_auxiliary_lines_with_nan_coordinates_are_skipped)
     free(out);
     test_tmpdir_remove(dir);
 }
+
+// Curves are refused unless asked to flatten them: then each cubic, quadratic, arc, circle and
+// rounded corner becomes N straight segments whose ends lie on the curve, joined end to end.
+Test(formats, svg_curves_flatten_into_n_segments_on_the_curve)
+{
+    // A cubic from (0, 0) to (10, 0) (control points (0, 10), (10, 10)) and a relative smooth
+    // cubic after it, a half circle of radius 5 as an arc from (0, 0) to (10, 0) through
+    // (5, -5), a quadratic with its smooth twin, a circle of radius 2 at (20, 20) (SVG frame).
+    const char *svg = "<svg xmlns='http://www.w3.org/2000/svg'>\n"
+                      "<path stroke='#f00' d='M0 0 C 0 10 10 10 10 0 s 10 -10 10 0'/>\n"
+                      "<path stroke='#00f' d='M0 0 A5 5 0 0 1 10 0'/>\n"
+                      "<path stroke='#00f' d='M0 30 Q 5 40 10 30 T 20 30'/>\n"
+                      "<circle stroke='#000' cx='20' cy='20' r='2'/>\n"
+                      "</svg>";
+    ori_segment *s;
+    int n;
+    ori_import_stats stats;
+    ori_error err;
+    cr_assert_eq(ori_svg_read_segments(svg, strlen(svg), &s, &n, NULL, &err), ORI_ERR_UNSUPPORTED);
+    cr_assert(strstr(err.message, "--flatten-curves"), "%s", err.message);
+    cr_assert_eq(err.line, 2);
+    const int k = 8;
+    cr_assert_eq(ori_svg_read_curves(svg, strlen(svg), k, &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 6 * k);
+    cr_assert_eq(stats.flattened_curves, 6);
+    for (int i = 0; i < n; ++i) // joined end to end within each curve
+        if (i % k) cr_assert(s[i].a.x == s[i - 1].b.x && s[i].a.y == s[i - 1].b.y, "segment %d", i);
+    // the first cubic (y flipped): the Bernstein form at t = (i + 1) / k
+    for (int i = 0; i < k; ++i) {
+        double t = (double)(i + 1) / k, u = 1 - t;
+        double x = 3 * u * t * t * 10 + t * t * t * 10, y = -(3 * u * u * t * 10 + 3 * u * t * t * 10);
+        cr_assert_float_eq(s[i].b.x, x, 1e-12, "%d", i);
+        cr_assert_float_eq(s[i].b.y, y, 1e-12, "%d", i);
+        cr_assert_eq(s[i].assignment, ORI_ASSIGN_MOUNTAIN);
+    }
+    cr_assert(s[k - 1].b.x == 10 && s[k - 1].b.y == 0); // the end point exactly
+    // the smooth cubic reflects (10, 10) about (10, 0): its first control point is (10, -10)
+    {
+        double t = 0.5, u = 0.5;
+        double y = 3 * u * u * t * -10 + 3 * u * t * t * -10; // SVG y of the mid point
+        cr_assert_float_eq(s[k + k / 2 - 1].b.y, -y, 1e-12);
+        cr_assert_float_eq(s[2 * k - 1].b.x, 20, 1e-12);
+    }
+    // the arc: every point 5 from (5, 0), sweep 1 in SVG's y-down frame goes through y = -5, i.e. +5 in FOLD
+    for (int i = 2 * k; i < 3 * k; ++i) {
+        cr_assert_float_eq(hypot(s[i].b.x - 5, s[i].b.y), 5, 1e-12, "%d", i);
+        cr_assert(s[i].b.y >= -1e-12, "%d: %g", i, s[i].b.y);
+        cr_assert_eq(s[i].assignment, ORI_ASSIGN_VALLEY);
+    }
+    cr_assert_float_eq(s[2 * k + k / 2 - 1].b.y, 5, 1e-12);
+    // the quadratic: mid point (5, 35) in SVG; the smooth twin mirrors it to (15, 25)
+    cr_assert_float_eq(s[3 * k + k / 2 - 1].b.x, 5, 1e-12);
+    cr_assert_float_eq(s[3 * k + k / 2 - 1].b.y, -35, 1e-12);
+    cr_assert_float_eq(s[4 * k + k / 2 - 1].b.x, 15, 1e-12);
+    cr_assert_float_eq(s[4 * k + k / 2 - 1].b.y, -25, 1e-12);
+    // the circle: a closed polygon on radius 2
+    for (int i = 5 * k; i < 6 * k; ++i) cr_assert_float_eq(hypot(s[i].a.x - 20, s[i].a.y + 20), 2, 1e-12);
+    cr_assert(s[6 * k - 1].b.x == s[5 * k].a.x && s[6 * k - 1].b.y == s[5 * k].a.y);
+    ori_buffer_free(s);
+    // A rounded rectangle: four sides and four corners on their quarter circles.
+    const char *rect = "<svg><rect stroke='#000' x='0' y='0' width='10' height='6' rx='2'/></svg>";
+    cr_assert_eq(ori_svg_read_curves(rect, strlen(rect), 0, &s, &n, NULL, &err), ORI_ERR_UNSUPPORTED);
+    cr_assert_eq(ori_svg_read_curves(rect, strlen(rect), 4, &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 4 + 4 * 4);
+    cr_assert_float_eq(hypot(s[1 + 1].b.x - 8, s[1 + 1].b.y + 2), 2, 1e-12); // the first corner about (8, 2)
+    ori_buffer_free(s);
+    // Through the CLI: a closed curved sheet imports with the option, is refused without it, and
+    // the option's value is checked.
+    char *dir = test_tmpdir(), path[600], args[1200], *out = NULL;
+    snprintf(path, sizeof path, "%s/curved.svg", dir);
+    FILE *f = fopen(path, "w");
+    fputs("<svg xmlns='http://www.w3.org/2000/svg'><rect stroke='#000' width='20' height='10'/>\n"
+          "<path stroke='#f00' d='M10 0 C 4 3 4 7 10 10'/></svg>\n", f);
+    fclose(f);
+    snprintf(args, sizeof args, "info '%s'", path);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert(strstr(out, "line 2") && strstr(out, "--flatten-curves N"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "convert '%s' '%s/c.fold' --flatten-curves 12", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "1 curve(s), arc(s) or circle(s) flattened into 12 straight crease(s) each"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "%s/c.fold", dir);
+    ori_pattern *p = test_load_pattern(args, 0);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 12);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    ori_pattern_destroy(p);
+    snprintf(args, sizeof args, "info '%s' --flatten-curves 0", path);
+    cr_assert_eq(test_run_cli(args, &out), 2, "%s", out);
+    cr_assert(strstr(out, "--flatten-curves"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "info '%s/c.fold' --flatten-curves 4", dir);
+    cr_assert_eq(test_run_cli(args, &out), 2, "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
+}

@@ -45,12 +45,13 @@ ori_import_def ori_default_import_def(void)
     def.gap_rel = ORI_IMPORT_GAP_AUTO;
     def.merge_collinear = true;
     def.remove_holes = true;
+    def.curve_segments = 0;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
 
-ori_status ori_read_segments(const char *path, ori_format format, ori_segment **segments, int *count,
-                             ori_import_stats *stats, ori_error *error)
+static ori_status read_segments(const char *path, ori_format format, int curve_segments, ori_segment **segments,
+                                int *count, ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
@@ -67,11 +68,17 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
     ori_status st = ori_file_read_all(path, ORI_IMPORT_MAX_BYTES, &text, &size, error);
     if (st != ORI_OK) return st;
     if (size == 0) st = ori__fail(error, ORI_ERR_PARSE, "the file is empty");
-    else if (format == ORI_FORMAT_SVG) st = ori_svg_read_segments(text, size, segments, count, stats, error);
+    else if (format == ORI_FORMAT_SVG) st = ori_svg_read_curves(text, size, curve_segments, segments, count, stats, error);
     else if (format == ORI_FORMAT_OPX) st = ori_opx_read_segments(text, size, segments, count, stats, error);
     else st = ori_cp_read_segments(text, size, segments, count, stats, error);
     ori__free(text);
     return st;
+}
+
+ori_status ori_read_segments(const char *path, ori_format format, ori_segment **segments, int *count,
+                             ori_import_stats *stats, ori_error *error)
+{
+    return read_segments(path, format, 0, segments, count, stats, error);
 }
 
 // --- planarisation and clean-up --------------------------------------------------------------
@@ -732,7 +739,7 @@ ori_status ori_import_file(const char *path, ori_format format, const ori_import
     ori_segment *segs;
     int n;
     ori_import_stats found;
-    ori_status st = ori_read_segments(path, format, &segs, &n, &found, error);
+    ori_status st = read_segments(path, format, def ? def->curve_segments : 0, &segs, &n, &found, error);
     if (stats) *stats = found;
     if (st != ORI_OK) return st;
     st = to_pattern(segs, n, def, found.stroke_width, true, out, &found, error);
