@@ -676,3 +676,88 @@ Test(regularize, shared_drawings_keep_their_equal_sectors)
         ori_pattern_destroy(p);
     }
 }
+
+// --- rigid only (issue 21 §2) -----------------------------------------------------------------
+
+// Rigid designs that do not fold flat: --rigid refuses them (a vertex of odd degree cannot
+// satisfy Kawasaki), rigid_only makes them rigidly foldable without Kawasaki. Random single
+// vertices of degree 5 (sectors 40°–100°, three mountains and two valleys) on a pentagon: the
+// rates close to first and second order to 1e-12, no flat check is asked, and vertices barely
+// move (the rates adapt).
+Test(regularize, rigid_only_accepts_rigid_designs_that_do_not_fold_flat)
+{
+    unsigned st = 5;
+    for (int trial = 0; trial < 8; ++trial) {
+        double a[5], sum = 0.0, xy[6][2] = {{0, 0}};
+        for (int k = 0; k < 5; ++k) a[k] = 40.0 + 30.0 * (noise(&st) + 1.0), sum += a[k];
+        double t = 360.0 * noise(&st);
+        for (int k = 0; k < 5; ++k) {
+            xy[k + 1][0] = cos(deg(t)), xy[k + 1][1] = sin(deg(t));
+            t += a[k] * 360.0 / sum;
+        }
+        static const int ev[10][2] = {{1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 1}, {0, 1}, {0, 2}, {0, 3}, {0, 4}, {0, 5}};
+        ori_pattern *p = pattern_of(xy, 6, ev, "BBBBBMVMMV", 10);
+        ori_regularize_def d = ori_default_regularize_def();
+        ori_regularize_result r;
+        ori_pattern *out = NULL;
+        d.rigid = true;
+        cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+        cr_assert_null(out);
+        cr_assert_eq(r.odd_vertex, 0, "trial %d", trial);
+        d.rigid = false;
+        d.rigid_only = true;
+        cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+        cr_assert(r.converged, "trial %d: rigid defect %g", trial, r.rigid_after);
+        cr_assert_not_null(out);
+        cr_assert_eq(r.odd_vertex, ORI_NULL_INDEX);
+        cr_assert_leq(r.rigid_after, 1e-12);
+        cr_assert_eq(r.mode_vertices, 0);
+        cr_assert_leq(r.max_move_rel, 1e-9, "trial %d moved %g", trial, r.max_move_rel);
+        ori_pattern_destroy(out);
+        ori_pattern_destroy(p);
+    }
+    // A pattern without interior vertices (cuts between its creases: a kirigami strip) has
+    // nothing to regularize, rigid or not: converged, no contradiction.
+    static const double kxy[8][2] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {2, 1}, {1, 1}, {0, 1}};
+    static const int kev[9][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 0}, {1, 6}};
+    ori_pattern *k = pattern_of(kxy, 8, kev, "BBBBBCBBM", 9);
+    for (int mode = 0; mode < 3; ++mode) {
+        ori_regularize_def d = ori_default_regularize_def();
+        d.rigid = mode == 1, d.rigid_only = mode == 2;
+        ori_regularize_result r;
+        ori_pattern *out = NULL;
+        cr_assert_eq(ori_regularize(k, &d, &out, &r, NULL), ORI_OK);
+        cr_assert(r.converged && !r.refused, "mode %d", mode);
+        cr_assert_not_null(out);
+        cr_assert_eq(r.moved_vertices, 0);
+        ori_pattern_destroy(out);
+    }
+    ori_pattern_destroy(k);
+}
+
+// Origami Simulator's Resch tessellation (degree-6 vertices of three mountains and three
+// valleys: rigid, never flat) and anti-symmetric 6-point hypar: --rigid-only regularizes them;
+// --rigid refuses the Resch pattern now that the full check runs (it was called flat-foldable).
+Test(regularize, shared_rigid_designs_with_rigid_only)
+{
+    static const char *const names[2] = {"origamisimulator/Tessellations_reschTriTessellation.svg",
+                                         "origamisimulator/Origami_6ptHypar-anti.svg"};
+    for (int k = 0; k < 2; ++k) {
+        const char *path = test_shared_path(names[k]);
+        if (!path) cr_skip("../shared is absent");
+        char args[1024], *out = NULL;
+        snprintf(args, sizeof args, "regularize '%s' --rigid-only", path);
+        cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+        cr_assert(strstr(out, "flat-foldability not required"), "%s", out);
+        free(out);
+        if (k == 0) {
+            snprintf(args, sizeof args, "regularize '%s' --rigid", path);
+            cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+            cr_assert(strstr(out, "is not flat-foldable (maekawa)"), "%s", out);
+            free(out);
+        }
+    }
+    char *out = NULL;
+    cr_assert_eq(test_run_cli("regularize tests/data/rounded-miura.fold --rigid --rigid-only", &out), 2, "%s", out);
+    free(out);
+}
