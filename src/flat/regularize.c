@@ -985,6 +985,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
             res->converged = false; // Kawasaki holds, the full check does not (check_*: why)
             ori_pattern_destroy(q);
             q = NULL;
+            if (res->check_rule == ORI_FLAT_RULE_MAEKAWA) break; // (the assignment's, no geometry helps)
         }
         if (res->odd_vertex != ORI_NULL_INDEX) break; // (no tie helps a vertex of odd degree)
     }
