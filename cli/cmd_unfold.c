@@ -138,6 +138,8 @@ static ori_pattern *planar_crease_pattern(const ori_pattern *p, ori_v3 *normal)
         return NULL;
     }
     for (int i = 0; i < 3; ++i) n[i] /= len;
+    for (int i = 0; i < 3; ++i) // (rounding of a sheet in a coordinate plane: exactly that plane)
+        if (fabs(n[i]) < 1e-15) n[i] = 0.0;
     // u: the coordinate axis closest to the plane, projected into it; v = n × u
     int ax = fabs(n[0]) <= fabs(n[1]) && fabs(n[0]) <= fabs(n[2]) ? 0 : fabs(n[1]) <= fabs(n[2]) ? 1 : 2;
     double u[3] = {0, 0, 0}, v[3];
@@ -289,16 +291,25 @@ static int run(int argc, char **argv)
     def.progress = cli_deadline_fn, def.progress_user = &deadline;
     ori_error err;
     ori_error_clear(&err);
-    if (!cut && !def.all && ori_format_from_path(path) == ORI_FORMAT_FOLD) {
+    if (ori_format_from_path(path) == ORI_FORMAT_FOLD) {
+        // (quietly: a file the pattern reader refuses is the mesh reader's to judge below)
         ori_fold *doc = NULL;
         ori_pattern *p = NULL;
-        int lrc = cli_load_pattern(CMD, path, 0, false, &doc, &p);
-        if (lrc != CLI_EXIT_OK) return lrc;
         ori_v3 n;
-        ori_pattern *cp = planar_crease_pattern(p, &n);
+        ori_pattern *cp = NULL;
+        if (ori_fold_load_file(path, &doc, NULL) == ORI_OK && ori_fold_get_pattern(doc, 0, NULL, &p, NULL) == ORI_OK)
+            cp = planar_crease_pattern(p, &n);
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
-        if (cp) {
+        if (cp && (cut || def.all)) { // asked for a net: said, not silently merged away
+            fprintf(stderr,
+                    "orikin %s: %s: note: the folded form is planar, a crease pattern of %d creases: %s merges its "
+                    "coplanar faces, and the net has none of them (without it unfold keeps them)\n",
+                    CMD, path, ori_pattern_edge_count(cp) - ori_pattern_count_assignment(cp, ORI_ASSIGN_BOUNDARY) -
+                                   ori_pattern_count_assignment(cp, ORI_ASSIGN_CUT),
+                    cut ? "--cut" : "--all");
+            ori_pattern_destroy(cp);
+        } else if (cp) {
             int prc = planar_answer(path, cp, n, out, svg, json);
             ori_pattern_destroy(cp);
             return prc;

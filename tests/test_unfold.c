@@ -446,6 +446,13 @@ Test(unfold, a_planar_folded_form_is_its_own_crease_pattern, .init = test_leak_s
             }
         }
         ori_pattern_destroy(p);
+        if (trial == 0) { // a net asked for: the creases it cannot keep are said
+            snprintf(args, sizeof args, "unfold '%s' --cut", in);
+            cr_assert_eq(test_run_cli(args, &output), 0, "%s", output);
+            cr_assert(strstr(output, "note: the folded form is planar, a crease pattern of 12 creases: --cut merges"),
+                      "%s", output);
+            free(output);
+        }
     }
     // A form folded flat (a column turned over onto the next) is no crease pattern: not claimed.
     double id[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
