@@ -483,12 +483,13 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
         ori_v3 x = ori_pattern_vertex(p, s->split_vertex);
         fprintf(stderr,
                 "orikin %s: %s: warning: the paper is %d pieces that no crease joins (vertex %d at (%g, %g) is on one "
-                "that only boundary lines or corners join to the rest): the sheet falls apart when folded",
+                "that only boundary or cut lines or corners join to the rest): the sheet falls apart when folded",
                 cmd, path, s->sheets, s->split_vertex, x.x, x.y);
         if (s->split_tolerance_rel > 0.0)
             fprintf(stderr, "; lines drawn to meet miss each other: --tolerance %g joins them\n", s->split_tolerance_rel);
         else
-            fprintf(stderr, "; draw it as a crease, or as a cut (green) if the paper is cut there\n");
+            fprintf(stderr, "; where the paper should hang together, draw a crease (boundary and cut lines separate "
+                            "it)\n");
     }
     if (s->dangling > 0) {
         ori_v3 x = ori_pattern_vertex(p, s->dangling_example);
