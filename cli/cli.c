@@ -408,6 +408,7 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
             cli_usage(cmd, "--tolerance needs a number in (0, 1) (a fraction of the drawing's size), got '%s'", v);
             return -CLI_EXIT_USAGE;
         }
+        in->import.heal_splits = false; // (the tolerance asked for is the one used)
         if (!in->import_option) in->import_option = a;
         return 1;
     }
@@ -479,6 +480,13 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
                 "orikin %s: %s: note: clipped the creases drawn past the border: %d crease piece(s) outside the sheet "
                 "dropped (%d face(s))\n",
                 cmd, path, s->clipped, s->clipped_faces);
+    if (s->healed_weld_rel > 0.0)
+        fprintf(stderr,
+                "orikin %s: %s: note: lines drawn to meet missed each other and left the paper in %d pieces that no "
+                "crease joined: welded points within %.2g of the drawing's size instead of %.2g (closer than the width "
+                "its lines are drawn with, %.3g): --tolerance %.2g keeps them apart\n",
+                cmd, path, s->healed_sheets, s->healed_weld_rel, ORI_TOL_IMPORT_WELD_REL, s->stroke_width,
+                ORI_TOL_IMPORT_WELD_REL);
     if (s->split_vertex != ORI_NULL_INDEX) {
         ori_v3 x = ori_pattern_vertex(p, s->split_vertex);
         fprintf(stderr,

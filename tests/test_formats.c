@@ -1076,11 +1076,13 @@ Test(formats, creases_drawn_past_the_border_are_clipped)
     test_tmpdir_remove(dir);
 }
 
-// Origami Simulator's drawings of Lang (creases overshooting the border) fold as one sheet.
+// Origami Simulator's drawings of Lang (creases overshooting the border), Huffman's waterbomb and
+// the whirlpool fold as one sheet.
 Test(formats, shared_drawings_with_creases_past_the_border_fold_as_one_sheet)
 {
     static const char *const names[] = {"Origami_langCardinal.svg", "Origami_langKnlDragon.svg",
-                                        "Tessellations_langHoneycomb.svg", "Tessellations_huffmanWaterbomb.svg"};
+                                        "Tessellations_langHoneycomb.svg", "Tessellations_huffmanWaterbomb.svg",
+                                        "Tessellations_whirlpool.svg"};
     int found = 0;
     for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i) {
         char rel[256];
@@ -1092,7 +1094,9 @@ Test(formats, shared_drawings_with_creases_past_the_border_fold_as_one_sheet)
         snprintf(args, sizeof args, "dof '%s'", path);
         int rc = test_run_cli(args, &out);
         cr_assert_eq(rc, 0, "%s: exit %d: %s", names[i], rc, out);
-        cr_assert(strstr(out, "clipped the creases drawn past the border"), "%s: %s", names[i], out);
+        // (the whirlpool's lines miss each other: healed within their width, not clipped)
+        cr_assert(strstr(out, i == 4 ? "lines drawn to meet missed each other" : "clipped the creases drawn past the border"),
+                  "%s: %s", names[i], out);
         cr_assert_not(strstr(out, "falls apart"), "%s: %s", names[i], out);
         free(out);
     }
@@ -1102,8 +1106,10 @@ Test(formats, shared_drawings_with_creases_past_the_border_fold_as_one_sheet)
 // A drawing split by lines that were drawn to meet and miss (Origami Simulator's whirlpool): a
 // square whose middle crease is drawn twice, 0.003 apart, the bottom side in two halves ending on
 // them: the strip between the two is outside the paper, and only the top side joins the halves.
-// The import says the paper is 2 pieces that no crease joins, names a vertex and the smallest
-// weld tolerance that joins them; with it the sheet is one and folds.
+// Within the drawn line width (0.05) the lines touch on the page: by default the import welds
+// with the smallest doubling of the tolerance that joins the pieces (4e-4: 0.003 of a diagonal
+// of 14.14 is 2.1e-4) and says so; with heal_splits off (an explicit --tolerance) it says the
+// paper is 2 pieces that no crease joins, names a vertex and that tolerance.
 Test(formats, a_sheet_split_by_lines_that_miss_is_reported_with_the_tolerance_that_joins_it)
 {
     char *dir = test_tmpdir();
@@ -1120,40 +1126,43 @@ Test(formats, a_sheet_split_by_lines_that_miss_is_reported_with_the_tolerance_th
     fclose(f);
     ori_import_stats stats;
     ori_pattern *p = import_ok(path, &stats);
-    cr_assert_eq(stats.parts, 1);
-    cr_assert_eq(stats.sheets, 2);
-    cr_assert_neq(stats.split_vertex, ORI_NULL_INDEX);
-    cr_assert_eq(ori_pattern_face_count(p), 2);
-    // 0.003 of a diagonal of 14.14 is 2.1e-4: the doublings of 5e-5 join it at 4e-4
-    cr_assert_float_eq(stats.split_tolerance_rel, 4e-4, 1e-15, "%g", stats.split_tolerance_rel);
-    ori_pattern_destroy(p);
-    ori_import_def def = ori_default_import_def();
-    def.weld_rel = stats.split_tolerance_rel;
-    ori_error err;
-    cr_assert_eq(ori_import_file(path, ORI_FORMAT_UNKNOWN, &def, &p, &stats, &err), ORI_OK);
+    cr_assert_float_eq(stats.healed_weld_rel, 4e-4, 1e-15, "%g", stats.healed_weld_rel);
+    cr_assert_eq(stats.healed_sheets, 2);
     cr_assert_eq(stats.sheets, 1);
     cr_assert_eq(stats.split_vertex, ORI_NULL_INDEX);
     cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 1); // the crease drawn twice is one
     ori_mechanism_destroy(test_mechanism_of(p));
     ori_pattern_destroy(p);
+    ori_import_def def = ori_default_import_def();
+    def.heal_splits = false;
+    ori_error err;
+    cr_assert_eq(ori_import_file(path, ORI_FORMAT_UNKNOWN, &def, &p, &stats, &err), ORI_OK);
+    cr_assert_eq(stats.parts, 1);
+    cr_assert_eq(stats.sheets, 2);
+    cr_assert_eq(stats.healed_weld_rel, 0.0);
+    cr_assert_neq(stats.split_vertex, ORI_NULL_INDEX);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    cr_assert_float_eq(stats.split_tolerance_rel, 4e-4, 1e-15, "%g", stats.split_tolerance_rel);
+    ori_pattern_destroy(p);
     char args[1024], *out = NULL;
     snprintf(args, sizeof args, "convert '%s' '%s/split.fold'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "note: lines drawn to meet missed each other and left the paper in 2 pieces"), "%s", out);
+    cr_assert(strstr(out, "--tolerance 5e-05 keeps them apart"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "convert '%s' '%s/split.fold' --tolerance 5e-5", path, dir);
     cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
     cr_assert(strstr(out, "the paper is 2 pieces that no crease joins"), "%s", out);
     cr_assert(strstr(out, "--tolerance 0.0004 joins them"), "%s", out);
     free(out);
-    // Origami Simulator's whirlpool: the same, and the tolerance it names folds it.
-    const char *w = test_shared_path("origamisimulator/Tessellations_whirlpool.svg");
-    if (w) {
-        p = import_ok(w, &stats);
-        cr_assert(stats.split_tolerance_rel > 0.0);
-        ori_pattern_destroy(p);
-        def.weld_rel = stats.split_tolerance_rel;
-        cr_assert_eq(ori_import_file(w, ORI_FORMAT_UNKNOWN, &def, &p, &stats, &err), ORI_OK);
-        cr_assert_eq(stats.sheets, 1);
-        ori_mechanism_destroy(test_mechanism_of(p));
-        ori_pattern_destroy(p);
-    }
+    // Segments without a line width (ori_segments_to_pattern, as a .cp has none) are not healed.
+    ori_segment *segs;
+    int n;
+    cr_assert_eq(ori_read_segments(path, ORI_FORMAT_UNKNOWN, &segs, &n, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_segments_to_pattern(segs, n, NULL, &p, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 2);
+    ori_pattern_destroy(p);
+    ori_buffer_free(segs);
     test_tmpdir_remove(dir);
 }
 

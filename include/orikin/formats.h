@@ -48,12 +48,13 @@ typedef struct ori_import_def {
     double gap_rel;        ///< a crease end touching nothing (dangling) within gap_rel × the diagonal of another line is extended onto it (a dangling piece shorter than that, an overshoot, is dropped); 0 = off, at most ORI_IMPORT_GAP_MAX_REL; default ORI_IMPORT_GAP_AUTO: the drawing's line width where the reader knows it (SVG stroke-width: lines that touch on the page are joined; capped to ORI_IMPORT_GAP_MAX_REL), else off
     bool merge_collinear;  ///< remove vertices joining just two collinear edges of the same assignment and angle (drawing artefacts); default true
     bool remove_holes;     ///< drop faces bounded only by B/C edges that have paper on their other side (holes); default true
+    bool heal_splits;      ///< when the paper comes out in pieces that lines drawn to meet keep apart (ori_import_stats split_vertex), import again with the smallest doubling of weld_rel up to the drawn line width that joins them (healed_weld_rel); default true (give false with an explicit tolerance)
     int curve_segments;    ///< SVG curves, arcs, circles, ellipses in crease colours: 0 (default) refuses them (a crease is straight); N > 0 flattens each into N straight creases (at most ORI_IMPORT_CURVE_SEGMENTS_MAX), to view and check a curved-crease drawing
     int internal_value;    ///< set by ori_default_import_def; do not change
 } ori_import_def;
 
 /// Defaults: weld ORI_TOL_IMPORT_WELD_REL, gaps up to the line width closed, merge collinear,
-/// remove holes.
+/// remove holes, split sheets healed within the line width, curves refused.
 ORI_API ori_import_def ori_default_import_def(void);
 
 /// What a reader found besides its segments, and (ori_import_file) what planarising them gave:
@@ -78,6 +79,8 @@ typedef struct ori_import_stats {
     int clipped_faces;       ///< faces those creases made outside the sheet (dropped with them)
     int sheets;              ///< pieces of paper: faces joined across creases (1 for one sheet)
     int split_vertex;        ///< a vertex of a piece that is joined to another by lines but by no crease (the sheet is split and falls apart when folded), ORI_NULL_INDEX when none
+    double healed_weld_rel;  ///< the weld tolerance the import used instead of def's to join a split sheet (def heal_splits; within the drawn line width), 0 when not
+    int healed_sheets;       ///< the pieces the paper was in before (when healed)
     double split_tolerance_rel; ///< ori_import_file: the smallest weld tolerance (a doubling of def's, up to the line width) that joins the split pieces; 0 when none or not split
 } ori_import_stats;
 

@@ -46,6 +46,7 @@ ori_import_def ori_default_import_def(void)
     def.merge_collinear = true;
     def.remove_holes = true;
     def.curve_segments = 0;
+    def.heal_splits = true;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
@@ -623,6 +624,23 @@ static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
     ori__free(deg);
 }
 
+// The fields of stats that planarisation sets (not the reader's), from src.
+static void copy_planarised(ori_import_stats *dst, const ori_import_stats *src)
+{
+    dst->gap_rel = src->gap_rel;
+    dst->gaps_closed = src->gaps_closed;
+    dst->largest_gap_rel = src->largest_gap_rel;
+    dst->dangling = src->dangling;
+    dst->dangling_example = src->dangling_example;
+    dst->dangling_gap_rel = src->dangling_gap_rel;
+    dst->parts = src->parts;
+    dst->part_example = src->part_example;
+    dst->clipped = src->clipped;
+    dst->clipped_faces = src->clipped_faces;
+    dst->sheets = src->sheets;
+    dst->split_vertex = src->split_vertex;
+}
+
 // Planarise, close the gaps, check for islands; stats (may be NULL) receives the diagnosis.
 // stroke_width: the drawing's line width in its units (0: unknown).
 static ori_status to_pattern(const ori_segment *segs, int count, const ori_import_def *def, double stroke_width,
@@ -704,6 +722,8 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         stats->clipped_faces = clipped_faces;
         diagnose(p, diag, stats);
         stats->split_tolerance_rel = 0.0;
+        stats->healed_weld_rel = 0.0;
+        stats->healed_sheets = 0;
         // Split by boundary lines: lines drawn to meet may miss by more than the weld; find the
         // smallest doubling of the weld, up to the drawn line width (or 32 times the weld when
         // the drawing has none), that makes the split sheets one.
@@ -714,11 +734,22 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
             ori_import_stats s2;
             ori_pattern *q = NULL;
             ori_status st2 = to_pattern(segs, count, &wider, stroke_width, false, &q, &s2, NULL);
-            ori_pattern_destroy(q);
             if (st2 == ORI_OK && s2.split_vertex == ORI_NULL_INDEX) {
                 stats->split_tolerance_rel = w;
+                // Within the drawn line width the lines touch on the page: joined, as gaps are.
+                if (def->heal_splits && w <= gap_rel) {
+                    int sheets = stats->sheets;
+                    copy_planarised(stats, &s2);
+                    stats->healed_weld_rel = w;
+                    stats->healed_sheets = sheets;
+                    ori_pattern_destroy(p);
+                    p = q;
+                    q = NULL;
+                }
+                ori_pattern_destroy(q);
                 break;
             }
+            ori_pattern_destroy(q);
         }
     }
     *out = p;
