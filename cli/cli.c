@@ -408,6 +408,7 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
             cli_usage(cmd, "--tolerance needs a number in (0, 1) (a fraction of the drawing's size), got '%s'", v);
             return -CLI_EXIT_USAGE;
         }
+        in->import.heal_splits = false; // (the tolerance asked for is the one used)
         if (!in->import_option) in->import_option = a;
         return 1;
     }
@@ -424,6 +425,18 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
         if (!in->import_option) in->import_option = a;
         return 1;
     }
+    if (strcmp(a, "--flatten-curves") == 0) {
+        if (!(v = cli_option_once(cmd, argc, argv, i, seen))) return -CLI_EXIT_USAGE;
+        int n;
+        if (!cli_parse_int(v, &n) || n < 1 || n > ORI_IMPORT_CURVE_SEGMENTS_MAX) {
+            cli_usage(cmd, "--flatten-curves needs a whole number of segments per curve in [1, %d], got '%s'",
+                      ORI_IMPORT_CURVE_SEGMENTS_MAX, v);
+            return -CLI_EXIT_USAGE;
+        }
+        in->import.curve_segments = n;
+        if (!in->import_option) in->import_option = a;
+        return 1;
+    }
     if (strcmp(a, "--keep-collinear") == 0 || strcmp(a, "--keep-holes") == 0) {
         if (a[7] == 'c') in->import.merge_collinear = false;
         else in->import.remove_holes = false;
@@ -434,7 +447,8 @@ int cli_input_option(const char *cmd, int argc, char **argv, int *i, cli_input *
 }
 
 // What the import of a drawing found, as warnings that say what would fix it.
-static void import_warnings(const char *cmd, const char *path, const ori_pattern *p, const ori_import_stats *s)
+static void import_warnings(const char *cmd, const char *path, const ori_pattern *p, const ori_import_stats *s,
+                            int curve_segments)
 {
     if (s->ignored_elements > 0 && s->ignored_colour[0])
         fprintf(stderr,
@@ -443,6 +457,14 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
                 cmd, path, s->ignored_elements, s->ignored_colour);
     else if (s->ignored_elements > 0)
         fprintf(stderr, "orikin %s: %s: warning: %d auxiliary or cut-model line(s) skipped\n", cmd, path, s->ignored_elements);
+    if (s->flattened_curves > 0)
+        fprintf(stderr,
+                "orikin %s: %s: note: %d curve(s), arc(s) or circle(s) flattened into %d straight crease(s) each "
+                "(--flatten-curves): an approximation of the drawing\n",
+                cmd, path, s->flattened_curves, curve_segments);
+    if (s->degenerate_aux > 0)
+        fprintf(stderr, "orikin %s: %s: note: %d of them had a coordinate that is not a number (NaN or Infinity)\n", cmd,
+                path, s->degenerate_aux);
     if (s->unsupported_elements > 0)
         fprintf(stderr, "orikin %s: %s: warning: %d element(s) orikin does not read (use, image, text…) skipped\n", cmd,
                 path, s->unsupported_elements);
@@ -453,6 +475,30 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
                 "size (%.3g), within the width its lines are drawn with (%.3g): --gaps 0 keeps them apart\n",
                 cmd, path, s->gaps_closed, s->largest_gap_rel, s->largest_gap_rel / s->gap_rel * s->stroke_width,
                 s->stroke_width);
+    if (s->clipped > 0)
+        fprintf(stderr,
+                "orikin %s: %s: note: clipped the creases drawn past the border: %d crease piece(s) outside the sheet "
+                "dropped (%d face(s))\n",
+                cmd, path, s->clipped, s->clipped_faces);
+    if (s->healed_weld_rel > 0.0)
+        fprintf(stderr,
+                "orikin %s: %s: note: lines drawn to meet missed each other and left the paper in %d pieces that no "
+                "crease joined: welded points within %.2g of the drawing's size instead of %.2g (closer than the width "
+                "its lines are drawn with, %.3g): --tolerance %.2g keeps them apart\n",
+                cmd, path, s->healed_sheets, s->healed_weld_rel, ORI_TOL_IMPORT_WELD_REL, s->stroke_width,
+                ORI_TOL_IMPORT_WELD_REL);
+    if (s->split_vertex != ORI_NULL_INDEX) {
+        ori_v3 x = ori_pattern_vertex(p, s->split_vertex);
+        fprintf(stderr,
+                "orikin %s: %s: warning: the paper is %d pieces that no crease joins (vertex %d at (%g, %g) is on one "
+                "that only boundary or cut lines or corners join to the rest): the sheet falls apart when folded",
+                cmd, path, s->sheets, s->split_vertex, x.x, x.y);
+        if (s->split_tolerance_rel > 0.0)
+            fprintf(stderr, "; lines drawn to meet miss each other: --tolerance %g joins them\n", s->split_tolerance_rel);
+        else
+            fprintf(stderr, "; where the paper should hang together, draw a crease (boundary and cut lines separate "
+                            "it)\n");
+    }
     if (s->dangling > 0) {
         ori_v3 x = ori_pattern_vertex(p, s->dangling_example);
         fprintf(stderr, "orikin %s: %s: warning: %d crease end(s) touch nothing (e.g. vertex %d at (%g, %g))", cmd, path,
@@ -487,7 +533,7 @@ int cli_input_load(const char *cmd, const char *path, cli_input *in, ori_fold **
     if (!in->drawing) return cli_load_pattern(cmd, path, in->frame, in->weld, doc, pattern);
     ori_error err;
     ori_status st = ori_import_file(path, f, &in->import, pattern, &in->stats, &err);
-    if (st == ORI_OK || st == ORI_ERR_NOT_FOUND) import_warnings(cmd, path, *pattern, &in->stats); // (why nothing was found)
+    if (st == ORI_OK || st == ORI_ERR_NOT_FOUND) import_warnings(cmd, path, *pattern, &in->stats, in->import.curve_segments); // (why nothing was found)
     if (st != ORI_OK) return cli_input_error(cmd, path, &err);
     *doc = ori_fold_create();
     ori_fold_set_custom(*doc, 0, "frame_classes", "[\"creasePattern\"]", NULL);

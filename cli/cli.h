@@ -107,8 +107,8 @@ int cli_find_face_option(const char *cmd, const char *file, const ori_pattern *p
 // --- reading a pattern: FOLD, SVG, OPX and CP, one set of options -----------------------------
 
 // The input options of every command that reads a pattern (CLI_INPUT_HELP lists them):
-// --frame N and --weld (FOLD), --tolerance REL, --gaps REL, --keep-collinear and --keep-holes
-// (drawings). Initialise with cli_input_init.
+// --frame N and --weld (FOLD), --tolerance REL, --gaps REL, --flatten-curves N, --keep-collinear
+// and --keep-holes (drawings). Initialise with cli_input_init.
 typedef struct cli_input {
     int frame;
     bool frame_given, weld;
@@ -140,6 +140,9 @@ int cli_input_load(const char *cmd, const char *path, cli_input *in, ori_fold **
 #define CLI_INPUT_HELP_DRAWING                                                                             \
     "  --gaps REL|auto    drawing input: join crease ends within REL x the drawing's size of another\n"   \
     "                     line (auto, the default: the width the lines are drawn with; 0: off)\n"        \
+    "  --flatten-curves N SVG input: draw each curve, arc, circle or ellipse in a crease colour as N\n"   \
+    "                     straight creases (an approximation, to view and check curved-crease\n"         \
+    "                     drawings; default: refused, a crease is straight)\n"                           \
     "  --keep-collinear   drawing input: keep vertices that only join two collinear edges\n"             \
     "  --keep-holes       drawing input: keep faces bounded only by boundary lines (holes)\n"
 

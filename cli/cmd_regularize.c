@@ -13,7 +13,7 @@ static double deg(double rad) { return ori_rad_to_deg_output(rad); }
 static int run(int argc, char **argv)
 {
     const char *cmd = "regularize", *path = NULL, *out = NULL;
-    bool json = false, rigid = false;
+    bool json = false, rigid = false, rigid_only = false;
     ori_regularize_def def = ori_default_regularize_def();
     cli_input in;
     cli_input_init(&in);
@@ -25,6 +25,7 @@ static int run(int argc, char **argv)
         if (r > 0) continue;
         if (strcmp(o, "--json") == 0) json = true;
         else if (strcmp(o, "--rigid") == 0) rigid = true;
+        else if (strcmp(o, "--rigid-only") == 0) rigid_only = true;
         else if (strcmp(o, "-o") == 0) {
             if (!(out = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
         } else if (strcmp(o, "--max-move") == 0) {
@@ -41,7 +42,10 @@ static int run(int argc, char **argv)
         }
     }
     if (!path) return cli_usage(cmd, "missing FILE");
+    if (rigid && rigid_only) return cli_usage(cmd, "--rigid and --rigid-only exclude each other (--rigid-only: without Kawasaki)");
     def.rigid = rigid;
+    def.rigid_only = rigid_only;
+    rigid = rigid || rigid_only;
     ori_fold *doc;
     ori_pattern *p;
     int rc = cli_input_load(cmd, path, &in, &doc, &p);
@@ -83,6 +87,10 @@ static int run(int argc, char **argv)
                  "crease %d folds against its assignment in the only motion its degree-4 vertices allow (the "
                  "assignment does not fit the geometry)",
                  r.against_edge);
+        why = buf;
+    } else if (!rigid_only && !r.flat_foldable && r.check_vertex != ORI_NULL_INDEX) {
+        snprintf(buf, sizeof buf, "Kawasaki holds after the moves, but vertex %d is not flat-foldable (%s): %s",
+                 r.check_vertex, ori_flat_rule_name((ori_flat_rule)r.check_rule), r.check_detail);
         why = buf;
     } else if (!r.converged) {
         if (rigid)
@@ -126,14 +134,29 @@ static int run(int argc, char **argv)
         json_object_set_new(o, "mode_vertices", rigid ? json_integer(r.mode_vertices) : json_null());
         json_object_set_new(o, "against_edge",
                             r.against_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.against_edge));
+        json_object_set_new(o, "rigid_only", json_boolean(rigid_only));
+        json_object_set_new(o, "equal_tolerance_deg", json_real(deg(r.equal_tolerance_rad)));
+        json_object_set_new(o, "ties", json_integer(r.ties));
+        json_object_set_new(o, "parallels_kept", json_boolean(r.parallels_kept));
+        json_object_set_new(o, "sides_moved", json_boolean(r.sides_moved));
+        json_object_set_new(o, "flat_foldable", rigid_only ? json_null() : json_boolean(r.flat_foldable));
+        json_object_set_new(o, "check_vertex", r.check_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.check_vertex));
         json_object_set_new(o, "output", ok && out ? json_string(out) : json_null());
         cli_print_json(o);
         printf("\n");
     } else {
         printf("regularize %s: %d interior vertices, %d unknowns, %d equations, %d iterations\n", path,
                r.interior_vertices, r.unknowns, r.equations, r.iterations);
-        printf("  Kawasaki: largest miss %.3g deg before, %.3g deg after\n", deg(r.kawasaki_before_rad),
-               deg(r.kawasaki_after_rad));
+        if (rigid_only)
+            printf("  Kawasaki: not required (--rigid-only); largest miss %.3g deg\n", deg(r.kawasaki_before_rad));
+        else
+            printf("  Kawasaki: largest miss %.3g deg before, %.3g deg after\n", deg(r.kawasaki_before_rad),
+                   deg(r.kawasaki_after_rad));
+        if (r.ties > 0)
+            printf("  kept %d equalities of the drawing exactly (equal sectors, straight lines%s) within its precision, "
+                   "%.3g deg%s\n",
+                   r.ties, r.parallels_kept ? ", parallel edges" : "", deg(r.equal_tolerance_rad),
+                   r.sides_moved ? "; its corners and sides moved too (they missed them by that much)" : "");
         if (rigid)
             printf("  rigid: %d degree-4 vertices in their assigned mode, %d to second order; defect %.3g before, "
                    "%.3g after\n",
@@ -141,15 +164,27 @@ static int run(int argc, char **argv)
         if (r.max_move_vertex != ORI_NULL_INDEX)
             printf("  moved %d vertices: largest %.3g of the sheet size (vertex %d), RMS %.3g\n", r.moved_vertices,
                    r.max_move_rel, r.max_move_vertex, r.rms_move_rel);
-        else
+        else if (ok)
             printf("  no vertex moved: the pattern is exact already\n");
+        else
+            printf("  no vertex moved\n");
         // Every interior vertex in its assigned mode: the rates are a finite motion (see
         // docs/verification.md); otherwise the certificate is second order.
-        const char *kind = !rigid ? "flat-foldable (Kawasaki exact)"
+        const char *kind = rigid && r.interior_vertices == 0
+                               ? "no interior vertex constrains the fold rates: rigidly foldable as far as vertices "
+                                 "tell (loops of faces around holes and cuts are fold's to check)"
+                           : !rigid ? "flat-foldable (Kawasaki exact)"
+                           : rigid_only && r.mode_vertices == r.interior_vertices
+                               ? "rigidly foldable along the assignment (every vertex of degree 4 in its assigned mode); "
+                                 "flat-foldability not required"
+                           : rigid_only ? "rigidly foldable to second order; flat-foldability not required"
                            : r.mode_vertices == r.interior_vertices
                                ? "rigidly foldable along the assignment (every vertex of degree 4 in its assigned mode), "
                                  "flat-foldable"
                                : "rigidly foldable to second order, flat-foldable";
+        if (!rigid_only && r.flat_foldable)
+            printf("  full local check of the result: every interior vertex passes (Kawasaki, Maekawa, "
+                   "big-little-big, the assignment)\n");
         if (!ok && why) printf("verdict: refused: %s\n", why);
         else if (out) printf("verdict: %s; written to %s\n", kind, out);
         else printf("verdict: %s (dry run: give -o OUT to write it)\n", kind);
@@ -163,7 +198,8 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_regularize = {
     "regularize",
     "move vertices the least so that a rounded drawing is exactly flat- (and rigidly) foldable",
-    "usage: orikin regularize FILE [-o OUT] [--rigid] [--max-move REL] [--json] [input options]\n"
+    "usage: orikin regularize FILE [-o OUT] [--rigid | --rigid-only] [--max-move REL] [--json]\n"
+    "                         [input options]\n"
     "\n"
     "Drawings from other tools carry rounded coordinates: their vertices miss Kawasaki by a\n"
     "few thousandths of a degree, so exact checks fail and a rigid fold finds no motion. This\n"
@@ -174,7 +210,13 @@ const cli_command cli_cmd_regularize = {
     "state: fold rates whose rotations close at every vertex; a degree-4 vertex is held to the\n"
     "folding mode its assignment picks (opposite creases of like sign fold equally, the odd one\n"
     "opposite to the one across), which makes the whole motion exist; other vertices to second\n"
-    "order (zero-area reciprocal diagram).\n"
+    "order (zero-area reciprocal diagram). --rigid-only asks for rigid foldability alone, without\n"
+    "Kawasaki: designs that fold rigidly but not flat (odd degrees, Resch, hypar, Mooser's train).\n"
+    "Equalities the drawing holds within its precision (4 x its largest Kawasaki miss) stay exact:\n"
+    "equal sectors at a vertex, creases continuing each other straight, parallel edges (corners and\n"
+    "sides move too when they miss them; fewer are kept when they cannot all hold). The result must\n"
+    "pass the full local check (Kawasaki, Maekawa, big-little-big, the exact test with the\n"
+    "assignment) before it is called flat-foldable.\n"
     "Reports the largest and RMS displacement relative to the sheet's diagonal. Refuses (exit 1,\n"
     "nothing written) when a vertex would move more than --max-move of the sheet size: such a\n"
     "drawing is not a rounded exact pattern. See docs/verification.md.\n"
@@ -184,6 +226,7 @@ const cli_command cli_cmd_regularize = {
     "                  .opx by extension); without it, a dry run\n"
     "  --rigid         also make the pattern rigidly foldable (assigned modes at degree 4,\n"
     "                  second order elsewhere)\n"
+    "  --rigid-only    rigid foldability without Kawasaki (no flat-foldability asked or checked)\n"
     "  --max-move REL  largest displacement accepted, relative to the sheet's diagonal; default 1e-3\n"
 
     "  --json          print {\"file\", \"rigid\", \"converged\", \"refused\", \"reason\",\n"
@@ -191,7 +234,9 @@ const cli_command cli_cmd_regularize = {
     "                  \"moved_vertices\", \"max_move_rel\", \"max_move_vertex\", \"rms_move_rel\",\n"
     "                  \"max_move_allowed_rel\", \"kawasaki_before_deg\", \"kawasaki_after_deg\",\n"
     "                  \"crossing_edge\", \"rigid_before\", \"rigid_after\", \"mode_vertices\",\n"
-    "                  \"against_edge\", \"output\"}\n"
+    "                  \"against_edge\", \"rigid_only\", \"equal_tolerance_deg\", \"ties\",\n"
+    "                  \"parallels_kept\", \"sides_moved\", \"flat_foldable\", \"check_vertex\",\n"
+    "                  \"output\"}\n"
     "\n"
     "input options (FILE is a FOLD file or a drawing: .svg, .opx, .cp):\n"
     CLI_INPUT_HELP

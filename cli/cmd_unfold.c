@@ -20,7 +20,10 @@ static const char help[] =
     "it into the plane without cuts: the answer is its crease pattern, every interior edge a crease\n"
     "(mountain or valley from the dihedral sign, edges_foldAngle the current fold angle), the sheet's\n"
     "edge the boundary; -o writes the crease pattern as frame 0 and the folded form as frame 1, and\n"
-    "the crease pattern is folded back with the kinematics to check it.\n"
+    "the crease pattern is folded back with the kinematics to check it. A FOLD folded form that is\n"
+    "planar, every face turned the same way, is a flat sheet (Origami Simulator saves its sheets as a\n"
+    "foldedForm in the x-z plane): it is its own crease pattern, kept with its creases, assignments\n"
+    "and fold angles and turned into the x-y plane (developing it would merge its faces).\n"
     "\n"
     "Otherwise cut the surface (SHAPE: .obj, .stl, or a .fold folded form; closed or open;\n"
     "coplanar neighbouring faces are merged) along edges into a flat net without overlap: spanning\n"
@@ -104,6 +107,126 @@ static int write_net(const char *path, const ori_unfold_net *net, bool svg)
     return rc;
 }
 
+// A FOLD folded form that lies in one plane with every face turned the same way is a flat sheet,
+// not a fold: it is a crease pattern (Origami Simulator saves its sheets as a foldedForm in the
+// x–z plane). Developing it would merge its coplanar faces and drop every crease. Returns it
+// turned into the x–y plane (the faces counter-clockwise; an axis of the plane kept as x), with
+// its edges, assignments and fold angles; NULL when the pattern is not planar, has a face turned
+// over (a flat-folded state) or no crease. *normal: the plane's normal.
+static ori_pattern *planar_crease_pattern(const ori_pattern *p, ori_v3 *normal)
+{
+    int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p), nf = ori_pattern_face_count(p);
+    int creases = 0;
+    for (int e = 0; e < ne; ++e) creases += ori_assignment_is_fold(ori_pattern_edge(p, e).assignment) ||
+                                            ori_pattern_edge(p, e).assignment == ORI_ASSIGN_FLAT;
+    if (nv < 3 || nf == 0 || creases == 0) return NULL;
+    // Newell's normal of every face together: the sheet's orientation
+    int cap = 0, *fv = NULL;
+    double n[3] = {0, 0, 0};
+    for (int f = 0; f < nf; ++f) {
+        int k = ori_pattern_face_size(p, f);
+        if (k > cap) cap = k, fv = realloc(fv, sizeof(int) * (size_t)cap);
+        ori_pattern_face_vertices(p, f, fv, cap);
+        for (int i = 0; i < k; ++i) {
+            ori_v3 a = ori_pattern_vertex(p, fv[i]), b = ori_pattern_vertex(p, fv[(i + 1) % k]);
+            n[0] += (a.y - b.y) * (a.z + b.z), n[1] += (a.z - b.z) * (a.x + b.x), n[2] += (a.x - b.x) * (a.y + b.y);
+        }
+    }
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 0.0)) {
+        free(fv);
+        return NULL;
+    }
+    for (int i = 0; i < 3; ++i) n[i] /= len;
+    for (int i = 0; i < 3; ++i) // (rounding of a sheet in a coordinate plane: exactly that plane)
+        if (fabs(n[i]) < 1e-15) n[i] = 0.0;
+    // u: the coordinate axis closest to the plane, projected into it; v = n × u
+    int ax = fabs(n[0]) <= fabs(n[1]) && fabs(n[0]) <= fabs(n[2]) ? 0 : fabs(n[1]) <= fabs(n[2]) ? 1 : 2;
+    double u[3] = {0, 0, 0}, v[3];
+    u[ax] = 1.0;
+    double d = u[ax] * n[ax];
+    for (int i = 0; i < 3; ++i) u[i] -= d * n[i];
+    double ul = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (int i = 0; i < 3; ++i) u[i] /= ul;
+    v[0] = n[1] * u[2] - n[2] * u[1], v[1] = n[2] * u[0] - n[0] * u[2], v[2] = n[0] * u[1] - n[1] * u[0];
+    ori_v3 o = ori_pattern_vertex(p, 0);
+    double off = o.x * n[0] + o.y * n[1] + o.z * n[2], tol = ORI_TOL_PLANAR_REL * ori_pattern_diagonal(p);
+    ori_pattern_def pdef = ori_default_pattern_def();
+    ori_pattern *q = ori_pattern_create(&pdef);
+    bool planar = true;
+    for (int i = 0; i < nv && planar; ++i) {
+        ori_v3 a = ori_pattern_vertex(p, i);
+        planar = fabs(a.x * n[0] + a.y * n[1] + a.z * n[2] - off) <= tol;
+        double x = a.x * u[0] + a.y * u[1] + a.z * u[2], y = a.x * v[0] + a.y * v[1] + a.z * v[2];
+        ori_pattern_add_vertex(q, ori_v3_make(x == 0.0 ? 0.0 : x, y == 0.0 ? 0.0 : y, 0.0));
+    }
+    for (int f = 0; f < nf && planar; ++f) { // every face turned the same way: a sheet, not folded flat
+        int k = ori_pattern_face_size(p, f);
+        ori_pattern_face_vertices(p, f, fv, cap);
+        double area = 0.0;
+        for (int i = 0; i < k; ++i) {
+            ori_v3 a = ori_pattern_vertex(q, fv[i]), b = ori_pattern_vertex(q, fv[(i + 1) % k]);
+            area += a.x * b.y - a.y * b.x;
+        }
+        planar = area > 0.0;
+        if (planar) ori_pattern_add_face(q, fv, k);
+    }
+    free(fv);
+    if (!planar) {
+        ori_pattern_destroy(q);
+        return NULL;
+    }
+    for (int e = 0; e < ne; ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        ori_pattern_add_edge(q, ed.v[0], ed.v[1], ed.assignment, ed.fold_angle_rad);
+    }
+    ori_pattern_set_has_fold_angles(q, ori_pattern_has_fold_angles(p));
+    ori_build_def bdef = ori_default_build_def();
+    ori_error err;
+    if (ori_pattern_build(q, &bdef, &err) != ORI_OK) {
+        ori_pattern_destroy(q);
+        return NULL;
+    }
+    *normal = ori_v3_make(n[0], n[1], n[2]);
+    return q;
+}
+
+// unfold of a planar folded form: its crease pattern as it is (-o, --svg), said so.
+static int planar_answer(const char *path, const ori_pattern *cp, ori_v3 n, const char *out, const char *svg, bool json)
+{
+    int nm = ori_pattern_count_assignment(cp, ORI_ASSIGN_MOUNTAIN), nvl = ori_pattern_count_assignment(cp, ORI_ASSIGN_VALLEY);
+    int nfl = ori_pattern_count_assignment(cp, ORI_ASSIGN_FLAT), nu = ori_pattern_count_assignment(cp, ORI_ASSIGN_UNASSIGNED);
+    int rc = CLI_EXIT_OK;
+    for (int k = 0; k < 2 && rc == CLI_EXIT_OK; ++k) {
+        const char *to = k == 0 ? out : svg;
+        if (!to) continue;
+        ori_fold *doc = ori_fold_create();
+        ori_fold_set_string(doc, 0, "file_creator", "orikin unfold");
+        ori_fold_set_custom(doc, 0, "frame_classes", "[\"creasePattern\"]", NULL);
+        rc = cli_write_pattern(CMD, doc, cp, to);
+        ori_fold_destroy(doc);
+    }
+    if (rc != CLI_EXIT_OK) return rc;
+    if (json) {
+        json_t *o = json_object();
+        json_object_set_new(o, "developable", json_true());
+        json_object_set_new(o, "planar", json_true());
+        json_object_set_new(o, "normal", json_pack("[fff]", n.x, n.y, n.z));
+        json_object_set_new(o, "cuts", json_integer(0));
+        json_object_set_new(o, "pieces", json_integer(1));
+        json_object_set_new(o, "faces", json_integer(ori_pattern_face_count(cp)));
+        json_object_set_new(o, "creases", json_integer(nm + nvl + nfl + nu));
+        json_object_set_new(o, "mountains", json_integer(nm));
+        json_object_set_new(o, "valleys", json_integer(nvl));
+        cli_print_json(o); // takes o
+    } else {
+        printf("%s: the folded form is planar (a flat sheet, normal (%.3g, %.3g, %.3g)): it is a crease pattern, kept as "
+               "it is: %d creases (%d mountain, %d valley, %d flat, %d unassigned), %d faces, turned into the x-y plane\n",
+               path, n.x, n.y, n.z, nm + nvl + nfl + nu, nm, nvl, nfl, nu, ori_pattern_face_count(cp));
+    }
+    return CLI_EXIT_OK;
+}
+
 static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *svg = NULL, *v;
@@ -168,6 +291,30 @@ static int run(int argc, char **argv)
     def.progress = cli_deadline_fn, def.progress_user = &deadline;
     ori_error err;
     ori_error_clear(&err);
+    if (ori_format_from_path(path) == ORI_FORMAT_FOLD) {
+        // (quietly: a file the pattern reader refuses is the mesh reader's to judge below)
+        ori_fold *doc = NULL;
+        ori_pattern *p = NULL;
+        ori_v3 n;
+        ori_pattern *cp = NULL;
+        if (ori_fold_load_file(path, &doc, NULL) == ORI_OK && ori_fold_get_pattern(doc, 0, NULL, &p, NULL) == ORI_OK)
+            cp = planar_crease_pattern(p, &n);
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+        if (cp && (cut || def.all)) { // asked for a net: said, not silently merged away
+            fprintf(stderr,
+                    "orikin %s: %s: note: the folded form is planar, a crease pattern of %d creases: %s merges its "
+                    "coplanar faces, and the net has none of them (without it unfold keeps them)\n",
+                    CMD, path, ori_pattern_edge_count(cp) - ori_pattern_count_assignment(cp, ORI_ASSIGN_BOUNDARY) -
+                                   ori_pattern_count_assignment(cp, ORI_ASSIGN_CUT),
+                    cut ? "--cut" : "--all");
+            ori_pattern_destroy(cp);
+        } else if (cp) {
+            int prc = planar_answer(path, cp, n, out, svg, json);
+            ori_pattern_destroy(cp);
+            return prc;
+        }
+    }
     ori_mesh *mesh = NULL;
     if (ori_unfold_load_mesh(path, &mesh, &err) != ORI_OK) return cli_input_error(CMD, path, &err);
     ori_unfold_net *net = NULL;

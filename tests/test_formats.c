@@ -1023,4 +1023,304 @@ Test(formats, xml_errors_are_one_line)
     cr_assert_null(strchr(err.message, '\n'), "%s", err.message);
     cr_assert(strstr(err.message, "UTF-8") && strstr(err.message, "; Bytes: 0xFF 0xFE"), "%s", err.message);
     cr_assert_gt(err.line, 0);
+// Creases drawn past the border (Lang's drawings in Origami Simulator) make faces outside the
+// sheet, joined to it only across the border: the import clips them at the border. A square
+// [0, 10]² with two creases from the top side that cross 0.5 below the bottom side (a triangle
+// outside, tails past it) and a vertical crease overshooting both sides by 1 (tails without
+// faces): only the sheet is left, every edge inside it, its faces the square's area, and its
+// mechanism (which refuses a sheet that falls apart) builds.
+Test(formats, creases_drawn_past_the_border_are_clipped)
+{
+    char *dir = test_tmpdir();
+    char path[600];
+    snprintf(path, sizeof path, "%s/overshoot.svg", dir);
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    // (SVG y down: the bottom side is y = 10; the creases cross at (5, 10.5).)
+    fprintf(f, "<svg xmlns='http://www.w3.org/2000/svg'><g stroke-width='0.05'>\n"
+               "<rect x='0' y='0' width='10' height='10' stroke='#000'/>\n"
+               "<line x1='2' y1='0' x2='5.9' y2='13.65' stroke='#f00'/>\n"
+               "<line x1='8' y1='0' x2='4.1' y2='13.65' stroke='#f00'/>\n"
+               "<line x1='3' y1='-1' x2='3' y2='11' stroke='#00f'/>\n"
+               "</g></svg>\n");
+    fclose(f);
+    ori_import_stats stats;
+    ori_pattern *p = import_ok(path, &stats);
+    cr_assert_eq(stats.clipped_faces, 1, "%d", stats.clipped_faces);
+    cr_assert_eq(stats.clipped, 6, "%d", stats.clipped); // 2 triangle sides, 2 tails below it, 2 vertical tails
+    cr_assert_eq(stats.dangling, 0);
+    cr_assert_eq(stats.parts, 1);
+    double area = 0.0;
+    for (int fc = 0; fc < ori_pattern_face_count(p); ++fc) area += 0.5 * fabs(ori__pattern_face_area2(p, fc));
+    cr_assert_float_eq(area, 100.0, 1e-9);
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 x = ori_pattern_vertex(p, v);
+        cr_assert(x.x >= -1e-12 && x.x <= 10 + 1e-12 && x.y <= 1e-12 && x.y >= -10 - 1e-12, "vertex %d (%g, %g)", v, x.x, x.y);
+    }
+    // every boundary edge has the sheet on one side only
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        int fs[2];
+        ori_pattern_edge_faces(p, e, fs);
+        bool border = ori_pattern_edge(p, e).assignment == ORI_ASSIGN_BOUNDARY;
+        cr_assert_eq((fs[0] == ORI_NULL_INDEX) + (fs[1] == ORI_NULL_INDEX), border ? 1 : 0, "edge %d", e);
+    }
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    // The CLI says so in one note, and dof folds it.
+    char args[1024], *out = NULL;
+    snprintf(args, sizeof args, "dof '%s'", path);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "clipped the creases drawn past the border: 6 crease piece(s)"), "%s", out);
+    cr_assert_not(strstr(out, "falls apart"), "%s", out);
+    free(out);
+    // A drawing without a closed border is left alone (nothing is outside of nothing).
+    snprintf(path, sizeof path, "%s/open.svg", dir);
+    f = fopen(path, "w");
+    fprintf(f, "<svg xmlns='http://www.w3.org/2000/svg'><g stroke-width='0.05'>\n"
+               "<polyline points='0,10 0,0 10,0 10,10' stroke='#000'/>\n"
+               "<line x1='0' y1='5' x2='10' y2='5' stroke='#f00'/><line x1='0' y1='10' x2='10' y2='10' stroke='#f00'/>\n"
+               "</g></svg>\n");
+    fclose(f);
+    p = import_ok(path, &stats);
+    cr_assert_eq(stats.clipped, 0);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    ori_pattern_destroy(p);
+    test_tmpdir_remove(dir);
+}
+
+// Origami Simulator's drawings of Lang (creases overshooting the border), Huffman's waterbomb and
+// the whirlpool fold as one sheet.
+Test(formats, shared_drawings_with_creases_past_the_border_fold_as_one_sheet)
+{
+    static const char *const names[] = {"Origami_langCardinal.svg", "Origami_langKnlDragon.svg",
+                                        "Tessellations_langHoneycomb.svg", "Tessellations_huffmanWaterbomb.svg",
+                                        "Tessellations_whirlpool.svg"};
+    int found = 0;
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i) {
+        char rel[256];
+        snprintf(rel, sizeof rel, "origamisimulator/%s", names[i]);
+        const char *path = test_shared_path(rel);
+        if (!path) continue;
+        found++;
+        char args[1024], *out = NULL;
+        snprintf(args, sizeof args, "dof '%s'", path);
+        int rc = test_run_cli(args, &out);
+        cr_assert_eq(rc, 0, "%s: exit %d: %s", names[i], rc, out);
+        // (the whirlpool's lines miss each other: healed within their width, not clipped)
+        cr_assert(strstr(out, i == 4 ? "lines drawn to meet missed each other" : "clipped the creases drawn past the border"),
+                  "%s: %s", names[i], out);
+        cr_assert_not(strstr(out, "falls apart"), "%s: %s", names[i], out);
+        free(out);
+    }
+    if (!found) cr_skip("../shared/patterns/origamisimulator is absent");
+}
+
+// A drawing split by lines that were drawn to meet and miss (Origami Simulator's whirlpool): a
+// square whose middle crease is drawn twice, 0.003 apart, the bottom side in two halves ending on
+// them: the strip between the two is outside the paper, and only the top side joins the halves.
+// Within the drawn line width (0.05) the lines touch on the page: by default the import welds
+// with the smallest doubling of the tolerance that joins the pieces (4e-4: 0.003 of a diagonal
+// of 14.14 is 2.1e-4) and says so; with heal_splits off (an explicit --tolerance) it says the
+// paper is 2 pieces that no crease joins, names a vertex and that tolerance.
+Test(formats, a_sheet_split_by_lines_that_miss_is_reported_with_the_tolerance_that_joins_it)
+{
+    char *dir = test_tmpdir();
+    char path[600];
+    snprintf(path, sizeof path, "%s/split.svg", dir);
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    fprintf(f, "<svg xmlns='http://www.w3.org/2000/svg'><g stroke-width='0.05'>\n"
+               "<line x1='0' y1='0' x2='10' y2='0' stroke='#000'/><line x1='0' y1='10' x2='5' y2='10' stroke='#000'/>\n"
+               "<line x1='5.003' y1='10' x2='10' y2='10' stroke='#000'/>\n"
+               "<line x1='0' y1='0' x2='0' y2='10' stroke='#000'/><line x1='10' y1='0' x2='10' y2='10' stroke='#000'/>\n"
+               "<line x1='5' y1='0' x2='5' y2='10' stroke='#f00'/><line x1='5.003' y1='0' x2='5.003' y2='10' stroke='#f00'/>\n"
+               "</g></svg>\n");
+    fclose(f);
+    ori_import_stats stats;
+    ori_pattern *p = import_ok(path, &stats);
+    cr_assert_float_eq(stats.healed_weld_rel, 4e-4, 1e-15, "%g", stats.healed_weld_rel);
+    cr_assert_eq(stats.healed_sheets, 2);
+    cr_assert_eq(stats.sheets, 1);
+    cr_assert_eq(stats.split_vertex, ORI_NULL_INDEX);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 1); // the crease drawn twice is one
+    ori_mechanism_destroy(test_mechanism_of(p));
+    ori_pattern_destroy(p);
+    ori_import_def def = ori_default_import_def();
+    def.heal_splits = false;
+    ori_error err;
+    cr_assert_eq(ori_import_file(path, ORI_FORMAT_UNKNOWN, &def, &p, &stats, &err), ORI_OK);
+    cr_assert_eq(stats.parts, 1);
+    cr_assert_eq(stats.sheets, 2);
+    cr_assert_eq(stats.healed_weld_rel, 0.0);
+    cr_assert_neq(stats.split_vertex, ORI_NULL_INDEX);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    cr_assert_float_eq(stats.split_tolerance_rel, 4e-4, 1e-15, "%g", stats.split_tolerance_rel);
+    ori_pattern_destroy(p);
+    char args[1024], *out = NULL;
+    snprintf(args, sizeof args, "convert '%s' '%s/split.fold'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "note: lines drawn to meet missed each other and left the paper in 2 pieces"), "%s", out);
+    cr_assert(strstr(out, "--tolerance 5e-05 keeps them apart"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "convert '%s' '%s/split.fold' --tolerance 5e-5", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "the paper is 2 pieces that no crease joins"), "%s", out);
+    cr_assert(strstr(out, "--tolerance 0.0004 joins them"), "%s", out);
+    free(out);
+    // Segments without a line width (ori_segments_to_pattern, as a .cp has none) are not healed.
+    ori_segment *segs;
+    int n;
+    cr_assert_eq(ori_read_segments(path, ORI_FORMAT_UNKNOWN, &segs, &n, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_segments_to_pattern(segs, n, NULL, &p, &err), ORI_OK);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 2);
+    ori_pattern_destroy(p);
+    ori_buffer_free(segs);
+    test_tmpdir_remove(dir);
+}
+
+// ORIPA auxiliary lines whose coordinates are no number (XMLEncoder's NaN, Infinity; "nan" in
+// .cp) are skipped and counted, not a reason to refuse the file; a crease with one still fails
+// with its line.
+Test(formats, oripa_auxiliary_lines_with_nan_coordinates_are_skipped)
+{
+    const char *opx = "<java>\n"
+                      "<object class='oripa.OriLineProxy'><void property='type'><int>0</int></void>\n"
+                      "<void property='x0'><double>NaN</double></void><void property='y1'><double>-Infinity</double></void></object>\n"
+                      "<object class='oripa.OriLineProxy'><void property='type'><int>2</int></void>\n"
+                      "<void property='x1'><double>4</double></void><void property='y1'><double>3</double></void></object>\n"
+                      "</java>";
+    ori_segment *s;
+    int n;
+    ori_import_stats stats;
+    ori_error err;
+    cr_assert_eq(ori_opx_read_segments(opx, strlen(opx), &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 1);
+    cr_assert_eq(stats.ignored_elements, 1);
+    cr_assert_eq(stats.degenerate_aux, 1);
+    assert_seg(&s[0], 0, 0, 4, -3, ORI_ASSIGN_MOUNTAIN, -ORI_PI);
+    ori_buffer_free(s);
+    const char *bad = "<java>\n<object class='oripa.OriLineProxy'><void property='type'><int>3</int></void>\n"
+                      "<void property='x0'>\n<double>NaN</double></void></object></java>";
+    cr_assert_eq(ori_opx_read_segments(bad, strlen(bad), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 4);
+    cr_assert(strstr(err.message, "x0 is not a finite number"), "%s", err.message);
+    const char *cp = "1 0 0 10 0\n0 nan 0 NaN 1\n4 -inf 1 2 Infinity\n2 0 0 10 0\n";
+    cr_assert_eq(ori_cp_read_segments(cp, strlen(cp), &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 2);
+    cr_assert_eq(stats.ignored_elements, 2);
+    cr_assert_eq(stats.degenerate_aux, 2);
+    ori_buffer_free(s);
+    const char *badcp = "1 0 0 10 0\n2 0 nan 10 0\n";
+    cr_assert_eq(ori_cp_read_segments(badcp, strlen(badcp), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_eq(err.line, 2);
+    const char *word = "0 nanny 0 1 1\n";
+    cr_assert_eq(ori_cp_read_segments(word, strlen(word), &s, &n, NULL, &err), ORI_ERR_PARSE);
+    // The CLI notes it once and reads the file.
+    char *dir = test_tmpdir(), path[600], args[1024], *out = NULL;
+    snprintf(path, sizeof path, "%s/aux.cp", dir);
+    FILE *f = fopen(path, "w");
+    fputs("1 0 0 10 0\n1 10 0 10 10\n1 10 10 0 10\n1 0 10 0 0\n2 0 0 10 10\n0 NaN 0 1 1\n", f);
+    fclose(f);
+    snprintf(args, sizeof args, "info '%s'", path);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "note: 1 of them had a coordinate that is not a number"), "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
+}
+
+// Curves are refused unless asked to flatten them: then each cubic, quadratic, arc, circle and
+// rounded corner becomes N straight segments whose ends lie on the curve, joined end to end.
+Test(formats, svg_curves_flatten_into_n_segments_on_the_curve)
+{
+    // A cubic from (0, 0) to (10, 0) (control points (0, 10), (10, 10)) and a relative smooth
+    // cubic after it, a half circle of radius 5 as an arc from (0, 0) to (10, 0) through
+    // (5, -5), a quadratic with its smooth twin, a circle of radius 2 at (20, 20) (SVG frame).
+    const char *svg = "<svg xmlns='http://www.w3.org/2000/svg'>\n"
+                      "<path stroke='#f00' d='M0 0 C 0 10 10 10 10 0 s 10 -10 10 0'/>\n"
+                      "<path stroke='#00f' d='M0 0 A5 5 0 0 1 10 0'/>\n"
+                      "<path stroke='#00f' d='M0 30 Q 5 40 10 30 T 20 30'/>\n"
+                      "<circle stroke='#000' cx='20' cy='20' r='2'/>\n"
+                      "</svg>";
+    ori_segment *s;
+    int n;
+    ori_import_stats stats;
+    ori_error err;
+    cr_assert_eq(ori_svg_read_segments(svg, strlen(svg), &s, &n, NULL, &err), ORI_ERR_UNSUPPORTED);
+    cr_assert(strstr(err.message, "--flatten-curves"), "%s", err.message);
+    cr_assert_eq(err.line, 2);
+    const int k = 8;
+    cr_assert_eq(ori_svg_read_curves(svg, strlen(svg), k, &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 6 * k);
+    cr_assert_eq(stats.flattened_curves, 6);
+    for (int i = 0; i < n; ++i) // joined end to end within each curve
+        if (i % k) cr_assert(s[i].a.x == s[i - 1].b.x && s[i].a.y == s[i - 1].b.y, "segment %d", i);
+    // the first cubic (y flipped): the Bernstein form at t = (i + 1) / k
+    for (int i = 0; i < k; ++i) {
+        double t = (double)(i + 1) / k, u = 1 - t;
+        double x = 3 * u * t * t * 10 + t * t * t * 10, y = -(3 * u * u * t * 10 + 3 * u * t * t * 10);
+        cr_assert_float_eq(s[i].b.x, x, 1e-12, "%d", i);
+        cr_assert_float_eq(s[i].b.y, y, 1e-12, "%d", i);
+        cr_assert_eq(s[i].assignment, ORI_ASSIGN_MOUNTAIN);
+    }
+    cr_assert(s[k - 1].b.x == 10 && s[k - 1].b.y == 0); // the end point exactly
+    // the smooth cubic reflects (10, 10) about (10, 0): its first control point is (10, -10)
+    {
+        double t = 0.5, u = 0.5;
+        double y = 3 * u * u * t * -10 + 3 * u * t * t * -10; // SVG y of the mid point
+        cr_assert_float_eq(s[k + k / 2 - 1].b.y, -y, 1e-12);
+        cr_assert_float_eq(s[2 * k - 1].b.x, 20, 1e-12);
+    }
+    // the arc: every point 5 from (5, 0), sweep 1 in SVG's y-down frame goes through y = -5, i.e. +5 in FOLD
+    for (int i = 2 * k; i < 3 * k; ++i) {
+        cr_assert_float_eq(hypot(s[i].b.x - 5, s[i].b.y), 5, 1e-12, "%d", i);
+        cr_assert(s[i].b.y >= -1e-12, "%d: %g", i, s[i].b.y);
+        cr_assert_eq(s[i].assignment, ORI_ASSIGN_VALLEY);
+    }
+    cr_assert_float_eq(s[2 * k + k / 2 - 1].b.y, 5, 1e-12);
+    // the quadratic: mid point (5, 35) in SVG; the smooth twin mirrors it to (15, 25)
+    cr_assert_float_eq(s[3 * k + k / 2 - 1].b.x, 5, 1e-12);
+    cr_assert_float_eq(s[3 * k + k / 2 - 1].b.y, -35, 1e-12);
+    cr_assert_float_eq(s[4 * k + k / 2 - 1].b.x, 15, 1e-12);
+    cr_assert_float_eq(s[4 * k + k / 2 - 1].b.y, -25, 1e-12);
+    // the circle: a closed polygon on radius 2
+    for (int i = 5 * k; i < 6 * k; ++i) cr_assert_float_eq(hypot(s[i].a.x - 20, s[i].a.y + 20), 2, 1e-12);
+    cr_assert(s[6 * k - 1].b.x == s[5 * k].a.x && s[6 * k - 1].b.y == s[5 * k].a.y);
+    ori_buffer_free(s);
+    // A rounded rectangle: four sides and four corners on their quarter circles.
+    const char *rect = "<svg><rect stroke='#000' x='0' y='0' width='10' height='6' rx='2'/></svg>";
+    cr_assert_eq(ori_svg_read_curves(rect, strlen(rect), 0, &s, &n, NULL, &err), ORI_ERR_UNSUPPORTED);
+    cr_assert_eq(ori_svg_read_curves(rect, strlen(rect), 4, &s, &n, &stats, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(n, 4 + 4 * 4);
+    cr_assert_float_eq(hypot(s[1 + 1].b.x - 8, s[1 + 1].b.y + 2), 2, 1e-12); // the first corner about (8, 2)
+    ori_buffer_free(s);
+    // Through the CLI: a closed curved sheet imports with the option, is refused without it, and
+    // the option's value is checked.
+    char *dir = test_tmpdir(), path[600], args[1200], *out = NULL;
+    snprintf(path, sizeof path, "%s/curved.svg", dir);
+    FILE *f = fopen(path, "w");
+    fputs("<svg xmlns='http://www.w3.org/2000/svg'><rect stroke='#000' width='20' height='10'/>\n"
+          "<path stroke='#f00' d='M10 0 C 4 3 4 7 10 10'/></svg>\n", f);
+    fclose(f);
+    snprintf(args, sizeof args, "info '%s'", path);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert(strstr(out, "line 2") && strstr(out, "--flatten-curves N"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "convert '%s' '%s/c.fold' --flatten-curves 12", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "1 curve(s), arc(s) or circle(s) flattened into 12 straight crease(s) each"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "%s/c.fold", dir);
+    ori_pattern *p = test_load_pattern(args, 0);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 12);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    ori_pattern_destroy(p);
+    snprintf(args, sizeof args, "info '%s' --flatten-curves 0", path);
+    cr_assert_eq(test_run_cli(args, &out), 2, "%s", out);
+    cr_assert(strstr(out, "--flatten-curves"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "info '%s/c.fold' --flatten-curves 4", dir);
+    cr_assert_eq(test_run_cli(args, &out), 2, "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
 }

@@ -499,3 +499,265 @@ Test(regularize, regularized_miura_keeps_its_multipliers)
     ori_pattern_destroy(out);
     ori_pattern_destroy(q);
 }
+
+// --- equalities of the drawing kept (issue 21 §2) ---------------------------------------------
+
+// A flat pattern from vertices and edges (y up), built with faces.
+static ori_pattern *pattern_of(const double (*xy)[2], int nv, const int (*ev)[2], const char *asg, int ne)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    for (int v = 0; v < nv; ++v) ori_pattern_add_vertex(p, ori_v3_make(xy[v][0], xy[v][1], 0.0));
+    for (int e = 0; e < ne; ++e) {
+        ori_assignment a;
+        cr_assert(ori_assignment_from_char(asg[e], &a));
+        ori_pattern_add_edge(p, ev[e][0], ev[e][1], a, 0.0);
+    }
+    ori_build_def bd = ori_default_build_def();
+    ori_error err;
+    cr_assert_eq(ori_pattern_build(p, &bd, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+// Origami Simulator's open sink base, exact: a square of side 4, the inner square (1..3)², the
+// diagonals and the vertical midline.
+static ori_pattern *open_sink_base(void)
+{
+    static const double xy[13][2] = {{0, 4}, {4, 4}, {0, 0}, {4, 0}, {1, 1}, {3, 1}, {1, 3},
+                                     {3, 3}, {2, 2}, {2, 4}, {2, 3}, {2, 1}, {2, 0}};
+    static const int ev[24][2] = {{0, 9}, {2, 12}, {2, 0}, {3, 1},  {4, 11}, {6, 10}, {0, 6},  {1, 7},
+                                  {3, 5}, {2, 4},  {6, 4}, {7, 5},  {4, 8},  {8, 7},  {6, 8},  {8, 5},
+                                  {9, 1}, {10, 7}, {9, 10}, {11, 5}, {10, 8}, {8, 11}, {12, 3}, {11, 12}};
+    return pattern_of(xy, 13, ev, "BBBBMMMMMMMMVVVVBMVMMMBV", 24);
+}
+
+// The waterbomb base: a square with both diagonals valley and the horizontal midline mountain
+// (sectors 45, 90, 45, 45, 90, 45).
+static ori_pattern *waterbomb_base(void)
+{
+    static const double xy[9][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {0, 0}, {1, 0}, {-1, 0}, {0, -1}, {0, 1}};
+    static const int ev[14][2] = {{0, 7}, {7, 1}, {1, 5}, {5, 2}, {2, 8}, {8, 3}, {3, 6},
+                                  {6, 0}, {4, 0}, {4, 1}, {4, 2}, {4, 3}, {4, 5}, {4, 6}};
+    return pattern_of(xy, 9, ev, "BBBBBBBBVVVVMM", 14);
+}
+
+// The map fold's 2 × 2: a square with its midlines, one half of the vertical one a valley.
+static ori_pattern *map_fold(void)
+{
+    static const double xy[9][2] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}, {1, 1}};
+    static const int ev[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 0}, {8, 1}, {8, 3}, {8, 5}, {8, 7}};
+    return pattern_of(xy, 9, ev, "BBBBBBBBMMVM", 12);
+}
+
+// The flat states of a pattern whose lengths are as precise as the perturbations below (1e-6
+// of the sheet: regularize makes the angles exact, not the lengths), as `layers --tolerance 1e-5`.
+static char *layer_count(const ori_pattern *p)
+{
+    ori_layers_def ld = ori_default_layers_def();
+    ld.snap_rel = 1e-5;
+    ori_layers *L = NULL;
+    ori_error err;
+    cr_assert_eq(ori_layers_create(p, &ld, &L, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_layers_count(L, &err), ORI_OK);
+    char *n = ori_layers_state_count(L);
+    ori_layers_destroy(L);
+    return n;
+}
+
+// Random perturbations of patterns with equal sectors (the open sink base, the waterbomb base,
+// the map fold, a 3 × 3 Miura-ori with two pairs of equal sectors per vertex), by up to 1e-6 of
+// the sheet: after regularize every pair of sectors equal in the exact pattern is equal to
+// 1e-11 rad at that vertex (the big-little-big rule compares them within 1e-8), the result
+// passes the full local check, and the layer orders count as many flat states as the exact
+// pattern's. (Kawasaki alone made 90/90/90/90 into 90.0001/90/89.9999/90: 0 states.) Lengths
+// stay as precise as the drawing: the layer orders are counted at that precision.
+Test(regularize, equal_sectors_stay_equal_and_layers_count_as_the_exact_pattern, .timeout = 120)
+{
+    ori_pattern *exact[4] = {open_sink_base(), waterbomb_base(), map_fold(), test_miura(3, 3, 1.0, 1.0, deg(65), NULL)};
+    static const char *const names[4] = {"open sink base", "waterbomb base", "map fold", "Miura-ori 3 x 3"};
+    int kawasaki_only_broke = 0;
+    for (int k = 0; k < 4; ++k) {
+        ori_pattern *m = exact[k];
+        char *want = layer_count(m);
+        cr_assert_str_neq(want, "0", "%s", names[k]);
+        for (unsigned seed = 1; seed <= 6; ++seed) {
+            ori_pattern *q = perturbed(m, 1e-6, seed * 7919u + (unsigned)k);
+            ori_regularize_def d = ori_default_regularize_def();
+            ori_regularize_result r;
+            ori_pattern *out = NULL;
+            ori_error err;
+            cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+            cr_assert(r.converged && r.flat_foldable, "%s seed %u: %s", names[k], seed, r.check_detail);
+            cr_assert_not_null(out);
+            cr_assert_gt(r.ties, 0);
+            cr_assert_leq(r.max_move_rel, 1e-5, "%s seed %u moved %.3g", names[k], seed, r.max_move_rel);
+            for (int v = 0; v < ori_pattern_vertex_count(m); ++v) {
+                if (!ori_pattern_vertex_is_interior(m, v)) continue;
+                double a[64], b[64];
+                int ea[64], eb[64], n = ori_flat_vertex_creases(m, v, ea, a, 64), s = 0;
+                cr_assert_eq(ori_flat_vertex_creases(out, v, eb, b, 64), n);
+                while (s < n && eb[s] != ea[0]) ++s; // (the lists may start at another crease)
+                cr_assert_lt(s, n);
+                for (int i = 0; i < n; ++i)
+                    for (int j = i + 1; j < n; ++j)
+                        if (fabs(a[i] - a[j]) <= 1e-12)
+                            cr_assert_leq(fabs(b[(i + s) % n] - b[(j + s) % n]), 1e-11,
+                                          "%s seed %u vertex %d: sectors %d, %d: %.17g, %.17g", names[k], seed, v, i, j,
+                                          b[(i + s) % n], b[(j + s) % n]);
+            }
+            char *got = layer_count(out);
+            cr_assert_str_eq(got, want, "%s seed %u: %s states, the exact pattern %s", names[k], seed, got, want);
+            ori_buffer_free(got);
+            // The perturbed drawing itself fails the exact check (so the test can fail).
+            ori_flat_report *rep = ori_flat_check_pattern(q, NULL);
+            kawasaki_only_broke += !ori_flat_report_flat_foldable(rep);
+            ori_flat_report_destroy(rep);
+            ori_pattern_destroy(out);
+            ori_pattern_destroy(q);
+        }
+        ori_buffer_free(want);
+        ori_pattern_destroy(m);
+    }
+    cr_assert_gt(kawasaki_only_broke, 0, "the perturbations break the exact check");
+}
+
+// regularize says flat-foldable only after the full check: a vertex that Kawasaki alone would
+// accept but whose assignment cannot fold (the map fold's vertex with four mountains) is refused
+// with the check's reason, and nothing is handed back.
+Test(regularize, the_full_local_check_decides_flat_foldable)
+{
+    static const double xy[9][2] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}, {1.00001, 1}};
+    static const int ev[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 0}, {8, 1}, {8, 3}, {8, 5}, {8, 7}};
+    ori_pattern *p = pattern_of(xy, 9, ev, "BBBBBBBBMMMM", 12);
+    ori_regularize_def d = ori_default_regularize_def();
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+    cr_assert_null(out);
+    cr_assert_not(r.converged);
+    cr_assert_not(r.flat_foldable);
+    cr_assert_leq(r.kawasaki_after_rad, 1e-12, "Kawasaki itself holds");
+    cr_assert_eq(r.check_vertex, 8);
+    cr_assert_eq(r.check_rule, ORI_FLAT_RULE_MAEKAWA, "%d: %s", r.check_rule, r.check_detail);
+    cr_assert_eq(r.check_failed, 1);
+    ori_pattern_destroy(p);
+}
+
+// Origami Simulator's open sink base (a 90/90/90/90 vertex) and the BYU flasher (43 of 90
+// vertices broke): regularized, every vertex passes the exact check; the sink base has its one
+// flat state.
+Test(regularize, shared_drawings_keep_their_equal_sectors)
+{
+    static const char *const names[2] = {"origamisimulator/Bases_openSinkBase.svg",
+                                         "origamisimulator/needsCollisions_byu_solar_driven.svg"};
+    for (int k = 0; k < 2; ++k) {
+        const char *path = test_shared_path(names[k]);
+        if (!path) cr_skip("../shared is absent");
+        ori_pattern *p = NULL;
+        ori_error err;
+        cr_assert_eq(ori_import_file(path, ORI_FORMAT_UNKNOWN, NULL, &p, NULL, &err), ORI_OK, "%s", err.message);
+        ori_regularize_def d = ori_default_regularize_def();
+        ori_regularize_result r;
+        ori_pattern *out = NULL;
+        cr_assert_eq(ori_regularize(p, &d, &out, &r, &err), ORI_OK);
+        cr_assert(r.converged && r.flat_foldable, "%s: %s", names[k], r.check_detail);
+        cr_assert_lt(r.max_move_rel, 1e-5);
+        ori_flat_report *rep = ori_flat_check_pattern(out, NULL);
+        cr_assert(ori_flat_report_flat_foldable(rep), "%s: %d vertices fail", names[k], ori_flat_report_failed_count(rep));
+        ori_flat_report_destroy(rep);
+        if (k == 0) {
+            char *n = layer_count(out);
+            cr_assert_str_eq(n, "1");
+            ori_buffer_free(n);
+        }
+        ori_pattern_destroy(out);
+        ori_pattern_destroy(p);
+    }
+}
+
+// --- rigid only (issue 21 §2) -----------------------------------------------------------------
+
+// Rigid designs that do not fold flat: --rigid refuses them (a vertex of odd degree cannot
+// satisfy Kawasaki), rigid_only makes them rigidly foldable without Kawasaki. Random single
+// vertices of degree 5 (sectors 40°–100°, three mountains and two valleys) on a pentagon: the
+// rates close to first and second order to 1e-12, no flat check is asked, and vertices barely
+// move (the rates adapt).
+Test(regularize, rigid_only_accepts_rigid_designs_that_do_not_fold_flat)
+{
+    unsigned st = 5;
+    for (int trial = 0; trial < 8; ++trial) {
+        double a[5], sum = 0.0, xy[6][2] = {{0, 0}};
+        for (int k = 0; k < 5; ++k) a[k] = 40.0 + 30.0 * (noise(&st) + 1.0), sum += a[k];
+        double t = 360.0 * noise(&st);
+        for (int k = 0; k < 5; ++k) {
+            xy[k + 1][0] = cos(deg(t)), xy[k + 1][1] = sin(deg(t));
+            t += a[k] * 360.0 / sum;
+        }
+        static const int ev[10][2] = {{1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 1}, {0, 1}, {0, 2}, {0, 3}, {0, 4}, {0, 5}};
+        ori_pattern *p = pattern_of(xy, 6, ev, "BBBBBMVMMV", 10);
+        ori_regularize_def d = ori_default_regularize_def();
+        ori_regularize_result r;
+        ori_pattern *out = NULL;
+        d.rigid = true;
+        cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+        cr_assert_null(out);
+        cr_assert_eq(r.odd_vertex, 0, "trial %d", trial);
+        d.rigid = false;
+        d.rigid_only = true;
+        cr_assert_eq(ori_regularize(p, &d, &out, &r, NULL), ORI_OK);
+        cr_assert(r.converged, "trial %d: rigid defect %g", trial, r.rigid_after);
+        cr_assert_not_null(out);
+        cr_assert_eq(r.odd_vertex, ORI_NULL_INDEX);
+        cr_assert_leq(r.rigid_after, 1e-12);
+        cr_assert_eq(r.mode_vertices, 0);
+        cr_assert_leq(r.max_move_rel, 1e-9, "trial %d moved %g", trial, r.max_move_rel);
+        ori_pattern_destroy(out);
+        ori_pattern_destroy(p);
+    }
+    // A pattern without interior vertices (cuts between its creases: a kirigami strip) has
+    // nothing to regularize, rigid or not: converged, no contradiction.
+    static const double kxy[8][2] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {2, 1}, {1, 1}, {0, 1}};
+    static const int kev[9][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 0}, {1, 6}};
+    ori_pattern *k = pattern_of(kxy, 8, kev, "BBBBBCBBM", 9);
+    for (int mode = 0; mode < 3; ++mode) {
+        ori_regularize_def d = ori_default_regularize_def();
+        d.rigid = mode == 1, d.rigid_only = mode == 2;
+        ori_regularize_result r;
+        ori_pattern *out = NULL;
+        cr_assert_eq(ori_regularize(k, &d, &out, &r, NULL), ORI_OK);
+        cr_assert(r.converged && !r.refused, "mode %d", mode);
+        cr_assert_not_null(out);
+        cr_assert_eq(r.moved_vertices, 0);
+        ori_pattern_destroy(out);
+    }
+    ori_pattern_destroy(k);
+}
+
+// Origami Simulator's Resch tessellation (degree-6 vertices of three mountains and three
+// valleys: rigid, never flat) and anti-symmetric 6-point hypar: --rigid-only regularizes them;
+// --rigid refuses the Resch pattern now that the full check runs (it was called flat-foldable).
+Test(regularize, shared_rigid_designs_with_rigid_only)
+{
+    static const char *const names[2] = {"origamisimulator/Tessellations_reschTriTessellation.svg",
+                                         "origamisimulator/Origami_6ptHypar-anti.svg"};
+    for (int k = 0; k < 2; ++k) {
+        const char *path = test_shared_path(names[k]);
+        if (!path) cr_skip("../shared is absent");
+        char args[1024], *out = NULL;
+        snprintf(args, sizeof args, "regularize '%s' --rigid-only", path);
+        cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+        cr_assert(strstr(out, "flat-foldability not required"), "%s", out);
+        free(out);
+        if (k == 0) {
+            snprintf(args, sizeof args, "regularize '%s' --rigid", path);
+            cr_assert_eq(test_run_cli(args, &out), 1, "%s", out);
+            cr_assert(strstr(out, "is not flat-foldable (maekawa)"), "%s", out);
+            free(out);
+        }
+    }
+    char *out = NULL;
+    cr_assert_eq(test_run_cli("regularize tests/data/rounded-miura.fold --rigid --rigid-only", &out), 2, "%s", out);
+    free(out);
+}

@@ -343,3 +343,136 @@ Test(unfold, all_nets_are_bounded_and_say_how_far_they_got, .init = test_leak_se
         ori_unfold_mesh_destroy(m);
     }
 }
+
+// A FOLD folded form that is a flat sheet (Origami Simulator saves sheets as a foldedForm in the
+// x-z plane) is a crease pattern: unfold keeps its creases, assignments and fold angles, turned
+// into the x-y plane with edge lengths kept, instead of merging its faces ("0 creases"). Tried
+// on a 3 × 3 grid of squares with its 12 interior edges creased, placed in random planes.
+static void write_sheet(const char *path, const double rot[3][3], bool fold_over)
+{
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    fprintf(f, "{\"file_spec\":1.1,\"frame_classes\":[\"foldedForm\"],\"vertices_coords\":[");
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            double x = i, y = j, z = 0.0;
+            if (fold_over && i == 3) x = 1.0; // the last column folded back flat over the one before
+            double p[3] = {x, y, z};
+            fprintf(f, "%s[%.17g,%.17g,%.17g]", i + j ? "," : "", rot[0][0] * p[0] + rot[0][1] * p[1] + rot[0][2] * p[2],
+                    rot[1][0] * p[0] + rot[1][1] * p[1] + rot[1][2] * p[2], rot[2][0] * p[0] + rot[2][1] * p[1] + rot[2][2] * p[2]);
+        }
+    fprintf(f, "],\"edges_vertices\":[");
+    int ne = 0;
+    char asg[64];
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 3; ++i) {
+            fprintf(f, "%s[%d,%d]", ne ? "," : "", j * 4 + i, j * 4 + i + 1);
+            asg[ne++] = j == 0 || j == 3 ? 'B' : (i % 2 ? 'M' : 'V');
+        }
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 3; ++j) {
+            fprintf(f, ",[%d,%d]", j * 4 + i, (j + 1) * 4 + i);
+            asg[ne++] = i == 0 || i == 3 ? 'B' : (j == 1 ? 'F' : 'M');
+        }
+    fprintf(f, "],\"edges_assignment\":[");
+    for (int e = 0; e < ne; ++e) fprintf(f, "%s\"%c\"", e ? "," : "", asg[e]);
+    fprintf(f, "],\"edges_foldAngle\":[");
+    for (int e = 0; e < ne; ++e) fprintf(f, "%s%s", e ? "," : "", asg[e] == 'M' ? "-180" : asg[e] == 'V' ? "180" : "null");
+    fprintf(f, "],\"faces_vertices\":[");
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            int a = j * 4 + i;
+            bool over = fold_over && i == 2; // turned over: its corners run the other way round
+            if (over) fprintf(f, "%s[%d,%d,%d,%d]", i + j ? "," : "", a, a + 4, a + 5, a + 1);
+            else fprintf(f, "%s[%d,%d,%d,%d]", i + j ? "," : "", a, a + 1, a + 5, a + 4);
+        }
+    fprintf(f, "]}\n");
+    fclose(f);
+}
+
+Test(unfold, a_planar_folded_form_is_its_own_crease_pattern, .init = test_leak_setup, .fini = test_leak_check)
+{
+    char *dir = test_tmpdir();
+    char in[600], out[600], args[1400];
+    snprintf(in, sizeof in, "%s/sheet.fold", dir);
+    snprintf(out, sizeof out, "%s/cp.fold", dir);
+    srand(21);
+    for (int trial = 0; trial < 6; ++trial) {
+        // trial 0: the x-z plane (Origami Simulator), then random rotations
+        double rot[3][3] = {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}};
+        if (trial > 0) {
+            double a = 6.283 * rand() / RAND_MAX, b = 3.1415 * rand() / RAND_MAX, c = 6.283 * rand() / RAND_MAX;
+            double rz[3][3] = {{cos(a), -sin(a), 0}, {sin(a), cos(a), 0}, {0, 0, 1}};
+            double rx[3][3] = {{1, 0, 0}, {0, cos(b), -sin(b)}, {0, sin(b), cos(b)}};
+            double rz2[3][3] = {{cos(c), -sin(c), 0}, {sin(c), cos(c), 0}, {0, 0, 1}};
+            double t[3][3];
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) {
+                    t[i][j] = 0;
+                    for (int k = 0; k < 3; ++k) t[i][j] += rx[i][k] * rz2[k][j];
+                }
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) {
+                    rot[i][j] = 0;
+                    for (int k = 0; k < 3; ++k) rot[i][j] += rz[i][k] * t[k][j];
+                }
+        }
+        write_sheet(in, rot, false);
+        char *output = NULL;
+        snprintf(args, sizeof args, "unfold '%s' -o '%s'", in, out);
+        int rc = test_run_cli(args, &output);
+        cr_assert_eq(rc, 0, "trial %d: %s", trial, output);
+        cr_assert(strstr(output, "planar") && strstr(output, "12 creases (6 mountain, 4 valley, 2 flat"), "trial %d: %s",
+                  trial, output);
+        free(output);
+        ori_pattern *p = test_load_pattern(out, 0);
+        cr_assert_not(ori_pattern_is_3d(p));
+        cr_assert_eq(ori_pattern_edge_count(p), 24);
+        cr_assert_eq(ori_pattern_face_count(p), 9);
+        cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 6);
+        cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY), 4);
+        cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_FLAT), 2);
+        for (int e = 0; e < 24; ++e) { // lengths 1 (a rigid motion), angles kept
+            ori_edge x = ori_pattern_edge(p, e);
+            ori_v3 u = ori_pattern_vertex(p, x.v[0]), w = ori_pattern_vertex(p, x.v[1]);
+            cr_assert_float_eq(hypot(w.x - u.x, w.y - u.y), 1.0, 1e-12, "trial %d edge %d", trial, e);
+            double want = x.assignment == ORI_ASSIGN_MOUNTAIN ? -ORI_PI : x.assignment == ORI_ASSIGN_VALLEY ? ORI_PI : 0.0;
+            cr_assert_float_eq(x.fold_angle_rad, want, 1e-12);
+        }
+        if (trial == 0) { // the x-z plane turned without rounding: x kept, z the other axis
+            for (int v = 0; v < 16; ++v) {
+                ori_v3 a = ori_pattern_vertex(p, v);
+                cr_assert(a.x == v % 4 && fabs(a.y) == v / 4, "vertex %d at (%g, %g)", v, a.x, a.y);
+            }
+        }
+        ori_pattern_destroy(p);
+        if (trial == 0) { // a net asked for: the creases it cannot keep are said
+            snprintf(args, sizeof args, "unfold '%s' --cut", in);
+            cr_assert_eq(test_run_cli(args, &output), 0, "%s", output);
+            cr_assert(strstr(output, "note: the folded form is planar, a crease pattern of 12 creases: --cut merges"),
+                      "%s", output);
+            free(output);
+        }
+    }
+    // A form folded flat (a column turned over onto the next) is no crease pattern: not claimed.
+    double id[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    write_sheet(in, id, true);
+    char *output = NULL;
+    snprintf(args, sizeof args, "unfold '%s'", in);
+    test_run_cli(args, &output);
+    cr_assert_not(strstr(output, "planar (a flat sheet"), "%s", output);
+    free(output);
+    // Origami Simulator's box-pleated pyramid, saved as a flat foldedForm in the x-z plane.
+    const char *os = test_shared_path("origamisimulator/Pleating_BoxPleatPyramid.fold");
+    if (os) {
+        snprintf(args, sizeof args, "unfold '%s' -o '%s'", os, out);
+        cr_assert_eq(test_run_cli(args, &output), 0, "%s", output);
+        cr_assert(strstr(output, "5100 creases (1632 mountain, 1632 valley, 1836 flat"), "%s", output);
+        free(output);
+        ori_pattern *p = test_load_pattern(out, 0);
+        cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 1632);
+        cr_assert_eq(ori_pattern_face_count(p), 2601);
+        ori_pattern_destroy(p);
+    }
+    test_tmpdir_remove(dir);
+}

@@ -134,6 +134,9 @@ static const char *regularize_refusal(const ori_regularize_result *r, const ori_
                  "crease %d folds against its assignment in the only motion its degree-4 vertices allow (the "
                  "assignment does not fit the geometry)",
                  r->against_edge);
+    else if (!r->flat_foldable && r->check_vertex != ORI_NULL_INDEX)
+        snprintf(buf, size, "Kawasaki holds after the moves, but vertex %d is not flat-foldable (%s): %s", r->check_vertex,
+                 ori_flat_rule_name((ori_flat_rule)r->check_rule), r->check_detail);
     else if (!r->converged && def->rigid)
         snprintf(buf, size,
                  "no rigidly foldable pattern was found near this one (Kawasaki %.3g rad, rigid defect %.3g after %d "
@@ -208,6 +211,14 @@ void studio_api_regularize(studio *s, const studio_request *req, studio_response
             json_object_set_new(j, "mode_vertices", rigid ? json_integer(r.mode_vertices) : json_null());
             json_object_set_new(j, "against_edge",
                                 r.against_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.against_edge));
+            json_object_set_new(j, "rigid_only", json_false());
+            json_object_set_new(j, "equal_tolerance_deg", json_real(ori_rad_to_deg_output(r.equal_tolerance_rad)));
+            json_object_set_new(j, "ties", json_integer(r.ties));
+            json_object_set_new(j, "parallels_kept", json_boolean(r.parallels_kept));
+            json_object_set_new(j, "sides_moved", json_boolean(r.sides_moved));
+            json_object_set_new(j, "flat_foldable", json_boolean(r.flat_foldable));
+            json_object_set_new(j, "check_vertex",
+                                r.check_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.check_vertex));
             json_object_set_new(j, "output", json_null());
             bool replaced = false;
             pthread_mutex_lock(&s->lock);

@@ -48,11 +48,13 @@ typedef struct ori_import_def {
     double gap_rel;        ///< a crease end touching nothing (dangling) within gap_rel × the diagonal of another line is extended onto it (a dangling piece shorter than that, an overshoot, is dropped); 0 = off, at most ORI_IMPORT_GAP_MAX_REL; default ORI_IMPORT_GAP_AUTO: the drawing's line width where the reader knows it (SVG stroke-width: lines that touch on the page are joined; capped to ORI_IMPORT_GAP_MAX_REL), else off
     bool merge_collinear;  ///< remove vertices joining just two collinear edges of the same assignment and angle (drawing artefacts); default true
     bool remove_holes;     ///< drop faces bounded only by B/C edges that have paper on their other side (holes); default true
+    bool heal_splits;      ///< when the paper comes out in pieces that lines drawn to meet keep apart (ori_import_stats split_vertex), import again with the smallest doubling of weld_rel up to the drawn line width that joins them (healed_weld_rel); default true (give false with an explicit tolerance)
+    int curve_segments;    ///< SVG curves, arcs, circles, ellipses in crease colours: 0 (default) refuses them (a crease is straight); N > 0 flattens each into N straight creases (at most ORI_IMPORT_CURVE_SEGMENTS_MAX), to view and check a curved-crease drawing
     int internal_value;    ///< set by ori_default_import_def; do not change
 } ori_import_def;
 
 /// Defaults: weld ORI_TOL_IMPORT_WELD_REL, gaps up to the line width closed, merge collinear,
-/// remove holes.
+/// remove holes, split sheets healed within the line width, curves refused.
 ORI_API ori_import_def ori_default_import_def(void);
 
 /// What a reader found besides its segments, and (ori_import_file) what planarising them gave:
@@ -62,6 +64,8 @@ typedef struct ori_import_stats {
     int ignored_elements;    ///< SVG elements with a stroke that is no crease colour; ORIPA aux/cut-model lines
     char ignored_colour[32]; ///< SVG: the first such stroke, as written ("" when none)
     int unsupported_elements;///< SVG elements skipped because orikin does not read them (use, image, text…)
+    int flattened_curves;    ///< SVG: curves, arcs, circles and ellipses flattened into straight segments (ori_import_def curve_segments)
+    int degenerate_aux;      ///< ORIPA auxiliary lines with a coordinate that is no number (NaN, Infinity): skipped (also in ignored_elements)
     double stroke_width;     ///< SVG: the median drawn width of the crease lines, in drawing units (0: unknown)
     double gap_rel;          ///< ori_import_file: the gap closed (def gap_rel, resolved), × the diagonal
     int gaps_closed;         ///< dangling crease ends extended onto a line (or overshoots dropped)
@@ -71,6 +75,13 @@ typedef struct ori_import_stats {
     double dangling_gap_rel; ///< how far the farthest of them is from another line, × the diagonal (0 when none within ORI_IMPORT_GAP_MAX_REL)
     int parts;               ///< separate pieces of the result (connected components; 1 is one sheet)
     int part_example;        ///< a vertex of a piece other than the one holding vertex 0, ORI_NULL_INDEX when one piece
+    int clipped;             ///< crease edges dropped outside the sheet: drawn past a border (B/C edges) that encloses the rest
+    int clipped_faces;       ///< faces those creases made outside the sheet (dropped with them)
+    int sheets;              ///< pieces of paper: faces joined across creases (1 for one sheet)
+    int split_vertex;        ///< a vertex of a piece that is joined to another by lines but by no crease (the sheet is split and falls apart when folded), ORI_NULL_INDEX when none
+    double healed_weld_rel;  ///< the weld tolerance the import used instead of def's to join a split sheet (def heal_splits; within the drawn line width), 0 when not
+    int healed_sheets;       ///< the pieces the paper was in before (when healed)
+    double split_tolerance_rel; ///< ori_import_file: the smallest weld tolerance (a doubling of def's, up to the line width) that joins the split pieces; 0 when none or not split
 } ori_import_stats;
 
 /// Read an SVG document (text of size bytes) into segments: stroke colour → assignment, stroke
@@ -80,6 +91,14 @@ typedef struct ori_import_stats {
 /// ORI_ERR_UNSUPPORTED (curves and arcs in a crease-coloured element, with its line).
 ORI_API ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
                                          ori_import_stats *stats, ori_error *error);
+/// Most straight pieces per curve ori_svg_read_curves and ori_import_def.curve_segments accept.
+#define ORI_IMPORT_CURVE_SEGMENTS_MAX 10000
+/// ori_svg_read_segments, but with curve_segments > 0 every curve and arc of a crease-coloured
+/// path (C S Q T A), circle, ellipse and rounded rect corner becomes curve_segments straight
+/// segments of its assignment (an approximation, counted in stats flattened_curves); 0 refuses
+/// them as ori_svg_read_segments does. ORI_ERR_ARGUMENT beyond ORI_IMPORT_CURVE_SEGMENTS_MAX.
+ORI_API ori_status ori_svg_read_curves(const char *text, size_t size, int curve_segments, ori_segment **segments,
+                                       int *count, ori_import_stats *stats, ori_error *error);
 /// Read ORIPA .opx (XML) into segments (type 1 → B, 2 → M, 3 → V at ±π; aux and cut-model lines
 /// skipped; missing coordinates are 0). Same ownership and errors as ori_svg_read_segments.
 ORI_API ori_status ori_opx_read_segments(const char *text, size_t size, ori_segment **segments, int *count,

@@ -14,6 +14,7 @@
 #define ORIKIN_REGULARIZE_H
 
 #include "base.h"
+#include "flat.h"
 #include "pattern.h"
 
 #ifdef __cplusplus
@@ -24,13 +25,15 @@ extern "C" {
 typedef struct ori_regularize_def {
     bool rigid;             ///< also require rigid foldability from the flat state (assigned
                             ///< modes at degree-4 vertices, second order elsewhere)
+    bool rigid_only;        ///< rigid foldability alone, without Kawasaki (designs that fold
+                            ///< rigidly but not flat: odd degrees allowed, no flat check)
     double max_move_rel;    ///< refuse (result.refused) when a vertex must move farther than this
                             ///< × the sheet's bounding-box diagonal
     int max_iterations;     ///< Gauss–Newton iterations at most (≥ 1)
     int internal_value;     ///< set by ori_default_regularize_def; do not change
 } ori_regularize_def;
 
-/// Defaults: Kawasaki only, max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL, 100 iterations.
+/// Defaults: Kawasaki only (not rigid, not rigid only), max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL, 100 iterations.
 ORI_API ori_regularize_def ori_default_regularize_def(void);
 
 /// What regularization did. Displacements are relative to the sheet's bounding-box diagonal.
@@ -57,12 +60,34 @@ typedef struct ori_regularize_result {
     char crossing[160];         ///< what crosses, when crossing_edge is set
     int against_edge;           ///< rigid only: a crease of a degree-4 vertex whose assigned mode
                                 ///< folds it against its assignment (not converged), or ORI_NULL_INDEX
+    double equal_tolerance_rad; ///< the drawing's precision: angles within it are taken as equal
+                                ///< (4 × its largest Kawasaki miss, see ORI_REGULARIZE_EQUAL_MAX_RAD)
+    int ties;                   ///< equalities kept exactly: equal sectors at a vertex, creases of one
+                                ///< straight line, parallel edges (fewer when all of them cannot hold)
+    bool parallels_kept;        ///< the parallel edges are among the equalities kept
+    bool sides_moved;           ///< the drawing's corners and sides had to move too (slightly, as
+                                ///< every vertex) for its equalities to hold: they were off by its precision
+    bool flat_foldable;         ///< the result passes the full local check (Kawasaki, Maekawa,
+                                ///< big-little-big, the exact test with its assignment)
+    int check_failed;           ///< vertices of the result that fail it (0 when flat_foldable)
+    int check_vertex;           ///< the first of them, or ORI_NULL_INDEX
+    int check_rule;             ///< its broken rule (an ori_flat_rule; ORI_FLAT_RULE_COUNT when none)
+    char check_detail[160];     ///< what fails there, as the check says it
 } ori_regularize_result;
+
+/// Largest angle (radians) regularize takes as the drawing's precision: angles closer than that
+/// (and than 4 × the drawing's largest Kawasaki miss) are equalities of the design, kept exactly.
+#define ORI_REGULARIZE_EQUAL_MAX_RAD 1e-3
 
 /// Regularize a built flat crease pattern: a new built pattern with the same vertices, edges,
 /// assignments, fold angles, faces and names, whose vertices are moved the least (interior
 /// and free vertices in the plane, boundary vertices along their straight boundary line,
-/// corners fixed). F and J edges are not creases (their sectors merge). Fold rates for the
+/// corners fixed). Equalities the drawing holds within its precision (equal_tolerance_rad) stay
+/// exact: equal sectors at a vertex, creases continuing each other straight, parallel edges
+/// (tried in turn until one result passes: all, without the parallels; both again with the
+/// corners and sides moving too, sides kept straight; none). Without rigid_only the
+/// result must pass the full local flat-foldability check (flat_foldable; else not converged,
+/// check_* say why). F and J edges are not creases (their sectors merge). Fold rates for the
 /// rigid conditions start from the assignment and the targets (edges_foldAngle, else ±π).
 /// *out receives the pattern only when the result is converged, not refused and the moves
 /// keep the edges from crossing (else NULL: the result says why); destroy it with

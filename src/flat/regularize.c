@@ -51,6 +51,9 @@ typedef struct reg {
     int niv;
     int *crease_nb, *crease_edge;
     bool rigid;
+    bool kawasaki;       // a Kawasaki row at every even interior vertex (false: rigid only)
+    int ntie, tie_row;   // equalities kept (ties, their rows from tie_row on)
+    struct reg_tie *ties;
     bool rates_only;     // pre-pass: coordinates held, only rates move
     bool polish;         // last steps: plain minimum-norm Newton from the current state
     int rows, cols;
@@ -63,6 +66,17 @@ typedef struct reg {
     double *dr, *r_save;
     double *r_start;     // the start rates (their signs are the assignment's)
 } reg;
+
+// An equality of the drawing kept exactly (within the drawing's precision it holds already):
+// two sectors of an interior vertex equal, two creases of one straight line through it, or two
+// edges parallel. Each angle term is the direction φ of an edge seen from one of its ends.
+enum { TIE_SECTORS, TIE_STRAIGHT, TIE_PARALLEL, TIE_SIDE };
+typedef struct reg_tie {
+    int kind;
+    int iv;    // TIE_SECTORS, TIE_STRAIGHT: the interior vertex (index into iv); TIE_SIDE: a FOLD vertex
+    int i, j;  // sectors (α_i = α_j), creases (from i to j is π), edges (parallel), or the two
+               // boundary neighbours of a vertex on a straight side (from i to j is π)
+} reg_tie;
 
 static void push(reg *g, int row, int col, double val)
 {
@@ -96,6 +110,8 @@ static void push_vertex(reg *g, int row, int v, ori_v2 grad)
 
 static double cross2(ori_v2 a, ori_v2 b) { return a.x * b.y - a.y * b.x; }
 
+static void assemble_ties(reg *g);
+
 // Assemble the equation values c and the triplets of the Jacobian at the current state. The
 // column scaling W^{-1/2} is applied here (rate columns × 1/√w).
 static void assemble(reg *g)
@@ -116,7 +132,7 @@ static void assemble(reg *g)
             u[k] = ori_v2_make(d[k].x / len[k], d[k].y / len[k]);
         }
         ori_v2 gsum = {0.0, 0.0};
-        if (n % 2 == 0) {
+        if (g->kawasaki && n % 2 == 0) {
             double K = 0.0;
             for (int k = 0; k < n; ++k) {
                 int k1 = (k + 1) % n;
@@ -201,6 +217,63 @@ static void assemble(reg *g)
         push_vertex(g, row + 1, v, sy);
         if (!moded) push_vertex(g, row + 2, v, sq);
     }
+    assemble_ties(g);
+}
+
+// The direction of the edge from vertex a to vertex b, with its gradient (scaled coordinates)
+// pushed into row with coefficient c: ∂φ/∂b = (−d_y, d_x)/|d|², ∂φ/∂a the opposite.
+static double push_direction(reg *g, int row, int a, int b, double c)
+{
+    ori_v2 d = ori_v2_make(g->x[b].x - g->x[a].x, g->x[b].y - g->x[a].y);
+    double l2 = d.x * d.x + d.y * d.y, s = c * g->L / l2;
+    ori_v2 gb = ori_v2_make(-d.y * s, d.x * s);
+    push_vertex(g, row, b, gb);
+    push_vertex(g, row, a, ori_v2_make(-gb.x, -gb.y));
+    return atan2(d.y, d.x);
+}
+
+// An angle difference wrapped into (−π, π] (period 2π) or (−π/2, π/2] (period π: directions
+// of undirected edges).
+static double wrap(double a, double period)
+{
+    a = fmod(a, period);
+    if (a > 0.5 * period) a -= period;
+    if (a <= -0.5 * period) a += period;
+    return a;
+}
+
+// The tie rows (after every vertex's rows): their values into c and their gradients.
+static void assemble_ties(reg *g)
+{
+    for (int t = 0; t < g->ntie; ++t) {
+        const reg_tie *T = &g->ties[t];
+        int row = g->tie_row + t;
+        if (T->kind == TIE_PARALLEL) {
+            const ori_edge *a = &g->p->edges[T->i], *b = &g->p->edges[T->j];
+            double pa = push_direction(g, row, a->v[0], a->v[1], 1.0);
+            double pb = push_direction(g, row, b->v[0], b->v[1], -1.0);
+            g->c[row] = wrap(pa - pb, ORI_PI);
+            continue;
+        }
+        if (T->kind == TIE_SIDE) {
+            double pi = push_direction(g, row, T->iv, T->i, -1.0), pj = push_direction(g, row, T->iv, T->j, 1.0);
+            g->c[row] = wrap(pj - pi - ORI_PI, 2.0 * ORI_PI);
+            continue;
+        }
+        const reg_vertex *V = &g->iv[T->iv];
+        int n = V->count, v = V->v;
+        const int *nb = g->crease_nb + V->first;
+        if (T->kind == TIE_STRAIGHT) { // from crease i counter-clockwise to crease j is π
+            double pi = push_direction(g, row, v, nb[T->i], -1.0), pj = push_direction(g, row, v, nb[T->j], 1.0);
+            g->c[row] = wrap(pj - pi - ORI_PI, 2.0 * ORI_PI);
+            continue;
+        }
+        // α_i − α_j with α_k = φ_{k+1} − φ_k (each sector below 2π: the wrap is exact)
+        int i1 = (T->i + 1) % n, j1 = (T->j + 1) % n;
+        double a1 = push_direction(g, row, v, nb[i1], 1.0), a0 = push_direction(g, row, v, nb[T->i], -1.0);
+        double b1 = push_direction(g, row, v, nb[j1], -1.0), b0 = push_direction(g, row, v, nb[T->j], 1.0);
+        g->c[row] = wrap(wrap(a1 - a0, 2.0 * ORI_PI) - wrap(b1 - b0, 2.0 * ORI_PI), 2.0 * ORI_PI);
+    }
 }
 
 // A degree-4 vertex whose start rates (targets or assignment) have three signs alike and one
@@ -244,7 +317,7 @@ static void defects(const reg *g, double *kaw, double *rig)
     for (int a = 0; a < g->niv; ++a) {
         const reg_vertex *V = &g->iv[a];
         int row = V->row;
-        if (V->count % 2 == 0) {
+        if (g->kawasaki && V->count % 2 == 0) {
             if (fabs(g->c[row]) > *kaw) *kaw = fabs(g->c[row]);
             row++;
         }
@@ -252,6 +325,8 @@ static void defects(const reg *g, double *kaw, double *rig)
             for (int k = 0; k < V->nrig; ++k)
                 if (fabs(g->c[row + k]) > *rig) *rig = fabs(g->c[row + k]);
     }
+    for (int t = 0; t < g->ntie; ++t) // (angles, as Kawasaki's)
+        if (fabs(g->c[g->tie_row + t]) > *kaw) *kaw = fabs(g->c[g->tie_row + t]);
 }
 
 // One Gauss–Newton step (see the file comment): the change of the coordinates and rates into
@@ -355,6 +430,7 @@ ori_regularize_def ori_default_regularize_def(void)
 {
     ori_regularize_def def;
     def.rigid = false;
+    def.rigid_only = false;
     def.max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL;
     def.max_iterations = 100;
     def.internal_value = ORI__DEF_COOKIE;
@@ -448,11 +524,129 @@ static int solve(reg *g, int max_iterations, double kaw_tol, double rig_tol, boo
     return it;
 }
 
-ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, ori_pattern **out,
-                          ori_regularize_result *res, ori_error *error)
+static int compare_keyed(const void *a, const void *b)
 {
-    ORI_ASSERT(p && def && out && res && def->internal_value == ORI__DEF_COOKIE);
-    ORI_ASSERT(def->max_iterations >= 1 && def->max_move_rel >= 0.0);
+    const double *x = a, *y = b;
+    return x[0] < y[0] ? -1 : x[0] > y[0];
+}
+
+// Whether the direction of edge e cannot change: both ends fixed, or sliding along the edge's
+// own line (a boundary edge on a straight side).
+static bool direction_fixed(const reg *g, int e)
+{
+    const ori_edge *ed = &g->p->edges[e];
+    for (int k = 0; k < 2; ++k) {
+        int kind = g->kind[ed->v[k]];
+        if (!(kind == VK_FIXED || (kind == VK_SLIDE && is_boundary_edge(ed->assignment)))) return false;
+    }
+    return true;
+}
+
+static void add_tie(reg *g, int *cap, int kind, int iv, int i, int j);
+static void find_ties(reg *g, int *cap, double tau, bool parallel);
+static bool is_boundary_edge(ori_assignment a);
+
+static void add_tie(reg *g, int *cap, int kind, int iv, int i, int j)
+{
+    if (g->ntie == *cap) {
+        *cap = *cap ? 2 * *cap : 64;
+        g->ties = ori__realloc(g->ties, sizeof(reg_tie) * (size_t)*cap);
+    }
+    reg_tie t = {kind, iv, i, j};
+    g->ties[g->ntie++] = t;
+}
+
+// The equalities of the drawing within tau (radians), as ties: at every interior vertex the
+// sectors within tau of each other (chained in sorted order) and the creases that continue each
+// other straight; with parallel, edges whose directions lie within tau (chained, modulo π),
+// each tied to a member whose direction cannot change when there is one.
+static void find_ties(reg *g, int *cap, double tau, bool parallel)
+{
+    double key[2 * ORI__FLAT_STACK_DEGREE];
+    for (int a = 0; a < g->niv; ++a) {
+        const reg_vertex *V = &g->iv[a];
+        int n = V->count;
+        if (n < 2) continue;
+        double phi[ORI__FLAT_STACK_DEGREE];
+        for (int k = 0; k < n; ++k) {
+            ori_v2 q = g->x0[g->crease_nb[V->first + k]], c = g->x0[V->v];
+            phi[k] = atan2(q.y - c.y, q.x - c.x);
+        }
+        for (int k = 0; k < n; ++k) {
+            double al = wrap(phi[(k + 1) % n] - phi[k], 2.0 * ORI_PI);
+            if (al <= 0.0) al += 2.0 * ORI_PI;
+            key[2 * k] = al, key[2 * k + 1] = k;
+        }
+        qsort(key, (size_t)n, 2 * sizeof(double), compare_keyed);
+        for (int k = 0; k + 1 < n; ++k)
+            if (key[2 * k + 2] - key[2 * k] <= tau) add_tie(g, cap, TIE_SECTORS, a, (int)key[2 * k + 1], (int)key[2 * k + 3]);
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                if (i != j && fabs(wrap(phi[j] - phi[i] - ORI_PI, 2.0 * ORI_PI)) <= tau && i < j)
+                    add_tie(g, cap, TIE_STRAIGHT, a, i, j);
+    }
+    if (!parallel) return;
+    int ne = g->p->edge_count, m = 0;
+    double *dir = ori__alloc(sizeof(double) * 2 * (size_t)(ne + 1));
+    for (int e = 0; e < ne; ++e) {
+        const ori_edge *ed = &g->p->edges[e];
+        if (ed->assignment == ORI_ASSIGN_JOIN) continue;
+        ori_v2 a = g->x0[ed->v[0]], b = g->x0[ed->v[1]];
+        double t = atan2(b.y - a.y, b.x - a.x);
+        if (t < 0.0) t += ORI_PI;
+        if (t >= ORI_PI) t -= ORI_PI;
+        dir[2 * m] = t, dir[2 * m + 1] = e;
+        m++;
+    }
+    qsort(dir, (size_t)m, 2 * sizeof(double), compare_keyed);
+    // classes: runs of directions within tau of the previous one, the last run joined to the
+    // first when they meet across 0 = π
+    int start = 0;
+    if (m > 1 && dir[0] + ORI_PI - dir[2 * (m - 1)] <= tau) {
+        start = m - 1;
+        while (start > 0 && dir[2 * start] - dir[2 * (start - 1)] <= tau) --start;
+        if (start == 0) start = m; // (everything one class: treat as not wrapping)
+        else start = start % m;
+    }
+    if (start == m) start = 0;
+    int *cls = ori__alloc(sizeof(int) * (size_t)(m + 1));
+    for (int k = 0; k < m;) {
+        int n = 0, first = (start + k) % m;
+        cls[n++] = (int)dir[2 * first + 1];
+        int at = first;
+        ++k;
+        while (k < m) {
+            int nx = (start + k) % m;
+            double gap = dir[2 * nx] - dir[2 * at];
+            if (gap < 0.0) gap += ORI_PI;
+            if (gap > tau) break;
+            cls[n++] = (int)dir[2 * nx + 1];
+            at = nx;
+            ++k;
+        }
+        if (n < 2) continue;
+        int anchor = -1;
+        for (int i = 0; i < n && anchor < 0; ++i)
+            if (direction_fixed(g, cls[i])) anchor = i;
+        for (int i = 0; i < n; ++i) {
+            if (anchor >= 0) {
+                if (i != anchor && !direction_fixed(g, cls[i])) add_tie(g, cap, TIE_PARALLEL, -1, cls[i], cls[anchor]);
+            } else if (i > 0) {
+                add_tie(g, cap, TIE_PARALLEL, -1, cls[i], cls[i - 1]);
+            }
+        }
+    }
+    ori__free(cls);
+    ori__free(dir);
+}
+
+// One regularization with the ties of level (2: sectors, straight lines and parallels within
+// tau; 1: sectors and straight lines; 0: none). With free_sides the corners and sides move too
+// (every vertex free, a vertex on a straight side kept on a straight line through its
+// neighbours): the drawing's own corners may miss its equalities by its precision.
+static ori_status regularize_level(const ori_pattern *p, const ori_regularize_def *def, int level, bool free_sides,
+                                   double tau, ori_pattern **out, ori_regularize_result *res, ori_error *error)
+{
     *out = NULL;
     memset(res, 0, sizeof *res);
     res->odd_vertex = ORI_NULL_INDEX;
@@ -468,7 +662,8 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
     g.p = p;
     g.nv = p->vertex_count;
     g.L = ori_pattern_diagonal(p);
-    g.rigid = def->rigid;
+    g.rigid = def->rigid || def->rigid_only;
+    g.kawasaki = !def->rigid_only;
     g.w_rate = ORI_REGULARIZE_RATE_WEIGHT;
     g.polish = false;
     g.fixed_edge = ORI_NULL_INDEX;
@@ -486,6 +681,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         g.x0[v] = g.x[v] = ori_v2_make(q.x, q.y);
     }
 
+    int tie_cap = 0;
     // Vertex kinds: interior vertices and vertices off the boundary move freely; a boundary
     // vertex between two collinear boundary edges slides along them; other boundary vertices
     // (corners, ends of slits) stay.
@@ -510,7 +706,9 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
             double la = sqrt(a.x * a.x + a.y * a.y), lb = sqrt(b.x * b.x + b.y * b.y);
             // Straight through: the two boundary edges point in opposite directions.
             double sin_turn = cross2(a, b) / (la * lb), cos_turn = (a.x * b.x + a.y * b.y) / (la * lb);
-            if (cos_turn < 0.0 && fabs(sin_turn) <= ORI_REGULARIZE_BOUNDARY_STRAIGHT_RAD) {
+            if (cos_turn < 0.0 && fabs(sin_turn) <= ORI_REGULARIZE_BOUNDARY_STRAIGHT_RAD && free_sides) {
+                add_tie(&g, &tie_cap, TIE_SIDE, v, bnb[0], bnb[1]);
+            } else if (cos_turn < 0.0 && fabs(sin_turn) <= ORI_REGULARIZE_BOUNDARY_STRAIGHT_RAD) {
                 g.kind[v] = VK_SLIDE;
                 ori_v2 t = ori_v2_make(b.x / lb - a.x / la, b.y / lb - a.y / la);
                 double lt = sqrt(t.x * t.x + t.y * t.y);
@@ -519,6 +717,9 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         }
     }
 
+    if (free_sides)
+        for (int v = 0; v < g.nv; ++v) g.kind[v] = VK_FREE;
+    res->sides_moved = free_sides;
     // Interior vertices and their creases.
     int total_creases = 0;
     for (int v = 0; v < g.nv; ++v)
@@ -544,7 +745,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
             g.crease_nb[used + k] = e.v[0] == v ? e.v[1] : e.v[0];
             g.is_crease[g.crease_edge[used + k]] = true;
         }
-        if (n % 2 != 0 && res->odd_vertex == ORI_NULL_INDEX) res->odd_vertex = v;
+        if (g.kawasaki && n % 2 != 0 && res->odd_vertex == ORI_NULL_INDEX) res->odd_vertex = v;
         g.iv[a].v = v;
         g.iv[a].first = used;
         g.iv[a].count = n;
@@ -577,7 +778,8 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
     memcpy(g.r_start, g.rate, sizeof(double) * (size_t)ne);
     for (int i = 0; i < g.niv; ++i) {
         g.iv[i].nrig = 3;
-        if (g.rigid && mode_of(&g, &g.iv[i])) {
+        // (The mode relations hold at flat-foldable degree-4 vertices: not without Kawasaki.)
+        if (g.rigid && g.kawasaki && mode_of(&g, &g.iv[i])) {
             g.iv[i].nrig = 4;
             res->mode_vertices++;
         }
@@ -594,8 +796,14 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
             if (g.is_crease[e] && e != g.fixed_edge) g.col_r[e] = g.cols++;
     for (int i = 0; i < g.niv; ++i) {
         g.iv[i].row = g.rows;
-        g.rows += (g.iv[i].count % 2 == 0 ? 1 : 0) + (g.rigid ? g.iv[i].nrig : 0);
+        g.rows += (g.kawasaki && g.iv[i].count % 2 == 0 ? 1 : 0) + (g.rigid ? g.iv[i].nrig : 0);
     }
+    if (level > 0) find_ties(&g, &tie_cap, tau, level > 1);
+    g.tie_row = g.rows;
+    g.rows += g.ntie;
+    res->ties = g.ntie;
+    res->parallels_kept = level > 1;
+    res->equal_tolerance_rad = tau;
     g.c = ori__calloc((size_t)g.rows + 1, sizeof(double));
     g.dx = ori__calloc((size_t)g.nv + 1, sizeof(ori_v2));
     g.x_save = ori__calloc((size_t)g.nv + 1, sizeof(ori_v2));
@@ -625,7 +833,8 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         assemble(&g);
         defects(&g, &kaw, &rig);
         res->rigid_after = rig;
-        if (g.fixed_edge == ORI_NULL_INDEX) converged = false;
+        // (No interior vertex: nothing constrains the rates, every crease folds on its own.)
+        if (g.fixed_edge == ORI_NULL_INDEX && g.niv > 0) converged = false;
         // In its assigned mode every crease of a degree-4 vertex folds with the sign it started
         // with, unless the geometry forbids that assignment (the odd crease on the wrong side):
         // then the motion exists only against the assignment.
@@ -681,7 +890,7 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         goto fail;
     }
     res->kawasaki_after_rad = max_kawasaki(q);
-    res->converged = res->kawasaki_after_rad <= ORI_TOL_REGULARIZE_KAWASAKI_RAD;
+    res->converged = !g.kawasaki || res->kawasaki_after_rad <= ORI_TOL_REGULARIZE_KAWASAKI_RAD;
     *out = q;
 fail:
     ori__free(g.x0);
@@ -704,5 +913,82 @@ fail:
     ori__free(g.dr);
     ori__free(g.r_save);
     ori__free(g.r_start);
+    ori__free(g.ties);
     return st;
+}
+
+// The drawing's precision, for the equalities kept: four times the largest Kawasaki miss of the
+// even interior vertices that miss by at most ORI_REGULARIZE_EQUAL_MAX_RAD (farther ones are not
+// rounded flat-foldable vertices), within [ORI_TOL_ANGLE_EQUAL_RAD, ORI_REGULARIZE_EQUAL_MAX_RAD].
+static double equal_tolerance(const ori_pattern *p)
+{
+    double worst = 0.0, sec[ORI__FLAT_STACK_DEGREE];
+    for (int v = 0; v < p->vertex_count; ++v) {
+        if (!ori_pattern_vertex_is_interior(p, v)) continue;
+        int n = ori_flat_vertex_creases(p, v, NULL, sec, ORI__FLAT_STACK_DEGREE);
+        if (n > ORI__FLAT_STACK_DEGREE || n % 2 != 0) continue;
+        double k = fabs(ori_flat_kawasaki_sum(sec, n));
+        if (k <= ORI_REGULARIZE_EQUAL_MAX_RAD && k > worst) worst = k;
+    }
+    return fmin(fmax(4.0 * worst, ORI_TOL_ANGLE_EQUAL_RAD), ORI_REGULARIZE_EQUAL_MAX_RAD);
+}
+
+// The full local check of a result (Kawasaki, Maekawa, big-little-big, the exact test with the
+// assignment): the first failing vertex and rule into res.
+static bool local_check(const ori_pattern *q, ori_regularize_result *res)
+{
+    ori_flat_check_def cd = ori_default_flat_check_def();
+    cd.record_vertices = false;
+    ori_flat_report *rep = ori_flat_check_pattern(q, &cd);
+    bool ok = ori_flat_report_flat_foldable(rep);
+    res->check_failed = ori_flat_report_failed_count(rep);
+    if (!ok && ori_flat_report_violation_count(rep) > 0) {
+        ori_flat_violation v = ori_flat_report_violation(rep, 0);
+        res->check_vertex = v.vertex;
+        res->check_rule = v.rule;
+        ori__strlcpy(res->check_detail, v.detail, sizeof res->check_detail);
+    }
+    ori_flat_report_destroy(rep);
+    return ok;
+}
+
+ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, ori_pattern **out,
+                          ori_regularize_result *res, ori_error *error)
+{
+    ORI_ASSERT(p && def && out && res && def->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT(def->max_iterations >= 1 && def->max_move_rel >= 0.0);
+    *out = NULL;
+    if (!p->built) {
+        memset(res, 0, sizeof *res);
+        return ori__fail(error, ORI_ERR_ARGUMENT, "the pattern is not built");
+    }
+    double tau = equal_tolerance(p);
+    // The drawing's equalities kept, as many as the conditions allow, the corners and sides where
+    // they are if possible: all of them, then without the parallels; then the same with the
+    // corners and sides free; then none. Each result is checked in full and the first that
+    // passes is taken (rigid only: the first found, there is no flat check to pass).
+    ori_pattern *q = NULL;
+    static const int levels[5] = {2, 1, 2, 1, 0};
+    static const bool free_sides[5] = {false, false, true, true, false};
+    for (int t = 0; t < 5; ++t) {
+        int level = levels[t];
+        ori_status st = regularize_level(p, def, level, free_sides[t], tau, &q, res, error);
+        if (st != ORI_OK) return st;
+        res->check_vertex = ORI_NULL_INDEX;
+        res->check_rule = ORI_FLAT_RULE_COUNT;
+        res->check_failed = 0;
+        res->check_detail[0] = '\0';
+        res->flat_foldable = false;
+        if (q) {
+            res->flat_foldable = local_check(q, res);
+            if (res->flat_foldable || def->rigid_only) break;
+            res->converged = false; // Kawasaki holds, the full check does not (check_*: why)
+            ori_pattern_destroy(q);
+            q = NULL;
+            if (res->check_rule == ORI_FLAT_RULE_MAEKAWA) break; // (the assignment's, no geometry helps)
+        }
+        if (res->odd_vertex != ORI_NULL_INDEX) break; // (no tie helps a vertex of odd degree)
+    }
+    *out = q;
+    return ORI_OK;
 }

@@ -45,12 +45,14 @@ ori_import_def ori_default_import_def(void)
     def.gap_rel = ORI_IMPORT_GAP_AUTO;
     def.merge_collinear = true;
     def.remove_holes = true;
+    def.curve_segments = 0;
+    def.heal_splits = true;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
 
-ori_status ori_read_segments(const char *path, ori_format format, ori_segment **segments, int *count,
-                             ori_import_stats *stats, ori_error *error)
+static ori_status read_segments(const char *path, ori_format format, int curve_segments, ori_segment **segments,
+                                int *count, ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
@@ -67,11 +69,17 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
     ori_status st = ori_file_read_all(path, ORI_IMPORT_MAX_BYTES, &text, &size, error);
     if (st != ORI_OK) return st;
     if (size == 0) st = ori__fail(error, ORI_ERR_PARSE, "the file is empty");
-    else if (format == ORI_FORMAT_SVG) st = ori_svg_read_segments(text, size, segments, count, stats, error);
+    else if (format == ORI_FORMAT_SVG) st = ori_svg_read_curves(text, size, curve_segments, segments, count, stats, error);
     else if (format == ORI_FORMAT_OPX) st = ori_opx_read_segments(text, size, segments, count, stats, error);
     else st = ori_cp_read_segments(text, size, segments, count, stats, error);
     ori__free(text);
     return st;
+}
+
+ori_status ori_read_segments(const char *path, ori_format format, ori_segment **segments, int *count,
+                             ori_import_stats *stats, ori_error *error)
+{
+    return read_segments(path, format, 0, segments, count, stats, error);
 }
 
 // --- planarisation and clean-up --------------------------------------------------------------
@@ -492,6 +500,66 @@ static ori_segment *close_gaps(const ori_pattern *p, double gap, int *n, int *cl
     return segs;
 }
 
+// Creases drawn past the border (a drawing's lines overshooting its outline) make faces outside
+// the sheet, joined to it only across the border: the sheet "falls apart" when folded. Faces
+// reached from outside the drawing across creases (not B or C edges) lie outside the sheet;
+// when there are some and they cover less than the rest, the edges with no face of the sheet on
+// either side are dropped. Returns the segments of the rest (NULL when nothing is clipped) with
+// their count in *n, the creases dropped in *clipped and the faces outside in *faces.
+static ori_segment *clip_outside(const ori_pattern *p, int *n, int *clipped, int *faces)
+{
+    *n = *clipped = *faces = 0;
+    int nf = p->face_count, ne = p->edge_count;
+    if (nf == 0) return NULL;
+    char *out = ori__calloc((size_t)nf, 1);
+    int *queue = ori__alloc(sizeof(int) * (size_t)nf);
+    int head = 0, tail = 0;
+    for (int e = 0; e < ne; ++e) {
+        int l = p->edge_faces[2 * e], r = p->edge_faces[2 * e + 1];
+        if (is_cut_or_boundary(p->edges[e].assignment) || (l == ORI_NULL_INDEX) == (r == ORI_NULL_INDEX)) continue;
+        int f = l == ORI_NULL_INDEX ? r : l;
+        if (!out[f]) out[f] = 1, queue[tail++] = f;
+    }
+    while (head < tail) {
+        int f = queue[head++];
+        for (int k = p->face_offsets[f]; k < p->face_offsets[f + 1]; ++k) {
+            int e = p->face_edges[k];
+            if (is_cut_or_boundary(p->edges[e].assignment)) continue;
+            for (int s = 0; s < 2; ++s) {
+                int g = p->edge_faces[2 * e + s];
+                if (g != ORI_NULL_INDEX && !out[g]) out[g] = 1, queue[tail++] = g;
+            }
+        }
+    }
+    double area_out = 0.0, area_in = 0.0;
+    for (int f = 0; f < nf; ++f) {
+        double a = fabs(ori__pattern_face_area2(p, f));
+        if (out[f]) area_out += a;
+        else area_in += a;
+    }
+    ori__free(queue);
+    // (No border drawn, or one that is open: everything is reached, nothing is clipped.)
+    if (tail == 0 || !(area_out < area_in)) {
+        ori__free(out);
+        return NULL;
+    }
+    ori_segment *segs = ori__alloc(sizeof(ori_segment) * (size_t)ne);
+    for (int e = 0; e < ne; ++e) {
+        const ori_edge *ed = &p->edges[e];
+        int l = p->edge_faces[2 * e], r = p->edge_faces[2 * e + 1];
+        bool sheet = (l != ORI_NULL_INDEX && !out[l]) || (r != ORI_NULL_INDEX && !out[r]);
+        if (!sheet) {
+            *clipped += !is_cut_or_boundary(ed->assignment);
+            continue;
+        }
+        ori_segment s = {ori__pattern_v2(p, ed->v[0]), ori__pattern_v2(p, ed->v[1]), ed->assignment, ed->fold_angle_rad};
+        segs[(*n)++] = s;
+    }
+    *faces = tail;
+    ori__free(out);
+    return segs;
+}
+
 // Dangling ends and separate pieces of the result, with examples and how far the dangling ends
 // are from another line (up to ORI_IMPORT_GAP_MAX_REL of the diagonal).
 static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
@@ -515,6 +583,36 @@ static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
         if (d <= reach) stats->dangling_gap_rel = fmax(stats->dangling_gap_rel, d / diag);
     }
     if (grid) line_grid_free(&g);
+    // Sheets: faces joined across creases. Two sheets in one connected part of the drawing (joined
+    // by boundary or cut lines, at corners or by lines with no paper on either side) are a
+    // drawing split there: lines drawn to meet that miss each other, a border drawn through the
+    // sheet. Folding says it falls apart.
+    int nf = p->face_count;
+    stats->sheets = 0;
+    stats->split_vertex = ORI_NULL_INDEX;
+    if (nf > 0) {
+        int *sheet = ori__alloc(sizeof(int) * (size_t)nf);
+        for (int f = 0; f < nf; ++f) sheet[f] = f;
+        for (int e = 0; e < p->edge_count; ++e) {
+            int l = p->edge_faces[2 * e], r = p->edge_faces[2 * e + 1];
+            if (l == ORI_NULL_INDEX || r == ORI_NULL_INDEX || is_cut_or_boundary(p->edges[e].assignment)) continue;
+            int a = ori__uf_root(sheet, l), b = ori__uf_root(sheet, r);
+            if (a != b) sheet[a < b ? b : a] = a < b ? a : b;
+        }
+        for (int f = 0; f < nf; ++f) stats->sheets += ori__uf_root(sheet, f) == f;
+        // (split: two sheets in one connected part of the drawing)
+        int *comp = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1)), *held = ori__alloc(sizeof(int) * (size_t)(nv ? nv : 1));
+        ori__pattern_parts(p, comp);
+        for (int v = 0; v < nv; ++v) held[v] = ORI_NULL_INDEX;
+        for (int f = 0; f < nf && stats->split_vertex == ORI_NULL_INDEX; ++f) {
+            int r = ori__uf_root(sheet, f), v = p->face_vertices[p->face_offsets[f]], c = comp[v];
+            if (held[c] == ORI_NULL_INDEX) held[c] = r;
+            else if (held[c] != r) stats->split_vertex = v;
+        }
+        ori__free(comp);
+        ori__free(held);
+        ori__free(sheet);
+    }
     int *comp = deg; // (reused)
     stats->parts = ori__pattern_parts(p, comp);
     stats->part_example = ORI_NULL_INDEX;
@@ -526,10 +624,27 @@ static void diagnose(const ori_pattern *p, double diag, ori_import_stats *stats)
     ori__free(deg);
 }
 
+// The fields of stats that planarisation sets (not the reader's), from src.
+static void copy_planarised(ori_import_stats *dst, const ori_import_stats *src)
+{
+    dst->gap_rel = src->gap_rel;
+    dst->gaps_closed = src->gaps_closed;
+    dst->largest_gap_rel = src->largest_gap_rel;
+    dst->dangling = src->dangling;
+    dst->dangling_example = src->dangling_example;
+    dst->dangling_gap_rel = src->dangling_gap_rel;
+    dst->parts = src->parts;
+    dst->part_example = src->part_example;
+    dst->clipped = src->clipped;
+    dst->clipped_faces = src->clipped_faces;
+    dst->sheets = src->sheets;
+    dst->split_vertex = src->split_vertex;
+}
+
 // Planarise, close the gaps, check for islands; stats (may be NULL) receives the diagnosis.
 // stroke_width: the drawing's line width in its units (0: unknown).
 static ori_status to_pattern(const ori_segment *segs, int count, const ori_import_def *def, double stroke_width,
-                             ori_pattern **out, ori_import_stats *stats, ori_error *error)
+                             bool suggest, ori_pattern **out, ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(out && count >= 0 && (segs || count == 0));
     *out = NULL;
@@ -574,6 +689,18 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         st = n > 0 ? pipeline(fixed, n, def, weld, &p, error) : ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
         ori__free(fixed);
     }
+    // Creases drawn past the border: clipped at it (the faces outside the sheet are dropped).
+    int clipped = 0, clipped_faces = 0;
+    if (st == ORI_OK) {
+        int n;
+        ori_segment *kept = clip_outside(p, &n, &clipped, &clipped_faces);
+        if (kept) {
+            ori_pattern_destroy(p);
+            p = NULL;
+            st = pipeline(kept, n, def, weld, &p, error);
+            ori__free(kept);
+        }
+    }
     // Every line shorter than the weld (a drawing whose extent comes from a far-away stray line):
     // nothing is left, which is no crease pattern.
     if (st == ORI_OK && p->edge_count == 0)
@@ -591,7 +718,39 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         stats->gap_rel = gap_rel;
         stats->gaps_closed = closed;
         stats->largest_gap_rel = largest / diag;
+        stats->clipped = clipped;
+        stats->clipped_faces = clipped_faces;
         diagnose(p, diag, stats);
+        stats->split_tolerance_rel = 0.0;
+        stats->healed_weld_rel = 0.0;
+        stats->healed_sheets = 0;
+        // Split by boundary lines: lines drawn to meet may miss by more than the weld; find the
+        // smallest doubling of the weld, up to the drawn line width (or 32 times the weld when
+        // the drawing has none), that makes the split sheets one.
+        double reach = fmin(fmax(gap_rel, 32.0 * def->weld_rel), ORI_IMPORT_GAP_MAX_REL);
+        for (double w = 2.0 * def->weld_rel; suggest && stats->split_vertex != ORI_NULL_INDEX && w <= reach; w *= 2.0) {
+            ori_import_def wider = *def;
+            wider.weld_rel = w;
+            ori_import_stats s2;
+            ori_pattern *q = NULL;
+            ori_status st2 = to_pattern(segs, count, &wider, stroke_width, false, &q, &s2, NULL);
+            if (st2 == ORI_OK && s2.split_vertex == ORI_NULL_INDEX) {
+                stats->split_tolerance_rel = w;
+                // Within the drawn line width the lines touch on the page: joined, as gaps are.
+                if (def->heal_splits && w <= gap_rel) {
+                    int sheets = stats->sheets;
+                    copy_planarised(stats, &s2);
+                    stats->healed_weld_rel = w;
+                    stats->healed_sheets = sheets;
+                    ori_pattern_destroy(p);
+                    p = q;
+                    q = NULL;
+                }
+                ori_pattern_destroy(q);
+                break;
+            }
+            ori_pattern_destroy(q);
+        }
     }
     *out = p;
     return ORI_OK;
@@ -600,7 +759,7 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
 ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori_import_def *def, ori_pattern **out,
                                    ori_error *error)
 {
-    return to_pattern(segs, count, def, 0.0, out, NULL, error);
+    return to_pattern(segs, count, def, 0.0, false, out, NULL, error);
 }
 
 ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def, ori_pattern **out,
@@ -611,10 +770,10 @@ ori_status ori_import_file(const char *path, ori_format format, const ori_import
     ori_segment *segs;
     int n;
     ori_import_stats found;
-    ori_status st = ori_read_segments(path, format, &segs, &n, &found, error);
+    ori_status st = read_segments(path, format, def ? def->curve_segments : 0, &segs, &n, &found, error);
     if (stats) *stats = found;
     if (st != ORI_OK) return st;
-    st = to_pattern(segs, n, def, found.stroke_width, out, &found, error);
+    st = to_pattern(segs, n, def, found.stroke_width, true, out, &found, error);
     ori__free(segs);
     if (stats) *stats = found;
     return st;

@@ -22,6 +22,29 @@ static bool oripa_type(double type, ori_assignment *asg, bool *skip)
     return true;
 }
 
+// Java's Double.toString of a value that is no number: "NaN", "Infinity", "-Infinity" (XMLEncoder).
+static bool java_nonfinite(const char *s)
+{
+    size_t n = strlen(s);
+    while (n > 0 && (s[n - 1] == ' ' || s[n - 1] == '\t' || s[n - 1] == '\n' || s[n - 1] == '\r')) --n;
+    if (*s == '-' || *s == '+') ++s, --n;
+    return (n == 3 && strncmp(s, "NaN", 3) == 0) || (n == 8 && strncmp(s, "Infinity", 8) == 0);
+}
+
+// "nan", "inf", "infinity" with an optional sign, any case (C's and Java's spellings), ending at
+// a separator: its length, else 0.
+static size_t nonfinite_word(const char *q)
+{
+    const char *p = q + (*q == '-' || *q == '+');
+    static const char *const words[] = {"infinity", "nan", "inf"};
+    for (size_t w = 0; w < 3; ++w) {
+        size_t n = strlen(words[w]), i = 0;
+        while (i < n && p[i] && (p[i] | 0x20) == words[w][i]) ++i;
+        if (i == n && (!p[n] || p[n] == ' ' || p[n] == '\t' || p[n] == '\r')) return (size_t)(p - q) + n;
+    }
+    return 0;
+}
+
 static double flat_angle(ori_assignment a)
 {
     return a == ORI_ASSIGN_MOUNTAIN ? -ORI_PI : a == ORI_ASSIGN_VALLEY ? ORI_PI : 0.0;
@@ -62,6 +85,8 @@ static ori_status opx_line(opx_ctx *c, const xmlNode *obj)
 {
     static const char *const names[5] = {"type", "x0", "y0", "x1", "y1"};
     double v[5] = {0, 0, 0, 0, 0};
+    int nonfinite = -1; // the first coordinate that is NaN or ±Infinity (Java's spellings), -1: none
+    const xmlNode *nonfinite_at = NULL;
     for (const xmlNode *p = obj->children; p; p = p->next) {
         if (p->type != XML_ELEMENT_NODE || strcmp((const char *)p->name, "void") != 0) continue;
         char *prop = ori__xml_attr(p, "property", &c->budget);
@@ -80,6 +105,10 @@ static ori_status opx_line(opx_ctx *c, const xmlNode *obj)
         const char *rest = s + n;
         while (*rest == ' ' || *rest == '\t' || *rest == '\n' || *rest == '\r') ++rest;
         bool ok = n > 0 && *rest == '\0';
+        if (!ok && k > 0 && java_nonfinite(s)) {
+            ok = true;
+            if (nonfinite < 0) nonfinite = k, nonfinite_at = val;
+        }
         ori__free(text);
         if (!ok)
             return ori__fail_pos(c->error, ORI_ERR_PARSE, (int)xmlGetLineNo(val ? val : p), 0,
@@ -87,7 +116,16 @@ static ori_status opx_line(opx_ctx *c, const xmlNode *obj)
     }
     ori_assignment asg;
     bool skip;
-    if (!oripa_type(v[0], &asg, &skip)) {
+    bool line = oripa_type(v[0], &asg, &skip);
+    if (nonfinite >= 0 && skip) { // a degenerate auxiliary line: no crease, nothing lost
+        c->stats.ignored_elements++;
+        c->stats.degenerate_aux++;
+        return ORI_OK;
+    }
+    if (nonfinite >= 0 && line)
+        return ori__fail_pos(c->error, ORI_ERR_PARSE, (int)xmlGetLineNo(nonfinite_at), 0,
+                             "line property %s is not a finite number (a crease needs its coordinates)", names[nonfinite]);
+    if (!line) {
         if (skip) {
             c->stats.ignored_elements++;
             return ORI_OK;
@@ -168,7 +206,7 @@ ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **seg
         double v[5];
         int k = 0;
         const char *q = buf;
-        bool ok = true;
+        bool ok = true, nonfinite = false;
         for (;;) {
             while (*q == ' ' || *q == '\t' || *q == '\r') ++q;
             if (!*q) break;
@@ -177,6 +215,7 @@ ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **seg
                 break;
             }
             size_t m = ori__scan_number(q, &v[k]);
+            if (!m && k > 0 && (m = nonfinite_word(q)) > 0) nonfinite = true, v[k] = 0.0;
             if (!m || (q[m] && q[m] != ' ' && q[m] != '\t' && q[m] != '\r')) {
                 ok = false;
                 break;
@@ -191,7 +230,18 @@ ori_status ori_cp_read_segments(const char *text, size_t size, ori_segment **seg
         }
         ori_assignment asg;
         bool skip;
-        if (!oripa_type(v[0], &asg, &skip)) {
+        bool crease = oripa_type(v[0], &asg, &skip);
+        if (nonfinite && skip) { // a degenerate auxiliary line: skipped like the others, and counted
+            s.ignored_elements++;
+            s.degenerate_aux++;
+            continue;
+        }
+        if (nonfinite) {
+            st = ori__fail_pos(error, ORI_ERR_PARSE, line, 0,
+                               "expected \"type x1 y1 x2 y2\" (an integer and four numbers): a crease needs finite coordinates");
+            break;
+        }
+        if (!crease) {
             if (skip) s.ignored_elements++;
             else st = ori__fail_pos(error, ORI_ERR_PARSE, line, 0,
                                     "line type %g is not 0 (aux), 1 (cut), 2 (mountain), 3 (valley) or 4 (aux)", v[0]);

@@ -72,6 +72,7 @@ typedef struct svg_ctx {
     int width_count, width_cap;
     css_sheet sheet;
     ori__xml_budget budget;
+    int curve_segments; // straight pieces per curve, arc, circle or ellipse; 0: they are refused
     ori_error *error;
 } svg_ctx;
 
@@ -507,14 +508,85 @@ static ori_status read_points(emit *e, const xmlNode *n, bool closed)
     return st;
 }
 
-// Path data with straight commands only.
+// A curve in n straight pieces: the cubic Bézier p0 c1 c2 p3 (a quadratic given as its cubic).
+static void emit_cubic(emit *e, int n, double x0, double y0, double x1, double y1, double x2, double y2, double x3,
+                       double y3)
+{
+    double px = x0, py = y0;
+    for (int i = 1; i <= n; ++i) {
+        double t = (double)i / n, u = 1.0 - t;
+        double qx = i == n ? x3 : u * u * u * x0 + 3 * u * u * t * x1 + 3 * u * t * t * x2 + t * t * t * x3;
+        double qy = i == n ? y3 : u * u * u * y0 + 3 * u * u * t * y1 + 3 * u * t * t * y2 + t * t * t * y3;
+        emit_segment(e, px, py, qx, qy);
+        px = qx, py = qy;
+    }
+}
+
+// The elliptical arc from (x0, y0) to (x1, y1) with radii rx, ry, x-axis rotation phi (degrees)
+// and the large-arc and sweep flags, in n straight pieces (SVG 1.1 F.6.5: endpoint to centre
+// parameterisation, radii scaled up when too small; zero radii draw a line).
+static void emit_arc(emit *e, int n, double x0, double y0, double rx, double ry, double phi, bool large, bool sweep,
+                     double x1, double y1)
+{
+    rx = fabs(rx), ry = fabs(ry);
+    if (rx == 0.0 || ry == 0.0) {
+        emit_segment(e, x0, y0, x1, y1);
+        return;
+    }
+    double cp = cos(ori_deg_to_rad(phi)), sp = sin(ori_deg_to_rad(phi));
+    double dx = 0.5 * (x0 - x1), dy = 0.5 * (y0 - y1);
+    double xp = cp * dx + sp * dy, yp = -sp * dx + cp * dy;
+    double lam = xp * xp / (rx * rx) + yp * yp / (ry * ry);
+    if (lam > 1.0) rx *= sqrt(lam), ry *= sqrt(lam);
+    double num = rx * rx * ry * ry - rx * rx * yp * yp - ry * ry * xp * xp;
+    double den = rx * rx * yp * yp + ry * ry * xp * xp;
+    double k = den > 0.0 && num > 0.0 ? sqrt(num / den) : 0.0;
+    if (large == sweep) k = -k;
+    double cxp = k * rx * yp / ry, cyp = -k * ry * xp / rx;
+    double cx = cp * cxp - sp * cyp + 0.5 * (x0 + x1), cy = sp * cxp + cp * cyp + 0.5 * (y0 + y1);
+    double t0 = atan2((yp - cyp) / ry, (xp - cxp) / rx);
+    double t1 = atan2((-yp - cyp) / ry, (-xp - cxp) / rx);
+    double dt = t1 - t0;
+    if (sweep && dt < 0.0) dt += 2.0 * ORI_PI;
+    if (!sweep && dt > 0.0) dt -= 2.0 * ORI_PI;
+    double px = x0, py = y0;
+    for (int i = 1; i <= n; ++i) {
+        double t = t0 + dt * i / n;
+        double qx = i == n ? x1 : cx + rx * cos(t) * cp - ry * sin(t) * sp;
+        double qy = i == n ? y1 : cy + rx * cos(t) * sp + ry * sin(t) * cp;
+        emit_segment(e, px, py, qx, qy);
+        px = qx, py = qy;
+    }
+}
+
+// The ellipse centred at (cx, cy) with radii rx, ry as a closed polygon of n pieces.
+static void emit_ellipse(emit *e, int n, double cx, double cy, double rx, double ry)
+{
+    for (int i = 0; i < n; ++i) {
+        double a = 2.0 * ORI_PI * i / n, b = 2.0 * ORI_PI * (i + 1) / n;
+        emit_segment(e, cx + rx * cos(a), cy + ry * sin(a), cx + rx * cos(b), cy + ry * sin(b));
+    }
+}
+
+// An arc flag of path data: a single '0' or '1' (SVG allows them unseparated, "a1 1 0 01 2 3").
+static size_t scan_flag(const char *p, double *out)
+{
+    if (*p != '0' && *p != '1') return 0;
+    *out = *p - '0';
+    return 1;
+}
+
+// Path data: M L H V Z straight; C S Q T A (curves and arcs) flattened into curve_segments
+// pieces each when the reader was asked to, else refused.
 static ori_status read_path(emit *e, const xmlNode *n)
 {
     char *v = ori__xml_attr(n, "d", &e->c->budget);
     if (!v) return ORI_OK;
     const char *p = skip_space(v);
     double cx = 0, cy = 0, sx = 0, sy = 0;
-    char cmd = 0;
+    double kx = 0, ky = 0; // the last control point of a C/S (or Q/T) command, for S (or T)
+    char cmd = 0, last = 0;
+    int pieces = e->c->curve_segments;
     ori_status st = ORI_OK;
     while (*p && st == ORI_OK) {
         if ((*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z')) {
@@ -524,51 +596,94 @@ static ori_status read_path(emit *e, const xmlNode *n)
                 emit_segment(e, cx, cy, sx, sy);
                 cx = sx, cy = sy;
                 cmd = 0; // a number right after Z is an error
+                last = 'Z';
                 p = skip_sep(p);
                 continue;
             }
-            if (!strchr("MmLlHhVv", cmd)) {
+            if (!strchr("MmLlHhVvCcSsQqTtAa", cmd)) {
+                st = fail(e->c, n, ORI_ERR_PARSE, "path data: unknown command '%c'", cmd);
+                break;
+            }
+            if (!strchr("MmLlHhVv", cmd) && pieces == 0) {
                 st = fail(e->c, n, ORI_ERR_UNSUPPORTED,
-                          "path command '%c' draws a curve or arc; crease lines must be straight (M L H V Z)", cmd);
+                          "path command '%c' draws a curve or arc; crease lines must be straight (M L H V Z); "
+                          "--flatten-curves N approximates each curve by N straight creases",
+                          cmd);
                 break;
             }
         } else if (!cmd) {
             st = fail(e->c, n, ORI_ERR_PARSE, "path data: expected a command at \"%.20s\"", p);
             break;
         }
-        int need = (cmd == 'H' || cmd == 'h' || cmd == 'V' || cmd == 'v') ? 1 : 2;
-        double a[2] = {0, 0};
+        char up = (char)(cmd >= 'a' ? cmd - 'a' + 'A' : cmd);
+        int need = up == 'H' || up == 'V' ? 1 : up == 'C' ? 6 : up == 'S' || up == 'Q' ? 4 : up == 'A' ? 7 : 2;
+        double a[7] = {0, 0, 0, 0, 0, 0, 0};
         for (int i = 0; i < need; ++i) {
-            size_t m = ori__scan_number(p, &a[i]);
+            size_t m = up == 'A' && (i == 3 || i == 4) ? scan_flag(p, &a[i]) : ori__scan_number(p, &a[i]);
             if (!m) {
-                st = fail(e->c, n, ORI_ERR_PARSE, "path data: expected a number after '%c' at \"%.20s\"", cmd,
-                          *p ? p : "end of data");
+                st = fail(e->c, n, ORI_ERR_PARSE, "path data: expected a %s after '%c' at \"%.20s\"",
+                          up == 'A' && (i == 3 || i == 4) ? "flag (0 or 1)" : "number", cmd, *p ? p : "end of data");
                 break;
             }
             p = skip_sep(p + m);
         }
         if (st != ORI_OK) break;
         bool rel = cmd >= 'a' && cmd <= 'z';
+        double ox = rel ? cx : 0.0, oy = rel ? cy : 0.0; // origin of relative coordinates
         double nx = cx, ny = cy;
-        switch (cmd) {
-        case 'M': case 'm':
-            nx = rel ? cx + a[0] : a[0];
-            ny = rel ? cy + a[1] : a[1];
+        char prev = last;
+        last = up;
+        switch (up) {
+        case 'M':
+            nx = ox + a[0], ny = oy + a[1];
             sx = nx, sy = ny;
             cmd = rel ? 'l' : 'L'; // further pairs are implicit line-tos
             break;
-        case 'L': case 'l':
-            nx = rel ? cx + a[0] : a[0];
-            ny = rel ? cy + a[1] : a[1];
+        case 'L':
+            nx = ox + a[0], ny = oy + a[1];
             emit_segment(e, cx, cy, nx, ny);
             break;
-        case 'H': case 'h':
-            nx = rel ? cx + a[0] : a[0];
+        case 'H':
+            nx = ox + a[0];
             emit_segment(e, cx, cy, nx, ny);
             break;
-        default: // V, v
-            ny = rel ? cy + a[0] : a[0];
+        case 'V':
+            ny = oy + a[0];
             emit_segment(e, cx, cy, nx, ny);
+            break;
+        case 'C':
+        case 'S': {
+            double x1, y1, x2, y2;
+            if (up == 'C') x1 = ox + a[0], y1 = oy + a[1], x2 = ox + a[2], y2 = oy + a[3], nx = ox + a[4], ny = oy + a[5];
+            else {
+                bool reflect = prev == 'C' || prev == 'S';
+                x1 = reflect ? 2 * cx - kx : cx, y1 = reflect ? 2 * cy - ky : cy;
+                x2 = ox + a[0], y2 = oy + a[1], nx = ox + a[2], ny = oy + a[3];
+            }
+            emit_cubic(e, pieces, cx, cy, x1, y1, x2, y2, nx, ny);
+            kx = x2, ky = y2;
+            e->c->stats.flattened_curves++;
+            break;
+        }
+        case 'Q':
+        case 'T': {
+            double qx, qy;
+            if (up == 'Q') qx = ox + a[0], qy = oy + a[1], nx = ox + a[2], ny = oy + a[3];
+            else {
+                bool reflect = prev == 'Q' || prev == 'T';
+                qx = reflect ? 2 * cx - kx : cx, qy = reflect ? 2 * cy - ky : cy;
+                nx = ox + a[0], ny = oy + a[1];
+            }
+            emit_cubic(e, pieces, cx, cy, cx + 2.0 / 3.0 * (qx - cx), cy + 2.0 / 3.0 * (qy - cy), nx + 2.0 / 3.0 * (qx - nx),
+                       ny + 2.0 / 3.0 * (qy - ny), nx, ny);
+            kx = qx, ky = qy;
+            e->c->stats.flattened_curves++;
+            break;
+        }
+        default: // A
+            nx = ox + a[5], ny = oy + a[6];
+            emit_arc(e, pieces, cx, cy, a[0], a[1], a[2], a[3] != 0.0, a[4] != 0.0, nx, ny);
+            e->c->stats.flattened_curves++;
             break;
         }
         cx = nx, cy = ny;
@@ -648,8 +763,10 @@ static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style 
         }
         return ORI_OK;
     }
-    if (name_is(n, "circle") || name_is(n, "ellipse"))
-        return fail(c, n, ORI_ERR_UNSUPPORTED, "a %s cannot be a crease: crease lines must be straight",
+    if ((name_is(n, "circle") || name_is(n, "ellipse")) && c->curve_segments == 0)
+        return fail(c, n, ORI_ERR_UNSUPPORTED,
+                    "a %s cannot be a crease: crease lines must be straight (--flatten-curves N approximates it by N "
+                    "straight creases)",
                     (const char *)n->name);
     // The drawn width of its lines (stroke-width scaled by the transform): how far apart two lines
     // may be and still touch on the page (the import closes such gaps).
@@ -667,6 +784,17 @@ static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style 
             (st = length_attr(c, n, "x2", &x2)) || (st = length_attr(c, n, "y2", &y2)))
             return st;
         emit_segment(&e, x1, y1, x2, y2);
+    } else if (name_is(n, "circle") || name_is(n, "ellipse")) {
+        double x, y, rx, ry;
+        bool circle = name_is(n, "circle");
+        if ((st = length_attr(c, n, "cx", &x)) || (st = length_attr(c, n, "cy", &y)) ||
+            (st = length_attr(c, n, circle ? "r" : "rx", &rx)) || (st = length_attr(c, n, circle ? "r" : "ry", &ry)))
+            return st;
+        if (rx < 0.0 || ry < 0.0) return fail(c, n, ORI_ERR_PARSE, "negative radius");
+        if (rx > 0.0 && ry > 0.0) {
+            emit_ellipse(&e, c->curve_segments, x, y, rx, ry);
+            c->stats.flattened_curves++;
+        }
     } else if (name_is(n, "rect")) {
         double x, y, w, h, rx, ry;
         if ((st = length_attr(c, n, "x", &x)) || (st = length_attr(c, n, "y", &y)) ||
@@ -674,9 +802,25 @@ static ori_status shape(svg_ctx *c, const xmlNode *n, affine m, const svg_style 
             (st = length_attr(c, n, "rx", &rx)) || (st = length_attr(c, n, "ry", &ry)))
             return st;
         if (w < 0.0 || h < 0.0) return fail(c, n, ORI_ERR_PARSE, "negative width or height");
-        if (rx > 0.0 || ry > 0.0)
-            return fail(c, n, ORI_ERR_UNSUPPORTED, "rounded corners (rx, ry) are arcs; crease lines must be straight");
-        if (w > 0.0 && h > 0.0) {
+        if ((rx > 0.0 || ry > 0.0) && c->curve_segments == 0)
+            return fail(c, n, ORI_ERR_UNSUPPORTED,
+                        "rounded corners (rx, ry) are arcs; crease lines must be straight (--flatten-curves N "
+                        "approximates each by N straight creases)");
+        if ((rx > 0.0 || ry > 0.0) && w > 0.0 && h > 0.0) { // SVG: a missing radius is the other; at most half the side
+            if (!(rx > 0.0)) rx = ry;
+            if (!(ry > 0.0)) ry = rx;
+            rx = fmin(rx, 0.5 * w), ry = fmin(ry, 0.5 * h);
+            int k = c->curve_segments;
+            emit_segment(&e, x + rx, y, x + w - rx, y);
+            emit_arc(&e, k, x + w - rx, y, rx, ry, 0, false, true, x + w, y + ry);
+            emit_segment(&e, x + w, y + ry, x + w, y + h - ry);
+            emit_arc(&e, k, x + w, y + h - ry, rx, ry, 0, false, true, x + w - rx, y + h);
+            emit_segment(&e, x + w - rx, y + h, x + rx, y + h);
+            emit_arc(&e, k, x + rx, y + h, rx, ry, 0, false, true, x, y + h - ry);
+            emit_segment(&e, x, y + h - ry, x, y + ry);
+            emit_arc(&e, k, x, y + ry, rx, ry, 0, false, true, x + rx, y);
+            c->stats.flattened_curves += 4;
+        } else if (w > 0.0 && h > 0.0) {
             emit_segment(&e, x, y, x + w, y);
             emit_segment(&e, x + w, y, x + w, y + h);
             emit_segment(&e, x + w, y + h, x, y + h);
@@ -815,12 +959,22 @@ static int compare_doubles(const void *a, const void *b)
 ori_status ori_svg_read_segments(const char *text, size_t size, ori_segment **segments, int *count,
                                  ori_import_stats *stats, ori_error *error)
 {
+    return ori_svg_read_curves(text, size, 0, segments, count, stats, error);
+}
+
+ori_status ori_svg_read_curves(const char *text, size_t size, int curve_segments, ori_segment **segments, int *count,
+                               ori_import_stats *stats, ori_error *error)
+{
     ORI_ASSERT(text && segments && count);
     ori__reader_begin(segments, count, stats, error);
+    if (curve_segments < 0 || curve_segments > ORI_IMPORT_CURVE_SEGMENTS_MAX)
+        return ori__fail(error, ORI_ERR_ARGUMENT, "%d pieces per curve is outside [0, %d]", curve_segments,
+                         ORI_IMPORT_CURVE_SEGMENTS_MAX);
     if (size > (size_t)INT32_MAX) return ori__fail(error, ORI_ERR_LIMIT, "the SVG file is too large");
     svg_ctx c;
     memset(&c, 0, sizeof c);
     c.error = error;
+    c.curve_segments = curve_segments;
     ori__xml_budget_init(&c.budget, size);
     // <style> rules may come after the elements they style: a first pass collects them, only
     // when the text has a <style> at all.
