@@ -1023,6 +1023,8 @@ Test(formats, xml_errors_are_one_line)
     cr_assert_null(strchr(err.message, '\n'), "%s", err.message);
     cr_assert(strstr(err.message, "UTF-8") && strstr(err.message, "; Bytes: 0xFF 0xFE"), "%s", err.message);
     cr_assert_gt(err.line, 0);
+}
+
 // Creases drawn past the border (Lang's drawings in Origami Simulator) make faces outside the
 // sheet, joined to it only across the border: the import clips them at the border. A square
 // [0, 10]² with two creases from the top side that cross 0.5 below the bottom side (a triangle
