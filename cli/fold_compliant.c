@@ -230,7 +230,7 @@ int cli_fold_compliant_run(int argc, char **argv)
         printf("model: %d vertices, %d bars, %d hinges (%d triangles)\n", V, ori_compliant_bar_count(c),
                ori_compliant_hinge_count(c), ori_compliant_triangle_count(c));
         if (a.dynamic) printf("explicit: %d steps of %.4g\n", dyn_steps, ori_compliant_time_step(c));
-        else printf("static: %d Newton iterations, %d load steps, |grad E| %.2g (load scale %.3g)\n", it, ls,
+        else printf("static: %d Newton iterations (%d factorizations), %d load steps, |grad E| %.2g (load scale %.3g)\n", it, fa, ls,
                     ori_compliant_gradient_norm(c), ori_compliant_load_scale(c));
         printf("max strain %.4g %%, energy %.6g, largest crease error vs target %.4g deg\n", 100.0 * strain, energy,
                cerr * 180.0 / ORI_PI);

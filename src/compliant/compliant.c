@@ -24,6 +24,9 @@
 #define CMP_ENERGY_ROUNDOFF 1e-13
 // Filipov et al. 2017's facet bending coefficient (physical preset).
 #define CMP_FILIPOV_C 0.55
+// A sheet given in another plane than z = 0 is flat when no vertex is farther than this × the
+// pattern's diagonal from the faces' mean plane (single-precision exports: 1e-6).
+#define CMP_PLANE_REL 1e-6
 
 ori_compliant_def ori_default_compliant_def(void)
 {
@@ -317,6 +320,70 @@ static void build_pattern(ori_compliant *c)
     c->sls = ori__sls_create_sym(nd, c->colptr, c->rowind);
 }
 
+// The rotation taking the sheet's plane to z = 0 (identity for a pattern in z = 0): a planar
+// sheet in another plane (Origami Simulator exports its flat sheet in y = 0) is turned so that
+// the faces' Newell normal points to +z. False when the vertices are not in one plane.
+static bool sheet_plane(const ori_pattern *p, ori_m3 *rot)
+{
+    memset(rot, 0, sizeof *rot);
+    rot->m[0][0] = rot->m[1][1] = rot->m[2][2] = 1.0;
+    if (!ori_pattern_is_3d(p)) return true;
+    int nv = ori_pattern_vertex_count(p), nf = ori_pattern_face_count(p);
+    double n[3] = {0, 0, 0}, cen[3] = {0, 0, 0};
+    for (int v = 0; v < nv; ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        cen[0] += q.x / nv;
+        cen[1] += q.y / nv;
+        cen[2] += q.z / nv;
+    }
+    int cap = 0, *fv = NULL;
+    for (int f = 0; f < nf; ++f) {
+        int k = ori_pattern_face_size(p, f);
+        if (k > cap) {
+            cap = k;
+            fv = ori__realloc(fv, sizeof(int) * (size_t)cap);
+        }
+        ori_pattern_face_vertices(p, f, fv, cap);
+        for (int t = 0; t < k; ++t) {
+            ori_v3 a = ori_pattern_vertex(p, fv[t]), b = ori_pattern_vertex(p, fv[(t + 1) % k]);
+            n[0] += (a.y - b.y) * (a.z + b.z);
+            n[1] += (a.z - b.z) * (a.x + b.x);
+            n[2] += (a.x - b.x) * (a.y + b.y);
+        }
+    }
+    ori__free(fv);
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 0.0)) return false;
+    for (int q = 0; q < 3; ++q) n[q] /= len;
+    double diag = ori_pattern_diagonal(p), worst = 0.0;
+    for (int v = 0; v < nv; ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        worst = fmax(worst, fabs((q.x - cen[0]) * n[0] + (q.y - cen[1]) * n[1] + (q.z - cen[2]) * n[2]));
+    }
+    if (!(worst <= CMP_PLANE_REL * diag)) return false;
+    // an orthonormal frame (e1, e2, n): rows of the rotation
+    double e1[3];
+    if (fabs(n[0]) < 0.9) {
+        // x minus its component along n
+        e1[0] = 1.0 - n[0] * n[0];
+        e1[1] = -n[0] * n[1];
+        e1[2] = -n[0] * n[2];
+    } else { // y minus its component along n
+        e1[0] = -n[1] * n[0];
+        e1[1] = 1.0 - n[1] * n[1];
+        e1[2] = -n[1] * n[2];
+    }
+    double l1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    for (int q = 0; q < 3; ++q) e1[q] /= l1;
+    double e2[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+    for (int q = 0; q < 3; ++q) {
+        rot->m[0][q] = e1[q];
+        rot->m[1][q] = e2[q];
+        rot->m[2][q] = n[q];
+    }
+    return true;
+}
+
 static void store_frame(ori_compliant *c, bool replace_last);
 
 ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *def, ori_compliant **out,
@@ -328,9 +395,11 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     ori_status st = check_def(def, error);
     if (st) return st;
     if (!ori_pattern_is_built(p)) return ori__fail(error, ORI_ERR_ARGUMENT, "compliant: the pattern is not built");
-    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p))
-        return ori__fail(error, ORI_ERR_ARGUMENT, "compliant: the model starts from a flat crease pattern (z = 0), not a folded form");
     int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p), nf = ori_pattern_face_count(p);
+    ori_m3 rot;
+    if (!sheet_plane(p, &rot))
+        return ori__fail(error, ORI_ERR_ARGUMENT,
+                         "compliant: the model starts from a flat sheet: the vertices do not lie in one plane (a folded form?)");
     if (nf <= 0) return ori__fail(error, ORI_ERR_ARGUMENT, "compliant: the pattern has no faces");
     if (def->fixed_face != ORI_NULL_INDEX && (def->fixed_face < 0 || def->fixed_face >= nf))
         return ori__fail_at(error, ORI_ERR_RANGE, "faces_vertices", def->fixed_face, "compliant: no face %d to fix",
@@ -354,8 +423,8 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     c->v = ori__calloc(3 * (size_t)(nv > 0 ? nv : 1), sizeof(double));
     for (int v = 0; v < nv; ++v) {
         ori_v3 q = ori_pattern_vertex(p, v);
-        c->x[3 * v] = q.x;
-        c->x[3 * v + 1] = q.y;
+        c->x[3 * v] = rot.m[0][0] * q.x + rot.m[0][1] * q.y + rot.m[0][2] * q.z;
+        c->x[3 * v + 1] = rot.m[1][0] * q.x + rot.m[1][1] * q.y + rot.m[1][2] * q.z;
         c->x[3 * v + 2] = 0.0;
     }
     memcpy(c->x0, c->x, sizeof(double) * 3 * (size_t)nv);
@@ -557,7 +626,7 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     build_pattern(c);
     // explicit time step: Gershgorin bound of the largest eigenvalue of M⁻¹K at the flat state
     {
-        ori__cmp_hessian(c, c->x, 0.0);
+        ori__cmp_hessian(c, c->x, 0.0, false);
         const double *val = ori__sls_values(c->sls);
         double *rows = ori__calloc((size_t)(c->ndof > 0 ? c->ndof : 1), sizeof(double));
         for (int col = 0; col < c->ndof; ++col)
@@ -628,34 +697,33 @@ static bool newton(ori_compliant *c, double fraction, double tol, double *g, dou
 {
     int nv = c->nv, nd = c->ndof;
     double e = ori__cmp_energy(c, c->x, fraction, g);
-    double lambda = 0.0;
     for (int it = 0; it < c->def.max_iterations; ++it) {
         double gn = ori__cmp_grad_norm(c, g);
         if (gn <= tol) return true;
         if (nd == 0) return true;
         c->iterations++;
-        ori__cmp_hessian(c, c->x, fraction);
         for (int v = 0; v < nv; ++v)
             if (c->dof[v] >= 0)
                 for (int q = 0; q < 3; ++q) rhs[c->dof[v] + q] = -g[3 * v + q];
-        // a shift λ (Levenberg) when the Hessian is not positive definite or the step is no descent
-        double diag = 0.0;
-        {
+        // the exact Hessian; when it is not positive definite (or gives no descent), its positive
+        // semi-definite part, shifted by λ (Levenberg) while that fails
+        bool solved = false;
+        for (int pass = 0; pass < 2 && !solved; ++pass) {
+            ori__cmp_hessian(c, c->x, fraction, pass == 1);
+            double diag = 0.0;
             const double *val = ori__sls_values(c->sls);
             for (int col = 0; col < nd; ++col) diag = fmax(diag, fabs(val[c->colptr[col + 1] - 1]));
-        }
-        double shift_min = 1e-12 * (diag > 0.0 ? diag : 1.0);
-        lambda = lambda > 0.0 ? lambda * 0.1 : 0.0;
-        if (lambda < shift_min) lambda = 0.0;
-        bool solved = false;
-        for (int tries = 0; tries < 60 && !solved; ++tries) {
-            c->factorizations++;
-            if (ori__sls_factor(c->sls, lambda) && ori__sls_solve(c->sls, rhs, sol)) {
-                double gd = 0.0;
-                for (int k = 0; k < nd; ++k) gd -= rhs[k] * sol[k];
-                if (gd < 0.0) solved = true;
+            double shift = 0.0, shift_min = 1e-12 * (diag > 0.0 ? diag : 1.0);
+            int tries = pass == 0 ? 1 : 40;
+            for (int t = 0; t < tries && !solved; ++t) {
+                c->factorizations++;
+                if (ori__sls_factor(c->sls, shift) && ori__sls_solve(c->sls, rhs, sol)) {
+                    double gd = 0.0;
+                    for (int k = 0; k < nd; ++k) gd -= rhs[k] * sol[k];
+                    if (gd < 0.0) solved = true;
+                }
+                shift = shift > 0.0 ? shift * 10.0 : shift_min;
             }
-            if (!solved) lambda = lambda > 0.0 ? lambda * 10.0 : shift_min * 1e3;
         }
         if (!solved) return false;
         for (int k = 0; k < 3 * nv; ++k) dx[k] = 0.0;

@@ -76,8 +76,10 @@ void ori__cmp_hinge_hessian(const double *x, const cmp_hinge *h, double hess[144
 
 // Total energy at positions x (3 nv) and fraction; gradient (3 nv, NULL = skip, held vertices 0).
 double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction, double *grad);
-// Assemble the Hessian of the energy at x into the sparse matrix's values (upper triangle).
-void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction);
+// Assemble the Hessian of the energy at x into the sparse matrix's values (upper triangle); with
+// psd its positive semi-definite part (Gauss–Newton hinges k ∇ρ∇ρᵀ, bars without compressive
+// geometric stiffness), the fallback when the exact one is not positive definite.
+void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction, bool psd);
 // |g|∞ over the free dofs.
 double ori__cmp_grad_norm(const ori_compliant *c, const double *grad);
 void ori__cmp_set_trace(ori_compliant *c, ori__cmp_trace_fn *fn, void *user);

@@ -205,7 +205,7 @@ static void add_block(ori_compliant *c, double *val, int a, int b, double K[3][3
     }
 }
 
-void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction)
+void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction, bool psd)
 {
     ori__sls_clear_values(c->sls);
     double *val = ori__sls_values(c->sls);
@@ -217,6 +217,7 @@ void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction)
         if (!(len > 0.0)) continue;
         for (int q = 0; q < 3; ++q) u[q] /= len;
         double geo = 1.0 - bar->l0 / len; // the geometric (stress) stiffness factor
+        if (psd && geo < 0.0) geo = 0.0;
         double K[3][3], N[3][3];
         for (int p = 0; p < 3; ++p)
             for (int q = 0; q < 3; ++q) {
@@ -233,7 +234,8 @@ void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction)
         double d = ori__cmp_hinge_angle(x, h, h->ref) - rest;
         double g[12], H[144];
         ori__cmp_hinge_gradient(x, h, g);
-        ori__cmp_hinge_hessian(x, h, H);
+        if (psd) memset(H, 0, sizeof H);
+        else ori__cmp_hinge_hessian(x, h, H);
         const int node[4] = {h->j, h->k, h->i, h->l};
         for (int a = 0; a < 4; ++a)
             for (int b = a; b < 4; ++b) {
