@@ -24,7 +24,7 @@ typedef struct compliant_args {
 static int parse_positive(const char *cmd, const char *opt, const char *v, bool zero_ok, double *out)
 {
     if (!cli_parse_double(v, out) || !isfinite(*out) || *out < 0.0 || (!zero_ok && *out == 0.0))
-        return cli_usage(cmd, "%s needs a number %s, got '%s'", opt, zero_ok ? "≥ 0" : "> 0", v);
+        return cli_usage(cmd, "%s needs a number %s, got '%s'", opt, zero_ok ? ">= 0" : "> 0", v);
     return CLI_EXIT_OK;
 }
 
