@@ -4,6 +4,7 @@
 // thesis' open corner); explicit vs static agreement; the line search never raises the energy;
 // bad input.
 #include <float.h>
+#include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -385,4 +386,40 @@ Test(compliant, bad_input_is_an_error_never_nan)
         cr_assert_eq(err.element, 0, "%s", err.message);
     }
     ori_pattern_destroy(q);
+}
+
+// The CLI's -o: FILE with the load steps appended, each with orikin:fraction and
+// edges_orikin:strain (one per edge), the last at the fraction asked for.
+Test(compliant, cli_writes_frames_with_fraction_and_strain)
+{
+    char *dir = test_tmpdir();
+    char args[4096];
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 --all-frames -o '%s/o.fold'", dir);
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/o.fold", dir);
+    char *text = test_read_text(path);
+    cr_assert_not_null(text);
+    json_error_t je;
+    json_t *doc = json_loads(text, 0, &je);
+    free(text);
+    cr_assert_not_null(doc, "%s", je.text);
+    json_t *frames = json_object_get(doc, "file_frames");
+    cr_assert_gt(json_array_size(frames), 2);
+    size_t ne = json_array_size(json_object_get(doc, "edges_vertices"));
+    double last = -1.0;
+    for (size_t k = 0; k < json_array_size(frames); ++k) {
+        json_t *f = json_array_get(frames, k);
+        double fr = json_number_value(json_object_get(f, "orikin:fraction"));
+        cr_assert_gt(fr, last);
+        last = fr;
+        json_t *s = json_object_get(f, "edges_orikin:strain");
+        cr_assert_eq(json_array_size(s), ne);
+        for (size_t e = 0; e < ne; ++e) cr_assert(isfinite(json_number_value(json_array_get(s, e))));
+    }
+    cr_assert_float_eq(last, 0.4, 1e-15);
+    json_decref(doc);
+    test_tmpdir_remove(dir);
 }
