@@ -61,10 +61,12 @@ ORI_API ori_compliant_def ori_compliant_physical_def(void);
 /// A bar-and-hinge model of one flat pattern, with its current state and frames.
 typedef struct ori_compliant ori_compliant;
 
-/// Build the model of a built flat pattern (z = 0). Fails (*out NULL) with ORI_ERR_ARGUMENT for a
-/// folded or 3D pattern, a degenerate face (zero area, repeated vertex) or a bad fixed face,
-/// ORI_ERR_RANGE for a non-finite or negative stiffness, fraction or tolerance (error names the
-/// field and element). Destroy with ori_compliant_destroy.
+/// Build the model of a built flat pattern (z = 0, or a planar sheet in another plane, turned into
+/// z = 0 with the faces' normal on +z). Fails (*out NULL) with ORI_ERR_ARGUMENT when the vertices
+/// are not in one plane (a folded form), ORI_ERR_DEGENERATE for a degenerate face (zero area,
+/// repeated vertex, zero-length edge; error.element = its FOLD index), ORI_ERR_TOPOLOGY for an
+/// edge of three faces, ORI_ERR_RANGE for a bad fixed face or a non-finite or negative stiffness,
+/// fraction, target or tolerance (the message names the field). Destroy with ori_compliant_destroy.
 ORI_API ori_status ori_compliant_create(const ori_pattern *pattern, const ori_compliant_def *def,
                                         ori_compliant **out, ori_error *error);
 /// Destroy a model; NULL is a no-op.
