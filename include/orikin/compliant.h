@@ -108,7 +108,7 @@ ORI_API double ori_compliant_max_strain(const ori_compliant *c);
 /// Total potential energy (bars + hinges + gravity) of the current state.
 ORI_API double ori_compliant_energy(const ori_compliant *c);
 /// |∇E|∞ of the current state, the load scale it is measured against (a force) and the roundoff
-/// floor of the gradient (64 ε × the largest bar force scale k·L0).
+/// floor of the gradient (64 ε × the largest element force scale: k·L0 of a bar, k_h·π·|∇ρ| of a hinge).
 ORI_API double ori_compliant_gradient_norm(const ori_compliant *c);
 ORI_API double ori_compliant_load_scale(const ori_compliant *c);
 ORI_API double ori_compliant_gradient_floor(const ori_compliant *c);

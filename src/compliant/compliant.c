@@ -616,6 +616,13 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
         for (int v = 0; v < nv; ++v) load = fmax(load, c->mass[v] * fabs(d->gravity));
     if (!(load > 0.0)) load = kmax_h > 0.0 ? kmax_h / c->mean_length : 1.0;
     for (int b = 0; b < c->nbar; ++b) floor_scale = fmax(floor_scale, c->bars[b].k * c->bars[b].l0);
+    // a hinge's force k_h (ρ − ρ_rest) ∇ρ is known to about ε k_h π |∇ρ|, |∇ρ| ≤ |r_kj| / height
+    for (int h = 0; h < c->nhinge; ++h) {
+        double g[12], gmax = 0.0;
+        ori__cmp_hinge_gradient(c->x, &c->hinges[h], g);
+        for (int q = 0; q < 12; ++q) gmax = fmax(gmax, fabs(g[q]));
+        floor_scale = fmax(floor_scale, c->hinges[h].k_h * ORI_PI * gmax);
+    }
     c->load_scale = load;
     c->grad_floor = CMP_GRADIENT_FLOOR_EPS * DBL_EPSILON * fmax(floor_scale, load);
     c->m_min = INFINITY;
@@ -687,6 +694,56 @@ static void store_frame(ori_compliant *c, bool replace_last)
 static void accept_angles(ori_compliant *c)
 {
     for (int h = 0; h < c->nhinge; ++h) c->hinges[h].ref = ori__cmp_hinge_angle(c->x, &c->hinges[h], c->hinges[h].ref);
+}
+
+// --- explicit solver ----------------------------------------------------------------------
+
+// Damped explicit steps at fraction frac until |∇E|∞ ≤ ftol and every speed ≤ ftol Δt / m_min
+// (checked every 16 steps), at most max_steps. Returns the steps done; *settled, *diverged.
+static int relax(ori_compliant *c, double frac, int max_steps, double ftol, double *F, bool *settled, bool *diverged)
+{
+    int nv = c->nv;
+    double dt = c->dt, vtol = ftol * dt / c->m_min;
+    *settled = *diverged = false;
+    int k;
+    for (k = 0; k < max_steps; ++k) {
+        ori__cmp_energy(c, c->x, frac, F); // F = ∇E
+        for (int b = 0; b < c->nbar; ++b) {
+            const cmp_bar *bar = &c->bars[b];
+            for (int q = 0; q < 3; ++q) {
+                double dv = c->v[3 * bar->b + q] - c->v[3 * bar->a + q];
+                F[3 * bar->a + q] -= bar->c * dv;
+                F[3 * bar->b + q] += bar->c * dv;
+            }
+        }
+        double vmax = 0.0;
+        bool finite = true;
+        for (int v = 0; v < nv; ++v) {
+            if (c->dof[v] < 0) continue;
+            double inv = dt / c->mass[v];
+            for (int q = 0; q < 3; ++q) {
+                double vv = c->v[3 * v + q] - F[3 * v + q] * inv;
+                c->v[3 * v + q] = vv;
+                c->x[3 * v + q] += dt * vv;
+                vmax = fmax(vmax, fabs(vv));
+                if (!isfinite(c->x[3 * v + q])) finite = false;
+            }
+        }
+        if (!finite) {
+            *diverged = true;
+            return k + 1;
+        }
+        if ((k & 15) == 15) {
+            accept_angles(c);
+            ori__cmp_energy(c, c->x, frac, F);
+            if (ori__cmp_grad_norm(c, F) <= ftol && vmax <= vtol) {
+                *settled = true;
+                return k + 1;
+            }
+        }
+    }
+    accept_angles(c);
+    return k;
 }
 
 // --- static solver -----------------------------------------------------------------------
@@ -941,7 +998,6 @@ const double *ori_compliant_frame_strains(const ori_compliant *c, int k)
     return c->frames[k].strains;
 }
 
-// --- explicit solver ----------------------------------------------------------------------
 
 ori_status ori_compliant_run_dynamic(ori_compliant *c, int max_steps, double force_tolerance, int *steps,
                                      ori_error *error)
@@ -950,60 +1006,15 @@ ori_status ori_compliant_run_dynamic(ori_compliant *c, int max_steps, double for
     if (steps) *steps = 0;
     if (max_steps < 0 || !(force_tolerance > 0.0) || !isfinite(force_tolerance))
         return ori__fail(error, ORI_ERR_RANGE, "compliant: max_steps must be ≥ 0 and force_tolerance finite and > 0");
-    int nv = c->nv;
     c->gravity_factor = 1.0;
-    double *F = ori__alloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
-    double dt = c->dt, frac = c->def.fraction;
-    double ftol = force_tolerance * c->load_scale;
-    double vtol = ftol * dt / c->m_min;
-    ori_status st = ORI_ERR_NOT_CONVERGED;
-    bool diverged = false;
-    int k = 0;
-    for (k = 0; k < max_steps; ++k) {
-        ori__cmp_energy(c, c->x, frac, F); // F = ∇E
-        for (int b = 0; b < c->nbar; ++b) {
-            const cmp_bar *bar = &c->bars[b];
-            for (int q = 0; q < 3; ++q) {
-                double dv = c->v[3 * bar->b + q] - c->v[3 * bar->a + q];
-                F[3 * bar->a + q] -= bar->c * dv;
-                F[3 * bar->b + q] += bar->c * dv;
-            }
-        }
-        double fmax_ = 0.0, vmax = 0.0;
-        bool finite = true;
-        for (int v = 0; v < nv; ++v) {
-            if (c->dof[v] < 0) continue;
-            double inv = dt / c->mass[v];
-            for (int q = 0; q < 3; ++q) {
-                double vv = c->v[3 * v + q] - F[3 * v + q] * inv;
-                c->v[3 * v + q] = vv;
-                c->x[3 * v + q] += dt * vv;
-                vmax = fmax(vmax, fabs(vv));
-                if (!isfinite(c->x[3 * v + q])) finite = false;
-            }
-        }
-        if (!finite) {
-            st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver diverged at step %d", k + 1);
-            diverged = true;
-            break;
-        }
-        if ((k & 15) == 15) {
-            accept_angles(c);
-            ori__cmp_energy(c, c->x, frac, F);
-            fmax_ = ori__cmp_grad_norm(c, F);
-            if (fmax_ <= ftol && vmax <= vtol) {
-                k++;
-                st = ORI_OK;
-                break;
-            }
-        }
-    }
-    accept_angles(c);
+    double *F = ori__alloc(sizeof(double) * 3 * (size_t)(c->nv > 0 ? c->nv : 1));
+    bool settled, diverged;
+    int k = relax(c, c->def.fraction, max_steps, force_tolerance * c->load_scale, F, &settled, &diverged);
     ori__free(F);
     if (steps) *steps = k;
-    c->fraction = frac;
+    c->fraction = c->def.fraction;
     store_frame(c, !c->def.keep_frames);
-    if (st == ORI_ERR_NOT_CONVERGED && !diverged)
-        ori__fail(error, st, "compliant: the explicit solver did not settle in %d steps", max_steps);
-    return st;
+    if (diverged) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver diverged at step %d", k);
+    if (!settled) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver did not settle in %d steps", max_steps);
+    return ORI_OK;
 }
