@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "collide_args.h"
+#include "fold_compliant.h"
 #include "fold_modes.h"
 #include "kin_args.h"
 #include "output_guard.h"
@@ -143,6 +144,7 @@ static int guard_output(const cli_fold_args *a, const cli_kin *k, const ori_moti
 
 static int run(int argc, char **argv)
 {
+    if (cli_fold_compliant_wanted(argc, argv)) return cli_fold_compliant_run(argc, argv);
     if (cli_fold_modes_wanted(argc, argv)) return cli_fold_modes_run(argc, argv);
     cli_collide_opts co;
     int rc = cli_collide_strip("fold", &argc, argv, &co);
@@ -269,6 +271,8 @@ const cli_command cli_cmd_fold = {
     "\n",
     run,
     CLI_FOLD_MODES_HELP
+    "\n"
+    CLI_FOLD_COMPLIANT_HELP
     "\n"
     "example: orikin fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90\n",
 };

@@ -9,6 +9,7 @@
 #include "base.h"
 #include "collection.h"
 #include "collision.h"
+#include "compliant.h"
 #include "fab.h"
 #include "flat.h"
 #include "fold.h"

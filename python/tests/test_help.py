@@ -17,6 +17,10 @@ FOLD_OPTIONS = {
 CLI_ONLY = {"--json": "--json", "-o": "-o OUT.fold", "--force": "--force", "--weld": "--weld",
             "--tolerance": "--tolerance", "--gaps": "--gaps", "--keep-collinear": "--keep-",
             "--keep-holes": "--keep-"}
+# `orikin fold --compliant` (issue 23, docs/compliant.md) has no Python binding yet: its options
+# are listed here until Pattern.fold (or a compliant call) takes them; remove them then.
+COMPLIANT_NOT_BOUND = {"--compliant", "--dynamic", "--preset", "--axial", "--facet", "--crease", "--damping",
+                       "--gravity", "--steps", "--all-frames"}
 
 
 def cli_options(command: str) -> set:
@@ -28,7 +32,7 @@ def test_fold_documents_every_option_of_the_cli():
     doc = inspect.getdoc(orikin.Pattern.fold)
     params = inspect.signature(orikin.Pattern.fold).parameters
     options = {o for o in cli_options("fold") if o.startswith("-")}
-    unknown = options - set(FOLD_OPTIONS) - set(CLI_ONLY)
+    unknown = options - set(FOLD_OPTIONS) - set(CLI_ONLY) - COMPLIANT_NOT_BOUND
     assert not unknown, f"orikin fold has options the binding does not know: {sorted(unknown)}"
     for opt, name in FOLD_OPTIONS.items():
         assert name in params, f"{opt}: Pattern.fold has no argument {name}"

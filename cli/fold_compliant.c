@@ -1,0 +1,244 @@
+// orikin fold --compliant: fold with the bar-and-hinge model (include/orikin/compliant.h,
+// docs/compliant.md): every pattern folds, bending its panels where it must, and the report says
+// how far it went, how much the sheet strains and how far each crease is from its target.
+// cmd_fold.c hands the command line over when --compliant is given.
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "fold_compliant.h"
+#include "output_guard.h"
+#include "progress.h"
+
+typedef struct compliant_args {
+    const char *path, *out, *fix;
+    double percent;
+    bool dynamic, json, physical, frames;
+    int steps;
+    double axial, facet, crease, damping, gravity;
+    bool has_axial, has_facet, has_crease, has_damping;
+    cli_input input;
+} compliant_args;
+
+static int parse_positive(const char *cmd, const char *opt, const char *v, bool zero_ok, double *out)
+{
+    if (!cli_parse_double(v, out) || !isfinite(*out) || *out < 0.0 || (!zero_ok && *out == 0.0))
+        return cli_usage(cmd, "%s needs a number %s, got '%s'", opt, zero_ok ? ">= 0" : "> 0", v);
+    return CLI_EXIT_OK;
+}
+
+static int parse(int argc, char **argv, compliant_args *a)
+{
+    const char *cmd = "fold";
+    memset(a, 0, sizeof *a);
+    a->percent = 100.0;
+    a->steps = 1000000;
+    cli_input_init(&a->input);
+    cli_seen seen = {0};
+    for (int i = 1; i < argc; ++i) {
+        const char *o = argv[i], *v = NULL;
+        int r = cli_input_option(cmd, argc, argv, &i, &a->input, &seen);
+        if (r < 0) return -r;
+        if (r > 0) continue;
+        if (strcmp(o, "--compliant") == 0) continue;
+        if (strcmp(o, "--dynamic") == 0) a->dynamic = true;
+        else if (strcmp(o, "--json") == 0) a->json = true;
+        else if (strcmp(o, "--all-frames") == 0) a->frames = true;
+        else if (strcmp(o, "--percent") == 0 || strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0 ||
+                 strcmp(o, "--fix") == 0 || strcmp(o, "--preset") == 0 || strcmp(o, "--axial") == 0 ||
+                 strcmp(o, "--facet") == 0 || strcmp(o, "--crease") == 0 || strcmp(o, "--damping") == 0 ||
+                 strcmp(o, "--gravity") == 0 || strcmp(o, "--steps") == 0) {
+            if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            int rc = CLI_EXIT_OK;
+            if (strcmp(o, "--percent") == 0) {
+                if (!cli_parse_double(v, &a->percent) || !(a->percent >= 0.0 && a->percent <= 100.0))
+                    return cli_usage(cmd, "--percent needs a number from 0 to 100, got '%s'", v);
+            } else if (o[1] == 'o' || strcmp(o, "--output") == 0) {
+                a->out = v;
+            } else if (strcmp(o, "--fix") == 0) {
+                a->fix = v;
+            } else if (strcmp(o, "--preset") == 0) {
+                if (strcmp(v, "origami-simulator") == 0) a->physical = false;
+                else if (strcmp(v, "physical") == 0) a->physical = true;
+                else return cli_usage(cmd, "--preset is origami-simulator or physical, got '%s'", v);
+            } else if (strcmp(o, "--axial") == 0) {
+                rc = parse_positive(cmd, o, v, false, &a->axial);
+                a->has_axial = true;
+            } else if (strcmp(o, "--facet") == 0) {
+                rc = parse_positive(cmd, o, v, true, &a->facet);
+                a->has_facet = true;
+            } else if (strcmp(o, "--crease") == 0) {
+                rc = parse_positive(cmd, o, v, true, &a->crease);
+                a->has_crease = true;
+            } else if (strcmp(o, "--damping") == 0) {
+                rc = parse_positive(cmd, o, v, true, &a->damping);
+                a->has_damping = true;
+            } else if (strcmp(o, "--gravity") == 0) {
+                if (!cli_parse_double(v, &a->gravity) || !isfinite(a->gravity))
+                    return cli_usage(cmd, "--gravity needs a number, got '%s'", v);
+            } else if (strcmp(o, "--steps") == 0) {
+                if (!cli_parse_int(v, &a->steps) || a->steps <= 0)
+                    return cli_usage(cmd, "--steps needs a positive integer, got '%s'", v);
+            }
+            if (rc != CLI_EXIT_OK) return rc;
+        } else if (o[0] == '-' && o[1]) {
+            return cli_usage(cmd, "unknown option '%s' with --compliant (see orikin fold -h)", o);
+        } else if (!a->path) {
+            a->path = o;
+        } else {
+            return cli_usage(cmd, "one FILE only, got '%s' too", o);
+        }
+    }
+    if (!a->path) return cli_usage(cmd, "missing FILE");
+    if (a->dynamic && a->frames) return cli_usage(cmd, "--all-frames is for the static solver's load steps, not --dynamic");
+    return CLI_EXIT_OK;
+}
+
+static json_t *edge_array(const double *v, int n, bool degrees)
+{
+    json_t *arr = json_array();
+    for (int e = 0; e < n; ++e) json_array_append_new(arr, json_real(degrees ? ori_rad_to_deg_output(v[e]) : v[e]));
+    return arr;
+}
+
+static int write_frames(const compliant_args *a, ori_fold *doc, const ori_compliant *c, int E)
+{
+    int V = ori_compliant_vertex_count(c);
+    ori_error err;
+    for (int k = 0; k < ori_compliant_frame_count(c); ++k) {
+        if (k == 0 && ori_compliant_frame_count(c) > 1 && ori_compliant_frame_fraction(c, 0) == 0.0 && !a->frames) continue;
+        double f = ori_compliant_frame_fraction(c, k);
+        char title[96];
+        snprintf(title, sizeof title, "compliant fold: %.6g %% of the way to the targets", 100.0 * f);
+        int fr = ori_fold_append_state(doc, 0, V, ori_compliant_frame_positions(c, k), E, ori_compliant_frame_angles(c, k), title);
+        char num[64];
+        snprintf(num, sizeof num, "%.17g", f);
+        ori_status st = ori_fold_set_custom(doc, fr, "orikin:fraction", num, &err);
+        json_t *s = edge_array(ori_compliant_frame_strains(c, k), E, false);
+        char *text = json_dumps(s, JSON_COMPACT);
+        json_decref(s);
+        if (st == ORI_OK) st = ori_fold_set_custom(doc, fr, "edges_orikin:strain", text, &err);
+        free(text);
+        if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
+    }
+    ori_status st = ori_fold_save_file(doc, a->out, &err);
+    if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
+    return CLI_EXIT_OK;
+}
+
+bool cli_fold_compliant_wanted(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i)
+        if (strcmp(argv[i], "--compliant") == 0) return true;
+    return false;
+}
+
+int cli_fold_compliant_run(int argc, char **argv)
+{
+    bool force;
+    int rc = cli_guard_strip("fold", &argc, argv, &force);
+    if (rc != CLI_EXIT_OK) return rc;
+    compliant_args a;
+    if ((rc = parse(argc, argv, &a)) != CLI_EXIT_OK) return rc;
+    ori_fold *doc = NULL;
+    ori_pattern *p = NULL;
+    if ((rc = cli_input_load("fold", a.path, &a.input, &doc, &p)) != CLI_EXIT_OK) return rc;
+    ori_compliant_def d = a.physical ? ori_compliant_physical_def() : ori_default_compliant_def();
+    if (a.has_axial) d.axial_stiffness = a.axial;
+    if (a.has_facet) d.facet_stiffness = a.facet;
+    if (a.has_crease) {
+        d.crease_stiffness = a.crease;
+        d.crease_stiffness_per_m = a.crease;
+    }
+    if (a.has_damping) d.damping = a.damping;
+    d.gravity = a.gravity;
+    d.fraction = a.percent / 100.0;
+    d.keep_frames = a.frames;
+    if (a.fix && (rc = cli_find_face_option("fold", a.path, p, "--fix", a.fix, &d.fixed_face)) != CLI_EXIT_OK) {
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+        return rc;
+    }
+    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p);
+    double frames = a.frames ? ceil(180.0 * d.fraction / 10.0) * 4.0 + 1.0 : 1.0;
+    double bytes = a.out ? frames * (3.0 * V + 2.0 * E) * 20.0 : 0.0;
+    if ((rc = cli_guard_check("fold", frames, bytes, force)) != CLI_EXIT_OK) {
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+        return rc;
+    }
+    ori_compliant *c = NULL;
+    ori_error err;
+    ori_status st = ori_compliant_create(p, &d, &c, &err);
+    if (st != ORI_OK) {
+        rc = cli_input_error("fold", a.path, &err);
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+        return rc;
+    }
+    int dyn_steps = 0;
+    cli_progress bar;
+    cli_progress_begin(&bar, "fold", a.dynamic ? "explicit dynamics" : "static equilibrium");
+    st = a.dynamic ? ori_compliant_run_dynamic(c, a.steps, 1e-6, &dyn_steps, &err) : ori_compliant_solve_static(c, &err);
+    cli_progress_end(&bar);
+    bool reached = st == ORI_OK;
+    if (!reached && !a.json) fprintf(stderr, "orikin fold: %s: %s\n", a.path, err.message);
+    double energy = ori_compliant_energy(c), strain = ori_compliant_max_strain(c);
+    double cerr = ori_compliant_crease_error(c), frac = ori_compliant_fraction(c);
+    int it, fa, bt, ls;
+    ori_compliant_stats(c, &it, &fa, &bt, &ls);
+    if (a.json) {
+        json_t *o = json_object();
+        json_object_set_new(o, "file", json_string(a.path));
+        json_object_set_new(o, "model", json_string("compliant"));
+        json_object_set_new(o, "solver", json_string(a.dynamic ? "explicit" : "static"));
+        json_object_set_new(o, "preset", json_string(a.physical ? "physical" : "origami-simulator"));
+        json_object_set_new(o, "percent", json_real(a.percent));
+        json_object_set_new(o, "reached", json_boolean(reached));
+        json_object_set_new(o, "reached_fraction", json_real(frac));
+        json_object_set_new(o, "max_strain", json_real(strain));
+        json_object_set_new(o, "energy", json_real(energy));
+        json_object_set_new(o, "crease_error_deg", json_real(cerr * 180.0 / ORI_PI));
+        json_object_set_new(o, "gradient_norm", json_real(ori_compliant_gradient_norm(c)));
+        json_object_set_new(o, "load_scale", json_real(ori_compliant_load_scale(c)));
+        json_object_set_new(o, "vertices", json_integer(V));
+        json_object_set_new(o, "bars", json_integer(ori_compliant_bar_count(c)));
+        json_object_set_new(o, "hinges", json_integer(ori_compliant_hinge_count(c)));
+        if (a.dynamic) {
+            json_object_set_new(o, "steps", json_integer(dyn_steps));
+            json_object_set_new(o, "time_step", json_real(ori_compliant_time_step(c)));
+        } else {
+            json_object_set_new(o, "newton_iterations", json_integer(it));
+            json_object_set_new(o, "load_steps", json_integer(ls));
+        }
+        double *ang = malloc(sizeof(double) * (size_t)(E + 1)), *str = malloc(sizeof(double) * (size_t)(E + 1));
+        for (int e = 0; e < E; ++e) {
+            ang[e] = ori_compliant_fold_angle(c, e);
+            str[e] = ori_compliant_edge_strain(c, e);
+        }
+        json_object_set_new(o, "fold_angles_deg", edge_array(ang, E, true));
+        json_object_set_new(o, "strains", edge_array(str, E, false));
+        free(ang);
+        free(str);
+        if (!reached) json_object_set_new(o, "reason", json_string(err.message));
+        cli_print_json(o);
+    } else {
+        printf("%s: compliant fold (%s, %s solver) to %g %%: %s %.6g %%\n", a.path,
+               a.physical ? "physical preset" : "Origami Simulator's preset", a.dynamic ? "explicit" : "static", a.percent,
+               reached ? "reached" : "stopped at", 100.0 * frac);
+        printf("model: %d vertices, %d bars, %d hinges (%d triangles)\n", V, ori_compliant_bar_count(c),
+               ori_compliant_hinge_count(c), ori_compliant_triangle_count(c));
+        if (a.dynamic) printf("explicit: %d steps of %.4g\n", dyn_steps, ori_compliant_time_step(c));
+        else printf("static: %d Newton iterations (%d factorizations), %d load steps, |grad E| %.2g (load scale %.3g)\n", it, fa, ls,
+                    ori_compliant_gradient_norm(c), ori_compliant_load_scale(c));
+        printf("max strain %.4g %%, energy %.6g, largest crease error vs target %.4g deg\n", 100.0 * strain, energy,
+               cerr * 180.0 / ORI_PI);
+    }
+    if (rc == CLI_EXIT_OK && a.out) rc = write_frames(&a, doc, c, E);
+    if (rc == CLI_EXIT_OK && !reached) rc = a.dynamic ? CLI_EXIT_PARTIAL : CLI_EXIT_NEGATIVE;
+    ori_compliant_destroy(c);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    return rc;
+}

@@ -1,0 +1,38 @@
+// orikin fold --compliant (fold_compliant.c): the bar-and-hinge model's fold. cmd_fold.c
+// hands the command line over when --compliant is among the arguments.
+#ifndef ORI_CLI_FOLD_COMPLIANT_H
+#define ORI_CLI_FOLD_COMPLIANT_H
+
+#include <stdbool.h>
+
+// Whether --compliant is given.
+bool cli_fold_compliant_wanted(int argc, char **argv);
+// Run the compliant fold (argv[0] = "fold").
+int cli_fold_compliant_run(int argc, char **argv);
+
+#define CLI_FOLD_COMPLIANT_HELP                                                                          \
+    "compliant folding (--compliant; docs/compliant.md):\n"                                              \
+    "  orikin fold FILE --compliant [--percent P] [--dynamic] [--fix FACE] [--preset NAME]\n"            \
+    "                   [--axial K] [--facet K] [--crease K] [--damping Z] [--gravity G]\n"            \
+    "                   [--steps N] [--all-frames] [--json] [-o OUT]\n"                                 \
+    "  Fold with a bar-and-hinge model (Origami Simulator's: faces triangulated, bars on every\n"      \
+    "  edge and diagonal, creases driven to P % of their targets, facet hinges resisting panel\n"     \
+    "  bending), so that patterns that are not rigidly foldable fold too, bending a little. The\n"    \
+    "  static solver (default) finds the equilibrium by Newton with load steps (|grad E| <= 1e-10\n"  \
+    "  of the load); --dynamic runs the explicit damped solver until it settles.\n"                   \
+    "  --percent P     how far toward the targets (edges_foldAngle, else +-180 by M/V); default 100\n" \
+    "  --dynamic       explicit solver (damped Verlet, stable time step), at most --steps steps\n"     \
+    "  --preset NAME   origami-simulator (default: axial 20, facet 0.2, crease 0.7, damping 0.45)\n"   \
+    "                  or physical (SI: 1 um silicon panels; lengths in metres)\n"                     \
+    "  --axial K, --facet K, --crease K, --damping Z   the stiffnesses of the preset, replaced\n"      \
+    "  --gravity G     acceleration along -z (model units or m/s^2); default 0\n"                       \
+    "  --all-frames    -o writes one frame per load step (default: the final state)\n"                \
+    "  --json          print {file, model, solver, preset, percent, reached, reached_fraction,\n"       \
+    "                  max_strain, energy, crease_error_deg, gradient_norm, load_scale, vertices,\n"  \
+    "                  bars, hinges, steps | newton_iterations, load_steps, fold_angles_deg,\n"       \
+    "                  strains, reason}\n"                                                             \
+    "  -o OUT.fold     FILE with the state(s) appended as folded-form frames, each with\n"            \
+    "                  \"orikin:fraction\" and \"edges_orikin:strain\" (axial strain per edge)\n"       \
+    "  Exit 0 reached, 1 no equilibrium (static), 5 not settled in --steps (dynamic), 3 bad input.\n"
+
+#endif

@@ -1,0 +1,135 @@
+/// orikin compliant folding (spec item 19): a bar-and-hinge model of the sheet (Origami
+/// Simulator's, Ghassaei et al. 7OSME 2018; MERLIN's, Liu & Paulino 2017). Faces are
+/// triangulated; every edge and diagonal is a bar; creases are hinges driven toward their target
+/// angle × the fold fraction; diagonals are facet hinges resisting panel bending. An implicit
+/// static solver (Newton on the total energy, CHOLMOD Cholesky, load stepping over the fraction,
+/// energy line search) and an explicit dynamic one (damped Verlet, Origami Simulator's scheme).
+/// docs/compliant.md gives the model equation by equation.
+///
+/// Functions: ori_default_compliant_def, ori_compliant_physical_def, ori_compliant_create,
+/// ori_compliant_destroy, ori_compliant_solve_static, ori_compliant_run_dynamic, and the accessors
+/// below (positions, fold angles, strains, energy, frames).
+#ifndef ORIKIN_COMPLIANT_H
+#define ORIKIN_COMPLIANT_H
+
+#include "base.h"
+#include "math.h"
+#include "pattern.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/// How the stiffnesses are given.
+typedef enum ori_compliant_preset {
+    ORI_COMPLIANT_ORIGAMI_SIMULATOR = 0, ///< normalised: bar k = axial/L0, hinge k = stiffness·L, unit mass per vertex
+    ORI_COMPLIANT_PHYSICAL,              ///< SI: panel E, thickness, ν, density; crease stiffness per length (N·m/rad/m)
+} ori_compliant_preset;
+
+/// Model and solver parameters; get them from ori_default_compliant_def() (Origami Simulator's
+/// defaults) or ori_compliant_physical_def() (a 1 µm silicon-like panel with soft hinges).
+typedef struct ori_compliant_def {
+    ori_compliant_preset preset;
+    // --- ORI_COMPLIANT_ORIGAMI_SIMULATOR ---
+    double axial_stiffness;  ///< bar stiffness k = axial_stiffness / L0 (Origami Simulator: 20)
+    double facet_stiffness;  ///< facet hinge k = facet_stiffness · L (Origami Simulator: 0.2)
+    double crease_stiffness; ///< crease hinge k = crease_stiffness · L (Origami Simulator: 0.7)
+    // --- ORI_COMPLIANT_PHYSICAL (SI) ---
+    double young_modulus_pa;         ///< panel Young's modulus (Pa)
+    double poisson_ratio;            ///< panel Poisson ratio
+    double thickness_m;              ///< panel thickness (m); pattern lengths are metres
+    double density_kg_m3;            ///< panel density (kg/m³): lumped vertex masses
+    double crease_stiffness_per_m;   ///< crease hinge stiffness per unit length (N·m/rad per m)
+    // --- both ---
+    double damping;                  ///< explicit solver: fraction of critical damping per bar (Origami Simulator: 0.45)
+    double gravity;                  ///< acceleration along −z (model units or m/s²), 0 = none
+    int fixed_face;                  ///< face whose vertices are held (FOLD index), ORI_NULL_INDEX = the face nearest the sheet's centre
+    const double *target_angles_rad; ///< crease targets at 100 %, edge_count (NULL: ori_target_angles_default); copied
+    double fraction;                 ///< fold fraction 0 … 1: crease rest angle = target · fraction
+    double max_step_rad;             ///< static solver: largest rest-angle change per load step (> 0)
+    int max_iterations;              ///< static solver: Newton iterations per load step
+    double tolerance;                ///< static equilibrium: |∇E|∞ ≤ tolerance · load scale (1e-10)
+    bool keep_frames;                ///< keep one frame per load step (else only the last)
+    int internal_value;              ///< set by the default functions; do not change
+} ori_compliant_def;
+
+/// Origami Simulator's preset: axial 20, facet 0.2, crease 0.7, damping 0.45, no gravity, fraction 1.
+ORI_API ori_compliant_def ori_default_compliant_def(void);
+/// The physical preset (SI): E 169 GPa, ν 0.22, t 1 µm, density 2330 kg/m³, crease 1e-9 N·m/rad per m.
+ORI_API ori_compliant_def ori_compliant_physical_def(void);
+
+/// A bar-and-hinge model of one flat pattern, with its current state and frames.
+typedef struct ori_compliant ori_compliant;
+
+/// Build the model of a built flat pattern (z = 0, or a planar sheet in another plane, turned into
+/// z = 0 with the faces' normal on +z). Fails (*out NULL) with ORI_ERR_ARGUMENT when the vertices
+/// are not in one plane (a folded form), ORI_ERR_DEGENERATE for a degenerate face (zero area,
+/// repeated vertex, zero-length edge; error.element = its FOLD index), ORI_ERR_TOPOLOGY for an
+/// edge of three faces, ORI_ERR_RANGE for a bad fixed face or a non-finite or negative stiffness,
+/// fraction, target or tolerance (the message names the field). Destroy with ori_compliant_destroy.
+ORI_API ori_status ori_compliant_create(const ori_pattern *pattern, const ori_compliant_def *def,
+                                        ori_compliant **out, ori_error *error);
+/// Destroy a model; NULL is a no-op.
+ORI_API void ori_compliant_destroy(ori_compliant *c);
+
+/// Static equilibrium at def->fraction: load steps from the current fraction (0 at creation),
+/// Newton with an energy line search at each. ORI_OK when every step reached |∇E|∞ ≤
+/// tolerance · load scale (or its roundoff floor, ori_compliant_gradient_floor);
+/// ORI_ERR_NOT_CONVERGED otherwise (the state and frames up to the last equilibrium are kept,
+/// ori_compliant_fraction says how far).
+ORI_API ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error);
+/// Set the fold fraction of the next solve (0 … 1). ORI_ERR_RANGE outside.
+ORI_API ori_status ori_compliant_set_fraction(ori_compliant *c, double fraction, ori_error *error);
+
+/// Explicit dynamics at def->fraction (rest angles set at once, as Origami Simulator's slider):
+/// at most max_steps damped Verlet steps of ori_compliant_time_step, stopping once the largest
+/// force is ≤ force_tolerance · load scale and the largest speed ≤ force_tolerance · load scale ·
+/// time step / mass. Returns the steps done in *steps (may be NULL); ORI_ERR_NOT_CONVERGED when
+/// not settled or when the state stops being finite (the message says which; the state is kept).
+ORI_API ori_status ori_compliant_run_dynamic(ori_compliant *c, int max_steps, double force_tolerance,
+                                            int *steps, ori_error *error);
+/// Stable explicit time step: 0.9 / (2π ω_max), ω_max a Gershgorin bound of √(K/m) at the flat state.
+ORI_API double ori_compliant_time_step(const ori_compliant *c);
+
+/// Counts: vertices, bars (edges + diagonals), hinges (crease and facet), triangles.
+ORI_API int ori_compliant_vertex_count(const ori_compliant *c);
+ORI_API int ori_compliant_bar_count(const ori_compliant *c);
+ORI_API int ori_compliant_hinge_count(const ori_compliant *c);
+ORI_API int ori_compliant_triangle_count(const ori_compliant *c);
+
+/// Current vertex positions (vertex_count, owned by c, valid until the next solve).
+ORI_API const ori_v3 *ori_compliant_positions(const ori_compliant *c);
+/// Current fold angle of a pattern edge (radians, FOLD sign: + valley); 0 for boundary edges.
+ORI_API double ori_compliant_fold_angle(const ori_compliant *c, int edge);
+/// Axial strain (L − L0)/L0 of a pattern edge's bar.
+ORI_API double ori_compliant_edge_strain(const ori_compliant *c, int edge);
+/// Largest |strain| over every bar (edges and diagonals).
+ORI_API double ori_compliant_max_strain(const ori_compliant *c);
+/// Total potential energy (bars + hinges + gravity) of the current state.
+ORI_API double ori_compliant_energy(const ori_compliant *c);
+/// |∇E|∞ of the current state, the load scale it is measured against (a force) and the roundoff
+/// floor of the gradient (64 ε × the largest element force scale: k·L0 of a bar, k_h·π·|∇ρ| of a hinge).
+ORI_API double ori_compliant_gradient_norm(const ori_compliant *c);
+ORI_API double ori_compliant_load_scale(const ori_compliant *c);
+ORI_API double ori_compliant_gradient_floor(const ori_compliant *c);
+/// Fraction of the current state (the last equilibrium's).
+ORI_API double ori_compliant_fraction(const ori_compliant *c);
+/// Largest |fold angle − target · fraction| over the creases (radians).
+ORI_API double ori_compliant_crease_error(const ori_compliant *c);
+/// Solver counters: Newton iterations, factorizations, line-search backtracks, load steps.
+ORI_API void ori_compliant_stats(const ori_compliant *c, int *iterations, int *factorizations, int *backtracks,
+                                 int *load_steps);
+
+/// Frames kept by the static solver (one per load step with keep_frames, else the last).
+ORI_API int ori_compliant_frame_count(const ori_compliant *c);
+/// Frame k's fraction, positions (vertex_count), fold angles and strains (edge_count each); owned by c.
+ORI_API double ori_compliant_frame_fraction(const ori_compliant *c, int k);
+ORI_API const ori_v3 *ori_compliant_frame_positions(const ori_compliant *c, int k);
+ORI_API const double *ori_compliant_frame_angles(const ori_compliant *c, int k);
+ORI_API const double *ori_compliant_frame_strains(const ori_compliant *c, int k);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,1020 @@
+// The compliant bar-and-hinge model: building it from a flat pattern (faces triangulated by ear
+// clipping, bars on every edge and diagonal, crease and facet hinges), the implicit static
+// solver (Newton on the total energy, CHOLMOD Cholesky of the Hessian + λI, load stepping over
+// the fold fraction, a backtracking line search on the energy), results and frames.
+// docs/compliant.md gives the model equation by equation.
+#include <float.h>
+#include <stdlib.h>
+
+#include "compliant_internal.h"
+
+// Default largest rest-angle change per load step (10°).
+#define CMP_DEFAULT_STEP_RAD (ORI_PI / 18.0)
+// Default static equilibrium tolerance, relative to the load scale.
+#define CMP_DEFAULT_TOLERANCE 1e-10
+// Default Newton iterations per load step.
+#define CMP_DEFAULT_ITERATIONS 200
+// Roundoff floor of the gradient: this many ε × the largest element force scale.
+#define CMP_GRADIENT_FLOOR_EPS 64.0
+// Armijo constant of the line search, and its largest number of halvings.
+#define CMP_ARMIJO 1e-4
+#define CMP_MAX_BACKTRACKS 60
+// Relative energy change below which two energies are equal to roundoff (the line search then
+// accepts a step that lowers |∇E|, since the energy can no longer tell).
+#define CMP_ENERGY_ROUNDOFF 1e-13
+// Filipov et al. 2017's facet bending coefficient (physical preset).
+#define CMP_FILIPOV_C 0.55
+// A sheet given in another plane than z = 0 is flat when no vertex is farther than this × the
+// pattern's diagonal from the faces' mean plane (single-precision exports: 1e-6).
+#define CMP_PLANE_REL 1e-6
+
+ori_compliant_def ori_default_compliant_def(void)
+{
+    ori_compliant_def d;
+    memset(&d, 0, sizeof d);
+    d.preset = ORI_COMPLIANT_ORIGAMI_SIMULATOR;
+    d.axial_stiffness = 20.0;
+    d.facet_stiffness = 0.2;
+    d.crease_stiffness = 0.7;
+    d.young_modulus_pa = 169e9;
+    d.poisson_ratio = 0.22;
+    d.thickness_m = 1e-6;
+    d.density_kg_m3 = 2330.0;
+    d.crease_stiffness_per_m = 1e-9;
+    d.damping = 0.45;
+    d.gravity = 0.0;
+    d.fixed_face = ORI_NULL_INDEX;
+    d.target_angles_rad = NULL;
+    d.fraction = 1.0;
+    d.max_step_rad = CMP_DEFAULT_STEP_RAD;
+    d.max_iterations = CMP_DEFAULT_ITERATIONS;
+    d.tolerance = CMP_DEFAULT_TOLERANCE;
+    d.keep_frames = false;
+    d.internal_value = ORI__DEF_COOKIE;
+    return d;
+}
+
+ori_compliant_def ori_compliant_physical_def(void)
+{
+    ori_compliant_def d = ori_default_compliant_def();
+    d.preset = ORI_COMPLIANT_PHYSICAL;
+    return d;
+}
+
+void ori__cmp_set_trace(ori_compliant *c, ori__cmp_trace_fn *fn, void *user)
+{
+    c->trace = fn;
+    c->trace_user = user;
+}
+
+static void free_frames(ori_compliant *c)
+{
+    for (int k = 0; k < c->nframes; ++k) {
+        ori__free(c->frames[k].x);
+        ori__free(c->frames[k].angles);
+        ori__free(c->frames[k].strains);
+    }
+    c->nframes = 0;
+}
+
+void ori_compliant_destroy(ori_compliant *c)
+{
+    if (!c) return;
+    free_frames(c);
+    ori__free(c->frames);
+    ori__free(c->bars);
+    ori__free(c->hinges);
+    ori__free(c->tris);
+    ori__free(c->edge_bar);
+    ori__free(c->edge_hinge);
+    ori__free(c->mass);
+    ori__free(c->dof);
+    ori__free(c->x);
+    ori__free(c->x0);
+    ori__free(c->v);
+    ori__free(c->nb_start);
+    ori__free(c->nb);
+    ori__free(c->colptr);
+    ori__free(c->rowind);
+    ori__sls_destroy(c->sls);
+    ori__free(c);
+}
+
+static double cross2(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+// Is p strictly inside or on triangle abc (counter-clockwise)?
+static bool in_triangle(const double *p, const double *a, const double *b, const double *cc)
+{
+    return cross2(a, b, p) >= 0.0 && cross2(b, cc, p) >= 0.0 && cross2(cc, a, p) >= 0.0;
+}
+
+typedef struct link {
+    int a, b, edge;  // edge = pattern edge or -1 (diagonal)
+    int tri[2], opp[2];
+    int ntri;
+} link;
+
+typedef struct builder {
+    link *links;
+    int nlinks, cap_links;
+    int *tris;
+    int ntri, cap_tris; // ints (3 per triangle)
+} builder;
+
+static int add_link(builder *bd, int a, int b, int edge)
+{
+    link l = {a, b, edge, {-1, -1}, {-1, -1}, 0};
+    ORI__PUSH(bd->links, bd->nlinks, bd->cap_links, l);
+    return bd->nlinks - 1;
+}
+
+// Attach triangle t (opposite vertex o) to link k; false when a link has three triangles.
+static bool attach(builder *bd, int k, int t, int o)
+{
+    link *l = &bd->links[k];
+    if (l->ntri >= 2) return false;
+    l->tri[l->ntri] = t;
+    l->opp[l->ntri] = o;
+    l->ntri++;
+    return true;
+}
+
+// Ear clipping of face f (vertex list fv, n vertices) in the flat sheet.
+static ori_status triangulate(builder *bd, const ori_pattern *p, int f, int *fv, int n, const double *x,
+                              ori_error *error)
+{
+    int *side = ori__alloc(sizeof(int) * (size_t)n);
+    double area = 0.0;
+    for (int t = 0; t < n; ++t) {
+        const double *a = x + 3 * fv[t], *b = x + 3 * fv[(t + 1) % n];
+        area += a[0] * b[1] - a[1] * b[0];
+    }
+    if (!(fabs(area) > 0.0)) {
+        ori__free(side);
+        return ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f, "face %d has zero area", f);
+    }
+    if (area < 0.0)
+        for (int t = 0; t < n / 2; ++t) {
+            int s = fv[t];
+            fv[t] = fv[n - 1 - t];
+            fv[n - 1 - t] = s;
+        }
+    for (int t = 0; t < n; ++t) {
+        int e = ori_pattern_find_edge(p, fv[t], fv[(t + 1) % n]);
+        if (e < 0) {
+            ori__free(side);
+            return ori__fail_at(error, ORI_ERR_TOPOLOGY, "faces_vertices", f, "face %d: no edge joins vertices %d and %d",
+                                f, fv[t], fv[(t + 1) % n]);
+        }
+        side[t] = e; // pattern edge e is link e
+    }
+    double scale = fabs(area);
+    while (n >= 3) {
+        int ear = -1;
+        for (int t = 0; t < n && ear < 0; ++t) {
+            int pv = fv[(t + n - 1) % n], cv = fv[t], nv = fv[(t + 1) % n];
+            const double *a = x + 3 * pv, *b = x + 3 * cv, *cc = x + 3 * nv;
+            if (!(cross2(a, b, cc) > DBL_EPSILON * scale)) continue;
+            bool ok = true;
+            for (int s = 0; s < n && ok; ++s) {
+                int w = fv[s];
+                if (w == pv || w == cv || w == nv) continue;
+                if (in_triangle(x + 3 * w, a, b, cc)) ok = false;
+            }
+            if (ok) ear = t;
+        }
+        if (ear < 0) {
+            ori__free(side);
+            return ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f,
+                                "face %d cannot be triangulated (degenerate or self-intersecting)", f);
+        }
+        int tp = (ear + n - 1) % n, tn = (ear + 1) % n;
+        int pv = fv[tp], cv = fv[ear], nv = fv[tn];
+        int t = bd->ntri / 3;
+        ORI__PUSH(bd->tris, bd->ntri, bd->cap_tris, pv);
+        ORI__PUSH(bd->tris, bd->ntri, bd->cap_tris, cv);
+        ORI__PUSH(bd->tris, bd->ntri, bd->cap_tris, nv);
+        int closing = n == 3 ? side[tn] : add_link(bd, pv, nv, -1);
+        bool ok = attach(bd, side[tp], t, nv) && attach(bd, side[ear], t, pv) && attach(bd, closing, t, cv);
+        if (!ok) {
+            ori__free(side);
+            return ori__fail_at(error, ORI_ERR_TOPOLOGY, "faces_vertices", f, "an edge of face %d has more than two faces", f);
+        }
+        if (n == 3) break;
+        side[tp] = closing;
+        for (int s = ear; s < n - 1; ++s) {
+            fv[s] = fv[s + 1];
+            side[s] = side[s + 1];
+        }
+        n--;
+    }
+    ori__free(side);
+    return ORI_OK;
+}
+
+static bool finite_nonneg(double v) { return isfinite(v) && v >= 0.0; }
+
+static ori_status check_def(const ori_compliant_def *d, ori_error *error)
+{
+    struct { const char *name; double v; bool positive; } f[] = {
+        {"axial_stiffness", d->axial_stiffness, true},   {"facet_stiffness", d->facet_stiffness, false},
+        {"crease_stiffness", d->crease_stiffness, false}, {"young_modulus_pa", d->young_modulus_pa, true},
+        {"thickness_m", d->thickness_m, true},           {"density_kg_m3", d->density_kg_m3, true},
+        {"crease_stiffness_per_m", d->crease_stiffness_per_m, false}, {"damping", d->damping, false},
+        {"max_step_rad", d->max_step_rad, true},         {"tolerance", d->tolerance, true},
+    };
+    for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k)
+        if (!finite_nonneg(f[k].v) || (f[k].positive && !(f[k].v > 0.0)))
+            return ori__fail(error, ORI_ERR_RANGE, "compliant: %s must be finite and %s (got %g)", f[k].name,
+                             f[k].positive ? "> 0" : "≥ 0", f[k].v);
+    if (!isfinite(d->gravity)) return ori__fail(error, ORI_ERR_RANGE, "compliant: gravity must be finite");
+    if (!(d->poisson_ratio > -1.0 && d->poisson_ratio < 0.5))
+        return ori__fail(error, ORI_ERR_RANGE, "compliant: poisson_ratio must be in (-1, 0.5) (got %g)", d->poisson_ratio);
+    if (!(d->fraction >= 0.0 && d->fraction <= 1.0))
+        return ori__fail(error, ORI_ERR_RANGE, "compliant: fraction must be in [0, 1] (got %g)", d->fraction);
+    if (d->max_iterations <= 0) return ori__fail(error, ORI_ERR_RANGE, "compliant: max_iterations must be > 0");
+    return ORI_OK;
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+// The sparse pattern of the Hessian: vertex pairs sharing a bar or a hinge.
+static void build_pattern(ori_compliant *c)
+{
+    int nv = c->nv;
+    int *deg = ori__calloc((size_t)nv + 1, sizeof(int));
+    // pairs (lower dof, higher dof): from bars and hinge wing pairs (i, l); all other hinge pairs are bars
+    int npairs = c->nbar + c->nhinge;
+    int *pa = ori__alloc(sizeof(int) * (size_t)(npairs > 0 ? npairs : 1));
+    int *pb = ori__alloc(sizeof(int) * (size_t)(npairs > 0 ? npairs : 1));
+    int np = 0;
+    for (int b = 0; b < c->nbar; ++b) {
+        pa[np] = c->bars[b].a;
+        pb[np++] = c->bars[b].b;
+    }
+    for (int h = 0; h < c->nhinge; ++h) {
+        pa[np] = c->hinges[h].i;
+        pb[np++] = c->hinges[h].l;
+    }
+    for (int k = 0; k < np; ++k) {
+        int a = pa[k], b = pb[k];
+        if (c->dof[a] < 0 || c->dof[b] < 0 || a == b) continue;
+        if (c->dof[a] > c->dof[b]) {
+            pa[k] = b;
+            pb[k] = a;
+        }
+        deg[pb[k]]++;
+    }
+    c->nb_start = ori__calloc((size_t)nv + 1, sizeof(int));
+    for (int v = 0; v < nv; ++v) c->nb_start[v + 1] = c->nb_start[v] + deg[v];
+    c->nb = ori__alloc(sizeof(int) * (size_t)(c->nb_start[nv] > 0 ? c->nb_start[nv] : 1));
+    for (int v = 0; v < nv; ++v) deg[v] = c->nb_start[v];
+    for (int k = 0; k < np; ++k) {
+        int a = pa[k], b = pb[k];
+        if (c->dof[a] < 0 || c->dof[b] < 0 || a == b) continue;
+        c->nb[deg[b]++] = a;
+    }
+    // sort each list by dof (dof order = vertex order among free vertices) and remove duplicates
+    int w = 0;
+    int *start = ori__alloc(sizeof(int) * ((size_t)nv + 1));
+    for (int v = 0; v < nv; ++v) {
+        int s = c->nb_start[v], e = c->nb_start[v + 1];
+        qsort(c->nb + s, (size_t)(e - s), sizeof(int), cmp_int);
+        start[v] = w;
+        for (int k = s; k < e; ++k)
+            if (k == s || c->nb[k] != c->nb[k - 1]) c->nb[w++] = c->nb[k];
+    }
+    start[nv] = w;
+    memcpy(c->nb_start, start, sizeof(int) * ((size_t)nv + 1));
+    ori__free(start);
+    ori__free(deg);
+    ori__free(pa);
+    ori__free(pb);
+    // scalar compressed columns (upper triangle)
+    int nd = c->ndof;
+    c->colptr = ori__alloc(sizeof(int) * ((size_t)nd + 1));
+    c->colptr[0] = 0;
+    for (int v = 0; v < nv; ++v) {
+        if (c->dof[v] < 0) continue;
+        int cnt = c->nb_start[v + 1] - c->nb_start[v];
+        for (int q = 0; q < 3; ++q) c->colptr[c->dof[v] + q + 1] = c->colptr[c->dof[v] + q] + 3 * cnt + q + 1;
+    }
+    int nnz = c->colptr[nd];
+    c->rowind = ori__alloc(sizeof(int) * (size_t)(nnz > 0 ? nnz : 1));
+    for (int v = 0; v < nv; ++v) {
+        if (c->dof[v] < 0) continue;
+        for (int q = 0; q < 3; ++q) {
+            int k = c->colptr[c->dof[v] + q];
+            for (int s = c->nb_start[v]; s < c->nb_start[v + 1]; ++s)
+                for (int p = 0; p < 3; ++p) c->rowind[k++] = c->dof[c->nb[s]] + p;
+            for (int p = 0; p <= q; ++p) c->rowind[k++] = c->dof[v] + p;
+        }
+    }
+    c->sls = ori__sls_create_sym(nd, c->colptr, c->rowind);
+}
+
+// The rotation taking the sheet's plane to z = 0 (identity for a pattern in z = 0): a planar
+// sheet in another plane (Origami Simulator exports its flat sheet in y = 0) is turned so that
+// the faces' Newell normal points to +z. False when the vertices are not in one plane.
+static bool sheet_plane(const ori_pattern *p, ori_m3 *rot)
+{
+    memset(rot, 0, sizeof *rot);
+    rot->m[0][0] = rot->m[1][1] = rot->m[2][2] = 1.0;
+    if (!ori_pattern_is_3d(p)) return true;
+    int nv = ori_pattern_vertex_count(p), nf = ori_pattern_face_count(p);
+    double n[3] = {0, 0, 0}, cen[3] = {0, 0, 0};
+    for (int v = 0; v < nv; ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        cen[0] += q.x / nv;
+        cen[1] += q.y / nv;
+        cen[2] += q.z / nv;
+    }
+    int cap = 0, *fv = NULL;
+    for (int f = 0; f < nf; ++f) {
+        int k = ori_pattern_face_size(p, f);
+        if (k > cap) {
+            cap = k;
+            fv = ori__realloc(fv, sizeof(int) * (size_t)cap);
+        }
+        ori_pattern_face_vertices(p, f, fv, cap);
+        for (int t = 0; t < k; ++t) {
+            ori_v3 a = ori_pattern_vertex(p, fv[t]), b = ori_pattern_vertex(p, fv[(t + 1) % k]);
+            n[0] += (a.y - b.y) * (a.z + b.z);
+            n[1] += (a.z - b.z) * (a.x + b.x);
+            n[2] += (a.x - b.x) * (a.y + b.y);
+        }
+    }
+    ori__free(fv);
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 0.0)) return false;
+    for (int q = 0; q < 3; ++q) n[q] /= len;
+    double diag = ori_pattern_diagonal(p), worst = 0.0;
+    for (int v = 0; v < nv; ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        worst = fmax(worst, fabs((q.x - cen[0]) * n[0] + (q.y - cen[1]) * n[1] + (q.z - cen[2]) * n[2]));
+    }
+    if (!(worst <= CMP_PLANE_REL * diag)) return false;
+    // an orthonormal frame (e1, e2, n): rows of the rotation
+    double e1[3];
+    if (fabs(n[0]) < 0.9) {
+        // x minus its component along n
+        e1[0] = 1.0 - n[0] * n[0];
+        e1[1] = -n[0] * n[1];
+        e1[2] = -n[0] * n[2];
+    } else { // y minus its component along n
+        e1[0] = -n[1] * n[0];
+        e1[1] = 1.0 - n[1] * n[1];
+        e1[2] = -n[1] * n[2];
+    }
+    double l1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    for (int q = 0; q < 3; ++q) e1[q] /= l1;
+    double e2[3] = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+    for (int q = 0; q < 3; ++q) {
+        rot->m[0][q] = e1[q];
+        rot->m[1][q] = e2[q];
+        rot->m[2][q] = n[q];
+    }
+    return true;
+}
+
+static void store_frame(ori_compliant *c, bool replace_last);
+
+ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *def, ori_compliant **out,
+                                ori_error *error)
+{
+    ORI_ASSERT(p && def && out);
+    ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
+    *out = NULL;
+    ori_status st = check_def(def, error);
+    if (st) return st;
+    if (!ori_pattern_is_built(p)) return ori__fail(error, ORI_ERR_ARGUMENT, "compliant: the pattern is not built");
+    int nv = ori_pattern_vertex_count(p), ne = ori_pattern_edge_count(p), nf = ori_pattern_face_count(p);
+    ori_m3 rot;
+    if (!sheet_plane(p, &rot))
+        return ori__fail(error, ORI_ERR_ARGUMENT,
+                         "compliant: the model starts from a flat sheet: the vertices do not lie in one plane (a folded form?)");
+    if (nf <= 0) return ori__fail(error, ORI_ERR_ARGUMENT, "compliant: the pattern has no faces");
+    if (def->fixed_face != ORI_NULL_INDEX && (def->fixed_face < 0 || def->fixed_face >= nf))
+        return ori__fail_at(error, ORI_ERR_RANGE, "faces_vertices", def->fixed_face, "compliant: no face %d to fix",
+                            def->fixed_face);
+    double *target = ori__alloc(sizeof(double) * (size_t)(ne > 0 ? ne : 1));
+    if (def->target_angles_rad) memcpy(target, def->target_angles_rad, sizeof(double) * (size_t)ne);
+    else ori_target_angles_default(p, target);
+    for (int e = 0; e < ne; ++e)
+        if (!isfinite(target[e]) || fabs(target[e]) > ORI_PI) {
+            ori__free(target);
+            return ori__fail_at(error, ORI_ERR_RANGE, "edges_foldAngle", e, "compliant: target angle of edge %d out of ±180°", e);
+        }
+
+    ori_compliant *c = ori__calloc(1, sizeof *c);
+    c->def = *def;
+    c->def.target_angles_rad = NULL;
+    c->nv = nv;
+    c->ne = ne;
+    c->x = ori__alloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
+    c->x0 = ori__alloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
+    c->v = ori__calloc(3 * (size_t)(nv > 0 ? nv : 1), sizeof(double));
+    for (int v = 0; v < nv; ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        c->x[3 * v] = rot.m[0][0] * q.x + rot.m[0][1] * q.y + rot.m[0][2] * q.z;
+        c->x[3 * v + 1] = rot.m[1][0] * q.x + rot.m[1][1] * q.y + rot.m[1][2] * q.z;
+        c->x[3 * v + 2] = 0.0;
+    }
+    memcpy(c->x0, c->x, sizeof(double) * 3 * (size_t)nv);
+
+    builder bd = {0};
+    for (int e = 0; e < ne; ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        add_link(&bd, ed.v[0], ed.v[1], e);
+    }
+    int fcap = 16;
+    int *fv = ori__alloc(sizeof(int) * (size_t)fcap);
+    for (int f = 0; f < nf && !st; ++f) {
+        int n = ori_pattern_face_size(p, f);
+        if (n > fcap) {
+            fcap = n;
+            fv = ori__realloc(fv, sizeof(int) * (size_t)fcap);
+        }
+        ori_pattern_face_vertices(p, f, fv, fcap);
+        if (n < 3) st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f, "face %d has fewer than 3 vertices", f);
+        for (int a = 0; a < n && !st; ++a)
+            for (int b = a + 1; b < n && !st; ++b)
+                if (fv[a] == fv[b])
+                    st = ori__fail_at(error, ORI_ERR_DEGENERATE, "faces_vertices", f, "face %d repeats vertex %d", f, fv[a]);
+        if (!st) st = triangulate(&bd, p, f, fv, n, c->x, error);
+    }
+    ori__free(fv);
+    if (st) {
+        ori__free(bd.links);
+        ori__free(bd.tris);
+        ori__free(target);
+        ori_compliant_destroy(c);
+        return st;
+    }
+    c->tris = bd.tris;
+    c->ntri = bd.ntri / 3;
+
+    // mean edge length, triangle areas
+    double lsum = 0.0;
+    int lcount = 0;
+    for (int k = 0; k < bd.nlinks; ++k) {
+        const double *a = c->x + 3 * bd.links[k].a, *b = c->x + 3 * bd.links[k].b;
+        lsum += hypot(b[0] - a[0], b[1] - a[1]);
+        lcount++;
+    }
+    c->mean_length = lcount ? lsum / lcount : 1.0;
+    double *tri_area = ori__alloc(sizeof(double) * (size_t)(c->ntri > 0 ? c->ntri : 1));
+    for (int t = 0; t < c->ntri; ++t) {
+        const int *v = c->tris + 3 * t;
+        tri_area[t] = 0.5 * cross2(c->x + 3 * v[0], c->x + 3 * v[1], c->x + 3 * v[2]);
+    }
+    const ori_compliant_def *d = &c->def;
+    bool phys = d->preset == ORI_COMPLIANT_PHYSICAL;
+    // masses: unit per vertex (Origami Simulator), or ρ t A / 3 per triangle corner
+    c->mass = ori__calloc((size_t)(nv > 0 ? nv : 1), sizeof(double));
+    for (int t = 0; t < c->ntri; ++t)
+        for (int q = 0; q < 3; ++q) c->mass[c->tris[3 * t + q]] += phys ? d->density_kg_m3 * d->thickness_m * tri_area[t] / 3.0 : 0.0;
+    bool *used = ori__calloc((size_t)(nv > 0 ? nv : 1), sizeof(bool));
+    for (int t = 0; t < 3 * c->ntri; ++t) used[c->tris[t]] = true;
+    if (!phys)
+        for (int v = 0; v < nv; ++v) c->mass[v] = 1.0;
+
+    // bars
+    c->bars = ori__alloc(sizeof(cmp_bar) * (size_t)(bd.nlinks > 0 ? bd.nlinks : 1));
+    c->edge_bar = ori__alloc(sizeof(int) * (size_t)(ne > 0 ? ne : 1));
+    c->edge_hinge = ori__alloc(sizeof(int) * (size_t)(ne > 0 ? ne : 1));
+    for (int e = 0; e < ne; ++e) c->edge_bar[e] = c->edge_hinge[e] = -1;
+    for (int k = 0; k < bd.nlinks; ++k) {
+        const link *l = &bd.links[k];
+        if (l->ntri == 0) continue; // an edge of no face: nothing holds it
+        const double *a = c->x + 3 * l->a, *b = c->x + 3 * l->b;
+        double l0 = hypot(b[0] - a[0], b[1] - a[1]);
+        if (!(l0 > 0.0)) {
+            st = ori__fail_at(error, ORI_ERR_DEGENERATE, "edges_vertices", l->edge, "edge %d has zero length", l->edge);
+            break;
+        }
+        cmp_bar bar = {l->a, l->b, l->edge, l0, 0.0, 0.0};
+        if (phys) {
+            double at = 0.0;
+            for (int s = 0; s < l->ntri; ++s) at += tri_area[l->tri[s]];
+            bar.k = (2.0 / 3.0) * d->young_modulus_pa * d->thickness_m / (1.0 - d->poisson_ratio) * at / (l0 * l0);
+        } else {
+            bar.k = d->axial_stiffness / l0;
+        }
+        double mm = fmin(c->mass[l->a], c->mass[l->b]);
+        bar.c = d->damping * 2.0 * sqrt(bar.k * mm);
+        if (l->edge >= 0) c->edge_bar[l->edge] = c->nbar;
+        c->bars[c->nbar++] = bar;
+    }
+    // hinges
+    c->hinges = ori__alloc(sizeof(cmp_hinge) * (size_t)(bd.nlinks > 0 ? bd.nlinks : 1));
+    for (int k = 0; k < bd.nlinks && !st; ++k) {
+        const link *l = &bd.links[k];
+        if (l->ntri != 2) continue;
+        ori_assignment as = l->edge >= 0 ? ori_pattern_edge(p, l->edge).assignment : ORI_ASSIGN_JOIN;
+        if (as == ORI_ASSIGN_CUT) continue;
+        bool crease = as == ORI_ASSIGN_MOUNTAIN || as == ORI_ASSIGN_VALLEY || as == ORI_ASSIGN_FLAT ||
+                      as == ORI_ASSIGN_UNASSIGNED;
+        cmp_hinge h;
+        h.j = l->a;
+        h.k = l->b;
+        h.edge = l->edge;
+        h.crease = crease;
+        h.ref = 0.0;
+        h.target = crease && l->edge >= 0 ? target[l->edge] : 0.0;
+        // the wing on the left of j → k is i
+        double s0 = cross2(c->x + 3 * h.j, c->x + 3 * h.k, c->x + 3 * l->opp[0]);
+        if (s0 > 0.0) {
+            h.i = l->opp[0];
+            h.l = l->opp[1];
+        } else {
+            h.i = l->opp[1];
+            h.l = l->opp[0];
+        }
+        const double *a = c->x + 3 * h.j, *b = c->x + 3 * h.k;
+        double len = hypot(b[0] - a[0], b[1] - a[1]);
+        if (crease) {
+            h.k_h = phys ? d->crease_stiffness_per_m * len : d->crease_stiffness * len;
+        } else if (phys) {
+            double D = d->young_modulus_pa * pow(d->thickness_m, 3) / (12.0 * (1.0 - d->poisson_ratio * d->poisson_ratio));
+            h.k_h = CMP_FILIPOV_C * D * cbrt(len / d->thickness_m);
+        } else {
+            h.k_h = d->facet_stiffness * len;
+        }
+        if (l->edge >= 0) c->edge_hinge[l->edge] = c->nhinge;
+        c->hinges[c->nhinge++] = h;
+    }
+    ori__free(bd.links);
+    ori__free(target);
+    if (st) {
+        ori__free(tri_area);
+        ori__free(used);
+        ori_compliant_destroy(c);
+        return st;
+    }
+    // the fixed face: the given one, or the face whose centroid is nearest the sheet's centre
+    int ff = d->fixed_face;
+    if (ff == ORI_NULL_INDEX) {
+        double cx = 0.0, cy = 0.0;
+        for (int v = 0; v < nv; ++v) {
+            cx += c->x[3 * v];
+            cy += c->x[3 * v + 1];
+        }
+        cx /= nv > 0 ? nv : 1;
+        cy /= nv > 0 ? nv : 1;
+        double best = INFINITY;
+        int vb[64];
+        for (int f = 0; f < nf; ++f) {
+            int n = ori_pattern_face_vertices(p, f, vb, 64);
+            if (n > 64) n = 64;
+            double fx = 0.0, fy = 0.0;
+            for (int q = 0; q < n; ++q) {
+                fx += c->x[3 * vb[q]];
+                fy += c->x[3 * vb[q] + 1];
+            }
+            double dd = hypot(fx / n - cx, fy / n - cy);
+            if (dd < best) {
+                best = dd;
+                ff = f;
+            }
+        }
+    }
+    c->def.fixed_face = ff;
+    c->dof = ori__alloc(sizeof(int) * (size_t)(nv > 0 ? nv : 1));
+    for (int v = 0; v < nv; ++v) c->dof[v] = used[v] ? 0 : -1;
+    {
+        int n = ori_pattern_face_size(p, ff);
+        int *vb = ori__alloc(sizeof(int) * (size_t)n);
+        ori_pattern_face_vertices(p, ff, vb, n);
+        for (int q = 0; q < n; ++q) c->dof[vb[q]] = -1;
+        ori__free(vb);
+    }
+    c->ndof = 0;
+    for (int v = 0; v < nv; ++v)
+        if (c->dof[v] == 0) {
+            c->dof[v] = c->ndof;
+            c->ndof += 3;
+        }
+    ori__free(tri_area);
+    ori__free(used);
+
+    // scales
+    double load = 0.0, floor_scale = 0.0, kmax_h = 0.0;
+    for (int h = 0; h < c->nhinge; ++h) {
+        if (c->hinges[h].crease) load = fmax(load, c->hinges[h].k_h * fabs(c->hinges[h].target) / c->mean_length);
+        kmax_h = fmax(kmax_h, c->hinges[h].k_h);
+        floor_scale = fmax(floor_scale, c->hinges[h].k_h * ORI_PI / c->mean_length);
+    }
+    if (d->gravity != 0.0)
+        for (int v = 0; v < nv; ++v) load = fmax(load, c->mass[v] * fabs(d->gravity));
+    if (!(load > 0.0)) load = kmax_h > 0.0 ? kmax_h / c->mean_length : 1.0;
+    for (int b = 0; b < c->nbar; ++b) floor_scale = fmax(floor_scale, c->bars[b].k * c->bars[b].l0);
+    // a hinge's force k_h (ρ − ρ_rest) ∇ρ is known to about ε k_h π |∇ρ|, |∇ρ| ≤ |r_kj| / height
+    for (int h = 0; h < c->nhinge; ++h) {
+        double g[12], gmax = 0.0;
+        ori__cmp_hinge_gradient(c->x, &c->hinges[h], g);
+        for (int q = 0; q < 12; ++q) gmax = fmax(gmax, fabs(g[q]));
+        floor_scale = fmax(floor_scale, c->hinges[h].k_h * ORI_PI * gmax);
+    }
+    c->load_scale = load;
+    c->grad_floor = CMP_GRADIENT_FLOOR_EPS * DBL_EPSILON * fmax(floor_scale, load);
+    c->m_min = INFINITY;
+    for (int v = 0; v < nv; ++v)
+        if (c->dof[v] >= 0) c->m_min = fmin(c->m_min, c->mass[v]);
+    if (!isfinite(c->m_min)) c->m_min = 1.0;
+
+    build_pattern(c);
+    // explicit time step: Gershgorin bound of the largest eigenvalue of M⁻¹K at the flat state
+    {
+        ori__cmp_hessian(c, c->x, 0.0, false);
+        const double *val = ori__sls_values(c->sls);
+        double *rows = ori__calloc((size_t)(c->ndof > 0 ? c->ndof : 1), sizeof(double));
+        for (int col = 0; col < c->ndof; ++col)
+            for (int k = c->colptr[col]; k < c->colptr[col + 1]; ++k) {
+                int r = c->rowind[k];
+                rows[r] += fabs(val[k]);
+                if (r != col) rows[col] += fabs(val[k]);
+            }
+        double w2 = 0.0;
+        for (int v = 0; v < nv; ++v)
+            if (c->dof[v] >= 0)
+                for (int q = 0; q < 3; ++q) w2 = fmax(w2, rows[c->dof[v] + q] / c->mass[v]);
+        ori__free(rows);
+        c->dt = w2 > 0.0 ? 0.9 / (2.0 * ORI_PI * sqrt(w2)) : 1.0;
+    }
+    c->fraction = 0.0;
+    store_frame(c, false);
+    *out = c;
+    return ORI_OK;
+}
+
+// --- results ------------------------------------------------------------------------------
+
+static double edge_angle(const ori_compliant *c, const double *x, int e)
+{
+    int h = c->edge_hinge[e];
+    return h < 0 ? 0.0 : ori__cmp_hinge_angle(x, &c->hinges[h], c->hinges[h].ref);
+}
+
+static double bar_strain(const cmp_bar *b, const double *x)
+{
+    const double *xa = x + 3 * b->a, *xb = x + 3 * b->b;
+    double len = sqrt((xb[0] - xa[0]) * (xb[0] - xa[0]) + (xb[1] - xa[1]) * (xb[1] - xa[1]) + (xb[2] - xa[2]) * (xb[2] - xa[2]));
+    return (len - b->l0) / b->l0;
+}
+
+static void store_frame(ori_compliant *c, bool replace_last)
+{
+    if (replace_last && c->nframes > 0) {
+        c->nframes--;
+        ori__free(c->frames[c->nframes].x);
+        ori__free(c->frames[c->nframes].angles);
+        ori__free(c->frames[c->nframes].strains);
+    }
+    ORI__RESERVE(c->frames, c->cap_frames, c->nframes + 1);
+    cmp_frame *f = &c->frames[c->nframes++];
+    f->fraction = c->fraction;
+    f->x = ori__alloc(sizeof(ori_v3) * (size_t)(c->nv > 0 ? c->nv : 1));
+    for (int v = 0; v < c->nv; ++v) f->x[v] = (ori_v3){c->x[3 * v], c->x[3 * v + 1], c->x[3 * v + 2]};
+    f->angles = ori__alloc(sizeof(double) * (size_t)(c->ne > 0 ? c->ne : 1));
+    f->strains = ori__alloc(sizeof(double) * (size_t)(c->ne > 0 ? c->ne : 1));
+    for (int e = 0; e < c->ne; ++e) {
+        f->angles[e] = edge_angle(c, c->x, e);
+        f->strains[e] = c->edge_bar[e] >= 0 ? bar_strain(&c->bars[c->edge_bar[e]], c->x) : 0.0;
+    }
+}
+
+static void accept_angles(ori_compliant *c)
+{
+    for (int h = 0; h < c->nhinge; ++h) c->hinges[h].ref = ori__cmp_hinge_angle(c->x, &c->hinges[h], c->hinges[h].ref);
+}
+
+// --- explicit solver ----------------------------------------------------------------------
+
+// Damped explicit steps at fraction frac until |∇E|∞ ≤ ftol and every speed ≤ ftol Δt / m_min
+// (checked every 16 steps), at most max_steps. Returns the steps done; *settled, *diverged.
+static int relax(ori_compliant *c, double frac, int max_steps, double ftol, double *F, bool *settled, bool *diverged)
+{
+    int nv = c->nv;
+    double dt = c->dt, vtol = ftol * dt / c->m_min;
+    *settled = *diverged = false;
+    int k;
+    for (k = 0; k < max_steps; ++k) {
+        ori__cmp_energy(c, c->x, frac, F); // F = ∇E
+        for (int b = 0; b < c->nbar; ++b) {
+            const cmp_bar *bar = &c->bars[b];
+            for (int q = 0; q < 3; ++q) {
+                double dv = c->v[3 * bar->b + q] - c->v[3 * bar->a + q];
+                F[3 * bar->a + q] -= bar->c * dv;
+                F[3 * bar->b + q] += bar->c * dv;
+            }
+        }
+        double vmax = 0.0;
+        bool finite = true;
+        for (int v = 0; v < nv; ++v) {
+            if (c->dof[v] < 0) continue;
+            double inv = dt / c->mass[v];
+            for (int q = 0; q < 3; ++q) {
+                double vv = c->v[3 * v + q] - F[3 * v + q] * inv;
+                c->v[3 * v + q] = vv;
+                c->x[3 * v + q] += dt * vv;
+                vmax = fmax(vmax, fabs(vv));
+                if (!isfinite(c->x[3 * v + q])) finite = false;
+            }
+        }
+        if (!finite) {
+            *diverged = true;
+            return k + 1;
+        }
+        if ((k & 15) == 15) {
+            accept_angles(c);
+            ori__cmp_energy(c, c->x, frac, F);
+            if (ori__cmp_grad_norm(c, F) <= ftol && vmax <= vtol) {
+                *settled = true;
+                return k + 1;
+            }
+        }
+    }
+    accept_angles(c);
+    return k;
+}
+
+// --- static solver -----------------------------------------------------------------------
+
+// Newton on E at the given fraction from c->x. Returns true at equilibrium.
+static bool newton(ori_compliant *c, double fraction, double tol, double *g, double *gt, double *dx, double *xt,
+                   double *rhs, double *sol)
+{
+    int nv = c->nv, nd = c->ndof;
+    double e = ori__cmp_energy(c, c->x, fraction, g);
+    for (int it = 0; it < c->def.max_iterations; ++it) {
+        double gn = ori__cmp_grad_norm(c, g);
+        if (gn <= tol) return true;
+        if (nd == 0) return true;
+        c->iterations++;
+        for (int v = 0; v < nv; ++v)
+            if (c->dof[v] >= 0)
+                for (int q = 0; q < 3; ++q) rhs[c->dof[v] + q] = -g[3 * v + q];
+        // the exact Hessian; when it is not positive definite (or gives no descent), its positive
+        // semi-definite part, shifted by λ (Levenberg) while that fails
+        bool solved = false;
+        for (int pass = 0; pass < 2 && !solved; ++pass) {
+            ori__cmp_hessian(c, c->x, fraction, pass == 1);
+            double diag = 0.0;
+            const double *val = ori__sls_values(c->sls);
+            for (int col = 0; col < nd; ++col) diag = fmax(diag, fabs(val[c->colptr[col + 1] - 1]));
+            double shift = 0.0, shift_min = 1e-12 * (diag > 0.0 ? diag : 1.0);
+            int tries = pass == 0 ? 1 : 40;
+            for (int t = 0; t < tries && !solved; ++t) {
+                c->factorizations++;
+                if (ori__sls_factor(c->sls, shift) && ori__sls_solve(c->sls, rhs, sol)) {
+                    double gd = 0.0;
+                    for (int k = 0; k < nd; ++k) gd -= rhs[k] * sol[k];
+                    if (gd < 0.0) solved = true;
+                }
+                shift = shift > 0.0 ? shift * 10.0 : shift_min;
+            }
+        }
+        if (!solved) return false;
+        for (int k = 0; k < 3 * nv; ++k) dx[k] = 0.0;
+        double gd = 0.0;
+        for (int v = 0; v < nv; ++v)
+            if (c->dof[v] >= 0)
+                for (int q = 0; q < 3; ++q) {
+                    dx[3 * v + q] = sol[c->dof[v] + q];
+                    gd += g[3 * v + q] * dx[3 * v + q];
+                }
+        // backtracking line search: the energy never increases
+        double alpha = 1.0;
+        bool accepted = false;
+        double et = 0.0;
+        for (int bt = 0; bt < CMP_MAX_BACKTRACKS; ++bt) {
+            for (int k = 0; k < 3 * nv; ++k) xt[k] = c->x[k] + alpha * dx[k];
+            et = ori__cmp_energy(c, xt, fraction, gt);
+            if (isfinite(et)) {
+                if (et <= e + CMP_ARMIJO * alpha * gd) {
+                    accepted = true;
+                    break;
+                }
+                // at roundoff the energy cannot tell: accept a step that does not raise it and lowers |∇E|
+                if (et <= e + CMP_ENERGY_ROUNDOFF * fabs(e) && ori__cmp_grad_norm(c, gt) < gn) {
+                    accepted = true;
+                    break;
+                }
+            }
+            alpha *= 0.5;
+            c->backtracks++;
+        }
+        if (!accepted) return ori__cmp_grad_norm(c, g) <= tol;
+        if (c->trace) c->trace(e, et, c->trace_user);
+        memcpy(c->x, xt, sizeof(double) * 3 * (size_t)nv);
+        memcpy(g, gt, sizeof(double) * 3 * (size_t)nv);
+        e = et;
+        accept_angles(c);
+    }
+    return ori__cmp_grad_norm(c, g) <= tol;
+}
+
+ori_status ori_compliant_set_fraction(ori_compliant *c, double fraction, ori_error *error)
+{
+    ORI_ASSERT(c);
+    if (!(fraction >= 0.0 && fraction <= 1.0))
+        return ori__fail(error, ORI_ERR_RANGE, "compliant: fraction must be in [0, 1] (got %g)", fraction);
+    c->def.fraction = fraction;
+    return ORI_OK;
+}
+
+static void restore(ori_compliant *c, const double *x, const double *ref)
+{
+    memcpy(c->x, x, sizeof(double) * 3 * (size_t)c->nv);
+    for (int h = 0; h < c->nhinge; ++h) c->hinges[h].ref = ref[h];
+}
+
+ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
+{
+    ORI_ASSERT(c);
+    int n3 = 3 * (c->nv > 0 ? c->nv : 1);
+    int nd = c->ndof > 0 ? c->ndof : 1;
+    int nh = c->nhinge > 0 ? c->nhinge : 1;
+    double *g = ori__alloc(sizeof(double) * (size_t)n3), *gt = ori__alloc(sizeof(double) * (size_t)n3);
+    double *dx = ori__alloc(sizeof(double) * (size_t)n3), *xt = ori__alloc(sizeof(double) * (size_t)n3);
+    double *rhs = ori__alloc(sizeof(double) * (size_t)nd), *sol = ori__alloc(sizeof(double) * (size_t)nd);
+    double *xs = ori__alloc(sizeof(double) * (size_t)n3), *xprev = ori__alloc(sizeof(double) * (size_t)n3);
+    double *refs = ori__alloc(sizeof(double) * (size_t)nh);
+    double f0 = c->fraction, f1 = c->def.fraction, g0 = c->gravity_factor;
+    double span = 0.0;
+    for (int h = 0; h < c->nhinge; ++h)
+        if (c->hinges[h].crease) span = fmax(span, fabs(c->hinges[h].target * (f1 - f0)));
+    // the load parameter t runs 0 → 1: fraction f0 → f1, gravity factor g0 → 1
+    double dt0 = fmin(1.0, c->def.max_step_rad / fmax(span, DBL_MIN));
+    if (c->def.gravity != 0.0 && g0 < 1.0) dt0 = fmin(dt0, 0.1);
+    double tol = fmax(c->def.tolerance * c->load_scale, c->grad_floor);
+    ori_status st = ORI_OK;
+    double t = 0.0, dt = dt0, dt_prev = 0.0;
+    bool have_prev = false;
+    while (t < 1.0) {
+        double tn = fmin(1.0, t + dt);
+        double f = f0 + (f1 - f0) * tn, gf = g0 + (1.0 - g0) * tn;
+        memcpy(xs, c->x, sizeof(double) * (size_t)n3);
+        for (int h = 0; h < c->nhinge; ++h) refs[h] = c->hinges[h].ref;
+        // secant predictor from the last two equilibria
+        if (have_prev && dt_prev > 0.0) {
+            double r = (tn - t) / dt_prev;
+            for (int k = 0; k < 3 * c->nv; ++k) c->x[k] += r * (xs[k] - xprev[k]);
+            accept_angles(c);
+        }
+        c->gravity_factor = gf;
+        c->load_steps++;
+        if (newton(c, f, tol, g, gt, dx, xt, rhs, sol)) {
+            memcpy(xprev, xs, sizeof(double) * (size_t)n3);
+            have_prev = true;
+            dt_prev = tn - t;
+            t = tn;
+            c->fraction = f;
+            store_frame(c, !c->def.keep_frames);
+            dt = fmin(dt0, dt * 1.5);
+            continue;
+        }
+        // no equilibrium from there: back to the last one, a shorter step
+        restore(c, xs, refs);
+        c->gravity_factor = g0 + (1.0 - g0) * t;
+        dt *= 0.25;
+        if (dt < 1e-6 * dt0) {
+            ori__cmp_energy(c, c->x, c->fraction, g);
+            st = ori__fail(error, ORI_ERR_NOT_CONVERGED,
+                           "compliant: no equilibrium beyond fraction %.6g (toward %.6g); the state of fraction %.6g is kept",
+                           c->fraction, f1, c->fraction);
+            break;
+        }
+    }
+    ori__free(g);
+    ori__free(gt);
+    ori__free(dx);
+    ori__free(xt);
+    ori__free(rhs);
+    ori__free(sol);
+    ori__free(xs);
+    ori__free(xprev);
+    ori__free(refs);
+    return st;
+}
+
+// --- accessors ----------------------------------------------------------------------------
+
+int ori_compliant_vertex_count(const ori_compliant *c) { return c->nv; }
+int ori_compliant_bar_count(const ori_compliant *c) { return c->nbar; }
+int ori_compliant_hinge_count(const ori_compliant *c) { return c->nhinge; }
+int ori_compliant_triangle_count(const ori_compliant *c) { return c->ntri; }
+double ori_compliant_time_step(const ori_compliant *c) { return c->dt; }
+double ori_compliant_load_scale(const ori_compliant *c) { return c->load_scale; }
+double ori_compliant_gradient_floor(const ori_compliant *c) { return c->grad_floor; }
+double ori_compliant_fraction(const ori_compliant *c) { return c->fraction; }
+
+const ori_v3 *ori_compliant_positions(const ori_compliant *c)
+{
+    // the last frame is the current state after every solve (the dynamic solver stores it too)
+    return c->frames[c->nframes - 1].x;
+}
+
+double ori_compliant_fold_angle(const ori_compliant *c, int edge)
+{
+    ORI_ASSERT(edge >= 0 && edge < c->ne);
+    return edge_angle(c, c->x, edge);
+}
+
+double ori_compliant_edge_strain(const ori_compliant *c, int edge)
+{
+    ORI_ASSERT(edge >= 0 && edge < c->ne);
+    return c->edge_bar[edge] >= 0 ? bar_strain(&c->bars[c->edge_bar[edge]], c->x) : 0.0;
+}
+
+double ori_compliant_max_strain(const ori_compliant *c)
+{
+    double m = 0.0;
+    for (int b = 0; b < c->nbar; ++b) m = fmax(m, fabs(bar_strain(&c->bars[b], c->x)));
+    return m;
+}
+
+double ori_compliant_energy(const ori_compliant *c) { return ori__cmp_energy(c, c->x, c->fraction, NULL); }
+
+double ori_compliant_gradient_norm(const ori_compliant *c)
+{
+    double *g = ori__alloc(sizeof(double) * 3 * (size_t)(c->nv > 0 ? c->nv : 1));
+    ori__cmp_energy(c, c->x, c->fraction, g);
+    double n = ori__cmp_grad_norm(c, g);
+    ori__free(g);
+    return n;
+}
+
+double ori_compliant_crease_error(const ori_compliant *c)
+{
+    double m = 0.0;
+    for (int h = 0; h < c->nhinge; ++h) {
+        const cmp_hinge *hh = &c->hinges[h];
+        if (!hh->crease) continue;
+        m = fmax(m, fabs(ori__cmp_hinge_angle(c->x, hh, hh->ref) - hh->target * c->fraction));
+    }
+    return m;
+}
+
+void ori_compliant_stats(const ori_compliant *c, int *iterations, int *factorizations, int *backtracks, int *load_steps)
+{
+    if (iterations) *iterations = c->iterations;
+    if (factorizations) *factorizations = c->factorizations;
+    if (backtracks) *backtracks = c->backtracks;
+    if (load_steps) *load_steps = c->load_steps;
+}
+
+int ori_compliant_frame_count(const ori_compliant *c) { return c->nframes; }
+
+double ori_compliant_frame_fraction(const ori_compliant *c, int k)
+{
+    ORI_ASSERT(k >= 0 && k < c->nframes);
+    return c->frames[k].fraction;
+}
+
+const ori_v3 *ori_compliant_frame_positions(const ori_compliant *c, int k)
+{
+    ORI_ASSERT(k >= 0 && k < c->nframes);
+    return c->frames[k].x;
+}
+
+const double *ori_compliant_frame_angles(const ori_compliant *c, int k)
+{
+    ORI_ASSERT(k >= 0 && k < c->nframes);
+    return c->frames[k].angles;
+}
+
+const double *ori_compliant_frame_strains(const ori_compliant *c, int k)
+{
+    ORI_ASSERT(k >= 0 && k < c->nframes);
+    return c->frames[k].strains;
+}
+
+
+ori_status ori_compliant_run_dynamic(ori_compliant *c, int max_steps, double force_tolerance, int *steps,
+                                     ori_error *error)
+{
+    ORI_ASSERT(c);
+    if (steps) *steps = 0;
+    if (max_steps < 0 || !(force_tolerance > 0.0) || !isfinite(force_tolerance))
+        return ori__fail(error, ORI_ERR_RANGE, "compliant: max_steps must be ≥ 0 and force_tolerance finite and > 0");
+    c->gravity_factor = 1.0;
+    double *F = ori__alloc(sizeof(double) * 3 * (size_t)(c->nv > 0 ? c->nv : 1));
+    bool settled, diverged;
+    int k = relax(c, c->def.fraction, max_steps, force_tolerance * c->load_scale, F, &settled, &diverged);
+    ori__free(F);
+    if (steps) *steps = k;
+    c->fraction = c->def.fraction;
+    store_frame(c, !c->def.keep_frames);
+    if (diverged) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver diverged at step %d", k);
+    if (!settled) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver did not settle in %d steps", max_steps);
+    return ORI_OK;
+}

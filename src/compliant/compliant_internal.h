@@ -1,0 +1,87 @@
+// Private parts of the compliant bar-and-hinge model (compliant.c, dynamics.c): the model, the
+// element formulas (bars, hinges with the exact dihedral gradient and a complex-step Hessian),
+// the energy / gradient / Hessian of a state. Tests include it to check derivatives.
+#ifndef ORI_COMPLIANT_INTERNAL_H
+#define ORI_COMPLIANT_INTERNAL_H
+
+#include <orikin/compliant.h>
+
+#include "../core/core_internal.h"
+#include "../kinematics/kinematics_internal.h"
+
+typedef struct cmp_bar {
+    int a, b;
+    int edge;    // pattern edge, or -1 for a diagonal
+    double l0, k;
+    double c;    // damping coefficient of the explicit solver
+} cmp_bar;
+
+typedef struct cmp_hinge {
+    int j, k;    // the hinge axis j → k
+    int i, l;    // wing vertices: i left of j → k in the flat sheet, l right
+    int edge;    // pattern edge, or -1 for a diagonal
+    bool crease; // crease hinge (driven) or facet hinge (rest 0)
+    double k_h;  // stiffness (torque per radian)
+    double target; // rest angle at fraction 1 (radians)
+    double ref;  // last accepted fold angle: the unwrapping reference
+} cmp_hinge;
+
+typedef struct cmp_frame {
+    double fraction;
+    ori_v3 *x;
+    double *angles, *strains;
+} cmp_frame;
+
+// Optional trace of the static solver's accepted energies (tests): called per accepted step
+// with the energy before and after it.
+typedef void ori__cmp_trace_fn(double before, double after, void *user);
+
+struct ori_compliant {
+    ori_compliant_def def;
+    int nv, ne;
+    int nbar, nhinge, ntri;
+    cmp_bar *bars;
+    cmp_hinge *hinges;
+    int *tris;      // 3 per triangle
+    int *edge_bar;  // pattern edge → bar
+    int *edge_hinge; // pattern edge → hinge or -1
+    double *mass;   // per vertex
+    double m_min;
+    int *dof;       // vertex → first free dof, or -1 when held
+    int ndof;
+    double *x;      // 3 nv positions
+    double *x0;     // the flat sheet
+    double *v;      // 3 nv velocities (explicit solver)
+    double fraction;
+    double gravity_factor; // 0 … 1: how much of the gravity acts (ramped by the first static solve)
+    double load_scale, grad_floor, mean_length;
+    double dt;
+    // sparse Hessian (upper triangle, ndof × ndof): per vertex, its sorted lower neighbours
+    int *nb_start, *nb;  // CSR over vertices (free ones): neighbours with a smaller dof
+    int *colptr, *rowind;
+    kin_sls *sls;
+    int iterations, factorizations, backtracks, load_steps;
+    ori__cmp_trace_fn *trace;
+    void *trace_user;
+    cmp_frame *frames;
+    int nframes, cap_frames;
+};
+
+// Fold angle ρ of a hinge (radians, + valley) from positions x (3 per vertex), unwrapped about ref.
+double ori__cmp_hinge_angle(const double *x, const cmp_hinge *h, double ref);
+// Exact gradient of ρ with respect to the 12 coordinates (x_j, x_k, x_i, x_l), as MERLIN's.
+void ori__cmp_hinge_gradient(const double *x, const cmp_hinge *h, double g[12]);
+// Hessian of ρ (12 × 12, row-major), complex-step differentiation of the exact gradient.
+void ori__cmp_hinge_hessian(const double *x, const cmp_hinge *h, double hess[144]);
+
+// Total energy at positions x (3 nv) and fraction; gradient (3 nv, NULL = skip, held vertices 0).
+double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction, double *grad);
+// Assemble the Hessian of the energy at x into the sparse matrix's values (upper triangle); with
+// psd its positive semi-definite part (Gauss–Newton hinges k ∇ρ∇ρᵀ, bars without compressive
+// geometric stiffness), the fallback when the exact one is not positive definite.
+void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction, bool psd);
+// |g|∞ over the free dofs.
+double ori__cmp_grad_norm(const ori_compliant *c, const double *grad);
+void ori__cmp_set_trace(ori_compliant *c, ori__cmp_trace_fn *fn, void *user);
+
+#endif

@@ -1,0 +1,251 @@
+// Element formulas of the bar-and-hinge model: the fold angle of a hinge, its exact gradient
+// (the dihedral-angle derivatives of Schenk & Guest / Liu & Paulino's MERLIN, used by Origami
+// Simulator too) and its Hessian by complex-step differentiation of that gradient (every
+// operation of the gradient is analytic, so Im ∇ρ(x + ih eₐ)/h is the column a of ∇²ρ to
+// machine precision, with no subtractive cancellation); the energy, gradient and Hessian of a
+// whole state.
+//
+// Hinge j → k with wings i (left of j → k in the flat sheet) and l (right):
+//   r_ij = x_i − x_j, r_kj = x_k − x_j, r_kl = x_k − x_l, m = r_ij × r_kj, n = r_kj × r_kl,
+//   ρ = atan2((m × n)·r_kj/|r_kj|, −m·n)   (0 flat, + valley: the wings rise toward +z)
+//   ∂ρ/∂x_i = −|r_kj|/|m|² m,  ∂ρ/∂x_l = |r_kj|/|n|² n,
+//   ∂ρ/∂x_j = (r_ij·r_kj/|r_kj|² − 1) ∂ρ/∂x_i − (r_kl·r_kj/|r_kj|²) ∂ρ/∂x_l,
+//   ∂ρ/∂x_k = (r_kl·r_kj/|r_kj|² − 1) ∂ρ/∂x_l − (r_ij·r_kj/|r_kj|²) ∂ρ/∂x_i.
+#include <complex.h>
+
+#include "compliant_internal.h"
+
+// Complex-step size relative to the model's length scale.
+#define CMP_COMPLEX_STEP 1e-30
+
+static double wrap_pi(double a)
+{
+    while (a > ORI_PI) a -= 2.0 * ORI_PI;
+    while (a <= -ORI_PI) a += 2.0 * ORI_PI;
+    return a;
+}
+
+double ori__cmp_hinge_angle(const double *x, const cmp_hinge *h, double ref)
+{
+    const double *xj = x + 3 * h->j, *xk = x + 3 * h->k, *xi = x + 3 * h->i, *xl = x + 3 * h->l;
+    double rij[3], rkj[3], rkl[3], m[3], n[3], mn[3];
+    for (int q = 0; q < 3; ++q) {
+        rij[q] = xi[q] - xj[q];
+        rkj[q] = xk[q] - xj[q];
+        rkl[q] = xk[q] - xl[q];
+    }
+    m[0] = rij[1] * rkj[2] - rij[2] * rkj[1];
+    m[1] = rij[2] * rkj[0] - rij[0] * rkj[2];
+    m[2] = rij[0] * rkj[1] - rij[1] * rkj[0];
+    n[0] = rkj[1] * rkl[2] - rkj[2] * rkl[1];
+    n[1] = rkj[2] * rkl[0] - rkj[0] * rkl[2];
+    n[2] = rkj[0] * rkl[1] - rkj[1] * rkl[0];
+    mn[0] = m[1] * n[2] - m[2] * n[1];
+    mn[1] = m[2] * n[0] - m[0] * n[2];
+    mn[2] = m[0] * n[1] - m[1] * n[0];
+    double len = sqrt(rkj[0] * rkj[0] + rkj[1] * rkj[1] + rkj[2] * rkj[2]);
+    double s = (mn[0] * rkj[0] + mn[1] * rkj[1] + mn[2] * rkj[2]) / (len > 0.0 ? len : 1.0);
+    double cth = -(m[0] * n[0] + m[1] * n[1] + m[2] * n[2]);
+    double rho = atan2(s, cth);
+    return ref + wrap_pi(rho - ref);
+}
+
+// The gradient, written once for real and complex coordinates.
+#define CMP_HINGE_GRADIENT(T, SQRT, NAME)                                                         \
+    static void NAME(const T *xj, const T *xk, const T *xi, const T *xl, T *g)                   \
+    {                                                                                            \
+        T rij[3], rkj[3], rkl[3], m[3], n[3];                                                    \
+        for (int q = 0; q < 3; ++q) {                                                            \
+            rij[q] = xi[q] - xj[q];                                                              \
+            rkj[q] = xk[q] - xj[q];                                                              \
+            rkl[q] = xk[q] - xl[q];                                                              \
+        }                                                                                        \
+        m[0] = rij[1] * rkj[2] - rij[2] * rkj[1];                                                \
+        m[1] = rij[2] * rkj[0] - rij[0] * rkj[2];                                                \
+        m[2] = rij[0] * rkj[1] - rij[1] * rkj[0];                                                \
+        n[0] = rkj[1] * rkl[2] - rkj[2] * rkl[1];                                                \
+        n[1] = rkj[2] * rkl[0] - rkj[0] * rkl[2];                                                \
+        n[2] = rkj[0] * rkl[1] - rkj[1] * rkl[0];                                                \
+        T kk = rkj[0] * rkj[0] + rkj[1] * rkj[1] + rkj[2] * rkj[2];                              \
+        T len = SQRT(kk);                                                                        \
+        T mm = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];                                          \
+        T nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];                                          \
+        T a = (rij[0] * rkj[0] + rij[1] * rkj[1] + rij[2] * rkj[2]) / kk;                        \
+        T b = (rkl[0] * rkj[0] + rkl[1] * rkj[1] + rkl[2] * rkj[2]) / kk;                        \
+        T *gj = g, *gk = g + 3, *gi = g + 6, *gl = g + 9;                                        \
+        for (int q = 0; q < 3; ++q) {                                                            \
+            gi[q] = -len / mm * m[q];                                                            \
+            gl[q] = len / nn * n[q];                                                             \
+        }                                                                                        \
+        for (int q = 0; q < 3; ++q) {                                                            \
+            gj[q] = (a - 1.0) * gi[q] - b * gl[q];                                               \
+            gk[q] = (b - 1.0) * gl[q] - a * gi[q];                                               \
+        }                                                                                        \
+    }
+
+CMP_HINGE_GRADIENT(double, sqrt, gradient_real)
+CMP_HINGE_GRADIENT(double complex, csqrt, gradient_complex)
+
+void ori__cmp_hinge_gradient(const double *x, const cmp_hinge *h, double g[12])
+{
+    gradient_real(x + 3 * h->j, x + 3 * h->k, x + 3 * h->i, x + 3 * h->l, g);
+}
+
+void ori__cmp_hinge_hessian(const double *x, const cmp_hinge *h, double hess[144])
+{
+    const int node[4] = {h->j, h->k, h->i, h->l};
+    double complex z[12], g[12];
+    double scale = 0.0;
+    for (int a = 0; a < 4; ++a)
+        for (int q = 0; q < 3; ++q) {
+            z[3 * a + q] = x[3 * node[a] + q];
+            scale = fmax(scale, fabs(x[3 * node[a] + q] - x[3 * node[0] + q]));
+        }
+    double step = CMP_COMPLEX_STEP * (scale > 0.0 ? scale : 1.0);
+    for (int col = 0; col < 12; ++col) {
+        z[col] += step * I;
+        gradient_complex(z, z + 3, z + 6, z + 9, g);
+        z[col] = creal(z[col]);
+        for (int row = 0; row < 12; ++row) hess[row * 12 + col] = cimag(g[row]) / step;
+    }
+    // Symmetrize (the exact Hessian is symmetric; this removes the last roundoff).
+    for (int r = 0; r < 12; ++r)
+        for (int cc = r + 1; cc < 12; ++cc) {
+            double s = 0.5 * (hess[r * 12 + cc] + hess[cc * 12 + r]);
+            hess[r * 12 + cc] = hess[cc * 12 + r] = s;
+        }
+}
+
+double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction, double *grad)
+{
+    double e = 0.0;
+    if (grad)
+        for (int k = 0; k < 3 * c->nv; ++k) grad[k] = 0.0;
+    for (int b = 0; b < c->nbar; ++b) {
+        const cmp_bar *bar = &c->bars[b];
+        const double *xa = x + 3 * bar->a, *xb = x + 3 * bar->b;
+        double d[3] = {xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]};
+        double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        double s = len - bar->l0;
+        e += 0.5 * bar->k * s * s;
+        if (grad && len > 0.0) {
+            double f = bar->k * s / len;
+            for (int q = 0; q < 3; ++q) {
+                grad[3 * bar->b + q] += f * d[q];
+                grad[3 * bar->a + q] -= f * d[q];
+            }
+        }
+    }
+    for (int hh = 0; hh < c->nhinge; ++hh) {
+        const cmp_hinge *h = &c->hinges[hh];
+        double rest = h->crease ? h->target * fraction : 0.0;
+        double d = ori__cmp_hinge_angle(x, h, h->ref) - rest;
+        e += 0.5 * h->k_h * d * d;
+        if (grad) {
+            double g[12];
+            ori__cmp_hinge_gradient(x, h, g);
+            const int node[4] = {h->j, h->k, h->i, h->l};
+            for (int a = 0; a < 4; ++a)
+                for (int q = 0; q < 3; ++q) grad[3 * node[a] + q] += h->k_h * d * g[3 * a + q];
+        }
+    }
+    double g = c->def.gravity * c->gravity_factor;
+    if (g != 0.0)
+        for (int v = 0; v < c->nv; ++v) {
+            e += c->mass[v] * g * (x[3 * v + 2] - c->x0[3 * v + 2]);
+            if (grad) grad[3 * v + 2] += c->mass[v] * g;
+        }
+    if (grad)
+        for (int v = 0; v < c->nv; ++v)
+            if (c->dof[v] < 0) grad[3 * v] = grad[3 * v + 1] = grad[3 * v + 2] = 0.0;
+    return e;
+}
+
+double ori__cmp_grad_norm(const ori_compliant *c, const double *grad)
+{
+    double n = 0.0;
+    for (int v = 0; v < c->nv; ++v)
+        if (c->dof[v] >= 0)
+            for (int q = 0; q < 3; ++q) n = fmax(n, fabs(grad[3 * v + q]));
+    return n;
+}
+
+// Value index of entry (row dof of vertex a, component p; column of vertex b, component q),
+// a's dof ≤ b's. -1 never happens for pairs of the model (the pattern holds them all).
+static int slot(const ori_compliant *c, int a, int p, int b, int q)
+{
+    int col = c->dof[b] + q;
+    int base = c->colptr[col];
+    if (a == b) return base + 3 * (c->nb_start[b + 1] - c->nb_start[b]) + p;
+    int lo = c->nb_start[b], hi = c->nb_start[b + 1] - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        if (c->nb[mid] == a) return base + 3 * (mid - c->nb_start[b]) + p;
+        if (c->dof[c->nb[mid]] < c->dof[a]) lo = mid + 1;
+        else hi = mid - 1;
+    }
+    return -1;
+}
+
+// Add the node block K (3 × 3, K[p][q] = ∂²E/∂x_a,p ∂x_b,q) of nodes a, b (a ≠ b or a = b).
+static void add_block(ori_compliant *c, double *val, int a, int b, double K[3][3])
+{
+    if (c->dof[a] < 0 || c->dof[b] < 0) return;
+    if (a == b) {
+        for (int q = 0; q < 3; ++q)
+            for (int p = 0; p <= q; ++p) val[slot(c, a, p, a, q)] += K[p][q];
+        return;
+    }
+    if (c->dof[a] < c->dof[b]) {
+        for (int p = 0; p < 3; ++p)
+            for (int q = 0; q < 3; ++q) val[slot(c, a, p, b, q)] += K[p][q];
+    } else {
+        for (int p = 0; p < 3; ++p)
+            for (int q = 0; q < 3; ++q) val[slot(c, b, q, a, p)] += K[p][q];
+    }
+}
+
+void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction, bool psd)
+{
+    ori__sls_clear_values(c->sls);
+    double *val = ori__sls_values(c->sls);
+    for (int b = 0; b < c->nbar; ++b) {
+        const cmp_bar *bar = &c->bars[b];
+        const double *xa = x + 3 * bar->a, *xb = x + 3 * bar->b;
+        double u[3] = {xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]};
+        double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        if (!(len > 0.0)) continue;
+        for (int q = 0; q < 3; ++q) u[q] /= len;
+        double geo = 1.0 - bar->l0 / len; // the geometric (stress) stiffness factor
+        if (psd && geo < 0.0) geo = 0.0;
+        double K[3][3], N[3][3];
+        for (int p = 0; p < 3; ++p)
+            for (int q = 0; q < 3; ++q) {
+                K[p][q] = bar->k * (u[p] * u[q] + geo * ((p == q) - u[p] * u[q]));
+                N[p][q] = -K[p][q];
+            }
+        add_block(c, val, bar->a, bar->a, K);
+        add_block(c, val, bar->b, bar->b, K);
+        add_block(c, val, bar->a, bar->b, N);
+    }
+    for (int hh = 0; hh < c->nhinge; ++hh) {
+        const cmp_hinge *h = &c->hinges[hh];
+        double rest = h->crease ? h->target * fraction : 0.0;
+        double d = ori__cmp_hinge_angle(x, h, h->ref) - rest;
+        double g[12], H[144];
+        ori__cmp_hinge_gradient(x, h, g);
+        if (psd) memset(H, 0, sizeof H);
+        else ori__cmp_hinge_hessian(x, h, H);
+        const int node[4] = {h->j, h->k, h->i, h->l};
+        for (int a = 0; a < 4; ++a)
+            for (int b = a; b < 4; ++b) {
+                double K[3][3];
+                for (int p = 0; p < 3; ++p)
+                    for (int q = 0; q < 3; ++q) {
+                        int r = 3 * a + p, s = 3 * b + q;
+                        K[p][q] = h->k_h * (g[r] * g[s] + d * H[r * 12 + s]);
+                    }
+                add_block(c, val, node[a], node[b], K);
+            }
+    }
+}
