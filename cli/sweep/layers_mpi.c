@@ -5,7 +5,7 @@
 // worker ranks as they ask, and counts components itself on a thread of its own while its main
 // thread serves the requests. The exact counts (decimal) come back to rank 0, which installs
 // them (ori_layers_set_counts) and prints what `orikin layers FILE --count [--json]` prints.
-//     mpirun -np 4 orikin-layers-mpi FILE.fold [--json] [--limit N] [--tolerance R] [--frame N]
+//     mpirun -np 4 orikin-layers-mpi FILE.fold [--json] [--limit N] [--tolerance R] [--frame N] [--timing]
 #define _POSIX_C_SOURCE 200809L
 #include <mpi.h>
 
@@ -255,7 +255,7 @@ static int print_result(const ori_layers *L, bool json, bool limit_given)
 }
 
 static const char *HELP =
-    "usage: mpirun -np N " PROG " FILE.fold [--json] [--limit N] [--tolerance R] [--frame N]\n"
+    "usage: mpirun -np N " PROG " FILE.fold [--json] [--limit N] [--tolerance R] [--frame N] [--timing]\n"
     "\n"
     "orikin layers FILE --count on MPI ranks: every rank sets up the same layer problem; its\n"
     "independent components are counted across the ranks (rank 0 hands them out one by one,\n"
@@ -268,7 +268,8 @@ static const char *HELP =
     "  --json         print orikin layers' JSON summary\n"
     "  --limit N      count at most N states per component (the count is then a lower bound)\n"
     "  --tolerance R  snapping length of the folded image relative to its diagonal, in (0, 0.01]\n"
-    "  --frame N      the FOLD frame to read; default 0\n";
+    "  --frame N      the FOLD frame to read; default 0\n"
+    "  --timing       print the set-up and the count's wall seconds on stderr (rank 0's)\n";
 
 static int usage(bool talk, const char *msg, const char *arg)
 {
@@ -277,17 +278,19 @@ static int usage(bool talk, const char *msg, const char *arg)
 }
 
 // Set up the layer problem as orikin layers does; every rank runs it (only rank 0 talks).
-static int setup(int argc, char **argv, bool talk, ori_layers **out, bool *json, bool *limit_given, bool *help)
+static int setup(int argc, char **argv, bool talk, ori_layers **out, bool *json, bool *limit_given, bool *help,
+                 bool *timing)
 {
     const char *path = NULL;
     uint64_t limit = ORI_LAYERS_NO_LIMIT;
     double tol = ORI_TOL_LAYERS_SNAP_REL;
     int frame = 0;
-    *json = *limit_given = *help = false;
+    *json = *limit_given = *help = *timing = false;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) *help = true;
         else if (strcmp(a, "--json") == 0) *json = true;
+        else if (strcmp(a, "--timing") == 0) *timing = true;
         else if (strcmp(a, "--count") == 0) continue; // always a count
         else if (strcmp(a, "--limit") == 0 || strcmp(a, "--tolerance") == 0 || strcmp(a, "--frame") == 0) {
             if (i + 1 >= argc) return usage(talk, "missing value after", a);
@@ -360,8 +363,10 @@ int main(int argc, char **argv)
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     ori_layers *L = NULL;
-    bool json, limit_given, help;
-    int rc = setup(argc, argv, rank == 0, &L, &json, &limit_given, &help);
+    bool json, limit_given, help, timing;
+    double t0 = MPI_Wtime();
+    int rc = setup(argc, argv, rank == 0, &L, &json, &limit_given, &help, &timing);
+    double t1 = MPI_Wtime();
     // Every rank must have the same problem: the same verdict of the set-up and the same
     // number of components and variables (a rank that reads another file stops them all).
     ori_layers_info info = L ? ori_layers_get_info(L) : (ori_layers_info){0};
@@ -385,6 +390,10 @@ int main(int argc, char **argv)
             b.states = calloc((size_t)(n ? n : 1), sizeof *b.states);
             if (n > 0) b.states[0] = strdup("1");
             rank0_count(&b, size);
+            double t2 = MPI_Wtime();
+            if (timing)
+                fprintf(stderr, PROG ": set-up %.3f s, count %.3f s on %d rank%s\n", t1 - t0, t2 - t1, size,
+                        size == 1 ? "" : "s");
             pthread_mutex_destroy(&b.lock);
             ori_error err;
             ori_error_clear(&err);
