@@ -511,6 +511,15 @@ Test(sweep, mpi_layer_counts_equal_the_serial_count_for_1_2_3_ranks)
     o = layers_same_on_every_rank_count("examples/patterns/non-flat-foldable-vertex.fold", "", 1);
     cr_assert_str_eq(json_string_value(json_object_get(json_object_get(o, "unsatisfiable"), "constraint")), "local");
     json_decref(o);
+    // A bad file (exit 3) and a bad option (exit 2) on every rank: nothing on stdout.
+    char *dir = test_tmpdir(), *got = NULL;
+    cr_assert_eq(layers_mpirun(2, dir, "tests/data/bad-json.fold", &got), 3);
+    cr_assert_str_eq(got, "");
+    free(got);
+    cr_assert_eq(layers_mpirun(2, dir, "tests/data/layers/corner-flaps.fold --limit 0", &got), 2);
+    cr_assert_str_eq(got, "");
+    free(got);
+    test_tmpdir_remove(dir);
 }
 
 Test(sweep, mpi_layer_counts_of_corpus_patterns_equal_the_serial_count)
