@@ -1,8 +1,10 @@
 // orikin sweep (cli/sweep/, docs/sweep.md): a sweep's values equal direct CLI runs of the same
 // points; a run killed midway resumes computing only the missing points and ends with the rows
 // of an uninterrupted run; shards merged equal one run; a database of another spec is refused;
-// seeded draws are reproducible; the MPI driver writes the same database for 1, 2 and 3 ranks.
+// seeded draws are reproducible; the MPI driver writes the same database for 1, 2 and 3 ranks;
+// orikin-layers-mpi prints the serial `orikin layers --count [--json]` for 1, 2 and 3 ranks.
 #define _POSIX_C_SOURCE 200809L
+#include <inttypes.h>
 #include <jansson.h>
 #include <math.h>
 #include <signal.h>
@@ -443,5 +445,98 @@ Test(sweep, mpi_databases_are_identical_for_1_2_3_ranks)
     free(got);
     free(want);
     test_tmpdir_remove(dir);
+}
+#endif
+
+#ifdef ORI_LAYERS_MPI
+// orikin-layers-mpi under mpirun: stdout into *out (malloc'd); the exit code.
+static int layers_mpirun(int np, const char *dir, const char *args, char **out)
+{
+    const char *file = fmt("%s/layers-np%d.out", dir, np);
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd,
+             "cd '%s' && ASAN_OPTIONS=detect_leaks=0 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_oob_tcp_if_include=lo "
+             "OMPI_MCA_rmaps_base_oversubscribe=1 '%s' --oversubscribe -np %d '%s' %s > '%s' 2>/dev/null",
+             ORI_SOURCE_DIR, ORI_MPIEXEC, np, ORI_LAYERS_MPI, args, file);
+    int st = system(cmd);
+    *out = test_read_text(file);
+    cr_assert_not_null(*out);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+// The count of FILE on 1, 2 and 3 ranks prints exactly what `orikin layers FILE --count` and
+// `--count --json` print (the same exit code too); returns the serial JSON.
+static json_t *layers_same_on_every_rank_count(const char *file, const char *extra, int want_rc)
+{
+    char *dir = test_tmpdir();
+    char *text = NULL, *json = NULL;
+    cr_assert_eq(test_run_cli_split(fmt("layers '%s' --count %s", file, extra), &text, NULL), want_rc, "%s", file);
+    cr_assert_eq(test_run_cli_split(fmt("layers '%s' --count --json %s", file, extra), &json, NULL), want_rc, "%s", file);
+    for (int np = 1; np <= 3; ++np) {
+        char *got = NULL;
+        cr_assert_eq(layers_mpirun(np, dir, fmt("'%s' %s", file, extra), &got), want_rc, "%s np %d", file, np);
+        cr_assert_str_eq(got, text, "%s np %d", file, np);
+        free(got);
+        cr_assert_eq(layers_mpirun(np, dir, fmt("'%s' --json %s", file, extra), &got), want_rc, "%s np %d", file, np);
+        cr_assert_str_eq(got, json, "%s np %d --json", file, np);
+        free(got);
+    }
+    json_t *o = json_loads(json, 0, NULL);
+    cr_assert_not_null(o);
+    free(text);
+    free(json);
+    test_tmpdir_remove(dir);
+    return o;
+}
+
+// The product of the component counts (small enough for 64 bits here) is the state count.
+static void assert_product(const json_t *o, int64_t states, size_t min_components)
+{
+    const json_t *c = json_object_get(o, "components");
+    cr_assert_geq(json_array_size(c), min_components);
+    int64_t prod = 1;
+    for (size_t i = 0; i < json_array_size(c); ++i) prod *= json_integer_value(json_array_get(c, i));
+    cr_assert_eq(prod, states);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "states")), fmt("%" PRId64, states));
+}
+
+Test(sweep, mpi_layer_counts_equal_the_serial_count_for_1_2_3_ranks)
+{
+    // Corner flaps that never overlap one another: each U flap is a component of its own
+    // (2 states), the M flap is fixed by its assignment: |1|2|2|2|2|2|, 32 states.
+    json_t *o = layers_same_on_every_rank_count("tests/data/layers/corner-flaps.fold", "", 0);
+    assert_product(o, 32, 6);
+    json_decref(o);
+    // Decided at set-up (a vertex that is not locally flat-foldable): no counting, exit 1.
+    o = layers_same_on_every_rank_count("examples/patterns/non-flat-foldable-vertex.fold", "", 1);
+    cr_assert_str_eq(json_string_value(json_object_get(json_object_get(o, "unsatisfiable"), "constraint")), "local");
+    json_decref(o);
+    // A bad file (exit 3) and a bad option (exit 2) on every rank: nothing on stdout.
+    char *dir = test_tmpdir(), *got = NULL;
+    cr_assert_eq(layers_mpirun(2, dir, "tests/data/bad-json.fold", &got), 3);
+    cr_assert_str_eq(got, "");
+    free(got);
+    cr_assert_eq(layers_mpirun(2, dir, "tests/data/layers/corner-flaps.fold --limit 0", &got), 2);
+    cr_assert_str_eq(got, "");
+    free(got);
+    test_tmpdir_remove(dir);
+}
+
+Test(sweep, mpi_layer_counts_of_corpus_patterns_equal_the_serial_count)
+{
+    const char *grid = test_require_shared("flat-folder-corpus/grids/002_brown_2x2_D1.fold");
+    json_t *o = layers_same_on_every_rank_count(grid, "", 0);
+    assert_product(o, 16, 5); // Flat-Folder's row: |1|2|2|2|2|, 16 states
+    json_decref(o);
+    // Components of different sizes (Flat-Folder's row: |1|3|3|492|, 4428 states) ...
+    const char *bird = test_require_shared("flat-folder-corpus/instagram/003_ku_Triangle_Bird.fold");
+    o = layers_same_on_every_rank_count(bird, "", 0);
+    assert_product(o, 4428, 4);
+    json_decref(o);
+    // ... and with a limit: the big component stops at 100, the count is a lower bound.
+    o = layers_same_on_every_rank_count(bird, "--limit 100", 0);
+    cr_assert(json_is_true(json_object_get(o, "limited")));
+    assert_product(o, 900, 4);
+    json_decref(o);
 }
 #endif

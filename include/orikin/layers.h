@@ -189,6 +189,25 @@ ORI_API int ori_layers_append_frame(const ori_layers *layers, const ori_pattern 
 ORI_API ori_status ori_layers_svg(const ori_layers *layers, const ori_pattern *pattern, char **out, size_t *size,
                                   ori_error *error);
 
+/// --- a count in parts (a distributed count: orikin-layers-mpi, docs/sweep.md) ---------------
+/// Functions: ori_layers_count_component, ori_layers_set_counts. ori_layers_create the same
+/// pattern with the same def on every worker (the components come out the same), count some
+/// components on each, then install them all on one solver.
+
+/// Count component c alone (0 ≤ c < ori_layers_component_count; component 0 has 1 state) with
+/// a fresh search, up to the def's limit, without recording it in layers: *states gets the
+/// decimal count (free with ori_buffer_free), *limited (optional) whether the limit stopped it.
+/// Reads layers only, so calls on different components may run on several threads at once.
+/// Fails with ORI_ERR_RANGE for c out of range.
+ORI_API ori_status ori_layers_count_component(const ori_layers *layers, int c, char **states, bool *limited,
+                                              ori_error *error);
+/// Install the count of every component (states[c] decimal, c < ori_layers_component_count;
+/// limited: some count is a lower bound) and finish as ori_layers_count: the total and, for a
+/// component with no state, the EXHAUSTED conflict. A no-op when already counted. Fails with
+/// ORI_ERR_ARGUMENT (nothing changed) for a count that is not decimal or a fixed part other than 1.
+ORI_API ori_status ori_layers_set_counts(ori_layers *layers, const char *const *states, bool limited,
+                                         ori_error *error);
+
 #ifdef __cplusplus
 }
 #endif

@@ -207,6 +207,9 @@ void ori__layers_tables(ori_layers *L);
 ori_status ori__layers_presolve(ori_layers *L, ori_error *error);
 ori_status ori__layers_solve(ori_layers *L, ori_error *error);
 ori_status ori__layers_unrank(ori_layers *L, int comp, const ori__nat *k, int8_t *val, ori_error *error);
+// Count component j (≥ 1) alone with a fresh solver, up to L->limit (layers_parts.c); *exact is
+// false when the limit stopped it. Reads L only: calls on different components may run at once.
+void ori__layers_count_one(const ori_layers *L, int j, ori__nat *res, bool *exact);
 
 // The variable of faces f and g (any order), or -1 when they do not overlap.
 int ori__layers_var(const ori_layers *L, int f, int g);

@@ -1344,3 +1344,15 @@ ori_status ori__layers_unrank(ori_layers *L, int comp, const ori__nat *k, int8_t
     solver_free(&s);
     return st;
 }
+
+// --- one component on its own (layers_parts.c) ------------------------------------------------
+
+void ori__layers_count_one(const ori_layers *L, int j, ori__nat *res, bool *exact)
+{
+    solver s;
+    start_solver(&s, L);
+    const int *set = L->comp_classes.items + L->comp_classes.off[j];
+    int n = (int)(L->comp_classes.off[j + 1] - L->comp_classes.off[j]);
+    count_set(&s, set, n, res, exact, 0, 0);
+    solver_free(&s);
+}
