@@ -80,12 +80,42 @@ static json_t *count_json(const char *decimal)
     return json_string(decimal);
 }
 
+// After --tolerance left the coordinates undecided: the value chosen from the drawing, when
+// that one decides them.
+static void suggest_tolerance(const ori_pattern *p, const ori_layers_def *given)
+{
+    ori_layers_def def = *given;
+    def.snap_rel = ORI_LAYERS_SNAP_AUTO;
+    def.progress = NULL;
+    ori_layers *L = NULL;
+    ori_error err;
+    ori_error_clear(&err);
+    if (ori_layers_create(p, &def, &L, &err) == ORI_OK) {
+        ori_layers_info in = ori_layers_get_info(L);
+        fprintf(stderr, "orikin %s: --tolerance %.2g decides these coordinates (the value chosen from the drawing "
+                        "without --tolerance)\n", CMD, in.tolerance);
+    } else
+        fprintf(stderr, "orikin %s: no tolerance up to 0.01 decides these coordinates either (%s)\n", CMD, err.message);
+    ori_layers_destroy(L);
+}
+
+// "2.4e-05 (from the drawing: …)" or "1e-06 (--tolerance)".
+static void print_tolerance(const ori_layers_info *in)
+{
+    if (in->tolerance_from_drawing)
+        printf("tolerance    %.2g (from the drawing: lengths agree within %.2g of its size, angles within %.2g rad; "
+               "--tolerance overrides)\n",
+               in->tolerance, in->noise_length, in->noise_angle);
+    else
+        printf("tolerance    %.2g (--tolerance)\n", in->tolerance);
+}
+
 static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *svg = NULL, *state = NULL;
     bool json = false, count_only = false;
     bool seen_limit = false, seen_threads = false, seen_tol = false;
-    double tol = ORI_TOL_LAYERS_SNAP_REL;
+    double tol = ORI_LAYERS_SNAP_AUTO;
     int threads = 1;
     cli_seen seen = {0};
     cli_input in;
@@ -178,6 +208,7 @@ static int run(int argc, char **argv)
     if (st != ORI_OK) {
         rc = st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : cli_input_error(CMD, path, &err);
         if (st == ORI_ERR_INTERNAL) cli_input_error(CMD, path, &err);
+        if (st == ORI_ERR_DEGENERATE && seen_tol) suggest_tolerance(p, &def);
         ori_layers_destroy(L);
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
@@ -241,6 +272,12 @@ static int run(int argc, char **argv)
         json_object_set_new(cons, "tortilla_tortilla", json_integer(info.tortilla_tortilla));
         json_object_set_new(cons, "transitivity", json_integer(info.transitivity));
         json_object_set_new(o, "constraints", cons);
+        json_object_set_new(o, "tolerance", json_real(info.tolerance));
+        json_object_set_new(o, "tolerance_source", json_string(info.tolerance_from_drawing ? "drawing" : "option"));
+        json_t *noise = json_object();
+        json_object_set_new(noise, "length", json_real(info.noise_length));
+        json_object_set_new(noise, "angle", json_real(info.noise_angle));
+        json_object_set_new(o, "drawing_noise", noise);
         if (unsat) {
             json_t *u = json_object();
             json_object_set_new(u, "constraint", json_string(ori_layers_constraint_name(conf.constraint)));
@@ -277,6 +314,7 @@ static int run(int argc, char **argv)
     } else {
         printf("file         %s (frame %d, %s)\n", path, frame,
                ori_pattern_is_folded_form(p) ? "folded form" : "crease pattern");
+        print_tolerance(&info);
         if (!(unsat && conf.constraint == ORI_LAYERS_LOCAL)) {
             printf("faces        %d; overlap: %d points, %d segments, %d cells\n", info.faces, info.points,
                    info.segments, info.cells);
@@ -302,7 +340,9 @@ static int run(int argc, char **argv)
             printf("verdict: NO flat-folded state: %s\n", conf.detail);
             if (conf.constraint == ORI_LAYERS_LOCAL && fabs(conf.kawasaki_rad) > 0.0 &&
                 fabs(conf.kawasaki_rad) <= 1e-3 && !seen_tol)
-                printf("hint: a drawing with rounded coordinates may pass with --tolerance (e.g. 1e-5)\n");
+                printf("hint: no tolerance chosen from the drawing accepts this vertex; a larger --tolerance (e.g. "
+                       "%.1g) takes it for a rounded one, knowingly\n",
+                       fmin(1e-2, 2 * fabs(conf.kawasaki_rad)));
             if (conf.face_count > 0) {
                 printf("constraint faces:");
                 for (int i = 0; i < conf.face_count; ++i) printf(" %d", conf.faces[i]);
@@ -364,12 +404,17 @@ const cli_command cli_cmd_layers = {
     "                 faces_flatFoldTransform, faces_flatFoldOrientation\n"
     "  --svg OUT.svg  draw the crease pattern and state K seen from above\n"
     "  --tolerance R  snapping length of the folded image relative to its diagonal, in (0, 0.01];\n"
-    "                 default 1e-8. A larger one also accepts Kawasaki up to R radians (for\n"
-    "                 drawings with rounded coordinates; use it knowingly)\n"
+    "                 above 1e-8 it also accepts Kawasaki sums and takes sectors for equal up to R\n"
+    "                 radians. Default: chosen from the drawing's own precision (the coarsest\n"
+    "                 length below the shortest edge / 8 at which every distance the set-up meets\n"
+    "                 is either at most a quarter of it or beyond 10 times it), printed on the\n"
+    "                 'tolerance' line; 1e-8 when none is\n"
     "  --threads N    count independent components on N threads; default 1\n"
     "  --json         print {\"states\": \"N\", \"components\": [counts], \"faces\", \"variables\",\n"
     "                 \"constraints\": {\"taco_taco\", \"taco_tortilla\", \"tortilla_tortilla\",\n"
-    "                 \"transitivity\"}, \"unsatisfiable\": null | {\"constraint\", \"faces\" (the constraint's),\n"
+    "                 \"transitivity\"}, \"tolerance\", \"tolerance_source\" (\"drawing\" | \"option\"),\n"
+    "                 \"drawing_noise\": {\"length\", \"angle\"}, \"unsatisfiable\": null |\n"
+    "                 {\"constraint\", \"faces\" (the constraint's),\n"
     "                 \"involved_faces\" (with those whose orders forced it), \"detail\", and \"vertex\"\n"
     "                 for a vertex that is not locally flat-foldable}}; with --state\n"
     "                 also \"state\" and \"faceOrders\"\n"

@@ -47,15 +47,20 @@ typedef struct ori_layers_def {
     /// then a lower bound and the result says limited). Default ORI_LAYERS_NO_LIMIT.
     uint64_t limit;
     int threads;               ///< worker threads for independent components (≥ 1); default 1
-    /// Snapping length of the overlap structure relative to the folded image's diagonal;
-    /// default ORI_TOL_LAYERS_SNAP_REL (> 0).
+    /// Snapping length of the overlap structure relative to the folded image's diagonal (a
+    /// value above ORI_TOL_LAYERS_SNAP_REL also accepts Kawasaki sums and takes sectors for equal
+    /// up to that many radians); ORI_LAYERS_SNAP_AUTO (the default) chooses it from the
+    /// drawing's own precision (docs/layers.md; ori_layers_info.tolerance tells the value).
     double snap_rel;
     ori_progress_fn *progress; ///< optional progress/cancel callback for ori_layers_count
     void *progress_user;       ///< passed back to progress
     int internal_value;        ///< set by ori_default_layers_def; do not change
 } ori_layers_def;
 
-/// Defaults: fold from the crease pattern, no limit, one thread, ORI_TOL_LAYERS_SNAP_REL.
+/// ori_layers_def.snap_rel value meaning "from the drawing's precision".
+#define ORI_LAYERS_SNAP_AUTO 0.0
+
+/// Defaults: fold from the crease pattern, no limit, one thread, ORI_LAYERS_SNAP_AUTO.
 ORI_API ori_layers_def ori_default_layers_def(void);
 
 /// Opaque solver and result.
@@ -93,6 +98,14 @@ typedef struct ori_layers_info {
     bool counted;              ///< ori_layers_count has run
     bool limited;              ///< some component reached the limit (its count is a lower bound)
     bool satisfiable;          ///< false once no state is known to exist
+    double tolerance;          ///< the snapping length used (relative to the folded image's diagonal)
+    bool tolerance_from_drawing; ///< it was chosen from the drawing (ORI_LAYERS_SNAP_AUTO)
+    /// The drawing's precision as the set-up saw it (0 for exact coordinates): the largest
+    /// distance, relative to the diagonal, it took for zero (points snapped together, a point
+    /// on an edge, a vertex two faces fold to different places) …
+    double noise_length;
+    /// … and the largest angle in radians (a vertex's Kawasaki sum, sectors taken for equal).
+    double noise_angle;
 } ori_layers_info;
 
 /// Sizes and verdict by value.

@@ -194,6 +194,13 @@ struct ori_layers {
     void *progress_user;
     int threads;
     double snap_rel;
+    bool snap_auto;            // snap_rel was chosen from the drawing (ORI_LAYERS_SNAP_AUTO)
+    // The drawing's precision as the set-up saw it: the largest distance it took for "the same"
+    // (relative to the diagonal: folded vertices one face puts apart from another's, points
+    // snapped together, a point taken to lie on an edge) and the largest angle (radians) it took
+    // for zero or equal (a vertex's Kawasaki sum, the gap between sectors snapped equal).
+    double noise_len, noise_ang;
+    double noise_ang_len;      // each vertex's angle noise × its shortest crease / the diagonal
 };
 
 #define ORI__TABLE_CONFLICT 0xFFFFu

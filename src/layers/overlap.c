@@ -18,6 +18,7 @@
 typedef struct work {
     ori_layers *L;
     double eps, band;
+    double noise;       // the largest distance taken for "the same" (snapped, on an edge)
     double x0, y0;      // lower-left corner of the point grid
     ori__imap cells;    // point grid cell → first point
     int *next;          // chain of points in a cell
@@ -71,7 +72,10 @@ static int add_point(work *w, ori_v2 q, int origin, int *clash)
                 }
             }
         }
-    if (best >= 0) return best;
+    if (best >= 0) {
+        if (best_d > w->noise) w->noise = best_d;
+        return best;
+    }
     if (w->np == w->pcap) {
         w->pcap = w->pcap ? 2 * w->pcap : 64;
         w->pts = ori__realloc(w->pts, sizeof(ori_v2) * (size_t)w->pcap);
@@ -180,6 +184,7 @@ static bool point_on_segments(work *w, int r, ori_error *error)
         double along = ori_v2_dot(rel, d) / len, off = fabs(ori_v2_cross(d, rel)) / len;
         if (off > w->band || along <= 0.0 || along >= len) continue;
         if (off <= w->eps) {
+            if (off > w->noise) w->noise = off;
             push_inc(w, s, r, along / len);
             continue;
         }
@@ -666,6 +671,7 @@ ori_status ori__layers_overlap(ori_layers *L, ori_error *error)
     }
 
 done:
+    if (w.noise / diag > L->noise_len) L->noise_len = w.noise / diag;
     free_work(&w);
     return st;
 }
