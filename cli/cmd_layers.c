@@ -1,5 +1,6 @@
 // orikin layers: global flat-foldability — every flat-folded state (layer order) of a crease
 // pattern, counted exactly, with the conflicting constraint named when there is none.
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <inttypes.h>
 #include <math.h>
@@ -7,6 +8,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "cli.h"
 #include "progress.h"
@@ -99,6 +101,35 @@ static void suggest_tolerance(const ori_pattern *p, const ori_layers_def *given)
     ori_layers_destroy(L);
 }
 
+// The progress bar with --timeout's budget, and without one a hint, once, when counting has run
+// for HINT_AFTER_S seconds: an exact count may take exponential time.
+#define HINT_AFTER_S 10.0
+typedef struct budget {
+    cli_deadline deadline;
+    double start;
+    bool hinted;
+} budget;
+
+static double mono_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static bool budget_fn(double fraction, void *user)
+{
+    budget *b = user;
+    bool go = cli_deadline_fn(fraction, &b->deadline);
+    if (!b->hinted && b->deadline.seconds <= 0.0 && mono_s() - b->start > HINT_AFTER_S) {
+        b->hinted = true;
+        fprintf(stderr, "%sorikin %s: still counting after %.0f s: an exact count can take exponential time; "
+                        "--timeout S or --limit N give a lower bound (exit 5)\n",
+                b->deadline.bar.tty && b->deadline.bar.shown ? "\n" : "", CMD, HINT_AFTER_S);
+    }
+    return go;
+}
+
 // "2.4e-05 (from the drawing: …)" or "1e-06 (--tolerance)".
 static void print_tolerance(const ori_layers_info *in)
 {
@@ -114,7 +145,8 @@ static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *svg = NULL, *state = NULL;
     bool json = false, count_only = false;
-    bool seen_limit = false, seen_threads = false, seen_tol = false;
+    bool seen_limit = false, seen_threads = false, seen_tol = false, seen_timeout = false;
+    double timeout_s = 0.0;
     double tol = ORI_LAYERS_SNAP_AUTO;
     int threads = 1;
     cli_seen seen = {0};
@@ -144,6 +176,13 @@ static int run(int argc, char **argv)
             if (!v) return CLI_EXIT_USAGE;
             if (!cli_parse_int(v, &threads) || threads < 1 || threads > 256)
                 return cli_usage(CMD, "--threads needs a count from 1 to 256 (got '%s')", v);
+        } else if (strcmp(a, "--timeout") == 0) {
+            if (seen_timeout) return cli_usage(CMD, "--timeout given twice");
+            seen_timeout = true;
+            const char *v = cli_option_value(CMD, argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &timeout_s) || !(timeout_s > 0.0) || timeout_s > 1e9)
+                return cli_usage(CMD, "--timeout needs seconds in (0, 1e9] (got '%s')", v);
         } else if (strcmp(a, "--tolerance") == 0) {
             if (seen_tol) return cli_usage(CMD, "--tolerance given twice");
             seen_tol = true;
@@ -172,6 +211,8 @@ static int run(int argc, char **argv)
     if (!path) return cli_usage(CMD, "missing FILE");
     if (limit != ORI_LAYERS_NO_LIMIT && (state || out || svg))
         return cli_usage(CMD, "--limit counts only: states cannot be numbered (drop --state, -o and --svg)");
+    if (seen_timeout && (state || out || svg))
+        return cli_usage(CMD, "--timeout counts only: states cannot be numbered (drop --state, -o and --svg)");
     if (count_only && (state || out || svg)) return cli_usage(CMD, "--count prints the count only (drop --state, -o, --svg)");
 
     ori_fold *doc;
@@ -194,17 +235,23 @@ static int run(int argc, char **argv)
     def.limit = limit;
     def.threads = threads;
     def.snap_rel = tol;
-    cli_progress prog;
-    cli_progress_begin(&prog, CMD, "counting layer orders");
-    def.progress = cli_progress_fn;
-    def.progress_user = &prog;
+    budget bud;
+    cli_progress_begin(&bud.deadline.bar, CMD, "counting layer orders");
+    bud.deadline.seconds = timeout_s;
+    bud.deadline.expired = false;
+    bud.start = mono_s();
+    bud.hinted = false;
+    def.progress = budget_fn;
+    def.progress_user = &bud;
     ori_layers *L = NULL;
     ori_error err;
     ori_error_clear(&err);
     ori_status st = ori_layers_create(p, &def, &L, &err);
     free(xf);
     if (st == ORI_OK) st = ori_layers_count(L, &err);
-    cli_progress_end(&prog);
+    cli_progress_end(&bud.deadline.bar);
+    // Stopped at --timeout: the counts so far are a partial answer (lower bounds).
+    if (st == ORI_ERR_LIMIT && bud.deadline.expired) st = ORI_OK;
     if (st != ORI_OK) {
         rc = st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : cli_input_error(CMD, path, &err);
         if (st == ORI_ERR_INTERNAL) cli_input_error(CMD, path, &err);
@@ -251,8 +298,9 @@ static int run(int argc, char **argv)
         }
     }
 
+    const char *why = info.stopped ? "at least: stopped at --timeout" : "at least: limited";
     if (count_only && !json) {
-        printf("%s%s\n", states, info.limited ? " (at least: limited)" : "");
+        printf("%s%s%s%s\n", states, info.limited ? " (" : "", info.limited ? why : "", info.limited ? ")" : "");
     } else if (json) {
         json_t *o = json_object();
         json_object_set_new(o, "states", json_string(states));
@@ -295,7 +343,8 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "unsatisfiable", u);
         } else
             json_object_set_new(o, "unsatisfiable", json_null());
-        if (limit != ORI_LAYERS_NO_LIMIT) json_object_set_new(o, "limited", json_boolean(info.limited));
+        if (limit != ORI_LAYERS_NO_LIMIT || seen_timeout) json_object_set_new(o, "limited", json_boolean(info.limited));
+        if (seen_timeout) json_object_set_new(o, "timed_out", json_boolean(info.stopped));
         if (state && want_state) {
             json_object_set_new(o, "state", json_string(k));
             int nv = ori_layers_face_orders(L, NULL, 0);
@@ -352,7 +401,12 @@ static int run(int argc, char **argv)
             for (int i = 0; i < nconf; ++i) printf(" %d", conf_faces[i]);
             printf("\n");
         } else {
-            printf("states       %s%s\n", states, info.limited ? " (at least: each component limited)" : "");
+            if (info.stopped)
+                printf("states       %s (at least: stopped at --timeout %g s; each count is the states counted so "
+                       "far)\n",
+                       states, timeout_s);
+            else
+                printf("states       %s%s\n", states, info.limited ? " (at least: each component limited)" : "");
             if (state) {
                 int nv = ori_layers_face_orders(L, NULL, 0);
                 int *fo = malloc(sizeof(int) * 3 * (size_t)(nv ? nv : 1));
@@ -364,10 +418,14 @@ static int run(int argc, char **argv)
             }
             if (out) printf("wrote %s (state %s as a foldedForm frame with faceOrders)\n", out, k);
             if (svg) printf("wrote %s\n", svg);
-            printf("verdict: flat-foldable, %s state%s\n", states, strcmp(states, "1") == 0 ? "" : "s");
+            if (info.limited && strcmp(states, "0") == 0)
+                printf("verdict: undecided: no state found within the budget\n");
+            else
+                printf("verdict: flat-foldable, %s%s state%s\n", info.limited ? "at least " : "", states,
+                       strcmp(states, "1") == 0 ? "" : "s");
         }
     }
-    rc = unsat ? CLI_EXIT_NEGATIVE : CLI_EXIT_OK;
+    rc = unsat ? CLI_EXIT_NEGATIVE : info.limited ? CLI_EXIT_PARTIAL : CLI_EXIT_OK;
 finish:
     free(conf_faces);
     ori_buffer_free(states);
@@ -380,8 +438,8 @@ finish:
 const cli_command cli_cmd_layers = {
     "layers",
     "global flat-foldability: count every flat-folded state (layer order), name the conflict",
-    "usage: orikin layers FILE [--count] [--state K] [--limit N] [-o OUT.fold] [--svg OUT.svg]\n"
-    "                   [--tolerance R] [--threads N] [--json] [input options]\n"
+    "usage: orikin layers FILE [--count] [--state K] [--limit N] [--timeout S] [-o OUT.fold]\n"
+    "                   [--svg OUT.svg] [--tolerance R] [--threads N] [--json] [input options]\n"
     "\n"
     "Fold the crease pattern flat (or take a flat folded form, or faces_flatFoldTransform when\n"
     "the frame has it), build the overlap structure of the folded faces, one variable per pair\n"
@@ -392,13 +450,18 @@ const cli_command cli_cmd_layers = {
     "in Flat-Folder's order (|fixed part|smallest component|...|) and the number of states, or\n"
     "the constraint that leaves none. A vertex that is not locally flat-foldable is named.\n"
     "Exit 0 when a state exists, 1 when none does, 3 for an invalid file or coordinates that do\n"
-    "not determine the overlap structure. See docs/layers.md.\n"
+    "not determine the overlap structure, 5 when --limit or --timeout stopped the count (the\n"
+    "count printed is then a lower bound). See docs/layers.md.\n"
     "\n"
     "options:\n"
     "  --count        print only the number of states\n"
     "  --state K      state to print (faceOrders), write and draw: 0 <= K < the count; default 0\n"
     "  --limit N      count at most N states per component (Flat-Folder's limit; the count is then\n"
     "                 a lower bound and --json adds \"limited\")\n"
+    "  --timeout S    stop counting after S seconds: each component's count is then the states\n"
+    "                 counted so far (a component not reached: 1 when a short search finds a\n"
+    "                 state, else 0), a lower bound; --json adds \"limited\" and \"timed_out\".\n"
+    "                 Default: none (an exact count may take exponential time)\n"
     "  -o OUT.fold    write the file with state K appended as a foldedForm frame: folded\n"
     "                 vertices_coords, edges_foldAngle, resolved edges_assignment, faceOrders,\n"
     "                 faces_flatFoldTransform, faces_flatFoldOrientation\n"

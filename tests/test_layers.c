@@ -672,7 +672,7 @@ static bool build_brute(const ori_pattern *p, const piece *P, int np, brute *B)
         ori_edge ed = ori_pattern_edge(p, e);
         int fc[2];
         ori_pattern_edge_faces(p, e, fc);
-        if (fc[0] < 0 || fc[1] < 0) continue;
+        if (fc[0] < 0 || fc[1] < 0 || ed.assignment == ORI_ASSIGN_CUT) continue; // a cut joins nothing
         cr_assert_lt(nc, 128);
         int l = fc[0], r = fc[1];
         // Both faces place the crease at the same folded segment; take face l's.
@@ -1247,6 +1247,161 @@ Test(layers, random_nets_and_strips_match_brute_force, .timeout = 120)
     cr_assert_geq(multi, 100);
     cr_assert_geq(tacos, 50);
     cr_assert_eq(maxf, 8);
+}
+
+// --- kirigami: cuts are free edges -------------------------------------------------------
+
+// An a × b block of unit squares joined along a random spanning tree of its sides (creases,
+// all folded: M/V, U one time in u_in); the other shared sides are cuts (C). Vertices where
+// squares meet around a cut are no flat vertices: only the brute force's stacking rules apply.
+static ori_pattern *cut_block(int a, int b, int u_in, piece *P)
+{
+    int k = a * b, parent[MAXF];
+    bool in_tree[MAXF] = {false};
+    // Random spanning tree: grow from square 0 by random sides to squares not yet reached.
+    in_tree[0] = true;
+    parent[0] = -1;
+    double id[6] = {1, 0, 0, 0, 1, 0};
+    memcpy(P[0].t, id, sizeof id);
+    for (int n = 1; n < k;) {
+        int from = (int)(rnd() % (uint64_t)k), dir = (int)(rnd() % 4);
+        if (!in_tree[from]) continue;
+        int x = from % a + (dir == 0) - (dir == 1), y = from / a + (dir == 2) - (dir == 3);
+        if (x < 0 || x >= a || y < 0 || y >= b || in_tree[y * a + x]) continue;
+        int to = y * a + x;
+        bool vertical = x != from % a;
+        double c = vertical ? (x > from % a ? x : from % a) : (y > from / a ? y : from / a);
+        reflect_grid(P[from].t, vertical, c, P[to].t);
+        in_tree[to] = true;
+        parent[to] = from;
+        n++;
+    }
+    ori_segment seg[MAXS];
+    int ns = 0;
+    for (int i = 0; i < k; ++i) {
+        int X = i % a, Y = i / a;
+        P[i].cp.n = 4;
+        P[i].cp.v[0] = ori_v2_make(X, Y);
+        P[i].cp.v[1] = ori_v2_make(X + 1, Y);
+        P[i].cp.v[2] = ori_v2_make(X + 1, Y + 1);
+        P[i].cp.v[3] = ori_v2_make(X, Y + 1);
+        for (int s = 0; s < 4; ++s) {
+            int nx = X + (s == 1) - (s == 3), ny = Y + (s == 2) - (s == 0);
+            int other = nx >= 0 && nx < a && ny >= 0 && ny < b ? ny * a + nx : -1;
+            if (other >= 0 && other < i) continue;
+            cr_assert_lt(ns, MAXS);
+            seg[ns].a = P[i].cp.v[s];
+            seg[ns].b = P[i].cp.v[(s + 1) % 4];
+            seg[ns].fold_angle_rad = 0;
+            seg[ns].assignment = other < 0                                        ? ORI_ASSIGN_BOUNDARY
+                                 : (parent[other] == i || parent[i] == other) ? random_crease(u_in)
+                                                                                : ORI_ASSIGN_CUT;
+            ns++;
+        }
+    }
+    ori_pattern *p = NULL;
+    ori_error err;
+    ori_insert_def def = ori_default_insert_def();
+    def.name_faces = false;
+    cr_assert_eq(ori_pattern_from_segments(seg, ns, &def, &p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+static bool cancel_at_once(double fraction, void *user)
+{
+    (void)fraction;
+    (*(int *)user)++;
+    return false;
+}
+
+Test(layers, random_kirigami_blocks_match_brute_force, .timeout = 120)
+{
+    int tested = 0, tries = 0, multi = 0, cuts = 0;
+    while (tested < 100 && tries < 2000) {
+        tries++;
+        piece P[MAXF];
+        int a = 2 + (int)(rnd() % 3), b = 2;
+        if (a * b > 8) continue;
+        ori_pattern *p = cut_block(a, b, 4, P);
+        for (int e = 0; e < ori_pattern_edge_count(p); ++e) cuts += ori_pattern_edge(p, e).assignment == ORI_ASSIGN_CUT;
+        ori_layers *L = solve_pattern(p, NULL);
+        char what[64];
+        snprintf(what, sizeof what, "kirigami %d (%d x %d)", tested, a, b);
+        int n = brute_check(p, P, a * b, L, what);
+        if (n >= 0) {
+            tested++;
+            multi += n > 1;
+        }
+        ori_layers_destroy(L);
+        ori_pattern_destroy(p);
+    }
+    cr_log_info("%d kirigami blocks in %d tries, %d with several states, %d cuts", tested, tries, multi, cuts);
+    cr_assert_geq(tested, 100);
+    cr_assert_geq(multi, 30);
+    cr_assert_geq(cuts, 100);
+}
+
+Test(layers, kirigami_honeycomb_stops_at_its_budget_with_a_lower_bound, .timeout = 120)
+{
+    // Origami Simulator's honeycomb kirigami (187 cuts) folded flat: all 276 faces over one cell,
+    // one component of 16280 free pairs whose count is astronomically large. The count stops at
+    // its budget with a partial answer (exit 5), never hangs.
+    const char *kiri = test_require_shared("origamisimulator/Kirigami_honeycombKiri.svg");
+    char cmd[4200], *out = NULL;
+    snprintf(cmd, sizeof cmd, "layers '%s' --limit 100000 --json", kiri);
+    cr_assert_eq(test_run_cli(cmd, &out), 5, "%s", out);
+    json_error_t jerr;
+    json_t *o = json_loads(out, 0, &jerr);
+    cr_assert(o, "%s", out);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "states")), "100000");
+    cr_assert(json_is_true(json_object_get(o, "limited")));
+    cr_assert_eq(json_integer_value(json_object_get(o, "faces")), 276);
+    cr_assert_eq(json_integer_value(json_object_get(o, "variables")), 276 * 275 / 2);
+    // The cuts join nothing: no taco-tortilla or tortilla-tortilla constraint comes from them.
+    json_t *c = json_object_get(o, "constraints");
+    cr_assert_eq(json_integer_value(json_object_get(c, "taco_tortilla")), 0);
+    cr_assert_eq(json_integer_value(json_object_get(c, "tortilla_tortilla")), 0);
+    json_decref(o);
+    free(out);
+    snprintf(cmd, sizeof cmd, "layers '%s' --timeout 1 --json", kiri);
+    cr_assert_eq(test_run_cli(cmd, &out), 5, "%s", out);
+    o = json_loads(strchr(out, '{'), 0, &jerr);
+    cr_assert(o, "%s", out);
+    cr_assert(json_is_true(json_object_get(o, "timed_out")));
+    cr_assert(json_is_true(json_object_get(o, "limited")));
+    cr_assert(json_is_null(json_object_get(o, "unsatisfiable")));
+    // A lower bound: at least the one state every search reaches first.
+    const char *n = json_string_value(json_object_get(o, "states"));
+    cr_assert(n && strlen(n) >= 1 && strcmp(n, "0") != 0, "%s", out);
+    json_decref(o);
+    free(out);
+}
+
+Test(layers, cancelled_count_keeps_lower_bounds)
+{
+    // A strip of 10 stamps (1,557,892 states) cancelled at the first report: every count is a lower bound, the
+    // total is at most the exact one, and nothing is declared unsatisfiable.
+    piece P[MAXF];
+    ori_pattern *p = stamp_strip(10, P);
+    ori_layers *L = solve_pattern(p, NULL);
+    char *exact = states_of(L);
+    ori_layers_destroy(L);
+    int calls = 0;
+    ori_layers_def def = ori_default_layers_def();
+    def.progress = cancel_at_once;
+    def.progress_user = &calls;
+    ori_error err;
+    cr_assert_eq(ori_layers_create(p, &def, &L, &err), ORI_OK);
+    cr_assert_eq(ori_layers_count(L, &err), ORI_ERR_LIMIT);
+    ori_layers_info in = ori_layers_get_info(L);
+    cr_assert(in.stopped && in.limited && in.counted && in.satisfiable);
+    char *part = states_of(L);
+    cr_assert_lt(strtoull(part, NULL, 10), strtoull(exact, NULL, 10), "%s of %s", part, exact);
+    cr_assert_gt(calls, 0);
+    ori_buffer_free(part);
+    ori_buffer_free(exact);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
 }
 
 // --- drawings with rounded coordinates: the tolerance from the drawing -------------------

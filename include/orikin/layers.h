@@ -78,7 +78,10 @@ typedef struct ori_layers ori_layers;
 ORI_API ori_status ori_layers_create(const ori_pattern *pattern, const ori_layers_def *def, ori_layers **out,
                                      ori_error *error);
 /// Count the states of every component (exactly, or up to the limit). Fails only when the
-/// progress callback cancels (ORI_ERR_LIMIT). A no-op when already counted.
+/// progress callback cancels (ORI_ERR_LIMIT); the solver then holds a partial answer: every
+/// count is a lower bound (the states counted so far; a component not reached gets the first
+/// state a short search finds, else 0), info.limited and info.stopped are true, and no
+/// component is declared without states. A no-op when already counted (or stopped).
 ORI_API ori_status ori_layers_count(ori_layers *layers, ori_error *error);
 /// Destroy a solver; NULL is a no-op.
 ORI_API void ori_layers_destroy(ori_layers *layers);
@@ -97,6 +100,7 @@ typedef struct ori_layers_info {
     int components;            ///< independent components, the fixed part (component 0) included
     bool counted;              ///< ori_layers_count has run
     bool limited;              ///< some component reached the limit (its count is a lower bound)
+    bool stopped;              ///< the progress callback cancelled the count (every count a lower bound)
     bool satisfiable;          ///< false once no state is known to exist
     double tolerance;          ///< the snapping length used (relative to the folded image's diagonal)
     bool tolerance_from_drawing; ///< it was chosen from the drawing (ORI_LAYERS_SNAP_AUTO)

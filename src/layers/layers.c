@@ -413,6 +413,7 @@ ori_layers_info ori_layers_get_info(const ori_layers *L)
     in.components = L->n_comp;
     in.counted = L->counted;
     in.limited = L->limited;
+    in.stopped = L->stopped;
     in.satisfiable = !L->unsat;
     in.tolerance = L->snap_rel;
     in.tolerance_from_drawing = L->snap_auto;

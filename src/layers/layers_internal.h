@@ -170,6 +170,7 @@ struct ori_layers {
     ori__nat *comp_count;      // per component once counted
     ori__nat total;
     bool counted, limited;
+    bool stopped;              // the progress callback cancelled: every count is a lower bound
     uint64_t limit;
 
     // Verdict.
