@@ -78,6 +78,7 @@ static ori_status place_vertices(ori_layers *L, const ori_pattern *p, const int 
                 if (gap / diag > L->noise_len) L->noise_len = gap / diag;
             } else {
                 ori__free(seen);
+                L->fail_need = gap / diag;
                 return ori__fail_at(error, ORI_ERR_TOPOLOGY, "vertices_coords", v,
                                     "the sheet does not fold consistently here: face %d puts the vertex %.3g "
                                     "(relative %.3g) away from where the other faces put it",
