@@ -248,6 +248,7 @@ static int run(int argc, char **argv)
     ori_error_clear(&err);
     ori_status st = ori_layers_create(p, &def, &L, &err);
     free(xf);
+    bud.start = mono_s(); // the hint is about counting, not the set-up
     if (st == ORI_OK) st = ori_layers_count(L, &err);
     cli_progress_end(&bud.deadline.bar);
     // Stopped at --timeout: the counts so far are a partial answer (lower bounds).
@@ -457,8 +458,8 @@ const cli_command cli_cmd_layers = {
     "  --state K      state to print (faceOrders), write and draw: 0 <= K < the count; default 0\n"
     "  --limit N      count at most N states per component (Flat-Folder's limit; the count is then\n"
     "                 a lower bound and --json adds \"limited\")\n"
-    "  --timeout S    stop counting after S seconds: the count is then a lower bound (the states\n"
-    "                 counted so far); --json adds \"limited\" and \"timed_out\". Default: none\n"
+    "  --timeout S    stop counting S seconds after the start: the count is then a lower bound (the\n"
+    "                 states counted so far); --json adds \"limited\", \"timed_out\". Default: none\n"
     "  -o OUT.fold    write the file with state K appended as a foldedForm frame: folded\n"
     "                 vertices_coords, edges_foldAngle, resolved edges_assignment, faceOrders,\n"
     "                 faces_flatFoldTransform, faces_flatFoldOrientation\n"
