@@ -334,6 +334,8 @@ static bool same_setup(const ori_layers *a, const ori_layers *b)
            a->count_kind[ORI_LAYERS_TRANSITIVITY] == b->count_kind[ORI_LAYERS_TRANSITIVITY];
 }
 
+#define ORI__TIGHT_RERUN_VARS 100000
+
 ori_status ori_layers_create(const ori_pattern *p, const ori_layers_def *def, ori_layers **out, ori_error *error)
 {
     ORI_ASSERT(p && out);
@@ -387,10 +389,11 @@ ori_status ori_layers_create(const ori_pattern *p, const ori_layers_def *def, or
         if (decided && noise <= 0.25 * r) {
             // Every length from the noise up to r decides alike; report (and run at) the
             // tightest one with a margin: 4 × the noise (and the sector gaps taken for equal),
-            // at least the default.
+            // at least the default. Above ORI__TIGHT_RERUN_VARS variables the second set-up
+            // costs seconds for the same decisions: r itself is kept.
             double tight = fmin(r, fmax(ORI_TOL_LAYERS_SNAP_REL, 4.0 * fmax(noise, L->noise_gap)));
             ori_layers *T = NULL;
-            if (tight < r && create_at(p, def, tight, true, &T, &e2, NULL, NULL) == ORI_OK && same_setup(L, T)) {
+            if (tight < r && L->nvar <= ORI__TIGHT_RERUN_VARS && create_at(p, def, tight, true, &T, &e2, NULL, NULL) == ORI_OK && same_setup(L, T)) {
                 ori_layers_destroy(L);
                 L = T;
             } else

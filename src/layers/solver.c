@@ -174,6 +174,7 @@ typedef struct solver {
     bool cancel;
     int64_t nodes;
     int64_t node_cap;     // > 0: stop (as cancelled) past this many nodes
+    atomic_bool *stop;    // the pool's cancel flag (a worker stops with the main thread), or NULL
     double done_fraction; // of the components finished before the current one
     double comp_share;    // the current component's share of the whole
     double pos_lo, pos_w; // the current node's interval of the component's search (0 … 1)
@@ -804,6 +805,7 @@ static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exa
     *exact = true;
     if (++s->nodes % 4096 == 0) report(s);
     if (s->node_cap > 0 && s->nodes > s->node_cap) s->cancel = true;
+    if (s->stop && (s->nodes & 63) == 0 && atomic_load(s->stop)) s->cancel = true;
     if (s->cancel) {
         *exact = false;
         return;
@@ -1155,9 +1157,9 @@ ori_status ori__layers_presolve(ori_layers *L, ori_error *error)
 
 // --- solve ----------------------------------------------------------------------------------
 
-// Nodes of the short search that gives each component not counted before a cancel its lower
-// bound (a first state).
-#define ORI__PARTIAL_NODES 100000
+// Nodes of the short search that gives the components not counted before a cancel their lower
+// bound (a first state each), all of them together.
+#define ORI__PARTIAL_NODES 20000
 
 typedef struct pool {
     ori_layers *L;
@@ -1198,6 +1200,7 @@ static void *worker(void *arg)
     ori_layers *L = P->L;
     solver s;
     start_solver(&s, L);
+    s.stop = &P->cancel;
     for (;;) {
         if (atomic_load(&P->cancel)) break;
         // Largest components first (they are sorted by ascending size): better balance.
@@ -1258,12 +1261,14 @@ ori_status ori__layers_solve(ori_layers *L, ori_error *error)
     if (cancelled) {
         // A partial answer: the components not counted get a lower bound too, the first state
         // a short search finds (1), else 0; nothing is then known to have no state.
+        // One budget of nodes for all of them, smallest first (the most lower bounds above 0).
         s.main_thread = false;
         s.limit = 1;
-        for (int j = 1; j < L->n_comp; ++j) {
+        int64_t cap = s.nodes + ORI__PARTIAL_NODES;
+        for (int j = 1; j < L->n_comp && s.nodes < cap; ++j) {
             if (P.done[j]) continue;
             s.cancel = false;
-            s.node_cap = s.nodes + ORI__PARTIAL_NODES;
+            s.node_cap = cap;
             count_component(&s, L, j, P.done);
             P.done[j] = 2;
         }
