@@ -267,7 +267,8 @@ static int run(void)
                 int at = ntop < 10 ? ntop++ : 9;
                 top[at].wall = r.wall;
                 snprintf(top[at].line, sizeof top[at].line, "%8.2f s wall %8.2f s CPU  %s/%.50s  %.40s%s (FF %.1f s)",
-                         r.wall, r.cpu, sets[si], names[i], r.states, pub.limited ? " exact, FF limited" : "",
+                         r.wall, r.cpu, sets[si], names[i], r.states,
+                         r.timed_out ? " (a lower bound: timed out)" : pub.limited ? " exact, FF limited" : "",
                          pub.seconds);
                 for (int k = at; k > 0 && top[k].wall > top[k - 1].wall; --k) {
                     slow t = top[k];
