@@ -12,6 +12,10 @@ typedef struct bench_scenario {
     int (*run)(void); // 0 on success
 } bench_scenario;
 
+// The command line of orikin_bench (scenario names and the scenarios' own arguments).
+extern int bench_argc;
+extern char **bench_argv;
+
 // Monotonic wall clock in seconds.
 double bench_now(void);
 // CPU time of this process in seconds (all its threads): steadier than wall time on a shared machine.

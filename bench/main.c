@@ -1,4 +1,5 @@
-// orikin_bench [NAME...]: run every benchmark scenario (or the named ones) and print figures.
+// orikin_bench [NAME...] [ARG...]: run every benchmark scenario (or the named ones) and print
+// figures. Arguments that name no scenario are left to the scenarios (bench_argc, bench_argv).
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +18,9 @@ static const bench_scenario *const scenarios[] = {
 #undef ORI_BENCH_SCENARIO
     NULL,
 };
+
+int bench_argc;
+char **bench_argv;
 
 double bench_now(void)
 {
@@ -69,8 +73,13 @@ static void reset_peak_rss(void)
 int main(int argc, char **argv)
 {
     int failed = 0, ran = 0;
+    bench_argc = argc;
+    bench_argv = argv;
+    int named = 0;
+    for (int a = 1; a < argc; ++a)
+        for (int i = 0; scenarios[i]; ++i) named += strcmp(argv[a], scenarios[i]->name) == 0;
     for (int i = 0; scenarios[i]; ++i) {
-        bool wanted = argc < 2;
+        bool wanted = named == 0;
         for (int a = 1; a < argc; ++a) wanted |= strcmp(argv[a], scenarios[i]->name) == 0;
         if (!wanted) continue;
         printf("== %s: %s\n", scenarios[i]->name, scenarios[i]->description);

@@ -1,5 +1,6 @@
 // orikin layers: global flat-foldability — every flat-folded state (layer order) of a crease
 // pattern, counted exactly, with the conflicting constraint named when there is none.
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <inttypes.h>
 #include <math.h>
@@ -7,6 +8,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "cli.h"
 #include "progress.h"
@@ -80,12 +82,72 @@ static json_t *count_json(const char *decimal)
     return json_string(decimal);
 }
 
+// After --tolerance left the coordinates undecided: the value chosen from the drawing, when
+// that one decides them.
+static void suggest_tolerance(const ori_pattern *p, const ori_layers_def *given)
+{
+    ori_layers_def def = *given;
+    def.snap_rel = ORI_LAYERS_SNAP_AUTO;
+    def.progress = NULL;
+    ori_layers *L = NULL;
+    ori_error err;
+    ori_error_clear(&err);
+    if (ori_layers_create(p, &def, &L, &err) == ORI_OK) {
+        ori_layers_info in = ori_layers_get_info(L);
+        fprintf(stderr, "orikin %s: --tolerance %.2g decides these coordinates (the value chosen from the drawing "
+                        "without --tolerance)\n", CMD, in.tolerance);
+    } else
+        fprintf(stderr, "orikin %s: no tolerance up to 0.01 decides these coordinates either (%s)\n", CMD, err.message);
+    ori_layers_destroy(L);
+}
+
+// The progress bar with --timeout's budget, and without one a hint, once, when counting has run
+// for HINT_AFTER_S seconds: an exact count may take exponential time.
+#define HINT_AFTER_S 10.0
+typedef struct budget {
+    cli_deadline deadline;
+    double start;
+    bool hinted;
+} budget;
+
+static double mono_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static bool budget_fn(double fraction, void *user)
+{
+    budget *b = user;
+    bool go = cli_deadline_fn(fraction, &b->deadline);
+    if (!b->hinted && b->deadline.seconds <= 0.0 && mono_s() - b->start > HINT_AFTER_S) {
+        b->hinted = true;
+        fprintf(stderr, "%sorikin %s: still counting after %.0f s: an exact count can take exponential time; "
+                        "--timeout S or --limit N give a lower bound (exit 5)\n",
+                b->deadline.bar.tty && b->deadline.bar.shown ? "\n" : "", CMD, HINT_AFTER_S);
+    }
+    return go;
+}
+
+// "2.4e-05 (from the drawing: …)" or "1e-06 (--tolerance)".
+static void print_tolerance(const ori_layers_info *in)
+{
+    if (in->tolerance_from_drawing)
+        printf("tolerance    %.2g (from the drawing: lengths agree within %.2g of its size, angles within %.2g rad; "
+               "--tolerance overrides)\n",
+               in->tolerance, in->noise_length, in->noise_angle);
+    else
+        printf("tolerance    %.2g (--tolerance)\n", in->tolerance);
+}
+
 static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *svg = NULL, *state = NULL;
     bool json = false, count_only = false;
-    bool seen_limit = false, seen_threads = false, seen_tol = false;
-    double tol = ORI_TOL_LAYERS_SNAP_REL;
+    bool seen_limit = false, seen_threads = false, seen_tol = false, seen_timeout = false;
+    double timeout_s = 0.0;
+    double tol = ORI_LAYERS_SNAP_AUTO;
     int threads = 1;
     cli_seen seen = {0};
     cli_input in;
@@ -114,6 +176,13 @@ static int run(int argc, char **argv)
             if (!v) return CLI_EXIT_USAGE;
             if (!cli_parse_int(v, &threads) || threads < 1 || threads > 256)
                 return cli_usage(CMD, "--threads needs a count from 1 to 256 (got '%s')", v);
+        } else if (strcmp(a, "--timeout") == 0) {
+            if (seen_timeout) return cli_usage(CMD, "--timeout given twice");
+            seen_timeout = true;
+            const char *v = cli_option_value(CMD, argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &timeout_s) || !(timeout_s > 0.0) || timeout_s > 1e9)
+                return cli_usage(CMD, "--timeout needs seconds in (0, 1e9] (got '%s')", v);
         } else if (strcmp(a, "--tolerance") == 0) {
             if (seen_tol) return cli_usage(CMD, "--tolerance given twice");
             seen_tol = true;
@@ -142,6 +211,8 @@ static int run(int argc, char **argv)
     if (!path) return cli_usage(CMD, "missing FILE");
     if (limit != ORI_LAYERS_NO_LIMIT && (state || out || svg))
         return cli_usage(CMD, "--limit counts only: states cannot be numbered (drop --state, -o and --svg)");
+    if (seen_timeout && (state || out || svg))
+        return cli_usage(CMD, "--timeout counts only: states cannot be numbered (drop --state, -o and --svg)");
     if (count_only && (state || out || svg)) return cli_usage(CMD, "--count prints the count only (drop --state, -o, --svg)");
 
     ori_fold *doc;
@@ -164,20 +235,28 @@ static int run(int argc, char **argv)
     def.limit = limit;
     def.threads = threads;
     def.snap_rel = tol;
-    cli_progress prog;
-    cli_progress_begin(&prog, CMD, "counting layer orders");
-    def.progress = cli_progress_fn;
-    def.progress_user = &prog;
+    budget bud;
+    cli_progress_begin(&bud.deadline.bar, CMD, "counting layer orders");
+    bud.deadline.seconds = timeout_s;
+    bud.deadline.expired = false;
+    bud.start = mono_s();
+    bud.hinted = false;
+    def.progress = budget_fn;
+    def.progress_user = &bud;
     ori_layers *L = NULL;
     ori_error err;
     ori_error_clear(&err);
     ori_status st = ori_layers_create(p, &def, &L, &err);
     free(xf);
+    bud.start = mono_s(); // the hint is about counting, not the set-up
     if (st == ORI_OK) st = ori_layers_count(L, &err);
-    cli_progress_end(&prog);
+    cli_progress_end(&bud.deadline.bar);
+    // Stopped at --timeout: the counts so far are a partial answer (lower bounds).
+    if (st == ORI_ERR_LIMIT && bud.deadline.expired) st = ORI_OK;
     if (st != ORI_OK) {
         rc = st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : cli_input_error(CMD, path, &err);
         if (st == ORI_ERR_INTERNAL) cli_input_error(CMD, path, &err);
+        if (st == ORI_ERR_DEGENERATE && seen_tol) suggest_tolerance(p, &def);
         ori_layers_destroy(L);
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
@@ -220,8 +299,9 @@ static int run(int argc, char **argv)
         }
     }
 
+    const char *why = info.stopped ? "at least: stopped at --timeout" : "at least: limited";
     if (count_only && !json) {
-        printf("%s%s\n", states, info.limited ? " (at least: limited)" : "");
+        printf("%s%s%s%s\n", states, info.limited ? " (" : "", info.limited ? why : "", info.limited ? ")" : "");
     } else if (json) {
         json_t *o = json_object();
         json_object_set_new(o, "states", json_string(states));
@@ -241,6 +321,12 @@ static int run(int argc, char **argv)
         json_object_set_new(cons, "tortilla_tortilla", json_integer(info.tortilla_tortilla));
         json_object_set_new(cons, "transitivity", json_integer(info.transitivity));
         json_object_set_new(o, "constraints", cons);
+        json_object_set_new(o, "tolerance", json_real(info.tolerance));
+        json_object_set_new(o, "tolerance_source", json_string(info.tolerance_from_drawing ? "drawing" : "option"));
+        json_t *noise = json_object();
+        json_object_set_new(noise, "length", json_real(info.noise_length));
+        json_object_set_new(noise, "angle", json_real(info.noise_angle));
+        json_object_set_new(o, "drawing_noise", noise);
         if (unsat) {
             json_t *u = json_object();
             json_object_set_new(u, "constraint", json_string(ori_layers_constraint_name(conf.constraint)));
@@ -258,7 +344,8 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "unsatisfiable", u);
         } else
             json_object_set_new(o, "unsatisfiable", json_null());
-        if (limit != ORI_LAYERS_NO_LIMIT) json_object_set_new(o, "limited", json_boolean(info.limited));
+        if (limit != ORI_LAYERS_NO_LIMIT || seen_timeout) json_object_set_new(o, "limited", json_boolean(info.limited));
+        if (seen_timeout) json_object_set_new(o, "timed_out", json_boolean(info.stopped));
         if (state && want_state) {
             json_object_set_new(o, "state", json_string(k));
             int nv = ori_layers_face_orders(L, NULL, 0);
@@ -277,6 +364,7 @@ static int run(int argc, char **argv)
     } else {
         printf("file         %s (frame %d, %s)\n", path, frame,
                ori_pattern_is_folded_form(p) ? "folded form" : "crease pattern");
+        print_tolerance(&info);
         if (!(unsat && conf.constraint == ORI_LAYERS_LOCAL)) {
             printf("faces        %d; overlap: %d points, %d segments, %d cells\n", info.faces, info.points,
                    info.segments, info.cells);
@@ -302,7 +390,9 @@ static int run(int argc, char **argv)
             printf("verdict: NO flat-folded state: %s\n", conf.detail);
             if (conf.constraint == ORI_LAYERS_LOCAL && fabs(conf.kawasaki_rad) > 0.0 &&
                 fabs(conf.kawasaki_rad) <= 1e-3 && !seen_tol)
-                printf("hint: a drawing with rounded coordinates may pass with --tolerance (e.g. 1e-5)\n");
+                printf("hint: no tolerance chosen from the drawing accepts this vertex; a larger --tolerance (e.g. "
+                       "%.1g) takes it for a rounded one, knowingly\n",
+                       fmin(1e-2, 2 * fabs(conf.kawasaki_rad)));
             if (conf.face_count > 0) {
                 printf("constraint faces:");
                 for (int i = 0; i < conf.face_count; ++i) printf(" %d", conf.faces[i]);
@@ -312,7 +402,12 @@ static int run(int argc, char **argv)
             for (int i = 0; i < nconf; ++i) printf(" %d", conf_faces[i]);
             printf("\n");
         } else {
-            printf("states       %s%s\n", states, info.limited ? " (at least: each component limited)" : "");
+            if (info.stopped)
+                printf("states       %s (at least: stopped at --timeout %g s; each count is the states counted so "
+                       "far)\n",
+                       states, timeout_s);
+            else
+                printf("states       %s%s\n", states, info.limited ? " (at least: each component limited)" : "");
             if (state) {
                 int nv = ori_layers_face_orders(L, NULL, 0);
                 int *fo = malloc(sizeof(int) * 3 * (size_t)(nv ? nv : 1));
@@ -324,10 +419,14 @@ static int run(int argc, char **argv)
             }
             if (out) printf("wrote %s (state %s as a foldedForm frame with faceOrders)\n", out, k);
             if (svg) printf("wrote %s\n", svg);
-            printf("verdict: flat-foldable, %s state%s\n", states, strcmp(states, "1") == 0 ? "" : "s");
+            if (info.limited && strcmp(states, "0") == 0)
+                printf("verdict: undecided: no state found within the budget\n");
+            else
+                printf("verdict: flat-foldable, %s%s state%s\n", info.limited ? "at least " : "", states,
+                       strcmp(states, "1") == 0 ? "" : "s");
         }
     }
-    rc = unsat ? CLI_EXIT_NEGATIVE : CLI_EXIT_OK;
+    rc = unsat ? CLI_EXIT_NEGATIVE : info.limited ? CLI_EXIT_PARTIAL : CLI_EXIT_OK;
 finish:
     free(conf_faces);
     ori_buffer_free(states);
@@ -340,39 +439,41 @@ finish:
 const cli_command cli_cmd_layers = {
     "layers",
     "global flat-foldability: count every flat-folded state (layer order), name the conflict",
-    "usage: orikin layers FILE [--count] [--state K] [--limit N] [-o OUT.fold] [--svg OUT.svg]\n"
-    "                   [--tolerance R] [--threads N] [--json] [input options]\n"
+    "usage: orikin layers FILE [--count] [--state K] [--limit N] [--timeout S] [-o OUT.fold]\n"
+    "                   [--svg OUT.svg] [--tolerance R] [--threads N] [--json] [input options]\n"
     "\n"
-    "Fold the crease pattern flat (or take a flat folded form, or faces_flatFoldTransform when\n"
-    "the frame has it), build the overlap structure of the folded faces, one variable per pair\n"
-    "of overlapping faces and Flat-Folder's taco-taco, taco-tortilla, tortilla-tortilla and\n"
-    "transitivity constraints, propagate the M/V assignment (U creases are free), split into\n"
-    "independent components and count the states of each exactly (a search that splits and\n"
-    "caches sub-components, never listing the states). Prints the sizes, the component counts\n"
-    "in Flat-Folder's order (|fixed part|smallest component|...|) and the number of states, or\n"
-    "the constraint that leaves none. A vertex that is not locally flat-foldable is named.\n"
+    "Fold the crease pattern flat (or take a flat folded form, or faces_flatFoldTransform),\n"
+    "build the overlap structure, one variable per pair of overlapping faces and Flat-Folder's\n"
+    "taco-taco, taco-tortilla, tortilla-tortilla and transitivity constraints, propagate the\n"
+    "M/V assignment (U creases are free), split into independent components and count each\n"
+    "exactly, never listing the states. Prints the sizes, the component counts in Flat-Folder's\n"
+    "order (|fixed part|smallest|...|) and the number of states, or the constraint that leaves\n"
+    "none (a vertex that is not locally flat-foldable is named).\n"
     "Exit 0 when a state exists, 1 when none does, 3 for an invalid file or coordinates that do\n"
-    "not determine the overlap structure. See docs/layers.md.\n"
+    "not determine the overlap structure, 5 when --limit or --timeout stopped the count (the\n"
+    "count printed is then a lower bound). See docs/layers.md.\n"
     "\n"
     "options:\n"
     "  --count        print only the number of states\n"
     "  --state K      state to print (faceOrders), write and draw: 0 <= K < the count; default 0\n"
     "  --limit N      count at most N states per component (Flat-Folder's limit; the count is then\n"
     "                 a lower bound and --json adds \"limited\")\n"
+    "  --timeout S    stop counting S seconds after the start: the count is then a lower bound (the\n"
+    "                 states counted so far); --json adds \"limited\", \"timed_out\". Default: none\n"
     "  -o OUT.fold    write the file with state K appended as a foldedForm frame: folded\n"
     "                 vertices_coords, edges_foldAngle, resolved edges_assignment, faceOrders,\n"
     "                 faces_flatFoldTransform, faces_flatFoldOrientation\n"
     "  --svg OUT.svg  draw the crease pattern and state K seen from above\n"
-    "  --tolerance R  snapping length of the folded image relative to its diagonal, in (0, 0.01];\n"
-    "                 default 1e-8. A larger one also accepts Kawasaki up to R radians (for\n"
-    "                 drawings with rounded coordinates; use it knowingly)\n"
+    "  --tolerance R  snapping length relative to the folded image's diagonal, in (0, 0.01];\n"
+    "                 above 1e-8 sectors within R rad are equal and Kawasaki holds within R rad\n"
+    "                 or a move of R. Default: from the drawing's precision (a length with every\n"
+    "                 distance met at most a quarter of it or beyond 10 times it; docs/layers.md)\n"
     "  --threads N    count independent components on N threads; default 1\n"
-    "  --json         print {\"states\": \"N\", \"components\": [counts], \"faces\", \"variables\",\n"
+    "  --json         print {\"states\": \"N\", \"components\", \"faces\", \"variables\",\n"
     "                 \"constraints\": {\"taco_taco\", \"taco_tortilla\", \"tortilla_tortilla\",\n"
-    "                 \"transitivity\"}, \"unsatisfiable\": null | {\"constraint\", \"faces\" (the constraint's),\n"
-    "                 \"involved_faces\" (with those whose orders forced it), \"detail\", and \"vertex\"\n"
-    "                 for a vertex that is not locally flat-foldable}}; with --state\n"
-    "                 also \"state\" and \"faceOrders\"\n"
+    "                 \"transitivity\"}, \"tolerance\", \"tolerance_source\", \"drawing_noise\",\n"
+    "                 \"unsatisfiable\": null | {\"constraint\", \"faces\", \"involved_faces\",\n"
+    "                 \"detail\", \"vertex\"}}; with --state also \"state\", \"faceOrders\"\n"
     "\n"
     "input options (FILE a FOLD file or a drawing: SVG, OPX, CP, read with the default weld\n"
     "tolerance; 'orikin convert --tolerance REL' first to choose another):\n"

@@ -672,7 +672,7 @@ static bool build_brute(const ori_pattern *p, const piece *P, int np, brute *B)
         ori_edge ed = ori_pattern_edge(p, e);
         int fc[2];
         ori_pattern_edge_faces(p, e, fc);
-        if (fc[0] < 0 || fc[1] < 0) continue;
+        if (fc[0] < 0 || fc[1] < 0 || ed.assignment == ORI_ASSIGN_CUT) continue; // a cut joins nothing
         cr_assert_lt(nc, 128);
         int l = fc[0], r = fc[1];
         // Both faces place the crease at the same folded segment; take face l's.
@@ -988,6 +988,600 @@ Test(layers, stamp_strips_match_brute_force)
     }
 }
 
+// --- nets and strips: faces stacked edge to edge ------------------------------------------
+// Faces whose edges lie on another crease's line (box pleating, nets, strips of unequal
+// stamps) are where a solver may take a face touching a crease line for one crossing it. The
+// brute force above decides "crossing" by sampling just off both sides of each folded crease,
+// so it is independent of the solver's constraint generation.
+
+// Brute force over every order of the overlapping pairs of p: the number of valid states, or
+// -1 when the problem is too big for it (more than 18 free pairs). With L non-NULL, also
+// asserts that L's count and its numbered states are exactly the brute force's.
+static int brute_check(const ori_pattern *p, const piece *P, int np, const ori_layers *Lc, const char *what)
+{
+    ori_layers *L = (ori_layers *)Lc;
+    brute B;
+    if (!build_brute(p, P, np, &B)) return -1;
+    int freepos[32], nfree = 0;
+    uint32_t base = 0;
+    for (int i = 0; i < B.npair; ++i) {
+        int fx = -1;
+        for (int k = 0; k < B.nfixed; ++k)
+            if (B.fixed_pair[k] == i) fx = B.fixed_val[k];
+        if (fx < 0) freepos[nfree++] = i;
+        else if (fx) base |= 1u << i;
+    }
+    if (nfree > 18) return -1;
+    uint32_t *valid = malloc(sizeof(uint32_t) * ((size_t)1 << nfree));
+    int nvalid = 0;
+    for (uint32_t m = 0; m < (1u << nfree); ++m) {
+        uint32_t mask = base;
+        for (int k = 0; k < nfree; ++k)
+            if ((m >> k) & 1) mask |= 1u << freepos[k];
+        if (valid_state(&B, mask)) valid[nvalid++] = mask;
+    }
+    if (L) {
+        ori_layers_info in = ori_layers_get_info(L);
+        cr_assert_eq(in.variables, B.npair, "%s: variables: solver %d, brute %d", what, in.variables, B.npair);
+        char *s = states_of(L), expect[32];
+        snprintf(expect, sizeof expect, "%d", nvalid);
+        cr_assert_str_eq(s, expect, "%s (%d faces, %d pairs): solver %s, brute force %d", what, B.nf, B.npair, s, nvalid);
+        ori_buffer_free(s);
+        uint32_t *mine = malloc(sizeof(uint32_t) * (size_t)(nvalid ? nvalid : 1));
+        for (int k = 0; k < nvalid; ++k) {
+            char ks[16];
+            snprintf(ks, sizeof ks, "%d", k);
+            ori_error err;
+            cr_assert_eq(ori_layers_select_state(L, ks, &err), ORI_OK);
+            uint32_t mask = 0;
+            for (int i = 0; i < B.nf; ++i)
+                for (int j = i + 1; j < B.nf; ++j)
+                    if (B.pair[i][j] >= 0 && ori_layers_face_above(L, i, j) > 0) mask |= 1u << B.pair[i][j];
+            mine[k] = mask;
+        }
+        qsort(mine, (size_t)nvalid, sizeof(uint32_t), cmp_u32);
+        qsort(valid, (size_t)nvalid, sizeof(uint32_t), cmp_u32);
+        cr_assert_eq(memcmp(mine, valid, sizeof(uint32_t) * (size_t)nvalid), 0, "%s: the numbered states differ", what);
+        free(mine);
+    }
+    free(valid);
+    return nvalid;
+}
+
+static ori_assignment random_crease(int u_in)
+{
+    if (u_in > 0 && rnd() % (uint64_t)u_in == 0) return ORI_ASSIGN_UNASSIGNED;
+    return (rnd() & 1) ? ORI_ASSIGN_MOUNTAIN : ORI_ASSIGN_VALLEY;
+}
+
+// Reflection of transform t across the vertical (vertical = true) or horizontal grid line at
+// coordinate c of the crease pattern: out = t ∘ r.
+static void reflect_grid(const double t[6], bool vertical, double c, double out[6])
+{
+    double r[6] = {1, 0, 0, 0, 1, 0};
+    if (vertical) r[0] = -1, r[2] = 2 * c;
+    else r[4] = -1, r[5] = 2 * c;
+    double o[6];
+    o[0] = t[0] * r[0] + t[1] * r[3];
+    o[1] = t[0] * r[1] + t[1] * r[4];
+    o[2] = t[0] * r[2] + t[1] * r[5] + t[2];
+    o[3] = t[3] * r[0] + t[4] * r[3];
+    o[4] = t[3] * r[1] + t[4] * r[4];
+    o[5] = t[3] * r[2] + t[4] * r[5] + t[5];
+    memcpy(out, o, sizeof o);
+}
+
+// A net of k unit squares (a tree: each square added touches exactly one square already
+// there, so no vertex is interior), every shared side a crease (M/V, U one time in u_in), all
+// folded flat: the squares land on grid squares, their sides on each other's crease lines.
+// sq gives the squares (x, y) when non-NULL (k of them, a tree), else they are random.
+static ori_pattern *square_net(int k, const int (*sq)[2], const ori_assignment *asg, int u_in, piece *P)
+{
+    int X[MAXF], Y[MAXF], parent[MAXF];
+    parent[0] = -1;
+    if (sq) {
+        for (int i = 0; i < k; ++i) X[i] = sq[i][0], Y[i] = sq[i][1];
+    } else {
+        X[0] = Y[0] = 0;
+        for (int n = 1; n < k;) {
+            int from = (int)(rnd() % (uint64_t)n), dir = (int)(rnd() % 4);
+            int x = X[from] + (dir == 0) - (dir == 1), y = Y[from] + (dir == 2) - (dir == 3);
+            int touch = 0;
+            bool taken = false;
+            for (int j = 0; j < n; ++j) {
+                taken |= X[j] == x && Y[j] == y;
+                touch += abs(X[j] - x) + abs(Y[j] - y) == 1;
+            }
+            if (taken || touch != 1) continue;
+            X[n] = x, Y[n] = y;
+            n++;
+        }
+    }
+    // Tree edges (the shared sides) and transforms, breadth first from square 0.
+    double id[6] = {1, 0, 0, 0, 1, 0};
+    bool placed[MAXF] = {false};
+    memcpy(P[0].t, id, sizeof id);
+    placed[0] = true;
+    int order[MAXF], head = 0, tail = 0;
+    order[tail++] = 0;
+    while (head < tail) {
+        int i = order[head++];
+        for (int j = 0; j < k; ++j) {
+            if (placed[j] || abs(X[j] - X[i]) + abs(Y[j] - Y[i]) != 1) continue;
+            bool vertical = X[j] != X[i];
+            double c = vertical ? (X[i] > X[j] ? X[i] : X[j]) : (Y[i] > Y[j] ? Y[i] : Y[j]);
+            reflect_grid(P[i].t, vertical, c, P[j].t);
+            placed[j] = true;
+            parent[j] = i;
+            order[tail++] = j;
+        }
+    }
+    cr_assert_eq(tail, k, "the squares of a net must be connected");
+    ori_segment seg[MAXS];
+    int ns = 0, ncrease = 0;
+    for (int i = 0; i < k; ++i) {
+        P[i].cp.n = 4;
+        P[i].cp.v[0] = ori_v2_make(X[i], Y[i]);
+        P[i].cp.v[1] = ori_v2_make(X[i] + 1, Y[i]);
+        P[i].cp.v[2] = ori_v2_make(X[i] + 1, Y[i] + 1);
+        P[i].cp.v[3] = ori_v2_make(X[i], Y[i] + 1);
+        for (int s = 0; s < 4; ++s) {
+            ori_v2 a = P[i].cp.v[s], b = P[i].cp.v[(s + 1) % 4];
+            // The square across this side, if any.
+            int nx = X[i] + (s == 1) - (s == 3), ny = Y[i] + (s == 2) - (s == 0), other = -1;
+            for (int j = 0; j < k; ++j)
+                if (X[j] == nx && Y[j] == ny) other = j;
+            if (other >= 0 && other < i) continue; // entered with the other square
+            cr_assert_lt(ns, MAXS);
+            seg[ns].a = a;
+            seg[ns].b = b;
+            seg[ns].fold_angle_rad = 0;
+            if (other < 0) seg[ns].assignment = ORI_ASSIGN_BOUNDARY;
+            else {
+                cr_assert(parent[other] == i || parent[i] == other);
+                seg[ns].assignment = asg ? asg[ncrease] : random_crease(u_in);
+                ncrease++;
+            }
+            ns++;
+        }
+    }
+    ori_pattern *p = NULL;
+    ori_error err;
+    ori_insert_def def = ori_default_insert_def();
+    def.name_faces = false;
+    cr_assert_eq(ori_pattern_from_segments(seg, ns, &def, &p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+// A strip of k rectangles of random widths 1–3 (height 1), every crease folded (M/V, U one
+// time in u_in): the rectangles' ends land on each other's creases.
+static ori_pattern *uneven_strip(int k, int u_in, piece *P)
+{
+    ori_segment seg[MAXS];
+    int ns = 0;
+    double x = 0;
+    double t[6] = {1, 0, 0, 0, 1, 0};
+    for (int i = 0; i < k; ++i) {
+        double w = 1 + (double)(rnd() % 3);
+        P[i].cp.n = 4;
+        P[i].cp.v[0] = ori_v2_make(x, 0);
+        P[i].cp.v[1] = ori_v2_make(x + w, 0);
+        P[i].cp.v[2] = ori_v2_make(x + w, 1);
+        P[i].cp.v[3] = ori_v2_make(x, 1);
+        if (i > 0) reflect_grid(t, true, x, t);
+        memcpy(P[i].t, t, sizeof t);
+        seg[ns].a = ori_v2_make(x, 0);
+        seg[ns].b = ori_v2_make(x, 1);
+        seg[ns].assignment = i == 0 ? ORI_ASSIGN_BOUNDARY : random_crease(u_in);
+        seg[ns++].fold_angle_rad = 0;
+        for (int y = 0; y < 2; ++y) {
+            seg[ns].a = ori_v2_make(x, y);
+            seg[ns].b = ori_v2_make(x + w, y);
+            seg[ns].assignment = ORI_ASSIGN_BOUNDARY;
+            seg[ns++].fold_angle_rad = 0;
+        }
+        x += w;
+    }
+    seg[ns].a = ori_v2_make(x, 0);
+    seg[ns].b = ori_v2_make(x, 1);
+    seg[ns].assignment = ORI_ASSIGN_BOUNDARY;
+    seg[ns++].fold_angle_rad = 0;
+    ori_pattern *p = NULL;
+    ori_error err;
+    ori_insert_def def = ori_default_insert_def();
+    def.name_faces = false;
+    cr_assert_eq(ori_pattern_from_segments(seg, ns, &def, &p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+// The cube's cross: squares 0 1 2 3 in a row, 4 above and 5 below square 1.
+static const int cube_cross[6][2] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {1, 1}, {1, -1}};
+
+Test(layers, cube_net_all_mountains_has_52_states)
+{
+    ori_assignment m[5] = {ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_MOUNTAIN,
+                           ORI_ASSIGN_MOUNTAIN};
+    piece P[MAXF];
+    ori_pattern *p = square_net(6, cube_cross, m, 0, P);
+    ori_layers *L = solve_pattern(p, NULL);
+    char *s = states_of(L);
+    cr_assert_str_eq(s, "52");
+    ori_buffer_free(s);
+    ori_layers_info in = ori_layers_get_info(L);
+    // No face passes across a crease line: every side lies on one, none crosses it.
+    cr_assert_eq(in.taco_tortilla, 0);
+    cr_assert_eq(in.cells, 1);
+    cr_assert_eq(brute_check(p, P, 6, L, "cube net"), 52);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+}
+
+Test(layers, random_nets_and_strips_match_brute_force, .timeout = 120)
+{
+    int tested_nets = 0, tested_strips = 0, tries = 0, multi = 0, maxf = 0, maxcount = 0, tacos = 0;
+    while ((tested_nets < 150 || tested_strips < 100) && tries < 5000) {
+        tries++;
+        piece P[MAXF];
+        bool net = tested_nets < 150;
+        int k = 2 + (int)(rnd() % 7); // 2 … 8 faces
+        ori_pattern *p = net ? square_net(k, NULL, NULL, 4, P) : uneven_strip(k, 3, P);
+        ori_layers *L = solve_pattern(p, NULL);
+        char what[64];
+        snprintf(what, sizeof what, "%s %d (%d faces)", net ? "net" : "strip", net ? tested_nets : tested_strips, k);
+        int n = brute_check(p, P, k, L, what);
+        if (n >= 0) {
+            if (net) tested_nets++;
+            else tested_strips++;
+            multi += n > 1;
+            maxcount = n > maxcount ? n : maxcount;
+            maxf = k > maxf ? k : maxf;
+            tacos += ori_layers_get_info(L).taco_taco > 0;
+        }
+        ori_layers_destroy(L);
+        ori_pattern_destroy(p);
+    }
+    cr_log_info("%d nets and %d strips in %d tries: %d with several states (up to %d), %d with taco-taco, up to %d faces",
+                tested_nets, tested_strips, tries, multi, maxcount, tacos, maxf);
+    cr_assert_geq(tested_nets, 150);
+    cr_assert_geq(tested_strips, 100);
+    cr_assert_geq(multi, 100);
+    cr_assert_geq(tacos, 50);
+    cr_assert_eq(maxf, 8);
+}
+
+// --- kirigami: cuts are free edges -------------------------------------------------------
+
+// An a × b block of unit squares joined along a random spanning tree of its sides (creases,
+// all folded: M/V, U one time in u_in); the other shared sides are cuts (C). Vertices where
+// squares meet around a cut are no flat vertices: only the brute force's stacking rules apply.
+static ori_pattern *cut_block(int a, int b, int u_in, piece *P)
+{
+    int k = a * b, parent[MAXF];
+    bool in_tree[MAXF] = {false};
+    // Random spanning tree: grow from square 0 by random sides to squares not yet reached.
+    in_tree[0] = true;
+    parent[0] = -1;
+    double id[6] = {1, 0, 0, 0, 1, 0};
+    memcpy(P[0].t, id, sizeof id);
+    for (int n = 1; n < k;) {
+        int from = (int)(rnd() % (uint64_t)k), dir = (int)(rnd() % 4);
+        if (!in_tree[from]) continue;
+        int x = from % a + (dir == 0) - (dir == 1), y = from / a + (dir == 2) - (dir == 3);
+        if (x < 0 || x >= a || y < 0 || y >= b || in_tree[y * a + x]) continue;
+        int to = y * a + x;
+        bool vertical = x != from % a;
+        double c = vertical ? (x > from % a ? x : from % a) : (y > from / a ? y : from / a);
+        reflect_grid(P[from].t, vertical, c, P[to].t);
+        in_tree[to] = true;
+        parent[to] = from;
+        n++;
+    }
+    ori_segment seg[MAXS];
+    int ns = 0;
+    for (int i = 0; i < k; ++i) {
+        int X = i % a, Y = i / a;
+        P[i].cp.n = 4;
+        P[i].cp.v[0] = ori_v2_make(X, Y);
+        P[i].cp.v[1] = ori_v2_make(X + 1, Y);
+        P[i].cp.v[2] = ori_v2_make(X + 1, Y + 1);
+        P[i].cp.v[3] = ori_v2_make(X, Y + 1);
+        for (int s = 0; s < 4; ++s) {
+            int nx = X + (s == 1) - (s == 3), ny = Y + (s == 2) - (s == 0);
+            int other = nx >= 0 && nx < a && ny >= 0 && ny < b ? ny * a + nx : -1;
+            if (other >= 0 && other < i) continue;
+            cr_assert_lt(ns, MAXS);
+            seg[ns].a = P[i].cp.v[s];
+            seg[ns].b = P[i].cp.v[(s + 1) % 4];
+            seg[ns].fold_angle_rad = 0;
+            seg[ns].assignment = other < 0                                        ? ORI_ASSIGN_BOUNDARY
+                                 : (parent[other] == i || parent[i] == other) ? random_crease(u_in)
+                                                                                : ORI_ASSIGN_CUT;
+            ns++;
+        }
+    }
+    ori_pattern *p = NULL;
+    ori_error err;
+    ori_insert_def def = ori_default_insert_def();
+    def.name_faces = false;
+    cr_assert_eq(ori_pattern_from_segments(seg, ns, &def, &p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+static bool cancel_at_once(double fraction, void *user)
+{
+    (void)fraction;
+    (*(int *)user)++;
+    return false;
+}
+
+Test(layers, random_kirigami_blocks_match_brute_force, .timeout = 120)
+{
+    int tested = 0, tries = 0, multi = 0, cuts = 0;
+    while (tested < 100 && tries < 2000) {
+        tries++;
+        piece P[MAXF];
+        int a = 2 + (int)(rnd() % 3), b = 2;
+        if (a * b > 8) continue;
+        ori_pattern *p = cut_block(a, b, 4, P);
+        for (int e = 0; e < ori_pattern_edge_count(p); ++e) cuts += ori_pattern_edge(p, e).assignment == ORI_ASSIGN_CUT;
+        ori_layers *L = solve_pattern(p, NULL);
+        char what[64];
+        snprintf(what, sizeof what, "kirigami %d (%d x %d)", tested, a, b);
+        int n = brute_check(p, P, a * b, L, what);
+        if (n >= 0) {
+            tested++;
+            multi += n > 1;
+        }
+        ori_layers_destroy(L);
+        ori_pattern_destroy(p);
+    }
+    cr_log_info("%d kirigami blocks in %d tries, %d with several states, %d cuts", tested, tries, multi, cuts);
+    cr_assert_geq(tested, 100);
+    cr_assert_geq(multi, 30);
+    cr_assert_geq(cuts, 100);
+}
+
+Test(layers, kirigami_honeycomb_stops_at_its_budget_with_a_lower_bound, .timeout = 120)
+{
+    // Origami Simulator's honeycomb kirigami (187 cuts) folded flat: all 276 faces over one cell,
+    // one component of 16280 free pairs whose count is astronomically large. The count stops at
+    // its budget with a partial answer (exit 5), never hangs.
+    const char *kiri = test_require_shared("origamisimulator/Kirigami_honeycombKiri.svg");
+    char cmd[4200], *out = NULL;
+    snprintf(cmd, sizeof cmd, "layers '%s' --limit 100000 --json", kiri);
+    cr_assert_eq(test_run_cli(cmd, &out), 5, "%s", out);
+    json_error_t jerr;
+    json_t *o = json_loads(out, 0, &jerr);
+    cr_assert(o, "%s", out);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "states")), "100000");
+    cr_assert(json_is_true(json_object_get(o, "limited")));
+    cr_assert_eq(json_integer_value(json_object_get(o, "faces")), 276);
+    cr_assert_eq(json_integer_value(json_object_get(o, "variables")), 276 * 275 / 2);
+    // The cuts join nothing: no taco-tortilla or tortilla-tortilla constraint comes from them.
+    json_t *c = json_object_get(o, "constraints");
+    cr_assert_eq(json_integer_value(json_object_get(c, "taco_tortilla")), 0);
+    cr_assert_eq(json_integer_value(json_object_get(c, "tortilla_tortilla")), 0);
+    json_decref(o);
+    free(out);
+    snprintf(cmd, sizeof cmd, "layers '%s' --timeout 1 --json", kiri);
+    cr_assert_eq(test_run_cli(cmd, &out), 5, "%s", out);
+    o = json_loads(strchr(out, '{'), 0, &jerr);
+    cr_assert(o, "%s", out);
+    cr_assert(json_is_true(json_object_get(o, "timed_out")));
+    cr_assert(json_is_true(json_object_get(o, "limited")));
+    cr_assert(json_is_null(json_object_get(o, "unsatisfiable")));
+    // A lower bound: at least the one state every search reaches first.
+    const char *n = json_string_value(json_object_get(o, "states"));
+    cr_assert(n && strlen(n) >= 1 && strcmp(n, "0") != 0, "%s", out);
+    json_decref(o);
+    free(out);
+}
+
+Test(layers, cancelled_count_keeps_lower_bounds)
+{
+    // A strip of 10 stamps (1,557,892 states) cancelled at the first report: every count is a lower bound, the
+    // total is at most the exact one, and nothing is declared unsatisfiable.
+    piece P[MAXF];
+    ori_pattern *p = stamp_strip(10, P);
+    ori_layers *L = solve_pattern(p, NULL);
+    char *exact = states_of(L);
+    ori_layers_destroy(L);
+    int calls = 0;
+    ori_layers_def def = ori_default_layers_def();
+    def.progress = cancel_at_once;
+    def.progress_user = &calls;
+    ori_error err;
+    cr_assert_eq(ori_layers_create(p, &def, &L, &err), ORI_OK);
+    cr_assert_eq(ori_layers_count(L, &err), ORI_ERR_LIMIT);
+    ori_layers_info in = ori_layers_get_info(L);
+    cr_assert(in.stopped && in.limited && in.counted && in.satisfiable);
+    char *part = states_of(L);
+    cr_assert_lt(strtoull(part, NULL, 10), strtoull(exact, NULL, 10), "%s of %s", part, exact);
+    cr_assert_gt(calls, 0);
+    ori_buffer_free(part);
+    ori_buffer_free(exact);
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+}
+
+// --- drawings with rounded coordinates: the tolerance from the drawing -------------------
+
+// Move every vertex of p by up to `noise` (absolute) in x and y, as a drawing program's
+// rounding does, and rebuild it. The faces keep their indices.
+static void jitter(ori_pattern *p, double noise)
+{
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        q.x += noise * (2 * rnd_unit() - 1);
+        q.y += noise * (2 * rnd_unit() - 1);
+        ori_pattern_set_vertex(p, v, q);
+    }
+    ori_error err;
+    ori_build_def bd = ori_default_build_def();
+    cr_assert_eq(ori_pattern_build(p, &bd, &err), ORI_OK, "%s", err.message);
+}
+
+Test(layers, drawn_cube_net_counts_52_with_the_tolerance_from_the_drawing)
+{
+    // The cross of six squares as Origami Simulator's file draws it: squares of 578.571 units,
+    // corners off by up to 0.002 (about 1e-6 of the sheet). Its sides lie on each other's
+    // crease lines only within that precision.
+    ori_assignment m[5] = {ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_MOUNTAIN,
+                           ORI_ASSIGN_MOUNTAIN};
+    piece P[MAXF];
+    ori_pattern *p = square_net(6, cube_cross, m, 0, P);
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        ori_pattern_set_vertex(p, v, ori_v3_make(578.571 * q.x, 578.571 * q.y, 0));
+    }
+    jitter(p, 0.002);
+    ori_layers *L = solve_pattern(p, NULL);
+    char *s = states_of(L);
+    cr_assert_str_eq(s, "52");
+    ori_buffer_free(s);
+    ori_layers_info in = ori_layers_get_info(L);
+    cr_assert(in.tolerance_from_drawing);
+    cr_assert_eq(in.taco_tortilla, 0);
+    cr_assert_eq(in.cells, 1);
+    // Relative to the folded image (one square, 818 units across): 0.002 at each of two corners.
+    cr_assert_gt(in.noise_length, 1e-7);
+    cr_assert_lt(in.noise_length, 1e-4);
+    cr_assert_geq(in.tolerance, 4 * in.noise_length);
+    ori_layers_destroy(L);
+    // At the strict length the 0.002-wide slivers are real regions: faces overlap the crease
+    // lines there, and the count is not the drawing's.
+    ori_layers_def def = ori_default_layers_def();
+    def.snap_rel = ORI_TOL_LAYERS_SNAP_REL;
+    L = NULL;
+    ori_error err;
+    if (ori_layers_create(p, &def, &L, &err) == ORI_OK) {
+        cr_assert_eq(ori_layers_count(L, &err), ORI_OK);
+        s = states_of(L);
+        cr_assert_str_neq(s, "52");
+        ori_buffer_free(s);
+        cr_assert_gt(ori_layers_get_info(L).cells, 1);
+    }
+    ori_layers_destroy(L);
+    ori_pattern_destroy(p);
+}
+
+Test(layers, random_drawn_nets_and_strips_count_as_the_exact_ones, .timeout = 120)
+{
+    // The class: nets and strips whose coordinates are rounded (1e-7 to 1e-5 of the sheet)
+    // count, with the tolerance chosen from the drawing, exactly what the brute force counts on
+    // the exact pattern.
+    int tested = 0, tries = 0, multi = 0;
+    while (tested < 150 && tries < 3000) {
+        tries++;
+        piece P[MAXF];
+        bool net = tries % 2;
+        int k = 2 + (int)(rnd() % 7);
+        ori_pattern *p = net ? square_net(k, NULL, NULL, 4, P) : uneven_strip(k, 3, P);
+        int expect = brute_check(p, P, k, NULL, "exact");
+        if (expect < 0) {
+            ori_pattern_destroy(p);
+            continue;
+        }
+        double size = 0;
+        for (int i = 0; i < k; ++i) size = fmax(size, fmax(P[i].cp.v[2].x, P[i].cp.v[2].y));
+        double noise = size * pow(10.0, -7.0 + 2.0 * rnd_unit());
+        jitter(p, noise);
+        ori_layers *L = solve_pattern(p, NULL);
+        char *s = states_of(L), want[32];
+        snprintf(want, sizeof want, "%d", expect);
+        cr_assert_str_eq(s, want, "%s of %d faces drawn within %.2g: %s states, the exact one has %s", net ? "net" : "strip",
+                         k, noise / size, s, want);
+        ori_buffer_free(s);
+        ori_layers_info in = ori_layers_get_info(L);
+        cr_assert(in.tolerance_from_drawing);
+        // Relative to the folded image (at least one unit across): corners moved by noise and
+        // reflected across creases turned by up to 2 noise / 1, over lever arms up to the size.
+        cr_assert_leq(in.noise_length, 4 * size * noise, "the noise seen (%g) is the drawing's (%g)", in.noise_length,
+                      noise);
+        multi += expect > 1;
+        ori_layers_destroy(L);
+        ori_pattern_destroy(p);
+        tested++;
+    }
+    cr_assert_geq(tested, 150);
+    cr_assert_geq(multi, 60);
+}
+
+Test(layers, published_drawings_with_rounded_coordinates_count_by_default)
+{
+    // Flat-Folder's Instagram CPs drawn with rounded coordinates (Kawasaki off by up to 4e-4
+    // rad, equal sectors off by 1e-6): the published counts and components by default.
+    const char *files[][2] = {{"018_komatsu_Butterfly_Base.fold", "018"},
+                              {"287_ku_Four_Leaf_Clover.fold", "287"},
+                              {"360_fung_I_Heart_Cat_v2_(shaped).fold", "360"}};
+    const char *csv = test_require_shared("flat-folder-corpus/instagram_data.csv");
+    char csvbuf[4096];
+    snprintf(csvbuf, sizeof csvbuf, "%s", csv);
+    for (int i = 0; i < 3; ++i) {
+        char rel[256];
+        snprintf(rel, sizeof rel, "flat-folder-corpus/instagram/%s", files[i][0]);
+        ori_pattern *p = test_load_pattern(test_require_shared(rel), 0);
+        ff_row r = ff_lookup(csvbuf, files[i][1]);
+        cr_assert(r.found);
+        ori_layers *L = solve_pattern(p, NULL);
+        char *s = states_of(L), comps[512];
+        component_string(L, comps, sizeof comps);
+        cr_expect_str_eq(s, r.states, "%s", files[i][0]);
+        cr_expect_str_eq(comps, r.components, "%s", files[i][0]);
+        ori_layers_info in = ori_layers_get_info(L);
+        cr_expect(in.tolerance_from_drawing && in.tolerance > ORI_TOL_LAYERS_SNAP_REL, "%s: tolerance %g", files[i][0],
+                  in.tolerance);
+        ori_buffer_free(s);
+        ori_layers_destroy(L);
+        // The strict length refuses them (Kawasaki beyond 1e-8 rad).
+        ori_layers_def def = ori_default_layers_def();
+        def.snap_rel = ORI_TOL_LAYERS_SNAP_REL;
+        L = solve_pattern(p, &def);
+        ori_layers_conflict c;
+        cr_expect(ori_layers_get_conflict(L, &c) && c.constraint == ORI_LAYERS_LOCAL, "%s", files[i][0]);
+        ori_layers_destroy(L);
+        ori_pattern_destroy(p);
+    }
+    // Origami Simulator's cube net (corners drawn 0.002 apart): 52 states, not 8.
+    const char *cube = test_require_shared("origamisimulator/PolygonUnfolding_cubeunwrapping.svg");
+    char cmd[4200], *out = NULL;
+    snprintf(cmd, sizeof cmd, "layers '%s' --json", cube);
+    cr_assert_eq(test_run_cli(cmd, &out), 0, "%s", out);
+    json_error_t jerr;
+    json_t *o = json_loads(out, 0, &jerr);
+    cr_assert(o, "%s", out);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "states")), "52");
+    cr_assert_eq(json_integer_value(json_object_get(json_object_get(o, "constraints"), "taco_tortilla")), 0);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "tolerance_source")), "drawing");
+    json_decref(o);
+    free(out);
+}
+
+Test(layers, cli_says_which_tolerance_decides_undecided_coordinates)
+{
+    // 2.1e-8 apart at --tolerance 1e-8: undecided; the message names the value that decides.
+    char *out = NULL, *err = NULL;
+    cr_assert_eq(test_run_cli_split("layers tests/data/layers/ambiguous-strip.fold --tolerance 1e-8", &out, &err), 3);
+    cr_assert(strstr(err, "do not say whether they meet"), "%s", err);
+    const char *hint = strstr(err, "--tolerance ");
+    cr_assert(hint, "%s", err);
+    double t = atof(hint + strlen("--tolerance "));
+    cr_assert_gt(t, 2.1e-8, "%s", err);
+    cr_assert_leq(t, 1e-2, "%s", err);
+    free(out);
+    free(err);
+    // That value works.
+    char cmd[256];
+    snprintf(cmd, sizeof cmd, "layers tests/data/layers/ambiguous-strip.fold --tolerance %.2g --count", t);
+    cr_assert_eq(test_run_cli(cmd, &out), 0, "%s", out);
+    cr_assert_str_eq(out, "1\n");
+    free(out);
+    // Without --tolerance the drawing's own is used and printed.
+    cr_assert_eq(test_run_cli("layers tests/data/layers/ambiguous-strip.fold", &out), 0, "%s", out);
+    cr_assert(strstr(out, "tolerance    ") && strstr(out, "(from the drawing"), "%s", out);
+    free(out);
+}
+
 // --- bad input, limits, threads, cancellation ----------------------------------------------
 
 Test(layers, bad_input_names_the_element)
@@ -997,6 +1591,7 @@ Test(layers, bad_input_names_the_element)
     ori_layers *L = NULL;
     ori_error err;
     ori_layers_def def = ori_default_layers_def();
+    def.snap_rel = ORI_TOL_LAYERS_SNAP_REL;
     cr_assert_eq(ori_layers_create(p, &def, &L, &err), ORI_ERR_DEGENERATE);
     cr_assert_null(L);
     cr_assert_str_eq(err.field, "vertices_coords");
@@ -1007,6 +1602,21 @@ Test(layers, bad_input_names_the_element)
     char *s = states_of(L);
     cr_assert_str_eq(s, "1");
     ori_buffer_free(s);
+    ori_layers_info in = ori_layers_get_info(L);
+    cr_assert(!in.tolerance_from_drawing);
+    cr_assert_float_eq(in.tolerance, 1e-6, 1e-18);
+    ori_layers_destroy(L);
+    // By default the tolerance comes from the drawing: the two points 2.1e-8 apart are the
+    // drawing's noise (nothing else lies within 10 % of the strip), so they are one point.
+    L = solve_pattern(p, NULL);
+    s = states_of(L);
+    cr_assert_str_eq(s, "1");
+    ori_buffer_free(s);
+    in = ori_layers_get_info(L);
+    cr_assert(in.tolerance_from_drawing);
+    cr_assert_float_eq(in.noise_length, 2.1e-8, 2e-9);
+    cr_assert_geq(in.tolerance, 4 * in.noise_length);
+    cr_assert_leq(in.tolerance, 1e-2);
     ori_layers_destroy(L);
     ori_pattern_destroy(p);
 
@@ -1176,10 +1786,15 @@ Test(layers, cli_json_has_exactly_the_documented_fields)
     json_error_t jerr;
     json_t *o = json_loads(out, 0, &jerr);
     cr_assert(o, "%s", out);
-    const char *keys[] = {"states", "components", "faces", "variables", "constraints", "unsatisfiable"};
-    cr_assert_eq(json_object_size(o), 6);
-    for (int i = 0; i < 6; ++i) cr_assert(json_object_get(o, keys[i]), "%s", keys[i]);
+    const char *keys[] = {"states",    "components",       "faces",         "variables",    "constraints",
+                          "tolerance", "tolerance_source", "drawing_noise", "unsatisfiable"};
+    cr_assert_eq(json_object_size(o), 9);
+    for (int i = 0; i < 9; ++i) cr_assert(json_object_get(o, keys[i]), "%s", keys[i]);
     cr_assert_str_eq(json_string_value(json_object_get(o, "states")), "16");
+    // Exact coordinates: the tolerance from the drawing is the strict default.
+    cr_assert_str_eq(json_string_value(json_object_get(o, "tolerance_source")), "drawing");
+    cr_assert_float_eq(json_number_value(json_object_get(o, "tolerance")), ORI_TOL_LAYERS_SNAP_REL, 1e-20);
+    cr_assert_eq(json_object_size(json_object_get(o, "drawing_noise")), 2);
     cr_assert(json_is_null(json_object_get(o, "unsatisfiable")));
     json_t *c = json_object_get(o, "constraints");
     cr_assert_eq(json_integer_value(json_object_get(c, "taco_taco")), 1);

@@ -47,15 +47,20 @@ typedef struct ori_layers_def {
     /// then a lower bound and the result says limited). Default ORI_LAYERS_NO_LIMIT.
     uint64_t limit;
     int threads;               ///< worker threads for independent components (≥ 1); default 1
-    /// Snapping length of the overlap structure relative to the folded image's diagonal;
-    /// default ORI_TOL_LAYERS_SNAP_REL (> 0).
+    /// Snapping length of the overlap structure relative to the folded image's diagonal (a
+    /// value above ORI_TOL_LAYERS_SNAP_REL also accepts Kawasaki sums and takes sectors for equal
+    /// up to that many radians); ORI_LAYERS_SNAP_AUTO (the default) chooses it from the
+    /// drawing's own precision (docs/layers.md; ori_layers_info.tolerance tells the value).
     double snap_rel;
     ori_progress_fn *progress; ///< optional progress/cancel callback for ori_layers_count
     void *progress_user;       ///< passed back to progress
     int internal_value;        ///< set by ori_default_layers_def; do not change
 } ori_layers_def;
 
-/// Defaults: fold from the crease pattern, no limit, one thread, ORI_TOL_LAYERS_SNAP_REL.
+/// ori_layers_def.snap_rel value meaning "from the drawing's precision".
+#define ORI_LAYERS_SNAP_AUTO 0.0
+
+/// Defaults: fold from the crease pattern, no limit, one thread, ORI_LAYERS_SNAP_AUTO.
 ORI_API ori_layers_def ori_default_layers_def(void);
 
 /// Opaque solver and result.
@@ -73,7 +78,10 @@ typedef struct ori_layers ori_layers;
 ORI_API ori_status ori_layers_create(const ori_pattern *pattern, const ori_layers_def *def, ori_layers **out,
                                      ori_error *error);
 /// Count the states of every component (exactly, or up to the limit). Fails only when the
-/// progress callback cancels (ORI_ERR_LIMIT). A no-op when already counted.
+/// progress callback cancels (ORI_ERR_LIMIT); the solver then holds a partial answer: every
+/// count is a lower bound (the states counted so far; a component not reached gets the first
+/// state a short search finds, else 0), info.limited and info.stopped are true, and no
+/// component is declared without states. A no-op when already counted (or stopped).
 ORI_API ori_status ori_layers_count(ori_layers *layers, ori_error *error);
 /// Destroy a solver; NULL is a no-op.
 ORI_API void ori_layers_destroy(ori_layers *layers);
@@ -92,7 +100,16 @@ typedef struct ori_layers_info {
     int components;            ///< independent components, the fixed part (component 0) included
     bool counted;              ///< ori_layers_count has run
     bool limited;              ///< some component reached the limit (its count is a lower bound)
+    bool stopped;              ///< the progress callback cancelled the count (every count a lower bound)
     bool satisfiable;          ///< false once no state is known to exist
+    double tolerance;          ///< the snapping length used (relative to the folded image's diagonal)
+    bool tolerance_from_drawing; ///< it was chosen from the drawing (ORI_LAYERS_SNAP_AUTO)
+    /// The drawing's precision as the set-up saw it (0 for exact coordinates): the largest
+    /// distance, relative to the diagonal, it took for zero (points snapped together, a point
+    /// on an edge, a vertex two faces fold to different places) …
+    double noise_length;
+    /// … and the largest angle in radians (a vertex's Kawasaki sum, sectors taken for equal).
+    double noise_angle;
 } ori_layers_info;
 
 /// Sizes and verdict by value.

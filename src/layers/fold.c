@@ -70,11 +70,15 @@ static ori_status place_vertices(ori_layers *L, const ori_pattern *p, const int 
             int v = fv[k];
             ori_v3 q = ori_pattern_vertex(p, v);
             ori_v2 img = apply(L->xf[f], ori_v2_make(q.x, q.y));
+            double gap = seen[v] ? ori_v2_norm(ori_v2_sub(img, L->vf[v])) : 0.0;
             if (!seen[v]) {
                 seen[v] = 1;
                 L->vf[v] = img;
-            } else if (ori_v2_norm(ori_v2_sub(img, L->vf[v])) > tol) {
+            } else if (gap <= tol) {
+                if (gap / diag > L->noise_len) L->noise_len = gap / diag;
+            } else {
                 ori__free(seen);
+                L->fail_need = gap / diag;
                 return ori__fail_at(error, ORI_ERR_TOPOLOGY, "vertices_coords", v,
                                     "the sheet does not fold consistently here: face %d puts the vertex %.3g "
                                     "(relative %.3g) away from where the other faces put it",

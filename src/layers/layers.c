@@ -14,7 +14,7 @@ ori_layers_def ori_default_layers_def(void)
     d.face_transform_count = 0;
     d.limit = ORI_LAYERS_NO_LIMIT;
     d.threads = 1;
-    d.snap_rel = ORI_TOL_LAYERS_SNAP_REL;
+    d.snap_rel = ORI_LAYERS_SNAP_AUTO;
     d.progress = NULL;
     d.progress_user = NULL;
     d.internal_value = ORI__DEF_COOKIE;
@@ -115,12 +115,29 @@ static void local_fail(ori_layers *L, const ori_pattern *p, int v, const char *r
     ori__free(edges);
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 static bool local_check(ori_layers *L, const ori_pattern *p)
 {
-    double kaw_tol = L->snap_rel > ORI_TOL_LAYERS_SNAP_REL ? L->snap_rel : ORI_TOL_KAWASAKI_RAD;
+    // Loosened (--tolerance above the default, or a tolerance chosen from the drawing): Kawasaki
+    // holds within the tolerance in radians, or when moving the vertex by the tolerance (× the
+    // diagonal) would fix it — the sum times the vertex's shortest crease.
+    bool loose = L->snap_rel > ORI_TOL_LAYERS_SNAP_REL || L->snap_auto;
+    double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300;
+    for (int v = 0; v < L->nv; ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        lo_x = fmin(lo_x, q.x), hi_x = fmax(hi_x, q.x), lo_y = fmin(lo_y, q.y), hi_y = fmax(hi_y, q.y);
+    }
+    double diag = L->nv ? hypot(hi_x - lo_x, hi_y - lo_y) : 1.0;
+    if (!(diag > 0.0)) diag = 1.0;
+    double kaw_tol = loose ? fmax(L->snap_rel, ORI_TOL_KAWASAKI_RAD) : ORI_TOL_KAWASAKI_RAD;
     int cap = 0;
     int *edges = NULL;
-    double *sec = NULL;
+    double *sec = NULL, *snap = NULL, *sorted = NULL;
     ori_assignment *asg = NULL;
     bool ok = true;
     char detail[160];
@@ -131,10 +148,12 @@ static bool local_check(ori_layers *L, const ori_pattern *p)
             cap = deg;
             edges = ori__realloc(edges, sizeof(int) * (size_t)cap);
             sec = ori__realloc(sec, sizeof(double) * (size_t)cap);
+            snap = ori__realloc(snap, sizeof(double) * (size_t)cap);
+            sorted = ori__realloc(sorted, sizeof(double) * (size_t)cap);
             asg = ori__realloc(asg, sizeof(ori_assignment) * (size_t)cap);
         }
         int n = ori_flat_vertex_creases(p, v, edges, sec, cap);
-        if (n == 0) continue;
+        if (n <= 0) continue;
         if (n % 2) {
             snprintf(detail, sizeof detail, "%d creases meet there; a flat vertex has an even number", n);
             local_fail(L, p, v, "kawasaki", detail);
@@ -142,17 +161,50 @@ static bool local_check(ori_layers *L, const ori_pattern *p)
             break;
         }
         double K = ori_flat_kawasaki_sum(sec, n);
-        if (!(fabs(K) <= kaw_tol)) {
-            snprintf(detail, sizeof detail, "alternating sector sum is %g deg (%.3g rad), beyond %.3g rad",
-                     ori_rad_to_deg_output(K), K, kaw_tol);
+        // The shortest crease there: an angle error θ is a displacement of about θ × its length.
+        double lmin = 1e300;
+        for (int i = 0; i < n; ++i) {
+            ori_edge ed = ori_pattern_edge(p, edges[i]);
+            ori_v3 a = ori_pattern_vertex(p, ed.v[0]), b = ori_pattern_vertex(p, ed.v[1]);
+            lmin = fmin(lmin, hypot(b.x - a.x, b.y - a.y));
+        }
+        if (!(fabs(K) <= kaw_tol) && !(loose && fabs(K) * lmin / diag <= L->snap_rel)) {
+            if (loose)
+                snprintf(detail, sizeof detail,
+                         "alternating sector sum is %g deg (%.3g rad), beyond %.3g rad and a move of %.3g of the sheet",
+                         ori_rad_to_deg_output(K), K, kaw_tol, L->snap_rel);
+            else
+                snprintf(detail, sizeof detail, "alternating sector sum is %g deg (%.3g rad), beyond %.3g rad",
+                         ori_rad_to_deg_output(K), K, kaw_tol);
             local_fail(L, p, v, "kawasaki", detail);
             L->conflict.kawasaki_rad = K;
+            L->fail_need = fmin(fabs(K), fabs(K) * lmin / diag);
             ok = false;
             break;
         }
+        double vnoise = fabs(K), vgap = 0.0;
+        // The nearest Kawasaki-exact sectors: with the tolerance loosened for a rounded drawing,
+        // sectors within it of each other are the equal sectors the drawing meant (else
+        // big-little-big would see a strictly smallest one among them); otherwise the sum's
+        // error is spread evenly.
+        double snapped = loose ? ori_flat_snap_sectors(sec, n, kaw_tol, snap) : INFINITY;
+        if (snapped <= fmax(kaw_tol, fabs(K))) {
+            // The gaps taken for equal: between consecutive sorted sectors, at most the tolerance.
+            memcpy(sorted, sec, sizeof(double) * (size_t)n);
+            qsort(sorted, (size_t)n, sizeof(double), cmp_double);
+            for (int i = 0; i + 1 < n; ++i) {
+                double gap = sorted[i + 1] - sorted[i];
+                if (gap <= kaw_tol && gap > vgap) vgap = gap;
+            }
+            memcpy(sec, snap, sizeof(double) * (size_t)n);
+        } else
+            for (int i = 0; i < n; ++i) sec[i] -= (i % 2 == 0 ? K : -K) / n;
+        if (vgap > L->noise_gap) L->noise_gap = vgap;
+        vnoise = fmax(vnoise, vgap);
+        if (vnoise > L->noise_ang) L->noise_ang = vnoise;
+        if (vnoise * lmin / diag > L->noise_ang_len) L->noise_ang_len = vnoise * lmin / diag;
         int nm = 0, nvv = 0, nu = 0;
         for (int i = 0; i < n; ++i) {
-            sec[i] -= (i % 2 == 0 ? K : -K) / n;
             asg[i] = L->asg[edges[i]];
             nm += asg[i] == ORI_ASSIGN_MOUNTAIN;
             nvv += asg[i] == ORI_ASSIGN_VALLEY;
@@ -178,32 +230,26 @@ static bool local_check(ori_layers *L, const ori_pattern *p)
     }
     ori__free(edges);
     ori__free(sec);
+    ori__free(snap);
+    ori__free(sorted);
     ori__free(asg);
     return ok;
 }
 
-ori_status ori_layers_create(const ori_pattern *p, const ori_layers_def *def, ori_layers **out, ori_error *error)
+// The set-up at one snapping length.
+static ori_status create_at(const ori_pattern *p, const ori_layers_def *def, double snap_rel, bool from_drawing,
+                            ori_layers **out, ori_error *error, double *fail_amb, double *fail_need)
 {
-    ORI_ASSERT(p && out);
     *out = NULL;
-    ori_layers_def dd = ori_default_layers_def();
-    if (!def) def = &dd;
-    ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
-    ORI_ASSERT(def->threads >= 1 && def->snap_rel > 0.0);
-    if (!ori_pattern_is_built(p)) return ori__fail(error, ORI_ERR_ARGUMENT, "the pattern is not built");
     int nf = ori_pattern_face_count(p);
-    if (def->face_transforms && def->face_transform_count != nf)
-        return ori__fail_at(error, ORI_ERR_ARGUMENT, "faces_flatFoldTransform", def->face_transform_count,
-                            "%d transforms for %d faces", def->face_transform_count, nf);
-    if (nf == 0) return ori__fail(error, ORI_ERR_TOPOLOGY, "the pattern has no faces");
-
     ori_layers *L = ori__calloc(1, sizeof *L);
     L->nv = ori_pattern_vertex_count(p);
     L->ne = ori_pattern_edge_count(p);
     L->nf = nf;
     L->limit = def->limit;
     L->threads = def->threads;
-    L->snap_rel = def->snap_rel;
+    L->snap_rel = snap_rel;
+    L->snap_auto = from_drawing;
     L->progress = def->progress;
     L->progress_user = def->progress_user;
     L->transforms_known = def->face_transforms != NULL || !ori_pattern_is_folded_form(p);
@@ -232,8 +278,8 @@ ori_status ori_layers_create(const ori_pattern *p, const ori_layers_def *def, or
     ori__layers_tables(L);
 
     ori_status st = ORI_OK;
-    L->snap_rel = def->snap_rel;
     if (!local_check(L, p)) {
+        if (fail_need) *fail_need = L->fail_need;
         // No state; the geometry is not needed (and may not exist).
         L->counted = true;
         *out = L;
@@ -244,6 +290,8 @@ ori_status ori_layers_create(const ori_pattern *p, const ori_layers_def *def, or
     if (st == ORI_OK) st = ori__layers_constraints(L, error);
     if (st == ORI_OK) st = ori__layers_presolve(L, error);
     if (st != ORI_OK) {
+        if (fail_amb) *fail_amb = L->fail_amb;
+        if (fail_need) *fail_need = L->fail_need;
         ori_layers_destroy(L);
         return st;
     }
@@ -278,6 +326,100 @@ ori_status ori_layers_create(const ori_pattern *p, const ori_layers_def *def, or
     return ORI_OK;
 }
 
+// Two set-ups took the same decisions (same overlap structure, variables, constraints, verdict).
+static bool same_setup(const ori_layers *a, const ori_layers *b)
+{
+    return a->np == b->np && a->ns == b->ns && a->nc == b->nc && a->nvar == b->nvar && a->n_equiv == b->n_equiv &&
+           a->n_taco == b->n_taco && a->unsat == b->unsat && a->n_comp == b->n_comp &&
+           a->count_kind[ORI_LAYERS_TRANSITIVITY] == b->count_kind[ORI_LAYERS_TRANSITIVITY];
+}
+
+#define ORI__TIGHT_RERUN_VARS 100000
+
+ori_status ori_layers_create(const ori_pattern *p, const ori_layers_def *def, ori_layers **out, ori_error *error)
+{
+    ORI_ASSERT(p && out);
+    *out = NULL;
+    ori_layers_def dd = ori_default_layers_def();
+    if (!def) def = &dd;
+    ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT(def->threads >= 1 && def->snap_rel >= 0.0);
+    if (!ori_pattern_is_built(p)) return ori__fail(error, ORI_ERR_ARGUMENT, "the pattern is not built");
+    int nf = ori_pattern_face_count(p);
+    if (def->face_transforms && def->face_transform_count != nf)
+        return ori__fail_at(error, ORI_ERR_ARGUMENT, "faces_flatFoldTransform", def->face_transform_count,
+                            "%d transforms for %d faces", def->face_transform_count, nf);
+    if (nf == 0) return ori__fail(error, ORI_ERR_TOPOLOGY, "the pattern has no faces");
+    if (def->snap_rel > 0.0) return create_at(p, def, def->snap_rel, false, out, error, NULL, NULL);
+
+    // A tolerance from the drawing's own precision (in the spirit of Flat-Folder, which shrinks
+    // its epsilon from the shortest edge / 8 until the feature counts stop changing): from the
+    // coarsest snapping length below the shortest edge / 8, the first one at which the set-up
+    // decides everything (no distance between it and ORI_LAYERS_AMBIGUITY_FACTOR times it, the
+    // sheet folds consistently, every vertex is locally flat-foldable) and everything it took for
+    // "the same" (lengths relative to the diagonal, angles in radians) lies at most a quarter of
+    // it: a gap in the drawing's distances from that noise to 10 times the length, so every
+    // length in between decides alike. None such: the default ORI_TOL_LAYERS_SNAP_REL.
+    double lo_x = 1e300, lo_y = 1e300, hi_x = -1e300, hi_y = -1e300, shortest = 1e300;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        lo_x = fmin(lo_x, q.x), hi_x = fmax(hi_x, q.x), lo_y = fmin(lo_y, q.y), hi_y = fmax(hi_y, q.y);
+    }
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        ori_v3 a = ori_pattern_vertex(p, ed.v[0]), b = ori_pattern_vertex(p, ed.v[1]);
+        shortest = fmin(shortest, hypot(b.x - a.x, b.y - a.y));
+    }
+    double diag = hypot(hi_x - lo_x, hi_y - lo_y);
+    double top = diag > 0.0 && shortest < 1e300 ? fmin(1e-2, shortest / diag / 8.0) : ORI_TOL_LAYERS_SNAP_REL;
+    // The search keeps the lengths that may work in [lo, hi): a distance d met in the ambiguous
+    // band wants a length below d / 10, one that must be reached (a vertex folded apart, a
+    // Kawasaki sum as a move) a length above it, and noise too close to the length (above a
+    // quarter of it) either a length 4 times it or one below a tenth of it. It tries the coarsest
+    // length first and then halves (at least), as Flat-Folder does.
+    double lo = 0.0, hi = top * 1.0000001, r = top;
+    for (int it = 0; it < 48 && r >= ORI_TOL_LAYERS_SNAP_REL && lo < hi; ++it) {
+        ori_layers *L = NULL;
+        ori_error e2;
+        ori_error_clear(&e2);
+        double amb = 0.0, need = 0.0;
+        ori_status st = create_at(p, def, r, true, &L, &e2, &amb, &need);
+        bool decided = st == ORI_OK && !(L->unsat && L->conflict.constraint == ORI_LAYERS_LOCAL);
+        double noise = decided ? fmax(L->noise_len, L->noise_ang_len) : 0.0;
+        if (decided && noise <= 0.25 * r) {
+            // Every length from the noise up to r decides alike; report (and run at) the
+            // tightest one with a margin: 4 × the noise (and the sector gaps taken for equal),
+            // at least the default. Above ORI__TIGHT_RERUN_VARS variables the second set-up
+            // costs seconds for the same decisions: r itself is kept.
+            double tight = fmin(r, fmax(ORI_TOL_LAYERS_SNAP_REL, 4.0 * fmax(noise, L->noise_gap)));
+            ori_layers *T = NULL;
+            if (tight < r && L->nvar <= ORI__TIGHT_RERUN_VARS && create_at(p, def, tight, true, &T, &e2, NULL, NULL) == ORI_OK && same_setup(L, T)) {
+                ori_layers_destroy(L);
+                L = T;
+            } else
+                ori_layers_destroy(T);
+            *out = L;
+            return ORI_OK;
+        }
+        ori_layers_destroy(L);
+        if (decided) {
+            if (4.04 * noise < hi) lo = fmax(lo, 4.04 * noise);
+            else hi = fmin(hi, 0.1 * noise);
+        } else if (amb > 0.0)
+            hi = fmin(hi, 0.099 * amb);
+        else if (need > 0.0)
+            lo = fmax(lo, 1.05 * need);
+        else
+            hi = fmin(hi, r); // any other refusal: a finer length
+        double next = r < lo ? lo : fmin(0.99 * hi, 0.5 * r);
+        r = next < lo ? lo : next;
+    }
+    // Nothing accepted: the strict default (its Kawasaki in radians), reported as chosen.
+    ori_status st = create_at(p, def, ORI_TOL_LAYERS_SNAP_REL, false, out, error, NULL, NULL);
+    if (st == ORI_OK) (*out)->snap_auto = true;
+    return st;
+}
+
 ori_status ori_layers_count(ori_layers *L, ori_error *error)
 {
     ORI_ASSERT(L);
@@ -304,7 +446,12 @@ ori_layers_info ori_layers_get_info(const ori_layers *L)
     in.components = L->n_comp;
     in.counted = L->counted;
     in.limited = L->limited;
+    in.stopped = L->stopped;
     in.satisfiable = !L->unsat;
+    in.tolerance = L->snap_rel;
+    in.tolerance_from_drawing = L->snap_auto;
+    in.noise_length = L->noise_len;
+    in.noise_angle = L->noise_ang;
     return in;
 }
 

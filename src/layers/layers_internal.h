@@ -170,6 +170,7 @@ struct ori_layers {
     ori__nat *comp_count;      // per component once counted
     ori__nat total;
     bool counted, limited;
+    bool stopped;              // the progress callback cancelled: every count is a lower bound
     uint64_t limit;
 
     // Verdict.
@@ -194,6 +195,20 @@ struct ori_layers {
     void *progress_user;
     int threads;
     double snap_rel;
+    bool snap_auto;            // snap_rel was chosen from the drawing (ORI_LAYERS_SNAP_AUTO); with it
+                               // the local check is loosened even at ORI_TOL_LAYERS_SNAP_REL
+    // The drawing's precision as the set-up saw it: the largest distance it took for "the same"
+    // (relative to the diagonal: folded vertices one face puts apart from another's, points
+    // snapped together, a point taken to lie on an edge) and the largest angle (radians) it took
+    // for zero or equal (a vertex's Kawasaki sum, the gap between sectors snapped equal).
+    double noise_len, noise_ang;
+    double noise_ang_len;      // each vertex's Kawasaki sum × its shortest crease / the diagonal
+    double noise_gap;          // the largest gap between sectors snapped equal (radians)
+    // Why a set-up failed at its snapping length, for the search of a length from the drawing:
+    // a distance (relative) that lay in the ambiguous band (only a length below a tenth of it
+    // decides it), and one that the length must reach (a vertex folded apart, a Kawasaki sum
+    // as a move); 0 when not that.
+    double fail_amb, fail_need;
 };
 
 #define ORI__TABLE_CONFLICT 0xFFFFu

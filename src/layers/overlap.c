@@ -18,6 +18,7 @@
 typedef struct work {
     ori_layers *L;
     double eps, band;
+    double noise;       // the largest distance taken for "the same" (snapped, on an edge)
     double x0, y0;      // lower-left corner of the point grid
     ori__imap cells;    // point grid cell → first point
     int *next;          // chain of points in a cell
@@ -71,7 +72,10 @@ static int add_point(work *w, ori_v2 q, int origin, int *clash)
                 }
             }
         }
-    if (best >= 0) return best;
+    if (best >= 0) {
+        if (best_d > w->noise) w->noise = best_d;
+        return best;
+    }
     if (w->np == w->pcap) {
         w->pcap = w->pcap ? 2 * w->pcap : 64;
         w->pts = ori__realloc(w->pts, sizeof(ori_v2) * (size_t)w->pcap);
@@ -180,12 +184,14 @@ static bool point_on_segments(work *w, int r, ori_error *error)
         double along = ori_v2_dot(rel, d) / len, off = fabs(ori_v2_cross(d, rel)) / len;
         if (off > w->band || along <= 0.0 || along >= len) continue;
         if (off <= w->eps) {
+            if (off > w->noise) w->noise = off;
             push_inc(w, s, r, along / len);
             continue;
         }
         int e = -1;
         for (int x = 0; x < w->L->ne && e < 0; ++x)
             if (w->e_base[x] == s) e = x;
+        w->L->fail_amb = off / (w->eps / w->L->snap_rel);
         if (w->origin[r] >= 0) {
             ori__fail_at(error, ORI_ERR_DEGENERATE, "vertices_coords", w->origin[r],
                          "folded, the vertex lies %.3g (relative) from edge %d: the coordinates do not say "
@@ -235,6 +241,7 @@ static bool crossings(work *w, ori_error *error)
                 int clash = -1;
                 int r = add_point(w, x, -1, &clash);
                 if (r < 0) {
+                    w->L->fail_amb = ori_v2_norm(ori_v2_sub(w->pts[clash], x)) / (w->eps / w->L->snap_rel);
                     int e = -1;
                     for (int i = 0; i < w->L->ne && e < 0; ++i)
                         if (w->e_base[i] == s1) e = i;
@@ -315,6 +322,7 @@ ori_status ori__layers_overlap(ori_layers *L, ori_error *error)
         int clash = -1;
         w.vp[v] = add_point(&w, L->vf[v], v, &clash);
         if (w.vp[v] < 0) {
+            L->fail_amb = ori_v2_norm(ori_v2_sub(w.pts[clash], L->vf[v])) / diag;
             st = ori__fail_at(error, ORI_ERR_DEGENERATE, "vertices_coords", v,
                               "folded, the vertex lands %.3g (relative) from vertex %d: the coordinates do not "
                               "say whether they meet",
@@ -333,6 +341,9 @@ ori_status ori__layers_overlap(ori_layers *L, ori_error *error)
         for (int e = 0; e < ne; ++e) {
             int p = w.vp[L->ev[e][0]], q = w.vp[L->ev[e][1]];
             if (p == q) {
+                // Shorter than the snapping length: only a shorter one keeps the edge.
+                L->fail_amb = ORI_LAYERS_AMBIGUITY_FACTOR *
+                              ori_v2_norm(ori_v2_sub(L->vf[L->ev[e][1]], L->vf[L->ev[e][0]])) / diag;
                 ori__imap_free(&pairs);
                 st = ori__fail_at(error, ORI_ERR_DEGENERATE, "edges_vertices", e,
                                   "folded, the edge shrinks to a point (shorter than the snapping length)");
@@ -666,6 +677,7 @@ ori_status ori__layers_overlap(ori_layers *L, ori_error *error)
     }
 
 done:
+    if (w.noise / diag > L->noise_len) L->noise_len = w.noise / diag;
     free_work(&w);
     return st;
 }

@@ -173,7 +173,11 @@ typedef struct solver {
     bool main_thread;
     bool cancel;
     int64_t nodes;
-    double done_fraction;
+    int64_t node_cap;     // > 0: stop (as cancelled) past this many nodes
+    atomic_bool *stop;    // the pool's cancel flag (a worker stops with the main thread), or NULL
+    double done_fraction; // of the components finished before the current one
+    double comp_share;    // the current component's share of the whole
+    double pos_lo, pos_w; // the current node's interval of the component's search (0 … 1)
 } solver;
 
 static void solver_init(solver *s, const ori_layers *L, bool with_cache)
@@ -728,7 +732,10 @@ static void report(solver *s)
 {
     const ori_layers *L = s->L;
     if (!s->main_thread || !L->progress) return;
-    if (!L->progress(s->done_fraction, L->progress_user)) s->cancel = true;
+    // Within a component, the share of its search tree already left behind: each decision halves
+    // its node's interval, each sub-component takes an equal part of its branch's.
+    double f = s->done_fraction + s->comp_share * s->pos_lo;
+    if (!L->progress(f < 1.0 ? f : 1.0, L->progress_user)) s->cancel = true;
 }
 
 static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exact, int level, int skip);
@@ -797,6 +804,8 @@ static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exa
     ori__nat_set_u64(res, 0);
     *exact = true;
     if (++s->nodes % 4096 == 0) report(s);
+    if (s->node_cap > 0 && s->nodes > s->node_cap) s->cancel = true;
+    if (s->stop && (s->nodes & 63) == 0 && atomic_load(s->stop)) s->cancel = true;
     if (s->cancel) {
         *exact = false;
         return;
@@ -805,6 +814,7 @@ static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exa
     ori__nat prod, sub;
     ori__nat_init(&prod);
     ori__nat_init(&sub);
+    double lo = s->pos_lo, half = 0.5 * s->pos_w;
     for (int b = 0; b < 2 && !s->cancel; ++b) {
         int mark = s->ntrail;
         assign_class(s, x, b == 0 ? 1 : -1);
@@ -813,6 +823,8 @@ static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exa
             continue;
         }
         bool pex = true;
+        s->pos_lo = lo + b * half;
+        s->pos_w = half;
         if (skip > 0) {
             int *rest = ori__alloc(sizeof(int) * (size_t)n);
             int m = 0;
@@ -828,6 +840,8 @@ static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exa
             ori__nat_set_u64(&prod, 1);
             for (int j = 0; j < P.ncomp && !s->cancel; ++j) {
                 bool sex;
+                s->pos_lo = lo + b * half + j * half / P.ncomp;
+                s->pos_w = half / P.ncomp;
                 count_cached(s, P.out + P.starts[j], P.starts[j + 1] - P.starts[j], P.h[j], &sub, &sex, lv, (1 << lv) - 1);
                 if (ori__nat_is_zero(&sub)) {
                     ori__nat_set_u64(&prod, 0);
@@ -849,6 +863,8 @@ static void count_set(solver *s, const int *set, int n, ori__nat *res, bool *exa
         }
     }
     if (s->cancel) *exact = false;
+    s->pos_lo = lo;
+    s->pos_w = 2.0 * half;
     ori__nat_free(&prod);
     ori__nat_free(&sub);
 }
@@ -1141,6 +1157,10 @@ ori_status ori__layers_presolve(ori_layers *L, ori_error *error)
 
 // --- solve ----------------------------------------------------------------------------------
 
+// Nodes of the short search that gives the components not counted before a cancel their lower
+// bound (a first state each), all of them together.
+#define ORI__PARTIAL_NODES 20000
+
 typedef struct pool {
     ori_layers *L;
     atomic_int next;
@@ -1148,6 +1168,7 @@ typedef struct pool {
     atomic_bool limited;
     atomic_llong done_vars;
     int64_t total_vars;
+    uint8_t *done; // per component: 0 not counted, 1 exact, 2 a lower bound
 } pool;
 
 static void start_solver(solver *s, const ori_layers *L)
@@ -1159,13 +1180,18 @@ static void start_solver(solver *s, const ori_layers *L)
         if (s->val[v]) set_bits(s, v, s->val[v]);
 }
 
-static void count_component(solver *s, ori_layers *L, int j)
+// Count component j into L->comp_count[j]; done[j] becomes 1 when exact, 2 when a lower bound
+// (the limit, or a cancel).
+static void count_component(solver *s, ori_layers *L, int j, uint8_t *done)
 {
     const int *set = L->comp_classes.items + L->comp_classes.off[j];
     int n = (int)(L->comp_classes.off[j + 1] - L->comp_classes.off[j]);
     bool exact;
+    s->pos_lo = 0.0;
+    s->pos_w = 1.0;
     count_set(s, set, n, &L->comp_count[j], &exact, 0, 0);
-    if (!exact && !s->cancel) s->limited = true;
+    if (!exact) s->limited = true;
+    done[j] = exact ? 1 : 2;
 }
 
 static void *worker(void *arg)
@@ -1174,12 +1200,13 @@ static void *worker(void *arg)
     ori_layers *L = P->L;
     solver s;
     start_solver(&s, L);
+    s.stop = &P->cancel;
     for (;;) {
         if (atomic_load(&P->cancel)) break;
         // Largest components first (they are sorted by ascending size): better balance.
         int j = L->n_comp - atomic_fetch_add(&P->next, 1);
         if (j < 1) break;
-        count_component(&s, L, j);
+        count_component(&s, L, j, P->done);
         if (s.cancel) atomic_store(&P->cancel, true);
         atomic_fetch_add(&P->done_vars, L->comp_vars[j]);
     }
@@ -1201,6 +1228,8 @@ ori_status ori__layers_solve(ori_layers *L, ori_error *error)
     atomic_init(&P.done_vars, 0);
     P.total_vars = 0;
     for (int j = 1; j < L->n_comp; ++j) P.total_vars += L->comp_vars[j];
+    P.done = ori__calloc((size_t)(L->n_comp ? L->n_comp : 1), 1);
+    if (L->n_comp > 0) P.done[0] = 1;
     int extra = L->threads - 1;
     if (extra > L->n_comp - 2) extra = L->n_comp - 2;
     if (extra < 0) extra = 0;
@@ -1218,23 +1247,41 @@ ori_status ori__layers_solve(ori_layers *L, ori_error *error)
         int j = L->n_comp - atomic_fetch_add(&P.next, 1);
         if (j < 1) break;
         s.done_fraction = P.total_vars ? (double)atomic_load(&P.done_vars) / (double)P.total_vars : 0.0;
-        count_component(&s, L, j);
+        s.comp_share = P.total_vars ? (double)L->comp_vars[j] / (double)P.total_vars : 0.0;
+        count_component(&s, L, j, P.done);
         if (s.cancel) atomic_store(&P.cancel, true);
         atomic_fetch_add(&P.done_vars, L->comp_vars[j]);
         s.done_fraction = P.total_vars ? (double)atomic_load(&P.done_vars) / (double)P.total_vars : 1.0;
         report(&s);
         if (s.cancel) atomic_store(&P.cancel, true);
     }
-    if (s.limited) atomic_store(&P.limited, true);
-    solver_free(&s);
     for (int i = 0; i < started; ++i) pthread_join(tids[i], NULL);
     ori__free(tids);
-    if (atomic_load(&P.cancel)) return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
+    bool cancelled = atomic_load(&P.cancel);
+    if (cancelled) {
+        // A partial answer: the components not counted get a lower bound too, the first state
+        // a short search finds (1), else 0; nothing is then known to have no state.
+        // One budget of nodes for all of them, smallest first (the most lower bounds above 0).
+        s.main_thread = false;
+        s.limit = 1;
+        int64_t cap = s.nodes + ORI__PARTIAL_NODES;
+        for (int j = 1; j < L->n_comp && s.nodes < cap; ++j) {
+            if (P.done[j]) continue;
+            s.cancel = false;
+            s.node_cap = cap;
+            count_component(&s, L, j, P.done);
+            P.done[j] = 2;
+        }
+        s.limited = true;
+    }
+    if (s.limited) atomic_store(&P.limited, true);
+    solver_free(&s);
     L->limited = atomic_load(&P.limited);
+    L->stopped = cancelled;
     ori__nat_set_u64(&L->total, 1);
     for (int j = 0; j < L->n_comp; ++j) ori__nat_mul(&L->total, &L->comp_count[j]);
     for (int j = 1; j < L->n_comp; ++j)
-        if (ori__nat_is_zero(&L->comp_count[j])) {
+        if (ori__nat_is_zero(&L->comp_count[j]) && P.done[j] == 1) {
             L->unsat = true;
             L->conflict.constraint = ORI_LAYERS_EXHAUSTED;
             L->conflict.face_count = 0;
@@ -1264,7 +1311,10 @@ ori_status ori__layers_solve(ori_layers *L, ori_error *error)
                      j, L->comp_vars[j], L->n_conflict_faces);
             break;
         }
+    ori__free(P.done);
     L->counted = true;
+    // "cancelled", as every cancelled operation says (bindings map it); the counts so far stay.
+    if (cancelled) return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
     return ORI_OK;
 }
 
