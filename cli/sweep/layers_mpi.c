@@ -22,7 +22,7 @@
 #define PROG "orikin-layers-mpi"
 
 // Exit codes (as cli/cli.h).
-enum { EXIT_OK = 0, EXIT_NEGATIVE = 1, EXIT_USAGE = 2, EXIT_INPUT = 3 };
+enum { EXIT_OK = 0, EXIT_NEGATIVE = 1, EXIT_USAGE = 2, EXIT_INPUT = 3, EXIT_PARTIAL = 5 };
 
 enum { TAG_RESULT = 1, TAG_WORK };
 
@@ -204,7 +204,7 @@ static int print_result(const ori_layers *L, bool json, bool limit_given)
     if (!json) {
         printf("%s%s\n", states, info.limited ? " (at least: limited)" : "");
         ori_buffer_free(states);
-        return unsat ? EXIT_NEGATIVE : EXIT_OK;
+        return unsat ? EXIT_NEGATIVE : info.limited ? EXIT_PARTIAL : EXIT_OK;
     }
     int nconf = unsat ? ori_layers_conflict_faces(L, NULL, 0) : 0;
     int *conf_faces = malloc(sizeof(int) * (size_t)(nconf ? nconf : 1));
@@ -227,6 +227,12 @@ static int print_result(const ori_layers *L, bool json, bool limit_given)
     json_object_set_new(cons, "tortilla_tortilla", json_integer(info.tortilla_tortilla));
     json_object_set_new(cons, "transitivity", json_integer(info.transitivity));
     json_object_set_new(o, "constraints", cons);
+    json_object_set_new(o, "tolerance", json_real(info.tolerance));
+    json_object_set_new(o, "tolerance_source", json_string(info.tolerance_from_drawing ? "drawing" : "option"));
+    json_t *noise = json_object();
+    json_object_set_new(noise, "length", json_real(info.noise_length));
+    json_object_set_new(noise, "angle", json_real(info.noise_angle));
+    json_object_set_new(o, "drawing_noise", noise);
     if (unsat) {
         json_t *u = json_object();
         json_object_set_new(u, "constraint", json_string(ori_layers_constraint_name(conf.constraint)));
@@ -245,13 +251,16 @@ static int print_result(const ori_layers *L, bool json, bool limit_given)
     } else
         json_object_set_new(o, "unsatisfiable", json_null());
     if (limit_given) json_object_set_new(o, "limited", json_boolean(info.limited));
-    char *text = json_dumps(o, JSON_COMPACT | JSON_PRESERVE_ORDER);
-    printf("%s\n", text ? text : "null");
-    free(text);
+    // numbers in their shortest exact form, as every orikin --json prints them
+    char *raw = json_dumps(o, JSON_COMPACT | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(17));
+    char *text = raw ? ori_json_normalize(raw, false, NULL) : NULL;
+    fputs(text ? text : "null\n", stdout); // (normalised text ends with its newline)
+    free(raw);
+    ori_buffer_free(text);
     json_decref(o);
     free(conf_faces);
     ori_buffer_free(states);
-    return unsat ? EXIT_NEGATIVE : EXIT_OK;
+    return unsat ? EXIT_NEGATIVE : info.limited ? EXIT_PARTIAL : EXIT_OK;
 }
 
 static const char *HELP =
@@ -283,7 +292,7 @@ static int setup(int argc, char **argv, bool talk, ori_layers **out, bool *json,
 {
     const char *path = NULL;
     uint64_t limit = ORI_LAYERS_NO_LIMIT;
-    double tol = ORI_TOL_LAYERS_SNAP_REL;
+    double tol = ORI_LAYERS_SNAP_AUTO; // from the drawing, as orikin layers
     int frame = 0;
     *json = *limit_given = *help = *timing = false;
     for (int i = 1; i < argc; ++i) {
