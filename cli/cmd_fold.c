@@ -239,7 +239,7 @@ const cli_command cli_cmd_fold = {
     "\n"
     "options:\n"
     "  --fix FACE      face held fixed: FOLD index, name (Obj12) or @x,y (the face there);\n"
-    "                  default: the face at the centre of the sheet's bounding box (named)\n"
+    "                  default: the face at the centroid of the sheet's area (named)\n"
     "  --drive EDGE    driven crease: FOLD index or @x,y (the crease through the point)\n"
     "  --to DEG        final angle of the driven crease, -180 to 180\n"
     "  --from DEG      output from this angle (reached first, silently); default: current\n"

@@ -47,8 +47,8 @@ int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const
                   int *face);
 int cli_spec_edge(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
                   int *edge);
-// The face held fixed when a fold gives no --fix: the face containing the centre of the flat
-// sheet's bounding box, else the face whose vertex centroid is nearest to it.
+// The face held fixed when a fold gives no --fix: ori_pattern_center_face (the face containing
+// the centroid of the sheet's area, else the face nearest to it).
 int cli_fold_default_fix(const ori_pattern *p);
 // What the text output appends after "face N fixed" when N is that default.
 #define CLI_FOLD_DEFAULT_FIX_NOTE " (the face at the sheet's centre; --fix to choose)"

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <orikin/arrangement.h>
+
 #include "kinematics/kinematics_internal.h"
 #include "support.h"
 
@@ -1141,5 +1143,61 @@ Test(kinematics, miura_past_the_escape_is_valid_for_every_output_step)
     }
     free(ref);
     ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// --- the default fixed face ------------------------------------------------------------------
+
+// A net of squares from unit cells (x, y): every cell edge, boundary where only one cell has it,
+// else a valley crease.
+static ori_pattern *net_of_cells(const int (*cells)[2], int n)
+{
+    ori_segment segs[64];
+    int ns = 0;
+    for (int i = 0; i < n; ++i) {
+        int x = cells[i][0], y = cells[i][1];
+        int ends[4][4] = {{x, y, x + 1, y}, {x + 1, y, x + 1, y + 1}, {x, y + 1, x + 1, y + 1}, {x, y, x, y + 1}};
+        int nb[4][2] = {{x, y - 1}, {x + 1, y}, {x, y + 1}, {x - 1, y}};
+        for (int k = 0; k < 4; ++k) {
+            int shared = -1;
+            for (int j = 0; j < n; ++j)
+                if (cells[j][0] == nb[k][0] && cells[j][1] == nb[k][1]) shared = j;
+            if (shared >= 0 && shared < i) continue; // inserted with the other cell
+            segs[ns++] = (ori_segment){ori_v2_make(ends[k][0], ends[k][1]), ori_v2_make(ends[k][2], ends[k][3]),
+                                       shared >= 0 ? ORI_ASSIGN_VALLEY : ORI_ASSIGN_BOUNDARY, 0.0};
+        }
+    }
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_pattern_from_segments(segs, ns, NULL, &p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+Test(kinematics, the_default_fixed_face_of_a_cross_net_is_its_middle_square)
+{
+    // The cube's cross: a column of four squares, arms left and right of the second from the top.
+    // Its bounding box [-1, 2] x [0, 4] has its centre (0.5, 2) on the crease between two squares
+    // of the column; the area centroid (0.5, 13/6) lies inside the square with the arms.
+    const int cross[6][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {-1, 2}, {1, 2}};
+    ori_pattern *p = net_of_cells(cross, 6);
+    cr_assert_eq(ori_pattern_face_count(p), 6);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 0.5, 2.5));
+    ori_pattern_destroy(p);
+    // Upside down (arms below the middle): the middle square again, not the column's neighbour.
+    const int down[6][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {-1, 1}, {1, 1}};
+    p = net_of_cells(down, 6);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 0.5, 1.5));
+    ori_pattern_destroy(p);
+    // An L (three squares): the centroid (5/6, 5/6) lies in the corner square.
+    const int ell[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    p = net_of_cells(ell, 3);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 0.5, 0.5));
+    ori_pattern_destroy(p);
+    // A U of seven squares: the centroid (1.5, 19/14) lies in the notch, outside the sheet, 5/14
+    // from the bottom middle square and 1/2 from the arms: the bottom middle square is chosen.
+    const int u[7][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 1}, {2, 1}, {0, 2}, {2, 2}};
+    p = net_of_cells(u, 7);
+    cr_assert_eq(ori_pattern_face_count(p), 7);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 1.5, 0.5));
     ori_pattern_destroy(p);
 }
