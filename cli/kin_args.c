@@ -5,6 +5,7 @@
 #include <orikin/tolerance.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -68,6 +69,23 @@ int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_i
                                          "to get its crease pattern (the folded state is kept as frame 1), then fold cp.fold");
     }
     ori_error err;
+    // Kirigami: the cuts are boundaries inside the sheet, their two sides move apart; each side
+    // gets its own vertices (ori_pattern_open_cuts), so that every folded state has one position
+    // per vertex. Frame 0 (and so every -o frame) is the opened pattern.
+    ori_pattern *opened = NULL;
+    int added = 0;
+    if (ori_pattern_open_cuts(k->flat, &opened, &added, &err) != ORI_OK) {
+        cli_kin_free(k);
+        return cli_input_error(cmd, path, &err);
+    }
+    if (added > 0) {
+        ori_pattern_destroy(k->flat);
+        k->flat = opened;
+        fprintf(stderr, "orikin %s: %s: note: the cuts are opened (%d vertices added, one per side of a cut; indices "
+                        "before them kept)\n", cmd, path, added);
+    } else {
+        ori_pattern_destroy(opened);
+    }
     // Frame 0 as loaded, with the faces the mechanism uses (traced when the file had none), so
     // that folded frames written later inherit faces_vertices and stay readable.
     if (ori_fold_set_pattern(k->doc, 0, k->flat, &err) != ORI_OK) {

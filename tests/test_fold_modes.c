@@ -7,6 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <orikin/arrangement.h>
+#include <orikin/formats.h>
+
 #include "kinematics/multifold_internal.h"
 #include "support.h"
 
@@ -886,5 +889,142 @@ Test(fold_modes, the_output_step_does_not_change_the_path_or_the_verdict, .init 
     }
     ori_multifold_destroy(ref);
     ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// --- kirigami: cuts are boundaries inside the sheet ------------------------------------------
+
+// The largest change of a distance between two vertices of one face from the flat sheet to the
+// positions: 0 for a rigid placement of every face.
+static double worst_face_distortion(const ori_pattern *p, const ori_v3 *x)
+{
+    double worst = 0.0;
+    int vs[64];
+    for (int f = 0; f < ori_pattern_face_count(p); ++f) {
+        int n = ori_pattern_face_vertices(p, f, vs, 64);
+        for (int i = 0; i < n; ++i)
+            for (int j = i + 1; j < n; ++j) {
+                ori_v3 a = ori_pattern_vertex(p, vs[i]), b = ori_pattern_vertex(p, vs[j]);
+                double flat = ori_v3_norm(ori_v3_sub(a, b)), now = ori_v3_norm(ori_v3_sub(x[vs[i]], x[vs[j]]));
+                worst = fmax(worst, fabs(flat - now));
+            }
+    }
+    return worst;
+}
+
+// A 4 × 4 square with a flap: cut along three sides of the inner square [1, 3]², hinged by a
+// valley (target 90°) along x = 1; flat creases continue the hinge to the border, so the flap
+// is the only moving part. The cut's corners (3, 1) and (3, 3) belong to the flap and to the
+// frame around it, which part once the flap lifts.
+static ori_pattern *flap_sheet(void)
+{
+    ori_segment s[] = {
+        {{0, 0}, {4, 0}, ORI_ASSIGN_BOUNDARY, 0}, {{4, 0}, {4, 4}, ORI_ASSIGN_BOUNDARY, 0},
+        {{4, 4}, {0, 4}, ORI_ASSIGN_BOUNDARY, 0}, {{0, 4}, {0, 0}, ORI_ASSIGN_BOUNDARY, 0},
+        {{1, 1}, {3, 1}, ORI_ASSIGN_CUT, 0},      {{3, 1}, {3, 3}, ORI_ASSIGN_CUT, 0},
+        {{3, 3}, {1, 3}, ORI_ASSIGN_CUT, 0},      {{1, 1}, {1, 3}, ORI_ASSIGN_VALLEY, ORI_PI / 2},
+        {{1, 0}, {1, 1}, ORI_ASSIGN_FLAT, 0},     {{1, 3}, {1, 4}, ORI_ASSIGN_FLAT, 0},
+    };
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_pattern_from_segments(s, (int)(sizeof s / sizeof s[0]), NULL, &p, NULL, &err), ORI_OK, "%s",
+                 err.message);
+    return p;
+}
+
+Test(fold_modes, a_kirigami_flap_folds_with_its_cut_opened_and_every_face_rigid)
+{
+    ori_pattern *p = flap_sheet();
+    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p);
+    ori_pattern *q = NULL;
+    int added = -1;
+    ori_error err;
+    cr_assert_eq(ori_pattern_open_cuts(p, &q, &added, &err), ORI_OK, "%s", err.message);
+    // The two corners of the cut get a copy each; the three cut edges a second side each (the
+    // cut's ends (1, 1) and (1, 3) stay shared: the flap turns about them).
+    cr_assert_eq(added, 2);
+    cr_assert_eq(ori_pattern_vertex_count(q), V + 2);
+    cr_assert_eq(ori_pattern_edge_count(q), E + 3);
+    cr_assert_eq(ori_pattern_face_count(q), ori_pattern_face_count(p));
+    for (int e = 0; e < E; ++e) cr_assert_eq(ori_pattern_edge(q, e).assignment, ori_pattern_edge(p, e).assignment);
+    int frame = test_face_at(q, 0.5, 2.0), flap = test_face_at(q, 2.0, 2.0);
+    for (int pass = 0; pass < 2; ++pass) {
+        const ori_pattern *s = pass == 0 ? q : p; // opened, then as drawn (the defect)
+        ori_mechanism *m = test_mechanism_of(s);
+        ori_target_fold_def d = ori_default_target_fold_def();
+        d.fixed_face = frame;
+        ori_multifold *mf = NULL;
+        cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+        int nv = ori_pattern_vertex_count(s);
+        ori_v3 *x = malloc(sizeof(ori_v3) * (size_t)nv);
+        ori_multifold_frame_vertices(mf, ori_multifold_frame_count(mf) - 1, x);
+        double distortion = worst_face_distortion(s, x);
+        if (pass == 0) {
+            cr_assert_leq(distortion, 1e-9);
+            // The flap stands up at 90° about x = 1: its corners at x = 1, height 2; the frame's
+            // corners of the cut stay where they were.
+            int fv[8], n = ori_pattern_face_vertices(q, flap, fv, 8), up = 0;
+            for (int i = 0; i < n; ++i) {
+                ori_v3 a = ori_pattern_vertex(q, fv[i]);
+                if (a.x != 3.0) continue;
+                cr_assert_float_eq(x[fv[i]].x, 1.0, 1e-9);
+                cr_assert_float_eq(fabs(x[fv[i]].z), 2.0, 1e-9);
+                up++;
+            }
+            cr_assert_eq(up, 2);
+            for (int v = 0; v < nv; ++v) {
+                ori_v3 a = ori_pattern_vertex(q, v);
+                bool on_flap = false;
+                for (int i = 0; i < n; ++i) on_flap |= fv[i] == v;
+                if (!on_flap) cr_assert_float_eq(ori_v3_norm(ori_v3_sub(x[v], a)), 0.0, 1e-9, "vertex %d moved", v);
+            }
+        } else {
+            // As drawn, a corner of the cut has one position for both sides: some face is bent.
+            cr_assert_gt(distortion, 1.0);
+        }
+        free(x);
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+    }
+    ori_pattern_destroy(q);
+    // Nothing cut: a plain copy, nothing added.
+    ori_pattern *w = test_load_pattern(test_repo_path("tests/data/waterbomb-base.fold"), 0);
+    cr_assert_eq(ori_pattern_open_cuts(w, &q, &added, &err), ORI_OK);
+    cr_assert_eq(added, 0);
+    cr_assert_eq(ori_pattern_vertex_count(q), ori_pattern_vertex_count(w));
+    cr_assert_eq(ori_pattern_edge_count(q), ori_pattern_edge_count(w));
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(w);
+    ori_pattern_destroy(p);
+}
+
+Test(fold_modes, origami_simulators_honeycomb_kirigami_folds_to_its_targets)
+{
+    const char *path = test_require_shared("origamisimulator/Kirigami_honeycombKiri.svg");
+    ori_pattern *p = NULL;
+    ori_error err;
+    char msg[512];
+    cr_assert_eq(ori_import_file(path, ORI_FORMAT_SVG, NULL, &p, NULL, &err), ORI_OK, "%s",
+                 ori_error_format(&err, msg, sizeof msg));
+    ori_pattern *q = NULL;
+    int added = 0;
+    cr_assert_eq(ori_pattern_open_cuts(p, &q, &added, &err), ORI_OK, "%s", err.message);
+    cr_assert_gt(added, 0);
+    ori_mechanism *m = test_mechanism_of(q);
+    ori_target_fold_def d = ori_default_target_fold_def();
+    d.fixed_face = ori_pattern_center_face(q);
+    ori_multifold *mf = NULL;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "%s", ori_multifold_reason(mf));
+    ori_v3 *x = malloc(sizeof(ori_v3) * (size_t)ori_pattern_vertex_count(q));
+    for (int k = 0; k < ori_multifold_frame_count(mf); k += 7) {
+        ori_multifold_frame_vertices(mf, k, x);
+        cr_assert_leq(worst_face_distortion(q, x), 1e-6 * ori_pattern_diagonal(q), "frame %d", k);
+    }
+    free(x);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(q);
     ori_pattern_destroy(p);
 }

@@ -101,6 +101,15 @@ ORI_API ori_status ori_mechanism_create(const ori_mechanism_def *def, ori_mechan
 /// Destroy a mechanism; NULL is a no-op.
 ORI_API void ori_mechanism_destroy(ori_mechanism *mechanism);
 
+/// Kirigami: a copy (*out, destroy with ori_pattern_destroy) of a built flat pattern with its
+/// cuts opened — a vertex where cuts (C, or B between two faces) divide the paper around it into
+/// several fans gets one vertex per fan (the first keeps its index, the copies follow the old
+/// vertices), and a cut whose two sides then differ gets a second edge for its right side (after
+/// the old edges; old indices and face indices are kept). A folded state then has one position
+/// per vertex on either side of a cut. *opened (may be NULL) = the vertices added; 0 and a plain
+/// copy when nothing is cut. Fails with ORI_ERR_ARGUMENT for a pattern that is not built.
+ORI_API ori_status ori_pattern_open_cuts(const ori_pattern *flat, ori_pattern **out, int *opened, ori_error *error);
+
 /// Number of vertices and edges (those of the pattern).
 ORI_API int ori_mechanism_vertex_count(const ori_mechanism *mechanism);
 ORI_API int ori_mechanism_edge_count(const ori_mechanism *mechanism);
