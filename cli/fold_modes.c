@@ -445,7 +445,7 @@ static void print_text(const modes_run *r)
     if (r->hint[0]) printf("hint: %s\n", r->hint);
     against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
     int na = against_assignment(r, ag);
-    if (na) {
+    if (na && v != ORI_MULTIFOLD_INVALID_ASSIGNMENT) { // else the verdict names them
         printf("note: %d crease%s fold%s against %s assignment:", na, na == 1 ? "" : "s", na == 1 ? "s" : "",
                na == 1 ? "its" : "their");
         for (int i = 0; i < na && i < 8; ++i)

@@ -396,7 +396,7 @@ static int load_modes(const char *cmd, const cli_state_args *a, cli_state *s)
     const ori_multifold *mf = cli_fold_modes_result(s->modes);
     int nf = ori_multifold_frame_count(mf);
     ori_multifold_verdict v = ori_multifold_verdict_of(mf);
-    if (v != ORI_MULTIFOLD_REACHED && nf < 2) {
+    if ((v != ORI_MULTIFOLD_REACHED && nf < 2) || v == ORI_MULTIFOLD_INVALID_ASSIGNMENT) {
         fprintf(stderr, "orikin %s: %s: the fold is %s: %s\n", cmd, a->path, ori_multifold_verdict_name(v),
                 ori_multifold_reason(mf));
         return CLI_EXIT_NEGATIVE;

@@ -460,6 +460,9 @@ typedef enum ori_multifold_verdict {
     ORI_MULTIFOLD_SINGULAR,         ///< the corrector fails at every step size: a singular configuration (or no motion at all)
     ORI_MULTIFOLD_UNDERDETERMINED,  ///< drives: the free creases keep freedom the drives do not fix (lock or drive more)
     ORI_MULTIFOLD_OVERDETERMINED,   ///< drives: the drives cannot move together as prescribed (no rigid motion does it)
+    ORI_MULTIFOLD_INVALID_ASSIGNMENT, ///< the motion folds creases against their M/V assignment (beyond ORI_TOL_FOLD_SIGN_RAD,
+                                      ///< further than at the start): an invalid fold, as for a single drive; the creases are
+                                      ///< named (ori_multifold_offending), the frames kept
 } ori_multifold_verdict;
 
 /// Opaque result of ori_target_fold_solve or ori_drives_fold_solve: frames of fold angles on the
@@ -537,6 +540,11 @@ ORI_API ori_status ori_drives_fold_solve(const ori_mechanism *mechanism, const o
 
 /// Destroy a result; NULL is a no-op.
 ORI_API void ori_multifold_destroy(ori_multifold *fold);
+/// Creases the motion folds against their M/V assignment (verdict INVALID_ASSIGNMENT): their
+/// number; entry i (in edge order) gives the crease, its worst angle with the wrong sign
+/// (radians) and the frame progress where it is reached (any pointer may be NULL).
+ORI_API int ori_multifold_offending_count(const ori_multifold *fold);
+ORI_API void ori_multifold_offending(const ori_multifold *fold, int i, int *edge, double *angle_rad, double *progress);
 /// The verdict.
 ORI_API ori_multifold_verdict ori_multifold_verdict_of(const ori_multifold *fold);
 /// Short name of a verdict ("reached", "stationary", "limit", "singular", "underdetermined", "overdetermined").

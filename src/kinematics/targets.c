@@ -330,7 +330,100 @@ void ori_multifold_destroy(ori_multifold *mo)
     ori__free(mo->progress);
     ori__free(mo->goal);
     ori__free(mo->vertices);
+    ori__free(mo->off_edge);
+    ori__free(mo->off_angle);
+    ori__free(mo->off_progress);
     ori__free(mo);
+}
+
+int ori_multifold_offending_count(const ori_multifold *mo)
+{
+    ORI_ASSERT(mo);
+    return mo->noff;
+}
+
+void ori_multifold_offending(const ori_multifold *mo, int i, int *edge, double *angle_rad, double *progress)
+{
+    ORI_ASSERT(mo && i >= 0 && i < mo->noff);
+    if (edge) *edge = mo->off_edge[i];
+    if (angle_rad) *angle_rad = mo->off_angle[i];
+    if (progress) *progress = mo->off_progress[i];
+}
+
+// How many offending creases a reason names (the worst first).
+#define MF_OFFENDING_NAMED 5
+
+void ori__mf_check_assignment(ori_multifold *mo)
+{
+    const ori_mechanism *m = mo->m;
+    int E = mo->edge_count, F = mo->nframes;
+    mo->motion_verdict = mo->verdict;
+    // Drives that cannot move (as prescribed, or alone) say so: their frames are no motion.
+    if (F < 2 || mo->verdict == ORI_MULTIFOLD_UNDERDETERMINED || mo->verdict == ORI_MULTIFOLD_OVERDETERMINED) return;
+    const double *a0 = ori_multifold_frame_angles(mo, 0);
+    ori__free(mo->off_edge);
+    ori__free(mo->off_angle);
+    ori__free(mo->off_progress);
+    mo->off_edge = ori__alloc(sizeof(int) * (size_t)(E + 1));
+    mo->off_angle = ori__alloc(sizeof(double) * (size_t)(E + 1));
+    mo->off_progress = ori__alloc(sizeof(double) * (size_t)(E + 1));
+    mo->noff = 0;
+    double worst_all = 0.0;
+    for (int e = 0; e < E; ++e) {
+        int j = m->edge_joint[e];
+        if (j == ORI_NULL_INDEX || m->joints[j].kind != ORI_JOINT_REVOLUTE) continue;
+        ori_assignment as = m->edges[e].assignment;
+        int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+        if (!sg) continue;
+        // A start already against the assignment (a frame read from a file) counts only beyond it.
+        double allowed = ORI_TOL_FOLD_SIGN_RAD + (a0[e] * sg < 0.0 ? fabs(a0[e]) : 0.0);
+        double worst = 0.0, at = 0.0;
+        for (int k = 1; k < F; ++k) {
+            double x = ori_multifold_frame_angles(mo, k)[e];
+            if (x * sg < 0.0 && fabs(x) > allowed && fabs(x) > fabs(worst)) {
+                worst = x;
+                at = mo->progress[k];
+            }
+        }
+        if (worst == 0.0) continue;
+        mo->off_edge[mo->noff] = e;
+        mo->off_angle[mo->noff] = worst;
+        mo->off_progress[mo->noff++] = at;
+        worst_all = fmax(worst_all, fabs(worst));
+    }
+    if (mo->noff == 0) return;
+    // The reason: the count, the worst creases, and where the motion itself ended.
+    int order[MF_OFFENDING_NAMED], named = 0;
+    for (int i = 0; i < mo->noff; ++i) {
+        int pos = named < MF_OFFENDING_NAMED ? named++ : MF_OFFENDING_NAMED;
+        if (pos == MF_OFFENDING_NAMED) {
+            if (fabs(mo->off_angle[i]) <= fabs(mo->off_angle[order[named - 1]])) continue;
+            pos = named - 1;
+        }
+        while (pos > 0 && fabs(mo->off_angle[order[pos - 1]]) < fabs(mo->off_angle[i])) {
+            order[pos] = order[pos - 1];
+            pos--;
+        }
+        order[pos] = i;
+    }
+    char before[1024];
+    snprintf(before, sizeof before, "%s", mo->reason);
+    ori_multifold_verdict was = mo->verdict;
+    size_t w = (size_t)snprintf(mo->reason, sizeof mo->reason, "%d crease%s against %s assignment (up to %.6g°):", mo->noff,
+                                mo->noff == 1 ? " folds" : "s fold", mo->noff == 1 ? "its" : "their",
+                                ori_rad_to_deg(worst_all));
+    for (int k = 0; k < named && w < sizeof mo->reason; ++k) {
+        int i = order[k], e = mo->off_edge[i];
+        w += (size_t)snprintf(mo->reason + w, sizeof mo->reason - w, "%s crease %d (assigned %s) folds to %.10g° at %.4g %% of the way",
+                              k ? ";" : "", e, m->edges[e].assignment == ORI_ASSIGN_VALLEY ? "valley" : "mountain",
+                              ori_rad_to_deg(mo->off_angle[i]), 100.0 * mo->off_progress[i]);
+    }
+    if (mo->noff > named && w < sizeof mo->reason)
+        w += (size_t)snprintf(mo->reason + w, sizeof mo->reason - w, "; and %d more", mo->noff - named);
+    if (w < sizeof mo->reason)
+        snprintf(mo->reason + w, sizeof mo->reason - w, " (the motion itself: %s, %.400s)", ori_multifold_verdict_name(was),
+                 before);
+    mo->verdict = ORI_MULTIFOLD_INVALID_ASSIGNMENT;
 }
 
 ori_multifold_verdict ori_multifold_verdict_of(const ori_multifold *mo)
@@ -348,6 +441,7 @@ const char *ori_multifold_verdict_name(ori_multifold_verdict v)
     case ORI_MULTIFOLD_SINGULAR: return "singular";
     case ORI_MULTIFOLD_UNDERDETERMINED: return "underdetermined";
     case ORI_MULTIFOLD_OVERDETERMINED: return "overdetermined";
+    case ORI_MULTIFOLD_INVALID_ASSIGNMENT: return "invalid assignment";
     }
     return "unknown";
 }
@@ -900,6 +994,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     ori__free(trial);
     ori__free(pred);
     ori__free(mid);
+    if (!cancelled) ori__mf_check_assignment(mo);
     if (!cancelled && def->progress) cancelled = !def->progress(1.0, def->progress_user);
     if (cancelled) {
         ori_multifold_destroy(mo);

@@ -468,7 +468,8 @@ static ori_status ori__sequence_target_fold(ori_record *r, int i, const ori_sequ
         return ori__fail_at(error, st, "folds", i, "%s", msg);
     }
     if (ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED) {
-        r->verdict = ORI_MOTION_BLOCKED;
+        r->verdict = ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_INVALID_ASSIGNMENT ? ORI_MOTION_INVALID_ASSIGNMENT
+                                                                                      : ORI_MOTION_BLOCKED;
         r->failed = i;
         r->reason = ori__strdup(ori_multifold_reason(mf));
         ori_multifold_destroy(mf);
