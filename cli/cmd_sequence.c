@@ -62,12 +62,14 @@ static void print_record_text(const char *pattern, const ori_sequence *s, const 
     for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
         ori_sequence_fold f = ori_sequence_fold_at(s, i);
         if (f.targets) // a fold toward the targets (fold_modes)
-            printf("  fold %d%s%s%s: fix face %d, every crease %g %% toward its target (step %g)", i + 1,
-                   f.name[0] ? " (" : "", f.name, f.name[0] ? ")" : "", f.fixed_face, 100.0 * f.fraction,
+            printf("  fold %d%s%s%s: fix face %d%s, %g %% of the way toward the targets (step %g)", i + 1,
+                   f.name[0] ? " (" : "", f.name, f.name[0] ? ")" : "", f.fixed_face,
+                   f.fix_default ? " (the face at the sheet's centre)" : "", 100.0 * f.fraction,
                    ori_rad_to_deg_output(f.step_rad));
         else
-        printf("  fold %d%s%s%s: fix face %d, drive crease %d to %g deg (step %g)", i + 1, f.name[0] ? " (" : "", f.name,
-               f.name[0] ? ")" : "", f.fixed_face, f.driven_edge, ori_rad_to_deg_output(f.to_rad), ori_rad_to_deg_output(f.step_rad));
+        printf("  fold %d%s%s%s: fix face %d%s, drive crease %d to %g deg (step %g)", i + 1, f.name[0] ? " (" : "", f.name,
+               f.name[0] ? ")" : "", f.fixed_face, f.fix_default ? " (the face at the sheet's centre)" : "", f.driven_edge,
+               ori_rad_to_deg_output(f.to_rad), ori_rad_to_deg_output(f.step_rad));
         if (f.locked_count) {
             printf(", lock");
             for (int k = 0; k < f.locked_count; ++k) printf("%s%d", k ? "," : " ", f.locked[k]);

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <orikin/arrangement.h>
+#include <orikin/generate.h>
 #include <orikin/sequence.h>
 
 #include "support.h"
@@ -385,4 +387,81 @@ Test(sequence, cli_writes_every_state_and_restores_an_instant)
     snprintf(args, sizeof args, "%s/never.fold", dir);
     cr_assert_null(fopen(args, "r"), "nothing written on bad input");
     test_tmpdir_remove(dir);
+}
+
+// --- a fold toward the targets: one engine for fold --percent and a sequence step -------------------
+
+// P % is P % of the way along the motion toward the 100 % targets (the progress 1 − D/D₀): a
+// 10 × 10 Miura-ori at 70 % and a 4 × 4 waterbomb at 60 % get there (every crease at P % of its
+// target is no rigid state of them: that stopped "stationary"), the progress grows monotonically
+// to exactly P, and a sequence step {"percent": P} without "fix" holds the same face (the sheet's
+// centroid) and records the very same states as orikin fold --percent (ori_target_fold_solve).
+Test(sequence, a_percent_step_is_the_fold_percent_motion_part_of_the_way_along_it)
+{
+    struct {
+        ori_tessellation kind;
+        int n;
+        double percent;
+    } cases[] = {{ORI_TESS_MIURA, 10, 70.0}, {ORI_TESS_WATERBOMB, 4, 60.0}};
+    for (int c = 0; c < 2; ++c) {
+        ori_generate_def g = ori_default_generate_def(cases[c].kind);
+        g.rows = g.cols = cases[c].n;
+        ori_pattern *p = NULL;
+        ori_error err;
+        cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
+        ori_mechanism *m = test_mechanism_of(p);
+        int E = ori_mechanism_edge_count(m);
+        ori_target_fold_def d = ori_default_target_fold_def();
+        d.fixed_face = ori_pattern_center_face(p);
+        d.fraction = cases[c].percent / 100.0;
+        ori_multifold *mf = NULL;
+        cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "case %d: %s", c, ori_multifold_reason(mf));
+        int nf = ori_multifold_frame_count(mf);
+        cr_assert_gt(nf, 3);
+        cr_assert_eq(ori_multifold_frame_progress(mf, 0), 0.0);
+        cr_assert_float_eq(ori_multifold_frame_progress(mf, nf - 1), d.fraction, 1e-12);
+        for (int k = 1; k < nf; ++k) {
+            cr_assert_geq(ori_multifold_frame_progress(mf, k), ori_multifold_frame_progress(mf, k - 1), "case %d frame %d", c, k);
+            cr_assert_leq(ori_multifold_frame_residual(mf, k), ORI_TOL_RESIDUAL);
+        }
+        // The measure itself: 1 − |θ − θ_target| / |θ₀ − θ_target| over the creases.
+        double *target = malloc(sizeof(double) * (size_t)E);
+        ori_target_angles_default(p, target);
+        double d0 = 0.0, d1 = 0.0;
+        const double *a0 = ori_multifold_frame_angles(mf, 0), *a1 = ori_multifold_frame_angles(mf, nf - 1);
+        for (int e = 0; e < E; ++e) {
+            int j = ori_mechanism_edge_joint(m, e);
+            if (j == ORI_NULL_INDEX || ori_mechanism_joint(m, j).kind != ORI_JOINT_REVOLUTE) continue;
+            d0 += (a0[e] - target[e]) * (a0[e] - target[e]);
+            d1 += (a1[e] - target[e]) * (a1[e] - target[e]);
+        }
+        cr_assert_float_eq(1.0 - sqrt(d1) / sqrt(d0), d.fraction, 1e-12);
+        free(target);
+
+        char json[256];
+        snprintf(json, sizeof json, "{\"pattern\": \"p.fold\", \"folds\": [{\"percent\": %g}]}", cases[c].percent);
+        ori_sequence *s = parse_ok(json);
+        cr_assert(ori_sequence_fold_at(s, 0).fix_default);
+        ori_record *r = NULL;
+        cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_ERR_ARGUMENT); // fix unresolved
+        cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_sequence_fold_at(s, 0).fixed_face, d.fixed_face);
+        cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
+        cr_assert_eq(ori_record_frame_count(r), nf);
+        for (int k = 0; k < nf; ++k) {
+            const double *x = ori_record_frame_angles(r, k), *y = ori_multifold_frame_angles(mf, k);
+            for (int e = 0; e < E; ++e) cr_assert_float_eq(x[e], y[e], 1e-12, "case %d frame %d crease %d", c, k, e);
+            cr_assert_float_eq(ori_record_frame_drive(r, k), ori_multifold_frame_progress(mf, k), 1e-15);
+            // t = progress / fraction: the fold's own 0 … 1, its end at t = 1.
+            cr_assert_float_eq(ori_record_frame_time(r, k), ori_multifold_frame_progress(mf, k) / d.fraction, 1e-12);
+        }
+        cr_assert_float_eq(ori_record_duration(r), 1.0, 0.0);
+        ori_record_destroy(r);
+        ori_sequence_destroy(s);
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
 }

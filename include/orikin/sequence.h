@@ -40,13 +40,15 @@ typedef struct ori_sequence_fold {
     int locked_count;
     int locked[ORI_SEQUENCE_MAX_LOCKS]; ///< creases held at their current angle
     bool targets;                      ///< a fold toward the targets ("percent"; ori_target_fold_solve): driven_edge is ORI_NULL_INDEX, from/to unused
-    double fraction;                   ///< targets: how far toward them, 0 … 1
+    double fraction;                   ///< targets: how far along the motion toward them, 0 … 1 (the progress 1 − D/D₀ where it stops)
+    bool fix_default;                  ///< no "fix" given: ori_sequence_resolve holds ori_pattern_center_face (the face at the sheet's centroid)
 } ori_sequence_fold;
 
 /// Opaque fold sequence (as read from a SEQ.json file).
 typedef struct ori_sequence ori_sequence;
 
-/// Parse a sequence: {"pattern": "FILE.fold", "frame": N (optional), "folds": [{"fix": F,
+/// Parse a sequence: {"pattern": "FILE.fold", "frame": N (optional), "folds": [{"fix": F (optional:
+/// the face at the sheet's centroid, set by ori_sequence_resolve, as orikin fold without --fix),
 /// (F a face index, name or "@x,y"; E and the lock items an edge index or "@x,y": names and
 /// points are kept until ori_sequence_resolve, fixed_face / driven_edge / locked[k] ORI_NULL_INDEX)
 /// "drive": E, "to": DEG, "step": DEG (default 10), "from": DEG (optional), "lock": [E…]

@@ -12,6 +12,12 @@
 
 #include "kinematics_internal.h"
 
+// A fold toward the targets that stops part of the way (fraction < 1) locates the stop on the
+// step that crosses it: the progress 1 − D/D₀ there equals the fraction within this (relative to
+// D₀), by at most this many bisections of the step.
+#define ORI_TOL_MULTIFOLD_PROGRESS 1e-13
+#define ORI_MULTIFOLD_STOP_BISECTIONS 80
+
 typedef struct mf_system {
     const ori_mechanism *m;
     const int *var_of_joint; // joint_count entries: variable ≥ 0, or < 0 (fixed)

@@ -719,7 +719,9 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     for (int j = 0; j < J; ++j) {
         goal[j] = th[j];
         if (joint_var[j] < 0) continue;
-        goal[j] = th[j] + def->fraction * (target[m->joints[j].edge] - th[j]);
+        // The goal is the targets themselves (the 100 % state); def->fraction says how far along
+        // the motion toward it the fold stops (progress 1 − D/D₀, below).
+        goal[j] = target[m->joints[j].edge];
         gvar[joint_var[j]] += goal[j];
         nj[joint_var[j]]++;
     }
@@ -744,7 +746,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double h = hmax, since = 0.0;
     enum { WHY_NONE, WHY_NEWTON, WHY_LIMIT, WHY_FARTHER } why = WHY_NONE;
     int why_joint = -1;
-    bool recorded = true, done = false;
+    bool recorded = true, done = false, finished = false;
     double last_res = 0.0;
     int *all_locks = ori__alloc(sizeof(int) * (size_t)(def->locked_count + m->edge_count + 1));
     int nlocks = def->locked_count;
@@ -757,6 +759,16 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double path = 0.0; // length of the path so far (2-norm over the variables' joints)
     int stall_n = 0;
     const int max_steps = def->max_steps > 0 ? def->max_steps : ORI_MULTIFOLD_MAX_STEPS;
+    // Origami Simulator's slider: P % is P % of the way along the motion toward the 100 % goal,
+    // measured by the progress 1 − D/D₀ (D the distance to the goal, which every accepted step
+    // decreases: monotone along the path). The fold stops where it reaches the fraction.
+    const double stop_distance = (1.0 - def->fraction) * D0;
+    bool partway = def->fraction < 1.0 && D0 > 0.0;
+    if (partway && def->fraction <= 0.0) { // 0 %: the start itself
+        mo->verdict = ORI_MULTIFOLD_REACHED;
+        snprintf(mo->reason, sizeof mo->reason, "0 %% of the way: the start state");
+        done = true;
+    }
     while (!done && !cancelled) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
@@ -848,6 +860,38 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 accept = false;
                 why = WHY_FARTHER;
             }
+            if (accept && partway && Dn <= stop_distance) {
+                // The fraction falls inside this step: the state on it (the chord from th to
+                // trial, corrected) where the distance is (1 − fraction)·D₀, by bisection.
+                double lo = 0.0, hi = 1.0, best = Dn, best_res = res;
+                memcpy(pred, trial, sizeof(double) * (size_t)J); // the step's end
+                double *x = ori__alloc(sizeof(double) * (size_t)(J + 1));
+                for (int it = 0; it < ORI_MULTIFOLD_STOP_BISECTIONS; ++it) {
+                    double u = 0.5 * (lo + hi), rm = 0.0;
+                    int im = 0;
+                    for (int j = 0; j < J; ++j) x[j] = th[j] + u * (pred[j] - th[j]);
+                    bool closed = ori__mf_correct(&sys, x, &im, &rm);
+                    for (int j = 0; j < J && closed; ++j)
+                        if (joint_var[j] >= 0 && !(fabs(x[j]) <= ORI_PI + ORI_TOL_NEWTON)) closed = false;
+                    if (!closed) {
+                        hi = u;
+                        continue;
+                    }
+                    double Dx = goal_distance(m, joint_var, x, goal);
+                    if (Dx <= stop_distance) hi = u;
+                    else lo = u;
+                    if (fabs(Dx - stop_distance) < fabs(best - stop_distance) && Dx < D) {
+                        best = Dx;
+                        best_res = rm;
+                        memcpy(trial, x, sizeof(double) * (size_t)J);
+                    }
+                    if (fabs(Dx - stop_distance) <= ORI_TOL_MULTIFOLD_PROGRESS * D0) break;
+                }
+                ori__free(x);
+                Dn = best;
+                res = best_res;
+                finished = true;
+            }
             // Frames every def->step_rad of the largest crease change: those that fall inside this
             // step are the chord from th to trial at that change, corrected onto the constraints;
             // one that falls on its end is trial. The output never steers the solver: an
@@ -902,11 +946,13 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 if (at_end) ori__mf_record(mo, th, res, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0);
                 if (its <= 5) h = fmin(2.0 * h, hmax);
                 if (def->progress) { // the distance to the goal only shrinks: 1 − D/D0 grows
-                    reported = fmax(reported, fmin(1.0, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0));
+                    double got = D0 > 0.0 ? 1.0 - Dn / D0 : 1.0;
+                    reported = fmax(reported, fmin(1.0, def->fraction > 0.0 ? got / def->fraction : 1.0));
                     cancelled = !def->progress(reported, def->progress_user);
                 }
                 break;
             }
+            finished = false;
             mo->rejected++;
             h *= 0.5;
             if (h < ORI_MULTIFOLD_MIN_STEP_RAD) {
@@ -915,6 +961,13 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             }
         }
         if (cancelled) break;
+        if (finished) {
+            mo->verdict = ORI_MULTIFOLD_REACHED;
+            snprintf(mo->reason, sizeof mo->reason,
+                     "the fold reached %.6g %% of the way toward the targets (progress 1 - D/D0, D the distance to them)",
+                     100.0 * def->fraction);
+            break;
+        }
         // A crease stopped at ±180° that is its own goal is held there, and the others go on.
         if (done && why == WHY_LIMIT && fabs(goal[why_joint]) >= ORI_PI - ORI_TOL_TARGET_RAD &&
             fabs(th[why_joint]) >= ORI_PI - ORI_MULTIFOLD_PIN_RAD) {
