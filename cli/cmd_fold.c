@@ -178,8 +178,7 @@ static int run(int argc, char **argv)
     def.progress = NULL; // the collision check re-solves states between steps: no bar of its own
     def.progress_user = NULL;
     if (st != ORI_OK) {
-        rc = cli_input_error("fold", a.path, &err);
-        if (st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL) rc = CLI_EXIT_INTERNAL;
+        rc = cli_fold_solve_error("fold", &a, st, &err);
         cli_kin_free(&k);
         return rc;
     }

@@ -219,10 +219,18 @@ static int run(int argc, char **argv)
 
     ori_sequence *s = NULL;
     ori_error err;
-    if (ori_sequence_load_file(a.path, &s, &err) != ORI_OK) return cli_input_error("sequence", a.path, &err);
+    if (ori_sequence_load_file(a.path, &s, &err) != ORI_OK) {
+        if (ori_format_from_path(a.path) != ORI_FORMAT_UNKNOWN) // a crease pattern given for the sequence
+            return cli_usage("sequence",
+                             "%s is a crease pattern, not a sequence: give SEQ.json, a sequence file that names its "
+                             "pattern in \"pattern\" and lists its \"folds\" (docs/sequence.md); to fold the pattern "
+                             "itself, orikin fold %s",
+                             a.path, a.path);
+        return cli_input_error("sequence", a.path, &err);
+    }
     char *pattern = resolve(a.path, ori_sequence_pattern_path(s));
     cli_kin k;
-    int rc = cli_kin_load("sequence", pattern, ori_sequence_frame(s), &k);
+    int rc = cli_kin_load_sequence("sequence", a.path, pattern, ori_sequence_frame(s), &k);
     if (rc != CLI_EXIT_OK) {
         free(pattern);
         ori_sequence_destroy(s);
