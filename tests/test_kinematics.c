@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include <orikin/arrangement.h>
+#include <orikin/formats.h>
 
 #include "kinematics/kinematics_internal.h"
 #include "support.h"
@@ -1200,4 +1201,59 @@ Test(kinematics, the_default_fixed_face_of_a_cross_net_is_its_middle_square)
     cr_assert_eq(ori_pattern_face_count(p), 7);
     cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 1.5, 0.5));
     ori_pattern_destroy(p);
+}
+
+// --- dof: a nearby motion that ignores the assignment is said so ------------------------------------
+
+static ori_dof_result dof_flat(const ori_pattern *p)
+{
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_dof_def d = ori_default_dof_def();
+    ori_dof_result r;
+    ori_error err;
+    cr_assert_eq(ori_mechanism_dof(m, &d, &r, &err), ORI_OK, "%s", err.message);
+    ori_mechanism_destroy(m);
+    return r;
+}
+
+// Rabbit Ear's windmill base: the free mechanism moves near the flat sheet (nearby DOF 1), but
+// only against the assignment (every assigned fold is not rigidly foldable): dof says so, naming
+// a crease. The waterbomb base, the open corner and a Miura-ori keep theirs: no note.
+Test(kinematics, dof_says_when_its_nearby_motion_ignores_the_assignment)
+{
+    const char *path = test_require_shared("rabbit-ear/cp_windmill.cp");
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_import_file(path, ORI_FORMAT_CP, NULL, &p, NULL, &err), ORI_OK, "%s", err.message);
+    ori_dof_result r = dof_flat(p);
+    cr_assert_eq(r.generic_dof, 1);
+    cr_assert_gt(r.nearby_against, 0);
+    cr_assert_neq(r.nearby_against_edge, ORI_NULL_INDEX);
+    ori_assignment as = ori_pattern_edge(p, r.nearby_against_edge).assignment;
+    cr_assert(as == ORI_ASSIGN_MOUNTAIN || as == ORI_ASSIGN_VALLEY);
+    cr_assert_lt(r.nearby_against_rad * (as == ORI_ASSIGN_VALLEY ? 1.0 : -1.0), 0.0);
+    // ... and indeed no assigned crease driven its way folds.
+    ori_mechanism *m = test_mechanism_of(p);
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_assignment a = ori_pattern_edge(p, e).assignment;
+        if (a != ORI_ASSIGN_MOUNTAIN && a != ORI_ASSIGN_VALLEY) continue;
+        ori_motion_def d = ori_default_motion_def();
+        d.driven_edge = e;
+        d.to_rad = (a == ORI_ASSIGN_VALLEY ? 1.0 : -1.0) * ORI_PI / 3;
+        d.step_rad = ORI_PI / 18;
+        ori_motion *mo = test_solve(m, &d);
+        cr_assert_neq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "crease %d", e);
+        ori_motion_destroy(mo);
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    const char *keep[] = {"tests/data/waterbomb-base.fold", "examples/patterns/open-corner.fold", "tests/data/miura-4x4.fold"};
+    for (int i = 0; i < 3; ++i) {
+        p = test_load_pattern(test_repo_path(keep[i]), 0);
+        r = dof_flat(p);
+        cr_assert_gt(r.generic_dof, 0, "%s", keep[i]);
+        cr_assert_eq(r.nearby_against, 0, "%s: crease %d", keep[i], r.nearby_against_edge);
+        cr_assert_eq(r.nearby_against_edge, ORI_NULL_INDEX);
+        ori_pattern_destroy(p);
+    }
 }

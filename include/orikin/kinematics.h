@@ -210,6 +210,10 @@ typedef struct ori_dof_result {
     bool dense;        ///< dense SVD (true) or sparse CHOLMOD inverse iteration (false)
     double sigma_max;  ///< largest singular value of the Jacobian
     double sigma_cut;  ///< smallest singular value counted in the rank (0 when rank is 0)
+    int nearby_against;        ///< M/V creases the probe's nearby motion folds against their assignment (0: it keeps
+                               ///< it, or no probe): generic_dof then counts motions the assignment does not admit
+    int nearby_against_edge;   ///< the one of them folded most (FOLD edge), ORI_NULL_INDEX when none
+    double nearby_against_rad; ///< its angle at the nearby state (the wrong sign)
 } ori_dof_result;
 
 /// Rank and nullity of the loop-closure Jacobian (one column per unlocked revolute crease,
