@@ -305,10 +305,15 @@ Test(sequence, a_blocked_fold_is_recorded_up_to_its_stop)
     // times: fractions of the planned fold (−60° → −180°)
     cr_assert(fabs(ori_record_frame_time(r, last) - (1.0 + 60.6797509 / 120.0)) < 1e-8, "%.12g", ori_record_frame_time(r, last));
     for (int f = 1; f <= last; ++f) cr_assert_gt(ori_record_frame_time(r, f), ori_record_frame_time(r, f - 1));
-    // the instants of the completed fold are still restored; the partial one is not a completed fold
-    double ang[16];
+    // the instants of the completed fold are still restored, and those of the partial fold up to
+    // its stop (a sequence's collision check bisects there): t = 1.4 is the drive at −60° − 0.4 ×
+    // 120° = −108°, before the stop; beyond the stop there is nothing
+    double ang[16], drive = 0.0, res = 1.0;
     cr_assert_eq(ori_record_at(r, 1.0, ang, NULL, NULL, NULL, NULL, &err), ORI_OK);
-    cr_assert_neq(ori_record_at(r, 1.4, ang, NULL, NULL, NULL, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_record_at(r, 1.4, ang, NULL, &drive, NULL, &res, &err), ORI_OK, "%s", err.message);
+    cr_assert_float_eq(drive / DEG, -108.0, 1e-9);
+    cr_assert_leq(res, ORI_TOL_RESIDUAL);
+    cr_assert_eq(ori_record_at(r, ori_record_frame_time(r, last) + 1e-3, ang, NULL, NULL, NULL, NULL, &err), ORI_ERR_RANGE);
     ori_record_destroy(r);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
@@ -464,4 +469,51 @@ Test(sequence, a_percent_step_is_the_fold_percent_motion_part_of_the_way_along_i
         ori_mechanism_destroy(m);
         ori_pattern_destroy(p);
     }
+}
+
+// A percent step that stops short (the open corner cannot reach every target: stationary) is
+// blocked with the fold's own reason, as orikin fold --percent says, and recorded up to its stop
+// (its frames those of the fold), each instant of it restorable (the collision check bisects
+// there).
+Test(sequence, a_percent_step_that_stops_short_is_blocked_and_recorded_up_to_its_stop)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_target_fold_def d = ori_default_target_fold_def();
+    d.fixed_face = ori_pattern_center_face(p);
+    ori_multifold *mf = NULL;
+    ori_error err;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_STATIONARY, "%s", ori_multifold_reason(mf));
+    int nf = ori_multifold_frame_count(mf);
+    ori_sequence *s = parse_ok("{\"pattern\": \"p.fold\", \"folds\": [{\"percent\": 100}]}");
+    cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_OK, "%s", err.message);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_BLOCKED);
+    cr_assert_str_eq(ori_record_reason(r), ori_multifold_reason(mf));
+    cr_assert_eq(ori_record_completed_folds(r), 0);
+    cr_assert_eq(ori_record_partial_frames(r), nf);
+    cr_assert_eq(ori_record_frame_count(r), nf);
+    int E = ori_mechanism_edge_count(m);
+    for (int k = 0; k < nf; ++k)
+        for (int e = 0; e < E; ++e)
+            cr_assert_eq(ori_record_frame_angles(r, k)[e], ori_multifold_frame_angles(mf, k)[e]);
+    // Halfway between two recorded frames: a closed state between them.
+    double t = 0.5 * (ori_record_frame_time(r, nf / 2) + ori_record_frame_time(r, nf / 2 + 1));
+    double *a = malloc(sizeof(double) * (size_t)E);
+    double res = 1.0;
+    cr_assert_eq(ori_record_at(r, t, a, NULL, NULL, NULL, &res, &err), ORI_OK, "%s", err.message);
+    cr_assert_leq(res, ORI_TOL_RESIDUAL);
+    const double *a0 = ori_record_frame_angles(r, nf / 2), *a1 = ori_record_frame_angles(r, nf / 2 + 1);
+    for (int e = 0; e < E; ++e)
+        cr_assert(a[e] >= fmin(a0[e], a1[e]) - 1e-6 && a[e] <= fmax(a0[e], a1[e]) + 1e-6, "crease %d", e);
+    // Beyond the stop: out of range.
+    cr_assert_eq(ori_record_at(r, ori_record_frame_time(r, nf - 1) + 1e-3, a, NULL, NULL, NULL, NULL, &err), ORI_ERR_RANGE);
+    free(a);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
 }

@@ -464,7 +464,7 @@ typedef enum ori_multifold_verdict {
     ORI_MULTIFOLD_SINGULAR,         ///< the corrector fails at every step size: a singular configuration (or no motion at all)
     ORI_MULTIFOLD_UNDERDETERMINED,  ///< drives: the free creases keep freedom the drives do not fix (lock or drive more)
     ORI_MULTIFOLD_OVERDETERMINED,   ///< drives: the drives cannot move together as prescribed (no rigid motion does it)
-    ORI_MULTIFOLD_INVALID_ASSIGNMENT, ///< the motion folds creases against their M/V assignment (beyond ORI_TOL_FOLD_SIGN_RAD,
+    ORI_MULTIFOLD_INVALID_ASSIGNMENT, ///< the motion folds creases against their M/V assignment (beyond ORI_TOL_KIN_STOP_SIGN_RAD,
                                       ///< further than at the start): an invalid fold, as for a single drive; the creases are
                                       ///< named (ori_multifold_offending), the frames kept
 } ori_multifold_verdict;

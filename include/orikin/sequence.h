@@ -145,7 +145,8 @@ ORI_API double ori_record_duration(const ori_record *record);
 /// The state at time t (0 ≤ t ≤ duration), solved exactly (continuation from the recorded
 /// state before t, not interpolation): fold angles (edge_count entries), vertex positions
 /// (vertex_count entries; may be NULL), residual and fold index (either may be NULL), drive
-/// angle. Fails with ORI_ERR_RANGE for t outside [0, duration].
+/// angle. Fails with ORI_ERR_RANGE for t outside [0, duration] — or, when a fold was blocked
+/// and recorded up to its stop (ori_record_partial_frames), beyond the last of those frames.
 ORI_API ori_status ori_record_at(const ori_record *record, double t, double *angles_rad,
                                  ori_v3 *positions, double *drive_rad, int *fold,
                                  double *residual, ori_error *error);

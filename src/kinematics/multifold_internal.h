@@ -87,7 +87,7 @@ struct ori_multifold {
 
 ori_multifold *ori__mf_result_create(const ori_mechanism *m, int fixed_face, ori_rigid fixed_pose);
 // The verdict INVALID_ASSIGNMENT, with the creases named in the reason, when some frame folds
-// an M/V crease against its assignment beyond ORI_TOL_FOLD_SIGN_RAD and further than frame 0.
+// an M/V crease against its assignment beyond ORI_TOL_KIN_STOP_SIGN_RAD and further than frame 0.
 void ori__mf_check_assignment(ori_multifold *mo);
 // Append a frame from joint angles.
 void ori__mf_record(ori_multifold *mo, const double *th, double residual, double progress);

@@ -376,7 +376,10 @@ void ori__mf_check_assignment(ori_multifold *mo)
         int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
         if (!sg) continue;
         // A start already against the assignment (a frame read from a file) counts only beyond it.
-        double allowed = ORI_TOL_FOLD_SIGN_RAD + (a0[e] * sg < 0.0 ? fabs(a0[e]) : 0.0);
+        // The tolerance is that of the states near a stop (1e-4 rad): minimum-norm continuation
+        // leaves creases of order 1e-5 rad on the wrong side where its first-order projection
+        // is not sign-constrained (the flat sheet) and where an unfold ends at the flat state.
+        double allowed = ORI_TOL_KIN_STOP_SIGN_RAD + (a0[e] * sg < 0.0 ? fabs(a0[e]) : 0.0);
         double worst = 0.0, at = 0.0;
         for (int k = 1; k < F; ++k) {
             double x = ori_multifold_frame_angles(mo, k)[e];

@@ -768,12 +768,18 @@ ori_status ori_record_at(const ori_record *r, double t, double *angles, ori_v3 *
 {
     ORI_ASSERT(r && angles);
     ori_error_clear(error);
-    if (r->completed == 0 || !(t >= 0.0 && t <= (double)r->completed))
-        return ori__fail(error, ORI_ERR_RANGE, "time %g is outside [0, %d]", t, r->completed);
+    // A blocked fold's partial frames (up to its stop) can be restored too: the collision check
+    // of a sequence bisects between them.
+    bool partial = r->partial_frames > 0 && r->failed != ORI_NULL_INDEX && r->frame_count > 0;
+    double end = partial ? fmax((double)r->completed, r->times[r->frame_count - 1]) : (double)r->completed;
+    if ((r->completed == 0 && !partial) || !(t >= 0.0 && t <= end))
+        return ori__fail(error, ORI_ERR_RANGE, "time %g is outside [0, %.17g]", t, end);
     // fold j holds t ∈ [j, j + 1]; an integer t ≥ 1 is the end of fold t − 1
     int j = (int)floor(t);
     if (j > 0 && (double)j == t) j -= 1;
-    if (j >= r->completed) j = r->completed - 1;
+    int last_fold = partial ? r->failed : r->completed - 1;
+    if (j > last_fold) j = last_fold;
+    if (j < 0) j = 0;
     const record_fold *rf = &r->run[j];
     double s = t - (double)j;
     double target = rf->from_rad + s * (rf->to_rad - rf->from_rad);
