@@ -474,23 +474,25 @@ typedef enum ori_multifold_verdict {
 typedef struct ori_multifold ori_multifold;
 
 /// A fold toward target angles (Origami Simulator's "fold percent", rigid and exact): every
-/// unlocked crease is driven from its start angle θ0 toward the goal θ0 + fraction·(target − θ0)
-/// by projecting the remaining change onto the null space of the loop-closure Jacobian
-/// (Δθ = (I − J⁺J) Δθ_goal, Tachi 2009) and correcting back onto the manifold by Newton.
+/// unlocked crease is driven from its start angle θ0 toward its target by projecting the
+/// remaining change onto the null space of the loop-closure Jacobian (Δθ = (I − J⁺J) Δθ_goal,
+/// Tachi 2009) and correcting back onto the manifold by Newton; the fold stops `fraction` of the
+/// way along that motion, at progress 1 − D/D₀ = fraction (D = |θ − θ_target| over the moving
+/// creases, D₀ at the start; monotone along the path), every frame's progress in [0, fraction].
 /// Get it from ori_default_target_fold_def().
 typedef struct ori_target_fold_def {
     int fixed_face;                  ///< face held in place (FOLD index)
     ori_rigid fixed_pose;            ///< world pose of the fixed face
     const double *start_angles_rad;  ///< start state, edge_count angles (NULL = flat); copied
     const double *target_angles_rad; ///< targets at 100 %, edge_count angles (NULL: ori_target_angles_default of the mechanism's pattern); copied
-    double fraction;                 ///< how far toward the targets, 0 … 1 (percent / 100)
+    double fraction;                 ///< how far along the motion toward the targets, 0 … 1 (percent / 100; progress 1 − D/D₀)
     double step_rad;                 ///< output spacing: largest crease change between frames (> 0)
     const int *locked_edges;         ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;           ///< NULL, or edge_count entries: creases with the same group ≥ 0 are kept at equal angles (e.g. symmetry orbits)
     int max_steps;                   ///< most continuation steps (≤ 0: ORI_MULTIFOLD_MAX_STEPS), the bound of the pace test too;
                                      ///< beyond: verdict STATIONARY, frames kept (a design search bounds each judgement so)
-    ori_progress_fn *progress;       ///< called per accepted step with the fraction of the distance to the goal covered
+    ori_progress_fn *progress;       ///< called per accepted step with the share of the requested way done, (1 − D/D₀)/fraction
                                      ///< (monotone, 1 at the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
     void *progress_user;
     int internal_value;              ///< set by ori_default_target_fold_def; do not change
