@@ -61,6 +61,16 @@ static int make_collider(const char *cmd, const char *path, const cli_collide_op
 
 static int check_failed(const char *cmd, const char *path, const ori_error *err)
 {
+    // A face bent in a solved state is the solver's failure, not the file's (the flat sheet is
+    // planar): a negative answer saying what could not be done, never bad input.
+    if (err->status == ORI_ERR_DEGENERATE && strcmp(err->field, "faces_vertices") == 0 &&
+        strstr(err->message, "not planar")) {
+        fprintf(stderr,
+                "orikin %s: %s: the solver's state bends face %d (%s): the fold could not be posed rigidly, so it is not "
+                "judged\n",
+                cmd, path, err->element, err->message);
+        return CLI_EXIT_NEGATIVE;
+    }
     int rc = cli_input_error(cmd, path, err);
     return err->status == ORI_ERR_NOT_CONVERGED || err->status == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
 }
