@@ -517,3 +517,38 @@ Test(sequence, a_percent_step_that_stops_short_is_blocked_and_recorded_up_to_its
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
 }
+
+// Origami Simulator's 6-point hypar: orikin fold --percent 50 and a sequence step {"percent": 50}
+// (no fix: the same default face) used to differ (one collided at 35 %, the other was blocked at
+// 0 % and at 50 % missed the collision). One engine: the same contact, at the same progress.
+Test(sequence, the_hypar_folds_alike_by_fold_percent_and_by_a_sequence_step)
+{
+    const char *hypar = test_require_shared("origamisimulator/Origami_6ptHypar-anti.svg");
+    char *dir = test_tmpdir();
+    char seq[1024], args[2048];
+    snprintf(seq, sizeof seq, "%s/hypar.seq.json", dir);
+    FILE *f = fopen(seq, "w");
+    cr_assert_not_null(f);
+    fprintf(f, "{\"pattern\": \"%s\", \"folds\": [{\"percent\": 50}]}\n", hypar);
+    fclose(f);
+    char *a = NULL, *b = NULL;
+    snprintf(args, sizeof args, "fold '%s' --percent 50", hypar);
+    cr_assert_eq(test_run_cli(args, &a), 1, "%s", a);
+    snprintf(args, sizeof args, "sequence '%s'", seq);
+    cr_assert_eq(test_run_cli(args, &b), 1, "%s", b);
+    const char *ca = strstr(a, "verdict: collision: faces "), *cb = strstr(b, "verdict: collision: faces ");
+    cr_assert(ca && cb, "%s\n---\n%s", a, b);
+    // "faces 7 and 25 penetrate at step 22, progress 0.347669925" / "... at fold 1, step 22, progress ..."
+    char fa[64], fb[64];
+    double pa = -1.0, pb = -2.0;
+    cr_assert_eq(sscanf(ca, "verdict: collision: faces %63[0-9 and] penetrate", fa), 1);
+    cr_assert_eq(sscanf(cb, "verdict: collision: faces %63[0-9 and] penetrate", fb), 1);
+    cr_assert_str_eq(fa, fb);
+    cr_assert_eq(sscanf(strstr(ca, "progress "), "progress %lf", &pa), 1);
+    cr_assert_eq(sscanf(strstr(cb, "progress "), "progress %lf", &pb), 1);
+    cr_assert_float_eq(pa, pb, 1e-9);
+    cr_assert(pa > 0.3 && pa < 0.4, "%g", pa);
+    free(a);
+    free(b);
+    test_tmpdir_remove(dir);
+}
