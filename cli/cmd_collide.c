@@ -119,9 +119,9 @@ static int run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     const char *path = a.state.path;
     if (a.has_clearance && !(a.clearance >= 0.0))
-        return cli_input_fail("collide", path, "--clearance must be a length >= 0, got %s", a.clearance_raw);
+        return cli_value_fail("collide", path, "--clearance", "must be a length >= 0, got %s", a.clearance_raw);
     if (a.has_cloud && !(a.spacing > 0.0))
-        return cli_input_fail("collide", path, "--cloud needs a sample spacing > 0, got %s", a.cloud_raw);
+        return cli_value_fail("collide", path, "--cloud", "needs a sample spacing > 0, got %s", a.cloud_raw);
     cli_state s;
     if ((rc = cli_state_load("collide", &a.state, true, &s)) != CLI_EXIT_OK) return rc;
     if (s.cp_frame && !ori_pattern_has_fold_angles(s.pattern)) {

@@ -116,7 +116,9 @@ static int run(int argc, char **argv)
         ori_apply_result r;
         ori_error err;
         ori_status st = ori_pattern_apply_crease(p, &c, face, &r, &err);
-        if (st == ORI_ERR_NOT_FOUND) // the line misses the face or sheet: the command line's value
+        // The line misses the face or sheet, or --line's two points coincide (at the pattern's
+        // tolerance): the command line's value, a usage error naming the option.
+        if (st == ORI_ERR_NOT_FOUND || (st == ORI_ERR_DEGENERATE && have_line && err.field[0] == '\0'))
             rc = cli_value_fail("crease", path, have_line ? "--line" : "--axiom", "%s", err.message);
         else if (st != ORI_OK) rc = cli_input_error("crease", path, &err);
         else rc = cli_write_frame_pattern("crease", &doc, &input, p, out);

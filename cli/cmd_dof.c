@@ -99,6 +99,11 @@ static int run(int argc, char **argv)
         json_object_set_new(out, "sigma_max", json_real(r.sigma_max));
         json_object_set_new(out, "sigma_cut", json_real(r.sigma_cut));
         json_object_set_new(out, "loops", json_integer(ori_mechanism_loop_count(mech)));
+        json_object_set_new(out, "nearby_against_assignment",
+                            r.nearby_against > 0
+                                ? json_pack("{s:i,s:i,s:f}", "creases", r.nearby_against, "edge", r.nearby_against_edge,
+                                            "angle_deg", ori_rad_to_deg_output(r.nearby_against_rad))
+                                : json_null());
         cli_print_json(out);
     } else if (rc == CLI_EXIT_OK) {
         printf("file               %s (state of frame %d)\n", path, in.frame);
@@ -115,6 +120,14 @@ static int run(int argc, char **argv)
                    r.probe_solves);
         printf("singular           %s\n", r.singular ? "yes (the state inflates the nullity, e.g. the flat sheet)"
                                           : r.undetermined ? "unknown" : "no");
+        if (r.nearby_against > 0) // the probe follows the free mechanism, whatever the assignment
+            printf("note: the motion nearby ignores the assignment: it folds %d crease%s against %s (crease %d, assigned "
+                   "%s, to %.6g deg); the nearby dof counts motions the assignment may not admit (orikin fold judges "
+                   "an assigned fold)\n",
+                   r.nearby_against, r.nearby_against == 1 ? "" : "s", r.nearby_against == 1 ? "its" : "theirs",
+                   r.nearby_against_edge,
+                   ori_pattern_edge(flat, r.nearby_against_edge).assignment == ORI_ASSIGN_VALLEY ? "valley" : "mountain",
+                   ori_rad_to_deg_output(r.nearby_against_rad));
     }
     free(angles);
     ori_mechanism_destroy(mech);
@@ -150,7 +163,9 @@ const cli_command cli_cmd_dof = {
     "                     generic_dof); rigid (no motion at all); undetermined (the probe's\n"
     "                     budget ran out: generic_dof null); probe_solves (branch combinations\n"
     "                     tried); method (dense-svd or sparse-cholmod); sigma_max, sigma_cut\n"
-    "                     (largest singular value, smallest one counted in the rank); loops\n"
+    "                     (largest singular value, smallest one counted in the rank); loops;\n"
+    "                     nearby_against_assignment ({creases, edge, angle_deg}: the nearby\n"
+    "                     motion folds creases against their assignment; null when it keeps it)\n"
     CLI_INPUT_HELP
     "\n"
     "example: orikin dof examples/patterns/open-corner.fold\n",

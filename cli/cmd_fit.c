@@ -87,7 +87,7 @@ static int run(int argc, char **argv)
             fprintf(stderr, "orikin fit: %s: %s\n", a.path, err.message);
             rc = CLI_EXIT_NEGATIVE;
         } else {
-            rc = cli_input_error("fit", a.path, &err);
+            rc = cli_fold_solve_error("fit", &a, st, &err);
         }
         cli_kin_free(&k);
         return rc;

@@ -180,8 +180,7 @@ static int run(int argc, char **argv)
     def.progress = NULL; // the collision check re-solves states between steps: no bar of its own
     def.progress_user = NULL;
     if (st != ORI_OK) {
-        rc = cli_input_error("fold", a.path, &err);
-        if (st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL) rc = CLI_EXIT_INTERNAL;
+        rc = cli_fold_solve_error("fold", &a, st, &err);
         cli_kin_free(&k);
         return rc;
     }
@@ -241,7 +240,7 @@ const cli_command cli_cmd_fold = {
     "\n"
     "options:\n"
     "  --fix FACE      face held fixed: FOLD index, name (Obj12) or @x,y (the face there);\n"
-    "                  default: the face at the centre of the sheet's bounding box (named)\n"
+    "                  default: the face at the centroid of the sheet's area (named)\n"
     "  --drive EDGE    driven crease: FOLD index or @x,y (the crease through the point)\n"
     "  --to DEG        final angle of the driven crease, -180 to 180\n"
     "  --from DEG      output from this angle (reached first, silently); default: current\n"

@@ -62,12 +62,14 @@ static void print_record_text(const char *pattern, const ori_sequence *s, const 
     for (int i = 0; i < ori_sequence_fold_count(s); ++i) {
         ori_sequence_fold f = ori_sequence_fold_at(s, i);
         if (f.targets) // a fold toward the targets (fold_modes)
-            printf("  fold %d%s%s%s: fix face %d, every crease %g %% toward its target (step %g)", i + 1,
-                   f.name[0] ? " (" : "", f.name, f.name[0] ? ")" : "", f.fixed_face, 100.0 * f.fraction,
+            printf("  fold %d%s%s%s: fix face %d%s, %g %% of the way toward the targets (step %g)", i + 1,
+                   f.name[0] ? " (" : "", f.name, f.name[0] ? ")" : "", f.fixed_face,
+                   f.fix_default ? " (the face at the sheet's centre)" : "", 100.0 * f.fraction,
                    ori_rad_to_deg_output(f.step_rad));
         else
-        printf("  fold %d%s%s%s: fix face %d, drive crease %d to %g deg (step %g)", i + 1, f.name[0] ? " (" : "", f.name,
-               f.name[0] ? ")" : "", f.fixed_face, f.driven_edge, ori_rad_to_deg_output(f.to_rad), ori_rad_to_deg_output(f.step_rad));
+        printf("  fold %d%s%s%s: fix face %d%s, drive crease %d to %g deg (step %g)", i + 1, f.name[0] ? " (" : "", f.name,
+               f.name[0] ? ")" : "", f.fixed_face, f.fix_default ? " (the face at the sheet's centre)" : "", f.driven_edge,
+               ori_rad_to_deg_output(f.to_rad), ori_rad_to_deg_output(f.step_rad));
         if (f.locked_count) {
             printf(", lock");
             for (int k = 0; k < f.locked_count; ++k) printf("%s%d", k ? "," : " ", f.locked[k]);
@@ -217,10 +219,18 @@ static int run(int argc, char **argv)
 
     ori_sequence *s = NULL;
     ori_error err;
-    if (ori_sequence_load_file(a.path, &s, &err) != ORI_OK) return cli_input_error("sequence", a.path, &err);
+    if (ori_sequence_load_file(a.path, &s, &err) != ORI_OK) {
+        if (ori_format_from_path(a.path) != ORI_FORMAT_UNKNOWN) // a crease pattern given for the sequence
+            return cli_usage("sequence",
+                             "%s is a crease pattern, not a sequence: give SEQ.json, a sequence file that names its "
+                             "pattern in \"pattern\" and lists its \"folds\" (docs/sequence.md); to fold the pattern "
+                             "itself, orikin fold %s",
+                             a.path, a.path);
+        return cli_input_error("sequence", a.path, &err);
+    }
     char *pattern = resolve(a.path, ori_sequence_pattern_path(s));
     cli_kin k;
-    int rc = cli_kin_load("sequence", pattern, ori_sequence_frame(s), &k);
+    int rc = cli_kin_load_sequence("sequence", a.path, pattern, ori_sequence_frame(s), &k);
     if (rc != CLI_EXIT_OK) {
         free(pattern);
         ori_sequence_destroy(s);

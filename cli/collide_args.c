@@ -21,8 +21,8 @@ int cli_collide_option(const char *cmd, int argc, char **argv, int *i, cli_colli
     }
     const char *v = cli_option_value(cmd, argc, argv, i);
     if (!v) return -1;
-    if (!cli_parse_double(v, &o->clearance)) {
-        cli_usage(cmd, "--clearance needs a length, got '%s'", v);
+    if (!cli_parse_double(v, &o->clearance) || !(o->clearance >= 0.0)) { // a command-line value: usage
+        cli_usage(cmd, "--clearance needs a length >= 0, got '%s'", v);
         return -1;
     }
     o->has_clearance = true;
@@ -52,7 +52,8 @@ static int make_collider(const char *cmd, const char *path, const cli_collide_op
     cd.clearance = o->clearance;
     ori_error err;
     if (ori_collider_create(&cd, c, &err) != ORI_OK) {
-        if (err.status == ORI_ERR_RANGE) return cli_input_fail(cmd, path, "--clearance must be a length >= 0, got %s", o->raw);
+        if (err.status == ORI_ERR_RANGE)
+            return cli_value_fail(cmd, path, "--clearance", "must be a length >= 0, got %s", o->raw);
         return cli_input_error(cmd, path, &err);
     }
     return CLI_EXIT_OK;
@@ -60,6 +61,16 @@ static int make_collider(const char *cmd, const char *path, const cli_collide_op
 
 static int check_failed(const char *cmd, const char *path, const ori_error *err)
 {
+    // A face bent in a solved state is the solver's failure, not the file's (the flat sheet is
+    // planar): a negative answer saying what could not be done, never bad input.
+    if (err->status == ORI_ERR_DEGENERATE && strcmp(err->field, "faces_vertices") == 0 &&
+        strstr(err->message, "not planar")) {
+        fprintf(stderr,
+                "orikin %s: %s: the solver's state bends face %d (%s): the fold could not be posed rigidly, so it is not "
+                "judged\n",
+                cmd, path, err->element, err->message);
+        return CLI_EXIT_NEGATIVE;
+    }
     int rc = cli_input_error(cmd, path, err);
     return err->status == ORI_ERR_NOT_CONVERGED || err->status == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
 }

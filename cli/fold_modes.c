@@ -445,7 +445,7 @@ static void print_text(const modes_run *r)
     if (r->hint[0]) printf("hint: %s\n", r->hint);
     against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
     int na = against_assignment(r, ag);
-    if (na) {
+    if (na && v != ORI_MULTIFOLD_INVALID_ASSIGNMENT) { // else the verdict names them
         printf("note: %d crease%s fold%s against %s assignment:", na, na == 1 ? "" : "s", na == 1 ? "s" : "",
                na == 1 ? "its" : "their");
         for (int i = 0; i < na && i < 8; ++i)
@@ -457,7 +457,18 @@ static void print_text(const modes_run *r)
     crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
     int nr = crease_rows(r, rows);
     crease_summary cs = summarize_creases(rows, nr);
-    if (nr > 0) {
+    if (nr > 0 && a->has_percent && a->percent < 100.0 && v == ORI_MULTIFOLD_REACHED) {
+        // Part of the way: where each crease got on its way to its target.
+        int lo = 0, hi = 0;
+        for (int i = 1; i < nr; ++i) {
+            if (rows[i].fraction < rows[lo].fraction - MODES_FRACTION_TIE) lo = i;
+            if (rows[i].fraction > rows[hi].fraction + MODES_FRACTION_TIE) hi = i;
+        }
+        printf("creases: %d on their way to their targets, from fraction %.4f (crease %d at %.6g deg) to %.4f (crease %d "
+               "at %.6g deg) (per crease: --json)\n",
+               nr, rows[lo].fraction, rows[lo].edge, ori_rad_to_deg_output(rows[lo].reached), rows[hi].fraction,
+               rows[hi].edge, ori_rad_to_deg_output(rows[hi].reached));
+    } else if (nr > 0) {
         printf("creases: %d of %d at their goal", cs.at, nr);
         if (cs.farthest >= 0)
             printf("; farthest of the moving: crease %d at %.6g deg, goal %.6g deg (fraction %.4f)", rows[cs.farthest].edge,

@@ -52,8 +52,10 @@ int cli_fold_modes_suggest(const cli_kin *k, const ori_motion_def *def, char *bu
     "\n"                                                                                                      \
     "Patterns with several degrees of freedom (docs/kinematics.md, 'Several degrees of freedom'):\n"         \
     "  --percent P     fold every crease toward its target (edges_foldAngle or SVG opacity; +-180 by\n"       \
-    "                  assignment where absent), P percent of the way from the start (0-100), by\n"          \
-    "                  projecting onto the rigid motions; reports how far each crease got\n"             \
+    "                  assignment where absent) by projecting onto the rigid motions, and stop P\n"        \
+    "                  percent (0-100) of the way along that motion (Origami Simulator's slider;\n"         \
+    "                  progress = 1 - distance to the targets / distance at the start); reports how\n"     \
+    "                  far each crease got\n"                                                              \
     "  --drive E1,E2,... --to A1,A2,...   drive several creases together (the rest solved); creases\n"     \
     "                  by index or @x,y as for --lock (--drive @0.5,0.25,12: two creases)\n"                \
     "  --ratio R1,R2,...  with one --to A: crease Ei goes to Ri x A degrees\n"                               \

@@ -5,6 +5,7 @@
 #include <orikin/tolerance.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,7 +24,22 @@ int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k)
     return cli_kin_load_input(cmd, path, frame, NULL, k);
 }
 
+static int kin_load(const char *cmd, const char *path, int frame, const cli_input *options, const char *frame_from,
+                    cli_kin *k);
+
 int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_input *options, cli_kin *k)
+{
+    return kin_load(cmd, path, frame, options, NULL, k);
+}
+
+int cli_kin_load_sequence(const char *cmd, const char *seq_path, const char *path, int frame, cli_kin *k)
+{
+    return kin_load(cmd, path, frame, NULL, seq_path, k);
+}
+
+// frame_from: NULL when the frame is --frame, else the sequence file whose "frame" it is.
+static int kin_load(const char *cmd, const char *path, int frame, const cli_input *options, const char *frame_from,
+                    cli_kin *k)
 {
     memset(k, 0, sizeof *k);
     k->frame = frame;
@@ -33,8 +49,26 @@ int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_i
     in.frame = 0; // the mechanism; `frame` is the start state
     in.frame_given = false;
     ori_format f = ori_format_from_path(path);
-    if (frame != 0 && (f == ORI_FORMAT_SVG || f == ORI_FORMAT_OPX || f == ORI_FORMAT_CP))
+    if (frame != 0 && (f == ORI_FORMAT_SVG || f == ORI_FORMAT_OPX || f == ORI_FORMAT_CP)) {
+        if (frame_from)
+            return cli_input_fail(cmd, frame_from, "frame: %d names a frame, but the pattern %s is a drawing (no frames)",
+                                  frame, path);
         return cli_usage(cmd, "--frame applies to .fold input, not to %s", path);
+    }
+    if (f == ORI_FORMAT_UNKNOWN) {
+        // Neither .fold nor a drawing by its name: FOLD is JSON, so anything that does not start
+        // like JSON (an image, say) is named as what it is not, rather than as a JSON syntax error.
+        FILE *fp = fopen(path, "rb");
+        if (fp) {
+            int c;
+            do c = fgetc(fp);
+            while (c == ' ' || c == '\t' || c == '\n' || c == '\r');
+            fclose(fp);
+            if (c != '{' && c != 0xEF && c != EOF) // 0xEF: a UTF-8 byte-order mark
+                return cli_input_fail(cmd, path, "not a FOLD file or a drawing (FOLD is JSON, .fold; drawings are .svg, .opx "
+                                                 "or .cp)");
+        }
+    }
     int rc = cli_input_load(cmd, path, &in, &k->doc, &k->flat);
     if (rc != CLI_EXIT_OK) return rc;
     if ((ori_pattern_is_folded_form(k->flat) || ori_pattern_is_3d(k->flat)) && frame != 0 &&
@@ -68,6 +102,23 @@ int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_i
                                          "to get its crease pattern (the folded state is kept as frame 1), then fold cp.fold");
     }
     ori_error err;
+    // Kirigami: the cuts are boundaries inside the sheet, their two sides move apart; each side
+    // gets its own vertices (ori_pattern_open_cuts), so that every folded state has one position
+    // per vertex. Frame 0 (and so every -o frame) is the opened pattern.
+    ori_pattern *opened = NULL;
+    int added = 0;
+    if (ori_pattern_open_cuts(k->flat, &opened, &added, &err) != ORI_OK) {
+        cli_kin_free(k);
+        return cli_input_error(cmd, path, &err);
+    }
+    if (added > 0) {
+        ori_pattern_destroy(k->flat);
+        k->flat = opened;
+        fprintf(stderr, "orikin %s: %s: note: the cuts are opened (%d vertices added, one per side of a cut; indices "
+                        "before them kept)\n", cmd, path, added);
+    } else {
+        ori_pattern_destroy(opened);
+    }
     // Frame 0 as loaded, with the faces the mechanism uses (traced when the file had none), so
     // that folded frames written later inherit faces_vertices and stay readable.
     if (ori_fold_set_pattern(k->doc, 0, k->flat, &err) != ORI_OK) {
@@ -89,6 +140,9 @@ int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_i
         int frames = ori_fold_frame_count(k->doc);
         if (frame < 0 || frame >= frames) {
             cli_kin_free(k);
+            if (frame_from) // the sequence file's field, not an option
+                return cli_input_fail(cmd, frame_from, "frame: frame %d does not exist in %s (frames 0 to %d)", frame, path,
+                                      frames - 1);
             return cli_value_fail(cmd, path, "--frame", "frame %d does not exist (frames 0 to %d)", frame, frames - 1);
         }
         ori_build_def bd = ori_default_build_def();
@@ -344,6 +398,19 @@ int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k)
     }
     a->fix_spec = a->drive_spec = a->lock_spec = NULL; // resolved
     return CLI_EXIT_OK;
+}
+
+int cli_fold_solve_error(const char *cmd, const cli_fold_args *a, ori_status st, const ori_error *err)
+{
+    // The driven or a locked crease that the fold cannot use is the command line's value.
+    if (st == ORI_ERR_ARGUMENT && strcmp(err->field, "edges_vertices") == 0 && err->element >= 0) {
+        bool locked = false;
+        for (int i = 0; i < a->lock_count; ++i) locked |= a->locks[i] == err->element;
+        if (locked) return cli_value_fail(cmd, a->path, "--lock", "%s", err->message);
+        if (err->element == a->drive) return cli_value_fail(cmd, a->path, "--drive", "%s", err->message);
+    }
+    int rc = cli_input_error(cmd, a->path, err);
+    return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
 }
 
 int cli_fold_def(const char *cmd, const cli_fold_args *a, const cli_kin *k, ori_motion_def *def)

@@ -28,6 +28,9 @@ int cli_kin_load(const char *cmd, const char *path, int frame, cli_kin *k);
 // --keep-* for drawings; NULL: the defaults). `frame` is the start state; the mechanism is
 // always frame 0. A drawing has no frames: --frame other than 0 is a usage error.
 int cli_kin_load_input(const char *cmd, const char *path, int frame, const cli_input *in, cli_kin *k);
+// cli_kin_load for a sequence file: `frame` is its "frame" field, and a frame the pattern does
+// not have is bad input in seq_path naming that field (exit 3), not the --frame option.
+int cli_kin_load_sequence(const char *cmd, const char *seq_path, const char *path, int frame, cli_kin *k);
 void cli_kin_free(cli_kin *k);
 
 // World pose of the fixed face in the start frame: identity for a flat frame, the rigid fit of
@@ -47,8 +50,8 @@ int cli_spec_face(const char *cmd, const char *path, const ori_pattern *p, const
                   int *face);
 int cli_spec_edge(const char *cmd, const char *path, const ori_pattern *p, const char *option, const char *spec,
                   int *edge);
-// The face held fixed when a fold gives no --fix: the face containing the centre of the flat
-// sheet's bounding box, else the face whose vertex centroid is nearest to it.
+// The face held fixed when a fold gives no --fix: ori_pattern_center_face (the face containing
+// the centroid of the sheet's area, else the face nearest to it).
 int cli_fold_default_fix(const ori_pattern *p);
 // What the text output appends after "face N fixed" when N is that default.
 #define CLI_FOLD_DEFAULT_FIX_NOTE " (the face at the sheet's centre; --fix to choose)"
@@ -89,6 +92,11 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
 // Resolve --fix, --drive and --lock (cli_spec_face, cli_spec_edge, cli_spec_edges) against the
 // loaded crease pattern; every caller of cli_fold_def resolves first. Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after a message naming the option.
 int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k);
+
+// After ori_motion_solve of a def from cli_fold_def failed: a driven or locked crease the fold
+// cannot use (a boundary edge, a crease both driven and locked) is a usage error naming --drive
+// or --lock (exit 2); anything else an input error (3), or internal (4) for a solver failure.
+int cli_fold_solve_error(const char *cmd, const cli_fold_args *a, ori_status st, const ori_error *err);
 
 // Check the specification against the mechanism and fill a motion def (angles from k, pose
 // from the fixed face). Prints a one-line input error naming the index and returns

@@ -396,7 +396,7 @@ static int load_modes(const char *cmd, const cli_state_args *a, cli_state *s)
     const ori_multifold *mf = cli_fold_modes_result(s->modes);
     int nf = ori_multifold_frame_count(mf);
     ori_multifold_verdict v = ori_multifold_verdict_of(mf);
-    if (v != ORI_MULTIFOLD_REACHED && nf < 2) {
+    if ((v != ORI_MULTIFOLD_REACHED && nf < 2) || v == ORI_MULTIFOLD_INVALID_ASSIGNMENT) {
         fprintf(stderr, "orikin %s: %s: the fold is %s: %s\n", cmd, a->path, ori_multifold_verdict_name(v),
                 ori_multifold_reason(mf));
         return CLI_EXIT_NEGATIVE;
@@ -437,10 +437,7 @@ static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
     if ((rc = cli_fold_def(cmd, &s->fold, &s->kin, &def)) != CLI_EXIT_OK) return rc;
     ori_error err;
     ori_status st = ori_motion_solve(s->mech, &def, &s->motion, &err);
-    if (st != ORI_OK) {
-        rc = cli_input_error(cmd, a->path, &err);
-        return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
-    }
+    if (st != ORI_OK) return cli_fold_solve_error(cmd, &s->fold, st, &err);
     ori_motion_verdict v = ori_motion_verdict_of(s->motion);
     int nf = ori_motion_frame_count(s->motion);
     if (v != ORI_MOTION_VALID || nf < 1) {
@@ -489,7 +486,7 @@ static int load_sequence(const char *cmd, const cli_state_args *a, cli_state *s)
     ori_error err;
     if (ori_sequence_load_file(a->path, &s->seq, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
     s->pattern_path = resolve(a->path, ori_sequence_pattern_path(s->seq));
-    int rc = cli_kin_load(cmd, s->pattern_path, ori_sequence_frame(s->seq), &s->kin);
+    int rc = cli_kin_load_sequence(cmd, a->path, s->pattern_path, ori_sequence_frame(s->seq), &s->kin);
     if (rc != CLI_EXIT_OK) return rc;
     s->has_kin = true;
     s->pattern = s->kin.flat;

@@ -6,6 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <orikin/arrangement.h>
+#include <orikin/formats.h>
+
 #include "kinematics/kinematics_internal.h"
 #include "support.h"
 
@@ -637,9 +640,10 @@ Test(kinematics, cli_writes_folded_frames_and_the_second_fold_starts_from_them)
     free(out);
     snprintf(path, sizeof path, "%s/bad.fold", dir);
     cr_assert_null(test_read_text(path));
-    // Bad input writes nothing either.
+    // A bad command line (a boundary edge as the drive: usage, naming --drive) writes nothing either.
     snprintf(args, sizeof args, "fold tests/data/kin-open-corner.fold --fix 0 --drive 3 --to 90 -o '%s/bad.fold'", dir);
-    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert_eq(test_run_cli(args, &out), 2, "%s", out);
+    cr_assert(strstr(out, "--drive: edge 3 is not a crease"), "%s", out);
     free(out);
     cr_assert_null(test_read_text(path));
     test_tmpdir_remove(dir);
@@ -1142,4 +1146,115 @@ Test(kinematics, miura_past_the_escape_is_valid_for_every_output_step)
     free(ref);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
+}
+
+// --- the default fixed face ------------------------------------------------------------------
+
+// A net of squares from unit cells (x, y): every cell edge, boundary where only one cell has it,
+// else a valley crease.
+static ori_pattern *net_of_cells(const int (*cells)[2], int n)
+{
+    ori_segment segs[64];
+    int ns = 0;
+    for (int i = 0; i < n; ++i) {
+        int x = cells[i][0], y = cells[i][1];
+        int ends[4][4] = {{x, y, x + 1, y}, {x + 1, y, x + 1, y + 1}, {x, y + 1, x + 1, y + 1}, {x, y, x, y + 1}};
+        int nb[4][2] = {{x, y - 1}, {x + 1, y}, {x, y + 1}, {x - 1, y}};
+        for (int k = 0; k < 4; ++k) {
+            int shared = -1;
+            for (int j = 0; j < n; ++j)
+                if (cells[j][0] == nb[k][0] && cells[j][1] == nb[k][1]) shared = j;
+            if (shared >= 0 && shared < i) continue; // inserted with the other cell
+            segs[ns++] = (ori_segment){ori_v2_make(ends[k][0], ends[k][1]), ori_v2_make(ends[k][2], ends[k][3]),
+                                       shared >= 0 ? ORI_ASSIGN_VALLEY : ORI_ASSIGN_BOUNDARY, 0.0};
+        }
+    }
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_pattern_from_segments(segs, ns, NULL, &p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+Test(kinematics, the_default_fixed_face_of_a_cross_net_is_its_middle_square)
+{
+    // The cube's cross: a column of four squares, arms left and right of the second from the top.
+    // Its bounding box [-1, 2] x [0, 4] has its centre (0.5, 2) on the crease between two squares
+    // of the column; the area centroid (0.5, 13/6) lies inside the square with the arms.
+    const int cross[6][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {-1, 2}, {1, 2}};
+    ori_pattern *p = net_of_cells(cross, 6);
+    cr_assert_eq(ori_pattern_face_count(p), 6);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 0.5, 2.5));
+    ori_pattern_destroy(p);
+    // Upside down (arms below the middle): the middle square again, not the column's neighbour.
+    const int down[6][2] = {{0, 0}, {0, 1}, {0, 2}, {0, 3}, {-1, 1}, {1, 1}};
+    p = net_of_cells(down, 6);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 0.5, 1.5));
+    ori_pattern_destroy(p);
+    // An L (three squares): the centroid (5/6, 5/6) lies in the corner square.
+    const int ell[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    p = net_of_cells(ell, 3);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 0.5, 0.5));
+    ori_pattern_destroy(p);
+    // A U of seven squares: the centroid (1.5, 19/14) lies in the notch, outside the sheet, 5/14
+    // from the bottom middle square and 1/2 from the arms: the bottom middle square is chosen.
+    const int u[7][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 1}, {2, 1}, {0, 2}, {2, 2}};
+    p = net_of_cells(u, 7);
+    cr_assert_eq(ori_pattern_face_count(p), 7);
+    cr_assert_eq(ori_pattern_center_face(p), test_face_at(p, 1.5, 0.5));
+    ori_pattern_destroy(p);
+}
+
+// --- dof: a nearby motion that ignores the assignment is said so ------------------------------------
+
+static ori_dof_result dof_flat(const ori_pattern *p)
+{
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_dof_def d = ori_default_dof_def();
+    ori_dof_result r;
+    ori_error err;
+    cr_assert_eq(ori_mechanism_dof(m, &d, &r, &err), ORI_OK, "%s", err.message);
+    ori_mechanism_destroy(m);
+    return r;
+}
+
+// Rabbit Ear's windmill base: the free mechanism moves near the flat sheet (nearby DOF 1), but
+// only against the assignment (every assigned fold is not rigidly foldable): dof says so, naming
+// a crease. The waterbomb base, the open corner and a Miura-ori keep theirs: no note.
+Test(kinematics, dof_says_when_its_nearby_motion_ignores_the_assignment)
+{
+    const char *path = test_require_shared("rabbit-ear/cp_windmill.cp");
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_import_file(path, ORI_FORMAT_CP, NULL, &p, NULL, &err), ORI_OK, "%s", err.message);
+    ori_dof_result r = dof_flat(p);
+    cr_assert_eq(r.generic_dof, 1);
+    cr_assert_gt(r.nearby_against, 0);
+    cr_assert_neq(r.nearby_against_edge, ORI_NULL_INDEX);
+    ori_assignment as = ori_pattern_edge(p, r.nearby_against_edge).assignment;
+    cr_assert(as == ORI_ASSIGN_MOUNTAIN || as == ORI_ASSIGN_VALLEY);
+    cr_assert_lt(r.nearby_against_rad * (as == ORI_ASSIGN_VALLEY ? 1.0 : -1.0), 0.0);
+    // ... and indeed no assigned crease driven its way folds.
+    ori_mechanism *m = test_mechanism_of(p);
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_assignment a = ori_pattern_edge(p, e).assignment;
+        if (a != ORI_ASSIGN_MOUNTAIN && a != ORI_ASSIGN_VALLEY) continue;
+        ori_motion_def d = ori_default_motion_def();
+        d.driven_edge = e;
+        d.to_rad = (a == ORI_ASSIGN_VALLEY ? 1.0 : -1.0) * ORI_PI / 3;
+        d.step_rad = ORI_PI / 18;
+        ori_motion *mo = test_solve(m, &d);
+        cr_assert_neq(ori_motion_verdict_of(mo), ORI_MOTION_VALID, "crease %d", e);
+        ori_motion_destroy(mo);
+    }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+    const char *keep[] = {"tests/data/waterbomb-base.fold", "examples/patterns/open-corner.fold", "tests/data/miura-4x4.fold"};
+    for (int i = 0; i < 3; ++i) {
+        p = test_load_pattern(test_repo_path(keep[i]), 0);
+        r = dof_flat(p);
+        cr_assert_gt(r.generic_dof, 0, "%s", keep[i]);
+        cr_assert_eq(r.nearby_against, 0, "%s: crease %d", keep[i], r.nearby_against_edge);
+        cr_assert_eq(r.nearby_against_edge, ORI_NULL_INDEX);
+        ori_pattern_destroy(p);
+    }
 }

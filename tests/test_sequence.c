@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <orikin/arrangement.h>
+#include <orikin/generate.h>
 #include <orikin/sequence.h>
 
 #include "support.h"
@@ -303,10 +305,15 @@ Test(sequence, a_blocked_fold_is_recorded_up_to_its_stop)
     // times: fractions of the planned fold (−60° → −180°)
     cr_assert(fabs(ori_record_frame_time(r, last) - (1.0 + 60.6797509 / 120.0)) < 1e-8, "%.12g", ori_record_frame_time(r, last));
     for (int f = 1; f <= last; ++f) cr_assert_gt(ori_record_frame_time(r, f), ori_record_frame_time(r, f - 1));
-    // the instants of the completed fold are still restored; the partial one is not a completed fold
-    double ang[16];
+    // the instants of the completed fold are still restored, and those of the partial fold up to
+    // its stop (a sequence's collision check bisects there): t = 1.4 is the drive at −60° − 0.4 ×
+    // 120° = −108°, before the stop; beyond the stop there is nothing
+    double ang[16], drive = 0.0, res = 1.0;
     cr_assert_eq(ori_record_at(r, 1.0, ang, NULL, NULL, NULL, NULL, &err), ORI_OK);
-    cr_assert_neq(ori_record_at(r, 1.4, ang, NULL, NULL, NULL, NULL, &err), ORI_OK);
+    cr_assert_eq(ori_record_at(r, 1.4, ang, NULL, &drive, NULL, &res, &err), ORI_OK, "%s", err.message);
+    cr_assert_float_eq(drive / DEG, -108.0, 1e-9);
+    cr_assert_leq(res, ORI_TOL_RESIDUAL);
+    cr_assert_eq(ori_record_at(r, ori_record_frame_time(r, last) + 1e-3, ang, NULL, NULL, NULL, NULL, &err), ORI_ERR_RANGE);
     ori_record_destroy(r);
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
@@ -384,5 +391,164 @@ Test(sequence, cli_writes_every_state_and_restores_an_instant)
     free(out);
     snprintf(args, sizeof args, "%s/never.fold", dir);
     cr_assert_null(fopen(args, "r"), "nothing written on bad input");
+    test_tmpdir_remove(dir);
+}
+
+// --- a fold toward the targets: one engine for fold --percent and a sequence step -------------------
+
+// P % is P % of the way along the motion toward the 100 % targets (the progress 1 − D/D₀): a
+// 10 × 10 Miura-ori at 70 % and a 4 × 4 waterbomb at 60 % get there (every crease at P % of its
+// target is no rigid state of them: that stopped "stationary"), the progress grows monotonically
+// to exactly P, and a sequence step {"percent": P} without "fix" holds the same face (the sheet's
+// centroid) and records the very same states as orikin fold --percent (ori_target_fold_solve).
+Test(sequence, a_percent_step_is_the_fold_percent_motion_part_of_the_way_along_it)
+{
+    struct {
+        ori_tessellation kind;
+        int n;
+        double percent;
+    } cases[] = {{ORI_TESS_MIURA, 10, 70.0}, {ORI_TESS_WATERBOMB, 4, 60.0}};
+    for (int c = 0; c < 2; ++c) {
+        ori_generate_def g = ori_default_generate_def(cases[c].kind);
+        g.rows = g.cols = cases[c].n;
+        ori_pattern *p = NULL;
+        ori_error err;
+        cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
+        ori_mechanism *m = test_mechanism_of(p);
+        int E = ori_mechanism_edge_count(m);
+        ori_target_fold_def d = ori_default_target_fold_def();
+        d.fixed_face = ori_pattern_center_face(p);
+        d.fraction = cases[c].percent / 100.0;
+        ori_multifold *mf = NULL;
+        cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED, "case %d: %s", c, ori_multifold_reason(mf));
+        int nf = ori_multifold_frame_count(mf);
+        cr_assert_gt(nf, 3);
+        cr_assert_eq(ori_multifold_frame_progress(mf, 0), 0.0);
+        cr_assert_float_eq(ori_multifold_frame_progress(mf, nf - 1), d.fraction, 1e-12);
+        for (int k = 1; k < nf; ++k) {
+            cr_assert_geq(ori_multifold_frame_progress(mf, k), ori_multifold_frame_progress(mf, k - 1), "case %d frame %d", c, k);
+            cr_assert_leq(ori_multifold_frame_residual(mf, k), ORI_TOL_RESIDUAL);
+        }
+        // The measure itself: 1 − |θ − θ_target| / |θ₀ − θ_target| over the creases.
+        double *target = malloc(sizeof(double) * (size_t)E);
+        ori_target_angles_default(p, target);
+        double d0 = 0.0, d1 = 0.0;
+        const double *a0 = ori_multifold_frame_angles(mf, 0), *a1 = ori_multifold_frame_angles(mf, nf - 1);
+        for (int e = 0; e < E; ++e) {
+            int j = ori_mechanism_edge_joint(m, e);
+            if (j == ORI_NULL_INDEX || ori_mechanism_joint(m, j).kind != ORI_JOINT_REVOLUTE) continue;
+            d0 += (a0[e] - target[e]) * (a0[e] - target[e]);
+            d1 += (a1[e] - target[e]) * (a1[e] - target[e]);
+        }
+        cr_assert_float_eq(1.0 - sqrt(d1) / sqrt(d0), d.fraction, 1e-12);
+        free(target);
+
+        char json[256];
+        snprintf(json, sizeof json, "{\"pattern\": \"p.fold\", \"folds\": [{\"percent\": %g}]}", cases[c].percent);
+        ori_sequence *s = parse_ok(json);
+        cr_assert(ori_sequence_fold_at(s, 0).fix_default);
+        ori_record *r = NULL;
+        cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_ERR_ARGUMENT); // fix unresolved
+        cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_sequence_fold_at(s, 0).fixed_face, d.fixed_face);
+        cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+        cr_assert_eq(ori_record_verdict(r), ORI_MOTION_VALID, "%s", ori_record_reason(r));
+        cr_assert_eq(ori_record_frame_count(r), nf);
+        for (int k = 0; k < nf; ++k) {
+            const double *x = ori_record_frame_angles(r, k), *y = ori_multifold_frame_angles(mf, k);
+            for (int e = 0; e < E; ++e) cr_assert_float_eq(x[e], y[e], 1e-12, "case %d frame %d crease %d", c, k, e);
+            cr_assert_float_eq(ori_record_frame_drive(r, k), ori_multifold_frame_progress(mf, k), 1e-15);
+            // t = progress / fraction: the fold's own 0 … 1, its end at t = 1.
+            cr_assert_float_eq(ori_record_frame_time(r, k), ori_multifold_frame_progress(mf, k) / d.fraction, 1e-12);
+        }
+        cr_assert_float_eq(ori_record_duration(r), 1.0, 0.0);
+        ori_record_destroy(r);
+        ori_sequence_destroy(s);
+        ori_multifold_destroy(mf);
+        ori_mechanism_destroy(m);
+        ori_pattern_destroy(p);
+    }
+}
+
+// A percent step that stops short (the open corner cannot reach every target: stationary) is
+// blocked with the fold's own reason, as orikin fold --percent says, and recorded up to its stop
+// (its frames those of the fold), each instant of it restorable (the collision check bisects
+// there).
+Test(sequence, a_percent_step_that_stops_short_is_blocked_and_recorded_up_to_its_stop)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    ori_target_fold_def d = ori_default_target_fold_def();
+    d.fixed_face = ori_pattern_center_face(p);
+    ori_multifold *mf = NULL;
+    ori_error err;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_STATIONARY, "%s", ori_multifold_reason(mf));
+    int nf = ori_multifold_frame_count(mf);
+    ori_sequence *s = parse_ok("{\"pattern\": \"p.fold\", \"folds\": [{\"percent\": 100}]}");
+    cr_assert_eq(ori_sequence_resolve(s, p, &err), ORI_OK, "%s", err.message);
+    ori_record *r = NULL;
+    cr_assert_eq(ori_sequence_run(s, m, NULL, ori_rigid_identity(), &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_record_verdict(r), ORI_MOTION_BLOCKED);
+    cr_assert_str_eq(ori_record_reason(r), ori_multifold_reason(mf));
+    cr_assert_eq(ori_record_completed_folds(r), 0);
+    cr_assert_eq(ori_record_partial_frames(r), nf);
+    cr_assert_eq(ori_record_frame_count(r), nf);
+    int E = ori_mechanism_edge_count(m);
+    for (int k = 0; k < nf; ++k)
+        for (int e = 0; e < E; ++e)
+            cr_assert_eq(ori_record_frame_angles(r, k)[e], ori_multifold_frame_angles(mf, k)[e]);
+    // Halfway between two recorded frames: a closed state between them.
+    double t = 0.5 * (ori_record_frame_time(r, nf / 2) + ori_record_frame_time(r, nf / 2 + 1));
+    double *a = malloc(sizeof(double) * (size_t)E);
+    double res = 1.0;
+    cr_assert_eq(ori_record_at(r, t, a, NULL, NULL, NULL, &res, &err), ORI_OK, "%s", err.message);
+    cr_assert_leq(res, ORI_TOL_RESIDUAL);
+    const double *a0 = ori_record_frame_angles(r, nf / 2), *a1 = ori_record_frame_angles(r, nf / 2 + 1);
+    for (int e = 0; e < E; ++e)
+        cr_assert(a[e] >= fmin(a0[e], a1[e]) - 1e-6 && a[e] <= fmax(a0[e], a1[e]) + 1e-6, "crease %d", e);
+    // Beyond the stop: out of range.
+    cr_assert_eq(ori_record_at(r, ori_record_frame_time(r, nf - 1) + 1e-3, a, NULL, NULL, NULL, NULL, &err), ORI_ERR_RANGE);
+    free(a);
+    ori_record_destroy(r);
+    ori_sequence_destroy(s);
+    ori_multifold_destroy(mf);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
+// Origami Simulator's 6-point hypar: orikin fold --percent 50 and a sequence step {"percent": 50}
+// (no fix: the same default face) used to differ (one collided at 35 %, the other was blocked at
+// 0 % and at 50 % missed the collision). One engine: the same contact, at the same progress.
+Test(sequence, the_hypar_folds_alike_by_fold_percent_and_by_a_sequence_step)
+{
+    const char *hypar = test_require_shared("origamisimulator/Origami_6ptHypar-anti.svg");
+    char *dir = test_tmpdir();
+    char seq[1024], args[2048];
+    snprintf(seq, sizeof seq, "%s/hypar.seq.json", dir);
+    FILE *f = fopen(seq, "w");
+    cr_assert_not_null(f);
+    fprintf(f, "{\"pattern\": \"%s\", \"folds\": [{\"percent\": 50}]}\n", hypar);
+    fclose(f);
+    char *a = NULL, *b = NULL;
+    snprintf(args, sizeof args, "fold '%s' --percent 50", hypar);
+    cr_assert_eq(test_run_cli(args, &a), 1, "%s", a);
+    snprintf(args, sizeof args, "sequence '%s'", seq);
+    cr_assert_eq(test_run_cli(args, &b), 1, "%s", b);
+    const char *ca = strstr(a, "verdict: collision: faces "), *cb = strstr(b, "verdict: collision: faces ");
+    cr_assert(ca && cb, "%s\n---\n%s", a, b);
+    // "faces 7 and 25 penetrate at step 22, progress 0.347669925" / "... at fold 1, step 22, progress ..."
+    char fa[64], fb[64];
+    double pa = -1.0, pb = -2.0;
+    cr_assert_eq(sscanf(ca, "verdict: collision: faces %63[0-9 and] penetrate", fa), 1);
+    cr_assert_eq(sscanf(cb, "verdict: collision: faces %63[0-9 and] penetrate", fb), 1);
+    cr_assert_str_eq(fa, fb);
+    cr_assert_eq(sscanf(strstr(ca, "progress "), "progress %lf", &pa), 1);
+    cr_assert_eq(sscanf(strstr(cb, "progress "), "progress %lf", &pb), 1);
+    cr_assert_float_eq(pa, pb, 1e-9);
+    cr_assert(pa > 0.3 && pa < 0.4, "%g", pa);
+    free(a);
+    free(b);
     test_tmpdir_remove(dir);
 }

@@ -158,6 +158,11 @@ json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, in
     json_object_set_new(out, "sigma_max", json_real(r->sigma_max));
     json_object_set_new(out, "sigma_cut", json_real(r->sigma_cut));
     json_object_set_new(out, "loops", json_integer(loops));
+    json_object_set_new(out, "nearby_against_assignment", // as orikin dof --json (cmd_dof.c)
+                        r->nearby_against > 0
+                            ? json_pack("{s:i,s:i,s:f}", "creases", r->nearby_against, "edge", r->nearby_against_edge,
+                                        "angle_deg", ori_rad_to_deg_output(r->nearby_against_rad))
+                            : json_null());
     return out;
 }
 

@@ -114,9 +114,10 @@ ORI_API int ori_pattern_find_edge_at(const ori_pattern *pattern, ori_v2 point);
 ORI_API int ori_pattern_find_face_at(const ori_pattern *pattern, ori_v2 point, bool *on_edge);
 
 /// The face a fold holds fixed when none is named (the CLI's default --fix, the Python binding's
-/// default fix): the face containing the centre of the flat sheet's bounding box, else (the
-/// centre on a crease or in a hole) the face whose vertex centroid is nearest to it, the lowest
-/// index on a tie (within ORI_TOL_ON_LINE_REL × diagonal); 0 for a pattern without faces.
+/// default fix): the face containing the centroid of the sheet's area (the faces' area centroids
+/// weighted by area), else (the centroid on a crease, in a hole or outside the sheet) the face
+/// whose outline is nearest to it, then the one whose area centroid is nearest, then the lowest
+/// index (ties within ORI_TOL_ON_LINE_REL × diagonal); 0 for a pattern without faces.
 ORI_API int ori_pattern_center_face(const ori_pattern *pattern);
 
 /// Edges lying along the segment ab (both end points within ORI_TOL_ON_LINE_REL × diagonal of

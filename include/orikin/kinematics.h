@@ -101,6 +101,15 @@ ORI_API ori_status ori_mechanism_create(const ori_mechanism_def *def, ori_mechan
 /// Destroy a mechanism; NULL is a no-op.
 ORI_API void ori_mechanism_destroy(ori_mechanism *mechanism);
 
+/// Kirigami: a copy (*out, destroy with ori_pattern_destroy) of a built flat pattern with its
+/// cuts opened — a vertex where cuts (C, or B between two faces) divide the paper around it into
+/// several fans gets one vertex per fan (the first keeps its index, the copies follow the old
+/// vertices), and a cut whose two sides then differ gets a second edge for its right side (after
+/// the old edges; old indices and face indices are kept). A folded state then has one position
+/// per vertex on either side of a cut. *opened (may be NULL) = the vertices added; 0 and a plain
+/// copy when nothing is cut. Fails with ORI_ERR_ARGUMENT for a pattern that is not built.
+ORI_API ori_status ori_pattern_open_cuts(const ori_pattern *flat, ori_pattern **out, int *opened, ori_error *error);
+
 /// Number of vertices and edges (those of the pattern).
 ORI_API int ori_mechanism_vertex_count(const ori_mechanism *mechanism);
 ORI_API int ori_mechanism_edge_count(const ori_mechanism *mechanism);
@@ -201,6 +210,10 @@ typedef struct ori_dof_result {
     bool dense;        ///< dense SVD (true) or sparse CHOLMOD inverse iteration (false)
     double sigma_max;  ///< largest singular value of the Jacobian
     double sigma_cut;  ///< smallest singular value counted in the rank (0 when rank is 0)
+    int nearby_against;        ///< M/V creases the probe's nearby motion folds against their assignment (0: it keeps
+                               ///< it, or no probe): generic_dof then counts motions the assignment does not admit
+    int nearby_against_edge;   ///< the one of them folded most (FOLD edge), ORI_NULL_INDEX when none
+    double nearby_against_rad; ///< its angle at the nearby state (the wrong sign)
 } ori_dof_result;
 
 /// Rank and nullity of the loop-closure Jacobian (one column per unlocked revolute crease,
@@ -451,6 +464,9 @@ typedef enum ori_multifold_verdict {
     ORI_MULTIFOLD_SINGULAR,         ///< the corrector fails at every step size: a singular configuration (or no motion at all)
     ORI_MULTIFOLD_UNDERDETERMINED,  ///< drives: the free creases keep freedom the drives do not fix (lock or drive more)
     ORI_MULTIFOLD_OVERDETERMINED,   ///< drives: the drives cannot move together as prescribed (no rigid motion does it)
+    ORI_MULTIFOLD_INVALID_ASSIGNMENT, ///< the motion folds creases against their M/V assignment (beyond ORI_TOL_KIN_STOP_SIGN_RAD,
+                                      ///< further than at the start): an invalid fold, as for a single drive; the creases are
+                                      ///< named (ori_multifold_offending), the frames kept
 } ori_multifold_verdict;
 
 /// Opaque result of ori_target_fold_solve or ori_drives_fold_solve: frames of fold angles on the
@@ -458,23 +474,25 @@ typedef enum ori_multifold_verdict {
 typedef struct ori_multifold ori_multifold;
 
 /// A fold toward target angles (Origami Simulator's "fold percent", rigid and exact): every
-/// unlocked crease is driven from its start angle θ0 toward the goal θ0 + fraction·(target − θ0)
-/// by projecting the remaining change onto the null space of the loop-closure Jacobian
-/// (Δθ = (I − J⁺J) Δθ_goal, Tachi 2009) and correcting back onto the manifold by Newton.
+/// unlocked crease is driven from its start angle θ0 toward its target by projecting the
+/// remaining change onto the null space of the loop-closure Jacobian (Δθ = (I − J⁺J) Δθ_goal,
+/// Tachi 2009) and correcting back onto the manifold by Newton; the fold stops `fraction` of the
+/// way along that motion, at progress 1 − D/D₀ = fraction (D = |θ − θ_target| over the moving
+/// creases, D₀ at the start; monotone along the path), every frame's progress in [0, fraction].
 /// Get it from ori_default_target_fold_def().
 typedef struct ori_target_fold_def {
     int fixed_face;                  ///< face held in place (FOLD index)
     ori_rigid fixed_pose;            ///< world pose of the fixed face
     const double *start_angles_rad;  ///< start state, edge_count angles (NULL = flat); copied
     const double *target_angles_rad; ///< targets at 100 %, edge_count angles (NULL: ori_target_angles_default of the mechanism's pattern); copied
-    double fraction;                 ///< how far toward the targets, 0 … 1 (percent / 100)
+    double fraction;                 ///< how far along the motion toward the targets, 0 … 1 (percent / 100; progress 1 − D/D₀)
     double step_rad;                 ///< output spacing: largest crease change between frames (> 0)
     const int *locked_edges;         ///< creases held at their start angle, may be NULL
     int locked_count;
     const int *edge_group;           ///< NULL, or edge_count entries: creases with the same group ≥ 0 are kept at equal angles (e.g. symmetry orbits)
     int max_steps;                   ///< most continuation steps (≤ 0: ORI_MULTIFOLD_MAX_STEPS), the bound of the pace test too;
                                      ///< beyond: verdict STATIONARY, frames kept (a design search bounds each judgement so)
-    ori_progress_fn *progress;       ///< called per accepted step with the fraction of the distance to the goal covered
+    ori_progress_fn *progress;       ///< called per accepted step with the share of the requested way done, (1 − D/D₀)/fraction
                                      ///< (monotone, 1 at the end), may be NULL; returning false cancels: ORI_ERR_LIMIT ("cancelled"), nothing out
     void *progress_user;
     int internal_value;              ///< set by ori_default_target_fold_def; do not change
@@ -528,6 +546,11 @@ ORI_API ori_status ori_drives_fold_solve(const ori_mechanism *mechanism, const o
 
 /// Destroy a result; NULL is a no-op.
 ORI_API void ori_multifold_destroy(ori_multifold *fold);
+/// Creases the motion folds against their M/V assignment (verdict INVALID_ASSIGNMENT): their
+/// number; entry i (in edge order) gives the crease, its worst angle with the wrong sign
+/// (radians) and the frame progress where it is reached (any pointer may be NULL).
+ORI_API int ori_multifold_offending_count(const ori_multifold *fold);
+ORI_API void ori_multifold_offending(const ori_multifold *fold, int i, int *edge, double *angle_rad, double *progress);
 /// The verdict.
 ORI_API ori_multifold_verdict ori_multifold_verdict_of(const ori_multifold *fold);
 /// Short name of a verdict ("reached", "stationary", "limit", "singular", "underdetermined", "overdetermined").

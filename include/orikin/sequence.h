@@ -43,13 +43,15 @@ typedef struct ori_sequence_fold {
     int locked_count;
     int locked[ORI_SEQUENCE_MAX_LOCKS]; ///< creases held at their current angle
     bool targets;                      ///< a fold toward the targets ("percent"; ori_target_fold_solve): driven_edge is ORI_NULL_INDEX, from/to unused
-    double fraction;                   ///< targets: how far toward them, 0 … 1
+    double fraction;                   ///< targets: how far along the motion toward them, 0 … 1 (the progress 1 − D/D₀ where it stops)
+    bool fix_default;                  ///< no "fix" given: ori_sequence_resolve holds ori_pattern_center_face (the face at the sheet's centroid)
 } ori_sequence_fold;
 
 /// Opaque fold sequence (as read from a SEQ.json file).
 typedef struct ori_sequence ori_sequence;
 
-/// Parse a sequence: {"pattern": "FILE.fold", "frame": N (optional), "folds": [{"fix": F,
+/// Parse a sequence: {"pattern": "FILE.fold", "frame": N (optional), "folds": [{"fix": F (optional:
+/// the face at the sheet's centroid, set by ori_sequence_resolve, as orikin fold without --fix),
 /// (F a face index, name or "@x,y"; E and the lock items an edge index or "@x,y": names and
 /// points are kept until ori_sequence_resolve, fixed_face / driven_edge / locked[k] ORI_NULL_INDEX)
 /// "drive": E, "to": DEG, "step": DEG (default 10), "from": DEG (optional), "lock": [E…]
@@ -146,7 +148,8 @@ ORI_API double ori_record_duration(const ori_record *record);
 /// The state at time t (0 ≤ t ≤ duration), solved exactly (continuation from the recorded
 /// state before t, not interpolation): fold angles (edge_count entries), vertex positions
 /// (vertex_count entries; may be NULL), residual and fold index (either may be NULL), drive
-/// angle. Fails with ORI_ERR_RANGE for t outside [0, duration].
+/// angle. Fails with ORI_ERR_RANGE for t outside [0, duration] — or, when a fold was blocked
+/// and recorded up to its stop (ori_record_partial_frames), beyond the last of those frames.
 ORI_API ori_status ori_record_at(const ori_record *record, double t, double *angles_rad,
                                  ori_v3 *positions, double *drive_rad, int *fold,
                                  double *residual, ori_error *error);

@@ -7,6 +7,11 @@
 
 #include "kinematics_internal.h"
 
+// A crease of the probe's nearby state counts as folded against its assignment when its angle has
+// the wrong sign by more than this fraction of the largest change the probe made (and more than
+// ORI_TOL_FOLD_SIGN_RAD): second-order drift of creases the motion does not use is not counted.
+#define ORI_DOF_AGAINST_REL 1e-3
+
 ori_dof_def ori_default_dof_def(void)
 {
     ori_dof_def def;
@@ -21,10 +26,36 @@ ori_dof_def ori_default_dof_def(void)
     return def;
 }
 
+// True when some M/V crease, driven the way it is assigned from th with the creases of col free
+// (col[j] >= 0), has a tangent that folds every assigned crease its way (or a family of them);
+// bounded by ORI_KIN_PROBE_BUDGET line combinations in all.
+static bool assigned_motion_exists(const ori_mechanism *m, const double *th, const int *col_of_joint)
+{
+    int J = m->joint_count;
+    int *col = ori__alloc(sizeof(int) * (size_t)(J + 1));
+    double *v = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    long budget = ORI_KIN_PROBE_BUDGET;
+    bool found = false;
+    for (int jd = 0; jd < J && !found && budget > 0; ++jd) {
+        ori_assignment as = m->joints[jd].assignment;
+        if (col_of_joint[jd] < 0 || (as != ORI_ASSIGN_VALLEY && as != ORI_ASSIGN_MOUNTAIN)) continue;
+        int n = 0;
+        for (int j = 0; j < J; ++j) col[j] = j == jd ? KIN_DRIVE : col_of_joint[j] >= 0 ? n++ : KIN_FIXED;
+        int extra;
+        kin_cone_result cr = ori__kin_cone_budget(m, th, col, n, jd, as == ORI_ASSIGN_VALLEY ? 1.0 : -1.0, false, v,
+                                                  &extra, &budget);
+        found = cr == KIN_CONE_FOUND || cr == KIN_CONE_UNDERDETERMINED;
+    }
+    ori__free(col);
+    ori__free(v);
+    return found;
+}
+
 ori_status ori_mechanism_dof(const ori_mechanism *m, const ori_dof_def *def, ori_dof_result *out, ori_error *error)
 {
     ORI_ASSERT(m && def && def->internal_value == ORI__DEF_COOKIE && out);
     memset(out, 0, sizeof *out);
+    out->nearby_against_edge = ORI_NULL_INDEX;
     out->grubler = m->grubler;
     out->generic_dof = -1;
     int J = m->joint_count;
@@ -63,6 +94,9 @@ ori_status ori_mechanism_dof(const ori_mechanism *m, const ori_dof_def *def, ori
     ori_status st = ori__kin_nullity(m, th, col, n, out, error);
     out->grubler = m->grubler;
     out->generic_dof = -1;
+    out->nearby_against = 0;
+    out->nearby_against_edge = ORI_NULL_INDEX;
+    out->nearby_against_rad = 0.0;
     bool probe = st == ORI_OK && def->probe_generic && out->dof > 0 && m->rows > 0;
     // Fractions: the rank at the state, then each probe round with its rank.
     if (st == ORI_OK && def->progress &&
@@ -95,6 +129,28 @@ ori_status ori_mechanism_dof(const ori_mechanism *m, const ori_dof_def *def, ori
         out->probe_solves = (int)(start_budget - budget);
         if (best >= 0) {
             out->generic_dof = best;
+            // Does the motion found keep the assignment? The probe takes any branch (the free
+            // mechanism's), so a nearby DOF may belong to motions no assigned fold can use.
+            double moved = 0.0;
+            for (int j = 0; j < J; ++j) moved = fmax(moved, fabs(cur[j] - th[j]));
+            for (int j = 0; j < J; ++j) {
+                if (col[j] < 0 || m->joints[j].kind != ORI_JOINT_REVOLUTE) continue;
+                ori_assignment as = m->joints[j].assignment;
+                int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+                double x = cur[j];
+                if (!sg || !(x * sg < 0.0) || fabs(x) <= fmax(ORI_TOL_FOLD_SIGN_RAD, ORI_DOF_AGAINST_REL * moved)) continue;
+                if (th[j] * sg < 0.0 && fabs(x) <= fabs(th[j])) continue; // no further than the state itself
+                if (out->nearby_against == 0 || fabs(x) > fabs(out->nearby_against_rad)) {
+                    out->nearby_against_edge = m->joints[j].edge;
+                    out->nearby_against_rad = x;
+                }
+                out->nearby_against++;
+            }
+            // The probe takes the first branch it finds. When that one ignores the assignment,
+            // look for one that keeps it: an assigned crease driven its own way whose tangent cone
+            // has a direction folding every crease as assigned (cone.c). Found: no note.
+            if (out->nearby_against > 0 && assigned_motion_exists(m, th, col))
+                out->nearby_against = 0, out->nearby_against_edge = ORI_NULL_INDEX, out->nearby_against_rad = 0.0;
         } else if (pr == KIN_PROBE_EXHAUSTED) {
             out->undetermined = true; // neither a motion nor a proof that there is none
         } else {

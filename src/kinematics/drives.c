@@ -318,6 +318,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     ori__free(sgn);
     ori__free(nx);
     if (!mo) return st;
+    if (!cancelled) ori__mf_check_assignment(mo);
     if (!cancelled && def->progress) cancelled = !def->progress(1.0, def->progress_user);
     if (cancelled) {
         ori_multifold_destroy(mo);

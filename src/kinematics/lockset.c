@@ -148,7 +148,10 @@ static int verify(const ori_mechanism *m, const double *angles, const int *drive
     ori_multifold *mf = NULL;
     if (ori_drives_fold_solve(m, &d, &mf, &e) != ORI_OK) return 0;
     int score = 0;
-    if (ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_REACHED) {
+    // A motion against the assignment reached the drives all the same: the set works (score 1).
+    if (ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_INVALID_ASSIGNMENT && mf->motion_verdict == ORI_MULTIFOLD_REACHED) {
+        score = 1;
+    } else if (ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_REACHED) {
         score = 2;
         for (int f = 0; f < ori_multifold_frame_count(mf) && score == 2; ++f) {
             const double *a = ori_multifold_frame_angles(mf, f);

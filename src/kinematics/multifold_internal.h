@@ -12,6 +12,12 @@
 
 #include "kinematics_internal.h"
 
+// A fold toward the targets that stops part of the way (fraction < 1) locates the stop on the
+// step that crosses it: the progress 1 − D/D₀ there equals the fraction within this (relative to
+// D₀), by at most this many bisections of the step.
+#define ORI_TOL_MULTIFOLD_PROGRESS 1e-13
+#define ORI_MULTIFOLD_STOP_BISECTIONS 80
+
 typedef struct mf_system {
     const ori_mechanism *m;
     const int *var_of_joint; // joint_count entries: variable ≥ 0, or < 0 (fixed)
@@ -73,9 +79,16 @@ struct ori_multifold {
     int steps, rejected, newton;
     int pinned; // creases held at ±180° (their own target) while the others went on
     ori_v3 *vertices; // every frame's vertex positions, computed by the first ori_multifold_vertices
+    int noff;         // creases folded against their assignment (ori__mf_check_assignment)
+    ori_multifold_verdict motion_verdict; // how the motion itself ended (verdict before that check)
+    int *off_edge;
+    double *off_angle, *off_progress;
 };
 
 ori_multifold *ori__mf_result_create(const ori_mechanism *m, int fixed_face, ori_rigid fixed_pose);
+// The verdict INVALID_ASSIGNMENT, with the creases named in the reason, when some frame folds
+// an M/V crease against its assignment beyond ORI_TOL_KIN_STOP_SIGN_RAD and further than frame 0.
+void ori__mf_check_assignment(ori_multifold *mo);
 // Append a frame from joint angles.
 void ori__mf_record(ori_multifold *mo, const double *th, double residual, double progress);
 

@@ -330,7 +330,103 @@ void ori_multifold_destroy(ori_multifold *mo)
     ori__free(mo->progress);
     ori__free(mo->goal);
     ori__free(mo->vertices);
+    ori__free(mo->off_edge);
+    ori__free(mo->off_angle);
+    ori__free(mo->off_progress);
     ori__free(mo);
+}
+
+int ori_multifold_offending_count(const ori_multifold *mo)
+{
+    ORI_ASSERT(mo);
+    return mo->noff;
+}
+
+void ori_multifold_offending(const ori_multifold *mo, int i, int *edge, double *angle_rad, double *progress)
+{
+    ORI_ASSERT(mo && i >= 0 && i < mo->noff);
+    if (edge) *edge = mo->off_edge[i];
+    if (angle_rad) *angle_rad = mo->off_angle[i];
+    if (progress) *progress = mo->off_progress[i];
+}
+
+// How many offending creases a reason names (the worst first).
+#define MF_OFFENDING_NAMED 5
+
+void ori__mf_check_assignment(ori_multifold *mo)
+{
+    const ori_mechanism *m = mo->m;
+    int E = mo->edge_count, F = mo->nframes;
+    mo->motion_verdict = mo->verdict;
+    // Drives that cannot move (as prescribed, or alone) say so: their frames are no motion.
+    if (F < 2 || mo->verdict == ORI_MULTIFOLD_UNDERDETERMINED || mo->verdict == ORI_MULTIFOLD_OVERDETERMINED) return;
+    const double *a0 = ori_multifold_frame_angles(mo, 0);
+    ori__free(mo->off_edge);
+    ori__free(mo->off_angle);
+    ori__free(mo->off_progress);
+    mo->off_edge = ori__alloc(sizeof(int) * (size_t)(E + 1));
+    mo->off_angle = ori__alloc(sizeof(double) * (size_t)(E + 1));
+    mo->off_progress = ori__alloc(sizeof(double) * (size_t)(E + 1));
+    mo->noff = 0;
+    double worst_all = 0.0;
+    for (int e = 0; e < E; ++e) {
+        int j = m->edge_joint[e];
+        if (j == ORI_NULL_INDEX || m->joints[j].kind != ORI_JOINT_REVOLUTE) continue;
+        ori_assignment as = m->edges[e].assignment;
+        int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+        if (!sg) continue;
+        // A start already against the assignment (a frame read from a file) counts only beyond it.
+        // The tolerance is that of the states near a stop (1e-4 rad): minimum-norm continuation
+        // leaves creases of order 1e-5 rad on the wrong side where its first-order projection
+        // is not sign-constrained (the flat sheet) and where an unfold ends at the flat state.
+        double allowed = ORI_TOL_KIN_STOP_SIGN_RAD + (a0[e] * sg < 0.0 ? fabs(a0[e]) : 0.0);
+        double worst = 0.0, at = 0.0;
+        for (int k = 1; k < F; ++k) {
+            double x = ori_multifold_frame_angles(mo, k)[e];
+            if (x * sg < 0.0 && fabs(x) > allowed && fabs(x) > fabs(worst)) {
+                worst = x;
+                at = mo->progress[k];
+            }
+        }
+        if (worst == 0.0) continue;
+        mo->off_edge[mo->noff] = e;
+        mo->off_angle[mo->noff] = worst;
+        mo->off_progress[mo->noff++] = at;
+        worst_all = fmax(worst_all, fabs(worst));
+    }
+    if (mo->noff == 0) return;
+    // The reason: the count, the worst creases, and where the motion itself ended.
+    int order[MF_OFFENDING_NAMED], named = 0;
+    for (int i = 0; i < mo->noff; ++i) {
+        int pos = named < MF_OFFENDING_NAMED ? named++ : MF_OFFENDING_NAMED;
+        if (pos == MF_OFFENDING_NAMED) {
+            if (fabs(mo->off_angle[i]) <= fabs(mo->off_angle[order[named - 1]])) continue;
+            pos = named - 1;
+        }
+        while (pos > 0 && fabs(mo->off_angle[order[pos - 1]]) < fabs(mo->off_angle[i])) {
+            order[pos] = order[pos - 1];
+            pos--;
+        }
+        order[pos] = i;
+    }
+    char before[1024];
+    snprintf(before, sizeof before, "%s", mo->reason);
+    ori_multifold_verdict was = mo->verdict;
+    size_t w = (size_t)snprintf(mo->reason, sizeof mo->reason, "%d crease%s against %s assignment (up to %.6g°):", mo->noff,
+                                mo->noff == 1 ? " folds" : "s fold", mo->noff == 1 ? "its" : "their",
+                                ori_rad_to_deg(worst_all));
+    for (int k = 0; k < named && w < sizeof mo->reason; ++k) {
+        int i = order[k], e = mo->off_edge[i];
+        w += (size_t)snprintf(mo->reason + w, sizeof mo->reason - w, "%s crease %d (assigned %s) folds to %.10g° at %.4g %% of the way",
+                              k ? ";" : "", e, m->edges[e].assignment == ORI_ASSIGN_VALLEY ? "valley" : "mountain",
+                              ori_rad_to_deg(mo->off_angle[i]), 100.0 * mo->off_progress[i]);
+    }
+    if (mo->noff > named && w < sizeof mo->reason)
+        w += (size_t)snprintf(mo->reason + w, sizeof mo->reason - w, "; and %d more", mo->noff - named);
+    if (w < sizeof mo->reason)
+        snprintf(mo->reason + w, sizeof mo->reason - w, " (the motion itself: %s, %.400s)", ori_multifold_verdict_name(was),
+                 before);
+    mo->verdict = ORI_MULTIFOLD_INVALID_ASSIGNMENT;
 }
 
 ori_multifold_verdict ori_multifold_verdict_of(const ori_multifold *mo)
@@ -348,6 +444,7 @@ const char *ori_multifold_verdict_name(ori_multifold_verdict v)
     case ORI_MULTIFOLD_SINGULAR: return "singular";
     case ORI_MULTIFOLD_UNDERDETERMINED: return "underdetermined";
     case ORI_MULTIFOLD_OVERDETERMINED: return "overdetermined";
+    case ORI_MULTIFOLD_INVALID_ASSIGNMENT: return "invalid assignment";
     }
     return "unknown";
 }
@@ -625,7 +722,9 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     for (int j = 0; j < J; ++j) {
         goal[j] = th[j];
         if (joint_var[j] < 0) continue;
-        goal[j] = th[j] + def->fraction * (target[m->joints[j].edge] - th[j]);
+        // The goal is the targets themselves (the 100 % state); def->fraction says how far along
+        // the motion toward it the fold stops (progress 1 − D/D₀, below).
+        goal[j] = target[m->joints[j].edge];
         gvar[joint_var[j]] += goal[j];
         nj[joint_var[j]]++;
     }
@@ -650,7 +749,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double h = hmax, since = 0.0;
     enum { WHY_NONE, WHY_NEWTON, WHY_LIMIT, WHY_FARTHER } why = WHY_NONE;
     int why_joint = -1;
-    bool recorded = true, done = false;
+    bool recorded = true, done = false, finished = false;
     double last_res = 0.0;
     int *all_locks = ori__alloc(sizeof(int) * (size_t)(def->locked_count + m->edge_count + 1));
     int nlocks = def->locked_count;
@@ -663,6 +762,16 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double path = 0.0; // length of the path so far (2-norm over the variables' joints)
     int stall_n = 0;
     const int max_steps = def->max_steps > 0 ? def->max_steps : ORI_MULTIFOLD_MAX_STEPS;
+    // Origami Simulator's slider: P % is P % of the way along the motion toward the 100 % goal,
+    // measured by the progress 1 − D/D₀ (D the distance to the goal, which every accepted step
+    // decreases: monotone along the path). The fold stops where it reaches the fraction.
+    const double stop_distance = (1.0 - def->fraction) * D0;
+    bool partway = def->fraction < 1.0 && D0 > 0.0;
+    if (partway && def->fraction <= 0.0) { // 0 %: the start itself
+        mo->verdict = ORI_MULTIFOLD_REACHED;
+        snprintf(mo->reason, sizeof mo->reason, "0 %% of the way: the start state");
+        done = true;
+    }
     while (!done && !cancelled) {
         for (int j = 0; j < J; ++j)
             if (joint_var[j] >= 0) phi[joint_var[j]] = th[j];
@@ -754,6 +863,38 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 accept = false;
                 why = WHY_FARTHER;
             }
+            if (accept && partway && Dn <= stop_distance) {
+                // The fraction falls inside this step: the state on it (the chord from th to
+                // trial, corrected) where the distance is (1 − fraction)·D₀, by bisection.
+                double lo = 0.0, hi = 1.0, best = Dn, best_res = res;
+                memcpy(pred, trial, sizeof(double) * (size_t)J); // the step's end
+                double *x = ori__alloc(sizeof(double) * (size_t)(J + 1));
+                for (int it = 0; it < ORI_MULTIFOLD_STOP_BISECTIONS; ++it) {
+                    double u = 0.5 * (lo + hi), rm = 0.0;
+                    int im = 0;
+                    for (int j = 0; j < J; ++j) x[j] = th[j] + u * (pred[j] - th[j]);
+                    bool closed = ori__mf_correct(&sys, x, &im, &rm);
+                    for (int j = 0; j < J && closed; ++j)
+                        if (joint_var[j] >= 0 && !(fabs(x[j]) <= ORI_PI + ORI_TOL_NEWTON)) closed = false;
+                    if (!closed) {
+                        hi = u;
+                        continue;
+                    }
+                    double Dx = goal_distance(m, joint_var, x, goal);
+                    if (Dx <= stop_distance) hi = u;
+                    else lo = u;
+                    if (fabs(Dx - stop_distance) < fabs(best - stop_distance) && Dx < D) {
+                        best = Dx;
+                        best_res = rm;
+                        memcpy(trial, x, sizeof(double) * (size_t)J);
+                    }
+                    if (fabs(Dx - stop_distance) <= ORI_TOL_MULTIFOLD_PROGRESS * D0) break;
+                }
+                ori__free(x);
+                Dn = best;
+                res = best_res;
+                finished = true;
+            }
             // Frames every def->step_rad of the largest crease change: those that fall inside this
             // step are the chord from th to trial at that change, corrected onto the constraints;
             // one that falls on its end is trial. The output never steers the solver: an
@@ -808,11 +949,13 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 if (at_end) ori__mf_record(mo, th, res, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0);
                 if (its <= 5) h = fmin(2.0 * h, hmax);
                 if (def->progress) { // the distance to the goal only shrinks: 1 − D/D0 grows
-                    reported = fmax(reported, fmin(1.0, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0));
+                    double got = D0 > 0.0 ? 1.0 - Dn / D0 : 1.0;
+                    reported = fmax(reported, fmin(1.0, def->fraction > 0.0 ? got / def->fraction : 1.0));
                     cancelled = !def->progress(reported, def->progress_user);
                 }
                 break;
             }
+            finished = false;
             mo->rejected++;
             h *= 0.5;
             if (h < ORI_MULTIFOLD_MIN_STEP_RAD) {
@@ -821,6 +964,13 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             }
         }
         if (cancelled) break;
+        if (finished) {
+            mo->verdict = ORI_MULTIFOLD_REACHED;
+            snprintf(mo->reason, sizeof mo->reason,
+                     "the fold reached %.6g %% of the way toward the targets (progress 1 - D/D0, D the distance to them)",
+                     100.0 * def->fraction);
+            break;
+        }
         // A crease stopped at ±180° that is its own goal is held there, and the others go on.
         if (done && why == WHY_LIMIT && fabs(goal[why_joint]) >= ORI_PI - ORI_TOL_TARGET_RAD &&
             fabs(th[why_joint]) >= ORI_PI - ORI_MULTIFOLD_PIN_RAD) {
@@ -900,6 +1050,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     ori__free(trial);
     ori__free(pred);
     ori__free(mid);
+    if (!cancelled) ori__mf_check_assignment(mo);
     if (!cancelled && def->progress) cancelled = !def->progress(1.0, def->progress_user);
     if (cancelled) {
         ori_multifold_destroy(mo);

@@ -1864,25 +1864,38 @@ ori_status ori_pattern_from_segments(const ori_segment *segs, int count, const o
     return ORI_OK;
 }
 
+// Signed area and area centroid of face f (shoelace over its vertices).
+static double face_area_centroid(const ori_pattern *p, const int *vs, int n, ori_v2 *c)
+{
+    double a = 0.0, cx = 0.0, cy = 0.0;
+    ori_v3 o = ori_pattern_vertex(p, vs[0]); // relative to the first vertex: no cancellation far out
+    for (int i = 0; i < n; ++i) {
+        ori_v3 q0 = ori_pattern_vertex(p, vs[i]), q1 = ori_pattern_vertex(p, vs[(i + 1) % n]);
+        double x0 = q0.x - o.x, y0 = q0.y - o.y, x1 = q1.x - o.x, y1 = q1.y - o.y;
+        double w = x0 * y1 - x1 * y0;
+        a += w;
+        cx += (x0 + x1) * w;
+        cy += (y0 + y1) * w;
+    }
+    a *= 0.5;
+    if (a != 0.0) *c = ori_v2_make(o.x + cx / (6.0 * a), o.y + cy / (6.0 * a));
+    else *c = ori_v2_make(o.x, o.y);
+    return a;
+}
+
 int ori_pattern_center_face(const ori_pattern *p)
 {
     ORI_ASSERT(p);
     int nv = ori_pattern_vertex_count(p), nf = ori_pattern_face_count(p);
     if (nv == 0 || nf == 0) return 0;
-    ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
-    for (int v = 1; v < nv; ++v) {
-        ori_v3 c = ori_pattern_vertex(p, v);
-        lo.x = fmin(lo.x, c.x), lo.y = fmin(lo.y, c.y), hi.x = fmax(hi.x, c.x), hi.y = fmax(hi.y, c.y);
-    }
-    ori_v2 c = ori_v2_make(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
-    double tol = ORI_TOL_ON_LINE_REL * hypot(hi.x - lo.x, hi.y - lo.y);
-    bool on_edge;
-    int inside = ori_pattern_find_face_at(p, c, &on_edge);
-    if (inside != ORI_NULL_INDEX && !on_edge) return inside;
-    int best = 0, cap = 0, *vs = NULL;
-    double best_d = INFINITY;
+    int cap = 0, *vs = NULL;
+    // The sheet's area centroid: the faces' centroids weighted by their areas (a cross-shaped
+    // net's bounding-box centre lies on an edge; its area centroid inside the middle square).
+    double area = 0.0, sx = 0.0, sy = 0.0;
+    ori_v2 *fc = ori__alloc(sizeof(ori_v2) * (size_t)nf);
     for (int f = 0; f < nf; ++f) {
         int n = ori_pattern_face_size(p, f);
+        fc[f] = ori_v2_make(NAN, NAN);
         if (n <= 0) continue;
         if (n > cap) {
             ori__free(vs);
@@ -1890,18 +1903,53 @@ int ori_pattern_center_face(const ori_pattern *p)
             vs = ori__alloc(sizeof(int) * (size_t)cap);
         }
         ori_pattern_face_vertices(p, f, vs, n);
-        double x = 0.0, y = 0.0;
-        for (int i = 0; i < n; ++i) {
-            ori_v3 q = ori_pattern_vertex(p, vs[i]);
-            x += q.x / n, y += q.y / n;
+        double a = fabs(face_area_centroid(p, vs, n, &fc[f]));
+        area += a;
+        sx += a * fc[f].x;
+        sy += a * fc[f].y;
+    }
+    ori_v2 c;
+    if (area > 0.0) {
+        c = ori_v2_make(sx / area, sy / area);
+    } else { // no area (degenerate faces): the bounding-box centre
+        ori_v3 lo = ori_pattern_vertex(p, 0), hi = lo;
+        for (int v = 1; v < nv; ++v) {
+            ori_v3 q = ori_pattern_vertex(p, v);
+            lo.x = fmin(lo.x, q.x), lo.y = fmin(lo.y, q.y), hi.x = fmax(hi.x, q.x), hi.y = fmax(hi.y, q.y);
         }
-        double d = hypot(x - c.x, y - c.y);
-        if (d < best_d - tol) {
-            best_d = d;
+        c = ori_v2_make(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
+    }
+    bool on_edge;
+    int inside = ori_pattern_find_face_at(p, c, &on_edge);
+    if (inside != ORI_NULL_INDEX && !on_edge) {
+        ori__free(vs);
+        ori__free(fc);
+        return inside;
+    }
+    // On an edge, at a vertex, in a hole or outside the sheet (a ring, an L): the face nearest to
+    // the centroid (distance to its outline, 0 when the centroid is on it), then the one whose
+    // own centroid is nearest, then the lowest index (ties within ORI_TOL_ON_LINE_REL × diagonal).
+    double tol = ORI_TOL_ON_LINE_REL * ori_pattern_diagonal(p);
+    int best = 0;
+    double best_d = INFINITY, best_dc = INFINITY;
+    for (int f = 0; f < nf; ++f) {
+        int n = ori_pattern_face_size(p, f);
+        if (n <= 0) continue;
+        ori_pattern_face_vertices(p, f, vs, n);
+        double d2 = INFINITY;
+        for (int i = 0; i < n; ++i) {
+            ori_v3 a = ori_pattern_vertex(p, vs[i]), b = ori_pattern_vertex(p, vs[(i + 1) % n]);
+            d2 = fmin(d2, seg_dist2(ori_v2_make(a.x, a.y), ori_v2_make(b.x, b.y), c));
+        }
+        double d = sqrt(d2), dc = hypot(fc[f].x - c.x, fc[f].y - c.y);
+        if (d < best_d - tol || (d <= best_d + tol && dc < best_dc - tol)) {
+            best_d = fmin(d, best_d);
+            best_dc = dc;
             best = f;
         }
     }
     ori__free(vs);
+    ori__free(fc);
     return best;
 }
 

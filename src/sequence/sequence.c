@@ -146,7 +146,10 @@ static ori_status parse_fold(json_t *obj, int i, ori_sequence_fold *f, fold_refs
             return fold_fail(error, i, "unknown field \"%s\" (fix, drive, to, from, step, lock, name, percent)", key);
     }
     ori_status st;
-    if ((st = read_index_field(obj, "fix", i, true, &f->fixed_face, &refs->fix, error)) != ORI_OK) return st;
+    // "fix" is optional, as --fix is: the face at the sheet's centroid (ori_sequence_resolve).
+    f->fix_default = !json_object_get(obj, "fix");
+    f->fixed_face = ORI_NULL_INDEX;
+    if ((st = read_index_field(obj, "fix", i, false, &f->fixed_face, &refs->fix, error)) != ORI_OK) return st;
     bool has_to, has_step;
     json_t *percent = json_object_get(obj, "percent"); // a fold toward the targets (targets.c)
     if (percent) {
@@ -245,7 +248,7 @@ ori_status ori_sequence_parse(const char *text, size_t size, ori_sequence **out,
     for (int i = 0; i < s->fold_count && st == ORI_OK; ++i) {
         st = parse_fold(json_array_get(folds, (size_t)i), i, &s->folds[i], &s->refs[i], error);
         fold_refs *r = &s->refs[i];
-        s->unresolved = s->unresolved || r->fix || r->drive;
+        s->unresolved = s->unresolved || r->fix || r->drive || s->folds[i].fix_default;
         for (int k = 0; k < s->folds[i].locked_count; ++k) s->unresolved = s->unresolved || r->lock[k];
     }
 done:
@@ -334,6 +337,7 @@ ori_status ori_sequence_resolve(ori_sequence *s, const ori_pattern *flat, ori_er
         const fold_refs *r = &s->refs[i];
         ori_sequence_fold *f = &folds[i];
         if (r->fix) st = resolve_face(flat, i, r->fix, &f->fixed_face, error);
+        if (f->fix_default) f->fixed_face = ori_pattern_center_face(flat);
         if (st == ORI_OK && r->drive) st = resolve_edge(flat, i, "drive", r->drive, &f->driven_edge, error);
         for (int k = 0; k < f->locked_count && st == ORI_OK; ++k)
             if (r->lock[k]) st = resolve_edge(flat, i, "lock", r->lock[k], &f->locked[k], error);
@@ -371,7 +375,8 @@ char *ori_sequence_to_json(const ori_sequence *s)
         json_t *o = json_object();
         if (f->name[0]) json_object_set_new(o, "name", json_string(f->name));
         const fold_refs *r = &s->refs[i];
-        json_object_set_new(o, "fix", r->fix ? json_string(r->fix) : json_integer(f->fixed_face));
+        if (!(f->fix_default && f->fixed_face == ORI_NULL_INDEX)) // an unresolved default: no "fix", as read
+            json_object_set_new(o, "fix", r->fix ? json_string(r->fix) : json_integer(f->fixed_face));
         if (f->targets) {
             json_object_set_new(o, "percent", json_real(100.0 * f->fraction));
         } else {
@@ -471,25 +476,35 @@ static ori_status ori__sequence_target_fold(ori_record *r, int i, const ori_sequ
         ori_error_format(&e, msg, sizeof msg);
         return ori__fail_at(error, st, "folds", i, "%s", msg);
     }
+    // The same engine, the same verdict as orikin fold --percent: a motion against the assignment
+    // is invalid (nothing of it recorded, as for a drive); one that stops short of its fraction is
+    // blocked, recorded up to its stop (its frames, t the fraction of the planned fold reached).
+    int nf = ori_multifold_frame_count(mf);
+    bool partial = false;
     if (ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED) {
-        r->verdict = ORI_MOTION_BLOCKED;
+        bool invalid = ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_INVALID_ASSIGNMENT;
+        r->verdict = invalid ? ORI_MOTION_INVALID_ASSIGNMENT : ORI_MOTION_BLOCKED;
         r->failed = i;
         r->reason = ori__strdup(ori_multifold_reason(mf));
-        ori_multifold_destroy(mf);
-        return ORI_OK;
+        partial = !invalid && nf > 1;
+        if (!partial) {
+            ori_multifold_destroy(mf);
+            return ORI_OK;
+        }
     }
-    int nf = ori_multifold_frame_count(mf);
     record_fold *rf = &r->run[i];
     rf->fixed_pose = pose;
+    // t = i + s, s the progress over the fraction asked for (the fold's own 0 … 1).
     rf->from_rad = 0.0;
-    rf->to_rad = 1.0;
+    rf->to_rad = f->fraction;
     rf->first_frame = r->frame_count;
     for (int k = i > 0 ? 1 : 0; k < nf; ++k) {
         double pr = ori_multifold_frame_progress(mf, k);
         ori_multifold_frame_vertices(mf, k, pos);
-        record_state(r, fold_time(i, 0.0, 1.0, pr), i, pr, ori_multifold_frame_angles(mf, k), pos,
+        record_state(r, fold_time(i, 0.0, f->fraction, pr), i, pr, ori_multifold_frame_angles(mf, k), pos,
                      ori_multifold_frame_residual(mf, k));
     }
+    if (partial) r->partial_frames = r->frame_count - rf->first_frame;
     if (i > 0) rf->first_frame -= 1;
     memcpy(angles, ori_multifold_frame_angles(mf, nf - 1), sizeof(double) * (size_t)r->edge_count);
     ori_mechanism_face_poses(r->mechanism, angles, f->fixed_face, pose, poses);
@@ -528,6 +543,10 @@ ori_status ori_sequence_run_progress(const ori_sequence *s, const ori_mechanism 
         const fold_refs *r = &s->refs[i];
         const char *ref = r->fix ? r->fix : r->drive;
         for (int k = 0; !ref && k < s->folds[i].locked_count; ++k) ref = r->lock[k];
+        if (!ref && s->folds[i].fix_default && s->folds[i].fixed_face == ORI_NULL_INDEX)
+            return ori__fail_at(error, ORI_ERR_ARGUMENT, "folds", i,
+                                "no \"fix\": the face at the sheet's centre is found against the pattern "
+                                "(ori_sequence_resolve first)");
         if (ref)
             return ori__fail_at(error, ORI_ERR_ARGUMENT, "folds", i,
                                 "\"%s\" names a face or crease by name or point: resolve it against the pattern "
@@ -753,12 +772,18 @@ ori_status ori_record_at(const ori_record *r, double t, double *angles, ori_v3 *
 {
     ORI_ASSERT(r && angles);
     ori_error_clear(error);
-    if (r->completed == 0 || !(t >= 0.0 && t <= (double)r->completed))
-        return ori__fail(error, ORI_ERR_RANGE, "time %g is outside [0, %d]", t, r->completed);
+    // A blocked fold's partial frames (up to its stop) can be restored too: the collision check
+    // of a sequence bisects between them.
+    bool partial = r->partial_frames > 0 && r->failed != ORI_NULL_INDEX && r->frame_count > 0;
+    double end = partial ? fmax((double)r->completed, r->times[r->frame_count - 1]) : (double)r->completed;
+    if ((r->completed == 0 && !partial) || !(t >= 0.0 && t <= end))
+        return ori__fail(error, ORI_ERR_RANGE, "time %g is outside [0, %.17g]", t, end);
     // fold j holds t ∈ [j, j + 1]; an integer t ≥ 1 is the end of fold t − 1
     int j = (int)floor(t);
     if (j > 0 && (double)j == t) j -= 1;
-    if (j >= r->completed) j = r->completed - 1;
+    int last_fold = partial ? r->failed : r->completed - 1;
+    if (j > last_fold) j = last_fold;
+    if (j < 0) j = 0;
     const record_fold *rf = &r->run[j];
     double s = t - (double)j;
     double target = rf->from_rad + s * (rf->to_rad - rf->from_rad);

@@ -16,7 +16,7 @@ await run('sequence_percent', SEQ, async ({ page }) => {
   await idle(page);
   const items = await page.$$eval('#folds li', (els) => els.map((e) => e.textContent));
   assert(items.length === 1, `the folds list shows the sequence's fold (got ${items.length})`);
-  assert(items[0].includes('100 % toward its target'), `the fold is named as a fold toward the targets (${items[0]})`);
+  assert(items[0].includes('100 % of the way toward the targets'), `the fold is named as a fold toward the targets (${items[0]})`);
   for (const t of ['0.5', '0.25', '1']) {
     await page.fill('#t-value', t);
     await page.press('#t-value', 'Enter');

@@ -856,7 +856,7 @@ function renderFolds() {
     const li = document.createElement('li');
     const failed = r && r.failed_fold === i + 1;
     li.className = failed ? 'failed' : '';
-    const what = f.percent !== undefined ? `every crease ${fmt(f.percent)} % toward its target` : `drive ${f.drive} to ${fmt(f.to)}°`;
+    const what = f.percent !== undefined ? `${fmt(f.percent)} % of the way toward the targets` : `drive ${f.drive} to ${fmt(f.to)}°`;
     li.textContent = `${f.name ? f.name + ': ' : ''}fix ${f.fix}, ${what}, step ${fmt(f.step)}°` +
       (f.lock && f.lock.length ? `, lock ${f.lock.join(',')}` : '') + (f.from !== undefined ? `, from ${fmt(f.from)}°` : '') +
       (failed ? ` — ${r.verdict}` : '');
