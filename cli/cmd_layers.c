@@ -12,6 +12,7 @@
 
 #include "cli.h"
 #include "progress.h"
+#include "report.h"
 
 #define CMD "layers"
 
@@ -73,13 +74,6 @@ static bool is_decimal(const char *s)
     for (const char *p = s; *p; ++p)
         if (*p < '0' || *p > '9') return false;
     return true;
-}
-
-static json_t *count_json(const char *decimal)
-{
-    uint64_t v;
-    if (parse_u64(decimal, &v) && v <= (uint64_t)INT64_MAX) return json_integer((json_int_t)v);
-    return json_string(decimal);
 }
 
 // After --tolerance left the coordinates undecided: the value chosen from the drawing, when
@@ -303,49 +297,7 @@ static int run(int argc, char **argv)
     if (count_only && !json) {
         printf("%s%s%s%s\n", states, info.limited ? " (" : "", info.limited ? why : "", info.limited ? ")" : "");
     } else if (json) {
-        json_t *o = json_object();
-        json_object_set_new(o, "states", json_string(states));
-        json_t *comps = json_array();
-        if (!unsat || conf.constraint == ORI_LAYERS_EXHAUSTED)
-            for (int c = 0; c < ori_layers_component_count(L); ++c) {
-                char *n = ori_layers_component_states(L, c);
-                json_array_append_new(comps, count_json(n));
-                ori_buffer_free(n);
-            }
-        json_object_set_new(o, "components", comps);
-        json_object_set_new(o, "faces", json_integer(info.faces));
-        json_object_set_new(o, "variables", json_integer(info.variables));
-        json_t *cons = json_object();
-        json_object_set_new(cons, "taco_taco", json_integer(info.taco_taco));
-        json_object_set_new(cons, "taco_tortilla", json_integer(info.taco_tortilla));
-        json_object_set_new(cons, "tortilla_tortilla", json_integer(info.tortilla_tortilla));
-        json_object_set_new(cons, "transitivity", json_integer(info.transitivity));
-        json_object_set_new(o, "constraints", cons);
-        json_object_set_new(o, "tolerance", json_real(info.tolerance));
-        json_object_set_new(o, "tolerance_source", json_string(info.tolerance_from_drawing ? "drawing" : "option"));
-        json_t *noise = json_object();
-        json_object_set_new(noise, "length", json_real(info.noise_length));
-        json_object_set_new(noise, "angle", json_real(info.noise_angle));
-        json_object_set_new(o, "drawing_noise", noise);
-        if (unsat) {
-            json_t *u = json_object();
-            json_object_set_new(u, "constraint", json_string(ori_layers_constraint_name(conf.constraint)));
-            json_t *fa = json_array();
-            if (conf.face_count > 0)
-                for (int i = 0; i < conf.face_count; ++i) json_array_append_new(fa, json_integer(conf.faces[i]));
-            else
-                for (int i = 0; i < nconf; ++i) json_array_append_new(fa, json_integer(conf_faces[i]));
-            json_object_set_new(u, "faces", fa);
-            json_t *inv = json_array();
-            for (int i = 0; i < nconf; ++i) json_array_append_new(inv, json_integer(conf_faces[i]));
-            json_object_set_new(u, "involved_faces", inv);
-            if (conf.vertex != ORI_NULL_INDEX) json_object_set_new(u, "vertex", json_integer(conf.vertex));
-            json_object_set_new(u, "detail", json_string(conf.detail));
-            json_object_set_new(o, "unsatisfiable", u);
-        } else
-            json_object_set_new(o, "unsatisfiable", json_null());
-        if (limit != ORI_LAYERS_NO_LIMIT || seen_timeout) json_object_set_new(o, "limited", json_boolean(info.limited));
-        if (seen_timeout) json_object_set_new(o, "timed_out", json_boolean(info.stopped));
+        json_t *o = cli_layers_count_json(L, limit != ORI_LAYERS_NO_LIMIT, seen_timeout);
         if (state && want_state) {
             json_object_set_new(o, "state", json_string(k));
             int nv = ori_layers_face_orders(L, NULL, 0);

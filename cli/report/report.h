@@ -6,7 +6,8 @@
 // Functions: cli_collision_check_motion, cli_collision_check_record, cli_collides,
 // cli_collide_frames, cli_collision_json, cli_collision_describe, cli_check_run, cli_check_json,
 // cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json, cli_lock_text,
-// cli_lock_hint, cli_fold_rounding_hint, cli_fold_json, cli_record_json, cli_collide_json.
+// cli_lock_hint, cli_fold_rounding_hint, cli_fold_json, cli_record_json, cli_collide_json,
+// cli_layers_count_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -119,5 +120,12 @@ void cli_lock_text(const int *locks, int n, char *buf, size_t size);
 // at def's start angles), as that text into buf (empty when none is found), and as a new JSON
 // array in *locks when locks is not NULL (untouched then). Returns the count, or −1.
 int cli_lock_hint(const ori_mechanism *m, const ori_motion_def *def, char *buf, size_t size, json_t **locks);
+
+// --- layer orders (orikin layers --json, orikin-layers-mpi --json) ------------------------
+
+// A counted layer problem as JSON: states, components, faces, variables, constraints,
+// tolerance, tolerance_source, drawing_noise, unsatisfiable, and "limited" (budget_given: a
+// --limit or --timeout was given) and "timed_out" (timeout_given). New reference.
+json_t *cli_layers_count_json(const ori_layers *L, bool budget_given, bool timeout_given);
 
 #endif

@@ -19,6 +19,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "report.h"
+
 #define PROG "orikin-layers-mpi"
 
 // Exit codes (as cli/cli.h).
@@ -187,13 +189,6 @@ static double *read_transforms(ori_fold *doc, int frame, int nf, const char *pat
     return t;
 }
 
-static json_t *count_json(const char *decimal)
-{
-    uint64_t v;
-    if (parse_u64(decimal, &v) && v <= (uint64_t)INT64_MAX) return json_integer((json_int_t)v);
-    return json_string(decimal);
-}
-
 // What `orikin layers FILE --count [--json]` prints (cli/cmd_layers.c; the test compares them).
 static int print_result(const ori_layers *L, bool json, bool limit_given)
 {
@@ -206,51 +201,7 @@ static int print_result(const ori_layers *L, bool json, bool limit_given)
         ori_buffer_free(states);
         return unsat ? EXIT_NEGATIVE : info.limited ? EXIT_PARTIAL : EXIT_OK;
     }
-    int nconf = unsat ? ori_layers_conflict_faces(L, NULL, 0) : 0;
-    int *conf_faces = malloc(sizeof(int) * (size_t)(nconf ? nconf : 1));
-    if (unsat) ori_layers_conflict_faces(L, conf_faces, nconf);
-    json_t *o = json_object();
-    json_object_set_new(o, "states", json_string(states));
-    json_t *comps = json_array();
-    if (!unsat || conf.constraint == ORI_LAYERS_EXHAUSTED)
-        for (int c = 0; c < ori_layers_component_count(L); ++c) {
-            char *n = ori_layers_component_states(L, c);
-            json_array_append_new(comps, count_json(n));
-            ori_buffer_free(n);
-        }
-    json_object_set_new(o, "components", comps);
-    json_object_set_new(o, "faces", json_integer(info.faces));
-    json_object_set_new(o, "variables", json_integer(info.variables));
-    json_t *cons = json_object();
-    json_object_set_new(cons, "taco_taco", json_integer(info.taco_taco));
-    json_object_set_new(cons, "taco_tortilla", json_integer(info.taco_tortilla));
-    json_object_set_new(cons, "tortilla_tortilla", json_integer(info.tortilla_tortilla));
-    json_object_set_new(cons, "transitivity", json_integer(info.transitivity));
-    json_object_set_new(o, "constraints", cons);
-    json_object_set_new(o, "tolerance", json_real(info.tolerance));
-    json_object_set_new(o, "tolerance_source", json_string(info.tolerance_from_drawing ? "drawing" : "option"));
-    json_t *noise = json_object();
-    json_object_set_new(noise, "length", json_real(info.noise_length));
-    json_object_set_new(noise, "angle", json_real(info.noise_angle));
-    json_object_set_new(o, "drawing_noise", noise);
-    if (unsat) {
-        json_t *u = json_object();
-        json_object_set_new(u, "constraint", json_string(ori_layers_constraint_name(conf.constraint)));
-        json_t *fa = json_array();
-        if (conf.face_count > 0)
-            for (int i = 0; i < conf.face_count; ++i) json_array_append_new(fa, json_integer(conf.faces[i]));
-        else
-            for (int i = 0; i < nconf; ++i) json_array_append_new(fa, json_integer(conf_faces[i]));
-        json_object_set_new(u, "faces", fa);
-        json_t *inv = json_array();
-        for (int i = 0; i < nconf; ++i) json_array_append_new(inv, json_integer(conf_faces[i]));
-        json_object_set_new(u, "involved_faces", inv);
-        if (conf.vertex != ORI_NULL_INDEX) json_object_set_new(u, "vertex", json_integer(conf.vertex));
-        json_object_set_new(u, "detail", json_string(conf.detail));
-        json_object_set_new(o, "unsatisfiable", u);
-    } else
-        json_object_set_new(o, "unsatisfiable", json_null());
-    if (limit_given) json_object_set_new(o, "limited", json_boolean(info.limited));
+    json_t *o = cli_layers_count_json(L, limit_given, false);
     // numbers in their shortest exact form, as every orikin --json prints them
     char *raw = json_dumps(o, JSON_COMPACT | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(17));
     char *text = raw ? ori_json_normalize(raw, false, NULL) : NULL;
@@ -258,7 +209,6 @@ static int print_result(const ori_layers *L, bool json, bool limit_given)
     free(raw);
     ori_buffer_free(text);
     json_decref(o);
-    free(conf_faces);
     ori_buffer_free(states);
     return unsat ? EXIT_NEGATIVE : info.limited ? EXIT_PARTIAL : EXIT_OK;
 }
