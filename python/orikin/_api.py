@@ -487,8 +487,8 @@ class Pattern:
 
         Patterns with several degrees of freedom (docs/kinematics.md §16):
           percent   fold every crease toward its target (edges_foldAngle or SVG opacity; +-180
-                    by assignment where absent), by projecting onto the rigid motions: percent
-                    (0-100) of the way along the motion toward the 100 % targets (progress
+                    by assignment where absent), by projecting onto the rigid motions: percent of the way
+                    (0-100) along the motion toward the 100 % targets (progress
                     1 - D/D0, D the distance to the targets; Origami Simulator's slider, the CLI's
                     --percent); motion.creases tells how far each got
           drive=[e1, e2, ...], to=[a1, a2, ...]   drive several creases together (the rest solved)
