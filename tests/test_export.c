@@ -881,3 +881,45 @@ Test(export, bad_parameters_are_refused_and_nothing_written)
     ori_mesh_destroy(m);
     state_free(&s);
 }
+
+// --- reading thick exports back ---------------------------------------------------------------
+
+// orikin's mesh reader sees that a thick export is separate panel solids, and says so in one
+// line naming the fix; the thin export of the same state reads back to the same area.
+Test(export, thick_exports_are_named_and_refused_by_the_mesh_reader)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    char *dir = test_tmpdir(), path[512];
+    const char *names[3] = {"thick.stl", "thick.obj", "thin.obj"};
+    for (int i = 0; i < 3; ++i) {
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        ori_export_def d = ori_default_export_def();
+        d.thickness = i < 2 ? 0.05 : 0.0;
+        ori_error err;
+        cr_assert_eq(ori_mesh_export_file(m, &d, path, &err), ORI_OK, "%s", err.message);
+        char *text = slurp(path);
+        if (i < 2) {
+            cr_assert(strstr(text, ORI_THICK_PANEL_TAG " 0.05"), "%s names its thick panels", names[i]);
+            cr_assert(strstr(text, i == 0 ? "solid orikin_thick_panel_0 " : "\no panel_0\n"), "%s", names[i]);
+        }
+        free(text);
+        ori_mesh *u = NULL;
+        ori_status st = ori_unfold_load_mesh(path, &u, &err);
+        if (i < 2) {
+            cr_assert_eq(st, ORI_ERR_UNSUPPORTED, "%s", names[i]);
+            cr_assert(strstr(err.message, "thick export") && strstr(err.message, "without --thickness") &&
+                          !strchr(err.message, '\n'),
+                      "%s", err.message);
+        } else {
+            cr_assert_eq(st, ORI_OK, "%s", err.message);
+            // The two-sided sheet reads as its front: the sheet's faces (coplanar ones merged).
+            cr_assert_geq(ori_unfold_mesh_face_count(u), 1);
+            cr_assert_leq(ori_unfold_mesh_face_count(u), ori_pattern_face_count(s.p));
+            ori_unfold_mesh_destroy(u);
+        }
+    }
+    test_tmpdir_remove(dir);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}

@@ -303,8 +303,10 @@ static void write_obj(const ori_mesh *m, const ori_export_def *def, ori__text *t
     }
     ori__xmesh x;
     ori__xmesh_build(m, def, false, &x);
-    ori__text_printf(t, "%s %.17g: %d separate closed panel solids (objects panel_K), %d offset by their layer\n",
-                     ORI_THICK_PANEL_TAG, def->thickness, x.panel_count, x.stacked_panels);
+    ori__text_printf(t, "# %s ", ORI_THICK_PANEL_TAG);
+    ori__text_real(t, def->thickness);
+    ori__text_printf(t, ": %d separate closed panel solids (objects panel_K), %d offset by their layer\n", x.panel_count,
+                     x.stacked_panels);
     for (int i = 0; i < ORI__PART_COUNT; ++i)
         for (int v = 0; v < x.part[i].vcount; ++v) {
             ori__text_puts(t, "v ");
@@ -361,7 +363,9 @@ static void write_stl(const ori_mesh *m, const ori_export_def *def, ori__text *t
         ori__text_puts(t, "endsolid orikin\n");
     } else {
         for (int q = 0; q < x.panel_count; ++q) {
-            ori__text_printf(t, "solid orikin_thick_panel_%d %s %.17g\n", q, ORI_THICK_PANEL_TAG, def->thickness);
+            ori__text_printf(t, "solid orikin_thick_panel_%d %s ", q, ORI_THICK_PANEL_TAG);
+            ori__text_real(t, def->thickness);
+            ori__text_puts(t, "\n");
             for (int i = 0; i < ORI__PART_COUNT; ++i)
                 for (int tr = 0; tr < x.part[i].tcount; ++tr)
                     if (x.part[i].panel[tr] == q)
@@ -381,10 +385,15 @@ static void write_ply(const ori_mesh *m, const ori_export_def *def, ori__text *t
 {
     ori__xmesh x;
     ori__xmesh_build(m, def, false, &x);
-    char thick[160] = "";
-    if (def->thickness > 0.0)
-        snprintf(thick, sizeof thick, "comment %s %.17g: %d separate closed panel solids (face property panel)\n",
-                 ORI_THICK_PANEL_TAG, def->thickness, x.panel_count);
+    char thick[200] = "";
+    if (def->thickness > 0.0) {
+        ori__text tt = {NULL, 0, 0};
+        ori__text_reserve(&tt, 0);
+        ori__text_real(&tt, def->thickness);
+        snprintf(thick, sizeof thick, "comment %s %.*s: %d separate closed panel solids (face property panel)\n",
+                 ORI_THICK_PANEL_TAG, (int)tt.len, tt.data, x.panel_count);
+        ori__free(tt.data);
+    }
     int nv = 0, nt = 0;
     for (int i = 0; i < ORI__PART_COUNT; ++i) {
         nv += x.part[i].vcount;
