@@ -136,7 +136,7 @@ static int run(int argc, char **argv)
                area);
         if (thickness > 0.0) {
             printf(", %d closed offset panel solids %g thick, volume %.10g", thick.panels, thickness, area * thickness);
-            if (thick.stacked) printf(", %d panels stacked flat offset by their layer", thick.stacked);
+            if (thick.stacked) printf(", %d panels stacked flat, lifted by their layer", thick.stacked);
             if (thick.front) printf(", %d on the front side", thick.front);
             if (thick.overlapping) printf(", %d triangle pairs still overlapping", thick.overlapping);
         }

@@ -285,7 +285,7 @@ typedef struct ori_export_def {
 /// What a thick export makes of a posed mesh (ori_mesh_thick_panels).
 typedef struct ori_thick_info {
     int panels;      ///< closed panel solids (flat regions of the sheet)
-    int stacked;     ///< panels sharing a plane with another, offset by their layer
+    int stacked;     ///< panels lifted by their layer onto (a slab above) another panel of their plane that they overlap
     int front;       ///< panels put on the front side of the sheet because their back side would overlap another panel
     int overlapping; ///< pairs of panel triangles (as prisms) whose interiors still overlap; 0 when every panel is clear
 } ori_thick_info;

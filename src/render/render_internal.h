@@ -60,7 +60,7 @@ typedef struct ori__solid {
     int *tri_face;       // FOLD face of a top/bottom triangle; the face beside a rim triangle
     int *tri_panel;      // panel (closed solid) of every triangle, 0 … panel_count − 1
     int panel_count;     // closed panel solids
-    int stacked_panels;  // panels sharing a plane with another, offset by their layer
+    int stacked_panels;  // panels lifted by their layer onto another panel of their plane
     int front_panels;    // panels put on the front side of the sheet (their back would overlap)
     int overlapping_pairs; // triangle prisms of different panels still overlapping (0 when solved)
 } ori__solid;

@@ -9,9 +9,10 @@
 // normal), so the hinge of a valley fold lies on the valley (front) surface and two panels of a
 // valley fold meet there instead of overlapping in a wedge. Panels lying in one plane (folded
 // flat onto each other, fold angles ±180) are stacked: sorted by their layer (the layer order of
-// render's stacking along the fold tree, or FOLD faceOrders when given), the k-th from the bottom
-// of a plane takes the k-th slab of thickness t along the plane's normal, so stacked panels touch
-// and never interpenetrate. The zero-thickness poses are unchanged; only the offsets differ.
+// render's stacking along the fold tree, or FOLD faceOrders when given), each takes the slab of
+// thickness t just above the highest lower panel of its plane that it overlaps, so stacked panels
+// touch and never interpenetrate. A plane's panels go on the front side instead where their back
+// would overlap another panel (a greedy search by separating axes). The zero-thickness poses are unchanged; only the offsets differ.
 #include <math.h>
 #include <stdlib.h>
 
@@ -297,6 +298,18 @@ void ori__solid_build(const ori_mesh *m, double thickness, const int *face_order
     panel_key *keys = ori__alloc(sizeof(panel_key) * (size_t)(np + 1));
     s->panel_count = np;
     s->stacked_panels = 0;
+    // Triangles by panel, placed in their plane (offset 0), for testing which panels of a plane
+    // overlap there.
+    int nt = m->tri_count;
+    int *tp_start = ori__calloc((size_t)np + 2, sizeof(int));
+    int *tp = ori__alloc(sizeof(int) * (size_t)(nt + 1));
+    for (int t = 0; t < nt; ++t) tp_start[panel_of[m->tris[t].face] + 1]++;
+    for (int q = 0; q < np; ++q) tp_start[q + 1] += tp_start[q];
+    int *tp_fill = ori__alloc(sizeof(int) * (size_t)(np + 1));
+    memcpy(tp_fill, tp_start, sizeof(int) * (size_t)(np + 1));
+    for (int t = 0; t < nt; ++t) tp[tp_fill[panel_of[m->tris[t].face]]++] = t;
+    ori__free(tp_fill);
+    double eps = 1e-9 * m->ref_diag;
     for (int r = 0; r < np; ++r) {
         if (plane_of[r] != r) continue;
         int k = 0;
@@ -306,14 +319,34 @@ void ori__solid_build(const ori_mesh *m, double thickness, const int *face_order
         bool up = ori_v3_dot(pn[keys[0].panel], pn[r]) > 0;
         base_back[r] = up ? -thickness : 0.0;
         flip[r] = up ? thickness : -thickness;
-        for (int i = 0; i < k; ++i) rank[keys[i].panel] = i;
-        if (k > 1) s->stacked_panels += k;
+        // Bottom to top, each panel takes the slab just above the highest earlier panel of the
+        // plane it overlaps (panels side by side in a plane keep the same slab).
+        for (int i = 0; i < k; ++i) {
+            int q = keys[i].panel;
+            rank[q] = 0;
+            for (int j = 0; j < i; ++j) {
+                int o = keys[j].panel;
+                if (rank[o] + 1 <= rank[q]) continue;
+                bool hit = false;
+                for (int a = tp_start[q]; a < tp_start[q + 1] && !hit; ++a)
+                    for (int c = tp_start[o]; c < tp_start[o + 1] && !hit; ++c) {
+                        prism pa, pc;
+                        prism_place(m, &m->tris[tp[a]], pn[r], 0.0, thickness, &pa);
+                        prism_place(m, &m->tris[tp[c]], pn[r], 0.0, thickness, &pc);
+                        hit = prisms_overlap(&pa, &pc, eps);
+                    }
+                if (hit) rank[q] = rank[o] + 1;
+            }
+        }
+        int lifted = 0;
+        for (int i = 0; i < k; ++i) lifted += rank[keys[i].panel] > 0;
+        s->stacked_panels += lifted;
     }
+    ori__free(tp_start);
+    ori__free(tp);
     for (int q = 0; q < np; ++q) lo[q] = base_back[plane_of[q]] + rank[q] * thickness;
     // Side search: flip a plane's panels to the front while that removes overlaps.
-    int nt = m->tri_count;
     prism *P = ori__alloc(sizeof(prism) * (size_t)(nt + 1));
-    double eps = 1e-9 * m->ref_diag;
     for (int t = 0; t < nt; ++t) {
         int q = panel_of[m->tris[t].face];
         prism_place(m, &m->tris[t], pn[plane_of[q]], lo[q], thickness, &P[t]);
