@@ -923,3 +923,25 @@ Test(export, thick_exports_are_named_and_refused_by_the_mesh_reader)
     ori_mesh_destroy(m);
     state_free(&s);
 }
+
+// The CLI: the folded open corner at 180° exported thick says what it did (4 panels, 1 lifted by
+// its layer, none overlapping), and orikin unfold refuses the file in one line, exit 3.
+Test(export, cli_thick_export_summary_and_unfold_refusal)
+{
+    char *dir = test_tmpdir(), args[1024], *out = NULL;
+    snprintf(args, sizeof args,
+             "fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 180 -o '%s/oc.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "export '%s/oc.fold' --frame 19 --thickness 0.05 --json -o '%s/oc.stl'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "\"panels\":4") && strstr(out, "\"stacked_panels\":1") && strstr(out, "\"overlapping\":0"), "%s",
+              out);
+    free(out);
+    snprintf(args, sizeof args, "unfold '%s/oc.stl' -o '%s/net.svg'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    char *nl = strchr(out, '\n');
+    cr_assert(strstr(out, "thick export") && strstr(out, "without --thickness") && nl && nl[1] == '\0', "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
+}
