@@ -99,7 +99,12 @@ static int run(int argc, char **argv)
     }
     def.format = format;
     def.thickness = thickness;
-    ori_status s = ori_mesh_export_file(mesh, &def, out, &err);
+    def.face_orders = st.face_orders; // the frame's layer order ranks the panels stacked flat
+    def.face_order_count = st.face_order_count;
+    ori_thick_info thick;
+    memset(&thick, 0, sizeof thick);
+    ori_status s = thickness > 0.0 ? ori_mesh_thick_panels(mesh, &def, &thick, &err) : ORI_OK;
+    if (s == ORI_OK) s = ori_mesh_export_file(mesh, &def, out, &err);
     if (s != ORI_OK) {
         rc = cli_input_error(cmd, s == ORI_ERR_IO ? out : sa.path, &err);
         goto done;
@@ -116,6 +121,10 @@ static int run(int argc, char **argv)
         json_object_set_new(o, "area", json_real(area));
         json_object_set_new(o, "thickness", json_real(thickness));
         json_object_set_new(o, "volume", thickness > 0.0 ? json_real(area * thickness) : json_null());
+        json_object_set_new(o, "panels", thickness > 0.0 ? json_integer(thick.panels) : json_null());
+        json_object_set_new(o, "stacked_panels", thickness > 0.0 ? json_integer(thick.stacked) : json_null());
+        json_object_set_new(o, "front_panels", thickness > 0.0 ? json_integer(thick.front) : json_null());
+        json_object_set_new(o, "overlapping", thickness > 0.0 ? json_integer(thick.overlapping) : json_null());
         json_object_set_new(o, "keyframes", json_integer(animate ? m.count : 0));
         json_object_set_new(o, "duration_s", animate ? json_real(m.times[m.count - 1] - m.times[0]) : json_null());
         cli_print_json(o);
@@ -125,7 +134,12 @@ static int run(int argc, char **argv)
     } else {
         printf("wrote %s: %s of %s, %d triangles per side, area %.10g", out, st.label, sa.path, ori_mesh_triangle_count(mesh),
                area);
-        if (thickness > 0.0) printf(", closed solid %g thick, volume %.10g", thickness, area * thickness);
+        if (thickness > 0.0) {
+            printf(", %d closed offset panel solids %g thick, volume %.10g", thick.panels, thickness, area * thickness);
+            if (thick.stacked) printf(", %d panels stacked flat, lifted by their layer", thick.stacked);
+            if (thick.front) printf(", %d on the front side", thick.front);
+            if (thick.overlapping) printf(", %d triangle pairs still overlapping", thick.overlapping);
+        }
         printf(" (%s)\n", ori_mesh_format_name(format));
         if (format == ORI_MESH_OBJ) printf("wrote its materials (front, back%s) beside it, .mtl\n", thickness > 0.0 ? ", rim" : "");
     }
@@ -149,8 +163,12 @@ const cli_command cli_cmd_export = {
     "vertex i = FOLD vertex i-1; PLY properties fold_vertex and fold_face; glTF extras).\n"
     "Coordinates are exact: the text formats write the shortest decimal that reads back to the\n"
     "posed double, glTF adds the attribute _POSITION_LO to its 32-bit POSITION. --thickness T\n"
-    "offsets both sides by T/2 into closed thick panels (one slab per flat region, walls where it\n"
-    "ends; every edge shared by two triangles; volume = area x T), for 3D printing. --animate\n"
+    "writes separate closed offset panel solids (one per flat region, on the back side of the\n"
+    "sheet so that valley hinges lie on the front surface, or on its front where the back would\n"
+    "overlap; panels stacked flat at +-180 deg are lifted by their layer, from faceOrders or the\n"
+    "fold tree, so they do not interpenetrate; --json counts what was done and what overlaps;\n"
+    "every edge of a panel shared by two of its triangles; volume = area x T), for 3D printing;\n"
+    "the file names them (OBJ objects panel_K, STL solids orikin_thick_panel_K). --animate\n"
     "writes the whole motion (a fold's steps, a sequence's recorded states, or a FOLD file's\n"
     "frames) as a glTF animation: one node per face, rotation and translation keyframes from the\n"
     "exact face poses, one second per fold.\n"
@@ -168,7 +186,8 @@ const cli_command cli_cmd_export = {
     "  --front COLOR        material of the front side (default #e8a33d)\n"
     "  --back COLOR         material of the back side (default #f3efe4)\n"
     "  --json               print {output, format, state, vertices, faces, triangles, area,\n"
-    "                       thickness, volume, keyframes, duration_s}\n"
+    "                       thickness, volume, panels, stacked_panels, front_panels,\n"
+    "                       overlapping, keyframes, duration_s}\n"
     "  -o OUT               the mesh; its format by the suffix .obj, .stl, .ply, .gltf or .glb\n"
     "                       (an OBJ comes with its materials in OUT.mtl beside it)\n"
     "\n"

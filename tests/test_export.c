@@ -214,7 +214,9 @@ Test(export, obj_files_name_their_material_library_and_it_defines_every_material
             cr_assert(strstr(l, want), "%s is defined", line + 7);
             used++;
         }
-        cr_assert_eq(used, solid ? 3 : 2);
+        // The sheet: front and back; the thick panels: front, back and rim in each panel.
+        if (solid) cr_assert(used >= 3 && used % 3 == 0, "%d usemtl lines", used);
+        else cr_assert_eq(used, 2);
         cr_assert(strstr(l, "newmtl front\nKa 1 0 0\nKd 1 0 0\n"), "%s", l);
         cr_assert(strstr(l, "newmtl back\nKa 0 0 1\nKd 0 0 1\n"), "%s", l);
         free(o);
@@ -372,8 +374,33 @@ static double volume(const stl *st)
     return v;
 }
 
-// The thickened sheet is a closed, watertight solid whose volume is area × thickness to 1e-9:
-// a flat sheet, the open corner folded 60°, a folded Miura-ori, a non-convex sheet.
+// The solids of a thick STL: one "solid … endsolid" block each.
+static int stl_solids(const char *text, stl **out)
+{
+    int n = 0;
+    *out = NULL;
+    for (const char *p = text; (p = strstr(p, "solid ")) != NULL;) {
+        if (p != text && p[-1] != '\n') { // "endsolid …"
+            p += 6;
+            continue;
+        }
+        const char *end = strstr(p, "endsolid");
+        cr_assert(end, "a solid without endsolid");
+        size_t len = (size_t)(end - p);
+        char *block = malloc(len + 1);
+        memcpy(block, p, len);
+        block[len] = '\0';
+        *out = realloc(*out, sizeof(stl) * (size_t)(n + 1));
+        (*out)[n++] = parse_stl(block);
+        free(block);
+        p = end + 8;
+    }
+    return n;
+}
+
+// Every thick solid is a set of closed panel solids, each watertight (each edge in exactly two
+// of its triangles, consistently oriented), whose volumes sum to area × thickness to 1e-9: a
+// flat sheet, the open corner folded 60°, a folded Miura-ori, a non-convex sheet.
 Test(export, thick_stl_is_watertight_with_the_right_volume)
 {
     state states[4] = {flat_state(test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0)), corner_60(),
@@ -384,14 +411,122 @@ Test(export, thick_stl_is_watertight_with_the_right_volume)
         double t = 0.05;
         size_t size;
         char *text = export_text(m, ORI_MESH_STL, t, &size);
-        stl st = parse_stl(text);
-        cr_assert_gt(st.n, 0);
-        cr_assert_eq(unmatched_edges(&st), 0, "state %d: the solid has open or non-manifold edges", i);
-        double vol = volume(&st);
+        stl *sol;
+        int n = stl_solids(text, &sol);
+        cr_assert_gt(n, 0);
+        double vol = 0.0;
+        for (int k = 0; k < n; ++k) {
+            cr_assert_gt(sol[k].n, 0);
+            cr_assert_eq(unmatched_edges(&sol[k]), 0, "state %d solid %d: open or non-manifold edges", i, k);
+            double vk = volume(&sol[k]);
+            cr_assert_gt(vk, 0.0, "state %d solid %d: inside out", i, k);
+            vol += vk;
+            free(sol[k].tri);
+        }
+        free(sol);
         cr_assert_leq(fabs(vol - areas[i] * t), 1e-9 * areas[i] * t, "state %d: volume %.17g, area × thickness %.17g", i, vol,
                       areas[i] * t);
-        free(st.tri);
         free(text);
+        ori_mesh_destroy(m);
+        state_free(&states[i]);
+    }
+}
+
+// --- thick panels stacked flat --------------------------------------------------------------------
+
+// Separating-axis test of two convex solids given by their triangles: true when some face
+// normal or edge cross product separates them (touching within eps counts as separate).
+static bool solids_separate(const stl *a, const stl *b, double eps)
+{
+    const stl *s[2] = {a, b};
+    int na = 3 * a->n, nb = 3 * b->n;
+    ori_v3 *axes = malloc(sizeof(ori_v3) * (size_t)(a->n + b->n + na * nb));
+    int n = 0;
+    for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < s[k]->n; ++i)
+            axes[n++] = ori_v3_cross(ori_v3_sub(s[k]->tri[i][1], s[k]->tri[i][0]), ori_v3_sub(s[k]->tri[i][2], s[k]->tri[i][0]));
+    for (int i = 0; i < na; ++i)
+        for (int j = 0; j < nb; ++j) {
+            ori_v3 ea = ori_v3_sub(a->tri[i / 3][(i % 3 + 1) % 3], a->tri[i / 3][i % 3]);
+            ori_v3 eb = ori_v3_sub(b->tri[j / 3][(j % 3 + 1) % 3], b->tri[j / 3][j % 3]);
+            axes[n++] = ori_v3_cross(ea, eb);
+        }
+    bool sep = false;
+    for (int k = 0; k < n && !sep; ++k) {
+        double len = ori_v3_norm(axes[k]);
+        if (!(len > 1e-12)) continue;
+        ori_v3 u = ori_v3_scale(axes[k], 1.0 / len);
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int q = 0; q < 2; ++q)
+            for (int i = 0; i < s[q]->n; ++i)
+                for (int c = 0; c < 3; ++c) {
+                    double d = ori_v3_dot(u, s[q]->tri[i][c]);
+                    lo[q] = fmin(lo[q], d);
+                    hi[q] = fmax(hi[q], d);
+                }
+        sep = hi[0] <= lo[1] + eps || hi[1] <= lo[0] + eps;
+    }
+    free(axes);
+    return sep;
+}
+
+// A Miura-ori of 2 × 2 cells folded flat (180°) by its middle zig-zag crease.
+static state miura_flat(void)
+{
+    ori_pattern *p = test_miura(2, 2, 1.0, 1.0, ori_deg_to_rad(60.0), NULL);
+    int drive = ori_pattern_find_edge(p, 1 * 3 + 1, 2 * 3 + 1);
+    cr_assert_geq(drive, 0);
+    double sg = ori_pattern_edge(p, drive).assignment == ORI_ASSIGN_VALLEY ? 1.0 : -1.0;
+    return fold_state(p, 0, drive, -1, sg * 180.0);
+}
+
+// Issue 24: the open corner folded to 180° (its two triangles stacked) and a Miura folded flat
+// export at t/L = 0.02, 0.05 and 0.1 as closed panel solids (every edge in exactly two triangles
+// of its solid), of volume Σ area × t to 1e-6, no two of them overlapping (separating axes:
+// every panel here is convex), panels in one plane offset by their layer.
+Test(export, thick_panels_stacked_flat_do_not_interpenetrate)
+{
+    test_open_corner c = test_open_corner_load();
+    ori_mechanism_destroy(c.m);
+    // orikin fold open-corner.fold --fix 4 --drive 12 --lock 11 --to 180
+    state states[2] = {fold_state(c.p, 4, 12, 11, 180.0), miura_flat()};
+    double areas[2] = {4.0, 4.0 * sin(ori_deg_to_rad(60.0))};
+    int min_stacked[2] = {1, 1};
+    const double rel[3] = {0.02, 0.05, 0.1};
+    for (int i = 0; i < 2; ++i) {
+        ori_mesh *m = mesh_of(&states[i]);
+        cr_assert_leq(fabs(ori_mesh_area(m) - areas[i]), 1e-9 * areas[i], "state %d: area %.17g", i, ori_mesh_area(m));
+        for (int r = 0; r < 3; ++r) {
+            double t = rel[r]; // L = 1: the side of a cell
+            ori_export_def d = ori_default_export_def();
+            d.thickness = t;
+            ori_thick_info info;
+            ori_error err;
+            cr_assert_eq(ori_mesh_thick_panels(m, &d, &info, &err), ORI_OK, "%s", err.message);
+            cr_assert_eq(info.overlapping, 0, "state %d t %g: %d overlapping pairs", i, t, info.overlapping);
+            cr_assert_geq(info.stacked, min_stacked[i], "state %d: %d panels stacked", i, info.stacked);
+            size_t size;
+            char *text = export_text(m, ORI_MESH_STL, t, &size);
+            cr_assert(strstr(text, ORI_THICK_PANEL_TAG), "the file names its thick panels");
+            stl *sol;
+            int n = stl_solids(text, &sol);
+            cr_assert_eq(n, info.panels);
+            double vol = 0.0;
+            for (int k = 0; k < n; ++k) {
+                cr_assert_eq(unmatched_edges(&sol[k]), 0, "state %d t %g solid %d: open or non-manifold", i, t, k);
+                double vk = volume(&sol[k]);
+                cr_assert_gt(vk, 0.0);
+                vol += vk;
+            }
+            cr_assert_leq(fabs(vol - areas[i] * t), 1e-6 * areas[i] * t, "state %d t %g: volume %.17g vs %.17g", i, t, vol,
+                          areas[i] * t);
+            for (int a = 0; a < n; ++a)
+                for (int b = a + 1; b < n; ++b)
+                    cr_assert(solids_separate(&sol[a], &sol[b], 1e-9), "state %d t %g: panels %d and %d overlap", i, t, a, b);
+            for (int k = 0; k < n; ++k) free(sol[k].tri);
+            free(sol);
+            free(text);
+        }
         ori_mesh_destroy(m);
         state_free(&states[i]);
     }
@@ -745,4 +880,68 @@ Test(export, bad_parameters_are_refused_and_nothing_written)
     cr_assert_eq(access("/nonexistent-dir/x.glb", F_OK), -1);
     ori_mesh_destroy(m);
     state_free(&s);
+}
+
+// --- reading thick exports back ---------------------------------------------------------------
+
+// orikin's mesh reader sees that a thick export is separate panel solids, and says so in one
+// line naming the fix; the thin export of the same state reads back to the same area.
+Test(export, thick_exports_are_named_and_refused_by_the_mesh_reader)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    char *dir = test_tmpdir(), path[512];
+    const char *names[3] = {"thick.stl", "thick.obj", "thin.obj"};
+    for (int i = 0; i < 3; ++i) {
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        ori_export_def d = ori_default_export_def();
+        d.thickness = i < 2 ? 0.05 : 0.0;
+        ori_error err;
+        cr_assert_eq(ori_mesh_export_file(m, &d, path, &err), ORI_OK, "%s", err.message);
+        char *text = slurp(path);
+        if (i < 2) {
+            cr_assert(strstr(text, ORI_THICK_PANEL_TAG " 0.05"), "%s names its thick panels", names[i]);
+            cr_assert(strstr(text, i == 0 ? "solid orikin_thick_panel_0 " : "\no panel_0\n"), "%s", names[i]);
+        }
+        free(text);
+        ori_mesh *u = NULL;
+        ori_status st = ori_unfold_load_mesh(path, &u, &err);
+        if (i < 2) {
+            cr_assert_eq(st, ORI_ERR_UNSUPPORTED, "%s", names[i]);
+            cr_assert(strstr(err.message, "thick export") && strstr(err.message, "without --thickness") &&
+                          !strchr(err.message, '\n'),
+                      "%s", err.message);
+        } else {
+            cr_assert_eq(st, ORI_OK, "%s", err.message);
+            // The two-sided sheet reads as its front: the sheet's faces (coplanar ones merged).
+            cr_assert_geq(ori_unfold_mesh_face_count(u), 1);
+            cr_assert_leq(ori_unfold_mesh_face_count(u), ori_pattern_face_count(s.p));
+            ori_unfold_mesh_destroy(u);
+        }
+    }
+    test_tmpdir_remove(dir);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}
+
+// The CLI: the folded open corner at 180° exported thick says what it did (4 panels, 1 lifted by
+// its layer, none overlapping), and orikin unfold refuses the file in one line, exit 3.
+Test(export, cli_thick_export_summary_and_unfold_refusal)
+{
+    char *dir = test_tmpdir(), args[1024], *out = NULL;
+    snprintf(args, sizeof args,
+             "fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 180 -o '%s/oc.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "export '%s/oc.fold' --frame 19 --thickness 0.05 --json -o '%s/oc.stl'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "\"panels\":4") && strstr(out, "\"stacked_panels\":1") && strstr(out, "\"overlapping\":0"), "%s",
+              out);
+    free(out);
+    snprintf(args, sizeof args, "unfold '%s/oc.stl' -o '%s/net.svg'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    char *nl = strchr(out, '\n');
+    cr_assert(strstr(out, "thick export") && strstr(out, "without --thickness") && nl && nl[1] == '\0', "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
 }

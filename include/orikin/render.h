@@ -13,7 +13,8 @@
 /// ori_camera_fit, ori_camera_project, ori_image_format_from_path, ori_image_format_name,
 /// ori_default_render_def, ori_render_camera, ori_render_image, ori_render_file,
 /// ori_default_gif_def, ori_gif_write, ori_mesh_format_from_path, ori_mesh_format_name,
-/// ori_default_export_def, ori_mesh_export, ori_mesh_export_mtl, ori_mesh_export_file.
+/// ori_default_export_def, ori_mesh_export, ori_mesh_export_mtl, ori_mesh_export_file,
+/// ori_mesh_thick_panels.
 ///
 /// Frames. World coordinates are the pattern's (the flat sheet in z = 0, +z its front side).
 /// Images have x to the right and y downwards, in pixels (PNG, GIF) or points (SVG, PDF).
@@ -266,14 +267,33 @@ ORI_API const char *ori_mesh_format_name(ori_mesh_format format);
 /// Export parameters; get them from ori_default_export_def().
 typedef struct ori_export_def {
     ori_mesh_format format;
-    double thickness;                ///< 0: a two-sided sheet; > 0: a closed solid with both sides offset by thickness/2 (pattern units)
+    double thickness;                ///< 0: a two-sided sheet; > 0: separate closed offset panel solids thickness thick (pattern units; docs/render.md)
     ori_rgb front, back, edge;       ///< materials: front side, back side, the solid's rims
     int keyframe_count;              ///< glTF/GLB: 0 = the current pose; ≥ 1 = an animation, one node per face
     const double *keyframe_times_s;  ///< keyframe_count increasing times (seconds)
     const ori_rigid *keyframe_poses; ///< keyframe_count × face_count poses (keyframe-major) mapping reference positions (ori_mesh_reference_vertex) to world positions
     const char *obj_mtllib;          ///< OBJ: the material library file its "mtllib" line names (NULL: none; ori_mesh_export_file sets it)
+    const int *face_orders;          ///< thick panels: the state's FOLD faceOrders (face_order_count triples f, g, s as in ori_render_def) ranking panels stacked flat; borrowed; NULL: stacking along the fold tree
+    int face_order_count;            ///< number of triples in face_orders
     int internal_value;              ///< set by ori_default_export_def; do not change
 } ori_export_def;
+
+/// The tag a thick export carries (OBJ comment, STL solid names, PLY comment), followed by the
+/// thickness: the file holds separate closed panel solids, not one connected surface.
+#define ORI_THICK_PANEL_TAG "orikin thick panels, thickness"
+
+/// What a thick export makes of a posed mesh (ori_mesh_thick_panels).
+typedef struct ori_thick_info {
+    int panels;      ///< closed panel solids (flat regions of the sheet)
+    int stacked;     ///< panels lifted by their layer onto (a slab above) another panel of their plane that they overlap
+    int front;       ///< panels put on the front side of the sheet because their back side would overlap another panel
+    int overlapping; ///< pairs of panel triangles (as prisms) whose interiors still overlap; 0 when every panel is clear
+} ori_thick_info;
+
+/// What the thick export of the mesh in its current pose makes with def (thickness > 0, its
+/// faceOrders). Fails as ori_mesh_export, and with ORI_ERR_ARGUMENT for a thickness of 0.
+ORI_API ori_status ori_mesh_thick_panels(const ori_mesh *mesh, const ori_export_def *def, ori_thick_info *out,
+                                         ori_error *error);
 
 /// Defaults: glTF, no thickness, the render colours (front, back) and grey rims, no animation.
 ORI_API ori_export_def ori_default_export_def(void);

@@ -99,7 +99,8 @@ ORI_API ori_status ori_unfold_mesh_create(const ori_v3 *coords, int vertex_count
                                           const int *face_vertices, int face_count, ori_mesh **out, ori_error *error);
 /// Load a surface from an OBJ (v, f), STL (ASCII or binary; vertices welded by equal
 /// coordinates) or FOLD (frame 0's 3D vertices_coords and faces_vertices) file, by extension. In
-/// OBJ and STL a face that repeats an earlier one reversed is dropped (two-sided sheets).
+/// OBJ and STL a face that repeats an earlier one reversed is dropped (two-sided sheets). An
+/// orikin thick export (ORI_THICK_PANEL_TAG: separate panel solids) fails with ORI_ERR_UNSUPPORTED.
 ORI_API ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *error);
 /// The convex hull of count ≥ 4 points (qhull, triangulated; coplanar facets then merged) as a
 /// surface. Fails with ORI_ERR_DEGENERATE when qhull cannot build it (all points coplanar).

@@ -55,6 +55,8 @@ ori_export_def ori_default_export_def(void)
     d.keyframe_times_s = NULL;
     d.keyframe_poses = NULL;
     d.obj_mtllib = NULL;
+    d.face_orders = NULL;
+    d.face_order_count = 0;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -63,7 +65,7 @@ ori_export_def ori_default_export_def(void)
 
 typedef struct part_builder {
     ori__xpart *p;
-    int cap_pos, cap_nrm, cap_uv, cap_fv, cap_tri, cap_face;
+    int cap_pos, cap_nrm, cap_uv, cap_fv, cap_tri, cap_face, cap_panel;
 } part_builder;
 
 static int part_vertex(part_builder *b, ori_v3 pos, ori_v3 nrm, ori_v2 uv, int fold_vertex)
@@ -150,13 +152,22 @@ void ori__xmesh_face(const ori_mesh *m, int face, const ori__uv_map *u, ori__xme
 {
     memset(x, 0, sizeof *x);
     x->has_uv = m->has_flat;
-    part_builder bf = {&x->part[ORI__PART_FRONT], 0, 0, 0, 0, 0, 0};
-    part_builder bb = {&x->part[ORI__PART_BACK], 0, 0, 0, 0, 0, 0};
+    part_builder bf = {&x->part[ORI__PART_FRONT], 0, 0, 0, 0, 0, 0, 0};
+    part_builder bb = {&x->part[ORI__PART_BACK], 0, 0, 0, 0, 0, 0, 0};
     sheet_face(m, face, m->ref, ref_normal(m, face), u, &bf, &bb);
 }
 
-void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__xmesh *x)
+// Record the panel of the last triangle of a part.
+static void part_panel(part_builder *b, int panel)
 {
+    ori__xpart *p = b->p;
+    ORI__RESERVE(p->panel, b->cap_panel, p->tcount);
+    p->panel[p->tcount - 1] = panel;
+}
+
+void ori__xmesh_build(const ori_mesh *m, const ori_export_def *def, bool reference, ori__xmesh *x)
+{
+    double thickness = def->thickness;
     memset(x, 0, sizeof *x);
     x->has_uv = m->has_flat;
     ori__uv_map u = ori__uv_of_mesh(m);
@@ -172,7 +183,9 @@ void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__
         return;
     }
     ori__solid s;
-    ori__solid_build(m, thickness, &s);
+    ori__solid_build(m, thickness, def->face_orders, def->face_order_count, &s);
+    x->panel_count = s.panel_count;
+    x->stacked_panels = s.stacked_panels;
     // Top and bottom share their points within a face (smooth per face); rim triangles get
     // their own vertices (flat shading).
     int *map = ori__alloc(sizeof(int) * (size_t)(s.point_count + 1));
@@ -194,6 +207,7 @@ void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__
                 idx[k] = map[q];
             }
             part_tri(&b[part], idx[0], idx[1], idx[2], f);
+            part_panel(&b[part], s.tri_panel[t]);
         }
     }
     for (int t = 0; t < s.tri_count; ++t) {
@@ -206,6 +220,7 @@ void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__
             idx[k] = part_vertex(&b[ORI__PART_RIM], s.points[q], n, uv_at(&u, m->ref[s.point_vertex[q]]), s.point_vertex[q]);
         }
         part_tri(&b[ORI__PART_RIM], idx[0], idx[1], idx[2], s.tri_face[t]);
+        part_panel(&b[ORI__PART_RIM], s.tri_panel[t]);
     }
     ori__free(map);
     ori__free(map_face);
@@ -222,6 +237,7 @@ void ori__xmesh_free(ori__xmesh *x)
         ori__free(p->fold_vertex);
         ori__free(p->tri);
         ori__free(p->fold_face);
+        ori__free(p->panel);
     }
     memset(x, 0, sizeof *x);
 }
@@ -286,8 +302,11 @@ static void write_obj(const ori_mesh *m, const ori_export_def *def, ori__text *t
         return;
     }
     ori__xmesh x;
-    ori__xmesh_build(m, def->thickness, false, &x);
-    ori__text_printf(t, "# closed solid, thickness %.17g; groups front, back and rim\no solid\n", def->thickness);
+    ori__xmesh_build(m, def, false, &x);
+    ori__text_printf(t, "# %s ", ORI_THICK_PANEL_TAG);
+    ori__text_real(t, def->thickness);
+    ori__text_printf(t, ": %d separate closed panel solids (objects panel_K), %d offset by their layer\n", x.panel_count,
+                     x.stacked_panels);
     for (int i = 0; i < ORI__PART_COUNT; ++i)
         for (int v = 0; v < x.part[i].vcount; ++v) {
             ori__text_puts(t, "v ");
@@ -296,40 +315,65 @@ static void write_obj(const ori_mesh *m, const ori_export_def *def, ori__text *t
             put_v3(t, x.part[i].nrm[v]);
             ori__text_puts(t, "\n");
         }
-    int base = 1;
-    for (int i = 0; i < ORI__PART_COUNT; ++i) {
-        if (x.part[i].tcount) ori__text_printf(t, "g %s\nusemtl %s\n", part_name[i], part_name[i]);
-        for (int tr = 0; tr < x.part[i].tcount; ++tr) {
-            int a = base + x.part[i].tri[tr][0], b = base + x.part[i].tri[tr][1], c = base + x.part[i].tri[tr][2];
-            ori__text_printf(t, "f %d//%d %d//%d %d//%d\n", a, a, b, b, c, c);
+    for (int q = 0; q < x.panel_count; ++q) {
+        ori__text_printf(t, "o panel_%d\n", q);
+        int base = 1;
+        for (int i = 0; i < ORI__PART_COUNT; ++i) {
+            bool named = false;
+            for (int tr = 0; tr < x.part[i].tcount; ++tr) {
+                if (x.part[i].panel[tr] != q) continue;
+                if (!named) ori__text_printf(t, "g %s\nusemtl %s\n", part_name[i], part_name[i]);
+                named = true;
+                int a = base + x.part[i].tri[tr][0], b = base + x.part[i].tri[tr][1], c = base + x.part[i].tri[tr][2];
+                ori__text_printf(t, "f %d//%d %d//%d %d//%d\n", a, a, b, b, c, c);
+            }
+            base += x.part[i].vcount;
         }
-        base += x.part[i].vcount;
     }
     ori__xmesh_free(&x);
 }
 
 // STL, text: a binary STL holds 32-bit floats only, which would round the posed vertices.
+static void put_facet(ori__text *t, ori_v3 a, ori_v3 b, ori_v3 c)
+{
+    ori_v3 n = ori_v3_normalize(ori_v3_cross(ori_v3_sub(b, a), ori_v3_sub(c, a)));
+    ori__text_puts(t, "facet normal ");
+    put_v3(t, n);
+    ori__text_puts(t, "\n outer loop\n  vertex ");
+    put_v3(t, a);
+    ori__text_puts(t, "\n  vertex ");
+    put_v3(t, b);
+    ori__text_puts(t, "\n  vertex ");
+    put_v3(t, c);
+    ori__text_puts(t, "\n endloop\nendfacet\n");
+}
+
+// A thick solid is one "solid" block per panel, named orikin_thick_panel_K and carrying the tag
+// and the thickness, so that a reader (and orikin's) sees separate closed solids.
 static void write_stl(const ori_mesh *m, const ori_export_def *def, ori__text *t)
 {
     ori__xmesh x;
-    ori__xmesh_build(m, def->thickness, false, &x);
-    ori__text_puts(t, "solid orikin\n");
-    for (int i = 0; i < ORI__PART_COUNT; ++i)
-        for (int tr = 0; tr < x.part[i].tcount; ++tr) {
-            ori_v3 a = x.part[i].pos[x.part[i].tri[tr][0]], b = x.part[i].pos[x.part[i].tri[tr][1]],
-                   c = x.part[i].pos[x.part[i].tri[tr][2]];
-            ori_v3 n = ori_v3_normalize(ori_v3_cross(ori_v3_sub(b, a), ori_v3_sub(c, a)));
-            ori__text_puts(t, "facet normal ");
-            put_v3(t, n);
-            ori__text_puts(t, "\n outer loop\n  vertex ");
-            put_v3(t, a);
-            ori__text_puts(t, "\n  vertex ");
-            put_v3(t, b);
-            ori__text_puts(t, "\n  vertex ");
-            put_v3(t, c);
-            ori__text_puts(t, "\n endloop\nendfacet\n");
+    ori__xmesh_build(m, def, false, &x);
+    if (!(def->thickness > 0.0)) {
+        ori__text_puts(t, "solid orikin\n");
+        for (int i = 0; i < ORI__PART_COUNT; ++i)
+            for (int tr = 0; tr < x.part[i].tcount; ++tr)
+                put_facet(t, x.part[i].pos[x.part[i].tri[tr][0]], x.part[i].pos[x.part[i].tri[tr][1]],
+                          x.part[i].pos[x.part[i].tri[tr][2]]);
+        ori__text_puts(t, "endsolid orikin\n");
+    } else {
+        for (int q = 0; q < x.panel_count; ++q) {
+            ori__text_printf(t, "solid orikin_thick_panel_%d %s ", q, ORI_THICK_PANEL_TAG);
+            ori__text_real(t, def->thickness);
+            ori__text_puts(t, "\n");
+            for (int i = 0; i < ORI__PART_COUNT; ++i)
+                for (int tr = 0; tr < x.part[i].tcount; ++tr)
+                    if (x.part[i].panel[tr] == q)
+                        put_facet(t, x.part[i].pos[x.part[i].tri[tr][0]], x.part[i].pos[x.part[i].tri[tr][1]],
+                                  x.part[i].pos[x.part[i].tri[tr][2]]);
+            ori__text_printf(t, "endsolid orikin_thick_panel_%d\n", q);
         }
-    ori__text_puts(t, "endsolid orikin\n");
+    }
     ori__xmesh_free(&x);
 }
 
@@ -340,20 +384,30 @@ static int byte_of(double c) { return (int)lround(fmin(1.0, fmax(0.0, c)) * 255.
 static void write_ply(const ori_mesh *m, const ori_export_def *def, ori__text *t)
 {
     ori__xmesh x;
-    ori__xmesh_build(m, def->thickness, false, &x);
+    ori__xmesh_build(m, def, false, &x);
+    char thick[200] = "";
+    if (def->thickness > 0.0) {
+        ori__text tt = {NULL, 0, 0};
+        ori__text_reserve(&tt, 0);
+        ori__text_real(&tt, def->thickness);
+        snprintf(thick, sizeof thick, "comment %s %.*s: %d separate closed panel solids (face property panel)\n",
+                 ORI_THICK_PANEL_TAG, (int)tt.len, tt.data, x.panel_count);
+        ori__free(tt.data);
+    }
     int nv = 0, nt = 0;
     for (int i = 0; i < ORI__PART_COUNT; ++i) {
         nv += x.part[i].vcount;
         nt += x.part[i].tcount;
     }
     ori__text_printf(t,
-                     "ply\nformat ascii 1.0\ncomment orikin %s: posed sheet, %s\n"
+                     "ply\nformat ascii 1.0\ncomment orikin %s: posed sheet, %s\n%s"
                      "element vertex %d\nproperty double x\nproperty double y\nproperty double z\n"
                      "property double nx\nproperty double ny\nproperty double nz\n"
                      "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty int fold_vertex\n"
                      "element face %d\nproperty list uchar int vertex_indices\nproperty int fold_face\n"
-                     "property uchar side\nend_header\n",
-                     ori_version_string(), def->thickness > 0.0 ? "closed solid" : "two-sided sheet", nv, nt);
+                     "property uchar side\n%send_header\n",
+                     ori_version_string(), def->thickness > 0.0 ? "closed solid" : "two-sided sheet", thick, nv, nt,
+                     def->thickness > 0.0 ? "property int panel\n" : "");
     ori_rgb colour[ORI__PART_COUNT] = {def->front, def->back, def->edge};
     for (int i = 0; i < ORI__PART_COUNT; ++i)
         for (int v = 0; v < x.part[i].vcount; ++v) {
@@ -365,9 +419,12 @@ static void write_ply(const ori_mesh *m, const ori_export_def *def, ori__text *t
         }
     int base = 0;
     for (int i = 0; i < ORI__PART_COUNT; ++i) {
-        for (int tr = 0; tr < x.part[i].tcount; ++tr)
-            ori__text_printf(t, "3 %d %d %d %d %d\n", base + x.part[i].tri[tr][0], base + x.part[i].tri[tr][1],
+        for (int tr = 0; tr < x.part[i].tcount; ++tr) {
+            ori__text_printf(t, "3 %d %d %d %d %d", base + x.part[i].tri[tr][0], base + x.part[i].tri[tr][1],
                              base + x.part[i].tri[tr][2], x.part[i].fold_face[tr], i);
+            if (x.part[i].panel) ori__text_printf(t, " %d", x.part[i].panel[tr]);
+            ori__text_puts(t, "\n");
+        }
         base += x.part[i].vcount;
     }
     ori__xmesh_free(&x);
@@ -382,6 +439,12 @@ static ori_status check_def(const ori_mesh *m, const ori_export_def *def, ori_er
     if (!(def->thickness >= 0.0) || !isfinite(def->thickness))
         return ori__fail(error, ORI_ERR_ARGUMENT, "thickness must be a finite number >= 0");
     if (def->keyframe_count < 0) return ori__fail(error, ORI_ERR_ARGUMENT, "negative keyframe count");
+    if (def->face_order_count < 0 || (def->face_order_count > 0 && !def->face_orders))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "faceOrders: %d triples without data", def->face_order_count);
+    if (def->face_order_count > 0) {
+        ori_status st = ori__face_orders_check(m, def->face_orders, def->face_order_count, error);
+        if (st != ORI_OK) return st;
+    }
     if (def->keyframe_count > 0) {
         if (def->format != ORI_MESH_GLTF && def->format != ORI_MESH_GLB)
             return ori__fail(error, ORI_ERR_ARGUMENT, "only glTF and GLB hold animations");
@@ -427,6 +490,24 @@ ori_status ori_mesh_export(const ori_mesh *m, const ori_export_def *def, void **
     }
     *data = t.data;
     *size = t.len;
+    return ORI_OK;
+}
+
+ori_status ori_mesh_thick_panels(const ori_mesh *m, const ori_export_def *def, ori_thick_info *out, ori_error *error)
+{
+    ORI_ASSERT(m && def && out);
+    ORI_ASSERT(def->internal_value == ORI__DEF_COOKIE);
+    memset(out, 0, sizeof *out);
+    ori_status st = check_def(m, def, error);
+    if (st != ORI_OK) return st;
+    if (!(def->thickness > 0.0)) return ori__fail(error, ORI_ERR_ARGUMENT, "thick panels need a thickness > 0");
+    ori__solid s;
+    ori__solid_build(m, def->thickness, def->face_orders, def->face_order_count, &s);
+    out->panels = s.panel_count;
+    out->stacked = s.stacked_panels;
+    out->front = s.front_panels;
+    out->overlapping = s.overlapping_pairs;
+    ori__solid_free(&s);
     return ORI_OK;
 }
 

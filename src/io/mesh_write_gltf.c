@@ -279,7 +279,7 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
     for (int v = 0; v < VIEW_COUNT; ++v) g.view_index[v] = present[v] ? nviews++ : -1;
     if (K == 0) {
         ori__xmesh x;
-        ori__xmesh_build(m, def->thickness, false, &x);
+        ori__xmesh_build(m, def, false, &x);
         int mi = mesh_of(&g, &x, def->thickness > 0.0 ? "solid" : "sheet");
         ori__xmesh_free(&x);
         ori__text_puts(&nodes, "{\"name\":\"sheet\"");

@@ -19,11 +19,13 @@ typedef struct ori__xpart {
     int *fold_vertex;
     int (*tri)[3];
     int *fold_face;
+    int *panel; // thick solid: the panel (closed solid) of every triangle; NULL for the sheet
 } ori__xpart;
 
 typedef struct ori__xmesh {
     ori__xpart part[ORI__PART_COUNT];
     bool has_uv;
+    int panel_count, stacked_panels; // thick solid: closed panels, and those offset by their layer
 } ori__xmesh;
 
 // Texture coordinates: the flat sheet's bounding box stretched over [0, 1]², v downwards.
@@ -34,7 +36,8 @@ ori__uv_map ori__uv_of_mesh(const ori_mesh *m);
 
 // The surface of a mesh in its current pose: the two-sided sheet (thickness 0) or the closed
 // solid. With reference = true, the sheet in its reference position (animated glTF nodes).
-void ori__xmesh_build(const ori_mesh *m, double thickness, bool reference, ori__xmesh *out);
+// def gives the thickness and the faceOrders of the thick panels.
+void ori__xmesh_build(const ori_mesh *m, const ori_export_def *def, bool reference, ori__xmesh *out);
 // The sheet of one face (front and back parts) in its reference position.
 void ori__xmesh_face(const ori_mesh *m, int face, const ori__uv_map *uv, ori__xmesh *out);
 void ori__xmesh_free(ori__xmesh *x);

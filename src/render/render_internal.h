@@ -46,8 +46,9 @@ void ori__camera_fit_extents(ori_camera *c, const double ext[4], int width, int 
 
 // --- thick solid (solid.c) -----------------------------------------------------------------
 
-// Thick panels around the posed sheet: both sides offset by ±thickness/2 along the face normals,
-// one closed slab per flat region, walls where a slab ends (docs/render.md). Triangles are
+// Offset thick panels around the posed sheet (docs/render.md): one closed prism per panel (a flat
+// region), on the back side of the sheet, panels in one plane stacked by layer (face_orders:
+// FOLD faceOrders triples checked by ori__face_orders_check, or NULL). Triangles are
 // counter-clockwise seen from outside.
 typedef enum ori__solid_part { ORI__SOLID_TOP = 0, ORI__SOLID_BOTTOM = 1, ORI__SOLID_RIM = 2 } ori__solid_part;
 typedef struct ori__solid {
@@ -57,8 +58,14 @@ typedef struct ori__solid {
     int (*tris)[3];
     unsigned char *part; // ori__solid_part per triangle
     int *tri_face;       // FOLD face of a top/bottom triangle; the face beside a rim triangle
+    int *tri_panel;      // panel (closed solid) of every triangle, 0 … panel_count − 1
+    int panel_count;     // closed panel solids
+    int stacked_panels;  // panels lifted by their layer onto another panel of their plane
+    int front_panels;    // panels put on the front side of the sheet (their back would overlap)
+    int overlapping_pairs; // triangle prisms of different panels still overlapping (0 when solved)
 } ori__solid;
-void ori__solid_build(const ori_mesh *m, double thickness, ori__solid *out);
+void ori__solid_build(const ori_mesh *m, double thickness, const int *face_orders, int face_order_count,
+                      ori__solid *out);
 void ori__solid_free(ori__solid *s);
 
 // --- depth order (order.c) -----------------------------------------------------------------

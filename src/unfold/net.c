@@ -12,6 +12,7 @@
 #include <orikin/collision.h>
 #include <orikin/fold.h>
 #include <orikin/kinematics.h>
+#include <orikin/render.h>
 #include <orikin/tolerance.h>
 #include <orikin/unfold.h>
 
@@ -506,6 +507,19 @@ ori_status ori_unfold_load_mesh(const char *path, ori_mesh **out, ori_error *err
         size_t size = 0;
         st = ori_file_read_all(path, (size_t)1 << 31, &data, &size, error);
         if (st != ORI_OK) return st;
+        // orikin's thick exports are separate closed panel solids, offset off the sheet: there
+        // is no one surface to unfold (the tag is on the first lines: an OBJ comment, an STL
+        // solid name).
+        const char *tag = size > 0 ? strstr(data, ORI_THICK_PANEL_TAG) : NULL;
+        if (tag && tag - data < 512) {
+            double t = 0.0;
+            sscanf(tag + strlen(ORI_THICK_PANEL_TAG), "%lf", &t);
+            ori_buffer_free(data);
+            return ori__fail(error, ORI_ERR_UNSUPPORTED,
+                             "an orikin thick export (separate closed panel solids, thickness %g), not one surface: "
+                             "export the state without --thickness to unfold it",
+                             t);
+        }
         if (strcmp(ext, ".obj") == 0 || strcmp(ext, ".OBJ") == 0) st = read_obj(data, &v, &nv, &fs, &fv, &nf, error);
         else if (strcmp(ext, ".stl") == 0 || strcmp(ext, ".STL") == 0) st = read_stl(data, size, &v, &nv, &fs, &fv, &nf, error);
         else st = ori__fail(error, ORI_ERR_UNSUPPORTED, "unknown shape format (expected .obj, .stl or .fold)");
