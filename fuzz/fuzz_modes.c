@@ -23,7 +23,7 @@ static bool budget(double fraction, void *user)
     return ++*(int *)user <= FM_MAX_STEPS;
 }
 
-static void check_frames(const ori_mechanism *m, const ori_multifold *mf, const int *group, bool targets)
+static void check_frames(const ori_mechanism *m, const ori_multifold *mf, const int *group, bool targets, double fraction)
 {
     int E = ori_mechanism_edge_count(m);
     for (int f = 0; f < ori_multifold_frame_count(mf); ++f) {
@@ -37,9 +37,15 @@ static void check_frames(const ori_mechanism *m, const ori_multifold *mf, const 
         double pr = ori_multifold_frame_progress(mf, f);
         if (!(pr >= -1e-12 && pr <= 1.0 + 1e-12)) abort();
     }
-    // Reached: the targets' goal is every crease's; the drives' only theirs (drives()).
-    if (targets && ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_REACHED && ori_multifold_frame_count(mf) > 0) {
-        const double *last = ori_multifold_frame_angles(mf, ori_multifold_frame_count(mf) - 1);
+    // Reached: the targets' goal (the 100 % state) is every crease's; the drives' only theirs
+    // (drives()). A fraction below 1 is the way along the motion: the last frame's progress (a
+    // start that is the goal already, one frame, has progress 1).
+    int n = ori_multifold_frame_count(mf);
+    if (targets && fraction < 1.0 && ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_REACHED && n > 1 &&
+        !(fabs(ori_multifold_frame_progress(mf, n - 1) - fraction) <= 1e-9))
+        abort();
+    if (targets && fraction >= 1.0 && ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_REACHED && n > 0) {
+        const double *last = ori_multifold_frame_angles(mf, n - 1);
         const double *goal = ori_multifold_goal(mf);
         for (int e = 0; goal && e < E; ++e)
             if (ori_mechanism_edge_joint(m, e) != ORI_NULL_INDEX && fabs(last[e] - goal[e]) > 1e-9) abort();
@@ -69,7 +75,7 @@ static void targets(fk_bytes *b, const ori_mechanism *m)
     ori_multifold *mf = NULL;
     ori_error err;
     if (ori_target_fold_solve(m, &d, &mf, &err) == ORI_OK) {
-        check_frames(m, mf, group, true);
+        check_frames(m, mf, group, true, d.fraction);
         // Another output step: the same path, so the same verdict and end state.
         ori_target_fold_def d2 = d;
         d2.step_rad = fk_range(b, 0.5, 60.0) * FK_DEG;
@@ -77,7 +83,7 @@ static void targets(fk_bytes *b, const ori_mechanism *m)
         d2.progress_user = &spent2;
         ori_multifold *mf2 = NULL;
         if (ori_target_fold_solve(m, &d2, &mf2, &err) != ORI_OK) abort(); // the same steps: not cancelled either
-        check_frames(m, mf2, group, true);
+        check_frames(m, mf2, group, true, d2.fraction);
         if (ori_multifold_verdict_of(mf) != ori_multifold_verdict_of(mf2)) abort();
         int n1 = ori_multifold_frame_count(mf), n2 = ori_multifold_frame_count(mf2);
         if ((n1 > 0) != (n2 > 0)) abort();
@@ -117,7 +123,7 @@ static void drives(fk_bytes *b, const ori_mechanism *m)
     ori_multifold *mf = NULL;
     ori_error err;
     if (ori_drives_fold_solve(m, &d, &mf, &err) == ORI_OK) {
-        check_frames(m, mf, NULL, false);
+        check_frames(m, mf, NULL, false, 1.0);
         int k = ori_multifold_frame_count(mf);
         if (ori_multifold_verdict_of(mf) == ORI_MULTIFOLD_REACHED && k > 0)
             for (int i = 0; i < n; ++i)

@@ -586,8 +586,9 @@ ORI_API const ori_v3 *ori_multifold_vertices(ori_multifold *fold);
 /// outside the frames' progress or without frames, ORI_ERR_NOT_CONVERGED when the state does not close.
 ORI_API ori_status ori_multifold_at(const ori_multifold *fold, const int *locked_edges, int locked_count,
                                     double progress, double *angles_rad, ori_v3 *positions, ori_error *error);
-/// The goal angles (edge_count entries, radians; owned): targets scaled by the fraction, or the
-/// drives' final angles (other creases: their start angle).
+/// The goal angles (edge_count entries, radians; owned): the targets themselves (the 100 % state;
+/// the fraction says how far along the way to them the fold goes), or the drives' final angles
+/// (other creases: their start angle).
 ORI_API const double *ori_multifold_goal(const ori_multifold *fold);
 /// Creases a target fold held at ±180° (their own target) when they reached it first.
 ORI_API int ori_multifold_held_count(const ori_multifold *fold);
