@@ -97,7 +97,7 @@ static void edge_push(edge_list *l, int from, int to)
 
 // Layer vector of every face: crossing a crease folded flat from face p to face c adds ±n_p
 // (valley: c lies on p's front side). Breadth-first from the lowest face of each component.
-static void stacking(const ori_mesh *m, ori_v3 *layer)
+void ori__render_stacking(const ori_mesh *m, ori_v3 *layer)
 {
     int nf = m->face_count;
     bool *seen = ori__calloc((size_t)nf, sizeof(bool));
@@ -532,7 +532,7 @@ void ori__order_build(const ori_mesh *m, const ori_camera *cam, const int *face_
     }
 
     ori_v3 *layer = ori__alloc(sizeof(ori_v3) * (size_t)(nf + 1));
-    stacking(m, layer);
+    ori__render_stacking(m, layer);
     // The direction towards the eye (world), for comparing layers.
     ori_v3 toward_eye = ori_v3_make(cam->rotation.m[2][0], cam->rotation.m[2][1], cam->rotation.m[2][2]);
     listed_layers listed;

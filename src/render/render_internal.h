@@ -113,4 +113,8 @@ ori_camera ori__render_fit(const ori_render_def *def, const ori_v3 *points, int 
 int ori__render_scene_points(const ori_mesh *m, const ori_render_def *def, const ori_v3 *scene_lo,
                              const ori_v3 *scene_hi, ori_v3 *out);
 
+// The layer offset of every face (face_count entries) from the fold tree: faces folded flat onto
+// each other step by their normal, by the sign of the crease between them (order.c).
+void ori__render_stacking(const ori_mesh *m, ori_v3 *layer);
+
 #endif

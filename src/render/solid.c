@@ -65,43 +65,6 @@ static bool joined(const ori_mesh *m, int e)
            m->assign[e] != ORI_ASSIGN_CUT;
 }
 
-// Stack height of every face: crossing a crease folded flat from face p to face c adds ±n_p
-// (valley: c on p's front), as render's stacking does (order.c).
-static void stack_heights(const ori_mesh *m, ori_v3 *layer)
-{
-    int nf = m->face_count;
-    bool *seen = ori__calloc((size_t)nf + 1, sizeof(bool));
-    int *queue = ori__alloc(sizeof(int) * (size_t)(nf + 1));
-    double flat_cos = cos(ORI_TOL_RENDER_FLAT_FOLD_RAD);
-    for (int root = 0; root < nf; ++root) {
-        if (seen[root]) continue;
-        seen[root] = true;
-        layer[root] = ori_v3_make(0, 0, 0);
-        int head = 0, tail = 0;
-        queue[tail++] = root;
-        while (head < tail) {
-            int f = queue[head++];
-            for (int k = m->face_start[f]; k < m->face_start[f + 1]; ++k) {
-                int e = m->face_side_edge[k];
-                if (e < 0 || m->assign[e] == ORI_ASSIGN_CUT) continue;
-                int g = m->edge_face[e][0] == f ? m->edge_face[e][1] : m->edge_face[e][0];
-                if (g < 0 || seen[g]) continue;
-                seen[g] = true;
-                ori_v3 step = ori_v3_make(0, 0, 0);
-                if (ori_v3_dot(m->normal[f], m->normal[g]) < -flat_cos) {
-                    double a = m->angle[e];
-                    if (a > 0.0) step = m->normal[f];
-                    else if (a < 0.0) step = ori_v3_scale(m->normal[f], -1.0);
-                }
-                layer[g] = ori_v3_add(layer[f], step);
-                queue[tail++] = g;
-            }
-        }
-    }
-    ori__free(seen);
-    ori__free(queue);
-}
-
 typedef struct panel_key {
     double height; // layer along the plane's normal
     int panel;
@@ -249,7 +212,7 @@ void ori__solid_build(const ori_mesh *m, double thickness, const int *face_order
     }
     // Layers: faceOrders' ranks where given (f above g along n_g when s = +1), else the stacking.
     ori_v3 *layer = ori__alloc(sizeof(ori_v3) * (size_t)(nf + 1));
-    stack_heights(m, layer);
+    ori__render_stacking(m, layer);
     if (face_orders && face_order_count > 0) {
         // Relax "f lies s·t above g along n_g" a few rounds (a linear extension where the orders
         // are consistent); the stacking is kept for faces the orders do not name.
