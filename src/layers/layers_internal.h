@@ -235,4 +235,8 @@ static inline int ori__layers_above(const ori_layers *L, int f, int g)
     return v < 0 ? -1 : ORI__LIT(v, f > g);
 }
 
+// Component j has no state although propagation found no conflict: the verdict (EXHAUSTED) and
+// its faces recorded in L (layers_parts.c; the solver and ori_layers_set_counts use it).
+void ori__layers_set_exhausted(ori_layers *L, int j);
+
 #endif

@@ -25,7 +25,7 @@ ori_status ori_layers_count_component(const ori_layers *L, int c, char **states,
 
 // An exhausted component (no state although propagation found no conflict): the verdict and
 // its faces, as ori__layers_solve records them.
-static void set_exhausted(ori_layers *L, int j)
+void ori__layers_set_exhausted(ori_layers *L, int j)
 {
     L->unsat = true;
     L->conflict.constraint = ORI_LAYERS_EXHAUSTED;
@@ -74,7 +74,7 @@ ori_status ori_layers_set_counts(ori_layers *L, const char *const *states, bool 
     for (int j = 0; j < L->n_comp; ++j) ori__nat_mul(&L->total, &L->comp_count[j]);
     for (int j = 1; j < L->n_comp; ++j)
         if (ori__nat_is_zero(&L->comp_count[j])) {
-            set_exhausted(L, j);
+            ori__layers_set_exhausted(L, j);
             break;
         }
     L->counted = true;

@@ -1282,33 +1282,7 @@ ori_status ori__layers_solve(ori_layers *L, ori_error *error)
     for (int j = 0; j < L->n_comp; ++j) ori__nat_mul(&L->total, &L->comp_count[j]);
     for (int j = 1; j < L->n_comp; ++j)
         if (ori__nat_is_zero(&L->comp_count[j]) && P.done[j] == 1) {
-            L->unsat = true;
-            L->conflict.constraint = ORI_LAYERS_EXHAUSTED;
-            L->conflict.face_count = 0;
-            for (int k = 0; k < 4; ++k) L->conflict.faces[k] = -1;
-            L->conflict.vertex = ORI_NULL_INDEX;
-            L->conflict.component = j;
-            // Every face of the component's variables.
-            uint8_t *mark = ori__calloc((size_t)(L->nf ? L->nf : 1), 1);
-            for (int64_t i = L->comp_classes.off[j]; i < L->comp_classes.off[j + 1]; ++i) {
-                int c = L->comp_classes.items[i];
-                for (int64_t k = L->class_vars.off[c]; k < L->class_vars.off[c + 1]; ++k) {
-                    int v = L->class_vars.items[k];
-                    mark[L->var_faces[v][0]] = mark[L->var_faces[v][1]] = 1;
-                }
-            }
-            int cnt = 0;
-            for (int f = 0; f < L->nf; ++f) cnt += mark[f];
-            ori__free(L->conflict_faces);
-            L->conflict_faces = ori__alloc(sizeof(int) * (size_t)(cnt ? cnt : 1));
-            L->n_conflict_faces = 0;
-            for (int f = 0; f < L->nf; ++f)
-                if (mark[f]) L->conflict_faces[L->n_conflict_faces++] = f;
-            ori__free(mark);
-            snprintf(L->conflict.detail, sizeof L->conflict.detail,
-                     "no constraint conflicts by propagation, but no order of component %d's %d face pairs (over "
-                     "%d faces) satisfies them all",
-                     j, L->comp_vars[j], L->n_conflict_faces);
+            ori__layers_set_exhausted(L, j);
             break;
         }
     ori__free(P.done);
