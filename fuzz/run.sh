@@ -53,6 +53,7 @@ fi
 echo "fuzz: $count target(s), ${each}s each (budget ${BUDGET}s), -timeout=$TIMEOUT -rss_limit_mb=$RSS_MB"
 
 status=0
+failed=""
 for name in $targets; do
     t="$BUILD/fuzz/fuzz_$name"
     seconds=$(eval "echo \${FUZZ_SECONDS_$name:-$each}")
@@ -93,7 +94,20 @@ for name in $targets; do
     else
         tail -n 40 "$log"
         echo "fuzz: $name FAILED"
+        failed="$failed $name"
         status=1
     fi
 done
+# CI shows only the end of its output: name what failed there, with each failure's first report
+# line and the input that caused it (kept in fuzz/corpus-run).
+if [ $status -ne 0 ]; then
+    for name in $failed; do
+        why=$(grep -m 1 -E "ERROR: |==[0-9]+==|runtime error|Timeout|out-of-memory|deadly signal" \
+            "$corpus/$name.log" || echo "no report line")
+        echo "fuzz: FAILED $name: $why"
+        for a in "$corpus/$name"-*; do
+            [ -e "$a" ] && echo "fuzz:   input $a: $(head -c 200 "$a" | od -An -c | tr -s ' ' | head -c 300)"
+        done
+    done
+fi
 exit $status

@@ -394,8 +394,23 @@ static void frame_write(const ori_fold *doc, int k, ori__text *t, int depth)
     ori__text_puts(t, "}");
 }
 
+// A generous size of the packed arrays' text (digits and separators), reserved at once so that
+// a million-entry document is not copied by the buffer's doublings.
+static size_t doc_text_guess(const ori_fold *doc)
+{
+    size_t n = 4096;
+    for (int k = 0; k < doc->frame_count; ++k)
+        for (int i = 0; i < doc->frames[k].count; ++i) {
+            const ori__packed *pk = doc->frames[k].fields[i].pk;
+            if (!pk) continue;
+            n += (size_t)pk->nvals * (pk->i32 ? 8 : 20) + (size_t)pk->count * 8 + (size_t)pk->nchars * 2;
+        }
+    return n;
+}
+
 void ori__doc_write(const ori_fold *doc, ori__text *t)
 {
+    ori__text_reserve(t, doc_text_guess(doc));
     frame_write(doc, 0, t, 0);
     ori__text_puts(t, "\n");
 }

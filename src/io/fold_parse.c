@@ -6,6 +6,7 @@
 // Errors carry the line and column (1-based, in bytes) of the offending token, with messages in
 // jansson's words ("',' or ']' expected near '['").
 #include <errno.h>
+#include <float.h>
 #include <stdlib.h>
 
 #include "fold_internal.h"
@@ -199,35 +200,65 @@ typedef struct number {
 } number;
 
 // A number at P->i (RFC 8259 grammar): integers within int64, reals within double.
+// Clinger's fast path: a decimal m × 10^e whose digits m fit in 53 bits and with |e| ≤ 22 is
+// exactly one correctly rounded multiplication or division of two exact doubles, the same double
+// strtod gives (the shortest form of most coordinates, "0.8660254037844386", is such a number).
+// Other decimals (17 significant digits, large exponents) go to strtod.
+static const double exact_pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                       1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+#define ORI__EXACT_MANTISSA (UINT64_C(1) << 53)
+
+static inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// One pass over a JSON number: its syntax checked, its value read (integers exactly, within
+// int64; reals by the fast path above where it applies, else by strtod).
 static bool parse_number(parser *P, number *out)
 {
-    size_t start = P->i, k = P->i;
-    if (k < P->n && P->s[k] == '-') k++;
-    if (k >= P->n || !(P->s[k] >= '0' && P->s[k] <= '9')) return FAIL(P, start, "invalid token");
-    if (P->s[k] == '0') k++;
-    else
-        while (k < P->n && P->s[k] >= '0' && P->s[k] <= '9') k++;
-    bool is_int = true;
-    if (k < P->n && P->s[k] == '.') {
+    const char *s = P->s;
+    size_t start = P->i, k = P->i, n = P->n;
+    bool neg = k < n && s[k] == '-';
+    k += neg;
+    if (k >= n || !is_digit(s[k])) return FAIL(P, start, "invalid token");
+    // m: the digits read so far while they fit in 53 bits (exact stays true)
+    uint64_t m = 0;
+    bool exact = true;
+    int frac = 0;
+    if (s[k] == '0') {
         k++;
-        if (k >= P->n || !(P->s[k] >= '0' && P->s[k] <= '9')) return FAIL(P, start, "invalid token");
-        while (k < P->n && P->s[k] >= '0' && P->s[k] <= '9') k++;
+    } else {
+        for (; k < n && is_digit(s[k]); ++k) {
+            m = m * 10 + (uint64_t)(s[k] - '0');
+            if (m > ORI__EXACT_MANTISSA) exact = false, m = ORI__EXACT_MANTISSA; // keeps m from wrapping
+        }
+    }
+    size_t int_end = k;
+    bool is_int = true;
+    if (k < n && s[k] == '.') {
+        k++;
+        if (k >= n || !is_digit(s[k])) return FAIL(P, start, "invalid token");
+        for (; k < n && is_digit(s[k]); ++k, ++frac) {
+            m = m * 10 + (uint64_t)(s[k] - '0');
+            if (m > ORI__EXACT_MANTISSA) exact = false, m = ORI__EXACT_MANTISSA;
+        }
         is_int = false;
     }
-    if (k < P->n && (P->s[k] == 'e' || P->s[k] == 'E')) {
+    int e = 0;
+    if (k < n && (s[k] == 'e' || s[k] == 'E')) {
         k++;
-        if (k < P->n && (P->s[k] == '+' || P->s[k] == '-')) k++;
-        if (k >= P->n || !(P->s[k] >= '0' && P->s[k] <= '9')) return FAIL(P, start, "invalid token");
-        while (k < P->n && P->s[k] >= '0' && P->s[k] <= '9') k++;
+        bool eneg = k < n && s[k] == '-';
+        if (k < n && (s[k] == '+' || s[k] == '-')) k++;
+        if (k >= n || !is_digit(s[k])) return FAIL(P, start, "invalid token");
+        for (; k < n && is_digit(s[k]); ++k)
+            if (e < 1000) e = e * 10 + (s[k] - '0');
+        if (eneg) e = -e;
         is_int = false;
     }
     P->i = k;
     out->is_int = is_int;
     if (is_int) {
-        bool neg = P->s[start] == '-';
         uint64_t v = 0, limit = neg ? (uint64_t)INT64_MAX + 1u : (uint64_t)INT64_MAX;
-        for (size_t j = start + neg; j < k; ++j) {
-            unsigned d = (unsigned)(P->s[j] - '0');
+        for (size_t j = start + neg; j < int_end; ++j) {
+            unsigned d = (unsigned)(s[j] - '0');
             if (v > (limit - d) / 10) return FAIL(P, start, "too big integer");
             v = v * 10 + d;
         }
@@ -235,11 +266,20 @@ static bool parse_number(parser *P, number *out)
         out->d = (double)out->i;
         return true;
     }
+    e -= frac;
+#if FLT_EVAL_METHOD == 0 // (wider intermediate precision would round twice)
+    if (exact && e >= -22 && e <= 22) {
+        double d = (double)m;
+        d = e < 0 ? d / exact_pow10[-e] : d * exact_pow10[e];
+        out->d = neg ? -d : d;
+        return true;
+    }
+#endif
     // strtod needs a terminated copy (the text need not end after the number).
     char small[64], *buf = small;
     size_t len = k - start;
     if (len >= sizeof small) buf = ori__alloc(len + 1);
-    memcpy(buf, P->s + start, len);
+    memcpy(buf, s + start, len);
     buf[len] = '\0';
     errno = 0;
     double d = strtod(buf, NULL);

@@ -16,8 +16,16 @@ typedef struct ori__text {
     size_t len, cap;
 } ori__text;
 void ori__text_reserve(ori__text *t, size_t extra);
-void ori__text_put(ori__text *t, const char *s, size_t n);
-void ori__text_puts(ori__text *t, const char *s);
+// Appends n bytes (inline: the writers append a few bytes at a time, millions of times).
+static inline void ori__text_put(ori__text *t, const char *s, size_t n)
+{
+    if (t->len + n + 1 > t->cap) ori__text_reserve(t, n);
+    memcpy(t->data + t->len, s, n);
+    t->len += n;
+    t->data[t->len] = '\0';
+}
+// Appends a NUL-terminated string (a literal's length is known at compile time once inlined).
+static inline void ori__text_puts(ori__text *t, const char *s) { ori__text_put(t, s, strlen(s)); }
 void ori__text_printf(ori__text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 // An integer in decimal.
 void ori__text_int(ori__text *t, long long x);
@@ -27,7 +35,8 @@ void ori__text_real(ori__text *t, double x);
 void ori__text_json_string(ori__text *t, const char *s, size_t n);
 
 // Shortest decimal text that reads back as exactly x (at most 17 significant digits; ±0 is "0").
-void ori__format_double(double x, char *buf, size_t size);
+// Returns the text's length.
+size_t ori__format_double(double x, char *buf, size_t size);
 // The shortest digits of a finite nonzero x that read back exactly (shortest.cc, double-
 // conversion): digits (18 bytes, not terminated) d1…dn with *length = n, x = ±0.d1…dn × 10^*point.
 // Returns 1 when x is negative.

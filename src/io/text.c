@@ -17,16 +17,6 @@ void ori__text_reserve(ori__text *t, size_t extra)
     t->data[t->len] = '\0'; // terminated even when nothing is ever appended
 }
 
-void ori__text_put(ori__text *t, const char *s, size_t n)
-{
-    ori__text_reserve(t, n);
-    memcpy(t->data + t->len, s, n);
-    t->len += n;
-    t->data[t->len] = '\0';
-}
-
-void ori__text_puts(ori__text *t, const char *s) { ori__text_put(t, s, strlen(s)); }
-
 void ori__text_printf(ori__text *t, const char *fmt, ...)
 {
     va_list ap;
@@ -45,23 +35,45 @@ void ori__text_printf(ori__text *t, const char *fmt, ...)
     va_end(again);
 }
 
+// Two decimal digits at a time ("00" … "99").
+static const char digit_pairs[201] = "0001020304050607080910111213141516171819202122232425262728293031323334353637383940414243444546474849"
+                                     "5051525354555657585960616263646566676869707172737475767778798081828384858687888990919293949596979899";
+
 void ori__text_int(ori__text *t, long long x)
 {
-    char buf[24], *p = buf + sizeof buf;
     unsigned long long u = x < 0 ? 0ull - (unsigned long long)x : (unsigned long long)x;
-    do *--p = (char)('0' + u % 10);
-    while (u /= 10);
+    int digits = 1;
+    for (unsigned long long v = u; v >= 10; v /= 10) ++digits;
+    size_t n = (size_t)digits + (x < 0);
+    if (t->len + n + 1 > t->cap) ori__text_reserve(t, n);
+    // Written in place from the last digit back, two at a time.
+    char *p = t->data + t->len + n;
+    while (u >= 100) {
+        unsigned r = (unsigned)(u % 100);
+        u /= 100;
+        p -= 2;
+        p[0] = digit_pairs[2 * r], p[1] = digit_pairs[2 * r + 1];
+    }
+    if (u >= 10) {
+        p -= 2;
+        p[0] = digit_pairs[2 * u], p[1] = digit_pairs[2 * u + 1];
+    } else {
+        *--p = (char)('0' + u);
+    }
     if (x < 0) *--p = '-';
-    ori__text_put(t, p, (size_t)(buf + sizeof buf - p));
+    t->len += n;
+    t->data[t->len] = '\0';
 }
 
 // The printf reference: the first of %.15g, %.16g, %.17g that reads back as x.
-static void format_double_printf(double x, char *buf, size_t size)
+static size_t format_double_printf(double x, char *buf, size_t size)
 {
+    int n = 0;
     for (int prec = 15; prec <= 17; ++prec) {
-        snprintf(buf, size, "%.*g", prec, x);
+        n = snprintf(buf, size, "%.*g", prec, x);
         if (strtod(buf, NULL) == x) break;
     }
+    return n > 0 ? ((size_t)n < size ? (size_t)n : size - 1) : 0;
 }
 
 // The same text as format_double_printf, from the shortest digits (about 20× faster: no
@@ -71,16 +83,13 @@ static void format_double_printf(double x, char *buf, size_t size)
 // layout is rebuilt: exponent X = point − 1, scientific when X < −4 or X ≥ P = max(15, n),
 // no trailing zeros, an exponent of at least two digits. Subnormals (fewer significant bits)
 // non-finite values and powers of two needing 16 or 17 digits take the printf path.
-void ori__format_double(double x, char *buf, size_t size)
+size_t ori__format_double(double x, char *buf, size_t size)
 {
     if (x == 0.0) {
         snprintf(buf, size, "0");
-        return;
+        return size > 1 ? 1 : 0;
     }
-    if (!isfinite(x) || fabs(x) < DBL_MIN || size < 32) {
-        format_double_printf(x, buf, size);
-        return;
-    }
+    if (!isfinite(x) || fabs(x) < DBL_MIN || size < 32) return format_double_printf(x, buf, size);
     char d[24];
     int n, point;
     int neg = ori__shortest_digits(x, d, &n, &point);
@@ -89,8 +98,7 @@ void ori__format_double(double x, char *buf, size_t size)
         // A power of two: the rounding interval is narrower below than above, and the
         // shortest digits may then differ from printf's nearest 16 (2^-44: …0802e-14, printf
         // …08015e-14). Keep printf's text.
-        format_double_printf(x, buf, size);
-        return;
+        return format_double_printf(x, buf, size);
     }
     int X = point - 1, P = n > 15 ? n : 15;
     char *p = buf;
@@ -123,20 +131,25 @@ void ori__format_double(double x, char *buf, size_t size)
         p += n;
     }
     *p = '\0';
+    return (size_t)(p - buf);
 }
 
 void ori__text_real(ori__text *t, double x)
 {
-    char num[40];
-    ori__format_double(x, num, sizeof num);
-    ori__text_puts(t, num);
+    // Formatted in place: at most 24 characters ("-1.2345678901234567e-308").
+    if (t->len + 41 > t->cap) ori__text_reserve(t, 40);
+    t->len += ori__format_double(x, t->data + t->len, 40);
 }
 
 void ori__text_json_string(ori__text *t, const char *s, size_t n)
 {
-    ori__text_puts(t, "\"");
+    ori__text_put(t, "\"", 1);
+    size_t run = 0; // bytes copied as they are, appended a run at a time
     for (size_t i = 0; i < n; ++i) {
         unsigned char c = (unsigned char)s[i];
+        if (c >= 0x20 && c != '"' && c != '\\') continue;
+        ori__text_put(t, s + run, i - run);
+        run = i + 1;
         switch (c) {
         case '"': ori__text_puts(t, "\\\""); break;
         case '\\': ori__text_puts(t, "\\\\"); break;
@@ -145,10 +158,9 @@ void ori__text_json_string(ori__text *t, const char *s, size_t n)
         case '\t': ori__text_puts(t, "\\t"); break;
         case '\b': ori__text_puts(t, "\\b"); break;
         case '\f': ori__text_puts(t, "\\f"); break;
-        default:
-            if (c < 0x20) ori__text_printf(t, "\\u%04x", c);
-            else ori__text_put(t, (const char *)&s[i], 1);
+        default: ori__text_printf(t, "\\u%04x", c);
         }
     }
-    ori__text_puts(t, "\"");
+    ori__text_put(t, s + run, n - run);
+    ori__text_put(t, "\"", 1);
 }
