@@ -4,6 +4,7 @@
 #include <ctype.h>
 #include <stdlib.h>
 
+#include "../core/hash.h"
 #include "../geometry/geometry_internal.h"
 #include "../pattern/pattern_internal.h"
 #include "reader_internal.h"
@@ -85,35 +86,86 @@ ori_status ori_read_segments(const char *path, ori_format format, ori_segment **
 // --- planarisation and clean-up --------------------------------------------------------------
 
 // Remove every vertex that only joins two collinear edges (within tol) of equal assignment and
-// fold angle; the chains become single edges. Returns a new unbuilt pattern, or NULL when there
-// is nothing to merge.
+// fold angle; the chains become single edges. Chains that would end on the same two vertices
+// (another chain or an edge) keep their vertices (within a coarse weld, two sides of a thin triangle can both look
+// straight: merging both would lay two edges on one vertex pair). Returns a new unbuilt
+// pattern, or NULL when there is nothing to merge.
 static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
 {
     int nv = p->vertex_count, ne = p->edge_count;
     char *removed = ori__calloc((size_t)(nv ? nv : 1), 1);
+    char *kept = ori__calloc((size_t)(nv ? nv : 1), 1); // vertices a repeated chain keeps
     int *parent = ori__alloc(sizeof(int) * (size_t)(ne ? ne : 1));
-    for (int e = 0; e < ne; ++e) parent[e] = e;
-    int merged = 0;
-    for (int v = 0; v < nv; ++v) {
-        if (ori_pattern_vertex_degree(p, v) != 2) continue;
-        int ed[2];
-        ori_pattern_vertex_edges(p, v, ed, 2);
-        const ori_edge *e0 = &p->edges[ed[0]], *e1 = &p->edges[ed[1]];
-        if (e0->assignment != e1->assignment || e0->fold_angle_rad != e1->fold_angle_rad) continue;
-        int u = e0->v[0] == v ? e0->v[1] : e0->v[0], w = e1->v[0] == v ? e1->v[1] : e1->v[0];
-        if (u == w) continue;
-        ori_v2 pu = ori__pattern_v2(p, u), pv = ori__pattern_v2(p, v), pw = ori__pattern_v2(p, w);
-        ori_v2 d = ori_v2_sub(pw, pu);
-        double len = ori_v2_norm(d);
-        if (!(len > 0.0)) continue;
-        double dist = fabs(ori_orient2d(pu, pw, pv)) / len;
-        if (dist > tol || ori_v2_dot(ori_v2_sub(pu, pv), ori_v2_sub(pw, pv)) >= 0.0) continue;
-        removed[v] = 1;
-        int a = ori__uf_root(parent, ed[0]), b = ori__uf_root(parent, ed[1]);
-        if (a != b) parent[a < b ? b : a] = a < b ? a : b;
-        merged++;
+    int *end0 = ori__alloc(sizeof(int) * (size_t)(ne ? ne : 1));
+    int *end1 = ori__alloc(sizeof(int) * (size_t)(ne ? ne : 1));
+    int cap = ori__hash_capacity(ne);
+    int *slot = ori__alloc(sizeof(int) * (size_t)cap);
+    int merged;
+    for (bool again = true; again;) {
+        again = false;
+        memset(removed, 0, (size_t)(nv ? nv : 1));
+        for (int e = 0; e < ne; ++e) parent[e] = e;
+        merged = 0;
+        for (int v = 0; v < nv; ++v) {
+            if (kept[v] || ori_pattern_vertex_degree(p, v) != 2) continue;
+            int ed[2];
+            ori_pattern_vertex_edges(p, v, ed, 2);
+            const ori_edge *e0 = &p->edges[ed[0]], *e1 = &p->edges[ed[1]];
+            if (e0->assignment != e1->assignment || e0->fold_angle_rad != e1->fold_angle_rad) continue;
+            int u = e0->v[0] == v ? e0->v[1] : e0->v[0], w = e1->v[0] == v ? e1->v[1] : e1->v[0];
+            if (u == w) continue;
+            ori_v2 pu = ori__pattern_v2(p, u), pv = ori__pattern_v2(p, v), pw = ori__pattern_v2(p, w);
+            ori_v2 d = ori_v2_sub(pw, pu);
+            double len = ori_v2_norm(d);
+            if (!(len > 0.0)) continue;
+            double dist = fabs(ori_orient2d(pu, pw, pv)) / len;
+            if (dist > tol || ori_v2_dot(ori_v2_sub(pu, pv), ori_v2_sub(pw, pv)) >= 0.0) continue;
+            removed[v] = 1;
+            int a = ori__uf_root(parent, ed[0]), b = ori__uf_root(parent, ed[1]);
+            if (a != b) parent[a < b ? b : a] = a < b ? a : b;
+            merged++;
+        }
+        if (merged == 0) break;
+        // A group is a chain u – v1 – … – w of merged edges: u and w, the kept vertices, each
+        // occur once among the group's edge ends (a single unmerged edge is the chain u – w).
+        for (int e = 0; e < ne; ++e) end0[e] = end1[e] = ORI_NULL_INDEX;
+        for (int e = 0; e < ne; ++e) {
+            int r = ori__uf_root(parent, e);
+            for (int k = 0; k < 2; ++k) {
+                int v = p->edges[e].v[k];
+                if (removed[v]) continue;
+                if (end0[r] == ORI_NULL_INDEX) end0[r] = v;
+                else end1[r] = v;
+            }
+        }
+        // Two groups on the same ends: both keep their vertices, and the merge is planned again.
+        for (int i = 0; i < cap; ++i) slot[i] = -1;
+        for (int e = 0; e < ne; ++e) {
+            if (ori__uf_root(parent, e) != e) continue;
+            ORI_ASSERT(end0[e] != ORI_NULL_INDEX && end1[e] != ORI_NULL_INDEX);
+            uint64_t key = ori__pair_key(end0[e], end1[e]);
+            for (int i = (int)(ori__mix64(key) & (uint64_t)(cap - 1));; i = (i + 1) & (cap - 1)) {
+                int o = slot[i];
+                if (o < 0) {
+                    slot[i] = e;
+                    break;
+                }
+                if (ori__pair_key(end0[o], end1[o]) != key) continue;
+                for (int f = 0; f < ne; ++f) {
+                    int r = ori__uf_root(parent, f);
+                    if (r != e && r != o) continue;
+                    for (int k = 0; k < 2; ++k)
+                        if (removed[p->edges[f].v[k]]) kept[p->edges[f].v[k]] = 1, again = true;
+                }
+                break;
+            }
+        }
     }
+    ori__free(slot);
+    ori__free(kept);
     if (merged == 0) {
+        ori__free(end0);
+        ori__free(end1);
         ori__free(removed);
         ori__free(parent);
         return NULL;
@@ -122,25 +174,10 @@ static ori_pattern *merge_collinear(const ori_pattern *p, double tol)
     ori_pattern_def pdef = ori_default_pattern_def();
     ori_pattern *q = ori_pattern_create(&pdef);
     for (int v = 0; v < nv; ++v) map[v] = removed[v] ? ORI_NULL_INDEX : ori_pattern_add_vertex(q, p->vertices[v]);
-    // A group is a chain u – v1 – … – w of merged edges: u and w, the kept vertices, each occur
-    // once among the group's edge ends (a single unmerged edge is the chain u – w).
-    int *end0 = ori__alloc(sizeof(int) * (size_t)(ne ? ne : 1));
-    int *end1 = ori__alloc(sizeof(int) * (size_t)(ne ? ne : 1));
-    for (int e = 0; e < ne; ++e) end0[e] = end1[e] = ORI_NULL_INDEX;
-    for (int e = 0; e < ne; ++e) {
-        int r = ori__uf_root(parent, e);
-        for (int k = 0; k < 2; ++k) {
-            int v = p->edges[e].v[k];
-            if (removed[v]) continue;
-            if (end0[r] == ORI_NULL_INDEX) end0[r] = map[v];
-            else end1[r] = map[v];
-        }
-    }
     // One edge per group, at the position of its lowest edge index (the root).
     for (int e = 0; e < ne; ++e) {
         if (ori__uf_root(parent, e) != e) continue;
-        ORI_ASSERT(end0[e] != ORI_NULL_INDEX && end1[e] != ORI_NULL_INDEX);
-        ori_pattern_add_edge(q, end0[e], end1[e], p->edges[e].assignment, p->edges[e].fold_angle_rad);
+        ori_pattern_add_edge(q, map[end0[e]], map[end1[e]], p->edges[e].assignment, p->edges[e].fold_angle_rad);
     }
     q->has_fold_angles = p->has_fold_angles;
     ori__free(end0);
