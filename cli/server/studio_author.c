@@ -41,7 +41,7 @@ void studio_api_tree(studio *s, const studio_request *req, studio_response *out)
     (void)req;
     char file[STUDIO_PATH_MAX];
     studio_model *m = current(s, file, sizeof file);
-    studio_respond_json(out, 200, studio_json_tree(file, m->pattern));
+    studio_respond_json(out, 200, cli_tree_json(file, m->pattern));
     studio_model_unref(m);
 }
 
@@ -49,7 +49,7 @@ void studio_api_info(studio *s, const studio_request *req, studio_response *out)
 {
     (void)req;
     pthread_mutex_lock(&s->lock);
-    json_t *o = studio_json_info(s->file, 0, ori_fold_frame_count(s->doc), s->model->pattern);
+    json_t *o = cli_info_json(s->file, 0, ori_fold_frame_count(s->doc), s->model->pattern);
     pthread_mutex_unlock(&s->lock);
     studio_respond_json(out, 200, o);
 }
@@ -115,40 +115,6 @@ void studio_api_check(studio *s, const studio_request *req, studio_response *out
 }
 
 // Why regularize refuses, as `orikin regularize` says it (NULL: it succeeded).
-static const char *regularize_refusal(const ori_regularize_result *r, const ori_regularize_def *def, char *buf,
-                                      size_t size)
-{
-    const char *goal = def->rigid ? "rigidly foldable" : "flat-foldable";
-    if (r->odd_vertex != ORI_NULL_INDEX)
-        snprintf(buf, size, "interior vertex %d has an odd number of creases: no move makes it flat-foldable", r->odd_vertex);
-    else if (r->refused)
-        snprintf(buf, size,
-                 "the nearest %s pattern moves vertex %d by %.3g of the sheet size, more than %.3g (--max-move): "
-                 "the drawing is not a rounded version of one",
-                 goal, r->max_move_vertex, r->max_move_rel, def->max_move_rel);
-    else if (r->crossing_edge != ORI_NULL_INDEX)
-        snprintf(buf, size, "the nearest %s pattern would make edges cross (%s): the drawing's topology does not allow it",
-                 goal, r->crossing);
-    else if (r->against_edge != ORI_NULL_INDEX)
-        snprintf(buf, size,
-                 "crease %d folds against its assignment in the only motion its degree-4 vertices allow (the "
-                 "assignment does not fit the geometry)",
-                 r->against_edge);
-    else if (!r->flat_foldable && r->check_vertex != ORI_NULL_INDEX)
-        snprintf(buf, size, "Kawasaki holds after the moves, but vertex %d is not flat-foldable (%s): %s", r->check_vertex,
-                 ori_flat_rule_name((ori_flat_rule)r->check_rule), r->check_detail);
-    else if (!r->converged && def->rigid)
-        snprintf(buf, size,
-                 "no rigidly foldable pattern was found near this one (Kawasaki %.3g rad, rigid defect %.3g after %d "
-                 "iterations)",
-                 r->kawasaki_after_rad, r->rigid_after, r->iterations);
-    else if (!r->converged)
-        snprintf(buf, size, "no flat-foldable pattern was found near this one (Kawasaki %.3g rad after %d iterations)",
-                 r->kawasaki_after_rad, r->iterations);
-    else return NULL;
-    return buf;
-}
-
 // POST /api/regularize {rigid, max_move}: `orikin regularize --json` on the document's crease
 // pattern; when it succeeds the regularized pattern becomes the document (undoable).
 void studio_api_regularize(studio *s, const studio_request *req, studio_response *out)
@@ -185,41 +151,8 @@ void studio_api_regularize(studio *s, const studio_request *req, studio_response
             studio_fail_error(out, studio_status_of(st), &err);
         } else {
             char buf[320];
-            const char *why = regularize_refusal(&r, &def, buf, sizeof buf);
-            json_t *j = json_object();
-            json_object_set_new(j, "file", json_string(file));
-            json_object_set_new(j, "rigid", json_boolean(rigid));
-            json_object_set_new(j, "converged", json_boolean(r.converged));
-            json_object_set_new(j, "refused", json_boolean(r.refused));
-            json_object_set_new(j, "reason", why ? json_string(why) : json_null());
-            json_object_set_new(j, "interior_vertices", json_integer(r.interior_vertices));
-            json_object_set_new(j, "unknowns", json_integer(r.unknowns));
-            json_object_set_new(j, "equations", json_integer(r.equations));
-            json_object_set_new(j, "iterations", json_integer(r.iterations));
-            json_object_set_new(j, "moved_vertices", json_integer(r.moved_vertices));
-            json_object_set_new(j, "max_move_rel", json_real(r.max_move_rel));
-            json_object_set_new(j, "max_move_vertex",
-                                r.max_move_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.max_move_vertex));
-            json_object_set_new(j, "rms_move_rel", json_real(r.rms_move_rel));
-            json_object_set_new(j, "max_move_allowed_rel", json_real(def.max_move_rel));
-            json_object_set_new(j, "kawasaki_before_deg", json_real(ori_rad_to_deg_output(r.kawasaki_before_rad)));
-            json_object_set_new(j, "kawasaki_after_deg", json_real(ori_rad_to_deg_output(r.kawasaki_after_rad)));
-            json_object_set_new(j, "crossing_edge",
-                                r.crossing_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.crossing_edge));
-            json_object_set_new(j, "rigid_before", rigid ? json_real(r.rigid_before) : json_null());
-            json_object_set_new(j, "rigid_after", rigid ? json_real(r.rigid_after) : json_null());
-            json_object_set_new(j, "mode_vertices", rigid ? json_integer(r.mode_vertices) : json_null());
-            json_object_set_new(j, "against_edge",
-                                r.against_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.against_edge));
-            json_object_set_new(j, "rigid_only", json_false());
-            json_object_set_new(j, "equal_tolerance_deg", json_real(ori_rad_to_deg_output(r.equal_tolerance_rad)));
-            json_object_set_new(j, "ties", json_integer(r.ties));
-            json_object_set_new(j, "parallels_kept", json_boolean(r.parallels_kept));
-            json_object_set_new(j, "sides_moved", json_boolean(r.sides_moved));
-            json_object_set_new(j, "flat_foldable", json_boolean(r.flat_foldable));
-            json_object_set_new(j, "check_vertex",
-                                r.check_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.check_vertex));
-            json_object_set_new(j, "output", json_null());
+            const char *why = cli_regularize_refusal(&r, &def, buf, sizeof buf);
+            json_t *j = cli_regularize_json(file, &def, &r, why, NULL);
             bool replaced = false;
             pthread_mutex_lock(&s->lock);
             if (!why && q && s->version == version) {
@@ -573,7 +506,7 @@ void studio_api_axiom(studio *s, const studio_request *req, studio_response *out
         return;
     }
     ori_line_set set = ori_axiom_solve(&in);
-    json_t *res = studio_json_axiom(in.axiom, &set);
+    json_t *res = cli_axiom_json(in.axiom, &set);
     // Each solution clipped to the target face (or the whole sheet), for drawing.
     pthread_mutex_lock(&s->lock);
     const ori_pattern *p = s->model->pattern;
