@@ -865,19 +865,6 @@ static const studio_export_format formats[] = {
 int studio_export_format_count(void) { return (int)(sizeof formats / sizeof formats[0]); }
 const studio_export_format *studio_export_format_at(int i) { return &formats[i]; }
 
-// The document's file name with another extension ("open-corner.svg").
-void studio_download_name(const char *file, const char *ext, char *out, size_t size)
-{
-    const char *base = strrchr(file, '/');
-    base = base ? base + 1 : file;
-    const char *dot = strrchr(base, '.');
-    int len = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
-    if (len > 100) len = 100;
-    snprintf(out, size, "%.*s%s", len, base, ext);
-    for (char *c = out; *c; ++c)
-        if (*c == '"' || *c == '\\' || (unsigned char)*c < 32) *c = '_';
-}
-
 // The text of the document in a format (NULL with a 400 when it cannot be written).
 static char *export_text(studio *s, const char *format, studio_response *out)
 {

@@ -147,6 +147,8 @@ void studio_utf8_clean(char *s);
 void studio_fail(studio_response *out, int status, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 // An error of the library as {"error": ...} (ori_error_format).
 void studio_fail_error(studio_response *out, int status, const ori_error *err);
+// err formatted on one line (newlines become spaces) into buf (size bytes).
+void studio_error_line(char *buf, size_t size, const ori_error *err);
 // The status of a library failure: 500 for internal or non-convergence, else 400.
 int studio_status_of(ori_status st);
 // A JSON value (consumed) as the response body, numbers in their shortest exact form.
