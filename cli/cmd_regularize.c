@@ -32,7 +32,7 @@ static int run(int argc, char **argv)
         } else if (strcmp(o, "--max-move") == 0) {
             const char *v = cli_option_once(cmd, argc, argv, &i, &seen);
             if (!v) return CLI_EXIT_USAGE;
-            if (!cli_parse_double(v, &def.max_move_rel) || def.max_move_rel <= 0.0 || def.max_move_rel > 1.0)
+            if (!cli_parse_double(v, &def.max_move_rel))
                 return cli_usage(cmd, "--max-move needs a fraction of the sheet size in (0, 1], got '%s'", v);
         } else if (o[0] == '-' && o[1] != '\0') {
             return cli_usage(cmd, "unknown option %s", o);
@@ -43,18 +43,19 @@ static int run(int argc, char **argv)
         }
     }
     if (!path) return cli_usage(cmd, "missing FILE");
-    if (rigid && rigid_only) return cli_usage(cmd, "--rigid and --rigid-only exclude each other (--rigid-only: without Kawasaki)");
     def.rigid = rigid;
     def.rigid_only = rigid_only;
+    char mistake[200];
+    if (cli_regularize_request_error(&def, "--max-move", mistake, sizeof mistake)) return cli_usage(cmd, "%s", mistake);
     rigid = rigid || rigid_only;
     ori_fold *doc;
     ori_pattern *p;
     int rc = cli_input_load(cmd, path, &in, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
-    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p)) {
+    if (cli_regularize_pattern_error(p, in.frame, mistake, sizeof mistake)) {
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
-        return cli_input_fail(cmd, path, "frame %d is a folded form: regularize needs a flat crease pattern", in.frame);
+        return cli_input_fail(cmd, path, "%s", mistake);
     }
     ori_regularize_result r;
     ori_pattern *q = NULL;

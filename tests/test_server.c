@@ -429,6 +429,16 @@ Test(server, info_tree_dof_regularize_equal_cli_json_on_degree4)
     cr_assert_eq(json_integer_value(json_object_get(dof, "generic_dof")), 1);
     cr_assert(json_is_true(json_object_get(dof, "singular")));
     json_decref(dof);
+    // the same mistake, the same text (each front end names the option as it spells it)
+    studio_response r = call(s, "POST", "/api/regularize", NULL, "{\"max_move\": 2}");
+    cr_assert_eq(r.status, 400);
+    assert_error_body(&r, "max_move 2");
+    cr_assert(strstr(r.body, "max_move needs a fraction of the sheet size in (0, 1], got 2"), "%s", r.body);
+    studio_response_free(&r);
+    char *cli_out = NULL;
+    cr_assert_eq(test_run_cli("regularize examples/patterns/degree4-vertex.fold --max-move 2", &cli_out), 2);
+    cr_assert(strstr(cli_out, "--max-move needs a fraction of the sheet size in (0, 1], got 2"), "%s", cli_out);
+    free(cli_out);
     studio_destroy(s);
 }
 

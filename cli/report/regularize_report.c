@@ -38,6 +38,23 @@ const char *cli_regularize_refusal(const ori_regularize_result *r, const ori_reg
     return buf;
 }
 
+bool cli_regularize_request_error(const ori_regularize_def *def, const char *max_move_name, char *buf, size_t size)
+{
+    if (!(def->max_move_rel > 0.0 && def->max_move_rel <= 1.0))
+        snprintf(buf, size, "%s needs a fraction of the sheet size in (0, 1], got %g", max_move_name, def->max_move_rel);
+    else if (def->rigid && def->rigid_only)
+        snprintf(buf, size, "--rigid and --rigid-only exclude each other (--rigid-only: without Kawasaki)");
+    else return false;
+    return true;
+}
+
+bool cli_regularize_pattern_error(const ori_pattern *p, int frame, char *buf, size_t size)
+{
+    if (!ori_pattern_is_folded_form(p) && !ori_pattern_is_3d(p)) return false;
+    snprintf(buf, size, "frame %d is a folded form: regularize needs a flat crease pattern", frame);
+    return true;
+}
+
 static json_t *index_or_null(int i) { return i == ORI_NULL_INDEX ? json_null() : json_integer(i); }
 
 json_t *cli_regularize_json(const char *file, const ori_regularize_def *def, const ori_regularize_result *r,

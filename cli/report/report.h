@@ -8,7 +8,8 @@
 // cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json, cli_lock_text,
 // cli_lock_hint, cli_fold_rounding_hint, cli_fold_json, cli_record_json, cli_collide_json,
 // cli_layers_count_json, cli_info_json, cli_tree_json, cli_dof_json, cli_axiom_json,
-// cli_regularize_refusal, cli_regularize_json.
+// cli_regularize_request_error, cli_regularize_pattern_error, cli_regularize_refusal,
+// cli_regularize_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -147,6 +148,11 @@ json_t *cli_axiom_json(int axiom, const ori_line_set *set);
 
 // --- regularization (orikin regularize --json; POST /api/regularize) --------------------------
 
+// The mistake in a regularization request (max_move outside (0, 1], named max_move_name as the
+// front end spells it; rigid with rigid_only) as one line into buf: true; false when it is valid.
+bool cli_regularize_request_error(const ori_regularize_def *def, const char *max_move_name, char *buf, size_t size);
+// Why pattern p (frame `frame` of its file) cannot be regularized (a folded form) into buf: true.
+bool cli_regularize_pattern_error(const ori_pattern *p, int frame, char *buf, size_t size);
 // Why the result r of ori_regularize under def is refused, as one line into buf (size bytes,
 // returned), or NULL when it is accepted (every condition holds, nothing moved too far).
 const char *cli_regularize_refusal(const ori_regularize_result *r, const ori_regularize_def *def, char *buf, size_t size);

@@ -127,11 +127,12 @@ void studio_api_regularize(studio *s, const studio_request *req, studio_response
                             studio_get_number(o, "max_move", false, &def.max_move_rel, NULL, out);
     json_decref(o);
     if (!ok) return;
-    if (!(def.max_move_rel > 0.0 && def.max_move_rel <= 1.0)) {
-        studio_fail(out, 400, "max_move: a fraction of the sheet size in (0, 1], got %g", def.max_move_rel);
+    def.rigid = rigid;
+    char mistake[200];
+    if (cli_regularize_request_error(&def, "max_move", mistake, sizeof mistake)) {
+        studio_fail(out, 400, "%s", mistake);
         return;
     }
-    def.rigid = rigid;
     if (!studio_job_begin(s, "regularize", out)) return;
     char file[STUDIO_PATH_MAX];
     pthread_mutex_lock(&s->lock);
@@ -143,8 +144,8 @@ void studio_api_regularize(studio *s, const studio_request *req, studio_response
     ori_regularize_result r;
     ori_pattern *q = NULL;
     ori_error err;
-    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p)) {
-        studio_fail(out, 400, "frame 0 is a folded form: regularize needs a flat crease pattern");
+    if (cli_regularize_pattern_error(p, 0, mistake, sizeof mistake)) {
+        studio_fail(out, 400, "%s", mistake);
     } else {
         ori_status st = ori_regularize(p, &def, &q, &r, &err);
         if (st != ORI_OK) {
