@@ -364,16 +364,8 @@ static json_t *apply_json(studio *s, const ori_pattern *p, int nodes_before, con
 {
     json_t *o = version_json(s);
     json_object_set_new(o, "applied_to", json_string(target));
-    json_object_set_new(o, "segments", json_integer(r->segments));
-    json_object_set_new(o, "faces_split", json_integer(r->faces_split));
-    json_object_set_new(o, "edges_added", json_integer(r->edges_added));
-    json_object_set_new(o, "first_edge", json_integer(r->first_edge));
-    json_t *faces = json_array();
-    for (int i = nodes_before; i < ori_pattern_tree_node_count(p); ++i) {
-        ori_tree_node n = ori_pattern_tree_node(p, i);
-        int f = ori_pattern_find_face_by_name(p, n.name);
-        if (f != ORI_NULL_INDEX) json_array_append_new(faces, json_pack("{s:s,s:i}", "name", n.name, "face", f));
-    }
+    cli_apply_counts_json(o, r);
+    json_t *faces = cli_apply_new_faces_json(p, nodes_before);
     json_object_set_new(o, "new_faces", faces);
     return o;
 }
