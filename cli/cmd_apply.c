@@ -100,9 +100,7 @@ static int run(int argc, char **argv)
     rc = cli_spec_face(cmd, path, p, "--face", face_spec, &face);
     if (rc == CLI_EXIT_OK) {
         char face_name[ORI_NAME_MAX + 16];
-        const char *fname = ori_pattern_face_name(p, face);
-        if (fname) snprintf(face_name, sizeof face_name, "%s", fname);
-        else snprintf(face_name, sizeof face_name, "face %d", face);
+        cli_face_label(p, face, face_name, sizeof face_name);
         int nodes = ori_pattern_tree_node_count(p);
         ori_apply_result r;
         st = ori_pattern_apply_composite(p, comp, face, has_asg ? &asg : NULL, &r, &err);

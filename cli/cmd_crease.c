@@ -5,6 +5,7 @@
 
 #include "axiom_args.h"
 #include "kin_args.h"
+#include "report.h"
 
 static int run(int argc, char **argv)
 {
@@ -110,9 +111,7 @@ static int run(int argc, char **argv)
     if (face_spec) rc = cli_spec_face("crease", path, p, "--face", face_spec, &face);
     if (rc == CLI_EXIT_OK) {
         char target[ORI_NAME_MAX + 16];
-        if (face == ORI_NULL_INDEX) snprintf(target, sizeof target, "the sheet");
-        else if (ori_pattern_face_name(p, face)) snprintf(target, sizeof target, "%s", ori_pattern_face_name(p, face));
-        else snprintf(target, sizeof target, "face %d", face);
+        cli_face_label(p, face, target, sizeof target);
         ori_apply_result r;
         ori_error err;
         ori_status st = ori_pattern_apply_crease(p, &c, face, &r, &err);

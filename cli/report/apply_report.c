@@ -1,11 +1,22 @@
-// What applying a composite crease pattern to a face did (orikin apply --json, POST /api/apply):
-// the counts and the new folding elements, built once for both front ends.
+// What applying a composite or a crease to a face did (orikin apply and crease --json, POST
+// /api/apply and /api/crease): the target's label, the counts and the new folding elements,
+// built once for both front ends.
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <orikin/authoring.h>
 
 #include "report.h"
+
+const char *cli_face_label(const ori_pattern *p, int f, char *buf, size_t size)
+{
+    const char *name = f == ORI_NULL_INDEX ? NULL : ori_pattern_face_name(p, f);
+    if (name) snprintf(buf, size, "%s", name);
+    else if (f == ORI_NULL_INDEX) snprintf(buf, size, "the sheet");
+    else snprintf(buf, size, "face %d", f);
+    return buf;
+}
 
 void cli_apply_counts_json(json_t *o, const ori_apply_result *r)
 {

@@ -9,7 +9,7 @@
 // cli_lock_hint, cli_fold_rounding_hint, cli_fold_json, cli_record_json, cli_collide_json,
 // cli_layers_count_json, cli_info_json, cli_tree_json, cli_dof_json, cli_axiom_json,
 // cli_regularize_request_error, cli_regularize_pattern_error, cli_regularize_refusal,
-// cli_regularize_json, cli_apply_counts_json, cli_apply_new_faces_json.
+// cli_regularize_json, cli_face_label, cli_apply_counts_json, cli_apply_new_faces_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -161,8 +161,12 @@ const char *cli_regularize_refusal(const ori_regularize_result *r, const ori_reg
 json_t *cli_regularize_json(const char *file, const ori_regularize_def *def, const ori_regularize_result *r,
                             const char *why, const char *output);
 
-// --- a composite applied to a face (orikin apply --json; POST /api/apply) ----------------------
+// --- a composite or a crease applied to a face (orikin apply, crease --json; POST /api/apply,
+// /api/crease) --------------------------------------------------------------------------------
 
+// A face as the reports name it: its name, else "face N", or "the sheet" for ORI_NULL_INDEX
+// (into buf, size bytes; returned).
+const char *cli_face_label(const ori_pattern *p, int f, char *buf, size_t size);
 // segments, faces_split, edges_added and first_edge of r, set on object o.
 void cli_apply_counts_json(json_t *o, const ori_apply_result *r);
 // [{name, face}] of the folding elements that tree nodes nodes_before … of p name: a new array.

@@ -351,15 +351,6 @@ static bool parse_assign(json_t *o, bool *has, ori_assignment *a, studio_respons
     return true;
 }
 
-static const char *face_label(const ori_pattern *p, int f, char *buf, size_t size)
-{
-    const char *name = f == ORI_NULL_INDEX ? NULL : ori_pattern_face_name(p, f);
-    if (name) snprintf(buf, size, "%s", name);
-    else if (f == ORI_NULL_INDEX) snprintf(buf, size, "the sheet");
-    else snprintf(buf, size, "face %d", f);
-    return buf;
-}
-
 static json_t *apply_json(studio *s, const ori_pattern *p, int nodes_before, const char *target, const ori_apply_result *r)
 {
     json_t *o = version_json(s);
@@ -412,7 +403,7 @@ void studio_api_apply(studio *s, const studio_request *req, studio_response *out
         ori_pattern *p = ori_pattern_clone(s->model->pattern);
         int nodes = ori_pattern_tree_node_count(p);
         char target[ORI_NAME_MAX + 16];
-        face_label(p, face, target, sizeof target);
+        cli_face_label(p, face, target, sizeof target);
         ori_apply_result r;
         st = ori_pattern_apply_composite(p, comp, face, has_asg ? &asg : NULL, &r, &err);
         if (st != ORI_OK) {
@@ -621,7 +612,7 @@ void studio_api_crease(studio *s, const studio_request *req, studio_response *ou
         ori_pattern *p = ori_pattern_clone(s->model->pattern);
         int nodes = ori_pattern_tree_node_count(p);
         char target[ORI_NAME_MAX + 16];
-        face_label(p, face, target, sizeof target);
+        cli_face_label(p, face, target, sizeof target);
         ori_apply_result r;
         ori_error err;
         ori_status st = ori_pattern_apply_crease(p, &c, face, &r, &err);
@@ -741,8 +732,8 @@ static bool edit_one(ori_pattern *p, json_t *op, int index, int *map, int n_orig
     int faces[2];
     ori_pattern_edge_faces(p, e, faces);
     char f0[ORI_NAME_MAX + 16], f1[ORI_NAME_MAX + 16], fm[ORI_NAME_MAX + 16], line[320];
-    face_label(p, faces[0], f0, sizeof f0);
-    face_label(p, faces[1], f1, sizeof f1);
+    cli_face_label(p, faces[0], f0, sizeof f0);
+    cli_face_label(p, faces[1], f1, sizeof f1);
     ori_error err;
     ori_status st = ORI_OK;
     line[0] = '\0';
@@ -768,7 +759,7 @@ static bool edit_one(ori_pattern *p, json_t *op, int index, int *map, int n_orig
                                                  : r.kept_face - (r.removed_face != ORI_NULL_INDEX && r.removed_face < r.kept_face);
         int n = snprintf(line, sizeof line, "removed %s", label);
         if (r.removed_face != ORI_NULL_INDEX && n < (int)sizeof line)
-            n += snprintf(line + n, sizeof line - (size_t)n, ": %s + %s -> %s%s", f0, f1, face_label(p, kept, fm, sizeof fm),
+            n += snprintf(line + n, sizeof line - (size_t)n, ": %s + %s -> %s%s", f0, f1, cli_face_label(p, kept, fm, sizeof fm),
                           r.name_restored ? " (name restored)" : "");
         if (r.removed_edge_count > 1 && n < (int)sizeof line)
             snprintf(line + n, sizeof line - (size_t)n, "; %d collinear edge pair(s) rejoined", r.removed_edge_count - 1);
