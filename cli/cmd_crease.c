@@ -95,9 +95,9 @@ static int run(int argc, char **argv)
             return CLI_EXIT_USAGE;
         }
         if (!have_solution) solution = 1;
-        if (solution < 1 || solution > s.count)
-            return cli_value_fail("crease", NULL, "--solution", "solution %d does not exist (axiom %d has %d solution%s here)",
-                                  solution, in.axiom, s.count, s.count == 1 ? "" : "s");
+        char mistake[160];
+        if (cli_axiom_solution_error(in.axiom, solution, s.count, mistake, sizeof mistake))
+            return cli_value_fail("crease", NULL, "--solution", "%s", mistake);
         ori_line l = s.lines[solution - 1];
         c.a = l.point;
         c.b = ori_v2_add(l.point, l.dir);

@@ -1,6 +1,7 @@
 // The answers about one pattern that need no solve, or one rank: orikin info, tree, dof and
 // axiom --json and the studio's GET /api/info, /api/tree, /api/dof, POST /api/axiom, written
 // once so that both front ends print the same fields and values by construction.
+#include <stdio.h>
 #include <stdlib.h>
 
 #include <orikin/authoring.h>
@@ -107,4 +108,12 @@ json_t *cli_axiom_json(int axiom, const ori_line_set *set)
         json_array_append_new(lines, json_pack("{s:[ff],s:[ff]}", "point", l.point.x, l.point.y, "dir", l.dir.x, l.dir.y));
     }
     return json_pack("{s:i,s:o}", "axiom", axiom, "lines", lines);
+}
+
+bool cli_axiom_solution_error(int axiom, int solution, int count, char *buf, size_t size)
+{
+    if (solution >= 1 && solution <= count) return false;
+    snprintf(buf, size, "solution %d does not exist (axiom %d has %d solution%s here)", solution, axiom, count,
+             count == 1 ? "" : "s");
+    return true;
 }

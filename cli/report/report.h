@@ -8,6 +8,7 @@
 // cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json, cli_lock_text,
 // cli_lock_hint, cli_fold_rounding_hint, cli_fold_json, cli_record_json, cli_collide_json,
 // cli_layers_count_json, cli_info_json, cli_tree_json, cli_dof_json, cli_axiom_json,
+// cli_axiom_solution_error,
 // cli_regularize_request_error, cli_regularize_pattern_error, cli_regularize_refusal,
 // cli_regularize_json, cli_face_label, cli_apply_counts_json, cli_apply_new_faces_json.
 #ifndef ORI_CLI_REPORT_H
@@ -145,6 +146,9 @@ json_t *cli_tree_json(const char *file, const ori_pattern *p);
 json_t *cli_dof_json(const char *file, int frame, const ori_dof_result *r, int loops);
 // {axiom, lines: [{point, dir}]} of the solutions set of a Huzita–Hatori axiom: a new object.
 json_t *cli_axiom_json(int axiom, const ori_line_set *set);
+// Why solution (1-based) of an axiom with count solutions does not exist, into buf: true; false
+// when it exists (orikin crease --solution, POST /api/crease's solution).
+bool cli_axiom_solution_error(int axiom, int solution, int count, char *buf, size_t size);
 
 // --- regularization (orikin regularize --json; POST /api/regularize) --------------------------
 

@@ -595,10 +595,10 @@ void studio_api_crease(studio *s, const studio_request *req, studio_response *ou
                         set.count);
             return;
         }
-        if (solution < 1 || solution > set.count) {
+        char mistake[160];
+        if (cli_axiom_solution_error(in.axiom, solution, set.count, mistake, sizeof mistake)) {
             json_decref(o);
-            studio_fail(out, 400, "solution %d does not exist (axiom %d has %d solution%s here)", solution, in.axiom,
-                        set.count, set.count == 1 ? "" : "s");
+            studio_fail(out, 400, "%s", mistake);
             return;
         }
         ori_line l = set.lines[solution - 1];
