@@ -5,6 +5,7 @@
 #include <orikin/collection.h>
 
 #include "cli.h"
+#include "report.h"
 #include "kin_args.h"
 
 static void list_builtins(void)
@@ -13,49 +14,23 @@ static void list_builtins(void)
         printf("%-16s %s\n", ori_collection_builtin_name(i), ori_collection_builtin_summary(i));
 }
 
-static const ori_pattern *sort_pattern; // qsort has no context argument
-static int cmp_face_name(const void *a, const void *b)
-{
-    return strcmp(ori_pattern_face_name(sort_pattern, *(const int *)a), ori_pattern_face_name(sort_pattern, *(const int *)b));
-}
-
 // The summary: text line(s) or one JSON object.
 static void report(bool json, const char *out, const ori_pattern *p, int node_before, const char *face_name,
                    const char *pattern, const ori_apply_result *r)
 {
-    json_t *o = json_object(), *leaves = json_array();
+    json_t *o = json_object(), *leaves = cli_apply_new_faces_json(p, node_before);
     char names[2048] = "";
     size_t len = 0;
-    // The faces by name, sorted once: a lookup per new tree node would be quadratic in the
-    // output (512 random creases make 90,000 faces).
-    int nf = ori_pattern_face_count(p), *by_name = malloc(((size_t)nf + 1) * sizeof *by_name), nn = 0;
-    for (int f = 0; f < nf; ++f)
-        if (ori_pattern_face_name(p, f)) by_name[nn++] = f;
-    sort_pattern = p;
-    qsort(by_name, (size_t)nn, sizeof *by_name, cmp_face_name);
-    for (int i = node_before; i < ori_pattern_tree_node_count(p); ++i) {
-        ori_tree_node n = ori_pattern_tree_node(p, i);
-        int f = ORI_NULL_INDEX;
-        for (int lo = 0, hi = nn - 1; lo <= hi && f == ORI_NULL_INDEX;) {
-            int mid = (lo + hi) / 2, c = strcmp(n.name, ori_pattern_face_name(p, by_name[mid]));
-            if (c == 0) f = by_name[mid];
-            else if (c < 0) hi = mid - 1;
-            else lo = mid + 1;
-        }
-        if (f == ORI_NULL_INDEX) continue;
-        json_array_append_new(leaves, json_pack("{sssi}", "name", n.name, "face", f));
-        if (len < sizeof names - 64)
-            len += (size_t)snprintf(names + len, sizeof names - len, "%s%s (face %d)", len ? ", " : "; new folding elements: ",
-                                    n.name, f);
+    for (size_t i = 0; i < json_array_size(leaves) && len < sizeof names - 64; ++i) {
+        json_t *leaf = json_array_get(leaves, i);
+        len += (size_t)snprintf(names + len, sizeof names - len, "%s%s (face %d)", len ? ", " : "; new folding elements: ",
+                                json_string_value(json_object_get(leaf, "name")),
+                                (int)json_integer_value(json_object_get(leaf, "face")));
     }
-    free(by_name);
     json_object_set_new(o, "output", json_string(out));
     json_object_set_new(o, "pattern", json_string(pattern));
     json_object_set_new(o, "face", json_string(face_name));
-    json_object_set_new(o, "segments", json_integer(r->segments));
-    json_object_set_new(o, "faces_split", json_integer(r->faces_split));
-    json_object_set_new(o, "edges_added", json_integer(r->edges_added));
-    json_object_set_new(o, "first_edge", json_integer(r->first_edge));
+    cli_apply_counts_json(o, r);
     json_object_set_new(o, "last_edge", json_integer(ori_pattern_edge_count(p) - 1));
     json_object_set_new(o, "new_faces", leaves);
     cli_json_counts(o, p);
@@ -125,9 +100,7 @@ static int run(int argc, char **argv)
     rc = cli_spec_face(cmd, path, p, "--face", face_spec, &face);
     if (rc == CLI_EXIT_OK) {
         char face_name[ORI_NAME_MAX + 16];
-        const char *fname = ori_pattern_face_name(p, face);
-        if (fname) snprintf(face_name, sizeof face_name, "%s", fname);
-        else snprintf(face_name, sizeof face_name, "face %d", face);
+        cli_face_label(p, face, face_name, sizeof face_name);
         int nodes = ori_pattern_tree_node_count(p);
         ori_apply_result r;
         st = ori_pattern_apply_composite(p, comp, face, has_asg ? &asg : NULL, &r, &err);

@@ -2,6 +2,7 @@
 #include <string.h>
 
 #include "axiom_args.h"
+#include "report.h"
 
 static int run(int argc, char **argv)
 {
@@ -26,13 +27,7 @@ static int run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     ori_line_set s = ori_axiom_solve(&in);
     if (json) {
-        json_t *lines = json_array();
-        for (int k = 0; k < s.count; ++k)
-            json_array_append_new(lines, json_pack("{s[ff]s[ff]}", "point", s.lines[k].point.x, s.lines[k].point.y, "dir",
-                                                   s.lines[k].dir.x, s.lines[k].dir.y));
-        json_t *out = json_object();
-        json_object_set_new(out, "axiom", json_integer(in.axiom));
-        json_object_set_new(out, "lines", lines);
+        json_t *out = cli_axiom_json(in.axiom, &s);
         cli_print_json(out);
     } else {
         printf("axiom %d (%s): %d solution%s\n", in.axiom, axiom_summary(in.axiom), s.count, s.count == 1 ? "" : "s");

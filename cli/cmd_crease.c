@@ -5,6 +5,7 @@
 
 #include "axiom_args.h"
 #include "kin_args.h"
+#include "report.h"
 
 static int run(int argc, char **argv)
 {
@@ -94,9 +95,9 @@ static int run(int argc, char **argv)
             return CLI_EXIT_USAGE;
         }
         if (!have_solution) solution = 1;
-        if (solution < 1 || solution > s.count)
-            return cli_value_fail("crease", NULL, "--solution", "solution %d does not exist (axiom %d has %d solution%s here)",
-                                  solution, in.axiom, s.count, s.count == 1 ? "" : "s");
+        char mistake[160];
+        if (cli_axiom_solution_error(in.axiom, solution, s.count, mistake, sizeof mistake))
+            return cli_value_fail("crease", NULL, "--solution", "%s", mistake);
         ori_line l = s.lines[solution - 1];
         c.a = l.point;
         c.b = ori_v2_add(l.point, l.dir);
@@ -110,9 +111,7 @@ static int run(int argc, char **argv)
     if (face_spec) rc = cli_spec_face("crease", path, p, "--face", face_spec, &face);
     if (rc == CLI_EXIT_OK) {
         char target[ORI_NAME_MAX + 16];
-        if (face == ORI_NULL_INDEX) snprintf(target, sizeof target, "the sheet");
-        else if (ori_pattern_face_name(p, face)) snprintf(target, sizeof target, "%s", ori_pattern_face_name(p, face));
-        else snprintf(target, sizeof target, "face %d", face);
+        cli_face_label(p, face, target, sizeof target);
         ori_apply_result r;
         ori_error err;
         ori_status st = ori_pattern_apply_crease(p, &c, face, &r, &err);

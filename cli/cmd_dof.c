@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "kin_args.h"
+#include "report.h"
 #include "progress.h"
 
 // The mechanism and the fold angles of --frame N as fold reads them (cli_kin_load_input): frame 0
@@ -82,28 +83,7 @@ static int run(int argc, char **argv)
         if (st != ORI_OK) rc = cli_input_error(cmd, path, &err);
     }
     if (rc == CLI_EXIT_OK && json) {
-        json_t *out = json_object();
-        json_object_set_new(out, "file", json_string(path));
-        json_object_set_new(out, "frame", json_integer(in.frame));
-        json_object_set_new(out, "grubler", json_integer(r.grubler));
-        json_object_set_new(out, "unknowns", json_integer(r.unknowns));
-        json_object_set_new(out, "equations", json_integer(r.equations));
-        json_object_set_new(out, "rank", json_integer(r.rank));
-        json_object_set_new(out, "dof", json_integer(r.dof));
-        json_object_set_new(out, "generic_dof", r.generic_dof >= 0 ? json_integer(r.generic_dof) : json_null());
-        json_object_set_new(out, "singular", json_boolean(r.singular));
-        json_object_set_new(out, "rigid", json_boolean(r.rigid));
-        json_object_set_new(out, "undetermined", json_boolean(r.undetermined));
-        json_object_set_new(out, "probe_solves", json_integer(r.probe_solves));
-        json_object_set_new(out, "method", json_string(r.dense ? "dense-svd" : "sparse-cholmod"));
-        json_object_set_new(out, "sigma_max", json_real(r.sigma_max));
-        json_object_set_new(out, "sigma_cut", json_real(r.sigma_cut));
-        json_object_set_new(out, "loops", json_integer(ori_mechanism_loop_count(mech)));
-        json_object_set_new(out, "nearby_against_assignment",
-                            r.nearby_against > 0
-                                ? json_pack("{s:i,s:i,s:f}", "creases", r.nearby_against, "edge", r.nearby_against_edge,
-                                            "angle_deg", ori_rad_to_deg_output(r.nearby_against_rad))
-                                : json_null());
+        json_t *out = cli_dof_json(path, in.frame, &r, ori_mechanism_loop_count(mech));
         cli_print_json(out);
     } else if (rc == CLI_EXIT_OK) {
         printf("file               %s (state of frame %d)\n", path, in.frame);

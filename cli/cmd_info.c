@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "report.h"
 
 // A point as JSON [x, y] (or [x, y, z] for a 3D pattern).
 static json_t *point_json(ori_v3 x, bool three)
@@ -148,22 +149,7 @@ static int run(int argc, char **argv)
     bool three = ori_pattern_is_3d(p);
     int dim = three ? 3 : 2;
     if (json) {
-        json_t *by = json_object();
-        for (int a = 0; a < ORI_ASSIGN_COUNT; ++a) {
-            char key[2] = {ori_assignment_to_char((ori_assignment)a), '\0'};
-            json_object_set_new(by, key, json_integer(counts[a]));
-        }
-        json_t *out = json_object();
-        json_object_set_new(out, "file", json_string(path));
-        json_object_set_new(out, "frame", json_integer(in.frame));
-        json_object_set_new(out, "frames", json_integer(ori_fold_frame_count(doc)));
-        json_object_set_new(out, "vertices", json_integer(ori_pattern_vertex_count(p)));
-        json_object_set_new(out, "edges", json_integer(ori_pattern_edge_count(p)));
-        json_object_set_new(out, "edges_by_assignment", by);
-        json_object_set_new(out, "faces", json_integer(ori_pattern_face_count(p)));
-        json_object_set_new(out, "interior_vertices", json_integer(ori_pattern_interior_vertex_count(p)));
-        json_object_set_new(out, "dimension", json_integer(dim));
-        json_object_set_new(out, "folded_form", json_boolean(ori_pattern_is_folded_form(p)));
+        json_t *out = cli_info_json(path, in.frame, ori_fold_frame_count(doc), p);
         if (faces) json_object_set_new(out, "face_list", faces_json(p, three));
         if (edges) json_object_set_new(out, "edge_list", edges_json(p, three));
         cli_print_json(out);

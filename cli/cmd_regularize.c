@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "report.h"
 
 static double deg(double rad) { return ori_rad_to_deg_output(rad); }
 
@@ -31,7 +32,7 @@ static int run(int argc, char **argv)
         } else if (strcmp(o, "--max-move") == 0) {
             const char *v = cli_option_once(cmd, argc, argv, &i, &seen);
             if (!v) return CLI_EXIT_USAGE;
-            if (!cli_parse_double(v, &def.max_move_rel) || def.max_move_rel <= 0.0 || def.max_move_rel > 1.0)
+            if (!cli_parse_double(v, &def.max_move_rel))
                 return cli_usage(cmd, "--max-move needs a fraction of the sheet size in (0, 1], got '%s'", v);
         } else if (o[0] == '-' && o[1] != '\0') {
             return cli_usage(cmd, "unknown option %s", o);
@@ -42,18 +43,19 @@ static int run(int argc, char **argv)
         }
     }
     if (!path) return cli_usage(cmd, "missing FILE");
-    if (rigid && rigid_only) return cli_usage(cmd, "--rigid and --rigid-only exclude each other (--rigid-only: without Kawasaki)");
     def.rigid = rigid;
     def.rigid_only = rigid_only;
+    char mistake[200];
+    if (cli_regularize_request_error(&def, "--max-move", mistake, sizeof mistake)) return cli_usage(cmd, "%s", mistake);
     rigid = rigid || rigid_only;
     ori_fold *doc;
     ori_pattern *p;
     int rc = cli_input_load(cmd, path, &in, &doc, &p);
     if (rc != CLI_EXIT_OK) return rc;
-    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p)) {
+    if (cli_regularize_pattern_error(p, in.frame, mistake, sizeof mistake)) {
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
-        return cli_input_fail(cmd, path, "frame %d is a folded form: regularize needs a flat crease pattern", in.frame);
+        return cli_input_fail(cmd, path, "%s", mistake);
     }
     ori_regularize_result r;
     ori_pattern *q = NULL;
@@ -65,44 +67,8 @@ static int run(int argc, char **argv)
         return cli_input_error("regularize", path, &err);
     }
     // The verdict: written only when every condition holds and nothing moved too far.
-    const char *why = NULL;
     char buf[320];
-    if (r.odd_vertex != ORI_NULL_INDEX) {
-        snprintf(buf, sizeof buf, "interior vertex %d has an odd number of creases: no move makes it flat-foldable",
-                 r.odd_vertex);
-        why = buf;
-    } else if (r.refused) {
-        snprintf(buf, sizeof buf,
-                 "the nearest %s pattern moves vertex %d by %.3g of the sheet size, more than %.3g (--max-move): "
-                 "the drawing is not a rounded version of one",
-                 rigid ? "rigidly foldable" : "flat-foldable", r.max_move_vertex, r.max_move_rel, def.max_move_rel);
-        why = buf;
-    } else if (r.crossing_edge != ORI_NULL_INDEX) {
-        snprintf(buf, sizeof buf,
-                 "the nearest %s pattern would make edges cross (%s): the drawing's topology does not allow it",
-                 rigid ? "rigidly foldable" : "flat-foldable", r.crossing);
-        why = buf;
-    } else if (r.against_edge != ORI_NULL_INDEX) {
-        snprintf(buf, sizeof buf,
-                 "crease %d folds against its assignment in the only motion its degree-4 vertices allow (the "
-                 "assignment does not fit the geometry)",
-                 r.against_edge);
-        why = buf;
-    } else if (!rigid_only && !r.flat_foldable && r.check_vertex != ORI_NULL_INDEX) {
-        snprintf(buf, sizeof buf, "Kawasaki holds after the moves, but vertex %d is not flat-foldable (%s): %s",
-                 r.check_vertex, ori_flat_rule_name((ori_flat_rule)r.check_rule), r.check_detail);
-        why = buf;
-    } else if (!r.converged) {
-        if (rigid)
-            snprintf(buf, sizeof buf,
-                     "no rigidly foldable pattern was found near this one (Kawasaki %.3g rad, rigid defect %.3g after "
-                     "%d iterations)",
-                     r.kawasaki_after_rad, r.rigid_after, r.iterations);
-        else
-            snprintf(buf, sizeof buf, "no flat-foldable pattern was found near this one (Kawasaki %.3g rad after %d iterations)",
-                     r.kawasaki_after_rad, r.iterations);
-        why = buf;
-    }
+    const char *why = cli_regularize_refusal(&r, &def, buf, sizeof buf);
     bool ok = why == NULL;
     int code = ok ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
     if (ok && out) {
@@ -110,38 +76,7 @@ static int run(int argc, char **argv)
         if (code != CLI_EXIT_OK) ok = false;
     }
     if (json) {
-        json_t *o = json_object();
-        json_object_set_new(o, "file", json_string(path));
-        json_object_set_new(o, "rigid", json_boolean(rigid));
-        json_object_set_new(o, "converged", json_boolean(r.converged));
-        json_object_set_new(o, "refused", json_boolean(r.refused));
-        json_object_set_new(o, "reason", why ? json_string(why) : json_null());
-        json_object_set_new(o, "interior_vertices", json_integer(r.interior_vertices));
-        json_object_set_new(o, "unknowns", json_integer(r.unknowns));
-        json_object_set_new(o, "equations", json_integer(r.equations));
-        json_object_set_new(o, "iterations", json_integer(r.iterations));
-        json_object_set_new(o, "moved_vertices", json_integer(r.moved_vertices));
-        json_object_set_new(o, "max_move_rel", json_real(r.max_move_rel));
-        json_object_set_new(o, "max_move_vertex",
-                            r.max_move_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.max_move_vertex));
-        json_object_set_new(o, "rms_move_rel", json_real(r.rms_move_rel));
-        json_object_set_new(o, "max_move_allowed_rel", json_real(def.max_move_rel));
-        json_object_set_new(o, "kawasaki_before_deg", json_real(deg(r.kawasaki_before_rad)));
-        json_object_set_new(o, "kawasaki_after_deg", json_real(deg(r.kawasaki_after_rad)));
-        json_object_set_new(o, "crossing_edge", r.crossing_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.crossing_edge));
-        json_object_set_new(o, "rigid_before", rigid ? json_real(r.rigid_before) : json_null());
-        json_object_set_new(o, "rigid_after", rigid ? json_real(r.rigid_after) : json_null());
-        json_object_set_new(o, "mode_vertices", rigid ? json_integer(r.mode_vertices) : json_null());
-        json_object_set_new(o, "against_edge",
-                            r.against_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.against_edge));
-        json_object_set_new(o, "rigid_only", json_boolean(rigid_only));
-        json_object_set_new(o, "equal_tolerance_deg", json_real(deg(r.equal_tolerance_rad)));
-        json_object_set_new(o, "ties", json_integer(r.ties));
-        json_object_set_new(o, "parallels_kept", json_boolean(r.parallels_kept));
-        json_object_set_new(o, "sides_moved", json_boolean(r.sides_moved));
-        json_object_set_new(o, "flat_foldable", rigid_only ? json_null() : json_boolean(r.flat_foldable));
-        json_object_set_new(o, "check_vertex", r.check_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.check_vertex));
-        json_object_set_new(o, "output", ok && out ? json_string(out) : json_null());
+        json_t *o = cli_regularize_json(path, &def, &r, why, ok && out ? out : NULL);
         cli_print_json(o);
         printf("\n");
     } else {

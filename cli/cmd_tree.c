@@ -4,6 +4,7 @@
 #include <orikin/authoring.h>
 
 #include "cli.h"
+#include "report.h"
 
 static void print_node(const ori_pattern *p, int node, int depth)
 {
@@ -42,34 +43,7 @@ static int run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     int nodes = ori_pattern_tree_node_count(p), faces = ori_pattern_face_count(p);
     if (json) {
-        json_t *arr = json_array();
-        for (int i = 0; i < nodes; ++i) {
-            ori_tree_node n = ori_pattern_tree_node(p, i);
-            json_t *children = json_array();
-            for (int k = 0; k < nodes; ++k)
-                if (ori_pattern_tree_node(p, k).parent == i)
-                    json_array_append_new(children, json_string(ori_pattern_tree_node(p, k).name));
-            int face = ori_pattern_find_face_by_name(p, n.name);
-            json_t *o = json_object();
-            json_object_set_new(o, "name", json_string(n.name));
-            json_object_set_new(o, "parent", json_integer(n.parent));
-            json_object_set_new(o, "children", children);
-            json_object_set_new(o, "leaf", json_boolean(json_array_size(children) == 0));
-            json_object_set_new(o, "face", face == ORI_NULL_INDEX ? json_null() : json_integer(face));
-            json_array_append_new(arr, o);
-        }
-        json_t *elems = json_array();
-        for (int f = 0; f < faces; ++f) {
-            const char *name = ori_pattern_face_name(p, f);
-            json_t *o = json_object();
-            json_object_set_new(o, "face", json_integer(f));
-            json_object_set_new(o, "name", name ? json_string(name) : json_null());
-            json_array_append_new(elems, o);
-        }
-        json_t *out = json_object();
-        json_object_set_new(out, "file", json_string(path));
-        json_object_set_new(out, "nodes", arr);
-        json_object_set_new(out, "folding_elements", elems);
+        json_t *out = cli_tree_json(path, p);
         cli_print_json(out);
     } else {
         if (nodes == 0) printf("no face tree (the file has no crease history)\n");

@@ -388,6 +388,60 @@ Test(server, check_dof_tree_info_axiom_equal_cli_json)
     studio_destroy(s);
 }
 
+// info, tree, dof and regularize on a second example pattern (a degree-4 vertex): the CLI's
+// --json and the studio's API answer with the same object (both built by cli/report/).
+Test(server, info_tree_dof_regularize_equal_cli_json_on_degree4)
+{
+    const char *file = "examples/patterns/degree4-vertex.fold";
+    studio *s = open_studio(file);
+    struct {
+        const char *method, *path, *body, *cli;
+        int rc;
+    } cases[] = {
+        {"GET", "/api/info", NULL, "info examples/patterns/degree4-vertex.fold --json", 0},
+        {"GET", "/api/tree", NULL, "tree examples/patterns/degree4-vertex.fold --json", 0},
+        {"POST", "/api/dof", "{}", "dof examples/patterns/degree4-vertex.fold --json", 0},
+        {"POST", "/api/regularize", "{}", "regularize examples/patterns/degree4-vertex.fold --json", 0},
+        {"POST", "/api/regularize", "{\"rigid\": true, \"max_move\": 0.01}",
+         "regularize examples/patterns/degree4-vertex.fold --rigid --max-move 0.01 --json", 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        json_t *api = call_json(s, cases[i].method, cases[i].path, NULL, cases[i].body, 200);
+        json_t *cli = cli_json(cases[i].cli, cases[i].rc);
+        if (strcmp(cases[i].path, "/api/regularize") == 0) {
+            // the document's bookkeeping after a replace: the API's additions
+            for (const char *const *k = (const char *const[]){"replaced", "version", "undo", "redo", NULL}; *k; ++k)
+                json_object_del(api, *k);
+        }
+        cr_assert_geq(json_object_size(cli), 3, "%s: a real answer", cases[i].cli);
+        assert_same(api, cli, cases[i].cli);
+        json_decref(api);
+        json_decref(cli);
+    }
+    // the values themselves: one interior vertex of degree 4, four faces; flat, the vertex is
+    // singular (rank 2 of 3 equations: 2 DOF), one degree of freedom generically
+    json_t *info = cli_json("info examples/patterns/degree4-vertex.fold --json", 0);
+    cr_assert_eq(json_integer_value(json_object_get(info, "interior_vertices")), 1);
+    cr_assert_eq(json_integer_value(json_object_get(info, "faces")), 4);
+    json_decref(info);
+    json_t *dof = cli_json("dof examples/patterns/degree4-vertex.fold --json", 0);
+    cr_assert_eq(json_integer_value(json_object_get(dof, "dof")), 2);
+    cr_assert_eq(json_integer_value(json_object_get(dof, "generic_dof")), 1);
+    cr_assert(json_is_true(json_object_get(dof, "singular")));
+    json_decref(dof);
+    // the same mistake, the same text (each front end names the option as it spells it)
+    studio_response r = call(s, "POST", "/api/regularize", NULL, "{\"max_move\": 2}");
+    cr_assert_eq(r.status, 400);
+    assert_error_body(&r, "max_move 2");
+    cr_assert(strstr(r.body, "max_move needs a fraction of the sheet size in (0, 1], got 2"), "%s", r.body);
+    studio_response_free(&r);
+    char *cli_out = NULL;
+    cr_assert_eq(test_run_cli("regularize examples/patterns/degree4-vertex.fold --max-move 2", &cli_out), 2);
+    cr_assert(strstr(cli_out, "--max-move needs a fraction of the sheet size in (0, 1], got 2"), "%s", cli_out);
+    free(cli_out);
+    studio_destroy(s);
+}
+
 // --- robustness: failed requests change nothing -------------------------------------------------
 
 Test(server, bad_requests_leave_the_document_unchanged)

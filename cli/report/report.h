@@ -7,7 +7,10 @@
 // cli_collide_frames, cli_collision_json, cli_collision_describe, cli_check_run, cli_check_json,
 // cli_check_free, cli_motion_block_json, cli_motion_partial, cli_motion_dof_json, cli_lock_text,
 // cli_lock_hint, cli_fold_rounding_hint, cli_fold_json, cli_record_json, cli_collide_json,
-// cli_layers_count_json.
+// cli_layers_count_json, cli_info_json, cli_tree_json, cli_dof_json, cli_axiom_json,
+// cli_axiom_solution_error,
+// cli_regularize_request_error, cli_regularize_pattern_error, cli_regularize_refusal,
+// cli_regularize_json, cli_face_label, cli_apply_counts_json, cli_apply_new_faces_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -127,5 +130,50 @@ int cli_lock_hint(const ori_mechanism *m, const ori_motion_def *def, char *buf, 
 // tolerance, tolerance_source, drawing_noise, unsatisfiable, and "limited" (budget_given: a
 // --limit or --timeout was given) and "timed_out" (timeout_given). New reference.
 json_t *cli_layers_count_json(const ori_layers *L, bool budget_given, bool timeout_given);
+
+// --- one pattern's facts (orikin info, tree, dof, axiom --json; GET /api/info, /api/tree,
+// /api/dof, POST /api/axiom) --------------------------------------------------------------
+
+// {file, frame, frames, vertices, edges, edges_by_assignment, faces, interior_vertices,
+// dimension, folded_form} of pattern p, frame `frame` of a file of `frames` frames: a new object.
+json_t *cli_info_json(const char *file, int frame, int frames, const ori_pattern *p);
+// {file, nodes: [{name, parent, children, leaf, face}], folding_elements: [{face, name}]}: the
+// face tree of p, a new object.
+json_t *cli_tree_json(const char *file, const ori_pattern *p);
+// {file, frame, grubler, unknowns, equations, rank, dof, generic_dof, singular, rigid,
+// undetermined, probe_solves, method, sigma_max, sigma_cut, loops, nearby_against_assignment}
+// of a rank r of a mechanism with `loops` vertex loops: a new object.
+json_t *cli_dof_json(const char *file, int frame, const ori_dof_result *r, int loops);
+// {axiom, lines: [{point, dir}]} of the solutions set of a Huzita–Hatori axiom: a new object.
+json_t *cli_axiom_json(int axiom, const ori_line_set *set);
+// Why solution (1-based) of an axiom with count solutions does not exist, into buf: true; false
+// when it exists (orikin crease --solution, POST /api/crease's solution).
+bool cli_axiom_solution_error(int axiom, int solution, int count, char *buf, size_t size);
+
+// --- regularization (orikin regularize --json; POST /api/regularize) --------------------------
+
+// The mistake in a regularization request (max_move outside (0, 1], named max_move_name as the
+// front end spells it; rigid with rigid_only) as one line into buf: true; false when it is valid.
+bool cli_regularize_request_error(const ori_regularize_def *def, const char *max_move_name, char *buf, size_t size);
+// Why pattern p (frame `frame` of its file) cannot be regularized (a folded form) into buf: true.
+bool cli_regularize_pattern_error(const ori_pattern *p, int frame, char *buf, size_t size);
+// Why the result r of ori_regularize under def is refused, as one line into buf (size bytes,
+// returned), or NULL when it is accepted (every condition holds, nothing moved too far).
+const char *cli_regularize_refusal(const ori_regularize_result *r, const ori_regularize_def *def, char *buf, size_t size);
+// {file, rigid, converged, refused, reason (why or null), interior_vertices, …, check_vertex,
+// output (the path written, or null)} (docs/verification.md): a new object the caller owns.
+json_t *cli_regularize_json(const char *file, const ori_regularize_def *def, const ori_regularize_result *r,
+                            const char *why, const char *output);
+
+// --- a composite or a crease applied to a face (orikin apply, crease --json; POST /api/apply,
+// /api/crease) --------------------------------------------------------------------------------
+
+// A face as the reports name it: its name, else "face N", or "the sheet" for ORI_NULL_INDEX
+// (into buf, size bytes; returned).
+const char *cli_face_label(const ori_pattern *p, int f, char *buf, size_t size);
+// segments, faces_split, edges_added and first_edge of r, set on object o.
+void cli_apply_counts_json(json_t *o, const ori_apply_result *r);
+// [{name, face}] of the folding elements that tree nodes nodes_before … of p name: a new array.
+json_t *cli_apply_new_faces_json(const ori_pattern *p, int nodes_before);
 
 #endif

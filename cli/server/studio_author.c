@@ -41,7 +41,7 @@ void studio_api_tree(studio *s, const studio_request *req, studio_response *out)
     (void)req;
     char file[STUDIO_PATH_MAX];
     studio_model *m = current(s, file, sizeof file);
-    studio_respond_json(out, 200, studio_json_tree(file, m->pattern));
+    studio_respond_json(out, 200, cli_tree_json(file, m->pattern));
     studio_model_unref(m);
 }
 
@@ -49,7 +49,7 @@ void studio_api_info(studio *s, const studio_request *req, studio_response *out)
 {
     (void)req;
     pthread_mutex_lock(&s->lock);
-    json_t *o = studio_json_info(s->file, 0, ori_fold_frame_count(s->doc), s->model->pattern);
+    json_t *o = cli_info_json(s->file, 0, ori_fold_frame_count(s->doc), s->model->pattern);
     pthread_mutex_unlock(&s->lock);
     studio_respond_json(out, 200, o);
 }
@@ -115,40 +115,6 @@ void studio_api_check(studio *s, const studio_request *req, studio_response *out
 }
 
 // Why regularize refuses, as `orikin regularize` says it (NULL: it succeeded).
-static const char *regularize_refusal(const ori_regularize_result *r, const ori_regularize_def *def, char *buf,
-                                      size_t size)
-{
-    const char *goal = def->rigid ? "rigidly foldable" : "flat-foldable";
-    if (r->odd_vertex != ORI_NULL_INDEX)
-        snprintf(buf, size, "interior vertex %d has an odd number of creases: no move makes it flat-foldable", r->odd_vertex);
-    else if (r->refused)
-        snprintf(buf, size,
-                 "the nearest %s pattern moves vertex %d by %.3g of the sheet size, more than %.3g (--max-move): "
-                 "the drawing is not a rounded version of one",
-                 goal, r->max_move_vertex, r->max_move_rel, def->max_move_rel);
-    else if (r->crossing_edge != ORI_NULL_INDEX)
-        snprintf(buf, size, "the nearest %s pattern would make edges cross (%s): the drawing's topology does not allow it",
-                 goal, r->crossing);
-    else if (r->against_edge != ORI_NULL_INDEX)
-        snprintf(buf, size,
-                 "crease %d folds against its assignment in the only motion its degree-4 vertices allow (the "
-                 "assignment does not fit the geometry)",
-                 r->against_edge);
-    else if (!r->flat_foldable && r->check_vertex != ORI_NULL_INDEX)
-        snprintf(buf, size, "Kawasaki holds after the moves, but vertex %d is not flat-foldable (%s): %s", r->check_vertex,
-                 ori_flat_rule_name((ori_flat_rule)r->check_rule), r->check_detail);
-    else if (!r->converged && def->rigid)
-        snprintf(buf, size,
-                 "no rigidly foldable pattern was found near this one (Kawasaki %.3g rad, rigid defect %.3g after %d "
-                 "iterations)",
-                 r->kawasaki_after_rad, r->rigid_after, r->iterations);
-    else if (!r->converged)
-        snprintf(buf, size, "no flat-foldable pattern was found near this one (Kawasaki %.3g rad after %d iterations)",
-                 r->kawasaki_after_rad, r->iterations);
-    else return NULL;
-    return buf;
-}
-
 // POST /api/regularize {rigid, max_move}: `orikin regularize --json` on the document's crease
 // pattern; when it succeeds the regularized pattern becomes the document (undoable).
 void studio_api_regularize(studio *s, const studio_request *req, studio_response *out)
@@ -161,11 +127,12 @@ void studio_api_regularize(studio *s, const studio_request *req, studio_response
                             studio_get_number(o, "max_move", false, &def.max_move_rel, NULL, out);
     json_decref(o);
     if (!ok) return;
-    if (!(def.max_move_rel > 0.0 && def.max_move_rel <= 1.0)) {
-        studio_fail(out, 400, "max_move: a fraction of the sheet size in (0, 1], got %g", def.max_move_rel);
+    def.rigid = rigid;
+    char mistake[200];
+    if (cli_regularize_request_error(&def, "max_move", mistake, sizeof mistake)) {
+        studio_fail(out, 400, "%s", mistake);
         return;
     }
-    def.rigid = rigid;
     if (!studio_job_begin(s, "regularize", out)) return;
     char file[STUDIO_PATH_MAX];
     pthread_mutex_lock(&s->lock);
@@ -177,49 +144,16 @@ void studio_api_regularize(studio *s, const studio_request *req, studio_response
     ori_regularize_result r;
     ori_pattern *q = NULL;
     ori_error err;
-    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p)) {
-        studio_fail(out, 400, "frame 0 is a folded form: regularize needs a flat crease pattern");
+    if (cli_regularize_pattern_error(p, 0, mistake, sizeof mistake)) {
+        studio_fail(out, 400, "%s", mistake);
     } else {
         ori_status st = ori_regularize(p, &def, &q, &r, &err);
         if (st != ORI_OK) {
             studio_fail_error(out, studio_status_of(st), &err);
         } else {
             char buf[320];
-            const char *why = regularize_refusal(&r, &def, buf, sizeof buf);
-            json_t *j = json_object();
-            json_object_set_new(j, "file", json_string(file));
-            json_object_set_new(j, "rigid", json_boolean(rigid));
-            json_object_set_new(j, "converged", json_boolean(r.converged));
-            json_object_set_new(j, "refused", json_boolean(r.refused));
-            json_object_set_new(j, "reason", why ? json_string(why) : json_null());
-            json_object_set_new(j, "interior_vertices", json_integer(r.interior_vertices));
-            json_object_set_new(j, "unknowns", json_integer(r.unknowns));
-            json_object_set_new(j, "equations", json_integer(r.equations));
-            json_object_set_new(j, "iterations", json_integer(r.iterations));
-            json_object_set_new(j, "moved_vertices", json_integer(r.moved_vertices));
-            json_object_set_new(j, "max_move_rel", json_real(r.max_move_rel));
-            json_object_set_new(j, "max_move_vertex",
-                                r.max_move_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.max_move_vertex));
-            json_object_set_new(j, "rms_move_rel", json_real(r.rms_move_rel));
-            json_object_set_new(j, "max_move_allowed_rel", json_real(def.max_move_rel));
-            json_object_set_new(j, "kawasaki_before_deg", json_real(ori_rad_to_deg_output(r.kawasaki_before_rad)));
-            json_object_set_new(j, "kawasaki_after_deg", json_real(ori_rad_to_deg_output(r.kawasaki_after_rad)));
-            json_object_set_new(j, "crossing_edge",
-                                r.crossing_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.crossing_edge));
-            json_object_set_new(j, "rigid_before", rigid ? json_real(r.rigid_before) : json_null());
-            json_object_set_new(j, "rigid_after", rigid ? json_real(r.rigid_after) : json_null());
-            json_object_set_new(j, "mode_vertices", rigid ? json_integer(r.mode_vertices) : json_null());
-            json_object_set_new(j, "against_edge",
-                                r.against_edge == ORI_NULL_INDEX ? json_null() : json_integer(r.against_edge));
-            json_object_set_new(j, "rigid_only", json_false());
-            json_object_set_new(j, "equal_tolerance_deg", json_real(ori_rad_to_deg_output(r.equal_tolerance_rad)));
-            json_object_set_new(j, "ties", json_integer(r.ties));
-            json_object_set_new(j, "parallels_kept", json_boolean(r.parallels_kept));
-            json_object_set_new(j, "sides_moved", json_boolean(r.sides_moved));
-            json_object_set_new(j, "flat_foldable", json_boolean(r.flat_foldable));
-            json_object_set_new(j, "check_vertex",
-                                r.check_vertex == ORI_NULL_INDEX ? json_null() : json_integer(r.check_vertex));
-            json_object_set_new(j, "output", json_null());
+            const char *why = cli_regularize_refusal(&r, &def, buf, sizeof buf);
+            json_t *j = cli_regularize_json(file, &def, &r, why, NULL);
             bool replaced = false;
             pthread_mutex_lock(&s->lock);
             if (!why && q && s->version == version) {
@@ -417,29 +351,12 @@ static bool parse_assign(json_t *o, bool *has, ori_assignment *a, studio_respons
     return true;
 }
 
-static const char *face_label(const ori_pattern *p, int f, char *buf, size_t size)
-{
-    const char *name = f == ORI_NULL_INDEX ? NULL : ori_pattern_face_name(p, f);
-    if (name) snprintf(buf, size, "%s", name);
-    else if (f == ORI_NULL_INDEX) snprintf(buf, size, "the sheet");
-    else snprintf(buf, size, "face %d", f);
-    return buf;
-}
-
 static json_t *apply_json(studio *s, const ori_pattern *p, int nodes_before, const char *target, const ori_apply_result *r)
 {
     json_t *o = version_json(s);
     json_object_set_new(o, "applied_to", json_string(target));
-    json_object_set_new(o, "segments", json_integer(r->segments));
-    json_object_set_new(o, "faces_split", json_integer(r->faces_split));
-    json_object_set_new(o, "edges_added", json_integer(r->edges_added));
-    json_object_set_new(o, "first_edge", json_integer(r->first_edge));
-    json_t *faces = json_array();
-    for (int i = nodes_before; i < ori_pattern_tree_node_count(p); ++i) {
-        ori_tree_node n = ori_pattern_tree_node(p, i);
-        int f = ori_pattern_find_face_by_name(p, n.name);
-        if (f != ORI_NULL_INDEX) json_array_append_new(faces, json_pack("{s:s,s:i}", "name", n.name, "face", f));
-    }
+    cli_apply_counts_json(o, r);
+    json_t *faces = cli_apply_new_faces_json(p, nodes_before);
     json_object_set_new(o, "new_faces", faces);
     return o;
 }
@@ -486,7 +403,7 @@ void studio_api_apply(studio *s, const studio_request *req, studio_response *out
         ori_pattern *p = ori_pattern_clone(s->model->pattern);
         int nodes = ori_pattern_tree_node_count(p);
         char target[ORI_NAME_MAX + 16];
-        face_label(p, face, target, sizeof target);
+        cli_face_label(p, face, target, sizeof target);
         ori_apply_result r;
         st = ori_pattern_apply_composite(p, comp, face, has_asg ? &asg : NULL, &r, &err);
         if (st != ORI_OK) {
@@ -573,7 +490,7 @@ void studio_api_axiom(studio *s, const studio_request *req, studio_response *out
         return;
     }
     ori_line_set set = ori_axiom_solve(&in);
-    json_t *res = studio_json_axiom(in.axiom, &set);
+    json_t *res = cli_axiom_json(in.axiom, &set);
     // Each solution clipped to the target face (or the whole sheet), for drawing.
     pthread_mutex_lock(&s->lock);
     const ori_pattern *p = s->model->pattern;
@@ -678,10 +595,10 @@ void studio_api_crease(studio *s, const studio_request *req, studio_response *ou
                         set.count);
             return;
         }
-        if (solution < 1 || solution > set.count) {
+        char mistake[160];
+        if (cli_axiom_solution_error(in.axiom, solution, set.count, mistake, sizeof mistake)) {
             json_decref(o);
-            studio_fail(out, 400, "solution %d does not exist (axiom %d has %d solution%s here)", solution, in.axiom,
-                        set.count, set.count == 1 ? "" : "s");
+            studio_fail(out, 400, "%s", mistake);
             return;
         }
         ori_line l = set.lines[solution - 1];
@@ -695,7 +612,7 @@ void studio_api_crease(studio *s, const studio_request *req, studio_response *ou
         ori_pattern *p = ori_pattern_clone(s->model->pattern);
         int nodes = ori_pattern_tree_node_count(p);
         char target[ORI_NAME_MAX + 16];
-        face_label(p, face, target, sizeof target);
+        cli_face_label(p, face, target, sizeof target);
         ori_apply_result r;
         ori_error err;
         ori_status st = ori_pattern_apply_crease(p, &c, face, &r, &err);
@@ -815,8 +732,8 @@ static bool edit_one(ori_pattern *p, json_t *op, int index, int *map, int n_orig
     int faces[2];
     ori_pattern_edge_faces(p, e, faces);
     char f0[ORI_NAME_MAX + 16], f1[ORI_NAME_MAX + 16], fm[ORI_NAME_MAX + 16], line[320];
-    face_label(p, faces[0], f0, sizeof f0);
-    face_label(p, faces[1], f1, sizeof f1);
+    cli_face_label(p, faces[0], f0, sizeof f0);
+    cli_face_label(p, faces[1], f1, sizeof f1);
     ori_error err;
     ori_status st = ORI_OK;
     line[0] = '\0';
@@ -842,7 +759,7 @@ static bool edit_one(ori_pattern *p, json_t *op, int index, int *map, int n_orig
                                                  : r.kept_face - (r.removed_face != ORI_NULL_INDEX && r.removed_face < r.kept_face);
         int n = snprintf(line, sizeof line, "removed %s", label);
         if (r.removed_face != ORI_NULL_INDEX && n < (int)sizeof line)
-            n += snprintf(line + n, sizeof line - (size_t)n, ": %s + %s -> %s%s", f0, f1, face_label(p, kept, fm, sizeof fm),
+            n += snprintf(line + n, sizeof line - (size_t)n, ": %s + %s -> %s%s", f0, f1, cli_face_label(p, kept, fm, sizeof fm),
                           r.name_restored ? " (name restored)" : "");
         if (r.removed_edge_count > 1 && n < (int)sizeof line)
             snprintf(line + n, sizeof line - (size_t)n, "; %d collinear edge pair(s) rejoined", r.removed_edge_count - 1);
@@ -931,19 +848,6 @@ static const studio_export_format formats[] = {
 
 int studio_export_format_count(void) { return (int)(sizeof formats / sizeof formats[0]); }
 const studio_export_format *studio_export_format_at(int i) { return &formats[i]; }
-
-// The document's file name with another extension ("open-corner.svg").
-void studio_download_name(const char *file, const char *ext, char *out, size_t size)
-{
-    const char *base = strrchr(file, '/');
-    base = base ? base + 1 : file;
-    const char *dot = strrchr(base, '.');
-    int len = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
-    if (len > 100) len = 100;
-    snprintf(out, size, "%.*s%s", len, base, ext);
-    for (char *c = out; *c; ++c)
-        if (*c == '"' || *c == '\\' || (unsigned char)*c < 32) *c = '_';
-}
 
 // The text of the document in a format (NULL with a 400 when it cannot be written).
 static char *export_text(studio *s, const char *format, studio_response *out)

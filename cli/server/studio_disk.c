@@ -69,62 +69,6 @@ void studio_mark_saved(studio *s)
     if (s->journal[0] && !s->recovery) unlink(s->journal);
 }
 
-// POST /api/recover {"action": "recover" | "discard"}: the journal an earlier session left
-// becomes the document (an undoable step; save-back still writes the command-line file), or is
-// removed.
-void studio_api_recover(studio *s, const studio_request *req, studio_response *out)
-{
-    json_t *o = studio_body_object(req, out);
-    if (!o) return;
-    static const char *const keys[] = {"action", NULL};
-    const char *action = NULL;
-    if (!studio_check_keys(o, keys, out) || !studio_get_string(o, "action", true, &action, out)) {
-        json_decref(o);
-        return;
-    }
-    bool recover = strcmp(action, "recover") == 0, discard = strcmp(action, "discard") == 0;
-    json_decref(o);
-    if (!recover && !discard) {
-        studio_fail(out, 400, "action: \"recover\" or \"discard\"");
-        return;
-    }
-    pthread_mutex_lock(&s->lock);
-    if (!s->recovery) {
-        pthread_mutex_unlock(&s->lock);
-        studio_fail(out, 409, "there is no autosave to recover");
-        return;
-    }
-    if (recover) {
-        size_t size = 0;
-        char *text = NULL;
-        ori_error err;
-        if (ori_file_read_all(s->journal, s->def.max_open_bytes, &text, &size, &err) != ORI_OK) {
-            pthread_mutex_unlock(&s->lock);
-            studio_fail_error(out, 500, &err);
-            return;
-        }
-        ori_fold *doc = NULL;
-        studio_model *m = NULL;
-        char msg[600];
-        bool ok = studio_load_text("autosave.fold", text, size, &doc, &m, msg, sizeof msg);
-        ori_buffer_free(text);
-        if (!ok) {
-            pthread_mutex_unlock(&s->lock);
-            studio_fail(out, 409, "the autosave %s cannot be read (%s): discard it", s->journal, msg);
-            return;
-        }
-        s->recovery = false;
-        studio_commit_document(s, doc, m, s->file, s->format, true); // writes the journal anew
-    } else {
-        s->recovery = false;
-        unlink(s->journal);
-    }
-    json_t *r = json_pack("{s:I,s:i,s:i,s:b}", "version", (json_int_t)s->version, "undo", s->undo_count, "redo",
-                          s->redo_count, "recovered", recover);
-    pthread_mutex_unlock(&s->lock);
-    studio_respond_json(out, 200, r);
-}
-
 bool studio_unsaved(studio *s, char *journal, size_t size)
 {
     pthread_mutex_lock(&s->lock);

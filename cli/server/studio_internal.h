@@ -147,6 +147,8 @@ void studio_utf8_clean(char *s);
 void studio_fail(studio_response *out, int status, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 // An error of the library as {"error": ...} (ori_error_format).
 void studio_fail_error(studio_response *out, int status, const ori_error *err);
+// err formatted on one line (newlines become spaces) into buf (size bytes).
+void studio_error_line(char *buf, size_t size, const ori_error *err);
 // The status of a library failure: 500 for internal or non-convergence, else 400.
 int studio_status_of(ori_status st);
 // A JSON value (consumed) as the response body, numbers in their shortest exact form.
@@ -352,14 +354,12 @@ char *studio_json_at_text(double t, int fold, double drive_rad, const double *an
 // residual, vertices_coords.
 char *studio_json_frame_text(int frame, double drive_rad, const double *angles_rad, int edge_count, double residual,
                              const ori_v3 *positions, int vertex_count, size_t *size);
-// orikin dof --json.
-json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, int loops);
-// orikin tree --json.
-json_t *studio_json_tree(const char *file, const ori_pattern *p);
-// orikin info --json.
-json_t *studio_json_info(const char *file, int frame, int frames, const ori_pattern *p);
-// orikin axiom --json.
-json_t *studio_json_axiom(int axiom, const ori_line_set *set);
+// orikin dof --json: the shared report (cli_dof_json; the info, tree and axiom answers call
+// their cli/report/ builders directly).
+static inline json_t *studio_json_dof(const char *file, int frame, const ori_dof_result *r, int loops)
+{
+    return cli_dof_json(file, frame, r, loops);
+}
 
 // A state as a binary body (little-endian float64): t, fold, drive_deg, residual, V, E, 0, 0,
 // then 3V vertex coordinates and E fold angles in degrees. malloc'd; *size set.
