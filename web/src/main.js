@@ -4,6 +4,11 @@
 import { Api, ApiError, decodeState } from './api.js';
 import { FrameReplay } from './frames.js';
 import { ASSIGNMENT_NAMES, faceLabel, fmt, isCrease, parseDocument } from './document.js';
+import { fileKind, jsonKind } from './filetype.js';
+import { foldItemText, foldStateText, foldVerdictText } from './format.js';
+import { createMessages } from './messages.js';
+import { exportGroups, exportParams as buildExportParams, foldBody as buildFoldBody, sequenceFold, sequenceJson as buildSequenceJson } from './requests.js';
+import { createStore } from './store.js';
 import { Plot } from './plot.js';
 import { View2D } from './view2d.js';
 import { View3D } from './view3d.js';
@@ -21,7 +26,7 @@ const AXIOM_INPUTS = { 1: ['p1', 'p2'], 2: ['p1', 'p2'], 3: ['l1', 'l2'], 4: ['p
 const COLLECTION_LABELS = { 'diagonal-left': 'DiagonalL', 'diagonal-right': 'DiagonalR', 'middle-h': 'MiddleH',
   'middle-v': 'MiddleV', cross: 'Cross', diagonals: 'Diagonals' };
 
-const state = {
+const store = createStore({
   session: null,
   doc: null,
   version: -1,
@@ -53,18 +58,27 @@ const state = {
   work: 0,
   lastError: '',
   stats: { states: 0, latency: [], since: performance.now() },
-};
+});
+const state = store.state;
 
 // --- messages and progress ----------------------------------------------------------------
 
+let messages = null;
 function message(text, error = false) {
-  const box = $('messages');
-  const d = document.createElement('div');
-  d.className = 'msg' + (error ? ' error' : '');
-  d.textContent = text;
-  box.prepend(d);
-  while (box.children.length > 30) box.lastChild.remove();
-  if (error) state.lastError = text;
+  if (!messages) messages = createMessages($('messages'), (t) => { state.lastError = t; });
+  messages.add(text, error);
+}
+
+// A new document (New, Open, a drop): the errors, the verdict and the fold of the old one go.
+function forgetDocument() {
+  if (!messages) messages = createMessages($('messages'), (t) => { state.lastError = t; });
+  messages.clearErrors();
+  state.folds = [];
+  state.sequence = null;
+  state.spec = { fix: -1, drive: -1, locks: new Set() };
+  clearFold();
+  $('collide-summary').replaceChildren();
+  $('regularize-summary').replaceChildren();
 }
 
 const progress = {
@@ -593,10 +607,14 @@ async function creaseSolution(k) {
 
 function renderSpec() {
   const s = state.spec;
-  $('spec-fix').textContent = s.fix >= 0 ? faceLabel(state.doc, s.fix) : '–';
+  // no face chosen: the server fixes the CLI's default face (the face at the centre); once a
+  // fold has run, the face it fixed is shown and marked
+  const fixed = s.fix >= 0 ? s.fix : state.fold && state.fold.fixed_face >= 0 ? state.fold.fixed_face : -1;
+  $('spec-fix').textContent = s.fix >= 0 ? faceLabel(state.doc, s.fix)
+    : fixed >= 0 ? faceLabel(state.doc, fixed) + ' (default)' : 'default (the face at the centre)';
   $('spec-drive').textContent = s.drive >= 0 ? 'crease ' + s.drive : '–';
   $('spec-lock').textContent = s.locks.size ? [...s.locks].sort((a, b) => a - b).join(', ') : '–';
-  v2.setFaceClass('fixed', s.fix >= 0 ? [s.fix] : []);
+  v2.setFaceClass('fixed', fixed >= 0 ? [fixed] : []);
   v2.setHalos('drive', s.drive >= 0 ? [s.drive] : []);
   v2.setHalos('lock', [...s.locks]);
   if (s.fix < 0) v2.setBones(null);
@@ -615,15 +633,8 @@ async function loadBones() {
 }
 
 function foldBody() {
-  const s = state.spec;
-  if (s.fix < 0) throw new Error('compute: fix a face first (folding properties: fix face)');
-  if (s.drive < 0) throw new Error('compute: choose the driven crease (folding properties: drive)');
-  const body = { fix: s.fix, drive: s.drive, to: +$('spec-to').value, step: +$('spec-step').value, lock: [...s.locks].sort((a, b) => a - b) };
-  const from = $('spec-from').value.trim();
-  if (from !== '') body.from = +from;
-  const frame = +$('start-frame').value;
-  if (frame > 0) body.frame = frame;
-  return body;
+  return buildFoldBody(state.spec, { to: $('spec-to').value, step: $('spec-step').value, from: $('spec-from').value,
+    frame: +$('start-frame').value });
 }
 
 function clearFold() {
@@ -638,6 +649,8 @@ function clearFold() {
   for (const c of ['frame-a', 'frame-b', 'surround', 'offending']) v2.setHalos(c, []);
   v2.setLabels([]);
   clearCollision();
+  renderExportMenu();
+  renderSpec();
 }
 
 // --- collisions ---------------------------------------------------------------------------------
@@ -718,6 +731,8 @@ async function compute() {
     const r = await api.compute('fold', () => api.post('fold', body));
     state.fold = r;
     showFold(r, body);
+    renderExportMenu();
+    renderSpec();
     if (r.frames.length) await showFoldFrame(r.frames.length - 1);
     await refresh();
     if (r.collision) await showContact('fold');
@@ -729,7 +744,7 @@ function showFold(r, body) {
   box.replaceChildren();
   const v = document.createElement('div');
   v.className = r.valid ? 'valid' : 'invalid';
-  v.textContent = r.valid ? `valid: ${r.frames.length} states, ${r.solver}` : `${r.verdict}`;
+  v.textContent = foldVerdictText(r);
   v.dataset.verdict = r.verdict;
   box.appendChild(v);
   if (r.reason) {
@@ -804,7 +819,7 @@ async function showFoldFrame(k) {
   v3.setPositions(st.positions);
   if (state.shown === 'contact') clearCollision();
   state.shown = 'fold';
-  $('state3d').textContent = `fold: state ${k} of ${state.fold.frames.length - 1}, drive ${fmt(st.drive_deg, 3)}°`;
+  $('state3d').textContent = foldStateText(k, state.fold.frames.length, st.drive_deg);
 }
 
 async function playFold() {
@@ -827,7 +842,7 @@ async function playFold() {
 // --- the folding manager ------------------------------------------------------------------------
 
 function sequenceJson(folds) {
-  return { pattern: state.session.file, folds };
+  return buildSequenceJson(state.session.file, folds);
 }
 
 async function runSequence(folds, label) {
@@ -856,10 +871,7 @@ function renderFolds() {
     const li = document.createElement('li');
     const failed = r && r.failed_fold === i + 1;
     li.className = failed ? 'failed' : '';
-    const what = f.percent !== undefined ? `${fmt(f.percent)} % of the way toward the targets` : `drive ${f.drive} to ${fmt(f.to)}°`;
-    li.textContent = `${f.name ? f.name + ': ' : ''}fix ${f.fix}, ${what}, step ${fmt(f.step)}°` +
-      (f.lock && f.lock.length ? `, lock ${f.lock.join(',')}` : '') + (f.from !== undefined ? `, from ${fmt(f.from)}°` : '') +
-      (failed ? ` — ${r.verdict}` : '');
+    li.textContent = foldItemText(f) + (failed ? ` — ${r.verdict}` : '');
     const x = document.createElement('button');
     x.className = 'small';
     x.textContent = '×';
@@ -887,6 +899,7 @@ function setupTimeline() {
   $('show-seq-contact').hidden = !(r && r.collision);
   plot.setRecord(r, state.doc ? state.doc.assignment : [], contactT);
   renderFolds();
+  renderExportMenu();
   // the folds are kept when the pattern changes; their record is not (its indices may be stale)
   $('run-seq').hidden = !!r || state.folds.length === 0;
   if (replay.setup(!r)) return;
@@ -948,8 +961,7 @@ async function showTime(t) {
 async function addFold() {
   await action(async () => {
     const b = foldBody();
-    const fold = { name: `fold ${state.folds.length + 1}`, fix: b.fix, drive: b.drive, to: b.to, step: b.step, lock: b.lock };
-    if (b.from !== undefined) fold.from = b.from;
+    const fold = sequenceFold(b, `fold ${state.folds.length + 1}`);
     await runSequence(state.folds.concat([fold]), 'sequence');
     clearFold();
     message(`fold ${state.folds.length} added: the next fold starts where it ends`);
@@ -998,31 +1010,13 @@ function download(name, blob) {
 // sheet is shown), or the motion of the sequence or the fold. Named "format" or "format:of".
 function exportParams(format, of) {
   const f = state.session.export_formats.find((x) => x.format === format);
-  const params = { format };
-  if (!f || f.kind === 'document') return params;
-  if (of) {
-    params.of = of;
-  } else {
-    Object.assign(params, shownStateRef());
-  }
-  const flat = state.shown === 'flat' && !state.doc.is3d;
-  if ((f.kind === 'picture' && !flat) || f.kind === 'animation') {
-    const { eye, up } = v3.viewAxes();
-    params.eye = eye.map((x) => +x.toPrecision(12)).join(',');
-    params.up = up.map((x) => +x.toPrecision(12)).join(',');
-    params.perspective = 1;
-    params.front = $('color-front').value;
-    params.back = $('color-back').value;
-    if (v3.gridVisible !== false) params.grid = 1;
-    const c = $('gl');
-    let w = Math.max(1, Math.round(2 * c.clientWidth)), h = Math.max(1, Math.round(2 * c.clientHeight));
-    const k = Math.min(1, 4096 / w, 4096 / h, f.kind === 'animation' ? 800 / w : 1);
-    params.size = `${Math.max(1, Math.round(w * k))}x${Math.max(1, Math.round(h * k))}`;
-  } else if (f.kind === 'mesh') {
-    params.front = $('color-front').value;
-    params.back = $('color-back').value;
-  }
-  return params;
+  const c = $('gl');
+  return buildExportParams({
+    format, kind: f ? f.kind : undefined, of, stateRef: of ? undefined : shownStateRef(),
+    flat: state.shown === 'flat' && !state.doc.is3d, view: v3.viewAxes(),
+    canvas: { width: c.clientWidth, height: c.clientHeight },
+    colors: { front: $('color-front').value, back: $('color-back').value }, grid: v3.gridVisible !== false,
+  });
 }
 
 async function exportAs(format, of) {
@@ -1036,25 +1030,23 @@ async function exportAs(format, of) {
   });
 }
 
-// The export menu: one group per what is written.
+// The export menu: one group per what is written; the motions only when there is one.
 function renderExportMenu() {
   const sel = $('export-format');
+  if (!state.session) return;
   sel.querySelectorAll('optgroup').forEach((g) => g.remove());
-  const groups = [
-    ['crease pattern', (f) => f.kind === 'document', null],
-    ['picture of the state shown', (f) => f.kind === 'picture', null],
-    ['mesh of the state shown', (f) => f.kind === 'mesh', null],
-    ['motion of the sequence', (f) => f.motion, 'sequence'],
-    ['motion of the fold', (f) => f.motion, 'fold'],
-  ];
-  for (const [label, take, of] of groups) {
+  const groups = exportGroups(state.session.export_formats, {
+    sequence: !!(state.sequence && state.sequence.frames && state.sequence.frames.length),
+    fold: !!(state.fold && state.fold.frames.length),
+  });
+  for (const { label, options } of groups) {
     const g = document.createElement('optgroup');
     g.label = label;
-    for (const f of state.session.export_formats.filter(take)) {
-      const o = document.createElement('option');
-      o.value = of ? `${f.format}:${of}` : f.format;
-      o.textContent = f.label;
-      g.appendChild(o);
+    for (const o of options) {
+      const el = document.createElement('option');
+      el.value = o.value;
+      el.textContent = o.label;
+      g.appendChild(el);
     }
     sel.appendChild(g);
   }
@@ -1071,25 +1063,21 @@ async function openFile(file) {
 
 async function openFileNow(file) {
   const name = file.name;
-  const ext = (/\.[^.]+$/.exec(name.toLowerCase()) || [''])[0];
-  if (file.type.startsWith('image/')) {
-    const url = URL.createObjectURL(file);
-    await action(async () => {
-      await v3.setTexture(url);
-      $('texture-clear').hidden = false;
-      message(`texture: ${name} on the front side`);
-    });
+  const kind = fileKind(name, file.type);
+  if (kind === 'image') {
+    message(`${name} is an image: use texture… (in the 3D view's tools) to map it on the paper`, true);
     return;
   }
   const text = await file.text();
-  if (ext === '.json') {
+  if (kind === 'json') {
     let j;
     try { j = JSON.parse(text); } catch (e) { message(`${name}: malformed JSON: ${e.message}`, true); return; }
-    if (j && Array.isArray(j.folds)) {
+    if (jsonKind(j) === 'sequence') {
+      messages.clearErrors();
       await action(() => runSequence(j.folds, 'sequence'));
       return;
     }
-    if (j && Array.isArray(j.creases)) {
+    if (jsonKind(j) === 'composite') {
       const label = j.name || name.replace(/\.json$/i, '');
       state.composites.push({ name: label, pattern: j });
       renderCollection();
@@ -1101,12 +1089,21 @@ async function openFileNow(file) {
   }
   await action(async () => {
     await api.compute('opening ' + name, () => api.postText('open', text, { name }));
+    forgetDocument();
     message(`opened ${name}`);
-    state.folds = [];
-    state.sequence = null;
-    state.spec = { fix: -1, drive: -1, locks: new Set() };
     await refresh();
     setupTimeline();
+    v3.fit();
+  });
+}
+
+// The texture action: an image on the front side of the paper.
+async function openTexture(file) {
+  const url = URL.createObjectURL(file);
+  await action(async () => {
+    await v3.setTexture(url);
+    $('texture-clear').hidden = false;
+    message(`texture: ${file.name} on the front side`);
   });
 }
 
@@ -1135,10 +1132,10 @@ function wire() {
     const body = kind === 'square' ? { square: +$('new-side').value } : { rect: [+$('new-w').value, +$('new-h').value] };
     action(async () => {
       await api.post('new', body);
-      state.folds = [];
-      state.spec = { fix: -1, drive: -1, locks: new Set() };
+      forgetDocument();
       await refresh();
       setupTimeline();
+      v3.fit();
     });
   });
   $('open-file').onchange = (ev) => { if (ev.target.files[0]) openFile(ev.target.files[0]); ev.target.value = ''; };
@@ -1213,7 +1210,7 @@ function wire() {
   $('edges-toggle').onchange = (ev) => v3.setCreasesVisible(ev.target.checked);
   $('color-front').oninput = (ev) => v3.setColors(ev.target.value, null);
   $('color-back').oninput = (ev) => v3.setColors(null, ev.target.value);
-  $('texture-file').onchange = (ev) => { if (ev.target.files[0]) openFile(ev.target.files[0]); ev.target.value = ''; };
+  $('texture-file').onchange = (ev) => { if (ev.target.files[0]) openTexture(ev.target.files[0]); ev.target.value = ''; };
   $('texture-clear').onclick = () => { v3.setTexture(null); v3.setColors($('color-front').value, null); $('texture-clear').hidden = true; };
   // drag and drop anywhere
   let depth = 0;
@@ -1317,6 +1314,9 @@ window.studio = {
   collide: () => state.collide,
   regularizeResult: () => state.regularize,
   highlight: () => (v3 ? v3.highlighted : null),
+  viewExtent: () => (v3 ? v3.extent() : null),
+  exportOptions: () => [...document.querySelectorAll('#export-format option')].filter((o) => o.value).map((o) => o.value),
+  errors: () => [...document.querySelectorAll('#messages .msg.error')].map((e) => e.textContent),
   exportParams: (format, of) => exportParams(format, of),
   spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, locks: [...state.spec.locks] }),
 };

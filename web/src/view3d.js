@@ -247,7 +247,10 @@ export class View3D {
     const dir = (direction || this.camera.position.clone().sub(this.controls.target)).clone();
     if (dir.lengthSq() < 1e-20 || !direction && this.fitted === undefined) dir.set(0.9, -1.6, 1.4);
     dir.normalize();
-    const dist = r / Math.sin((this.camera.fov * Math.PI) / 360) * 1.15;
+    // the sphere around the model within the narrower of the two fields of view
+    const vfov = (this.camera.fov * Math.PI) / 180;
+    const hfov = 2 * Math.atan(Math.tan(vfov / 2) * (this.camera.aspect || 1));
+    const dist = r / Math.sin(Math.min(vfov, hfov) / 2) * 1.15;
     this.controls.target.copy(c);
     this.camera.position.copy(c).addScaledVector(dir, dist);
     this.camera.near = dist / 100;
@@ -256,6 +259,21 @@ export class View3D {
     this.fitted = true;
     this.controls.update();
     this.render();
+  }
+
+  // How far the state shown reaches on screen: the largest |x| and |y| of its vertices in
+  // normalised device coordinates (within 1: the whole model is in view).
+  extent() {
+    if (!this.positions) return null;
+    this.model.updateMatrixWorld();
+    this.camera.updateMatrixWorld();
+    const v = new THREE.Vector3();
+    let m = 0;
+    for (let i = 0; i < this.positions.length; i += 3) {
+      v.set(this.positions[i], this.positions[i + 1], this.positions[i + 2]).applyMatrix4(this.model.matrixWorld).project(this.camera);
+      m = Math.max(m, Math.abs(v.x), Math.abs(v.y));
+    }
+    return m;
   }
 
   preset(name) {
