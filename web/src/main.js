@@ -79,6 +79,9 @@ function forgetDocument() {
   clearFold();
   $('collide-summary').replaceChildren();
   $('regularize-summary').replaceChildren();
+  $('whole-slider').value = '0';
+  $('whole-value').textContent = '0 %';
+  $('whole-label').textContent = '';
 }
 
 const progress = {
@@ -958,6 +961,45 @@ async function showTime(t) {
   }
 }
 
+// The whole pattern's fold slider (the first control): every crease P % of the way toward the
+// file's target angles, as `orikin fold --percent P` (the server's default fixed face unless one
+// is chosen). Each position is one sequence of one fold toward the targets, shown at its end:
+// the state is the CLI's exactly. Requests never pile up: while one runs only the latest P waits.
+const whole = { want: null, running: false, percent: null };
+
+async function foldWhole(p) {
+  whole.want = p;
+  $('whole-value').textContent = `${p} %`;
+  if (whole.running) return;
+  whole.running = true;
+  try {
+    while (whole.want !== null) {
+      const want = whole.want;
+      whole.want = null;
+      if (want === 0 && !state.sequence) continue;
+      const fold = { name: 'the whole pattern', percent: want };
+      if (state.spec.fix >= 0) fold.fix = state.spec.fix;
+      await action(async () => {
+        await runSequence(want === 0 ? [] : [fold], 'fold');
+        if (want === 0) {
+          v3.setPositions(Float64Array.from(state.doc.vertices.flat()));
+          state.shown = 'flat';
+          state.shownAngles = null;
+          $('state3d').textContent = state.doc.is3d ? 'frame 0 (3D)' : 'flat sheet';
+        }
+        whole.percent = want;
+        const r = state.sequence;
+        const fix = r && r.folds && r.folds[0] ? r.folds[0].fix : null;
+        const face = fix !== null && fix !== undefined ? `, fixed ${faceLabel(state.doc, fix)}${state.spec.fix >= 0 ? '' : ' (default)'}` : '';
+        $('whole-label').textContent = !r ? 'flat' : r.valid ? `${want} % of the way toward the targets${face}` : `${r.verdict}: ${r.reason}`;
+        $('whole-label').title = $('whole-label').textContent;
+      });
+    }
+  } finally {
+    whole.running = false;
+  }
+}
+
 async function addFold() {
   await action(async () => {
     const b = foldBody();
@@ -1187,6 +1229,7 @@ function wire() {
   $('axiom-number').onchange = () => { setTool('axiom'); };
   $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
   $('compute').onclick = compute;
+  $('whole-slider').oninput = (ev) => foldWhole(+ev.target.value);
   $('check-tolerance').onchange = () => action(runCheck);
   $('regularize').onclick = () => action(regularize);
   $('collide').onclick = () => action(collideShown);
@@ -1292,7 +1335,9 @@ window.studio = {
   shown: () => state.shown,
   version: () => state.version,
   lastError: () => state.lastError,
-  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work,
+  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work + (whole.running ? 1 : 0),
+  angles: () => (state.shownAngles ? Array.from(state.shownAngles) : []),
+  wholePercent: () => whole.percent,
   stats: () => ({
     states: state.stats.states,
     framesDrawn: v3 ? v3.frameCount : 0,
