@@ -32,7 +32,7 @@ const store = createStore({
   version: -1,
   tool: 'select',
   selectedFace: -1,
-  spec: { fix: -1, drive: -1, locks: new Set() },
+  spec: { fix: -1, drive: -1, drives: [], locks: new Set() },
   bones: null,
   axiom: { picks: [], solutions: null, lines: null },
   move: { edge: -1, points: [] },
@@ -75,7 +75,7 @@ function forgetDocument() {
   messages.clearErrors();
   state.folds = [];
   state.sequence = null;
-  state.spec = { fix: -1, drive: -1, locks: new Set() };
+  state.spec = { fix: -1, drive: -1, drives: [], locks: new Set() };
   clearFold();
   $('collide-summary').replaceChildren();
   $('regularize-summary').replaceChildren();
@@ -410,7 +410,7 @@ function needCrease(hit, what) {
   return true;
 }
 
-async function onClick(hit) {
+async function onClick(hit, ev) {
   const doc = state.doc;
   switch (state.tool) {
     case 'select':
@@ -456,7 +456,16 @@ async function onClick(hit) {
     case 'drive': {
       if (!needCrease(hit, 'drive')) return;
       if (state.fold) clearFold();
-      state.spec.drive = hit.index;
+      const sp = state.spec;
+      if (ev && ev.shiftKey) {
+        // several drives: shift-click adds a crease (or removes it)
+        if (!sp.drives.length && sp.drive >= 0) sp.drives = [sp.drive];
+        sp.drives = sp.drives.includes(hit.index) ? sp.drives.filter((e) => e !== hit.index) : sp.drives.concat([hit.index]);
+        sp.drive = sp.drives.length ? sp.drives[0] : -1;
+      } else {
+        sp.drives = [];
+        sp.drive = hit.index;
+      }
       state.spec.locks.delete(hit.index);
       // the target's sign follows the crease's assignment (valley > 0, mountain < 0)
       const to = $('spec-to');
@@ -615,10 +624,10 @@ function renderSpec() {
   const fixed = s.fix >= 0 ? s.fix : state.fold && state.fold.fixed_face >= 0 ? state.fold.fixed_face : -1;
   $('spec-fix').textContent = s.fix >= 0 ? faceLabel(state.doc, s.fix)
     : fixed >= 0 ? faceLabel(state.doc, fixed) + ' (default)' : 'default (the face at the centre)';
-  $('spec-drive').textContent = s.drive >= 0 ? 'crease ' + s.drive : '–';
+  $('spec-drive').textContent = s.drives.length > 1 ? 'creases ' + s.drives.join(', ') : s.drive >= 0 ? 'crease ' + s.drive : '–';
   $('spec-lock').textContent = s.locks.size ? [...s.locks].sort((a, b) => a - b).join(', ') : '–';
   v2.setFaceClass('fixed', fixed >= 0 ? [fixed] : []);
-  v2.setHalos('drive', s.drive >= 0 ? [s.drive] : []);
+  v2.setHalos('drive', s.drives.length > 1 ? s.drives : s.drive >= 0 ? [s.drive] : []);
   v2.setHalos('lock', [...s.locks]);
   if (s.fix < 0) v2.setBones(null);
 }
@@ -636,7 +645,8 @@ async function loadBones() {
 }
 
 function foldBody() {
-  return buildFoldBody(state.spec, { to: $('spec-to').value, step: $('spec-step').value, from: $('spec-from').value,
+  const spec = { ...state.spec, lockAuto: $('spec-lock-auto').checked, symmetric: $('spec-symmetric').checked };
+  return buildFoldBody(spec, { to: $('spec-to').value, step: $('spec-step').value, from: $('spec-from').value,
     frame: +$('start-frame').value });
 }
 
@@ -1227,7 +1237,7 @@ function wire() {
     };
   for (const b of document.querySelectorAll('[data-tool]')) b.onclick = () => setTool(b.dataset.tool === state.tool ? 'select' : b.dataset.tool);
   $('axiom-number').onchange = () => { setTool('axiom'); };
-  $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
+  $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, drives: [], locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
   $('compute').onclick = compute;
   $('whole-slider').oninput = (ev) => foldWhole(+ev.target.value);
   $('check-tolerance').onchange = () => action(runCheck);
@@ -1284,7 +1294,7 @@ function wire() {
 
 async function start() {
   const tok = token();
-  v2 = new View2D($('cp'), { onHover, onClick: (hit) => onClick(hit) });
+  v2 = new View2D($('cp'), { onHover, onClick: (hit, ev) => onClick(hit, ev) });
   v3 = new View3D($('gl'));
   plot = new Plot($('plot'));
   wire();
@@ -1363,7 +1373,8 @@ window.studio = {
   exportOptions: () => [...document.querySelectorAll('#export-format option')].filter((o) => o.value).map((o) => o.value),
   errors: () => [...document.querySelectorAll('#messages .msg.error')].map((e) => e.textContent),
   exportParams: (format, of) => exportParams(format, of),
-  spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, locks: [...state.spec.locks] }),
+  spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, drives: [...state.spec.drives], locks: [...state.spec.locks] }),
+  foldRequest: () => foldBody(),
 };
 
 start();

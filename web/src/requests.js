@@ -14,7 +14,11 @@ export function foldBody(spec, inputs) {
   } else {
     if (!drives.length) throw new Error('compute: choose the driven crease (folding properties: drive), or fold with the slider');
     body.drive = drives.length === 1 ? drives[0] : [...drives];
-    body.to = +inputs.to;
+    // several drives: one target each ("90,45"), or one for all
+    const to = String(inputs.to ?? '').split(',').map((x) => x.trim()).filter((x) => x !== '').map(Number);
+    if (drives.length === 1) body.to = to.length ? to[0] : NaN;
+    else if (to.length === 1 || to.length === drives.length) body.to = drives.map((_, i) => to[to.length === 1 ? 0 : i]);
+    else throw new Error(`compute: ${drives.length} drives take ${drives.length} target angles ("to": a,b,…) or one for all`);
   }
   if (inputs.step !== undefined && inputs.step !== '' && isFinite(+inputs.step)) body.step = +inputs.step;
   if (spec.lockAuto) body.lock = 'auto';

@@ -11,7 +11,9 @@ test('a fold body: the fixed face is left out when none is chosen (the CLI defau
 
 test('several drives, lock auto, symmetric, percent', () => {
   assert.deepEqual(foldBody({ fix: 0, drive: -1, drives: [3, 7], lockAuto: true, symmetric: true }, { to: 60, step: 10 }),
-    { fix: 0, drive: [3, 7], to: 60, step: 10, lock: 'auto', symmetric: true });
+    { fix: 0, drive: [3, 7], to: [60, 60], step: 10, lock: 'auto', symmetric: true });
+  assert.deepEqual(foldBody({ fix: -1, drive: 3, drives: [3, 7], locks: [] }, { to: '90, -45', step: '' }).to, [90, -45]);
+  assert.throws(() => foldBody({ fix: -1, drive: 3, drives: [3, 7, 9], locks: [] }, { to: '90,45' }), /3 drives take 3 target angles/);
   assert.deepEqual(foldBody({ fix: -1, drive: -1, locks: [] }, { percent: 50, from: '20' }), { percent: 50, lock: [] });
   assert.throws(() => foldBody({ fix: 0, drive: -1, locks: [] }, { to: 90 }), /driven crease/);
 });
