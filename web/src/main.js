@@ -4,10 +4,12 @@
 import { Api, ApiError, decodeState } from './api.js';
 import { FrameReplay } from './frames.js';
 import { ASSIGNMENT_NAMES, faceLabel, fmt, isCrease, parseDocument } from './document.js';
-import { fileKind, jsonKind } from './filetype.js';
+import { createExport, download } from './export.js';
+import { createFiles } from './files.js';
+import { createWholeFold } from './whole.js';
 import { foldItemText, foldStateText, foldVerdictText } from './format.js';
 import { createMessages } from './messages.js';
-import { exportGroups, exportParams as buildExportParams, foldBody as buildFoldBody, sequenceFold, sequenceJson as buildSequenceJson } from './requests.js';
+import { foldBody as buildFoldBody, sequenceFold, sequenceJson as buildSequenceJson } from './requests.js';
 import { createStore } from './store.js';
 import { Plot } from './plot.js';
 import { View2D } from './view2d.js';
@@ -63,15 +65,14 @@ const state = store.state;
 
 // --- messages and progress ----------------------------------------------------------------
 
-let messages = null;
+// (a module script runs once the page is parsed: the elements exist)
+const messages = createMessages($('messages'), (t) => { state.lastError = t; });
 function message(text, error = false) {
-  if (!messages) messages = createMessages($('messages'), (t) => { state.lastError = t; });
   messages.add(text, error);
 }
 
 // A new document (New, Open, a drop): the errors, the verdict and the fold of the old one go.
 function forgetDocument() {
-  if (!messages) messages = createMessages($('messages'), (t) => { state.lastError = t; });
   messages.clearErrors();
   state.folds = [];
   state.sequence = null;
@@ -79,9 +80,7 @@ function forgetDocument() {
   clearFold();
   $('collide-summary').replaceChildren();
   $('regularize-summary').replaceChildren();
-  $('whole-slider').value = '0';
-  $('whole-value').textContent = '0 %';
-  $('whole-label').textContent = '';
+  wholeFold.reset();
 }
 
 const progress = {
@@ -971,45 +970,6 @@ async function showTime(t) {
   }
 }
 
-// The whole pattern's fold slider (the first control): every crease P % of the way toward the
-// file's target angles, as `orikin fold --percent P` (the server's default fixed face unless one
-// is chosen). Each position is one sequence of one fold toward the targets, shown at its end:
-// the state is the CLI's exactly. Requests never pile up: while one runs only the latest P waits.
-const whole = { want: null, running: false, percent: null };
-
-async function foldWhole(p) {
-  whole.want = p;
-  $('whole-value').textContent = `${p} %`;
-  if (whole.running) return;
-  whole.running = true;
-  try {
-    while (whole.want !== null) {
-      const want = whole.want;
-      whole.want = null;
-      if (want === 0 && !state.sequence) continue;
-      const fold = { name: 'the whole pattern', percent: want };
-      if (state.spec.fix >= 0) fold.fix = state.spec.fix;
-      await action(async () => {
-        await runSequence(want === 0 ? [] : [fold], 'fold');
-        if (want === 0) {
-          v3.setPositions(Float64Array.from(state.doc.vertices.flat()));
-          state.shown = 'flat';
-          state.shownAngles = null;
-          $('state3d').textContent = state.doc.is3d ? 'frame 0 (3D)' : 'flat sheet';
-        }
-        whole.percent = want;
-        const r = state.sequence;
-        const fix = r && r.folds && r.folds[0] ? r.folds[0].fix : null;
-        const face = fix !== null && fix !== undefined ? `, fixed ${faceLabel(state.doc, fix)}${state.spec.fix >= 0 ? '' : ' (default)'}` : '';
-        $('whole-label').textContent = !r ? 'flat' : r.valid ? `${want} % of the way toward the targets${face}` : `${r.verdict}: ${r.reason}`;
-        $('whole-label').title = $('whole-label').textContent;
-      });
-    }
-  } finally {
-    whole.running = false;
-  }
-}
-
 async function addFold() {
   await action(async () => {
     const b = foldBody();
@@ -1046,118 +1006,22 @@ function togglePlay() {
   requestAnimationFrame(tick);
 }
 
-// --- files ---------------------------------------------------------------------------------------
+// --- files and export (files.js, export.js), the whole pattern's slider (whole.js) -------------
 
-function download(name, blob) {
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = name;
-  document.body.appendChild(a);
-  a.click();
-  setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
-}
-
-// Export: the document (FOLD, SVG, .cp, .opx), a picture or mesh of the state shown (the
-// picture seen from the 3D view's camera, in its colours; the crease pattern when the flat
-// sheet is shown), or the motion of the sequence or the fold. Named "format" or "format:of".
-function exportParams(format, of) {
-  const f = state.session.export_formats.find((x) => x.format === format);
-  const c = $('gl');
-  return buildExportParams({
-    format, kind: f ? f.kind : undefined, of, stateRef: of ? undefined : shownStateRef(),
-    flat: state.shown === 'flat' && !state.doc.is3d, view: v3.viewAxes(),
-    canvas: { width: c.clientWidth, height: c.clientHeight },
-    colors: { front: $('color-front').value, back: $('color-back').value }, grid: v3.gridVisible !== false,
-  });
-}
-
-async function exportAs(format, of) {
-  await action(async () => {
-    const params = exportParams(format, of);
-    const run = () => api.request('GET', 'export', { params, as: 'response' });
-    const res = params.format === 'fold' || params.format === 'svg' ? await run() : await api.compute('export', run);
-    const cd = res.headers.get('Content-Disposition') || '';
-    const m = /filename="([^"]+)"/.exec(cd);
-    download(m ? m[1] : 'orikin.' + format, await res.blob());
-  });
-}
-
-// The export menu: one group per what is written; the motions only when there is one.
-function renderExportMenu() {
-  const sel = $('export-format');
-  if (!state.session) return;
-  sel.querySelectorAll('optgroup').forEach((g) => g.remove());
-  const groups = exportGroups(state.session.export_formats, {
-    sequence: !!(state.sequence && state.sequence.frames && state.sequence.frames.length),
-    fold: !!(state.fold && state.fold.frames.length),
-  });
-  for (const { label, options } of groups) {
-    const g = document.createElement('optgroup');
-    g.label = label;
-    for (const o of options) {
-      const el = document.createElement('option');
-      el.value = o.value;
-      el.textContent = o.label;
-      g.appendChild(el);
-    }
-    sel.appendChild(g);
-  }
-}
-
-async function openFile(file) {
-  state.work++; // reading the file takes a moment before any request: count it as busy
-  try {
-    await openFileNow(file);
-  } finally {
-    state.work--;
-  }
-}
-
-async function openFileNow(file) {
-  const name = file.name;
-  const kind = fileKind(name, file.type);
-  if (kind === 'image') {
-    message(`${name} is an image: use texture… (in the 3D view's tools) to map it on the paper`, true);
-    return;
-  }
-  const text = await file.text();
-  if (kind === 'json') {
-    let j;
-    try { j = JSON.parse(text); } catch (e) { message(`${name}: malformed JSON: ${e.message}`, true); return; }
-    if (jsonKind(j) === 'sequence') {
-      messages.clearErrors();
-      await action(() => runSequence(j.folds, 'sequence'));
-      return;
-    }
-    if (jsonKind(j) === 'composite') {
-      const label = j.name || name.replace(/\.json$/i, '');
-      state.composites.push({ name: label, pattern: j });
-      renderCollection();
-      message(`composite ${label} added to the collection`);
-      return;
-    }
-    message(`${name}: a JSON file here is a fold sequence ("folds") or a composite ("creases")`, true);
-    return;
-  }
-  await action(async () => {
-    await api.compute('opening ' + name, () => api.postText('open', text, { name }));
-    forgetDocument();
-    message(`opened ${name}`);
-    await refresh();
-    setupTimeline();
-    v3.fit();
-  });
-}
-
-// The texture action: an image on the front side of the paper.
-async function openTexture(file) {
-  const url = URL.createObjectURL(file);
-  await action(async () => {
-    await v3.setTexture(url);
-    $('texture-clear').hidden = false;
-    message(`texture: ${file.name} on the front side`);
-  });
-}
+const ctx = {
+  state, $, action, message, shownStateRef, runSequence, renderCollection, forgetDocument, refresh, setupTimeline,
+  clearErrors: () => messages.clearErrors(),
+  get api() { return api; },
+  get v3() { return v3; },
+};
+const exporter = createExport(ctx);
+const files = createFiles(ctx);
+const wholeFold = createWholeFold(ctx);
+const exportParams = exporter.params;
+const exportAs = exporter.exportAs;
+const renderExportMenu = exporter.renderMenu;
+const openFile = files.open;
+const openTexture = files.openTexture;
 
 // --- start ---------------------------------------------------------------------------------------
 
@@ -1239,7 +1103,7 @@ function wire() {
   $('axiom-number').onchange = () => { setTool('axiom'); };
   $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, drives: [], locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
   $('compute').onclick = compute;
-  $('whole-slider').oninput = (ev) => foldWhole(+ev.target.value);
+  $('whole-slider').oninput = (ev) => wholeFold.fold(+ev.target.value);
   $('check-tolerance').onchange = () => action(runCheck);
   $('regularize').onclick = () => action(regularize);
   $('collide').onclick = () => action(collideShown);
@@ -1345,9 +1209,9 @@ window.studio = {
   shown: () => state.shown,
   version: () => state.version,
   lastError: () => state.lastError,
-  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work + (whole.running ? 1 : 0),
+  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work + (wholeFold.running() ? 1 : 0),
   angles: () => (state.shownAngles ? Array.from(state.shownAngles) : []),
-  wholePercent: () => whole.percent,
+  wholePercent: () => wholeFold.percent(),
   stats: () => ({
     states: state.stats.states,
     framesDrawn: v3 ? v3.frameCount : 0,
