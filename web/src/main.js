@@ -7,6 +7,8 @@ import { ASSIGNMENT_NAMES, faceLabel, fmt, isCrease, parseDocument } from './doc
 import { createExport, download } from './export.js';
 import { createFiles } from './files.js';
 import { createWholeFold } from './whole.js';
+import { createVerify } from './verify.js';
+import { createAxiomTool } from './axiom.js';
 import { foldItemText, foldStateText, foldVerdictText } from './format.js';
 import { createMessages } from './messages.js';
 import { foldBody as buildFoldBody, sequenceFold, sequenceJson as buildSequenceJson } from './requests.js';
@@ -17,14 +19,8 @@ import { View3D } from './view3d.js';
 
 const $ = (id) => document.getElementById(id);
 
-// DOF is computed automatically for patterns up to this many interior vertices (dense SVD,
-// milliseconds); larger ones get a button (the sparse method may take seconds).
-const DOF_AUTO_MAX_INTERIOR = 300;
 // Sequence time per second of playback at 1×.
 const PLAY_RATE = 0.25;
-// Inputs of each axiom, in the order they are picked.
-const AXIOM_INPUTS = { 1: ['p1', 'p2'], 2: ['p1', 'p2'], 3: ['l1', 'l2'], 4: ['p1', 'l1'], 5: ['p1', 'p2', 'l1'],
-  6: ['p1', 'l1', 'p2', 'l2'], 7: ['p1', 'l1', 'l2'] };
 const COLLECTION_LABELS = { 'diagonal-left': 'DiagonalL', 'diagonal-right': 'DiagonalR', 'middle-h': 'MiddleH',
   'middle-v': 'MiddleV', cross: 'Cross', diagonals: 'Diagonals' };
 
@@ -99,6 +95,26 @@ async function action(fn) {
   }
 }
 
+// --- the feature modules: files, export, the whole pattern's slider, verification, axioms ------
+
+const ctx = {
+  state, $, action, message, shownStateRef, runSequence, renderCollection, forgetDocument, refresh, setupTimeline,
+  clearErrors: () => messages.clearErrors(),
+  get api() { return api; },
+  get v2() { return v2; },
+  get v3() { return v3; },
+};
+const exporter = createExport(ctx);
+const files = createFiles(ctx);
+const wholeFold = createWholeFold(ctx);
+const exportParams = exporter.params;
+const exportAs = exporter.exportAs;
+const renderExportMenu = exporter.renderMenu;
+const openFile = files.open;
+const openTexture = files.openTexture;
+const { runCheck, regularize, maybeDof } = createVerify(ctx);
+const { axiomStatus, axiomClick } = createAxiomTool(ctx);
+
 // --- document ----------------------------------------------------------------------------
 
 async function refresh(force = false) {
@@ -166,109 +182,6 @@ function loadDocument(doc, changed) {
   renderTree();
   renderSpec();
   if (state.spec.fix >= 0) loadBones();
-}
-
-async function runCheck() {
-  const tol = $('check-tolerance').value.trim();
-  const c = await api.get('check', tol === '' ? undefined : { tolerance_deg: tol });
-  state.check = c;
-  const bad = [], within = [];
-  const reasons = new Map();
-  for (const v of c.violations) reasons.set(v.vertex, (reasons.get(v.vertex) || []).concat(`${v.rule}: ${v.detail}`));
-  for (const v of c.vertices) {
-    if (v.within_tolerance) within.push({ vertex: v.vertex, reason: `within tolerance: flat-foldable once its sectors move by ${fmt(v.deviation_deg, 6)}°` });
-    else if (!v.flat_foldable) bad.push({ vertex: v.vertex, reason: (reasons.get(v.vertex) || ['not flat-foldable']).join('; ') });
-  }
-  v2.setCheckMarks(bad, within);
-  const box = $('check-summary');
-  box.replaceChildren();
-  const head = document.createElement('div');
-  if (c.interior_vertices === 0) {
-    head.textContent = 'no interior vertices: nothing to check locally';
-  } else {
-    head.className = c.locally_flat_foldable ? 'ok' : 'bad';
-    head.textContent = c.locally_flat_foldable
-      ? `locally flat-foldable (${c.interior_vertices} interior vert${c.interior_vertices === 1 ? 'ex' : 'ices'})`
-      : `not locally flat-foldable: ${c.failed_vertices} of ${c.interior_vertices} interior vert${c.interior_vertices === 1 ? 'ex fails' : 'ices fail'}`;
-  }
-  box.appendChild(head);
-  if (c.within_tolerance_vertices > 0) {
-    const w = document.createElement('div');
-    w.className = 'within';
-    w.textContent = `${c.within_tolerance_vertices} within ${fmt(c.tolerance_deg, 6)}° (largest deviation ${fmt(c.max_deviation_deg, 6)}°)`;
-    box.appendChild(w);
-  }
-  if (c.violations.length) {
-    const ul = document.createElement('ul');
-    for (const v of c.violations.slice(0, 12)) {
-      const li = document.createElement('li');
-      li.textContent = `vertex ${v.vertex}: ${v.rule}: ${v.detail}`;
-      ul.appendChild(li);
-    }
-    if (c.violations.length > 12) {
-      const li = document.createElement('li');
-      li.textContent = `… ${c.violations.length - 12} more (hover the marked vertices)`;
-      ul.appendChild(li);
-    }
-    box.appendChild(ul);
-  }
-  if (c.hint) {
-    const h = document.createElement('div');
-    h.className = 'hint';
-    h.textContent = c.hint;
-    box.appendChild(h);
-  }
-}
-
-// Regularize (orikin regularize): the nearest exact pattern replaces the document (undo
-// restores the drawing); the displacement is reported.
-async function regularize() {
-  const rigid = $('regularize-rigid').checked;
-  const r = await api.compute('regularize', () => api.post('regularize', { rigid }));
-  state.regularize = r;
-  const box = $('regularize-summary');
-  box.replaceChildren();
-  const d = document.createElement('div');
-  if (r.replaced) {
-    d.className = 'ok';
-    d.textContent = r.max_move_vertex === null
-      ? 'regularized: no vertex moved (the pattern is exact already)'
-      : `regularized${rigid ? ' (rigid)' : ''}: ${r.moved_vertices} vertices moved, the largest by ${r.max_move_rel.toExponential(2)} of the sheet (vertex ${r.max_move_vertex}), RMS ${r.rms_move_rel.toExponential(2)}; Kawasaki ${r.kawasaki_before_deg.toExponential(2)}° → ${r.kawasaki_after_deg.toExponential(2)}°`;
-    message(d.textContent + ' (undo restores the drawing)');
-  } else {
-    d.className = 'bad';
-    d.textContent = 'regularize refused: ' + r.reason;
-    message(d.textContent, true);
-  }
-  d.dataset.replaced = r.replaced;
-  box.appendChild(d);
-  await refresh();
-}
-
-async function maybeDof(force = false) {
-  const box = $('dof-summary');
-  const n = state.session ? state.session.interior_vertices : 0;
-  if (!force && n > DOF_AUTO_MAX_INTERIOR) {
-    box.replaceChildren();
-    const b = document.createElement('button');
-    b.className = 'small';
-    b.textContent = 'compute the DOF';
-    b.title = `${n} interior vertices: the sparse rank may take a while`;
-    b.onclick = () => action(() => maybeDof(true));
-    box.appendChild(b);
-    return;
-  }
-  let d;
-  try {
-    d = await api.compute('degrees of freedom', () => api.post('dof', { lock: [...state.spec.locks] }));
-  } catch (e) {
-    box.textContent = 'DOF: ' + e.message;
-    return;
-  }
-  const locks = state.spec.locks.size ? ` with ${state.spec.locks.size} locked` : '';
-  box.textContent = `DOF ${d.dof} at this state${locks}` + (d.generic_dof !== null && d.generic_dof !== d.dof ? ` (${d.generic_dof} nearby)` : '') +
-    ` · Grübler–Kutzbach ${d.grubler} · rank ${d.rank} of ${d.unknowns} unknowns`;
-  box.dataset.dof = d.dof;
 }
 
 // --- the face tree -----------------------------------------------------------------------
@@ -533,85 +446,6 @@ function onHover(hit, ev) {
     tip.style.left = ev.clientX + 14 + 'px';
     tip.style.top = ev.clientY + 12 + 'px';
   }
-}
-
-// --- the axiom tool --------------------------------------------------------------------------
-
-function axiomStatus() {
-  const n = +$('axiom-number').value;
-  const need = AXIOM_INPUTS[n];
-  const k = state.axiom.picks.length;
-  $('axiom-status').textContent = state.tool !== 'axiom' ? '' : k < need.length
-    ? `pick ${need[k]} (${need[k][0] === 'p' ? 'a vertex or a point' : 'a crease'})`
-    : `${state.axiom.lines ? state.axiom.lines.length : 0} solution(s)`;
-}
-
-async function axiomClick(hit) {
-  const doc = state.doc;
-  const n = +$('axiom-number').value;
-  const need = AXIOM_INPUTS[n];
-  const ax = state.axiom;
-  if (hit.kind === 'solution' && ax.lines) return creaseSolution(hit.index);
-  if (ax.picks.length >= need.length) ax.picks = [];
-  const want = need[ax.picks.length];
-  if (want[0] === 'p') {
-    const [x, y] = hit.kind === 'vertex' ? doc.flat[hit.index] : hit.point;
-    ax.picks.push({ type: 'point', name: want, x, y });
-  } else {
-    if (hit.kind !== 'edge') { message(`axiom ${n}: ${want} is a line: click a crease or a side`, true); return; }
-    const [a, b] = doc.edges[hit.index];
-    const [x0, y0] = doc.flat[a], [x1, y1] = doc.flat[b];
-    ax.picks.push({ type: 'line', name: want, edge: hit.index, line: [x0, y0, x1 - x0, y1 - y0] });
-  }
-  ax.solutions = null;
-  ax.lines = null;
-  v2.setAxiomOverlay(ax.picks, null);
-  $('axiom-solutions').replaceChildren();
-  if (ax.picks.length === need.length) {
-    await action(async () => {
-      const r = await api.post('axiom', axiomBody(n));
-      ax.lines = r.lines;
-      ax.solutions = r.segments;
-      v2.setAxiomOverlay(ax.picks, r.segments);
-      const box = $('axiom-solutions');
-      box.replaceChildren();
-      if (!r.lines.length) message(`axiom ${n}: no solution for these inputs`, true);
-      r.lines.forEach((l, k) => {
-        const b = document.createElement('button');
-        b.textContent = `crease solution ${k + 1}`;
-        b.dataset.solution = k;
-        b.title = `through (${fmt(l.point[0])}, ${fmt(l.point[1])}), direction (${fmt(l.dir[0])}, ${fmt(l.dir[1])})`;
-        b.onclick = () => creaseSolution(k);
-        box.appendChild(b);
-      });
-    });
-  }
-  axiomStatus();
-}
-
-function axiomBody(n) {
-  const body = { axiom: n };
-  for (const p of state.axiom.picks) body[p.name] = p.type === 'point' ? [p.x, p.y] : p.line;
-  if (state.selectedFace >= 0) body.face = state.selectedFace;
-  return body;
-}
-
-async function creaseSolution(k) {
-  const n = +$('axiom-number').value;
-  const body = axiomBody(n);
-  body.solution = k + 1;
-  body.assign = $('collection-assign').value;
-  if (state.selectedFace < 0) body.all = true;
-  await action(async () => {
-    const r = await api.compute(`axiom ${n}`, () => api.post('crease', body));
-    message(`axiom ${n} solution ${k + 1} on ${r.applied_to}: ${r.faces_split} face(s) split`);
-    state.axiom = { picks: [], solutions: null, lines: null };
-    $('axiom-solutions').replaceChildren();
-    v2.setAxiomOverlay([], null);
-    state.selectedFace = -1;
-    await refresh();
-  });
-  axiomStatus();
 }
 
 // --- the fold specification -----------------------------------------------------------------
@@ -1005,23 +839,6 @@ function togglePlay() {
   };
   requestAnimationFrame(tick);
 }
-
-// --- files and export (files.js, export.js), the whole pattern's slider (whole.js) -------------
-
-const ctx = {
-  state, $, action, message, shownStateRef, runSequence, renderCollection, forgetDocument, refresh, setupTimeline,
-  clearErrors: () => messages.clearErrors(),
-  get api() { return api; },
-  get v3() { return v3; },
-};
-const exporter = createExport(ctx);
-const files = createFiles(ctx);
-const wholeFold = createWholeFold(ctx);
-const exportParams = exporter.params;
-const exportAs = exporter.exportAs;
-const renderExportMenu = exporter.renderMenu;
-const openFile = files.open;
-const openTexture = files.openTexture;
 
 // --- start ---------------------------------------------------------------------------------------
 
