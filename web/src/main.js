@@ -9,6 +9,8 @@ import { createFiles } from './files.js';
 import { createWholeFold } from './whole.js';
 import { createVerify } from './verify.js';
 import { createAxiomTool } from './axiom.js';
+import { createCollide } from './collide.js';
+import { createTree } from './tree.js';
 import { foldItemText, foldStateText, foldVerdictText } from './format.js';
 import { createMessages } from './messages.js';
 import { foldBody as buildFoldBody, sequenceFold, sequenceJson as buildSequenceJson } from './requests.js';
@@ -98,11 +100,13 @@ async function action(fn) {
 // --- the feature modules: files, export, the whole pattern's slider, verification, axioms ------
 
 const ctx = {
-  state, $, action, message, shownStateRef, runSequence, renderCollection, forgetDocument, refresh, setupTimeline,
+  state, $, action, message, shownStateRef: () => shownStateRef(), runSequence, renderCollection, forgetDocument, refresh, setupTimeline,
   clearErrors: () => messages.clearErrors(),
   get api() { return api; },
   get v2() { return v2; },
   get v3() { return v3; },
+  get plot() { return plot; },
+  get replay() { return replay; },
 };
 const exporter = createExport(ctx);
 const files = createFiles(ctx);
@@ -114,6 +118,8 @@ const openFile = files.open;
 const openTexture = files.openTexture;
 const { runCheck, regularize, maybeDof } = createVerify(ctx);
 const { axiomStatus, axiomClick } = createAxiomTool(ctx);
+const { collideOptions, clearCollision, showCollision, showContact, shownStateRef, collideShown } = createCollide(ctx);
+const { renderTree, selectFace } = createTree(ctx);
 
 // --- document ----------------------------------------------------------------------------
 
@@ -182,79 +188,6 @@ function loadDocument(doc, changed) {
   renderTree();
   renderSpec();
   if (state.spec.fix >= 0) loadBones();
-}
-
-// --- the face tree -----------------------------------------------------------------------
-
-// The tree lists at most this many faces (a generated tessellation has thousands; pick those
-// in the view).
-const TREE_FACES_MAX = 500;
-
-function renderTree() {
-  const doc = state.doc;
-  const root = $('tree');
-  root.replaceChildren();
-  const faceOf = new Map();
-  doc.names.forEach((n, f) => { if (n) faceOf.set(n, f); });
-  const node = (label, face, inner) => {
-    const li = document.createElement('li');
-    const d = document.createElement('div');
-    d.className = 'node ' + (face >= 0 ? 'leaf' : 'inner');
-    if (face >= 0) {
-      d.dataset.face = face;
-      if (face === state.selectedFace) d.classList.add('selected');
-      if (face === state.spec.fix) d.classList.add('fixed');
-      d.onclick = () => selectFace(face);
-      d.onmouseenter = () => v2.toggleFaceClass(face, 'hover', true);
-      d.onmouseleave = () => v2.toggleFaceClass(face, 'hover', false);
-    }
-    d.innerHTML = '';
-    const name = document.createElement('span');
-    name.textContent = label;
-    d.appendChild(name);
-    if (face >= 0) {
-      const s = document.createElement('small');
-      s.textContent = label === 'face ' + face ? '' : 'face ' + face;
-      d.appendChild(s);
-    }
-    li.appendChild(d);
-    if (inner) li.appendChild(inner);
-    return li;
-  };
-  const ul = document.createElement('ul');
-  if (doc.tree.length) {
-    const children = doc.tree.map(() => []);
-    const roots = [];
-    doc.tree.forEach((n, i) => (n.parent >= 0 && n.parent < doc.tree.length ? children[n.parent].push(i) : roots.push(i)));
-    const build = (i) => {
-      const sub = children[i].length ? document.createElement('ul') : null;
-      for (const c of children[i]) sub.appendChild(build(c));
-      const face = faceOf.has(doc.tree[i].name) ? faceOf.get(doc.tree[i].name) : -1;
-      return node(doc.tree[i].name, face, sub);
-    };
-    for (const r of roots) ul.appendChild(build(r));
-    // faces outside the tree
-    const inTree = new Set(doc.tree.map((n) => n.name));
-    doc.faces.forEach((_, f) => {
-      if (!doc.names[f] || !inTree.has(doc.names[f])) ul.appendChild(node(doc.names[f] || 'face ' + f, f, null));
-    });
-  } else {
-    for (let f = 0; f < Math.min(doc.faces.length, TREE_FACES_MAX); f++) ul.appendChild(node(doc.names[f] || `face ${f}`, f, null));
-    if (doc.faces.length > TREE_FACES_MAX) {
-      const li = document.createElement('li');
-      li.className = 'hint';
-      li.textContent = `… ${doc.faces.length - TREE_FACES_MAX} more faces: pick them in the crease view`;
-      ul.appendChild(li);
-    }
-  }
-  root.appendChild(ul);
-}
-
-function selectFace(f) {
-  state.selectedFace = state.selectedFace === f ? -1 : f;
-  v2.setFaceClass('selected', state.selectedFace >= 0 ? [state.selectedFace] : []);
-  for (const el of document.querySelectorAll('#tree .node')) el.classList.toggle('selected', +el.dataset.face === state.selectedFace && el.dataset.face !== undefined);
-  if (state.selectedFace >= 0) message(`selected ${faceLabel(state.doc, state.selectedFace)}: the collection and the axiom tool apply to it`);
 }
 
 // --- the crease collection -----------------------------------------------------------------
@@ -497,76 +430,6 @@ function clearFold() {
   clearCollision();
   renderExportMenu();
   renderSpec();
-}
-
-// --- collisions ---------------------------------------------------------------------------------
-
-// How folds and sequences are checked (as --no-collisions and --clearance).
-function collideOptions() {
-  const o = {};
-  if (!$('check-collisions').checked) o.no_collisions = true;
-  const c = +$('clearance').value;
-  if (c > 0) o.clearance = c;
-  return o;
-}
-
-function clearCollision() {
-  if (v3) v3.setHighlight([], null);
-  if (v2) v2.setFaceClass('colliding', []);
-}
-
-// Colliding faces in 2D and 3D, and the witness point in 3D.
-function showCollision(faces, point) {
-  v3.setHighlight(faces, point);
-  v2.setFaceClass('colliding', faces);
-}
-
-// The state at the first contact of the fold or the sequence, its faces and witness shown.
-async function showContact(of) {
-  const st = decodeState(await api.binary('contact', { of, binary: 1 }));
-  const col = of === 'fold' ? state.fold.collision : state.sequence.collision;
-  v3.setPositions(st.positions);
-  state.shown = 'contact';
-  state.contactOf = of;
-  showCollision(col.faces, col.point);
-  const at = of === 'sequence' ? `T = ${fmt(st.t, 6)}, fold ${st.fold}, ` : '';
-  const where = col.progress !== undefined ? `progress ${fmt(col.progress, 6)}` : `drive ${fmt(st.drive_deg, 6)}°`;
-  const label = `first contact of the ${of}: ${at}${where}, faces ${col.faces.join(' and ')}`;
-  $('state3d').textContent = label;
-  if (of === 'sequence') {
-    $('t-label').textContent = label;
-    plot.setCursor(st.t, st.angles);
-  }
-}
-
-// What the 3D view shows, as the API names a state.
-function shownStateRef() {
-  if (state.shown === 'fold') return { k: state.foldK };
-  if (state.shown === 'sequence' && state.shownT !== null) return { t: state.shownT };
-  if (state.shown === 'contact') return { contact: state.contactOf };
-  if (state.shown === 'frames') return replay.stateRef();
-  return { frame: 0 };
-}
-
-// Check the state shown for self-collision (orikin collide).
-async function collideShown() {
-  const body = shownStateRef();
-  const c = +$('clearance').value;
-  if (c > 0) body.clearance = c;
-  const r = await api.compute('collide', () => api.post('collide', body));
-  state.collide = r;
-  const box = $('collide-summary');
-  box.replaceChildren();
-  const d = document.createElement('div');
-  d.className = r.collides ? 'bad' : 'ok';
-  d.dataset.collides = r.collides;
-  const clear = r.min_clearance !== null ? `least clearance ${fmt(r.min_clearance, 6)} (faces ${r.clearance_faces.join(' and ')})` : 'every face pair shares a vertex';
-  d.textContent = r.collides
-    ? `${r.state}: collision: faces ${r.pairs.map((p) => p.join(' and ')).join('; ')} (${r.touching.length} touching pairs)`
-    : `${r.state}: clean, ${r.touching.length} touching pairs, ${clear}`;
-  box.appendChild(d);
-  const faces = [...new Set(r.pairs.flat())];
-  showCollision(faces, r.collides ? r.witness : null);
 }
 
 async function compute() {
