@@ -89,6 +89,13 @@ await run('open', 'examples/patterns/thesis-flap.fold', async ({ page }) => {
   const opts2 = await page.evaluate(() => window.studio.exportOptions());
   assert(opts2.includes('gltf:sequence'), 'the sequence motion can be exported once there is a sequence');
 
+  // a sequence whose first fold fails records nothing: one error (its verdict), no stale
+  // "t: time 0 is outside [0, 0]" beside it
+  await dropFile(page, 'first-fails.seq.json', 'application/json', fs.readFileSync(path.join(SOURCE, 'tests/data/kin-first-fold-invalid.seq.json')));
+  const first = await page.evaluate(() => window.studio.errors());
+  assert(first.length === 1 && first[0].includes('invalid assignment') && !first.some((e) => /outside/.test(e)),
+    `a sequence that records nothing shows its verdict alone (${first.join(' | ')})`);
+
   // an error about the old document does not survive New
   const bad = { folds: [{ fix: 99, drive: 12, to: 90 }] };
   await dropFile(page, 'bad.seq.json', 'application/json', Buffer.from(JSON.stringify(bad)));

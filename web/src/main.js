@@ -568,7 +568,9 @@ async function runSequence(folds, label) {
   setupTimeline();
   if (r.collision) message(`collision: ${r.reason} (the sequence stops before it)`, true);
   else if (!r.valid) message(`fold ${r.failed_fold} is ${r.verdict}: ${r.reason}`, true);
-  await showTime(lastCleanT());
+  // a sequence that recorded no state (its first fold failed) has no instant to show: asking
+  // for one would only add a second, stale error ("t: time 0 is outside [0, 0]")
+  if (r.frames.length) await showTime(lastCleanT());
   if (r.collision) await showContact('sequence');
 }
 
@@ -870,7 +872,7 @@ async function start() {
         return o;
       });
       setupTimeline();
-      await showTime(0);
+      if (r.frames.length) await showTime(0);
       if (r.collision) message(`collision: ${r.reason} (the sequence stops before it; "contact" shows it)`, true);
     } else {
       setupTimeline();
