@@ -73,7 +73,7 @@ function message(text, error = false) {
 function forgetDocument() {
   messages.clearErrors();
   state.folds = [];
-  state.sequence = null;
+  store.set({ sequence: null });
   state.spec = { fix: -1, drive: -1, drives: [], locks: new Set() };
   clearFold();
   $('collide-summary').replaceChildren();
@@ -125,7 +125,7 @@ const { renderTree, selectFace } = createTree(ctx);
 
 async function refresh(force = false) {
   const session = await api.get('session');
-  state.session = session;
+  store.set({ session });
   $('file-name').textContent = session.file;
   $('file-name').title = session.file;
   $('undo').disabled = session.undo === 0;
@@ -169,7 +169,7 @@ function loadDocument(doc, changed) {
   if (changed) {
     // results of the old document are gone (the server dropped them)
     clearFold();
-    state.sequence = null;
+    store.set({ sequence: null });
     state.bones = null;
     setupTimeline();
   }
@@ -417,7 +417,7 @@ function foldBody() {
 }
 
 function clearFold() {
-  state.fold = null;
+  store.set({ fold: null });
   state.foldFrames.clear();
   state.foldPlaying = false;
   $('verdict').replaceChildren();
@@ -428,7 +428,6 @@ function clearFold() {
   for (const c of ['frame-a', 'frame-b', 'surround', 'offending']) v2.setHalos(c, []);
   v2.setLabels([]);
   clearCollision();
-  renderExportMenu();
   renderSpec();
 }
 
@@ -438,9 +437,8 @@ async function compute() {
     if (state.sequence && state.sequence.valid && state.folds.length && !body.frame) body.after_sequence = true;
     clearFold();
     const r = await api.compute('fold', () => api.post('fold', body));
-    state.fold = r;
+    store.set({ fold: r });
     showFold(r, body);
-    renderExportMenu();
     renderSpec();
     if (r.frames.length) await showFoldFrame(r.frames.length - 1);
     await refresh();
@@ -557,13 +555,13 @@ function sequenceJson(folds) {
 async function runSequence(folds, label) {
   if (!folds.length) {
     state.folds = [];
-    state.sequence = null;
+    store.set({ sequence: null });
     setupTimeline();
     return;
   }
   const r = await api.compute(label || 'sequence', () => api.post('sequence', sequenceJson(folds), collideOptions()));
   state.folds = folds;
-  state.sequence = r;
+  store.set({ sequence: r });
   await refresh();
   setupTimeline();
   if (r.collision) message(`collision: ${r.reason} (the sequence stops before it)`, true);
@@ -610,7 +608,6 @@ function setupTimeline() {
   $('show-seq-contact').hidden = !(r && r.collision);
   plot.setRecord(r, state.doc ? state.doc.assignment : [], contactT);
   renderFolds();
-  renderExportMenu();
   // the folds are kept when the pattern changes; their record is not (its indices may be stale)
   $('run-seq').hidden = !!r || state.folds.length === 0;
   if (replay.setup(!r)) return;
@@ -856,12 +853,14 @@ async function start() {
     $('state3d').textContent = label;
   } });
   await action(async () => {
+    // the Export menu follows what there is to export (store.js)
+    store.subscribe(['session', 'fold', 'sequence'], () => renderExportMenu());
     await refresh(true);
     renderExportMenu();
     renderCollection();
     if (state.session.sequence) {
       const r = await api.get('sequence');
-      state.sequence = r;
+      store.set({ sequence: r });
       state.folds = r.folds.map((f) => {
         // a fold toward the targets ("percent") has no drive
         const o = f.percent !== undefined && f.percent !== null
