@@ -77,6 +77,20 @@ await run('open', 'examples/patterns/thesis-flap.fold', async ({ page }) => {
   }
   await page.screenshot({ path: path.join(OUT, 'open-opx.png') });
 
+  // an image dropped on the page is not a texture (that is the texture action's): refused with
+  // the hint, nothing changes
+  const v0 = await page.evaluate(() => window.studio.version());
+  const png = Buffer.from('iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mP8z8DwHwAFBQIAX8jx0gAAAABJRU5ErkJggg==', 'base64');
+  await dropFile(page, 'paper.png', 'image/png', png);
+  assert(await page.$eval('#texture-clear', (b) => b.hidden), 'a dropped image is not made a texture');
+  assert((await page.evaluate(() => window.studio.lastError())).includes('use texture'), 'the page says how to map it');
+  assert(await page.evaluate(() => window.studio.version()) === v0, 'a dropped image changes nothing');
+  await page.click('#new-sheet');
+  await page.click('#new-ok');
+  await idle(page);
+  await dropFile(page, path.basename(files.opx), MIME.opx, fs.readFileSync(files.opx));
+  await expectOpened(page, 'opx', 'a drop after New');
+
   // glTF once in the export menu while there is no motion
   const opts = await page.evaluate(() => window.studio.exportOptions());
   assert(opts.filter((o) => o.startsWith('gltf')).length === 1, `glTF listed once (${opts.join(' ')})`);
