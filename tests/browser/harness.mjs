@@ -24,6 +24,10 @@ export function skip(why) {
   process.exit(SKIP);
 }
 
+// Thrown inside a test body: the test is skipped (exit 77) once the browser and the studio
+// are closed.
+export class Skip extends Error {}
+
 export async function loadPlaywright() {
   const pw = path.join(SOURCE, 'node_modules/playwright-core/index.mjs');
   if (!fs.existsSync(pw)) skip('node_modules/playwright-core is missing (run make deps)');
@@ -174,6 +178,11 @@ export async function run(name, file, body, options = {}) {
     assert(browser.errors.length === 0, 'console errors:\n  ' + browser.errors.join('\n  '));
     console.log(`PASS ${name} (${((Date.now() - t0) / 1000).toFixed(1)} s)`);
   } catch (e) {
+    if (e instanceof Skip) {
+      console.log(`SKIP: ${e.message}`);
+      process.exitCode = SKIP;
+      return;
+    }
     if (browser) {
       try {
         await browser.page.screenshot({ path: path.join(OUT, `${name}-failure.png`) });

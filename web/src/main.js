@@ -1,33 +1,36 @@
 // orikin studio: the page. It holds no geometry of its own: every edit, check, fold and state
 // comes from the server (liborikin); the page draws, picks and keeps the user's choices (the
 // tool, the fold specification, the folds of the sequence, the time T).
-import { Api, ApiError, decodeState } from './api.js';
+import { Api, ApiError } from './api.js';
 import { FrameReplay } from './frames.js';
 import { ASSIGNMENT_NAMES, faceLabel, fmt, isCrease, parseDocument } from './document.js';
+import { createExport, download } from './export.js';
+import { createFiles } from './files.js';
+import { createWholeFold } from './whole.js';
+import { createVerify } from './verify.js';
+import { createAxiomTool } from './axiom.js';
+import { createCollide } from './collide.js';
+import { createTree } from './tree.js';
+import { createFoldPanel } from './foldpanel.js';
+import { createSequence } from './sequence.js';
+import { createMessages } from './messages.js';
+import { createStore } from './store.js';
 import { Plot } from './plot.js';
 import { View2D } from './view2d.js';
 import { View3D } from './view3d.js';
 
 const $ = (id) => document.getElementById(id);
 
-// DOF is computed automatically for patterns up to this many interior vertices (dense SVD,
-// milliseconds); larger ones get a button (the sparse method may take seconds).
-const DOF_AUTO_MAX_INTERIOR = 300;
-// Sequence time per second of playback at 1×.
-const PLAY_RATE = 0.25;
-// Inputs of each axiom, in the order they are picked.
-const AXIOM_INPUTS = { 1: ['p1', 'p2'], 2: ['p1', 'p2'], 3: ['l1', 'l2'], 4: ['p1', 'l1'], 5: ['p1', 'p2', 'l1'],
-  6: ['p1', 'l1', 'p2', 'l2'], 7: ['p1', 'l1', 'l2'] };
 const COLLECTION_LABELS = { 'diagonal-left': 'DiagonalL', 'diagonal-right': 'DiagonalR', 'middle-h': 'MiddleH',
   'middle-v': 'MiddleV', cross: 'Cross', diagonals: 'Diagonals' };
 
-const state = {
+const store = createStore({
   session: null,
   doc: null,
   version: -1,
   tool: 'select',
   selectedFace: -1,
-  spec: { fix: -1, drive: -1, locks: new Set() },
+  spec: { fix: -1, drive: -1, drives: [], locks: new Set() },
   bones: null,
   axiom: { picks: [], solutions: null, lines: null },
   move: { edge: -1, points: [] },
@@ -53,18 +56,27 @@ const state = {
   work: 0,
   lastError: '',
   stats: { states: 0, latency: [], since: performance.now() },
-};
+});
+const state = store.state;
 
 // --- messages and progress ----------------------------------------------------------------
 
+// (a module script runs once the page is parsed: the elements exist)
+const messages = createMessages($('messages'), (t) => { state.lastError = t; });
 function message(text, error = false) {
-  const box = $('messages');
-  const d = document.createElement('div');
-  d.className = 'msg' + (error ? ' error' : '');
-  d.textContent = text;
-  box.prepend(d);
-  while (box.children.length > 30) box.lastChild.remove();
-  if (error) state.lastError = text;
+  messages.add(text, error);
+}
+
+// A new document (New, Open, a drop): the errors, the verdict and the fold of the old one go.
+function forgetDocument() {
+  messages.clearErrors();
+  state.folds = [];
+  store.set({ sequence: null });
+  state.spec = { fix: -1, drive: -1, drives: [], locks: new Set() };
+  clearFold();
+  $('collide-summary').replaceChildren();
+  $('regularize-summary').replaceChildren();
+  wholeFold.reset();
 }
 
 const progress = {
@@ -83,11 +95,41 @@ async function action(fn) {
   }
 }
 
+// --- the feature modules: files, export, the whole pattern's slider, verification, axioms ------
+
+const ctx = {
+  state, store, $, action, message, shownStateRef: () => shownStateRef(),
+  runSequence: (folds, label) => runSequence(folds, label), setupTimeline: () => setupTimeline(),
+  clearCollision: () => clearCollision(), showContact: (of) => showContact(of), collideOptions: () => collideOptions(),
+  renderTree: () => renderTree(), clearFold: () => clearFold(), foldBody: () => foldBody(),
+  renderCollection, forgetDocument, refresh,
+  clearErrors: () => messages.clearErrors(),
+  get api() { return api; },
+  get v2() { return v2; },
+  get v3() { return v3; },
+  get plot() { return plot; },
+  get replay() { return replay; },
+};
+const exporter = createExport(ctx);
+const files = createFiles(ctx);
+const wholeFold = createWholeFold(ctx);
+const exportParams = exporter.params;
+const exportAs = exporter.exportAs;
+const renderExportMenu = exporter.renderMenu;
+const openFile = files.open;
+const openTexture = files.openTexture;
+const { runCheck, regularize, maybeDof } = createVerify(ctx);
+const { axiomStatus, axiomClick } = createAxiomTool(ctx);
+const { collideOptions, clearCollision, showCollision, showContact, shownStateRef, collideShown } = createCollide(ctx);
+const { renderTree, selectFace } = createTree(ctx);
+const { renderSpec, loadBones, foldBody, clearFold, compute, showFoldFrame, playFold } = createFoldPanel(ctx);
+const { sequenceJson, runSequence, setupTimeline, sliderSteps, lastCleanT, showTime, addFold, togglePlay } = createSequence(ctx);
+
 // --- document ----------------------------------------------------------------------------
 
 async function refresh(force = false) {
   const session = await api.get('session');
-  state.session = session;
+  store.set({ session });
   $('file-name').textContent = session.file;
   $('file-name').title = session.file;
   $('undo').disabled = session.undo === 0;
@@ -131,7 +173,7 @@ function loadDocument(doc, changed) {
   if (changed) {
     // results of the old document are gone (the server dropped them)
     clearFold();
-    state.sequence = null;
+    store.set({ sequence: null });
     state.bones = null;
     setupTimeline();
   }
@@ -150,182 +192,6 @@ function loadDocument(doc, changed) {
   renderTree();
   renderSpec();
   if (state.spec.fix >= 0) loadBones();
-}
-
-async function runCheck() {
-  const tol = $('check-tolerance').value.trim();
-  const c = await api.get('check', tol === '' ? undefined : { tolerance_deg: tol });
-  state.check = c;
-  const bad = [], within = [];
-  const reasons = new Map();
-  for (const v of c.violations) reasons.set(v.vertex, (reasons.get(v.vertex) || []).concat(`${v.rule}: ${v.detail}`));
-  for (const v of c.vertices) {
-    if (v.within_tolerance) within.push({ vertex: v.vertex, reason: `within tolerance: flat-foldable once its sectors move by ${fmt(v.deviation_deg, 6)}°` });
-    else if (!v.flat_foldable) bad.push({ vertex: v.vertex, reason: (reasons.get(v.vertex) || ['not flat-foldable']).join('; ') });
-  }
-  v2.setCheckMarks(bad, within);
-  const box = $('check-summary');
-  box.replaceChildren();
-  const head = document.createElement('div');
-  if (c.interior_vertices === 0) {
-    head.textContent = 'no interior vertices: nothing to check locally';
-  } else {
-    head.className = c.locally_flat_foldable ? 'ok' : 'bad';
-    head.textContent = c.locally_flat_foldable
-      ? `locally flat-foldable (${c.interior_vertices} interior vert${c.interior_vertices === 1 ? 'ex' : 'ices'})`
-      : `not locally flat-foldable: ${c.failed_vertices} of ${c.interior_vertices} interior vert${c.interior_vertices === 1 ? 'ex fails' : 'ices fail'}`;
-  }
-  box.appendChild(head);
-  if (c.within_tolerance_vertices > 0) {
-    const w = document.createElement('div');
-    w.className = 'within';
-    w.textContent = `${c.within_tolerance_vertices} within ${fmt(c.tolerance_deg, 6)}° (largest deviation ${fmt(c.max_deviation_deg, 6)}°)`;
-    box.appendChild(w);
-  }
-  if (c.violations.length) {
-    const ul = document.createElement('ul');
-    for (const v of c.violations.slice(0, 12)) {
-      const li = document.createElement('li');
-      li.textContent = `vertex ${v.vertex}: ${v.rule}: ${v.detail}`;
-      ul.appendChild(li);
-    }
-    if (c.violations.length > 12) {
-      const li = document.createElement('li');
-      li.textContent = `… ${c.violations.length - 12} more (hover the marked vertices)`;
-      ul.appendChild(li);
-    }
-    box.appendChild(ul);
-  }
-  if (c.hint) {
-    const h = document.createElement('div');
-    h.className = 'hint';
-    h.textContent = c.hint;
-    box.appendChild(h);
-  }
-}
-
-// Regularize (orikin regularize): the nearest exact pattern replaces the document (undo
-// restores the drawing); the displacement is reported.
-async function regularize() {
-  const rigid = $('regularize-rigid').checked;
-  const r = await api.compute('regularize', () => api.post('regularize', { rigid }));
-  state.regularize = r;
-  const box = $('regularize-summary');
-  box.replaceChildren();
-  const d = document.createElement('div');
-  if (r.replaced) {
-    d.className = 'ok';
-    d.textContent = r.max_move_vertex === null
-      ? 'regularized: no vertex moved (the pattern is exact already)'
-      : `regularized${rigid ? ' (rigid)' : ''}: ${r.moved_vertices} vertices moved, the largest by ${r.max_move_rel.toExponential(2)} of the sheet (vertex ${r.max_move_vertex}), RMS ${r.rms_move_rel.toExponential(2)}; Kawasaki ${r.kawasaki_before_deg.toExponential(2)}° → ${r.kawasaki_after_deg.toExponential(2)}°`;
-    message(d.textContent + ' (undo restores the drawing)');
-  } else {
-    d.className = 'bad';
-    d.textContent = 'regularize refused: ' + r.reason;
-    message(d.textContent, true);
-  }
-  d.dataset.replaced = r.replaced;
-  box.appendChild(d);
-  await refresh();
-}
-
-async function maybeDof(force = false) {
-  const box = $('dof-summary');
-  const n = state.session ? state.session.interior_vertices : 0;
-  if (!force && n > DOF_AUTO_MAX_INTERIOR) {
-    box.replaceChildren();
-    const b = document.createElement('button');
-    b.className = 'small';
-    b.textContent = 'compute the DOF';
-    b.title = `${n} interior vertices: the sparse rank may take a while`;
-    b.onclick = () => action(() => maybeDof(true));
-    box.appendChild(b);
-    return;
-  }
-  let d;
-  try {
-    d = await api.compute('degrees of freedom', () => api.post('dof', { lock: [...state.spec.locks] }));
-  } catch (e) {
-    box.textContent = 'DOF: ' + e.message;
-    return;
-  }
-  const locks = state.spec.locks.size ? ` with ${state.spec.locks.size} locked` : '';
-  box.textContent = `DOF ${d.dof} at this state${locks}` + (d.generic_dof !== null && d.generic_dof !== d.dof ? ` (${d.generic_dof} nearby)` : '') +
-    ` · Grübler–Kutzbach ${d.grubler} · rank ${d.rank} of ${d.unknowns} unknowns`;
-  box.dataset.dof = d.dof;
-}
-
-// --- the face tree -----------------------------------------------------------------------
-
-// The tree lists at most this many faces (a generated tessellation has thousands; pick those
-// in the view).
-const TREE_FACES_MAX = 500;
-
-function renderTree() {
-  const doc = state.doc;
-  const root = $('tree');
-  root.replaceChildren();
-  const faceOf = new Map();
-  doc.names.forEach((n, f) => { if (n) faceOf.set(n, f); });
-  const node = (label, face, inner) => {
-    const li = document.createElement('li');
-    const d = document.createElement('div');
-    d.className = 'node ' + (face >= 0 ? 'leaf' : 'inner');
-    if (face >= 0) {
-      d.dataset.face = face;
-      if (face === state.selectedFace) d.classList.add('selected');
-      if (face === state.spec.fix) d.classList.add('fixed');
-      d.onclick = () => selectFace(face);
-      d.onmouseenter = () => v2.toggleFaceClass(face, 'hover', true);
-      d.onmouseleave = () => v2.toggleFaceClass(face, 'hover', false);
-    }
-    d.innerHTML = '';
-    const name = document.createElement('span');
-    name.textContent = label;
-    d.appendChild(name);
-    if (face >= 0) {
-      const s = document.createElement('small');
-      s.textContent = label === 'face ' + face ? '' : 'face ' + face;
-      d.appendChild(s);
-    }
-    li.appendChild(d);
-    if (inner) li.appendChild(inner);
-    return li;
-  };
-  const ul = document.createElement('ul');
-  if (doc.tree.length) {
-    const children = doc.tree.map(() => []);
-    const roots = [];
-    doc.tree.forEach((n, i) => (n.parent >= 0 && n.parent < doc.tree.length ? children[n.parent].push(i) : roots.push(i)));
-    const build = (i) => {
-      const sub = children[i].length ? document.createElement('ul') : null;
-      for (const c of children[i]) sub.appendChild(build(c));
-      const face = faceOf.has(doc.tree[i].name) ? faceOf.get(doc.tree[i].name) : -1;
-      return node(doc.tree[i].name, face, sub);
-    };
-    for (const r of roots) ul.appendChild(build(r));
-    // faces outside the tree
-    const inTree = new Set(doc.tree.map((n) => n.name));
-    doc.faces.forEach((_, f) => {
-      if (!doc.names[f] || !inTree.has(doc.names[f])) ul.appendChild(node(doc.names[f] || 'face ' + f, f, null));
-    });
-  } else {
-    for (let f = 0; f < Math.min(doc.faces.length, TREE_FACES_MAX); f++) ul.appendChild(node(doc.names[f] || `face ${f}`, f, null));
-    if (doc.faces.length > TREE_FACES_MAX) {
-      const li = document.createElement('li');
-      li.className = 'hint';
-      li.textContent = `… ${doc.faces.length - TREE_FACES_MAX} more faces: pick them in the crease view`;
-      ul.appendChild(li);
-    }
-  }
-  root.appendChild(ul);
-}
-
-function selectFace(f) {
-  state.selectedFace = state.selectedFace === f ? -1 : f;
-  v2.setFaceClass('selected', state.selectedFace >= 0 ? [state.selectedFace] : []);
-  for (const el of document.querySelectorAll('#tree .node')) el.classList.toggle('selected', +el.dataset.face === state.selectedFace && el.dataset.face !== undefined);
-  if (state.selectedFace >= 0) message(`selected ${faceLabel(state.doc, state.selectedFace)}: the collection and the axiom tool apply to it`);
 }
 
 // --- the crease collection -----------------------------------------------------------------
@@ -393,7 +259,7 @@ function needCrease(hit, what) {
   return true;
 }
 
-async function onClick(hit) {
+async function onClick(hit, ev) {
   const doc = state.doc;
   switch (state.tool) {
     case 'select':
@@ -439,7 +305,16 @@ async function onClick(hit) {
     case 'drive': {
       if (!needCrease(hit, 'drive')) return;
       if (state.fold) clearFold();
-      state.spec.drive = hit.index;
+      const sp = state.spec;
+      if (ev && ev.shiftKey) {
+        // several drives: shift-click adds a crease (or removes it)
+        if (!sp.drives.length && sp.drive >= 0) sp.drives = [sp.drive];
+        sp.drives = sp.drives.includes(hit.index) ? sp.drives.filter((e) => e !== hit.index) : sp.drives.concat([hit.index]);
+        sp.drive = sp.drives.length ? sp.drives[0] : -1;
+      } else {
+        sp.drives = [];
+        sp.drive = hit.index;
+      }
       state.spec.locks.delete(hit.index);
       // the target's sign follows the crease's assignment (valley > 0, mountain < 0)
       const to = $('spec-to');
@@ -510,606 +385,6 @@ function onHover(hit, ev) {
   }
 }
 
-// --- the axiom tool --------------------------------------------------------------------------
-
-function axiomStatus() {
-  const n = +$('axiom-number').value;
-  const need = AXIOM_INPUTS[n];
-  const k = state.axiom.picks.length;
-  $('axiom-status').textContent = state.tool !== 'axiom' ? '' : k < need.length
-    ? `pick ${need[k]} (${need[k][0] === 'p' ? 'a vertex or a point' : 'a crease'})`
-    : `${state.axiom.lines ? state.axiom.lines.length : 0} solution(s)`;
-}
-
-async function axiomClick(hit) {
-  const doc = state.doc;
-  const n = +$('axiom-number').value;
-  const need = AXIOM_INPUTS[n];
-  const ax = state.axiom;
-  if (hit.kind === 'solution' && ax.lines) return creaseSolution(hit.index);
-  if (ax.picks.length >= need.length) ax.picks = [];
-  const want = need[ax.picks.length];
-  if (want[0] === 'p') {
-    const [x, y] = hit.kind === 'vertex' ? doc.flat[hit.index] : hit.point;
-    ax.picks.push({ type: 'point', name: want, x, y });
-  } else {
-    if (hit.kind !== 'edge') { message(`axiom ${n}: ${want} is a line: click a crease or a side`, true); return; }
-    const [a, b] = doc.edges[hit.index];
-    const [x0, y0] = doc.flat[a], [x1, y1] = doc.flat[b];
-    ax.picks.push({ type: 'line', name: want, edge: hit.index, line: [x0, y0, x1 - x0, y1 - y0] });
-  }
-  ax.solutions = null;
-  ax.lines = null;
-  v2.setAxiomOverlay(ax.picks, null);
-  $('axiom-solutions').replaceChildren();
-  if (ax.picks.length === need.length) {
-    await action(async () => {
-      const r = await api.post('axiom', axiomBody(n));
-      ax.lines = r.lines;
-      ax.solutions = r.segments;
-      v2.setAxiomOverlay(ax.picks, r.segments);
-      const box = $('axiom-solutions');
-      box.replaceChildren();
-      if (!r.lines.length) message(`axiom ${n}: no solution for these inputs`, true);
-      r.lines.forEach((l, k) => {
-        const b = document.createElement('button');
-        b.textContent = `crease solution ${k + 1}`;
-        b.dataset.solution = k;
-        b.title = `through (${fmt(l.point[0])}, ${fmt(l.point[1])}), direction (${fmt(l.dir[0])}, ${fmt(l.dir[1])})`;
-        b.onclick = () => creaseSolution(k);
-        box.appendChild(b);
-      });
-    });
-  }
-  axiomStatus();
-}
-
-function axiomBody(n) {
-  const body = { axiom: n };
-  for (const p of state.axiom.picks) body[p.name] = p.type === 'point' ? [p.x, p.y] : p.line;
-  if (state.selectedFace >= 0) body.face = state.selectedFace;
-  return body;
-}
-
-async function creaseSolution(k) {
-  const n = +$('axiom-number').value;
-  const body = axiomBody(n);
-  body.solution = k + 1;
-  body.assign = $('collection-assign').value;
-  if (state.selectedFace < 0) body.all = true;
-  await action(async () => {
-    const r = await api.compute(`axiom ${n}`, () => api.post('crease', body));
-    message(`axiom ${n} solution ${k + 1} on ${r.applied_to}: ${r.faces_split} face(s) split`);
-    state.axiom = { picks: [], solutions: null, lines: null };
-    $('axiom-solutions').replaceChildren();
-    v2.setAxiomOverlay([], null);
-    state.selectedFace = -1;
-    await refresh();
-  });
-  axiomStatus();
-}
-
-// --- the fold specification -----------------------------------------------------------------
-
-function renderSpec() {
-  const s = state.spec;
-  $('spec-fix').textContent = s.fix >= 0 ? faceLabel(state.doc, s.fix) : '–';
-  $('spec-drive').textContent = s.drive >= 0 ? 'crease ' + s.drive : '–';
-  $('spec-lock').textContent = s.locks.size ? [...s.locks].sort((a, b) => a - b).join(', ') : '–';
-  v2.setFaceClass('fixed', s.fix >= 0 ? [s.fix] : []);
-  v2.setHalos('drive', s.drive >= 0 ? [s.drive] : []);
-  v2.setHalos('lock', [...s.locks]);
-  if (s.fix < 0) v2.setBones(null);
-}
-
-async function loadBones() {
-  if (state.spec.fix < 0) return;
-  try {
-    const m = await api.get('mechanism', { fix: state.spec.fix });
-    state.bones = m.bones;
-    v2.setBones(m.bones);
-  } catch (e) {
-    v2.setBones(null);
-    message('bone structure: ' + e.message, true);
-  }
-}
-
-function foldBody() {
-  const s = state.spec;
-  if (s.fix < 0) throw new Error('compute: fix a face first (folding properties: fix face)');
-  if (s.drive < 0) throw new Error('compute: choose the driven crease (folding properties: drive)');
-  const body = { fix: s.fix, drive: s.drive, to: +$('spec-to').value, step: +$('spec-step').value, lock: [...s.locks].sort((a, b) => a - b) };
-  const from = $('spec-from').value.trim();
-  if (from !== '') body.from = +from;
-  const frame = +$('start-frame').value;
-  if (frame > 0) body.frame = frame;
-  return body;
-}
-
-function clearFold() {
-  state.fold = null;
-  state.foldFrames.clear();
-  state.foldPlaying = false;
-  $('verdict').replaceChildren();
-  $('split').replaceChildren();
-  $('fold-slider').disabled = true;
-  $('fold-slider').max = 0;
-  $('play-fold').disabled = true;
-  for (const c of ['frame-a', 'frame-b', 'surround', 'offending']) v2.setHalos(c, []);
-  v2.setLabels([]);
-  clearCollision();
-}
-
-// --- collisions ---------------------------------------------------------------------------------
-
-// How folds and sequences are checked (as --no-collisions and --clearance).
-function collideOptions() {
-  const o = {};
-  if (!$('check-collisions').checked) o.no_collisions = true;
-  const c = +$('clearance').value;
-  if (c > 0) o.clearance = c;
-  return o;
-}
-
-function clearCollision() {
-  if (v3) v3.setHighlight([], null);
-  if (v2) v2.setFaceClass('colliding', []);
-}
-
-// Colliding faces in 2D and 3D, and the witness point in 3D.
-function showCollision(faces, point) {
-  v3.setHighlight(faces, point);
-  v2.setFaceClass('colliding', faces);
-}
-
-// The state at the first contact of the fold or the sequence, its faces and witness shown.
-async function showContact(of) {
-  const st = decodeState(await api.binary('contact', { of, binary: 1 }));
-  const col = of === 'fold' ? state.fold.collision : state.sequence.collision;
-  v3.setPositions(st.positions);
-  state.shown = 'contact';
-  state.contactOf = of;
-  showCollision(col.faces, col.point);
-  const at = of === 'sequence' ? `T = ${fmt(st.t, 6)}, fold ${st.fold}, ` : '';
-  const where = col.progress !== undefined ? `progress ${fmt(col.progress, 6)}` : `drive ${fmt(st.drive_deg, 6)}°`;
-  const label = `first contact of the ${of}: ${at}${where}, faces ${col.faces.join(' and ')}`;
-  $('state3d').textContent = label;
-  if (of === 'sequence') {
-    $('t-label').textContent = label;
-    plot.setCursor(st.t, st.angles);
-  }
-}
-
-// What the 3D view shows, as the API names a state.
-function shownStateRef() {
-  if (state.shown === 'fold') return { k: state.foldK };
-  if (state.shown === 'sequence' && state.shownT !== null) return { t: state.shownT };
-  if (state.shown === 'contact') return { contact: state.contactOf };
-  if (state.shown === 'frames') return replay.stateRef();
-  return { frame: 0 };
-}
-
-// Check the state shown for self-collision (orikin collide).
-async function collideShown() {
-  const body = shownStateRef();
-  const c = +$('clearance').value;
-  if (c > 0) body.clearance = c;
-  const r = await api.compute('collide', () => api.post('collide', body));
-  state.collide = r;
-  const box = $('collide-summary');
-  box.replaceChildren();
-  const d = document.createElement('div');
-  d.className = r.collides ? 'bad' : 'ok';
-  d.dataset.collides = r.collides;
-  const clear = r.min_clearance !== null ? `least clearance ${fmt(r.min_clearance, 6)} (faces ${r.clearance_faces.join(' and ')})` : 'every face pair shares a vertex';
-  d.textContent = r.collides
-    ? `${r.state}: collision: faces ${r.pairs.map((p) => p.join(' and ')).join('; ')} (${r.touching.length} touching pairs)`
-    : `${r.state}: clean, ${r.touching.length} touching pairs, ${clear}`;
-  box.appendChild(d);
-  const faces = [...new Set(r.pairs.flat())];
-  showCollision(faces, r.collides ? r.witness : null);
-}
-
-async function compute() {
-  await action(async () => {
-    const body = Object.assign(foldBody(), collideOptions());
-    if (state.sequence && state.sequence.valid && state.folds.length && !body.frame) body.after_sequence = true;
-    clearFold();
-    const r = await api.compute('fold', () => api.post('fold', body));
-    state.fold = r;
-    showFold(r, body);
-    if (r.frames.length) await showFoldFrame(r.frames.length - 1);
-    await refresh();
-    if (r.collision) await showContact('fold');
-  });
-}
-
-function showFold(r, body) {
-  const box = $('verdict');
-  box.replaceChildren();
-  const v = document.createElement('div');
-  v.className = r.valid ? 'valid' : 'invalid';
-  v.textContent = r.valid ? `valid: ${r.frames.length} states, ${r.solver}` : `${r.verdict}`;
-  v.dataset.verdict = r.verdict;
-  box.appendChild(v);
-  if (r.reason) {
-    const why = document.createElement('div');
-    why.className = 'reason';
-    why.textContent = r.reason;
-    box.appendChild(why);
-  }
-  if (r.collision) {
-    const c = document.createElement('div');
-    c.className = 'contact';
-    const stop = r.frames.length ? `the motion stops at state ${r.frames.length - 1}` : 'the start state collides';
-    c.textContent = `${stop}; first contact at drive ${fmt(r.collision.drive_deg, 6)}° (step ${r.collision.step}) `;
-    const b = document.createElement('button');
-    b.className = 'small';
-    b.id = 'show-fold-contact';
-    b.textContent = 'show contact';
-    b.onclick = () => action(() => showContact('fold'));
-    c.appendChild(b);
-    box.appendChild(c);
-  }
-  if (r.hint) {
-    const h = document.createElement('div');
-    h.className = 'hint';
-    h.textContent = r.hint;
-    box.appendChild(h);
-  }
-  const meta = document.createElement('div');
-  meta.className = 'hint';
-  meta.textContent = `DOF at the last state ${r.dof} · Grübler–Kutzbach ${r.grubler}` + (body.after_sequence ? ' · after the sequence' : '');
-  box.appendChild(meta);
-  // the offending creases, named and marked
-  v2.setHalos('offending', r.offending_edges.map((o) => o.edge));
-  v2.setLabels(r.offending_edges.map((o) => {
-    const [a, b] = state.doc.edges[o.edge];
-    const P = state.doc.flat;
-    return { x: (P[a][0] + P[b][0]) / 2, y: (P[a][1] + P[b][1]) / 2, text: `${o.edge}: ${o.assignment} → ${fmt(o.angle_deg, 2)}°` };
-  }));
-  for (const o of r.offending_edges) message(`crease ${o.edge} (${ASSIGNMENT_NAMES[o.assignment]}) would fold to ${fmt(o.angle_deg, 6)}° at drive ${fmt(o.at_drive_deg, 4)}°`, true);
-  // Frame A, Frame B, surrounding of a single vertex (thesis fig. 9-8)
-  const sp = $('split');
-  sp.replaceChildren();
-  if (r.split) {
-    v2.setHalos('frame-a', r.frame_a);
-    v2.setHalos('frame-b', r.frame_b);
-    v2.setHalos('surround', r.surrounding);
-    sp.innerHTML = '';
-    const part = (cls, label, edges) => {
-      const s = document.createElement('span');
-      s.className = cls;
-      s.textContent = `${label} ${edges.join(', ') || 'none'}`;
-      return s;
-    };
-    sp.append(`vertex ${r.split.vertex}: `, part('a', 'Frame A', r.frame_a), ' · ', part('b', 'Frame B', r.frame_b), ' · ',
-      part('s', 'surrounding', r.surrounding));
-  }
-  const slider = $('fold-slider');
-  slider.max = Math.max(0, r.frames.length - 1);
-  slider.value = slider.max;
-  slider.disabled = r.frames.length < 2;
-  $('play-fold').disabled = r.frames.length < 2;
-}
-
-async function showFoldFrame(k) {
-  state.foldK = k;
-  let st = state.foldFrames.get(k);
-  if (!st) {
-    st = decodeState(await api.binary('fold/frame', { k, binary: 1 }));
-    state.foldFrames.set(k, st);
-  }
-  if (state.foldK !== k) return;
-  v3.setPositions(st.positions);
-  if (state.shown === 'contact') clearCollision();
-  state.shown = 'fold';
-  $('state3d').textContent = `fold: state ${k} of ${state.fold.frames.length - 1}, drive ${fmt(st.drive_deg, 3)}°`;
-}
-
-async function playFold() {
-  if (!state.fold || state.fold.frames.length < 2) return;
-  state.foldPlaying = !state.foldPlaying;
-  $('play-fold').textContent = state.foldPlaying ? 'pause' : 'play';
-  const slider = $('fold-slider');
-  if (+slider.value >= +slider.max) slider.value = 0;
-  while (state.foldPlaying && state.fold) {
-    const k = +slider.value;
-    await action(() => showFoldFrame(k));
-    await new Promise((r) => setTimeout(r, 80));
-    if (k >= +slider.max) break;
-    slider.value = k + 1;
-  }
-  state.foldPlaying = false;
-  $('play-fold').textContent = 'play';
-}
-
-// --- the folding manager ------------------------------------------------------------------------
-
-function sequenceJson(folds) {
-  return { pattern: state.session.file, folds };
-}
-
-async function runSequence(folds, label) {
-  if (!folds.length) {
-    state.folds = [];
-    state.sequence = null;
-    setupTimeline();
-    return;
-  }
-  const r = await api.compute(label || 'sequence', () => api.post('sequence', sequenceJson(folds), collideOptions()));
-  state.folds = folds;
-  state.sequence = r;
-  await refresh();
-  setupTimeline();
-  if (r.collision) message(`collision: ${r.reason} (the sequence stops before it)`, true);
-  else if (!r.valid) message(`fold ${r.failed_fold} is ${r.verdict}: ${r.reason}`, true);
-  await showTime(lastCleanT());
-  if (r.collision) await showContact('sequence');
-}
-
-function renderFolds() {
-  const ol = $('folds');
-  ol.replaceChildren();
-  const r = state.sequence;
-  state.folds.forEach((f, i) => {
-    const li = document.createElement('li');
-    const failed = r && r.failed_fold === i + 1;
-    li.className = failed ? 'failed' : '';
-    const what = f.percent !== undefined ? `${fmt(f.percent)} % of the way toward the targets` : `drive ${f.drive} to ${fmt(f.to)}°`;
-    li.textContent = `${f.name ? f.name + ': ' : ''}fix ${f.fix}, ${what}, step ${fmt(f.step)}°` +
-      (f.lock && f.lock.length ? `, lock ${f.lock.join(',')}` : '') + (f.from !== undefined ? `, from ${fmt(f.from)}°` : '') +
-      (failed ? ` — ${r.verdict}` : '');
-    const x = document.createElement('button');
-    x.className = 'small';
-    x.textContent = '×';
-    x.title = 'Remove this fold (and run the sequence again)';
-    x.onclick = () => action(() => runSequence(state.folds.filter((_, k) => k !== i), 'sequence'));
-    li.appendChild(x);
-    ol.appendChild(li);
-  });
-}
-
-function setupTimeline() {
-  const r = state.sequence;
-  const slider = $('t-slider'), tv = $('t-value');
-  const duration = r ? r.duration : 0;
-  const steps = state.grid > 0 ? state.grid : 200;
-  // a sequence that collides is clean before its first contact only (as orikin sequence --at)
-  const contactT = r && state.session && state.session.sequence ? state.session.sequence.collision_t : null;
-  state.seqLimit = contactT !== null && contactT !== undefined ? contactT : duration;
-  slider.min = 0;
-  slider.max = contactT !== null && contactT !== undefined ? Math.max(0, Math.ceil(contactT * steps) - 1) : Math.round(duration * steps);
-  slider.disabled = !r || duration === 0;
-  tv.disabled = slider.disabled;
-  tv.max = state.seqLimit;
-  $('play').disabled = slider.disabled;
-  $('show-seq-contact').hidden = !(r && r.collision);
-  plot.setRecord(r, state.doc ? state.doc.assignment : [], contactT);
-  renderFolds();
-  // the folds are kept when the pattern changes; their record is not (its indices may be stale)
-  $('run-seq').hidden = !!r || state.folds.length === 0;
-  if (replay.setup(!r)) return;
-  if (!r) {
-    $('t-label').textContent = 'no sequence: specify a fold above and add it';
-    $('t-value').value = '0';
-    slider.value = '0';
-    plot.setCursor(null);
-  }
-}
-
-function sliderSteps() {
-  return state.grid > 0 ? state.grid : 200;
-}
-
-// The last instant the slider reaches: the end, or the last grid point before the first contact.
-function lastCleanT() {
-  return +$('t-slider').max / sliderSteps();
-}
-
-// Show the state at time T (exact, from the server); requests never pile up: while one is in
-// flight only the latest wanted T is remembered.
-async function showTime(t) {
-  state.targetT = Math.min(Math.max(t, 0), lastCleanT());
-  if (state.inflight) return;
-  state.inflight = true;
-  try {
-    while (state.targetT !== null) {
-      const want = state.targetT;
-      state.targetT = null;
-      const t0 = performance.now();
-      const st = decodeState(await api.binary('sequence/at', { t: want, binary: 1 }));
-      state.stats.latency.push(performance.now() - t0);
-      if (state.stats.latency.length > 500) state.stats.latency.shift();
-      v3.setPositions(st.positions);
-      if (state.shown === 'contact') clearCollision();
-      state.stats.states++;
-      state.t = want;
-      state.shownT = want;
-      state.shown = 'sequence';
-      state.shownAngles = st.angles;
-      plot.setCursor(want, st.angles);
-      // a fold toward the targets has no drive angle (NaN): its time is its progress
-      const at = Number.isNaN(st.drive_deg) ? `${fmt(100 * (want - (st.fold - 1)), 4)} % toward the targets` : `drive ${fmt(st.drive_deg, 4)}°`;
-      const label = `T = ${fmt(want, 4)}: fold ${st.fold}, ${at}, residual ${st.residual.toExponential(1)}`;
-      $('t-label').textContent = label;
-      $('state3d').textContent = label;
-      $('t-value').value = String(+want.toFixed(10));
-      $('t-slider').value = String(Math.round(want * sliderSteps()));
-    }
-  } catch (e) {
-    message(e.message, true);
-    state.targetT = null;
-  } finally {
-    state.inflight = false;
-  }
-}
-
-async function addFold() {
-  await action(async () => {
-    const b = foldBody();
-    const fold = { name: `fold ${state.folds.length + 1}`, fix: b.fix, drive: b.drive, to: b.to, step: b.step, lock: b.lock };
-    if (b.from !== undefined) fold.from = b.from;
-    await runSequence(state.folds.concat([fold]), 'sequence');
-    clearFold();
-    message(`fold ${state.folds.length} added: the next fold starts where it ends`);
-  });
-}
-
-function togglePlay() {
-  if (!state.sequence) return replay.togglePlay();
-  state.playing = !state.playing;
-  $('play').textContent = state.playing ? '❚❚' : '▶';
-  if (!state.playing) return;
-  const duration = lastCleanT();
-  let t = state.t >= duration ? 0 : state.t;
-  let last = performance.now();
-  const tick = (now) => {
-    if (!state.playing) return;
-    // an animation frame's time may precede the moment play was pressed: never step back
-    t = Math.min(duration, Math.max(0, t + (Math.max(0, now - last) / 1000) * PLAY_RATE * +$('speed').value));
-    last = Math.max(last, now);
-    // on the grid of the scrubbing cache: every state is exact and served at once
-    const k = Math.round(t * sliderSteps());
-    showTime(k / sliderSteps());
-    if (t >= duration) {
-      state.playing = false;
-      $('play').textContent = '▶';
-      return;
-    }
-    requestAnimationFrame(tick);
-  };
-  requestAnimationFrame(tick);
-}
-
-// --- files ---------------------------------------------------------------------------------------
-
-function download(name, blob) {
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = name;
-  document.body.appendChild(a);
-  a.click();
-  setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
-}
-
-// Export: the document (FOLD, SVG, .cp, .opx), a picture or mesh of the state shown (the
-// picture seen from the 3D view's camera, in its colours; the crease pattern when the flat
-// sheet is shown), or the motion of the sequence or the fold. Named "format" or "format:of".
-function exportParams(format, of) {
-  const f = state.session.export_formats.find((x) => x.format === format);
-  const params = { format };
-  if (!f || f.kind === 'document') return params;
-  if (of) {
-    params.of = of;
-  } else {
-    Object.assign(params, shownStateRef());
-  }
-  const flat = state.shown === 'flat' && !state.doc.is3d;
-  if ((f.kind === 'picture' && !flat) || f.kind === 'animation') {
-    const { eye, up } = v3.viewAxes();
-    params.eye = eye.map((x) => +x.toPrecision(12)).join(',');
-    params.up = up.map((x) => +x.toPrecision(12)).join(',');
-    params.perspective = 1;
-    params.front = $('color-front').value;
-    params.back = $('color-back').value;
-    if (v3.gridVisible !== false) params.grid = 1;
-    const c = $('gl');
-    let w = Math.max(1, Math.round(2 * c.clientWidth)), h = Math.max(1, Math.round(2 * c.clientHeight));
-    const k = Math.min(1, 4096 / w, 4096 / h, f.kind === 'animation' ? 800 / w : 1);
-    params.size = `${Math.max(1, Math.round(w * k))}x${Math.max(1, Math.round(h * k))}`;
-  } else if (f.kind === 'mesh') {
-    params.front = $('color-front').value;
-    params.back = $('color-back').value;
-  }
-  return params;
-}
-
-async function exportAs(format, of) {
-  await action(async () => {
-    const params = exportParams(format, of);
-    const run = () => api.request('GET', 'export', { params, as: 'response' });
-    const res = params.format === 'fold' || params.format === 'svg' ? await run() : await api.compute('export', run);
-    const cd = res.headers.get('Content-Disposition') || '';
-    const m = /filename="([^"]+)"/.exec(cd);
-    download(m ? m[1] : 'orikin.' + format, await res.blob());
-  });
-}
-
-// The export menu: one group per what is written.
-function renderExportMenu() {
-  const sel = $('export-format');
-  sel.querySelectorAll('optgroup').forEach((g) => g.remove());
-  const groups = [
-    ['crease pattern', (f) => f.kind === 'document', null],
-    ['picture of the state shown', (f) => f.kind === 'picture', null],
-    ['mesh of the state shown', (f) => f.kind === 'mesh', null],
-    ['motion of the sequence', (f) => f.motion, 'sequence'],
-    ['motion of the fold', (f) => f.motion, 'fold'],
-  ];
-  for (const [label, take, of] of groups) {
-    const g = document.createElement('optgroup');
-    g.label = label;
-    for (const f of state.session.export_formats.filter(take)) {
-      const o = document.createElement('option');
-      o.value = of ? `${f.format}:${of}` : f.format;
-      o.textContent = f.label;
-      g.appendChild(o);
-    }
-    sel.appendChild(g);
-  }
-}
-
-async function openFile(file) {
-  state.work++; // reading the file takes a moment before any request: count it as busy
-  try {
-    await openFileNow(file);
-  } finally {
-    state.work--;
-  }
-}
-
-async function openFileNow(file) {
-  const name = file.name;
-  const ext = (/\.[^.]+$/.exec(name.toLowerCase()) || [''])[0];
-  if (file.type.startsWith('image/')) {
-    const url = URL.createObjectURL(file);
-    await action(async () => {
-      await v3.setTexture(url);
-      $('texture-clear').hidden = false;
-      message(`texture: ${name} on the front side`);
-    });
-    return;
-  }
-  const text = await file.text();
-  if (ext === '.json') {
-    let j;
-    try { j = JSON.parse(text); } catch (e) { message(`${name}: malformed JSON: ${e.message}`, true); return; }
-    if (j && Array.isArray(j.folds)) {
-      await action(() => runSequence(j.folds, 'sequence'));
-      return;
-    }
-    if (j && Array.isArray(j.creases)) {
-      const label = j.name || name.replace(/\.json$/i, '');
-      state.composites.push({ name: label, pattern: j });
-      renderCollection();
-      message(`composite ${label} added to the collection`);
-      return;
-    }
-    message(`${name}: a JSON file here is a fold sequence ("folds") or a composite ("creases")`, true);
-    return;
-  }
-  await action(async () => {
-    await api.compute('opening ' + name, () => api.postText('open', text, { name }));
-    message(`opened ${name}`);
-    state.folds = [];
-    state.sequence = null;
-    state.spec = { fix: -1, drive: -1, locks: new Set() };
-    await refresh();
-    setupTimeline();
-  });
-}
-
 // --- start ---------------------------------------------------------------------------------------
 
 let v2, v3, plot;
@@ -1135,10 +410,10 @@ function wire() {
     const body = kind === 'square' ? { square: +$('new-side').value } : { rect: [+$('new-w').value, +$('new-h').value] };
     action(async () => {
       await api.post('new', body);
-      state.folds = [];
-      state.spec = { fix: -1, drive: -1, locks: new Set() };
+      forgetDocument();
       await refresh();
       setupTimeline();
+      v3.fit();
     });
   });
   $('open-file').onchange = (ev) => { if (ev.target.files[0]) openFile(ev.target.files[0]); ev.target.value = ''; };
@@ -1188,8 +463,9 @@ function wire() {
     };
   for (const b of document.querySelectorAll('[data-tool]')) b.onclick = () => setTool(b.dataset.tool === state.tool ? 'select' : b.dataset.tool);
   $('axiom-number').onchange = () => { setTool('axiom'); };
-  $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
+  $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, drives: [], locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
   $('compute').onclick = compute;
+  $('whole-slider').oninput = (ev) => wholeFold.fold(+ev.target.value);
   $('check-tolerance').onchange = () => action(runCheck);
   $('regularize').onclick = () => action(regularize);
   $('collide').onclick = () => action(collideShown);
@@ -1213,7 +489,7 @@ function wire() {
   $('edges-toggle').onchange = (ev) => v3.setCreasesVisible(ev.target.checked);
   $('color-front').oninput = (ev) => v3.setColors(ev.target.value, null);
   $('color-back').oninput = (ev) => v3.setColors(null, ev.target.value);
-  $('texture-file').onchange = (ev) => { if (ev.target.files[0]) openFile(ev.target.files[0]); ev.target.value = ''; };
+  $('texture-file').onchange = (ev) => { if (ev.target.files[0]) openTexture(ev.target.files[0]); ev.target.value = ''; };
   $('texture-clear').onclick = () => { v3.setTexture(null); v3.setColors($('color-front').value, null); $('texture-clear').hidden = true; };
   // drag and drop anywhere
   let depth = 0;
@@ -1244,7 +520,7 @@ function wire() {
 
 async function start() {
   const tok = token();
-  v2 = new View2D($('cp'), { onHover, onClick: (hit) => onClick(hit) });
+  v2 = new View2D($('cp'), { onHover, onClick: (hit, ev) => onClick(hit, ev) });
   v3 = new View3D($('gl'));
   plot = new Plot($('plot'));
   wire();
@@ -1260,12 +536,14 @@ async function start() {
     $('state3d').textContent = label;
   } });
   await action(async () => {
+    // the Export menu follows what there is to export (store.js)
+    store.subscribe(['session', 'fold', 'sequence'], () => renderExportMenu());
     await refresh(true);
     renderExportMenu();
     renderCollection();
     if (state.session.sequence) {
       const r = await api.get('sequence');
-      state.sequence = r;
+      store.set({ sequence: r });
       state.folds = r.folds.map((f) => {
         // a fold toward the targets ("percent") has no drive
         const o = f.percent !== undefined && f.percent !== null
@@ -1276,7 +554,7 @@ async function start() {
         return o;
       });
       setupTimeline();
-      await showTime(0);
+      if (r.frames.length) await showTime(0);
       if (r.collision) message(`collision: ${r.reason} (the sequence stops before it; "contact" shows it)`, true);
     } else {
       setupTimeline();
@@ -1295,7 +573,9 @@ window.studio = {
   shown: () => state.shown,
   version: () => state.version,
   lastError: () => state.lastError,
-  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work,
+  busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work + (wholeFold.running() ? 1 : 0),
+  angles: () => (state.shownAngles ? Array.from(state.shownAngles) : []),
+  wholePercent: () => wholeFold.percent(),
   stats: () => ({
     states: state.stats.states,
     framesDrawn: v3 ? v3.frameCount : 0,
@@ -1317,8 +597,12 @@ window.studio = {
   collide: () => state.collide,
   regularizeResult: () => state.regularize,
   highlight: () => (v3 ? v3.highlighted : null),
+  viewExtent: () => (v3 ? v3.extent() : null),
+  exportOptions: () => [...document.querySelectorAll('#export-format option')].filter((o) => o.value).map((o) => o.value),
+  errors: () => [...document.querySelectorAll('#messages .msg.error')].map((e) => e.textContent),
   exportParams: (format, of) => exportParams(format, of),
-  spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, locks: [...state.spec.locks] }),
+  spec: () => ({ fix: state.spec.fix, drive: state.spec.drive, drives: [...state.spec.drives], locks: [...state.spec.locks] }),
+  foldRequest: () => foldBody(),
 };
 
 start();

@@ -33,6 +33,84 @@ function sheetMaterial() {
   return m;
 }
 
+// Faces folded flat onto each other are drawn this far apart (a fraction of the sheet's size):
+// many depth-buffer steps at any zoom, far below a pixel at the fitted view.
+const STACK_GAP = 1e-3;
+
+// The faces' tree over their creases, from face 0 (breadth first): per face its parent face and
+// the side of the parent it folds onto (+1 the front: a valley, -1 the back: a mountain), as
+// the render module stacks faces folded flat without a faceOrders (by the fold tree).
+function stackTree(doc) {
+  const F = doc.faces.length;
+  const byEdge = new Map();
+  doc.faces.forEach((f, k) => f.forEach((a, i) => {
+    const b = f[(i + 1) % f.length];
+    const key = a < b ? `${a},${b}` : `${b},${a}`;
+    (byEdge.get(key) || byEdge.set(key, []).get(key)).push(k);
+  }));
+  const side = new Map();
+  doc.edges.forEach(([a, b], e) => {
+    const as = doc.assignment[e];
+    const s = as === 'V' ? 1 : as === 'M' ? -1 : (doc.foldAngle[e] || 0) < 0 ? -1 : 1;
+    if (as !== 'B' && as !== 'C') side.set(a < b ? `${a},${b}` : `${b},${a}`, s);
+  });
+  const parent = new Int32Array(F).fill(-1), sign = new Int8Array(F), order = [];
+  const seen = new Uint8Array(F);
+  const adj = doc.faces.map(() => []);
+  for (const [key, fs] of byEdge) if (fs.length === 2 && side.has(key)) {
+    adj[fs[0]].push([fs[1], side.get(key)]);
+    adj[fs[1]].push([fs[0], side.get(key)]);
+  }
+  for (let r = 0; r < F; r++) {
+    if (seen[r]) continue;
+    seen[r] = 1;
+    order.push(r);
+    for (let q = order.length - 1; q < order.length; q++) {
+      const f = order[q];
+      for (const [g, s] of adj[f]) if (!seen[g]) { seen[g] = 1; parent[g] = f; sign[g] = s; order.push(g); }
+    }
+  }
+  return { parent, sign, order };
+}
+
+// Per face, its offset (3F) in the state pos: its parent's plus STACK_GAP along the parent's front
+// normal (valley) or back normal (mountain). Faces not flat onto each other move imperceptibly.
+function stackOffsets(doc, tree, pos, faceCorners, cornerVertex) {
+  const F = faceCorners.length;
+  const off = new Float64Array(3 * F);
+  const gap = STACK_GAP * doc.box.size;
+  const normal = (f) => {
+    // Newell's normal of the face's polygon in this state (the front side's)
+    const [c0, n] = faceCorners[f];
+    let nx = 0, ny = 0, nz = 0;
+    for (let i = 0; i < n; i++) {
+      const a = 3 * cornerVertex[c0 + i], b = 3 * cornerVertex[c0 + (i + 1) % n];
+      nx += (pos[a + 1] - pos[b + 1]) * (pos[a + 2] + pos[b + 2]);
+      ny += (pos[a + 2] - pos[b + 2]) * (pos[a] + pos[b]);
+      nz += (pos[a] - pos[b]) * (pos[a + 1] + pos[b + 1]);
+    }
+    const l = Math.hypot(nx, ny, nz) || 1;
+    return [nx / l, ny / l, nz / l];
+  };
+  // the front of a face is the side its flat polygon is counter-clockwise from (as the material)
+  const flatSign = doc.faces.map((f) => {
+    let a = 0;
+    for (let i = 0; i < f.length; i++) {
+      const [x0, y0] = doc.flat[f[i]], [x1, y1] = doc.flat[f[(i + 1) % f.length]];
+      a += x0 * y1 - x1 * y0;
+    }
+    return a < 0 ? -1 : 1;
+  });
+  for (const f of tree.order) {
+    const p = tree.parent[f];
+    if (p < 0) continue;
+    const n = normal(p);
+    const s = tree.sign[f] * flatSign[p] * gap;
+    for (let k = 0; k < 3; k++) off[3 * f + k] = off[3 * p + k] + s * n[k];
+  }
+  return off;
+}
+
 const CREASE_COLORS = { M: 0xd7263d, V: 0x1b6ef3, B: 0x22262b, F: 0x9a9a9a, U: 0x6f6f6f, C: 0x000000, J: 0xcccccc };
 // Crease lines are drawn in 3D by default for patterns up to this many edges.
 const CREASE_LINES_AUTO_MAX = 5000;
@@ -79,26 +157,35 @@ export class View3D {
   setDocument(doc) {
     this.doc = doc;
     for (const o of [this.mesh, this.lines]) if (o) { this.model.remove(o); o.geometry.dispose(); }
-    const V = doc.vertices.length;
     const index = [];
+    // Every face has its own corners (cornerVertex: the vertex of each corner), so that faces
+    // folded flat onto each other can be stacked apart (stackOffsets) instead of fighting.
     this.faceTris = []; // per face: [first index, index count] in the sheet's index
+    this.faceCorners = []; // per face: [first corner, corner count]
+    const cornerVertex = [];
     for (const f of doc.faces) {
       const contour = f.map((i) => new THREE.Vector2(doc.flat[i][0], doc.flat[i][1]));
       const tris = f.length === 3 ? [[0, 1, 2]] : THREE.ShapeUtils.triangulateShape(contour, []);
+      const c0 = cornerVertex.length;
+      for (const i of f) cornerVertex.push(i);
+      this.faceCorners.push([c0, f.length]);
       const first = index.length;
-      for (const t of tris) index.push(f[t[0]], f[t[1]], f[t[2]]);
+      for (const t of tris) index.push(c0 + t[0], c0 + t[1], c0 + t[2]);
       this.faceTris.push([first, index.length - first]);
     }
+    this.cornerVertex = Int32Array.from(cornerVertex);
+    this.stackTree = stackTree(doc);
     this.sheetIndex = index;
+    const C = cornerVertex.length;
     this.geometry = new THREE.BufferGeometry();
-    this.posAttr = new THREE.BufferAttribute(new Float32Array(3 * V), 3);
+    this.posAttr = new THREE.BufferAttribute(new Float32Array(3 * C), 3);
     this.posAttr.setUsage(THREE.DynamicDrawUsage);
     this.geometry.setAttribute('position', this.posAttr);
     const { x0, y0, size } = doc.box;
-    const uv = new Float32Array(2 * V);
-    doc.flat.forEach(([x, y], i) => { uv[2 * i] = (x - x0) / size; uv[2 * i + 1] = (y - y0) / size; });
+    const uv = new Float32Array(2 * C);
+    cornerVertex.forEach((i, c) => { uv[2 * c] = (doc.flat[i][0] - x0) / size; uv[2 * c + 1] = (doc.flat[i][1] - y0) / size; });
     this.geometry.setAttribute('uv', new THREE.BufferAttribute(uv, 2));
-    this.geometry.setIndex(V > 65535 ? new THREE.Uint32BufferAttribute(index, 1) : new THREE.Uint16BufferAttribute(index, 1));
+    this.geometry.setIndex(C > 65535 ? new THREE.Uint32BufferAttribute(index, 1) : new THREE.Uint16BufferAttribute(index, 1));
     this.mesh = new THREE.Mesh(this.geometry, this.material);
     this.model.add(this.mesh);
     // creases as line segments sharing the vertex positions
@@ -161,7 +248,14 @@ export class View3D {
   setPositions(pos) {
     this.positions = Float64Array.from(pos);
     const p = this.posAttr.array;
-    for (let i = 0; i < p.length; i++) p[i] = pos[i];
+    const off = stackOffsets(this.doc, this.stackTree, pos, this.faceCorners, this.cornerVertex);
+    for (let f = 0; f < this.faceCorners.length; f++) {
+      const [c0, n] = this.faceCorners[f];
+      for (let c = c0; c < c0 + n; c++) {
+        const v = 3 * this.cornerVertex[c];
+        p[3 * c] = pos[v] + off[3 * f]; p[3 * c + 1] = pos[v + 1] + off[3 * f + 1]; p[3 * c + 2] = pos[v + 2] + off[3 * f + 2];
+      }
+    }
     this.posAttr.needsUpdate = true;
     const lp = this.linePos.array;
     const edges = this.doc.edges;
@@ -247,7 +341,10 @@ export class View3D {
     const dir = (direction || this.camera.position.clone().sub(this.controls.target)).clone();
     if (dir.lengthSq() < 1e-20 || !direction && this.fitted === undefined) dir.set(0.9, -1.6, 1.4);
     dir.normalize();
-    const dist = r / Math.sin((this.camera.fov * Math.PI) / 360) * 1.15;
+    // the sphere around the model within the narrower of the two fields of view
+    const vfov = (this.camera.fov * Math.PI) / 180;
+    const hfov = 2 * Math.atan(Math.tan(vfov / 2) * (this.camera.aspect || 1));
+    const dist = r / Math.sin(Math.min(vfov, hfov) / 2) * 1.15;
     this.controls.target.copy(c);
     this.camera.position.copy(c).addScaledVector(dir, dist);
     this.camera.near = dist / 100;
@@ -256,6 +353,21 @@ export class View3D {
     this.fitted = true;
     this.controls.update();
     this.render();
+  }
+
+  // How far the state shown reaches on screen: the largest |x| and |y| of its vertices in
+  // normalised device coordinates (within 1: the whole model is in view).
+  extent() {
+    if (!this.positions) return null;
+    this.model.updateMatrixWorld();
+    this.camera.updateMatrixWorld();
+    const v = new THREE.Vector3();
+    let m = 0;
+    for (let i = 0; i < this.positions.length; i += 3) {
+      v.set(this.positions[i], this.positions[i + 1], this.positions[i + 2]).applyMatrix4(this.model.matrixWorld).project(this.camera);
+      m = Math.max(m, Math.abs(v.x), Math.abs(v.y));
+    }
+    return m;
   }
 
   preset(name) {

@@ -1,0 +1,50 @@
+// The whole pattern's fold slider (the first control): every crease P % of the way toward the
+// file's target angles, as `orikin fold --percent P` (the server's default fixed face unless one
+// is chosen). Each position is one sequence of one fold toward the targets, shown at its end:
+// the state is the CLI's exactly. Requests never pile up: while one runs only the latest P waits.
+// ctx: {state, $, v3, action, runSequence}.
+import { faceLabel } from './document.js';
+
+export function createWholeFold(ctx) {
+  const { state, $ } = ctx;
+  const whole = { want: null, running: false, percent: null };
+  async function fold(p) {
+    whole.want = p;
+    $('whole-value').textContent = `${p} %`;
+    if (whole.running) return;
+    whole.running = true;
+    try {
+      while (whole.want !== null) {
+        const want = whole.want;
+        whole.want = null;
+        if (want === 0 && !state.sequence) continue;
+        const f = { name: 'the whole pattern', percent: want };
+        if (state.spec.fix >= 0) f.fix = state.spec.fix;
+        await ctx.action(async () => {
+          await ctx.runSequence(want === 0 ? [] : [f], 'fold');
+          if (want === 0) {
+            ctx.v3.setPositions(Float64Array.from(state.doc.vertices.flat()));
+            state.shown = 'flat';
+            state.shownAngles = null;
+            $('state3d').textContent = state.doc.is3d ? 'frame 0 (3D)' : 'flat sheet';
+          }
+          whole.percent = want;
+          const r = state.sequence;
+          const fix = r && r.folds && r.folds[0] ? r.folds[0].fix : null;
+          const face = fix !== null && fix !== undefined ? `, fixed ${faceLabel(state.doc, fix)}${state.spec.fix >= 0 ? '' : ' (default)'}` : '';
+          $('whole-label').textContent = !r ? 'flat' : r.valid ? `${want} % of the way toward the targets${face}` : `${r.verdict}: ${r.reason}`;
+          $('whole-label').title = $('whole-label').textContent;
+        });
+      }
+    } finally {
+      whole.running = false;
+    }
+  }
+  // A new document: the slider back at 0.
+  function reset() {
+    $('whole-slider').value = '0';
+    $('whole-value').textContent = '0 %';
+    $('whole-label').textContent = '';
+  }
+  return { fold, reset, running: () => whole.running, percent: () => whole.percent };
+}
