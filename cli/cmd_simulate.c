@@ -199,6 +199,8 @@ static int run(int argc, char **argv)
     if (rc != CLI_EXIT_OK) return rc;
     if (!path) return cli_usage("simulate", "missing FILE or SEQ.json");
     if (!o.has_duration) return cli_usage("simulate", "missing --duration S");
+    if (o.has_dt && !(ceil(o.duration / (o.frames - 1) / o.dt) * (o.frames - 1) <= ORI_DYN_MAX_STEPS)) // the library's own bound, before any work
+        return cli_usage("simulate", "--dt %g over --duration %g is more than the %.3g time steps a simulation takes: --dt at least %.3g", o.dt, o.duration, (double)ORI_DYN_MAX_STEPS, o.duration / ORI_DYN_MAX_STEPS);
     act_input in;
     if ((rc = act_load("simulate", path, &o, &in)) != CLI_EXIT_OK) return rc;
     const ori_mechanism *m = in.k.mech;
