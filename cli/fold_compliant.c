@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "fold_compliant.h"
+#include "kin_args.h"
 #include "output_guard.h"
 #include "progress.h"
 
@@ -155,7 +156,7 @@ int cli_fold_compliant_run(int argc, char **argv)
     d.gravity = a.gravity;
     d.fraction = a.percent / 100.0;
     d.keep_frames = a.frames;
-    if (a.fix && (rc = cli_find_face_option("fold", a.path, p, "--fix", a.fix, &d.fixed_face)) != CLI_EXIT_OK) {
+    if (a.fix && (rc = cli_spec_face("fold", a.path, p, "--fix", a.fix, &d.fixed_face)) != CLI_EXIT_OK) {
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
         return rc;
