@@ -821,9 +821,11 @@ class CompliantFold(Report):
     or None), max_strain, energy, crease_error_deg, gradient_norm, load_scale, vertices, bars,
     hinges, triangles, steps and time_step (explicit), newton_iterations, factorizations,
     load_steps (static); arrays (copies): fold_angles (E, radians), strains (E, axial strain
-    (L - L0)/L0 per edge), positions (V, 3), frame_fractions (F), frame_positions (F, V, 3),
+    (L - L0)/L0 per edge), face_energies (F, the strain energy of each face's bars and facet
+    hinges), face_strains (F, its largest |strain|), positions (V, 3), frame_fractions (F), frame_positions (F, V, 3),
     frame_angles and frame_strains (F, E): one frame per load step with all_frames, else the
-    final state."""
+    final state; contacts: faces passing through each other during the fold, [{faces: (a, b),
+    step, fraction}] (the CLI's warnings), contacts_truncated."""
 
     __slots__ = ("pattern",)
 
@@ -844,6 +846,10 @@ class CompliantFold(Report):
         out = {k: ("compliant" if k == "model" else self._d[k]) for k in keys}
         out["fold_angles_deg"] = self.fold_angles_deg.tolist()
         out["strains"] = self.strains.tolist()
+        out["face_energies"] = self.face_energies.tolist()
+        out["face_strains"] = self.face_strains.tolist()
+        out["contacts"] = [{"faces": list(c["faces"]), "step": c["step"], "fraction": c["fraction"]} for c in self.contacts]
+        out["contacts_truncated"] = self.contacts_truncated
         if not self.reached:
             out["reason"] = self.reason
         return out

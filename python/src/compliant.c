@@ -29,18 +29,18 @@ static PyObject *frames_array(const ori_compliant *c, int F, int n, int what)
 }
 
 // compliant_fold(pattern, fraction, dynamic, fix, physical, axial, facet, crease, damping, gravity,
-// steps, keep_frames, tolerance): the results as a dict (the CLI's --json keys; arrays in radians).
+// steps, keep_frames, tolerance, contacts): the results as a dict (the CLI's --json keys; arrays in radians).
 static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
 {
     (void)mod;
     static char *kwlist[] = {"pattern", "fraction", "dynamic", "fix", "physical", "axial", "facet", "crease",
-                             "damping", "gravity", "steps", "keep_frames", "tolerance", NULL};
+                             "damping", "gravity", "steps", "keep_frames", "tolerance", "contacts", NULL};
     PyObject *pobj, *axial = Py_None, *facet = Py_None, *crease = Py_None, *damping = Py_None;
     double fraction = 1.0, gravity = 0.0, tolerance = 1e-6;
-    int dynamic = 0, fix = ORI_NULL_INDEX, physical = 0, steps = 1000000, keep = 0;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O!|dpipOOOOdipd", kwlist, &ori_py_PatternType, &pobj, &fraction,
+    int dynamic = 0, fix = ORI_NULL_INDEX, physical = 0, steps = 1000000, keep = 0, check_contacts = 1;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O!|dpipOOOOdipdp", kwlist, &ori_py_PatternType, &pobj, &fraction,
                                      &dynamic, &fix, &physical, &axial, &facet, &crease, &damping, &gravity, &steps,
-                                     &keep, &tolerance))
+                                     &keep, &tolerance, &check_contacts))
         return NULL;
     ori_py_pattern *pat = (ori_py_pattern *)pobj;
     const char *src = ori_py_pattern_source(pat);
@@ -55,6 +55,7 @@ static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
     d.fraction = fraction;
     d.keep_frames = keep;
     d.fixed_face = fix;
+    d.check_contacts = check_contacts;
     ori_compliant *c = NULL;
     ori_error err;
     ori_status st;
@@ -87,6 +88,21 @@ static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
     ori_compliant_stats(c, &it, &fa, &bt, &ls);
     npy_intp nf = F;
     PyObject *fracs = PyArray_SimpleNew(1, &nf, NPY_DOUBLE);
+    double *fe = ang + E; // NF doubles after the angles
+    for (int f = 0; f < NF; ++f) fe[f] = ori_compliant_face_energy(c, f);
+    PyObject *face_energies = ori_py_doubles(fe, NF);
+    for (int f = 0; f < NF; ++f) fe[f] = ori_compliant_face_strain(c, f);
+    PyObject *face_strains = ori_py_doubles(fe, NF);
+    PyObject *contacts = PyList_New(0);
+    for (int k = 0; contacts && k < ori_compliant_contact_count(c); ++k) {
+        int fa0, fb0, step;
+        double fr;
+        ori_compliant_contact(c, k, &fa0, &fb0, &step, &fr);
+        PyObject *ct = ori_py_dict("faces", Py_BuildValue("(ii)", fa0, fb0), "step", PyLong_FromLong(step),
+                                   "fraction", PyFloat_FromDouble(fr), NULL);
+        if (!ct || PyList_Append(contacts, ct) < 0) Py_CLEAR(contacts);
+        Py_XDECREF(ct);
+    }
     if (fracs)
         for (int k = 0; k < F; ++k) ((double *)PyArray_DATA((PyArrayObject *)fracs))[k] = ori_compliant_frame_fraction(c, k);
     bool reached = st == ORI_OK;
@@ -107,6 +123,8 @@ static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
         "positions", ori_py_points(ori_compliant_positions(c), V),
         "frame_fractions", fracs, "frame_positions", frames_array(c, F, V, 0),
         "frame_angles", frames_array(c, F, E, 1), "frame_strains", frames_array(c, F, E, 2),
+        "face_energies", face_energies, "face_strains", face_strains, "contacts", contacts,
+        "contacts_truncated", PyBool_FromLong(ori_compliant_contacts_truncated(c)),
         "reason", reached ? Py_NewRef(Py_None) : PyUnicode_FromString(err.message), NULL);
     PyMem_Free(ang);
     PyMem_Free(str);

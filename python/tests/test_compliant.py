@@ -27,6 +27,9 @@ def test_open_corner_agrees_with_the_cli_json():
         assert f[key] == j[key], key
     np.testing.assert_allclose(f.fold_angles_deg, j["fold_angles_deg"], rtol=0, atol=1e-9)
     np.testing.assert_allclose(f.strains, j["strains"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(f.face_energies, j["face_energies"], rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(f.face_strains, j["face_strains"], rtol=1e-9, atol=1e-15)
+    assert f.face_energies.shape == (p.face_count,) and f.face_strains.max() == pytest.approx(f.max_strain, rel=1e-12)
     info = f.info()
     assert info["model"] == "compliant" and info["solver"] == "static" and info["percent"] == 40.0
     assert set(info) <= set(j) | {"file"} and set(j) - set(info) <= {"file"}
@@ -132,3 +135,23 @@ def test_errors_are_the_clis(monkeypatch):
     assert str(e.value) == cli_error(f"fold {src} --compliant --dynamic --all-frames")
     with pytest.raises(orikin.InputError, match="--dynamic is an option of the compliant fold"):
         p.fold(fix=4, drive=12, to=10, dynamic=True)
+
+
+def test_contact_warnings_are_the_clis(tmp_path):
+    """The open corner at 100 %: the compliant sheet's faces pass through each other (the CLI
+    warns of each pair on stderr and lists them in --json); at 40 % they do not."""
+    p = open_corner()
+    f = p.fold(compliant=True)
+    j = json.loads(cli("fold examples/patterns/open-corner.fold --compliant --json").stdout)
+    assert [list(c["faces"]) for c in f.contacts] == [c["faces"] for c in j["contacts"]]
+    assert [c["step"] for c in f.contacts] == [c["step"] for c in j["contacts"]]
+    assert len(f.contacts) >= 1
+    for c in f.contacts:
+        a, b = c["faces"]
+        assert 0 <= a < b < p.face_count and 0 < c["fraction"] <= 1
+    r = cli("fold examples/patterns/open-corner.fold --compliant")
+    warned = [l for l in r.stderr.splitlines() if "pass through each other" in l]
+    assert len(warned) == len(f.contacts)
+    a, b = f.contacts[0]["faces"]
+    assert f"faces {a} and {b} pass through each other at load step {f.contacts[0]['step']}" in warned[0]
+    assert p.fold(compliant=True, percent=40).contacts == []
