@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "fold_compliant.h"
+#include "kin_args.h"
 #include "output_guard.h"
 #include "progress.h"
 
@@ -120,6 +121,16 @@ static int write_frames(const compliant_args *a, ori_fold *doc, const ori_compli
         json_decref(s);
         if (st == ORI_OK) st = ori_fold_set_custom(doc, fr, "edges_orikin:strain", text, &err);
         free(text);
+        int F = ori_compliant_face_count(c);
+        const char *keys[2] = {"faces_orikin:strain_energy", "faces_orikin:strain"};
+        const double *vals[2] = {ori_compliant_frame_face_energies(c, k), ori_compliant_frame_face_strains(c, k)};
+        for (int q = 0; q < 2 && st == ORI_OK; ++q) {
+            s = edge_array(vals[q], F, false);
+            text = json_dumps(s, JSON_COMPACT);
+            json_decref(s);
+            st = ori_fold_set_custom(doc, fr, keys[q], text, &err);
+            free(text);
+        }
         if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
     }
     ori_status st = ori_fold_save_file(doc, a->out, &err);
@@ -155,7 +166,7 @@ int cli_fold_compliant_run(int argc, char **argv)
     d.gravity = a.gravity;
     d.fraction = a.percent / 100.0;
     d.keep_frames = a.frames;
-    if (a.fix && (rc = cli_find_face_option("fold", a.path, p, "--fix", a.fix, &d.fixed_face)) != CLI_EXIT_OK) {
+    if (a.fix && (rc = cli_spec_face("fold", a.path, p, "--fix", a.fix, &d.fixed_face)) != CLI_EXIT_OK) {
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
         return rc;
@@ -188,6 +199,20 @@ int cli_fold_compliant_run(int argc, char **argv)
     double cerr = ori_compliant_crease_error(c), frac = ori_compliant_fraction(c);
     int it, fa, bt, ls;
     ori_compliant_stats(c, &it, &fa, &bt, &ls);
+    int NF = ori_compliant_face_count(c), worst_face = 0;
+    for (int f = 1; f < NF; ++f)
+        if (ori_compliant_face_energy(c, f) > ori_compliant_face_energy(c, worst_face)) worst_face = f;
+    // contact warnings: faces passing through each other during the fold
+    for (int k = 0; k < ori_compliant_contact_count(c) && !a.json; ++k) {
+        int f0, f1, step;
+        double fr;
+        ori_compliant_contact(c, k, &f0, &f1, &step, &fr);
+        fprintf(stderr, "orikin fold: %s: warning: faces %d and %d pass through each other at %s step %d (%.6g %%)\n", a.path,
+                f0, f1, a.dynamic ? "explicit" : "load", step, 100.0 * fr);
+    }
+    if (ori_compliant_contacts_truncated(c) && !a.json)
+        fprintf(stderr, "orikin fold: %s: warning: more face pairs pass through each other (the first %d are listed)\n", a.path,
+                ori_compliant_contact_count(c));
     if (a.json) {
         json_t *o = json_object();
         json_object_set_new(o, "file", json_string(a.path));
@@ -221,6 +246,25 @@ int cli_fold_compliant_run(int argc, char **argv)
         json_object_set_new(o, "strains", edge_array(str, E, false));
         free(ang);
         free(str);
+        json_t *fe = json_array();
+        for (int f = 0; f < NF; ++f) json_array_append_new(fe, json_real(ori_compliant_face_energy(c, f)));
+        json_object_set_new(o, "face_energies", fe);
+        json_t *fs = json_array();
+        for (int f = 0; f < NF; ++f) json_array_append_new(fs, json_real(ori_compliant_face_strain(c, f)));
+        json_object_set_new(o, "face_strains", fs);
+        json_t *cs = json_array();
+        for (int k = 0; k < ori_compliant_contact_count(c); ++k) {
+            int f0, f1, step;
+            double fr;
+            ori_compliant_contact(c, k, &f0, &f1, &step, &fr);
+            json_t *ct = json_object();
+            json_object_set_new(ct, "faces", json_pack("[ii]", f0, f1));
+            json_object_set_new(ct, "step", json_integer(step));
+            json_object_set_new(ct, "fraction", json_real(fr));
+            json_array_append_new(cs, ct);
+        }
+        json_object_set_new(o, "contacts", cs);
+        json_object_set_new(o, "contacts_truncated", json_boolean(ori_compliant_contacts_truncated(c)));
         if (!reached) json_object_set_new(o, "reason", json_string(err.message));
         cli_print_json(o);
     } else {
@@ -234,6 +278,10 @@ int cli_fold_compliant_run(int argc, char **argv)
                     ori_compliant_gradient_norm(c), ori_compliant_load_scale(c));
         printf("max strain %.4g %%, energy %.6g, largest crease error vs target %.4g deg\n", 100.0 * strain, energy,
                cerr * 180.0 / ORI_PI);
+        printf("largest face strain energy %.6g (face %d, max strain %.4g %%), %d contact warning%s\n",
+               NF > 0 ? ori_compliant_face_energy(c, worst_face) : 0.0, worst_face,
+               NF > 0 ? 100.0 * ori_compliant_face_strain(c, worst_face) : 0.0, ori_compliant_contact_count(c),
+               ori_compliant_contact_count(c) == 1 ? "" : "s");
     }
     if (rc == CLI_EXIT_OK && a.out) rc = write_frames(&a, doc, c, E);
     if (rc == CLI_EXIT_OK && !reached) rc = a.dynamic ? CLI_EXIT_PARTIAL : CLI_EXIT_NEGATIVE;

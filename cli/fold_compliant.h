@@ -30,9 +30,12 @@ int cli_fold_compliant_run(int argc, char **argv);
     "  --json          print {file, model, solver, preset, percent, reached, reached_fraction,\n"       \
     "                  max_strain, energy, crease_error_deg, gradient_norm, load_scale, vertices,\n"  \
     "                  bars, hinges, steps | newton_iterations, load_steps, fold_angles_deg,\n"       \
-    "                  strains, reason}\n"                                                             \
+    "                  strains, face_energies, face_strains, contacts [{faces, step, fraction}],\n"  \
+    "                  contacts_truncated, reason}\n"                                                 \
     "  -o OUT.fold     FILE with the state(s) appended as folded-form frames, each with\n"            \
-    "                  \"orikin:fraction\" and \"edges_orikin:strain\" (axial strain per edge)\n"       \
+    "                  \"orikin:fraction\", \"edges_orikin:strain\" (axial strain per edge),\n"         \
+    "                  \"faces_orikin:strain_energy\" and \"faces_orikin:strain\" (per face)\n"         \
+    "  Faces passing through each other during the fold are warned of (the pair and the step).\n"   \
     "  Exit 0 reached, 1 no equilibrium (static), 5 not settled in --steps (dynamic), 3 bad input.\n"
 
 #endif

@@ -2,7 +2,7 @@
 // differences; closed forms (a bar in tension, a flap folding under gravity: torque balance);
 // convergence to orikin's exact rigid fold angles as the panels stiffen (Miura 4 × 4, the
 // thesis' open corner); explicit vs static agreement; the line search never raises the energy;
-// bad input.
+// bad input; per-face strain energy; contact warnings.
 #include <float.h>
 #include <jansson.h>
 #include <stdio.h>
@@ -422,4 +422,108 @@ Test(compliant, cli_writes_frames_with_fraction_and_strain)
     cr_assert_float_eq(last, 0.4, 1e-15);
     json_decref(doc);
     test_tmpdir_remove(dir);
+}
+
+// A strip of three panels, 0.7 | 0.6 | 0.7 wide, the outer two valley flaps with target 170°:
+// past 115.4° (cos ρ = −0.3/0.7, where the tips meet over the centre) they cross each other.
+static ori_pattern *strip_pattern(void)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *p = ori_pattern_create(&pd);
+    const double xs[4] = {0.0, 0.7, 1.3, 2.0};
+    for (int k = 0; k < 4; ++k) ori_pattern_add_vertex(p, (ori_v3){xs[k], 0, 0});
+    for (int k = 0; k < 4; ++k) ori_pattern_add_vertex(p, (ori_v3){xs[k], 1, 0});
+    for (int k = 0; k < 3; ++k) {
+        ori_pattern_add_edge(p, k, k + 1, ORI_ASSIGN_BOUNDARY, 0.0);
+        ori_pattern_add_edge(p, 4 + k, 5 + k, ORI_ASSIGN_BOUNDARY, 0.0);
+    }
+    ori_pattern_add_edge(p, 0, 4, ORI_ASSIGN_BOUNDARY, 0.0);
+    ori_pattern_add_edge(p, 1, 5, ORI_ASSIGN_VALLEY, 170 * DEG);
+    ori_pattern_add_edge(p, 2, 6, ORI_ASSIGN_VALLEY, 170 * DEG);
+    ori_pattern_add_edge(p, 3, 7, ORI_ASSIGN_BOUNDARY, 0.0);
+    for (int k = 0; k < 3; ++k) {
+        int f[4] = {k, k + 1, 5 + k, 4 + k};
+        ori_pattern_add_face(p, f, 4);
+    }
+    ori_pattern_set_has_fold_angles(p, true);
+    ori_error err;
+    ori_build_def bd = ori_default_build_def();
+    cr_assert_eq(ori_pattern_build(p, &bd, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
+// The two flaps of the strip pass through each other: one warning, that pair, at the first load
+// step past 115.4°; none at 50 %, none with check_contacts off.
+Test(compliant, contact_warnings_name_the_faces_and_the_step)
+{
+    ori_pattern *p = strip_pattern();
+    int left = face_containing(p, 0.3, 0.5), mid = face_containing(p, 1.0, 0.5), right = face_containing(p, 1.7, 0.5);
+    ori_compliant_def d = ori_default_compliant_def();
+    d.fixed_face = mid;
+    d.fraction = 0.5;
+    ori_compliant *c = make(p, &d);
+    ori_error err;
+    cr_assert_eq(ori_compliant_solve_static(c, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_compliant_contact_count(c), 0);
+    cr_assert_eq(ori_compliant_set_fraction(c, 1.0, &err), ORI_OK);
+    cr_assert_eq(ori_compliant_solve_static(c, &err), ORI_OK, "%s", err.message);
+    cr_assert_float_eq(ori_compliant_fold_angle(c, 7), 170 * DEG, 1e-6); // the flaps rotate freely
+    cr_assert_float_eq(ori_compliant_fold_angle(c, 8), 170 * DEG, 1e-6);
+    cr_assert_eq(ori_compliant_contact_count(c), 1);
+    int fa, fb, step;
+    double fr;
+    ori_compliant_contact(c, 0, &fa, &fb, &step, &fr);
+    cr_assert_eq(fa, left < right ? left : right);
+    cr_assert_eq(fb, left < right ? right : left);
+    double cross = (180.0 - acos(0.3 / 0.7) / DEG) / 170.0; // 0.679
+    cr_log_info("strip: contact at load step %d, fraction %.4f (crossing from %.4f)", step, fr, cross);
+    cr_assert_geq(fr, cross);
+    cr_assert_leq(fr, cross + 10.0 / 170.0 + 1e-12); // within one load step of 10° at most
+    cr_assert_gt(step, 0);
+    cr_assert(!ori_compliant_contacts_truncated(c));
+    ori_compliant_destroy(c);
+    d.check_contacts = false;
+    d.fraction = 1.0;
+    c = make(p, &d);
+    cr_assert_eq(ori_compliant_solve_static(c, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_compliant_contact_count(c), 0);
+    ori_compliant_destroy(c);
+    ori_pattern_destroy(p);
+}
+
+// Per-face strain energy: the faces' energies and the crease hinges' ½ k_h (ρ − ρ_rest)² add up
+// to the total energy (no gravity); the stiffest-strained face is where the largest strain is.
+Test(compliant, face_energies_add_up_to_the_total)
+{
+    test_open_corner oc = test_open_corner_load();
+    ori_compliant_def d = ori_default_compliant_def();
+    d.fraction = 0.4;
+    ori_compliant *c = make(oc.p, &d);
+    ori_error err;
+    cr_assert_eq(ori_compliant_solve_static(c, &err), ORI_OK, "%s", err.message);
+    int nf = ori_compliant_face_count(c);
+    cr_assert_eq(nf, ori_pattern_face_count(oc.p));
+    double sum = 0.0, smax = 0.0;
+    for (int f = 0; f < nf; ++f) {
+        cr_assert_geq(ori_compliant_face_energy(c, f), 0.0);
+        sum += ori_compliant_face_energy(c, f);
+        smax = fmax(smax, ori_compliant_face_strain(c, f));
+    }
+    double creases = 0.0;
+    for (int h = 0; h < c->nhinge; ++h) {
+        const cmp_hinge *hh = &c->hinges[h];
+        if (!hh->crease) continue;
+        double r = ori_compliant_fold_angle(c, hh->edge) - 0.4 * hh->target;
+        cr_assert_float_eq(hh->k_h, d.crease_stiffness * c->bars[c->edge_bar[hh->edge]].l0, 1e-15);
+        creases += 0.5 * hh->k_h * r * r;
+    }
+    cr_log_info("open corner 40 %%: faces %.9g + creases %.9g = %.9g (total %.9g)", sum, creases, sum + creases,
+                ori_compliant_energy(c));
+    cr_assert_gt(sum, 1e-6);
+    cr_assert_float_eq(sum + creases, ori_compliant_energy(c), 1e-12 * ori_compliant_energy(c));
+    cr_assert_float_eq(smax, ori_compliant_max_strain(c), 1e-15);
+    const double *fe = ori_compliant_frame_face_energies(c, ori_compliant_frame_count(c) - 1);
+    for (int f = 0; f < nf; ++f) cr_assert_eq(fe[f], ori_compliant_face_energy(c, f));
+    ori_compliant_destroy(c);
+    test_open_corner_free(&oc);
 }

@@ -8,7 +8,7 @@
 ///
 /// Functions: ori_default_compliant_def, ori_compliant_physical_def, ori_compliant_create,
 /// ori_compliant_destroy, ori_compliant_solve_static, ori_compliant_run_dynamic, and the accessors
-/// below (positions, fold angles, strains, energy, frames).
+/// below (positions, fold angles, strains, per-face strain energy, contact warnings, frames).
 #ifndef ORIKIN_COMPLIANT_H
 #define ORIKIN_COMPLIANT_H
 
@@ -50,6 +50,7 @@ typedef struct ori_compliant_def {
     int max_iterations;              ///< static solver: Newton iterations per load step
     double tolerance;                ///< static equilibrium: |∇E|∞ ≤ tolerance · load scale (1e-10)
     bool keep_frames;                ///< keep one frame per load step (else only the last)
+    bool check_contacts;             ///< warn of faces passing through each other (after each load step; every 1024 explicit steps and at the end); default true
     int internal_value;              ///< set by the default functions; do not change
 } ori_compliant_def;
 
@@ -120,6 +121,22 @@ ORI_API double ori_compliant_crease_error(const ori_compliant *c);
 ORI_API void ori_compliant_stats(const ori_compliant *c, int *iterations, int *factorizations, int *backtracks,
                                  int *load_steps);
 
+/// Number of pattern faces (the per-face results below).
+ORI_API int ori_compliant_face_count(const ori_compliant *c);
+/// Strain energy of a pattern face in the current state: its bars' and facet hinges' energy (a bar
+/// or facet hinge between two faces gives each half; crease hinges and gravity are not counted).
+ORI_API double ori_compliant_face_energy(const ori_compliant *c, int face);
+/// Largest |axial strain| over the bars of a pattern face (its edges and diagonals), current state.
+ORI_API double ori_compliant_face_strain(const ori_compliant *c, int face);
+
+/// Contact warnings (check_contacts): pairs of pattern faces whose deformed triangles pass
+/// through each other (the collision module's penetration test), each pair once with the first
+/// load step (static, 1-based) or explicit step it was seen at and that step's fraction; at most
+/// 256 pairs (ori_compliant_contacts_truncated says when more were left out).
+ORI_API int ori_compliant_contact_count(const ori_compliant *c);
+ORI_API void ori_compliant_contact(const ori_compliant *c, int k, int *face_a, int *face_b, int *step, double *fraction);
+ORI_API bool ori_compliant_contacts_truncated(const ori_compliant *c);
+
 /// Frames kept by the static solver (one per load step with keep_frames, else the last).
 ORI_API int ori_compliant_frame_count(const ori_compliant *c);
 /// Frame k's fraction, positions (vertex_count), fold angles and strains (edge_count each); owned by c.
@@ -127,6 +144,9 @@ ORI_API double ori_compliant_frame_fraction(const ori_compliant *c, int k);
 ORI_API const ori_v3 *ori_compliant_frame_positions(const ori_compliant *c, int k);
 ORI_API const double *ori_compliant_frame_angles(const ori_compliant *c, int k);
 ORI_API const double *ori_compliant_frame_strains(const ori_compliant *c, int k);
+/// Frame k's per-face strain energies and largest |strain| (face_count each); owned by c.
+ORI_API const double *ori_compliant_frame_face_energies(const ori_compliant *c, int k);
+ORI_API const double *ori_compliant_frame_face_strains(const ori_compliant *c, int k);
 
 #ifdef __cplusplus
 }

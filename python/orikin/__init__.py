@@ -14,7 +14,7 @@ orikin.InputError (bad input: the CLI's one-line message and the FOLD index), or
 the guide.
 """
 
-from ._api import (Actuation, Cancelled, CheckReport, Collision, CollisionEvent, Contact, DofReport, Error,
+from ._api import (Actuation, Cancelled, CheckReport, Collision, CollisionEvent, CompliantFold, Contact, DofReport, Error,
                    InputError, Layers, LayerState, LinkageMotion, Motion, Net, Pattern, Record, Regularization,
                    Report, Simulation, SolveError, State, StepResult, VertexReport, Violation, axiom, generate, load,
                    unfold, unfold_linkage)
@@ -23,7 +23,7 @@ from .design import DesignEnv, default_reward
 
 __version__ = version()
 
-__all__ = ["Actuation", "Cancelled", "CheckReport", "Collision", "CollisionEvent", "Contact", "DesignEnv",
+__all__ = ["Actuation", "Cancelled", "CheckReport", "Collision", "CollisionEvent", "CompliantFold", "Contact", "DesignEnv",
            "DofReport", "Error", "InputError", "LayerState", "Layers", "LinkageMotion", "Motion", "Net", "Pattern",
            "Record", "Regularization", "Report", "Simulation", "SolveError", "State", "StepResult", "VertexReport",
            "Violation", "axiom", "default_reward", "generate", "load", "unfold", "unfold_linkage", "version"]

@@ -442,7 +442,10 @@ class Pattern:
     def fold(self, fix=None, drive=None, to=None, *, from_: Optional[float] = None, step: float = 10.0,
              lock=None, frame: int = 0, start=None, solver: str = "auto", linear: str = "auto",
              percent: Optional[float] = None, ratio=None, symmetric: bool = False, collisions: bool = True,
-             clearance: float = 0.0, progress: Progress = None) -> "Motion":
+             clearance: float = 0.0, progress: Progress = None, compliant: bool = False, dynamic: bool = False,
+             preset: str = "origami-simulator", axial: Optional[float] = None, facet: Optional[float] = None,
+             crease: Optional[float] = None, damping: Optional[float] = None, gravity: float = 0.0,
+             steps: int = 1000000, all_frames: bool = False) -> Union["Motion", "CompliantFold"]:
         """Fold rigidly: fix a face, lock creases, drive a crease (`orikin fold`).
 
         Treat the crease pattern as a mechanism (faces = rigid bodies, creases = revolute
@@ -498,6 +501,26 @@ class Pattern:
           symmetric keep creases that the pattern's symmetries map onto each other at equal angles
           (these modes check every step for self-collision as the ordinary fold does)
 
+        Compliant folding (compliant=True, the CLI's --compliant; docs/compliant.md): fold with
+        a bar-and-hinge model (Origami Simulator's: faces triangulated, bars on every edge and
+        diagonal, creases driven to `percent` % of their targets, facet hinges resisting panel
+        bending), so that patterns that are not rigidly foldable fold too, bending a little.
+        Returns a CompliantFold (fold_angles, strains, positions, face_energies, contacts as
+        numpy arrays and lists; .info() is the CLI's --json), not a Motion. Takes fix, percent
+        (default 100) and:
+          dynamic   the explicit solver (damped Verlet, stable time step) for at most `steps`
+                    steps, instead of the static one (Newton with load steps, |grad E| <= 1e-10
+                    of the load)
+          preset    'origami-simulator' (default: axial 20, facet 0.2, crease 0.7, damping
+                    0.45) or 'physical' (SI: 1 um silicon panels; lengths in metres)
+          axial, facet, crease, damping   the stiffnesses of the preset, replaced
+          gravity   acceleration along -z (model units or m/s^2); default 0
+          steps     the explicit solver's step bound (> 0)
+          all_frames  keep one frame per load step (the CLI's --all-frames; static only)
+        A fold that does not reach its fraction is a result (fold.reached False, fold.reason:
+        the CLI's exit 1, or 5 for dynamic); bad stiffnesses are orikin.InputError with the
+        CLI's message.
+
         From the command line's other options: --json is the Motion itself (motion.info(),
         .angles, .frames ...), -o OUT.fold is motion.to_fold() / motion.save(path), --weld and
         the drawing options (--tolerance, --gaps, --keep-*) belong to Pattern.load, and --force
@@ -508,6 +531,23 @@ class Pattern:
             m = p.fold(fix=4, drive=12, lock=[11], to=90)
             np.degrees(m.angles[-1, [8, 9]])   # the thesis' 35.26 and 60 degrees
         """
+        if compliant:
+            rigid_only = (("--drive", drive is not None), ("--to", to is not None), ("--from", from_ is not None),
+                          ("--step", step != 10.0), ("--lock", lock is not None), ("--frame", frame != 0),
+                          ("--start", start is not None), ("--solver", solver != "auto"), ("--linear", linear != "auto"),
+                          ("--ratio", ratio is not None), ("--symmetric", bool(symmetric)),
+                          ("--no-collisions", not collisions), ("--clearance", clearance != 0.0))
+            for name, given in rigid_only:
+                if given:
+                    raise _usage(f"unknown option '{name}' with --compliant (see orikin fold -h)", name)
+            return self._compliant_fold(fix, 100.0 if percent is None else percent, dynamic, preset, axial, facet,
+                                        crease, damping, gravity, steps, all_frames)
+        for name, given in (("--dynamic", dynamic), ("--preset", preset != "origami-simulator"),
+                            ("--axial", axial is not None), ("--facet", facet is not None),
+                            ("--crease", crease is not None), ("--damping", damping is not None),
+                            ("--gravity", gravity != 0.0), ("--steps", steps != 1000000), ("--all-frames", all_frames)):
+            if given:
+                raise _usage(f"{name} is an option of the compliant fold: add --compliant", name)
         if fix is None:
             fix_index, fix_default = self.center_face(), True
         else:
@@ -533,8 +573,6 @@ class Pattern:
             if not locks:
                 raise _usage("--lock auto: nothing to lock, the drive leaves no freedom", "--lock")
             modes = False
-        # A fourth mode, compliant folding (bar-and-hinge, SPEC item 19), goes here once the
-        # library has it.
         if not modes:
             if not drives:
                 raise _usage("missing --drive EDGE", "--drive")
@@ -582,6 +620,31 @@ class Pattern:
         if collisions:
             motion.collide(clearance)
         return motion
+
+    def _compliant_fold(self, fix, percent, dynamic, preset, axial, facet, crease, damping, gravity, steps,
+                        all_frames) -> "CompliantFold":
+        """Pattern.fold(compliant=True): the CLI's checks (cli/fold_compliant.c), then the solve."""
+        if not (0.0 <= percent <= 100.0):
+            raise _usage(f"--percent needs a number from 0 to 100, got '{percent:g}'", "--percent")
+        if preset not in ("origami-simulator", "physical"):
+            raise _usage(f"--preset is origami-simulator or physical, got '{preset}'", "--preset")
+        for name, value, zero_ok in (("--axial", axial, False), ("--facet", facet, True), ("--crease", crease, True),
+                                     ("--damping", damping, True)):
+            if value is not None and not (math.isfinite(value) and (value > 0 or (zero_ok and value == 0))):
+                raise _usage(f"{name} needs a number {'>= 0' if zero_ok else '> 0'}, got '{value:g}'", name)
+        if not math.isfinite(gravity):
+            raise _usage(f"--gravity needs a number, got '{gravity:g}'", "--gravity")
+        if int(steps) != steps or steps <= 0:
+            raise _usage(f"--steps needs a positive integer, got '{steps}'", "--steps")
+        if dynamic and all_frames:
+            raise _usage("--all-frames is for the static solver's load steps, not --dynamic", "--all-frames")
+        fix_index = -1 if fix is None else self.face(fix, "--fix")
+        d = _c.compliant_fold(self._p, percent / 100.0, bool(dynamic), fix_index, preset == "physical",
+                              None if axial is None else float(axial), None if facet is None else float(facet),
+                              None if crease is None else float(crease), None if damping is None else float(damping),
+                              float(gravity), int(steps), bool(all_frames))
+        d["percent"] = float(percent)
+        return CompliantFold(d, self)
 
     def state(self, angles=None, *, fix=None, frame: Optional[int] = None) -> "State":
         """A posed state: fold angles in degrees (closed exactly onto the loop-closure manifold
@@ -748,6 +811,67 @@ class State:
 
     def __repr__(self) -> str:
         return f"<orikin.State of {self.pattern.source}{': ' + self.label if self.label else ''}>"
+
+
+# --- the compliant fold --------------------------------------------------------------------------
+
+class CompliantFold(Report):
+    """A compliant (bar-and-hinge) fold (`orikin fold --compliant`; Pattern.fold(compliant=True)):
+    solver ('static' or 'explicit'), preset, percent, reached, reached_fraction, reason (why not,
+    or None), max_strain, energy, crease_error_deg, gradient_norm, load_scale, vertices, bars,
+    hinges, triangles, steps and time_step (explicit), newton_iterations, factorizations,
+    load_steps (static); arrays (copies): fold_angles (E, radians), strains (E, axial strain
+    (L - L0)/L0 per edge), face_energies (F, the strain energy of each face's bars and facet
+    hinges), face_strains (F, its largest |strain|), positions (V, 3), frame_fractions (F), frame_positions (F, V, 3),
+    frame_angles and frame_strains (F, E): one frame per load step with all_frames, else the
+    final state; contacts: faces passing through each other during the fold, [{faces: (a, b),
+    step, fraction}] (the CLI's warnings), contacts_truncated."""
+
+    __slots__ = ("pattern",)
+
+    def __init__(self, d: dict, pattern: "Pattern"):
+        super().__init__(d)
+        object.__setattr__(self, "pattern", pattern)
+
+    @property
+    def fold_angles_deg(self) -> np.ndarray:
+        """The fold angles in degrees (a copy)."""
+        return np.degrees(self._d["fold_angles"])
+
+    def info(self) -> dict:
+        """The CLI's --json object (without "file"): fold angles in degrees, arrays as lists."""
+        keys = ["model", "solver", "preset", "percent", "reached", "reached_fraction", "max_strain", "energy",
+                "crease_error_deg", "gradient_norm", "load_scale", "vertices", "bars", "hinges"]
+        keys += ["steps", "time_step"] if self.solver == "explicit" else ["newton_iterations", "load_steps"]
+        out = {k: ("compliant" if k == "model" else self._d[k]) for k in keys}
+        out["fold_angles_deg"] = self.fold_angles_deg.tolist()
+        out["strains"] = self.strains.tolist()
+        out["face_energies"] = self.face_energies.tolist()
+        out["face_strains"] = self.face_strains.tolist()
+        out["contacts"] = [{"faces": list(c["faces"]), "step": c["step"], "fraction": c["fraction"]} for c in self.contacts]
+        out["contacts_truncated"] = self.contacts_truncated
+        if not self.reached:
+            out["reason"] = self.reason
+        return out
+
+    def state(self, k: int = -1) -> "State":
+        """Frame k (default the final state) as a State (render, export, collide)."""
+        f = self._d["frame_fractions"]
+        k = k + len(f) if k < 0 else k
+        return State(self.pattern, self.frame_angles[k], self.frame_positions[k],
+                     label=f"compliant fold: {100 * f[k]:.6g} % of the way to the targets")
+
+    def render(self, path=None, **options):
+        """Draw the final state (see State.render)."""
+        return self.state().render(path, **options)
+
+    def export(self, path=None, *, format: Optional[str] = None, thickness: float = 0.0):
+        """A mesh of the final state (see State.export)."""
+        return self.state().export(path, format=format, thickness=thickness)
+
+    def __repr__(self) -> str:
+        return (f"<orikin.CompliantFold of {self.pattern.source}: {self.solver}, "
+                f"{'reached' if self.reached else 'stopped at'} {100 * self.reached_fraction:.6g} %>")
 
 
 # --- motions -------------------------------------------------------------------------------------

@@ -423,7 +423,8 @@ PyMODINIT_FUNC PyInit__orikin(void)
     if (!m) return NULL;
     PyMethodDef *tables[] = {module_functions,           ori_py_pattern_functions, ori_py_motion_functions,
                              ori_py_analysis_functions,  ori_py_state_functions,   ori_py_sequence_functions,
-                             ori_py_actuation_functions, ori_py_unfold_functions,  ori_py_design_functions};
+                             ori_py_actuation_functions, ori_py_unfold_functions,  ori_py_design_functions,
+                             ori_py_compliant_functions};
     for (size_t i = 0; i < sizeof tables / sizeof *tables; ++i)
         if (PyModule_AddFunctions(m, tables[i]) < 0) goto fail;
     for (size_t i = 0; i < sizeof types / sizeof *types; ++i) {

@@ -8,7 +8,8 @@
 // Files: module.c (module, exceptions, views, progress), pattern.c (Pattern), motion.c
 // (Mechanism, Motion and the folds), analysis.c (check, regularize, layers, dof), state.c
 // (render, export, collide, animate), sequence.c (Record), actuation.c (actuate, simulate),
-// unfold.c (unfold, develop, linkage), design.c (the design-search step).
+// unfold.c (unfold, develop, linkage), design.c (the design-search step), compliant.c (the
+// compliant bar-and-hinge fold).
 #ifndef ORI_PY_ORIKIN_H
 #define ORI_PY_ORIKIN_H
 
@@ -146,7 +147,7 @@ PyObject *ori_py_event_dict(const ori_collision_event *event, bool progress);
 // Module-level functions by file (each returns a PyMethodDef table ending with a NULL entry).
 extern PyMethodDef ori_py_pattern_functions[], ori_py_motion_functions[], ori_py_analysis_functions[],
     ori_py_state_functions[], ori_py_sequence_functions[], ori_py_actuation_functions[], ori_py_unfold_functions[],
-    ori_py_design_functions[];
+    ori_py_design_functions[], ori_py_compliant_functions[];
 
 // Pattern methods defined in other files (pattern.c lists them in the type).
 PyObject *ori_py_pattern_fold(PyObject *self, PyObject *args, PyObject *kw);

@@ -12,15 +12,15 @@ FOLD_OPTIONS = {
     "--fix": "fix", "--drive": "drive", "--to": "to", "--from": "from_", "--step": "step", "--lock": "lock",
     "--frame": "frame", "--solver": "solver", "--linear": "linear", "--no-collisions": "collisions",
     "--clearance": "clearance", "--percent": "percent", "--ratio": "ratio", "--symmetric": "symmetric",
+    # the compliant fold (docs/compliant.md)
+    "--compliant": "compliant", "--dynamic": "dynamic", "--preset": "preset", "--axial": "axial", "--facet": "facet",
+    "--crease": "crease", "--damping": "damping", "--gravity": "gravity", "--steps": "steps",
+    "--all-frames": "all_frames",
 }
 # Options of the CLI alone, which the docstring names with their Python counterpart.
 CLI_ONLY = {"--json": "--json", "-o": "-o OUT.fold", "--force": "--force", "--weld": "--weld",
             "--tolerance": "--tolerance", "--gaps": "--gaps", "--keep-collinear": "--keep-",
             "--keep-holes": "--keep-"}
-# `orikin fold --compliant` (issue 23, docs/compliant.md) has no Python binding yet: its options
-# are listed here until Pattern.fold (or a compliant call) takes them; remove them then.
-COMPLIANT_NOT_BOUND = {"--compliant", "--dynamic", "--preset", "--axial", "--facet", "--crease", "--damping",
-                       "--gravity", "--steps", "--all-frames"}
 
 
 def cli_options(command: str) -> set:
@@ -32,7 +32,7 @@ def test_fold_documents_every_option_of_the_cli():
     doc = inspect.getdoc(orikin.Pattern.fold)
     params = inspect.signature(orikin.Pattern.fold).parameters
     options = {o for o in cli_options("fold") if o.startswith("-")}
-    unknown = options - set(FOLD_OPTIONS) - set(CLI_ONLY) - COMPLIANT_NOT_BOUND
+    unknown = options - set(FOLD_OPTIONS) - set(CLI_ONLY)
     assert not unknown, f"orikin fold has options the binding does not know: {sorted(unknown)}"
     for opt, name in FOLD_OPTIONS.items():
         assert name in params, f"{opt}: Pattern.fold has no argument {name}"
@@ -41,7 +41,7 @@ def test_fold_documents_every_option_of_the_cli():
         assert words in doc, f"{opt}: the docstring does not say what becomes of it"
     # The paragraphs the CLI's help has: the branch, invalid folds, blocked, collisions.
     for phrase in ("loop-closure equations", "MV", "Frame A, Frame B", "self-collision", "+-180 deg",
-                   "percent of the way", "rank-revealing QR", "symmetries"):
+                   "percent of the way", "rank-revealing QR", "symmetries", "bar-and-hinge", "facet hinges"):
         assert phrase in doc, phrase
 
 

@@ -27,6 +27,10 @@
 // A sheet given in another plane than z = 0 is flat when no vertex is farther than this × the
 // pattern's diagonal from the faces' mean plane (single-precision exports: 1e-6).
 #define CMP_PLANE_REL 1e-6
+// Contact warnings kept (face pairs).
+#define CMP_MAX_CONTACTS 256
+// Explicit steps between contact checks.
+#define CMP_CONTACT_INTERVAL 1024
 
 ori_compliant_def ori_default_compliant_def(void)
 {
@@ -49,6 +53,7 @@ ori_compliant_def ori_default_compliant_def(void)
     d.max_step_rad = CMP_DEFAULT_STEP_RAD;
     d.max_iterations = CMP_DEFAULT_ITERATIONS;
     d.tolerance = CMP_DEFAULT_TOLERANCE;
+    d.check_contacts = true;
     d.keep_frames = false;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
@@ -73,6 +78,8 @@ static void free_frames(ori_compliant *c)
         ori__free(c->frames[k].x);
         ori__free(c->frames[k].angles);
         ori__free(c->frames[k].strains);
+        ori__free(c->frames[k].face_energy);
+        ori__free(c->frames[k].face_strain);
     }
     c->nframes = 0;
 }
@@ -85,6 +92,10 @@ void ori_compliant_destroy(ori_compliant *c)
     ori__free(c->bars);
     ori__free(c->hinges);
     ori__free(c->tris);
+    ori__free(c->tri_face);
+    ori__free(c->contacts);
+    ori_collider_destroy(c->collider);
+    ori_pattern_destroy(c->tri_pattern);
     ori__free(c->edge_bar);
     ori__free(c->edge_hinge);
     ori__free(c->mass);
@@ -122,6 +133,8 @@ typedef struct builder {
     int nlinks, cap_links;
     int *tris;
     int ntri, cap_tris; // ints (3 per triangle)
+    int *tri_face;
+    int ntf, cap_tf;    // the face of each triangle
 } builder;
 
 static int add_link(builder *bd, int a, int b, int edge)
@@ -197,6 +210,7 @@ static ori_status triangulate(builder *bd, const ori_pattern *p, int f, int *fv,
         ORI__PUSH(bd->tris, bd->ntri, bd->cap_tris, pv);
         ORI__PUSH(bd->tris, bd->ntri, bd->cap_tris, cv);
         ORI__PUSH(bd->tris, bd->ntri, bd->cap_tris, nv);
+        ORI__PUSH(bd->tri_face, bd->ntf, bd->cap_tf, f);
         int closing = n == 3 ? side[tn] : add_link(bd, pv, nv, -1);
         bool ok = attach(bd, side[tp], t, nv) && attach(bd, side[ear], t, pv) && attach(bd, closing, t, cv);
         if (!ok) {
@@ -213,6 +227,13 @@ static ori_status triangulate(builder *bd, const ori_pattern *p, int f, int *fv,
     }
     ori__free(side);
     return ORI_OK;
+}
+
+// The pattern faces beside a link (face[1] −1 when one, or when both triangles are of one face).
+static void link_faces(const ori_compliant *c, const link *l, int face[2])
+{
+    face[0] = c->tri_face[l->tri[0]];
+    face[1] = l->ntri == 2 && c->tri_face[l->tri[1]] != face[0] ? c->tri_face[l->tri[1]] : -1;
 }
 
 static bool finite_nonneg(double v) { return isfinite(v) && v >= 0.0; }
@@ -385,6 +406,7 @@ static bool sheet_plane(const ori_pattern *p, ori_m3 *rot)
 }
 
 static void store_frame(ori_compliant *c, bool replace_last);
+static void make_collider(ori_compliant *c, const builder *bd);
 
 ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *def, ori_compliant **out,
                                 ori_error *error)
@@ -454,12 +476,16 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     if (st) {
         ori__free(bd.links);
         ori__free(bd.tris);
+        ori__free(bd.tri_face);
         ori__free(target);
         ori_compliant_destroy(c);
         return st;
     }
     c->tris = bd.tris;
     c->ntri = bd.ntri / 3;
+    c->tri_face = bd.tri_face;
+    c->nf = nf;
+    if (def->check_contacts) make_collider(c, &bd);
 
     // mean edge length, triangle areas
     double lsum = 0.0;
@@ -500,7 +526,8 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
             st = ori__fail_at(error, ORI_ERR_DEGENERATE, "edges_vertices", l->edge, "edge %d has zero length", l->edge);
             break;
         }
-        cmp_bar bar = {l->a, l->b, l->edge, l0, 0.0, 0.0};
+        cmp_bar bar = {l->a, l->b, l->edge, l0, 0.0, 0.0, {-1, -1}};
+        link_faces(c, l, bar.face);
         if (phys) {
             double at = 0.0;
             for (int s = 0; s < l->ntri; ++s) at += tri_area[l->tri[s]];
@@ -528,6 +555,7 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
         h.edge = l->edge;
         h.crease = crease;
         h.ref = 0.0;
+        link_faces(c, l, h.face);
         h.target = crease && l->edge >= 0 ? target[l->edge] : 0.0;
         // the wing on the left of j → k is i
         double s0 = cross2(c->x + 3 * h.j, c->x + 3 * h.k, c->x + 3 * l->opp[0]);
@@ -677,6 +705,8 @@ static void store_frame(ori_compliant *c, bool replace_last)
         ori__free(c->frames[c->nframes].x);
         ori__free(c->frames[c->nframes].angles);
         ori__free(c->frames[c->nframes].strains);
+        ori__free(c->frames[c->nframes].face_energy);
+        ori__free(c->frames[c->nframes].face_strain);
     }
     ORI__RESERVE(c->frames, c->cap_frames, c->nframes + 1);
     cmp_frame *f = &c->frames[c->nframes++];
@@ -689,6 +719,70 @@ static void store_frame(ori_compliant *c, bool replace_last)
         f->angles[e] = edge_angle(c, c->x, e);
         f->strains[e] = c->edge_bar[e] >= 0 ? bar_strain(&c->bars[c->edge_bar[e]], c->x) : 0.0;
     }
+    f->face_energy = ori__alloc(sizeof(double) * (size_t)(c->nf > 0 ? c->nf : 1));
+    f->face_strain = ori__alloc(sizeof(double) * (size_t)(c->nf > 0 ? c->nf : 1));
+    ori__cmp_face_strain(c, c->x, f->face_energy, f->face_strain);
+}
+
+// --- contact warnings -----------------------------------------------------------------------
+
+// The triangles of the model as a pattern of their own and its collider (the faces deform, so
+// the pattern's own faces are no longer planar). Without one (a build refusing it) there are
+// no contact checks.
+static void make_collider(ori_compliant *c, const builder *bd)
+{
+    ori_pattern_def pd = ori_default_pattern_def();
+    ori_pattern *tp = ori_pattern_create(&pd);
+    for (int v = 0; v < c->nv; ++v) ori_pattern_add_vertex(tp, (ori_v3){c->x[3 * v], c->x[3 * v + 1], 0.0});
+    for (int k = 0; k < bd->nlinks; ++k)
+        if (bd->links[k].ntri > 0)
+            ori_pattern_add_edge(tp, bd->links[k].a, bd->links[k].b, bd->links[k].ntri == 2 ? ORI_ASSIGN_FLAT : ORI_ASSIGN_BOUNDARY, 0.0);
+    for (int t = 0; t < c->ntri; ++t) ori_pattern_add_face(tp, c->tris + 3 * t, 3);
+    ori_build_def bdef = ori_default_build_def();
+    bdef.check_planarity = false;
+    bdef.compute_faces = false;
+    ori_collider_def cd = ori_default_collider_def();
+    cd.pattern = tp;
+    if (ori_pattern_build(tp, &bdef, NULL) != ORI_OK || ori_pattern_face_count(tp) != c->ntri ||
+        ori_collider_create(&cd, &c->collider, NULL) != ORI_OK) {
+        ori_pattern_destroy(tp);
+        c->collider = NULL;
+        return;
+    }
+    c->tri_pattern = tp;
+}
+
+// Check the current state for faces passing through each other: each pair of pattern faces is
+// recorded once, with the first step it was seen at (at most CMP_MAX_CONTACTS pairs).
+static void check_contacts(ori_compliant *c, int step, double fraction)
+{
+    if (!c->collider || !c->def.check_contacts) return;
+    ori_v3 *x = ori__alloc(sizeof(ori_v3) * (size_t)(c->nv > 0 ? c->nv : 1));
+    for (int v = 0; v < c->nv; ++v) x[v] = (ori_v3){c->x[3 * v], c->x[3 * v + 1], c->x[3 * v + 2]};
+    ori_collision_result r;
+    if (ori_collider_check(c->collider, x, &r, NULL) == ORI_OK && r.penetrating > 0) {
+        for (int k = 0; k < r.contact_count; ++k) {
+            ori_contact ct = ori_collider_contact(c->collider, k);
+            if (ct.kind != ORI_CONTACT_PENETRATING) continue;
+            int fa = c->tri_face[ct.face_a], fb = c->tri_face[ct.face_b];
+            if (fa == fb) continue;
+            if (fa > fb) {
+                int t = fa;
+                fa = fb;
+                fb = t;
+            }
+            bool seen = false;
+            for (int q = 0; q < c->ncontacts && !seen; ++q) seen = c->contacts[q].face_a == fa && c->contacts[q].face_b == fb;
+            if (seen) continue;
+            if (c->ncontacts >= CMP_MAX_CONTACTS) {
+                c->contacts_truncated = true;
+                break;
+            }
+            cmp_contact cc = {fa, fb, step, fraction};
+            ORI__PUSH(c->contacts, c->ncontacts, c->cap_contacts, cc);
+        }
+    }
+    ori__free(x);
 }
 
 static void accept_angles(ori_compliant *c)
@@ -733,6 +827,7 @@ static int relax(ori_compliant *c, double frac, int max_steps, double ftol, doub
             *diverged = true;
             return k + 1;
         }
+        if (k % CMP_CONTACT_INTERVAL == CMP_CONTACT_INTERVAL - 1) check_contacts(c, k + 1, frac);
         if ((k & 15) == 15) {
             accept_angles(c);
             ori__cmp_energy(c, c->x, frac, F);
@@ -879,6 +974,7 @@ ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
             t = tn;
             c->fraction = f;
             store_frame(c, !c->def.keep_frames);
+            check_contacts(c, c->load_steps, f);
             dt = fmin(dt0, dt * 1.5);
             continue;
         }
@@ -972,7 +1068,47 @@ void ori_compliant_stats(const ori_compliant *c, int *iterations, int *factoriza
     if (load_steps) *load_steps = c->load_steps;
 }
 
+int ori_compliant_face_count(const ori_compliant *c) { return c->nf; }
+
+double ori_compliant_face_energy(const ori_compliant *c, int face)
+{
+    ORI_ASSERT(face >= 0 && face < c->nf);
+    return c->frames[c->nframes - 1].face_energy[face];
+}
+
+double ori_compliant_face_strain(const ori_compliant *c, int face)
+{
+    ORI_ASSERT(face >= 0 && face < c->nf);
+    return c->frames[c->nframes - 1].face_strain[face];
+}
+
+int ori_compliant_contact_count(const ori_compliant *c) { return c->ncontacts; }
+
+bool ori_compliant_contacts_truncated(const ori_compliant *c) { return c->contacts_truncated; }
+
+void ori_compliant_contact(const ori_compliant *c, int k, int *face_a, int *face_b, int *step, double *fraction)
+{
+    ORI_ASSERT(k >= 0 && k < c->ncontacts);
+    const cmp_contact *ct = &c->contacts[k];
+    if (face_a) *face_a = ct->face_a;
+    if (face_b) *face_b = ct->face_b;
+    if (step) *step = ct->step;
+    if (fraction) *fraction = ct->fraction;
+}
+
 int ori_compliant_frame_count(const ori_compliant *c) { return c->nframes; }
+
+const double *ori_compliant_frame_face_energies(const ori_compliant *c, int k)
+{
+    ORI_ASSERT(k >= 0 && k < c->nframes);
+    return c->frames[k].face_energy;
+}
+
+const double *ori_compliant_frame_face_strains(const ori_compliant *c, int k)
+{
+    ORI_ASSERT(k >= 0 && k < c->nframes);
+    return c->frames[k].face_strain;
+}
 
 double ori_compliant_frame_fraction(const ori_compliant *c, int k)
 {
@@ -1014,6 +1150,7 @@ ori_status ori_compliant_run_dynamic(ori_compliant *c, int max_steps, double for
     if (steps) *steps = k;
     c->fraction = c->def.fraction;
     store_frame(c, !c->def.keep_frames);
+    if (!diverged) check_contacts(c, k, c->fraction);
     if (diverged) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver diverged at step %d", k);
     if (!settled) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver did not settle in %d steps", max_steps);
     return ORI_OK;

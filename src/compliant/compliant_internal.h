@@ -4,6 +4,7 @@
 #ifndef ORI_COMPLIANT_INTERNAL_H
 #define ORI_COMPLIANT_INTERNAL_H
 
+#include <orikin/collision.h>
 #include <orikin/compliant.h>
 
 #include "../core/core_internal.h"
@@ -14,6 +15,7 @@ typedef struct cmp_bar {
     int edge;    // pattern edge, or -1 for a diagonal
     double l0, k;
     double c;    // damping coefficient of the explicit solver
+    int face[2]; // the pattern faces of its triangles (face[1] −1 when one, or when both are face[0])
 } cmp_bar;
 
 typedef struct cmp_hinge {
@@ -24,13 +26,21 @@ typedef struct cmp_hinge {
     double k_h;  // stiffness (torque per radian)
     double target; // rest angle at fraction 1 (radians)
     double ref;  // last accepted fold angle: the unwrapping reference
+    int face[2]; // the pattern faces of its two triangles (face[1] −1 when both are face[0])
 } cmp_hinge;
 
 typedef struct cmp_frame {
     double fraction;
     ori_v3 *x;
     double *angles, *strains;
+    double *face_energy, *face_strain; // per pattern face
 } cmp_frame;
+
+// A contact warning: two faces passing through each other at a load step (or explicit step).
+typedef struct cmp_contact {
+    int face_a, face_b, step;
+    double fraction;
+} cmp_contact;
 
 // Optional trace of the static solver's accepted energies (tests): called per accepted step
 // with the energy before and after it.
@@ -38,11 +48,12 @@ typedef void ori__cmp_trace_fn(double before, double after, void *user);
 
 struct ori_compliant {
     ori_compliant_def def;
-    int nv, ne;
+    int nv, ne, nf;
     int nbar, nhinge, ntri;
     cmp_bar *bars;
     cmp_hinge *hinges;
     int *tris;      // 3 per triangle
+    int *tri_face;  // triangle → pattern face
     int *edge_bar;  // pattern edge → bar
     int *edge_hinge; // pattern edge → hinge or -1
     double *mass;   // per vertex
@@ -65,6 +76,13 @@ struct ori_compliant {
     void *trace_user;
     cmp_frame *frames;
     int nframes, cap_frames;
+    // contact checks of the deformed sheet: the triangles as a pattern and its collider
+    ori_pattern *tri_pattern;
+    ori_collider *collider;
+    cmp_contact *contacts;
+    int ncontacts, cap_contacts;
+    bool contacts_truncated;
+    int check_step; // the step number the next check is recorded with
 };
 
 // Fold angle ρ of a hinge (radians, + valley) from positions x (3 per vertex), unwrapped about ref.
@@ -82,6 +100,10 @@ double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction,
 void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction, bool psd);
 // |g|∞ over the free dofs.
 double ori__cmp_grad_norm(const ori_compliant *c, const double *grad);
+// Strain energy (bars and facet hinges) and largest |bar strain| per pattern face at x (nf each):
+// a bar or facet hinge between two faces gives each half its energy. Crease hinges and gravity
+// are not a panel's strain.
+void ori__cmp_face_strain(const ori_compliant *c, const double *x, double *energy, double *strain);
 void ori__cmp_set_trace(ori_compliant *c, ori__cmp_trace_fn *fn, void *user);
 
 #endif

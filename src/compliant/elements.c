@@ -161,6 +161,31 @@ double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction,
     return e;
 }
 
+void ori__cmp_face_strain(const ori_compliant *c, const double *x, double *energy, double *strain)
+{
+    for (int f = 0; f < c->nf; ++f) energy[f] = strain[f] = 0.0;
+    for (int b = 0; b < c->nbar; ++b) {
+        const cmp_bar *bar = &c->bars[b];
+        const double *xa = x + 3 * bar->a, *xb = x + 3 * bar->b;
+        double d[3] = {xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]};
+        double s = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - bar->l0;
+        double e = 0.5 * bar->k * s * s, eps = fabs(s) / bar->l0;
+        int n = bar->face[1] >= 0 ? 2 : 1;
+        for (int q = 0; q < n; ++q) {
+            energy[bar->face[q]] += e / n;
+            strain[bar->face[q]] = fmax(strain[bar->face[q]], eps);
+        }
+    }
+    for (int hh = 0; hh < c->nhinge; ++hh) {
+        const cmp_hinge *h = &c->hinges[hh];
+        if (h->crease) continue;
+        double d = ori__cmp_hinge_angle(x, h, h->ref);
+        double e = 0.5 * h->k_h * d * d;
+        int n = h->face[1] >= 0 ? 2 : 1;
+        for (int q = 0; q < n; ++q) energy[h->face[q]] += e / n;
+    }
+}
+
 double ori__cmp_grad_norm(const ori_compliant *c, const double *grad)
 {
     double n = 0.0;
