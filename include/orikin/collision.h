@@ -11,7 +11,7 @@
 /// ori_collider_check, ori_collider_contact_count, ori_collider_contact,
 /// ori_default_cloud_def, ori_collider_cloud, ori_collider_cloud_pair_count,
 /// ori_collider_cloud_pair, ori_default_collision_motion_def, ori_collision_check_motion,
-/// ori_collision_check_record, ori_collision_check_multifold.
+/// ori_collision_check_record, ori_collision_check_multifold, ori_collision_check_trajectory.
 ///
 /// Semantics. Faces that share a vertex (FOLD index), and so faces that share a crease, meet
 /// there by construction: that is never a contact. They are still checked away from the shared
@@ -28,6 +28,7 @@
 #include "math.h"
 #include "pattern.h"
 #include "sequence.h"
+#include "trajectory.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -201,6 +202,13 @@ ORI_API ori_status ori_collision_check_multifold(ori_collider *collider, const o
                                                  const int *locked_edges, int locked_count,
                                                  const ori_collision_motion_def *check, ori_collision_event *out,
                                                  ori_error *error);
+/// Check any motion result through its trajectory view (trajectory.h): a fold as
+/// ori_collision_check_motion, a multifold as ori_collision_check_multifold, a sequence as
+/// ori_collision_check_record (the three are this function on ori_trajectory_of_*). The view and
+/// what it points at are borrowed.
+ORI_API ori_status ori_collision_check_trajectory(ori_collider *collider, const ori_trajectory *trajectory,
+                                                  const ori_collision_motion_def *check, ori_collision_event *out,
+                                                  ori_error *error);
 
 #ifdef __cplusplus
 }

@@ -23,6 +23,7 @@
 #include "render.h"
 #include "sequence.h"
 #include "tolerance.h"
+#include "trajectory.h"
 #include "unfold.h"
 
 #endif

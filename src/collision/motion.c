@@ -8,10 +8,9 @@
 // a pair whose sides do not decide it and that is nearer at both ends than the two faces can
 // travel is checked again in half steps. The first colliding step is then bisected on the
 // drive: trial states are solved through the public API (ori_motion_solve from the last clean
-// state, or ori_record_at), clean midpoints advance A and its remembered orders, colliding ones
+// state, or ori_trajectory_at), clean midpoints advance A and its remembered orders, colliding ones
 // become B, until B − A is below the drive tolerance.
 #include "../core/hash.h"
-#include "../kinematics/multifold_internal.h" // ori__mf_close: states between a multifold's frames
 #include "collision_internal.h"
 
 ori_collision_motion_def ori_default_collision_motion_def(void)
@@ -787,15 +786,7 @@ static ori_status walk_step(col_step *s, const col_source *src, col_prepare_fn *
     return ORI_OK;
 }
 
-// --- frames of a motion or a record ------------------------------------------------------------
-
-typedef struct frames {
-    int count;
-    void (*vertices)(const void *src, int k, ori_v3 *pos);
-    double (*drive)(const void *src, int k);
-    double (*param)(const void *src, int k); // the bisection parameter of frame k
-    const void *src;
-} frames;
+// --- the frames of a trajectory ----------------------------------------------------------------
 
 typedef struct run_out {
     bool collides;
@@ -805,21 +796,107 @@ typedef struct run_out {
     int solved;
 } run_out;
 
-// Walk the frames step by step (walk_step); prepare_bisect(k) readies the source for states
-// between frames k − 1 and k and gives the drive's rate of change per unit of the parameter.
-static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collision_motion_def *check,
-                             col_prepare_fn *prepare_bisect,
-                             const col_source *src, run_out *out, ori_error *error)
+// The source of the trial states between the frames of a trajectory. A fold's (ori_motion) are
+// solved from the last clean state of the step (lo_angles, advanced by commit), one step of
+// ori_motion_solve each; a multifold's and a sequence's come from ori_trajectory_at (interpolated
+// and closed, or continued from the recorded state before them), which needs no clean state.
+typedef struct traj_src {
+    const ori_trajectory *t;
+    int edges;
+    double *lo_angles, *trial_angles; // a fold: the last clean state, and the last trial's angles
+    double *angles;                   // scratch for the others
+} traj_src;
+
+// Ready the source for states between frames k − 1 and k, and give the drive's rate of change per
+// unit of the parameter (a fold's parameter is its drive, a multifold's its progress, both 1).
+static ori_status traj_prepare(void *user, int k, double *per, ori_error *error)
+{
+    traj_src *ts = user;
+    const ori_trajectory *t = ts->t;
+    switch (t->kind) {
+    case ORI_TRAJECTORY_MOTION:
+        *per = 1.0;
+        memcpy(ts->lo_angles, ori_trajectory_frame_angles(t, k - 1), sizeof(double) * (size_t)ts->edges);
+        return ORI_OK;
+    case ORI_TRAJECTORY_MULTIFOLD:
+        *per = 1.0;
+        return ORI_OK;
+    case ORI_TRAJECTORY_RECORD:
+    default: {
+        // Within a fold the drive is linear in the time; frame k − 1 may end the previous fold
+        // (whose drive is another crease), so the rate comes from the state halfway through the step.
+        double t0 = ori_trajectory_frame_param(t, k - 1), t1 = ori_trajectory_frame_param(t, k);
+        *per = 0.0;
+        if (!(t1 > t0)) return ORI_OK;
+        double tm = 0.5 * (t0 + t1), dm;
+        ori_status st = ori_trajectory_at(t, tm, ts->angles, NULL, &dm, error);
+        if (st != ORI_OK) return st;
+        *per = fabs(ori_trajectory_frame_drive(t, k) - dm) / (t1 - tm);
+        return ORI_OK;
+    }
+    }
+}
+
+static ori_status traj_solve(void *user, double x, ori_v3 *pos, double *drive, ori_error *error)
+{
+    traj_src *ts = user;
+    const ori_trajectory *t = ts->t;
+    if (t->kind != ORI_TRAJECTORY_MOTION) return ori_trajectory_at(t, x, ts->angles, pos, drive, error);
+    ori_motion_def d = *t->def;
+    d.progress = NULL; // the fold's own progress: not for the trial states
+    d.progress_user = NULL;
+    double from = ts->lo_angles[d.driven_edge];
+    d.start_angles_rad = ts->lo_angles;
+    d.has_from = false;
+    d.to_rad = x;
+    d.step_rad = fabs(x - from);
+    *drive = x;
+    if (!(d.step_rad > 0.0)) {
+        memcpy(ts->trial_angles, ts->lo_angles, sizeof(double) * (size_t)ts->edges);
+        ori_mechanism_vertex_positions(t->mechanism, ts->lo_angles, d.fixed_face, d.fixed_pose, pos);
+        return ORI_OK;
+    }
+    ori_motion *mo = NULL;
+    ori_status st = ori_motion_solve(t->mechanism, &d, &mo, error);
+    if (st != ORI_OK) return st;
+    int nf = ori_motion_frame_count(mo);
+    if (nf == 0 || ori_motion_frame_drive(mo, nf - 1) != x) {
+        ori_motion_destroy(mo);
+        return ori__fail_at(error, ORI_ERR_NOT_CONVERGED, "edges_vertices", d.driven_edge,
+                            "the state at drive %.9g rad between two steps could not be solved", x);
+    }
+    memcpy(ts->trial_angles, ori_motion_frame_angles(mo, nf - 1), sizeof(double) * (size_t)ts->edges);
+    ori_motion_frame_vertices(mo, nf - 1, pos);
+    ori_motion_destroy(mo);
+    return ORI_OK;
+}
+
+static void traj_commit(void *user)
+{
+    traj_src *ts = user;
+    if (ts->t->kind == ORI_TRAJECTORY_MOTION)
+        memcpy(ts->lo_angles, ts->trial_angles, sizeof(double) * (size_t)ts->edges);
+}
+
+// Walk the frames step by step (walk_step), trial states between them from traj_solve.
+static ori_status run_frames(ori_collider *c, const ori_trajectory *t, const ori_collision_motion_def *check,
+                             run_out *out, ori_error *error)
 {
     memset(out, 0, sizeof *out);
+    int count = ori_trajectory_frame_count(t);
+    traj_src ts = {t, ori_trajectory_edge_count(t), NULL, NULL, NULL};
+    ts.lo_angles = ori__alloc(sizeof(double) * (size_t)(ts.edges + 1));
+    ts.trial_angles = ori__alloc(sizeof(double) * (size_t)(ts.edges + 1));
+    ts.angles = ori__alloc(sizeof(double) * (size_t)(ts.edges + 1));
+    col_source src = {traj_solve, traj_commit, &ts};
     int V = c->vertex_count;
     size_t bytes = sizeof(ori_v3) * (size_t)(V + 1);
     ori_v3 *pa = ori__alloc(bytes), *pb = ori__alloc(bytes), *pt = ori__alloc(bytes);
     col_step s;
     step_init(&s, c);
     ori_status st = ORI_OK;
-    if (fr->count > 0) {
-        fr->vertices(fr->src, 0, pa);
+    if (count > 0) {
+        ori_trajectory_frame_vertices(t, 0, pa);
         st = col_state_prepare(c, pa, error);
         ori_collision_result r;
         if (st == ORI_OK) {
@@ -829,22 +906,23 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
             if (r.collides) {
                 out->collides = true;
                 out->frame = 0;
-                out->x = fr->param(fr->src, 0);
-                out->drive = fr->drive(fr->src, 0);
+                out->x = ori_trajectory_frame_param(t, 0);
+                out->drive = ori_trajectory_frame_drive(t, 0);
                 out->contact = first_colliding(c);
             }
         }
     }
     ori_v3 *ph = ori__alloc(bytes);
-    for (int k = 1; st == ORI_OK && !out->collides && k < fr->count; ++k) {
-        if (check->progress && !check->progress((double)(k - 1) / (double)(fr->count - 1), check->progress_user)) {
+    for (int k = 1; st == ORI_OK && !out->collides && k < count; ++k) {
+        if (check->progress && !check->progress((double)(k - 1) / (double)(count - 1), check->progress_user)) {
             st = ori__fail(error, ORI_ERR_LIMIT, "cancelled");
             break;
         }
-        fr->vertices(fr->src, k, pb);
-        double x0 = fr->param(fr->src, k - 1), x1 = fr->param(fr->src, k), d1 = fr->drive(fr->src, k);
+        ori_trajectory_frame_vertices(t, k, pb);
+        double x0 = ori_trajectory_frame_param(t, k - 1), x1 = ori_trajectory_frame_param(t, k);
+        double d1 = ori_trajectory_frame_drive(t, k);
         walk_out wo;
-        st = walk_step(&s, src, prepare_bisect, k, &pa, &pt, &ph, pb, x0, x1, d1, check->drive_tol_rad,
+        st = walk_step(&s, &src, traj_prepare, k, &pa, &pt, &ph, pb, x0, x1, d1, check->drive_tol_rad,
                        ORI_TOL_SWEEP_SPLIT_RAD, &wo, error);
         if (st != ORI_OK) break;
         out->solved += wo.solved;
@@ -862,254 +940,75 @@ static ori_status run_frames(ori_collider *c, const frames *fr, const ori_collis
     ori__free(pa);
     ori__free(pb);
     ori__free(pt);
+    ori__free(ts.lo_angles);
+    ori__free(ts.trial_angles);
+    ori__free(ts.angles);
     return st;
 }
 
-// --- a fold (ori_motion) ---------------------------------------------------------------------
-
-typedef struct motion_src {
-    const ori_mechanism *m;
-    const ori_motion_def *def;
-    const ori_motion *mo;
-    int edges;
-    double *lo_angles, *trial_angles;
-} motion_src;
-
-static void motion_vertices(const void *src, int k, ori_v3 *pos)
+ori_status ori_collision_check_trajectory(ori_collider *c, const ori_trajectory *t, const ori_collision_motion_def *check,
+                                          ori_collision_event *out, ori_error *error)
 {
-    ori_motion_frame_vertices(((const motion_src *)src)->mo, k, pos);
-}
-
-static double motion_drive(const void *src, int k) { return ori_motion_frame_drive(((const motion_src *)src)->mo, k); }
-
-static ori_status motion_prepare(void *user, int k, double *per, ori_error *error)
-{
-    motion_src *ms = user;
-    (void)error;
-    *per = 1.0; // the parameter is the drive
-    memcpy(ms->lo_angles, ori_motion_frame_angles(ms->mo, k - 1), sizeof(double) * (size_t)ms->edges);
-    return ORI_OK;
-}
-
-static ori_status motion_solve(void *user, double x, ori_v3 *pos, double *drive, ori_error *error)
-{
-    motion_src *ms = user;
-    ori_motion_def d = *ms->def;
-    d.progress = NULL; // the fold's own progress: not for the trial states
-    d.progress_user = NULL;
-    double from = ms->lo_angles[d.driven_edge];
-    d.start_angles_rad = ms->lo_angles;
-    d.has_from = false;
-    d.to_rad = x;
-    d.step_rad = fabs(x - from);
-    *drive = x;
-    if (!(d.step_rad > 0.0)) {
-        memcpy(ms->trial_angles, ms->lo_angles, sizeof(double) * (size_t)ms->edges);
-        ori_mechanism_vertex_positions(ms->m, ms->lo_angles, d.fixed_face, d.fixed_pose, pos);
-        return ORI_OK;
+    ORI_ASSERT(c && t && check && out && check->internal_value == ORI__DEF_COOKIE);
+    ORI_ASSERT(ori_trajectory_vertex_count(t) == c->vertex_count);
+    ORI_ASSERT(t->kind == ORI_TRAJECTORY_RECORD || ori_mechanism_face_count(t->mechanism) == c->face_count);
+    ori_error_clear(error);
+    memset(out, 0, sizeof *out);
+    if (!(check->drive_tol_rad > 0.0))
+        return ori__fail(error, ORI_ERR_RANGE, "the drive tolerance must be positive, got %g", check->drive_tol_rad);
+    run_out ro;
+    ori_status st = run_frames(c, t, check, &ro, error);
+    if (st != ORI_OK || !ro.collides) return st;
+    out->collides = true;
+    out->frame = out->step = ro.frame;
+    out->fold = 0;
+    out->drive_rad = ro.drive;
+    out->contact = ro.contact;
+    out->states_solved = ro.solved;
+    switch (t->kind) {
+    case ORI_TRAJECTORY_MOTION: {
+        double d0 = ro.frame > 0 ? ori_trajectory_frame_drive(t, ro.frame - 1) : ro.drive;
+        double d1 = ori_trajectory_frame_drive(t, ro.frame);
+        out->time = ro.frame == 0 ? 0.0 : (double)(ro.frame - 1) + (d1 != d0 ? (ro.drive - d0) / (d1 - d0) : 1.0);
+        break;
     }
-    ori_motion *mo = NULL;
-    ori_status st = ori_motion_solve(ms->m, &d, &mo, error);
-    if (st != ORI_OK) return st;
-    int nf = ori_motion_frame_count(mo);
-    if (nf == 0 || ori_motion_frame_drive(mo, nf - 1) != x) {
-        ori_motion_destroy(mo);
-        return ori__fail_at(error, ORI_ERR_NOT_CONVERGED, "edges_vertices", d.driven_edge,
-                            "the state at drive %.9g rad between two steps could not be solved", x);
+    case ORI_TRAJECTORY_MULTIFOLD: out->time = ro.drive; break;
+    case ORI_TRAJECTORY_RECORD:
+    default: {
+        out->fold = ori_trajectory_frame_fold(t, ro.frame);
+        // step within the fold: frames of this fold counted from its first output step
+        int first = ro.frame;
+        while (first > 1 && ori_trajectory_frame_fold(t, first - 1) == out->fold) first--;
+        out->step = ro.frame == 0 ? 0 : ro.frame - first + 1;
+        out->time = ro.x;
+        break;
     }
-    memcpy(ms->trial_angles, ori_motion_frame_angles(mo, nf - 1), sizeof(double) * (size_t)ms->edges);
-    ori_motion_frame_vertices(mo, nf - 1, pos);
-    ori_motion_destroy(mo);
+    }
     return ORI_OK;
-}
-
-static void motion_commit(void *user)
-{
-    motion_src *ms = user;
-    memcpy(ms->lo_angles, ms->trial_angles, sizeof(double) * (size_t)ms->edges);
 }
 
 ori_status ori_collision_check_motion(ori_collider *c, const ori_mechanism *m, const ori_motion_def *def,
                                       const ori_motion *motion, const ori_collision_motion_def *check,
                                       ori_collision_event *out, ori_error *error)
 {
-    ORI_ASSERT(c && m && def && motion && check && out && check->internal_value == ORI__DEF_COOKIE);
-    ORI_ASSERT(ori_mechanism_vertex_count(m) == c->vertex_count && ori_mechanism_face_count(m) == c->face_count);
-    ori_error_clear(error);
-    memset(out, 0, sizeof *out);
-    if (!(check->drive_tol_rad > 0.0))
-        return ori__fail(error, ORI_ERR_RANGE, "the drive tolerance must be positive, got %g", check->drive_tol_rad);
-    motion_src ms = {m, def, motion, ori_mechanism_edge_count(m), NULL, NULL};
-    ms.lo_angles = ori__alloc(sizeof(double) * (size_t)(ms.edges + 1));
-    ms.trial_angles = ori__alloc(sizeof(double) * (size_t)(ms.edges + 1));
-    frames fr = {ori_motion_frame_count(motion), motion_vertices, motion_drive, motion_drive, &ms};
-    col_source src = {motion_solve, motion_commit, &ms};
-    run_out ro;
-    ori_status st = run_frames(c, &fr, check, motion_prepare, &src, &ro, error);
-    ori__free(ms.lo_angles);
-    ori__free(ms.trial_angles);
-    if (st != ORI_OK) return st;
-    if (ro.collides) {
-        out->collides = true;
-        out->frame = out->step = ro.frame;
-        out->fold = 0;
-        out->drive_rad = ro.drive;
-        double d0 = ro.frame > 0 ? ori_motion_frame_drive(motion, ro.frame - 1) : ro.drive;
-        double d1 = ori_motion_frame_drive(motion, ro.frame);
-        out->time = ro.frame == 0 ? 0.0 : (double)(ro.frame - 1) + (d1 != d0 ? (ro.drive - d0) / (d1 - d0) : 1.0);
-        out->contact = ro.contact;
-        out->states_solved = ro.solved;
-    }
-    return ORI_OK;
+    ORI_ASSERT(c && m && def && motion);
+    ori_trajectory t = ori_trajectory_of_motion(m, def, motion);
+    return ori_collision_check_trajectory(c, &t, check, out, error);
 }
-
-// --- a sequence (ori_record) -----------------------------------------------------------------
-
-typedef struct record_src {
-    const ori_record *r;
-    int edges, vertices;
-    double *angles;
-} record_src;
-
-static void record_vertices(const void *src, int k, ori_v3 *pos)
-{
-    const record_src *rs = src;
-    memcpy(pos, ori_record_frame_vertices(rs->r, k), sizeof(ori_v3) * (size_t)rs->vertices);
-}
-
-static double record_drive(const void *src, int k) { return ori_record_frame_drive(((const record_src *)src)->r, k); }
-static double record_time(const void *src, int k) { return ori_record_frame_time(((const record_src *)src)->r, k); }
-// Within a fold the drive is linear in the time; frame k − 1 may end the previous fold (whose
-// drive is another crease), so the rate comes from the state halfway through the step.
-static ori_status record_prepare(void *user, int k, double *per, ori_error *error)
-{
-    record_src *rs = user;
-    double t0 = ori_record_frame_time(rs->r, k - 1), t1 = ori_record_frame_time(rs->r, k);
-    *per = 0.0;
-    if (!(t1 > t0)) return ORI_OK;
-    double tm = 0.5 * (t0 + t1), dm;
-    ori_status st = ori_record_at(rs->r, tm, rs->angles, NULL, &dm, NULL, NULL, error);
-    if (st != ORI_OK) return st;
-    *per = fabs(ori_record_frame_drive(rs->r, k) - dm) / (t1 - tm);
-    return ORI_OK;
-}
-
-static ori_status record_solve(void *user, double t, ori_v3 *pos, double *drive, ori_error *error)
-{
-    record_src *rs = user;
-    return ori_record_at(rs->r, t, rs->angles, pos, drive, NULL, NULL, error);
-}
-
-static void record_commit(void *user) { (void)user; }
 
 ori_status ori_collision_check_record(ori_collider *c, const ori_record *record, const ori_collision_motion_def *check,
                                       ori_collision_event *out, ori_error *error)
 {
-    ORI_ASSERT(c && record && check && out && check->internal_value == ORI__DEF_COOKIE);
-    ori_error_clear(error);
-    memset(out, 0, sizeof *out);
-    if (!(check->drive_tol_rad > 0.0))
-        return ori__fail(error, ORI_ERR_RANGE, "the drive tolerance must be positive, got %g", check->drive_tol_rad);
-    record_src rs = {record, c->edge_count, c->vertex_count, NULL};
-    rs.angles = ori__alloc(sizeof(double) * (size_t)(rs.edges + 1));
-    frames fr = {ori_record_frame_count(record), record_vertices, record_drive, record_time, &rs};
-    col_source src = {record_solve, record_commit, &rs};
-    run_out ro;
-    ori_status st = run_frames(c, &fr, check, record_prepare, &src, &ro, error);
-    ori__free(rs.angles);
-    if (st != ORI_OK) return st;
-    if (ro.collides) {
-        out->collides = true;
-        out->frame = ro.frame;
-        out->fold = ori_record_frame_fold(record, ro.frame);
-        // step within the fold: frames of this fold counted from its first output step
-        int first = ro.frame;
-        while (first > 1 && ori_record_frame_fold(record, first - 1) == out->fold) first--;
-        out->step = ro.frame == 0 ? 0 : ro.frame - first + 1;
-        out->drive_rad = ro.drive;
-        out->time = ro.x;
-        out->contact = ro.contact;
-        out->states_solved = ro.solved;
-    }
-    return ORI_OK;
+    ORI_ASSERT(c && record);
+    ori_trajectory t = ori_trajectory_of_record(record);
+    return ori_collision_check_trajectory(c, &t, check, out, error);
 }
-
-// --- a fold with several degrees of freedom (ori_multifold) ------------------------------------
-
-// The parameter and the "drive" are the frame progress (0 … 1); a state between two frames is
-// their angles interpolated linearly in the progress, closed onto the loop-closure manifold with
-// the locked creases held (minimum-norm Newton, as ori_record_at restores a percent step).
-typedef struct multifold_src {
-    const ori_multifold *mf;
-    const int *locked;
-    int locked_count, edges;
-    int k; // the step being bisected: frames k − 1 … k
-    double *angles;
-} multifold_src;
-
-static void multifold_vertices(const void *src, int k, ori_v3 *pos)
-{
-    ori_multifold_frame_vertices(((const multifold_src *)src)->mf, k, pos);
-}
-
-static double multifold_progress(const void *src, int k)
-{
-    return ori_multifold_frame_progress(((const multifold_src *)src)->mf, k);
-}
-
-static ori_status multifold_prepare(void *user, int k, double *per, ori_error *error)
-{
-    multifold_src *ms = user;
-    (void)error;
-    ms->k = k;
-    *per = 1.0; // the parameter is the progress
-    return ORI_OK;
-}
-
-static ori_status multifold_solve(void *user, double x, ori_v3 *pos, double *drive, ori_error *error)
-{
-    multifold_src *ms = user;
-    const ori_multifold *mf = ms->mf;
-    double x0 = ori_multifold_frame_progress(mf, ms->k - 1), x1 = ori_multifold_frame_progress(mf, ms->k);
-    double w = x1 != x0 ? (x - x0) / (x1 - x0) : 1.0;
-    const double *a0 = ori_multifold_frame_angles(mf, ms->k - 1), *a1 = ori_multifold_frame_angles(mf, ms->k);
-    for (int e = 0; e < ms->edges; ++e) ms->angles[e] = a0[e] + w * (a1[e] - a0[e]);
-    ori_status st = ori__mf_close(mf->m, ms->locked, ms->locked_count, ms->angles, error);
-    if (st != ORI_OK) return st;
-    ori_mechanism_vertex_positions(mf->m, ms->angles, mf->fixed_face, mf->fixed_pose, pos);
-    *drive = x;
-    return ORI_OK;
-}
-
-static void multifold_commit(void *user) { (void)user; }
 
 ori_status ori_collision_check_multifold(ori_collider *c, const ori_multifold *fold, const int *locked_edges,
                                          int locked_count, const ori_collision_motion_def *check,
                                          ori_collision_event *out, ori_error *error)
 {
-    ORI_ASSERT(c && fold && check && out && check->internal_value == ORI__DEF_COOKIE);
-    ORI_ASSERT(locked_count == 0 || locked_edges);
-    ORI_ASSERT(ori_mechanism_vertex_count(fold->m) == c->vertex_count && ori_mechanism_face_count(fold->m) == c->face_count);
-    ori_error_clear(error);
-    memset(out, 0, sizeof *out);
-    if (!(check->drive_tol_rad > 0.0))
-        return ori__fail(error, ORI_ERR_RANGE, "the drive tolerance must be positive, got %g", check->drive_tol_rad);
-    multifold_src ms = {fold, locked_edges, locked_count, fold->edge_count, 1, NULL};
-    ms.angles = ori__alloc(sizeof(double) * (size_t)(ms.edges + 1));
-    frames fr = {ori_multifold_frame_count(fold), multifold_vertices, multifold_progress, multifold_progress, &ms};
-    col_source src = {multifold_solve, multifold_commit, &ms};
-    run_out ro;
-    ori_status st = run_frames(c, &fr, check, multifold_prepare, &src, &ro, error);
-    ori__free(ms.angles);
-    if (st != ORI_OK) return st;
-    if (ro.collides) {
-        out->collides = true;
-        out->frame = out->step = ro.frame;
-        out->fold = 0;
-        out->drive_rad = ro.drive;
-        out->time = ro.drive;
-        out->contact = ro.contact;
-        out->states_solved = ro.solved;
-    }
-    return ORI_OK;
+    ORI_ASSERT(c && fold && (locked_count == 0 || locked_edges));
+    ori_trajectory t = ori_trajectory_of_multifold(fold, locked_edges, locked_count);
+    return ori_collision_check_trajectory(c, &t, check, out, error);
 }

@@ -11,6 +11,7 @@
 
 #include "../core/json_internal.h"
 #include "../kinematics/multifold_internal.h" // ori__mf_close: restoring a fold toward the targets
+#include "sequence_internal.h"
 
 // A fold's faces and creases named by a string ("fix": "Obj12" or "@x,y", "drive": "@x,y",
 // "lock": ["@x,y", …]) until ori_sequence_resolve turns them into indices. NULL: an index.
@@ -692,6 +693,12 @@ int ori_record_failed_fold(const ori_record *r) { ORI_ASSERT(r); return r->faile
 int ori_record_frame_count(const ori_record *r) { ORI_ASSERT(r); return r->frame_count; }
 int ori_record_partial_frames(const ori_record *r) { ORI_ASSERT(r); return r->partial_frames; }
 double ori_record_duration(const ori_record *r) { ORI_ASSERT(r); return (double)r->completed; }
+
+const ori_mechanism *ori__record_mechanism(const ori_record *r)
+{
+    ORI_ASSERT(r);
+    return r->mechanism;
+}
 
 double ori_record_frame_time(const ori_record *r, int i)
 {
