@@ -1,7 +1,6 @@
 // Mesh export of a posed state: the format dispatch, and the text formats OBJ, STL and PLY
 // (every coordinate in its shortest exact decimal form, so that a file reads back to the posed
 // vertex exactly). The surface itself is built by mesh_surface.c.
-#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -9,37 +8,13 @@
 
 // --- formats and defaults -------------------------------------------------------------------
 
-static bool ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    if (n < k) return false;
-    for (size_t i = 0; i < k; ++i)
-        if (tolower((unsigned char)s[n - k + i]) != suffix[i]) return false;
-    return true;
-}
-
 ori_mesh_format ori_mesh_format_from_path(const char *path)
 {
-    if (!path) return ORI_MESH_UNKNOWN;
-    if (ends_with(path, ".obj")) return ORI_MESH_OBJ;
-    if (ends_with(path, ".stl")) return ORI_MESH_STL;
-    if (ends_with(path, ".ply")) return ORI_MESH_PLY;
-    if (ends_with(path, ".gltf")) return ORI_MESH_GLTF;
-    if (ends_with(path, ".glb")) return ORI_MESH_GLB;
-    return ORI_MESH_UNKNOWN;
+    const ori_format_info *f = ori_format_find(path, ORI_FORMAT_KIND_MESH);
+    return f ? (ori_mesh_format)f->code : ORI_MESH_UNKNOWN;
 }
 
-const char *ori_mesh_format_name(ori_mesh_format f)
-{
-    switch (f) {
-    case ORI_MESH_OBJ: return "obj";
-    case ORI_MESH_STL: return "stl";
-    case ORI_MESH_PLY: return "ply";
-    case ORI_MESH_GLTF: return "gltf";
-    case ORI_MESH_GLB: return "glb";
-    default: return "unknown";
-    }
-}
+const char *ori_mesh_format_name(ori_mesh_format f) { return ori__format_name(ORI_FORMAT_KIND_MESH, (int)f); }
 
 ori_export_def ori_default_export_def(void)
 {
