@@ -1,4 +1,4 @@
-// Meshes of states (src/io/mesh_write*): OBJ, STL, PLY, glTF and GLB read back to the posed
+// Meshes of states (src/render/mesh_write*): OBJ, STL, PLY, glTF and GLB read back to the posed
 // vertices, triangle areas sum to the sheet's, thick solids are watertight with volume =
 // area × thickness, and animated glTF reproduces every keyframe's vertices from its nodes.
 #define _POSIX_C_SOURCE 200809L

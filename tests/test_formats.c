@@ -1326,3 +1326,54 @@ Test(formats, svg_curves_flatten_into_n_segments_on_the_curve)
     free(out);
     test_tmpdir_remove(dir);
 }
+
+// The table of file formats: every *_from_path is its lookup; a drawing read from its text is
+// the pattern (and the stats) of the same drawing read from its file.
+Test(formats, format_table_and_import_from_text)
+{
+    cr_assert_eq(ori_format_from_path("a/B.SVG"), ORI_FORMAT_SVG);
+    cr_assert_eq(ori_format_from_path("x.fold"), ORI_FORMAT_FOLD);
+    cr_assert_eq(ori_format_from_path("dir.cp/x"), ORI_FORMAT_UNKNOWN);
+    cr_assert_eq(ori_format_from_path("x.png"), ORI_FORMAT_UNKNOWN);
+    cr_assert_eq(ori_format_find("x.svg", ORI_FORMAT_KIND_IMAGE)->code, ORI_IMAGE_SVG);
+    cr_assert_eq(ori_format_find("x.GLB", ORI_FORMAT_KIND_MESH)->code, ORI_MESH_GLB);
+    cr_assert_null(ori_format_find("x.glb", ORI_FORMAT_KIND_IMAGE));
+    cr_assert_str_eq(ori_format_name(ORI_FORMAT_OPX), "opx");
+    cr_assert(ori_format_is_drawing(ORI_FORMAT_CP) && !ori_format_is_drawing(ORI_FORMAT_FOLD) &&
+              !ori_format_is_drawing(ORI_FORMAT_UNKNOWN));
+    int n = 0;
+    const ori_format_info *t = ori_format_table(&n);
+    cr_assert_geq(n, 12);
+    for (int i = 0; i < n; ++i) cr_assert(t[i].can_write, "%s", t[i].extension);
+
+    const char *paths[] = {"tests/data/formats/gap.svg", "tests/data/formats/bird.cp"};
+    for (int k = 0; k < 2; ++k) {
+        ori_import_stats sf, st;
+        const char *path = test_repo_path(paths[k]);
+        ori_pattern *pf = import_ok(path, &sf), *pt = NULL;
+        char *text;
+        size_t size;
+        ori_error err;
+        cr_assert_eq(ori_file_read_all(path, ORI_IMPORT_MAX_BYTES, &text, &size, &err), ORI_OK);
+        cr_assert_eq(ori_import_text(text, size, ori_format_from_path(paths[k]), NULL, &pt, &st, &err), ORI_OK, "%s",
+                     ori_error_format(&err, msg, sizeof msg));
+        ori_buffer_free(text);
+        cr_assert_eq(ori_pattern_vertex_count(pt), ori_pattern_vertex_count(pf));
+        cr_assert_eq(ori_pattern_edge_count(pt), ori_pattern_edge_count(pf));
+        for (int v = 0; v < ori_pattern_vertex_count(pf); ++v) {
+            ori_v3 a = ori_pattern_vertex(pf, v), b = ori_pattern_vertex(pt, v);
+            cr_assert(a.x == b.x && a.y == b.y, "%s vertex %d", paths[k], v); // exact: the same computation
+        }
+        cr_assert_eq(st.gaps_closed, sf.gaps_closed);
+        cr_assert_eq(st.segments, sf.segments);
+        cr_assert(st.stroke_width == sf.stroke_width);
+        ori_pattern_destroy(pf);
+        ori_pattern_destroy(pt);
+    }
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_import_text("{}", 2, ORI_FORMAT_FOLD, NULL, &p, NULL, &err), ORI_ERR_UNSUPPORTED);
+    cr_assert_null(p);
+    cr_assert_eq(ori_import_text("", 0, ORI_FORMAT_CP, NULL, &p, NULL, &err), ORI_ERR_PARSE);
+    cr_assert_null(p);
+}

@@ -198,19 +198,11 @@ bool studio_load_text(const char *name, const char *text, size_t size, ori_fold 
         *model = studio_model_new(p);
         return true;
     }
-    if (fmt == ORI_FORMAT_UNKNOWN) {
+    if (!ori_format_is_drawing(fmt)) {
         snprintf(err, err_size, "unsupported file type: %s (FOLD, SVG, OPX or CP)", name);
         return false;
     }
-    ori_segment *segs = NULL;
-    int count = 0;
-    ori_status st;
-    if (fmt == ORI_FORMAT_SVG) st = ori_svg_read_segments(text, size, &segs, &count, NULL, &e);
-    else if (fmt == ORI_FORMAT_OPX) st = ori_opx_read_segments(text, size, &segs, &count, NULL, &e);
-    else st = ori_cp_read_segments(text, size, &segs, &count, NULL, &e);
-    if (st == ORI_OK) st = ori_segments_to_pattern(segs, count, NULL, &p, &e);
-    ori_buffer_free(segs);
-    if (st != ORI_OK) {
+    if (ori_import_text(text, size, fmt, NULL, &p, NULL, &e) != ORI_OK) {
         error_line(err, err_size, &e);
         return false;
     }

@@ -3,10 +3,11 @@
 /// export a pattern as SVG, .cp or .opx; write a pattern as a new FOLD document directly (no
 /// JSON tree, for big patterns). docs/formats.md has the conventions and limitations.
 ///
-/// Functions: ori_format_from_path, ori_format_name, ori_default_import_def, ori_svg_read_segments,
+/// Functions: ori_format_table, ori_format_find, ori_format_from_path, ori_format_name,
+/// ori_format_is_drawing, ori_default_import_def, ori_svg_read_segments,
 /// ori_opx_read_segments, ori_cp_read_segments, ori_read_segments, ori_segments_to_pattern,
-/// ori_import_file, ori_default_svg_write_def, ori_svg_write, ori_cp_write, ori_opx_write,
-/// ori_export_file, ori_pattern_to_fold_text, ori_pattern_save_fold.
+/// ori_import_file, ori_import_text, ori_default_svg_write_def, ori_svg_write, ori_cp_write,
+/// ori_opx_write, ori_export_file, ori_pattern_to_fold_text, ori_pattern_save_fold.
 ///
 /// Coordinates: SVG, .opx and .cp are drawn with y growing downwards; every importer maps
 /// (x, y) to (x, −y) (exact) so that the FOLD pattern (y up) looks as the drawing did and
@@ -34,10 +35,55 @@ typedef enum ori_format {
     ORI_FORMAT_CP,          ///< ".cp": ORIPA text, "type x1 y1 x2 y2" per line
 } ori_format;
 
+/// Image file formats (ori_render_image_file).
+typedef enum ori_image_format {
+    ORI_IMAGE_UNKNOWN = 0,
+    ORI_IMAGE_SVG, ///< vector (Cairo's SVG surface)
+    ORI_IMAGE_PDF, ///< vector (Cairo's PDF surface), one page
+    ORI_IMAGE_PNG, ///< raster, 8-bit RGBA, antialiased
+} ori_image_format;
+
+/// Mesh file formats (ori_mesh_export).
+typedef enum ori_mesh_format {
+    ORI_MESH_UNKNOWN = 0,
+    ORI_MESH_OBJ,  ///< Wavefront OBJ (text)
+    ORI_MESH_STL,  ///< STL (text, 17 significant digits)
+    ORI_MESH_PLY,  ///< PLY (text, doubles, vertex colours, FOLD indices)
+    ORI_MESH_GLTF, ///< glTF 2.0 JSON with the buffer embedded (base64)
+    ORI_MESH_GLB,  ///< glTF 2.0 binary
+} ori_mesh_format;
+
+/// What a file format holds.
+typedef enum ori_format_kind {
+    ORI_FORMAT_KIND_ANY = 0,  ///< in ori_format_find: any kind
+    ORI_FORMAT_KIND_PATTERN,  ///< a FOLD document (code: ori_format)
+    ORI_FORMAT_KIND_DRAWING,  ///< a crease-pattern drawing of another tool (code: ori_format)
+    ORI_FORMAT_KIND_IMAGE,    ///< a picture (code: ori_image_format)
+    ORI_FORMAT_KIND_MESH,     ///< a 3D surface (code: ori_mesh_format)
+    ORI_FORMAT_KIND_DOCUMENT, ///< in ori_format_find: a pattern or a drawing
+} ori_format_kind;
+
+/// A row of the table of file formats: the lower-case extension (no dot), what it holds, the
+/// format's code in the enum of its kind, and whether orikin reads and writes it.
+typedef struct ori_format_info {
+    const char *extension;
+    ori_format_kind kind;
+    int code;
+    bool can_read, can_write;
+} ori_format_info;
+
+/// The table of every file format orikin knows (static, count rows into *count, may be NULL).
+/// An extension may stand in several rows of different kinds (.svg: drawing and image).
+ORI_API const ori_format_info *ori_format_table(int *count);
+/// The row of the table for path's extension (after the last '.' of the last component, any
+/// case) of the given kind; NULL when none. The *_from_path functions are this lookup.
+ORI_API const ori_format_info *ori_format_find(const char *path, ori_format_kind kind);
 /// The format of a path by its extension (case-insensitive); ORI_FORMAT_UNKNOWN otherwise.
 ORI_API ori_format ori_format_from_path(const char *path);
 /// Lower-case name of a format ("svg"); static string.
 ORI_API const char *ori_format_name(ori_format format);
+/// True for the drawings of other tools (SVG, OPX, CP), which ori_import_text reads.
+ORI_API bool ori_format_is_drawing(ori_format format);
 
 /// ori_import_def.gap_rel: close the gaps the drawing's own line width hides (see gap_rel).
 #define ORI_IMPORT_GAP_AUTO (-1.0)
@@ -122,6 +168,11 @@ ORI_API ori_status ori_segments_to_pattern(const ori_segment *segments, int coun
 /// stats (may be NULL) receives the reader's findings and the diagnosis of the result: gaps
 /// closed, crease ends left dangling and separate pieces, each with an example.
 ORI_API ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def,
+                                   ori_pattern **out, ori_import_stats *stats, ori_error *error);
+/// ori_import_file of a drawing already in memory (text of size bytes, not necessarily
+/// NUL-terminated) in the given format (a drawing: ori_format_is_drawing, else
+/// ORI_ERR_UNSUPPORTED); the same pattern, stats and errors as reading it from a file.
+ORI_API ori_status ori_import_text(const char *text, size_t size, ori_format format, const ori_import_def *def,
                                    ori_pattern **out, ori_import_stats *stats, ori_error *error);
 
 /// SVG export parameters; get them from ori_default_svg_write_def().

@@ -22,6 +22,7 @@
 #define ORIKIN_RENDER_H
 
 #include "base.h"
+#include "formats.h"
 #include "math.h"
 #include "pattern.h"
 
@@ -145,14 +146,7 @@ ORI_API ori_v3 ori_camera_project(const ori_camera *camera, ori_v3 p_world);
 
 // --- images -------------------------------------------------------------------------------
 
-/// Image file formats.
-typedef enum ori_image_format {
-    ORI_IMAGE_UNKNOWN = 0,
-    ORI_IMAGE_SVG, ///< vector (Cairo's SVG surface)
-    ORI_IMAGE_PDF, ///< vector (Cairo's PDF surface), one page
-    ORI_IMAGE_PNG, ///< raster, 8-bit RGBA, antialiased
-} ori_image_format;
-
+/// Image file formats: ori_image_format (formats.h, the table of every file format).
 /// The format of a path by its extension (.svg, .pdf, .png; any case), else ORI_IMAGE_UNKNOWN.
 ORI_API ori_image_format ori_image_format_from_path(const char *path);
 /// Lower-case name of a format ("png"); static string.
@@ -249,16 +243,7 @@ ORI_API ori_status ori_gif_write(const ori_gif_def *def, void **data, size_t *si
 
 // --- meshes -------------------------------------------------------------------------------
 
-/// Mesh file formats.
-typedef enum ori_mesh_format {
-    ORI_MESH_UNKNOWN = 0,
-    ORI_MESH_OBJ,  ///< Wavefront OBJ (text)
-    ORI_MESH_STL,  ///< STL (text, 17 significant digits)
-    ORI_MESH_PLY,  ///< PLY (text, doubles, vertex colours, FOLD indices)
-    ORI_MESH_GLTF, ///< glTF 2.0 JSON with the buffer embedded (base64)
-    ORI_MESH_GLB,  ///< glTF 2.0 binary
-} ori_mesh_format;
-
+/// Mesh file formats: ori_mesh_format (formats.h, the table of every file format).
 /// The format of a path by its extension (.obj, .stl, .ply, .gltf, .glb; any case).
 ORI_API ori_mesh_format ori_mesh_format_from_path(const char *path);
 /// Lower-case name of a format ("gltf"); static string.

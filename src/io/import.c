@@ -1,43 +1,12 @@
-// Importing drawings: format by extension, reading a file's segments, and planarising them into
+// Importing drawings: reading a file's (or a text's) segments, and planarising them into
 // a crease pattern (arrangement with the weld tolerance, then clean-up of drawing artefacts:
 // collinear pass-through vertices and hole faces).
-#include <ctype.h>
 #include <stdlib.h>
 
 #include "../core/hash.h"
 #include "../geometry/geometry_internal.h"
 #include "../pattern/pattern_internal.h"
 #include "reader_internal.h"
-
-// --- formats ---------------------------------------------------------------------------------
-
-ori_format ori_format_from_path(const char *path)
-{
-    ORI_ASSERT(path);
-    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-    if (!dot || (slash && dot < slash)) return ORI_FORMAT_UNKNOWN;
-    char ext[8];
-    size_t n = strlen(dot + 1);
-    if (n == 0 || n >= sizeof ext) return ORI_FORMAT_UNKNOWN;
-    for (size_t i = 0; i < n && i + 1 < sizeof ext; ++i) ext[i] = (char)tolower((unsigned char)dot[1 + i]);
-    ext[n] = '\0';
-    if (strcmp(ext, "fold") == 0) return ORI_FORMAT_FOLD;
-    if (strcmp(ext, "svg") == 0) return ORI_FORMAT_SVG;
-    if (strcmp(ext, "opx") == 0) return ORI_FORMAT_OPX;
-    if (strcmp(ext, "cp") == 0) return ORI_FORMAT_CP;
-    return ORI_FORMAT_UNKNOWN;
-}
-
-const char *ori_format_name(ori_format format)
-{
-    switch (format) {
-    case ORI_FORMAT_FOLD: return "fold";
-    case ORI_FORMAT_SVG: return "svg";
-    case ORI_FORMAT_OPX: return "opx";
-    case ORI_FORMAT_CP: return "cp";
-    default: return "unknown";
-    }
-}
 
 ori_import_def ori_default_import_def(void)
 {
@@ -52,27 +21,41 @@ ori_import_def ori_default_import_def(void)
     return def;
 }
 
+static void stats_reset(ori_import_stats *stats)
+{
+    if (stats) {
+        memset(stats, 0, sizeof *stats);
+        stats->dangling_example = stats->part_example = ORI_NULL_INDEX;
+    }
+}
+
+// The segments of a drawing's text with the reader of its format.
+static ori_status text_segments(const char *text, size_t size, ori_format format, int curve_segments,
+                                ori_segment **segments, int *count, ori_import_stats *stats, ori_error *error)
+{
+    if (!ori_format_is_drawing(format))
+        return ori__fail(error, ORI_ERR_UNSUPPORTED, "cannot read segments from a '%s' file", ori_format_name(format));
+    if (size == 0) return ori__fail(error, ORI_ERR_PARSE, "the file is empty");
+    if (format == ORI_FORMAT_SVG) return ori_svg_read_curves(text, size, curve_segments, segments, count, stats, error);
+    if (format == ORI_FORMAT_OPX) return ori_opx_read_segments(text, size, segments, count, stats, error);
+    return ori_cp_read_segments(text, size, segments, count, stats, error);
+}
+
 static ori_status read_segments(const char *path, ori_format format, int curve_segments, ori_segment **segments,
                                 int *count, ori_import_stats *stats, ori_error *error)
 {
     ORI_ASSERT(path && segments && count);
     *segments = NULL;
     *count = 0;
-    if (stats) {
-        memset(stats, 0, sizeof *stats);
-        stats->dangling_example = stats->part_example = ORI_NULL_INDEX;
-    }
+    stats_reset(stats);
     if (format == ORI_FORMAT_UNKNOWN) format = ori_format_from_path(path);
-    if (format != ORI_FORMAT_SVG && format != ORI_FORMAT_OPX && format != ORI_FORMAT_CP)
+    if (!ori_format_is_drawing(format))
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "cannot read segments from a '%s' file", ori_format_name(format));
     char *text;
     size_t size;
     ori_status st = ori_file_read_all(path, ORI_IMPORT_MAX_BYTES, &text, &size, error);
     if (st != ORI_OK) return st;
-    if (size == 0) st = ori__fail(error, ORI_ERR_PARSE, "the file is empty");
-    else if (format == ORI_FORMAT_SVG) st = ori_svg_read_curves(text, size, curve_segments, segments, count, stats, error);
-    else if (format == ORI_FORMAT_OPX) st = ori_opx_read_segments(text, size, segments, count, stats, error);
-    else st = ori_cp_read_segments(text, size, segments, count, stats, error);
+    st = text_segments(text, size, format, curve_segments, segments, count, stats, error);
     ori__free(text);
     return st;
 }
@@ -799,6 +782,19 @@ ori_status ori_segments_to_pattern(const ori_segment *segs, int count, const ori
     return to_pattern(segs, count, def, 0.0, false, out, NULL, error);
 }
 
+// Planarise the segments a reader found (found: its stats) as ori_import_file does.
+static ori_status import_segments(ori_status st, ori_segment *segs, int n, ori_import_stats *found,
+                                  const ori_import_def *def, ori_pattern **out, ori_import_stats *stats,
+                                  ori_error *error)
+{
+    if (stats) *stats = *found;
+    if (st != ORI_OK) return st;
+    st = to_pattern(segs, n, def, found->stroke_width, true, out, found, error);
+    ori__free(segs);
+    if (stats) *stats = *found;
+    return st;
+}
+
 ori_status ori_import_file(const char *path, ori_format format, const ori_import_def *def, ori_pattern **out,
                            ori_import_stats *stats, ori_error *error)
 {
@@ -808,10 +804,18 @@ ori_status ori_import_file(const char *path, ori_format format, const ori_import
     int n;
     ori_import_stats found;
     ori_status st = read_segments(path, format, def ? def->curve_segments : 0, &segs, &n, &found, error);
-    if (stats) *stats = found;
-    if (st != ORI_OK) return st;
-    st = to_pattern(segs, n, def, found.stroke_width, true, out, &found, error);
-    ori__free(segs);
-    if (stats) *stats = found;
-    return st;
+    return import_segments(st, segs, n, &found, def, out, stats, error);
+}
+
+ori_status ori_import_text(const char *text, size_t size, ori_format format, const ori_import_def *def,
+                           ori_pattern **out, ori_import_stats *stats, ori_error *error)
+{
+    ORI_ASSERT((text || size == 0) && out);
+    *out = NULL;
+    ori_segment *segs = NULL;
+    int n = 0;
+    ori_import_stats found;
+    stats_reset(&found);
+    ori_status st = text_segments(text, size, format, def ? def->curve_segments : 0, &segs, &n, &found, error);
+    return import_segments(st, segs, n, &found, def, out, stats, error);
 }

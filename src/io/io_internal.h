@@ -3,6 +3,8 @@
 #ifndef ORI_IO_INTERNAL_H
 #define ORI_IO_INTERNAL_H
 
+#include <orikin/formats.h>
+
 #include "../core/json_internal.h"
 
 // Custom FOLD keys written by orikin.
@@ -11,6 +13,9 @@
 
 // A growing text buffer (text.c); data is NUL-terminated once anything (or nothing, via
 // ori__text_reserve) was written, and owned by the caller (ori__free).
+// The extension ("png") of the table's row of that kind and code (formats.c); "unknown".
+const char *ori__format_name(ori_format_kind kind, int code);
+
 typedef struct ori__text {
     char *data;
     size_t len, cap;

@@ -10,6 +10,7 @@
 #include <cairo-svg.h>
 #include <orikin/flat.h>
 
+#include "../io/io_internal.h"
 #include "render_internal.h"
 
 // --- colours --------------------------------------------------------------------------------
@@ -72,33 +73,13 @@ bool ori_rgb_parse(const char *text, ori_rgb *out)
 
 // --- formats and defaults -------------------------------------------------------------------
 
-static bool ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    if (n < k) return false;
-    for (size_t i = 0; i < k; ++i)
-        if (tolower((unsigned char)s[n - k + i]) != suffix[i]) return false;
-    return true;
-}
-
 ori_image_format ori_image_format_from_path(const char *path)
 {
-    if (!path) return ORI_IMAGE_UNKNOWN;
-    if (ends_with(path, ".svg")) return ORI_IMAGE_SVG;
-    if (ends_with(path, ".pdf")) return ORI_IMAGE_PDF;
-    if (ends_with(path, ".png")) return ORI_IMAGE_PNG;
-    return ORI_IMAGE_UNKNOWN;
+    const ori_format_info *f = ori_format_find(path, ORI_FORMAT_KIND_IMAGE);
+    return f ? (ori_image_format)f->code : ORI_IMAGE_UNKNOWN;
 }
 
-const char *ori_image_format_name(ori_image_format f)
-{
-    switch (f) {
-    case ORI_IMAGE_SVG: return "svg";
-    case ORI_IMAGE_PDF: return "pdf";
-    case ORI_IMAGE_PNG: return "png";
-    default: return "unknown";
-    }
-}
+const char *ori_image_format_name(ori_image_format f) { return ori__format_name(ORI_FORMAT_KIND_IMAGE, (int)f); }
 
 ori_render_def ori_default_render_def(void)
 {

@@ -1,37 +1,13 @@
-// Exact planar predicates: a floating-point filter with Shewchuk's error bound, and GMP rational
-// arithmetic (exact for any doubles) when the filter cannot decide the sign.
+// Exact planar predicates over the library's one exact orientation (ori_orient2d_sign), and the
+// perturbed orientation's degree terms in GMP rational arithmetic (exact for any doubles).
 #include <gmp.h>
 #include <math.h>
 
 #include "unfold_internal.h"
 
-// Shewchuk's ccwerrboundA = (3 + 16ε)ε with ε = 2^−53: |det − computed det| ≤ bound · permanent.
-#define ORIENT_ERRBOUND 3.3306690738754716e-16
-
-static int orient_gmp(ori_v2 a, ori_v2 b, ori_v2 c)
-{
-    mpq_t ax, ay, bx, by, cx, cy, l, r;
-    mpq_inits(ax, ay, bx, by, cx, cy, l, r, NULL);
-    mpq_set_d(ax, a.x), mpq_set_d(ay, a.y), mpq_set_d(bx, b.x), mpq_set_d(by, b.y);
-    mpq_set_d(cx, c.x), mpq_set_d(cy, c.y);
-    mpq_sub(bx, bx, ax), mpq_sub(by, by, ay), mpq_sub(cx, cx, ax), mpq_sub(cy, cy, ay);
-    mpq_mul(l, bx, cy);
-    mpq_mul(r, by, cx);
-    int s = mpq_cmp(l, r);
-    mpq_clears(ax, ay, bx, by, cx, cy, l, r, NULL);
-    return s > 0 ? 1 : s < 0 ? -1 : 0;
-}
-
-int ori__orient2d_exact(ori_v2 a, ori_v2 b, ori_v2 c)
-{
-    double detl = (b.x - a.x) * (c.y - a.y);
-    double detr = (b.y - a.y) * (c.x - a.x);
-    double det = detl - detr;
-    double bound = ORIENT_ERRBOUND * (fabs(detl) + fabs(detr));
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-    return orient_gmp(a, b, c);
-}
+// The one exact orientation of the library (src/geometry/math.c: Shewchuk's filter, then an exact
+// expansion of the determinant); kept under this name for the unfolding's predicates.
+int ori__orient2d_exact(ori_v2 a, ori_v2 b, ori_v2 c) { return ori_orient2d_sign(a, b, c); }
 
 static bool on_segment(ori_v2 a, ori_v2 b, ori_v2 p)
 {

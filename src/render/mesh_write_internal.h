@@ -1,10 +1,11 @@
 // Shared by the mesh writers (mesh_write.c: OBJ, STL, PLY and the dispatch; mesh_write_gltf.c:
-// glTF and GLB): the exported surface as parts of triangles with their own vertices.
+// glTF and GLB): the exported surface (mesh_surface.c) as parts of triangles with their own
+// vertices. mesh_write.c calls mesh_write_gltf.c and mesh_surface.c; gltf calls only the surface.
 #ifndef ORI_MESH_WRITE_INTERNAL_H
 #define ORI_MESH_WRITE_INTERNAL_H
 
-#include "../render/render_internal.h"
-#include "io_internal.h"
+#include "../io/io_internal.h"
+#include "render_internal.h"
 
 // The parts of an exported surface, each drawn with its own material.
 enum { ORI__PART_FRONT = 0, ORI__PART_BACK = 1, ORI__PART_RIM = 2, ORI__PART_COUNT = 3 };
@@ -33,6 +34,11 @@ typedef struct ori__uv_map {
     double x0, y0, dx, dy;
 } ori__uv_map;
 ori__uv_map ori__uv_of_mesh(const ori_mesh *m);
+// The texture coordinate of a reference point (glTF's v downwards).
+static inline ori_v2 ori__uv_at(const ori__uv_map *u, ori_v3 ref)
+{
+    return ori_v2_make((ref.x - u->x0) / u->dx, 1.0 - (ref.y - u->y0) / u->dy);
+}
 
 // The surface of a mesh in its current pose: the two-sided sheet (thickness 0) or the closed
 // solid. With reference = true, the sheet in its reference position (animated glTF nodes).
