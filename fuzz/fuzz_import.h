@@ -85,6 +85,18 @@ static double fuzz_min_feature(const ori_pattern *p)
             best = fmin(best, hypot(x.x - a.x - t * dx, x.y - a.y - t * dy));
         }
     }
+    // A vertex of two edges near the chord of its neighbours: collinear merging (within the weld)
+    // decides it, in an order of its own, so such patterns are near the weld too.
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        if (ori_pattern_vertex_degree(p, v) != 2) continue;
+        int ed[2];
+        ori_pattern_vertex_edges(p, v, ed, 2);
+        ori_edge e0 = ori_pattern_edge(p, ed[0]), e1 = ori_pattern_edge(p, ed[1]);
+        ori_v3 x = ori_pattern_vertex(p, v), a = ori_pattern_vertex(p, e0.v[0] == v ? e0.v[1] : e0.v[0]),
+               b = ori_pattern_vertex(p, e1.v[0] == v ? e1.v[1] : e1.v[0]);
+        double dx = b.x - a.x, dy = b.y - a.y, l = hypot(dx, dy);
+        if (l > 0) best = fmin(best, fabs(dx * (x.y - a.y) - dy * (x.x - a.x)) / l);
+    }
     double diag = hypot(hi[0] - lo[0], hi[1] - lo[1]);
     return diag > 0 ? best / diag : 0.0;
 }
