@@ -276,6 +276,21 @@ test_open_corner test_open_corner_load(void)
     return c;
 }
 
+ori_motion_def test_open_corner_first_fold(const test_open_corner *c, ori_solver solver, double to_deg)
+{
+    static int lock;
+    lock = c->down;
+    ori_motion_def d = ori_default_motion_def();
+    d.fixed_face = c->t2;
+    d.driven_edge = c->diag;
+    d.to_rad = to_deg * (ORI_PI / 180.0);
+    d.step_rad = 10 * (ORI_PI / 180.0);
+    d.locked_edges = &lock;
+    d.locked_count = 1;
+    d.solver = solver;
+    return d;
+}
+
 void test_open_corner_free(test_open_corner *c)
 {
     ori_mechanism_destroy(c->m);

@@ -59,6 +59,9 @@ typedef struct test_open_corner {
 } test_open_corner;
 test_open_corner test_open_corner_load(void);
 void test_open_corner_free(test_open_corner *c);
+// The corner's first fold: t2 fixed, the diagonal driven to to_deg (degrees) in 10° steps, the crease
+// down locked, with the given solver. The lock lives in static storage: one such definition at a time.
+ori_motion_def test_open_corner_first_fold(const test_open_corner *c, ori_solver solver, double to_deg);
 
 
 // Local flat-foldability of an interior vertex of a built flat pattern, checked independently

@@ -18,21 +18,6 @@ TestSuite(kinematics, .init = test_leak_setup, .fini = test_leak_check);
 
 // --- helpers ---------------------------------------------------------------------------
 
-static ori_motion_def first_fold(const test_open_corner *c, ori_solver solver, double to_deg)
-{
-    static int lock;
-    lock = c->down;
-    ori_motion_def d = ori_default_motion_def();
-    d.fixed_face = c->t2;
-    d.driven_edge = c->diag;
-    d.to_rad = to_deg * DEG;
-    d.step_rad = 10 * DEG;
-    d.locked_edges = &lock;
-    d.locked_count = 1;
-    d.solver = solver;
-    return d;
-}
-
 // Every frame closes, keeps edge lengths and keeps the fixed face where its pose puts it.
 static void check_frames(const ori_mechanism *m, const ori_pattern *p, const ori_motion *mo)
 {
@@ -90,7 +75,7 @@ static void check_first_fold_at_90(const test_open_corner *c, const ori_motion *
 Test(kinematics, open_corner_first_fold_closed_form)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
     ori_motion *mo = test_solve(c.m, &d);
     cr_assert(ori_motion_stats_of(mo).analytic);
     check_first_fold_at_90(&c, mo);
@@ -115,8 +100,8 @@ Test(kinematics, open_corner_first_fold_closed_form)
 Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def da = first_fold(&c, ORI_SOLVER_ANALYTIC, 180);
-    ori_motion_def dn = first_fold(&c, ORI_SOLVER_NUMERIC, 180);
+    ori_motion_def da = test_open_corner_first_fold(&c, ORI_SOLVER_ANALYTIC, 180);
+    ori_motion_def dn = test_open_corner_first_fold(&c, ORI_SOLVER_NUMERIC, 180);
     ori_motion *ma = test_solve(c.m, &da), *mn = test_solve(c.m, &dn);
     cr_assert_not(ori_motion_stats_of(mn).analytic);
     cr_assert_eq(ori_motion_verdict_of(mn), ORI_MOTION_VALID);
@@ -139,7 +124,7 @@ Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
     ori_motion_destroy(ma);
     ori_motion_destroy(mn);
     // The 90° reference values from the numeric path as well.
-    ori_motion_def d90 = first_fold(&c, ORI_SOLVER_NUMERIC, 90);
+    ori_motion_def d90 = test_open_corner_first_fold(&c, ORI_SOLVER_NUMERIC, 90);
     ori_motion *m90 = test_solve(c.m, &d90);
     check_first_fold_at_90(&c, m90);
     ori_motion_destroy(m90);
@@ -149,7 +134,7 @@ Test(kinematics, open_corner_first_fold_numeric_agrees_with_closed_form)
 Test(kinematics, open_corner_frame_a_frame_b_split)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     ori_motion *mo = test_solve(c.m, &d);
     ori_vertex_split s;
     cr_assert(ori_motion_split(mo, &s));
@@ -196,7 +181,7 @@ Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
     ori_mechanism_destroy(c.m);
     c.m = test_mechanism_of(c.p);
     for (int s = ORI_SOLVER_ANALYTIC; s <= ORI_SOLVER_NUMERIC; ++s) {
-        ori_motion_def d = first_fold(&c, (ori_solver)s, -90);
+        ori_motion_def d = test_open_corner_first_fold(&c, (ori_solver)s, -90);
         ori_motion *mo = test_solve(c.m, &d);
         cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
         const char *why = ori_motion_reason(mo);
@@ -220,7 +205,7 @@ Test(kinematics, open_corner_mirrored_branch_is_rejected_by_the_assignment)
 Test(kinematics, driving_a_crease_against_its_own_assignment_is_invalid)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, -30);
+    ori_motion_def d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, -30);
     ori_motion *mo = test_solve(c.m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_INVALID_ASSIGNMENT);
     char want[96];
@@ -233,7 +218,7 @@ Test(kinematics, driving_a_crease_against_its_own_assignment_is_invalid)
 Test(kinematics, open_corner_without_a_lock_is_underdetermined)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.locked_count = 0;
     ori_motion *mo = test_solve(c.m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_UNDERDETERMINED);
@@ -248,7 +233,7 @@ Test(kinematics, open_corner_without_a_lock_is_underdetermined)
 static void second_fold(ori_solver solver)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d1 = first_fold(&c, solver, 180);
+    ori_motion_def d1 = test_open_corner_first_fold(&c, solver, 180);
     ori_motion *m1 = test_solve(c.m, &d1);
     cr_assert_eq(ori_motion_verdict_of(m1), ORI_MOTION_VALID);
     const double *state = ori_motion_frame_angles(m1, ori_motion_frame_count(m1) - 1);
@@ -302,7 +287,7 @@ Test(kinematics, a_fold_from_any_state_keeps_the_fixed_face_in_its_world_pose)
     // fold left it, and fold again. The result is the same shape as with T2 fixed, moved by
     // the rigid motion that maps one onto the other; LR does not move.
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d1 = first_fold(&c, ORI_SOLVER_AUTO, 120);
+    ori_motion_def d1 = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 120);
     ori_motion *m1 = test_solve(c.m, &d1);
     int last = ori_motion_frame_count(m1) - 1;
     ori_rigid g[5];
@@ -336,7 +321,7 @@ Test(kinematics, a_fold_from_any_state_keeps_the_fixed_face_in_its_world_pose)
 Test(kinematics, from_reaches_the_start_silently)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.has_from = true;
     d.from_rad = 30 * DEG;
     d.step_rad = 20 * DEG;
@@ -498,14 +483,14 @@ Test(kinematics, transfer_functions_of_the_first_fold)
 {
     test_open_corner c = test_open_corner_load();
     ori_fit_def fd = ori_default_fit_def();
-    fd.motion = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    fd.motion = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     fd.degree = 4;
     ori_fit *fit = NULL;
     ori_error err;
     cr_assert_eq(ori_fit_solve(c.m, &fd, &fit, &err), ORI_OK, "%s", err.message);
     cr_assert_eq(ori_fit_sample_count(fit), 10);
     cr_assert_eq(ori_fit_crease_count(fit), 3); // right, up, left
-    ori_motion_def exact = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion_def exact = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     exact.step_rad = 1 * DEG;
     ori_motion *mo = test_solve(c.m, &exact);
     for (int i = 0; i < 3; ++i) {
@@ -538,47 +523,47 @@ Test(kinematics, bad_fold_specifications_are_errors_naming_the_index)
     test_open_corner c = test_open_corner_load();
     ori_motion *mo = NULL;
     ori_error err;
-    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.fixed_face = 7;
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
     cr_assert_eq(err.element, 7);
     cr_assert_null(mo);
-    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.driven_edge = 0; // a boundary edge
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_ARGUMENT);
     cr_assert_eq(err.element, 0);
     cr_assert(strstr(err.message, "not a crease"));
-    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.driven_edge = 99;
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
-    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.locked_edges = &c.diag;
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_ARGUMENT);
     cr_assert(strstr(err.message, "both driven and locked"));
-    d = first_fold(&c, ORI_SOLVER_AUTO, 190);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 190);
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
-    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.step_rad = 0.0;
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
-    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.has_from = true;
     d.from_rad = -200 * DEG;
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_RANGE);
     // Start angles that do not close the loop.
     double bad[13] = {0};
     bad[c.right] = 0.3;
-    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     d.start_angles_rad = bad;
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_ARGUMENT);
     cr_assert(strstr(err.message, "do not close"));
     // The closed form needs four moving creases at one vertex.
-    d = first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_ANALYTIC, 90);
     d.locked_count = 0;
     cr_assert_eq(ori_motion_solve(c.m, &d, &mo, &err), ORI_ERR_UNSUPPORTED);
     // A flat (F) crease cannot be driven.
     ori_pattern_set_assignment(c.p, c.diag, ORI_ASSIGN_FLAT);
     ori_mechanism *m2 = test_mechanism_of(c.p);
-    d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     cr_assert_eq(ori_motion_solve(m2, &d, &mo, &err), ORI_ERR_ARGUMENT);
     cr_assert(strstr(err.message, "cannot be driven"));
     ori_mechanism_destroy(m2);
@@ -588,13 +573,13 @@ Test(kinematics, bad_fold_specifications_are_errors_naming_the_index)
 Test(kinematics, slightly_rounded_start_states_are_projected)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = first_fold(&c, ORI_SOLVER_AUTO, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ORI_SOLVER_AUTO, 90);
     ori_motion *m1 = test_solve(c.m, &d);
     double st[13];
     memcpy(st, ori_motion_frame_angles(m1, 5), sizeof st);
     for (int e = 0; e < 13; ++e) st[e] = nearbyint(st[e] / DEG * 1e6) / 1e6 * DEG; // 6 decimals
     cr_assert_gt(ori_mechanism_residual(c.m, st), ORI_TOL_RESIDUAL);
-    ori_motion_def d2 = first_fold(&c, ORI_SOLVER_NUMERIC, 90);
+    ori_motion_def d2 = test_open_corner_first_fold(&c, ORI_SOLVER_NUMERIC, 90);
     d2.start_angles_rad = st;
     ori_motion *m2 = test_solve(c.m, &d2);
     cr_assert_eq(ori_motion_verdict_of(m2), ORI_MOTION_VALID);

@@ -15,20 +15,6 @@
 
 #define DEG (ORI_PI / 180.0)
 
-static ori_motion_def corner_fold(const test_open_corner *c, double to_deg)
-{
-    static int lock;
-    lock = c->down;
-    ori_motion_def d = ori_default_motion_def();
-    d.fixed_face = c->t2;
-    d.driven_edge = c->diag;
-    d.to_rad = to_deg * DEG;
-    d.step_rad = 10 * DEG;
-    d.locked_edges = &lock;
-    d.locked_count = 1;
-    return d;
-}
-
 static double max_diff(const double *a, const double *b, int n)
 {
     double m = 0.0;
@@ -92,7 +78,7 @@ static void assert_out_of_range(const ori_trajectory *t, double x)
 Test(trajectory, motion_frames_and_states_between_them, .init = test_leak_setup, .fini = test_leak_check)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = corner_fold(&c, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ori_default_motion_def().solver, 90);
     ori_motion *mo = test_solve(c.m, &d);
     ori_trajectory t = ori_trajectory_of_motion(c.m, &d, mo);
     cr_assert_eq(t.kind, ORI_TRAJECTORY_MOTION);
@@ -146,7 +132,7 @@ Test(trajectory, motion_frames_and_states_between_them, .init = test_leak_setup,
 Test(trajectory, motion_toward_a_smaller_angle, .init = test_leak_setup, .fini = test_leak_check)
 {
     test_open_corner c = test_open_corner_load();
-    ori_motion_def d = corner_fold(&c, -60); // parameters decrease along the frames
+    ori_motion_def d = test_open_corner_first_fold(&c, ori_default_motion_def().solver, -60); // parameters decrease along the frames
     ori_motion *mo = test_solve(c.m, &d);
     ori_trajectory t = ori_trajectory_of_motion(c.m, &d, mo);
     int n = ori_trajectory_frame_count(&t), E = ori_mechanism_edge_count(c.m);
@@ -167,7 +153,7 @@ Test(trajectory, empty_and_one_frame_motions, .init = test_leak_setup, .fini = t
 {
     test_open_corner c = test_open_corner_load();
     // No lock: the open corner has two degrees of freedom, the fold is underdetermined, no frames.
-    ori_motion_def d = corner_fold(&c, 90);
+    ori_motion_def d = test_open_corner_first_fold(&c, ori_default_motion_def().solver, 90);
     d.locked_count = 0;
     ori_motion *mo = test_solve(c.m, &d);
     cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_UNDERDETERMINED);
@@ -177,7 +163,7 @@ Test(trajectory, empty_and_one_frame_motions, .init = test_leak_setup, .fini = t
     assert_out_of_range(&t, 0.0);
     ori_motion_destroy(mo);
     // A fold to where it starts: one frame, the flat start, and only its own instant.
-    d = corner_fold(&c, 0);
+    d = test_open_corner_first_fold(&c, ori_default_motion_def().solver, 0);
     mo = test_solve(c.m, &d);
     t = ori_trajectory_of_motion(c.m, &d, mo);
     cr_assert_eq(ori_trajectory_frame_count(&t), 1);
