@@ -10,6 +10,10 @@
 # budget allows at SECONDS_EACH, every target gets an equal share (at least 10 s). One target's
 # time can be set with FUZZ_SECONDS_<name> (e.g. FUZZ_SECONDS_fold=120), which the budget does
 # not reduce. New targets need nothing here but, optionally, a seeds line in the case below.
+#
+# FUZZ_SEED=N makes a run repeatable: libFuzzer's -seed=N and generated inputs drawn from N, so
+# the inputs tried are a prefix of one fixed sequence however fast the machine (CI sets it; a
+# random run, the default, explores further each time and belongs in fuzz-long).
 set -eu
 BUILD=$1
 shift
@@ -21,6 +25,9 @@ esac
 BUDGET=${FUZZ_BUDGET:-420}
 TIMEOUT=${FUZZ_TIMEOUT:-10}
 RSS_MB=${FUZZ_RSS_MB:-2048}
+SEED=${FUZZ_SEED:-}
+seed_arg=""
+[ -n "$SEED" ] && seed_arg="-seed=$SEED"
 corpus=fuzz/corpus-run
 rm -rf "$corpus"
 mkdir -p "$corpus"
@@ -50,7 +57,7 @@ if [ "$shared" -gt 0 ] && [ $((each * shared)) -gt $((BUDGET - fixed)) ]; then
     each=$(((BUDGET - fixed) / shared))
     [ "$each" -ge 10 ] || each=10
 fi
-echo "fuzz: $count target(s), ${each}s each (budget ${BUDGET}s), -timeout=$TIMEOUT -rss_limit_mb=$RSS_MB"
+echo "fuzz: $count target(s), ${each}s each (budget ${BUDGET}s), -timeout=$TIMEOUT -rss_limit_mb=$RSS_MB ${seed_arg:-(random seed)}"
 
 status=0
 failed=""
@@ -73,7 +80,12 @@ for name in $targets; do
             # gradual length growth kept inputs under 64 bytes (a dozen creases) for 8 minutes.
             i=0
             while [ $i -lt 16 ]; do
-                head -c $((64 + 16 * i)) /dev/urandom >"$dir/random-$i"
+                if [ -n "$SEED" ]; then
+                    python3 -c 'import random, sys; r = random.Random(int(sys.argv[1])); sys.stdout.buffer.write(bytes(r.getrandbits(8) for _ in range(int(sys.argv[2]))))' \
+                        $((SEED * 16 + i)) $((64 + 16 * i)) >"$dir/random-$i"
+                else
+                    head -c $((64 + 16 * i)) /dev/urandom >"$dir/random-$i"
+                fi
                 i=$((i + 1))
             done
             extra="-max_len=512"
@@ -89,7 +101,7 @@ for name in $targets; do
     log="$corpus/$name.log"
     # shellcheck disable=SC2086
     if ASAN_OPTIONS=detect_leaks=1 "$t" -max_total_time="$seconds" -max_len=65536 -timeout="$TIMEOUT" \
-        -rss_limit_mb="$RSS_MB" -print_final_stats=1 -artifact_prefix="$corpus/$name-" $extra "$dir" >"$log" 2>&1; then
+        -rss_limit_mb="$RSS_MB" -print_final_stats=1 -artifact_prefix="$corpus/$name-" $seed_arg $extra "$dir" >"$log" 2>&1; then
         grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+.*DONE" "$log" | tail -n 3
     else
         tail -n 40 "$log"

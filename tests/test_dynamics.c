@@ -449,6 +449,38 @@ Test(dynamics, bad_input)
     loaded_free(&x);
 }
 
+Test(dynamics, max_steps_bounds_the_run_and_the_settling)
+{
+    // A caller's own step budget: a run planned longer is refused up front, naming the budget;
+    // settling (which may need many periods of the slowest hinge) stops at the steps left.
+    loaded x = load_example("examples/patterns/thesis-flap.fold");
+    ori_simulation_def d = ori_default_simulation_def();
+    d.design = x.d;
+    d.mechanism = x.m;
+    d.current_a = 0.02;
+    d.duration_s = 1e-3;
+    d.has_dt = true;
+    d.dt_s = 1e-5; // 100 planned steps
+    d.output_frames = 11;
+    ori_simulation *s = NULL;
+    ori_error err;
+    d.max_steps = 99;
+    cr_assert_eq(ori_simulation_run(&d, &s, &err), ORI_ERR_LIMIT);
+    cr_assert(strstr(err.message, "more than the 99 a simulation takes"), "%s", err.message);
+    cr_assert_null(s);
+    // Without a budget the settling runs on after the 100 steps; with one of 120 it stops there.
+    d.max_steps = 0;
+    s = run_ok(&d);
+    int free_steps = ori_simulation_summary_of(s).steps;
+    ori_simulation_destroy(s);
+    cr_assert_gt(free_steps, 120, "%d", free_steps);
+    d.max_steps = 120;
+    s = run_ok(&d);
+    cr_assert_eq(ori_simulation_summary_of(s).steps, 120);
+    ori_simulation_destroy(s);
+    loaded_free(&x);
+}
+
 Test(dynamics, cli_frames_with_frame_time_and_nothing_written_on_error)
 {
     char *dir = test_tmpdir();

@@ -386,6 +386,8 @@ typedef struct ori_simulation_def {
     bool stops;                      ///< creases stop (perfectly inelastic) at ±180°
     int output_frames;               ///< states kept, evenly spaced in time (≥ 2)
     bool settle;                     ///< afterwards, let the sheet come to rest (currents off, critically damped) for the latched angles
+    int max_steps;                   ///< most integration steps, the run's and settling's together (≤ 0: ORI_DYN_MAX_STEPS); a run
+                                     ///< planned longer is refused before it starts, settling stops at what is left
     ori_progress_fn *progress;
     void *progress_user;
     int internal_value;              ///< set by ori_default_simulation_def; do not change

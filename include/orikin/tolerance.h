@@ -341,7 +341,8 @@
 /// for its angles, currents and plastic rotations.
 #define ORI_DYN_MAX_FRAME_VALUES 2e7
 /// Dynamics: a simulation takes at most ORI_DYN_MAX_STEPS integration steps (duration / time
-/// step, a count); more is refused before it starts (ORI_ERR_LIMIT, naming the least time step).
+/// step, a count) unless its def sets a lower max_steps; more is refused before it starts
+/// (ORI_ERR_LIMIT, naming the least time step), and settling stops at the steps left.
 #define ORI_DYN_MAX_STEPS 1e8
 // --- files and imports (io) ---------------------------------------------------------------------
 

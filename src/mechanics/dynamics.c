@@ -993,11 +993,12 @@ ori_status ori_simulation_run(const ori_simulation_def *def, ori_simulation **ou
     // The work a simulation asks for is bounded before it starts (a step of 1e-300 s once
     // overflowed the step count and silently fell back on the default step).
     double steps = ceil(frame_dt / dt) * (double)(frames - 1);
-    if (!(steps <= ORI_DYN_MAX_STEPS)) {
+    double max_steps = def->max_steps > 0 ? fmin((double)def->max_steps, ORI_DYN_MAX_STEPS) : ORI_DYN_MAX_STEPS;
+    if (!(steps <= max_steps)) {
         st = ori__fail(error, ORI_ERR_LIMIT,
                        "%.3g time steps of %.3g s over %.3g s are more than the %.3g a simulation takes: a larger time step "
                        "(at least %.3g s) or a shorter duration",
-                       steps, dt, def->duration_s, (double)ORI_DYN_MAX_STEPS, def->duration_s / ORI_DYN_MAX_STEPS);
+                       steps, dt, def->duration_s, max_steps, def->duration_s / max_steps);
         goto fail;
     }
     int per = (int)ceil(frame_dt / dt);
@@ -1071,7 +1072,10 @@ ori_status ori_simulation_run(const ori_simulation_def *def, ori_simulation **ou
             int mover = s.t.depth[a] >= s.t.depth[b] ? a : b;
             s.damp[e] = 2.0 * z * sqrt(s.sec[e].k * panel_inertia_about(s.d, mover, e));
         }
-        int nsteps = (int)ceil(ORI_DYN_SETTLE_PERIODS * t_long / h);
+        // Bounded by the steps left of the budget (a count computed in double: a long period over
+        // a short step would overflow an int).
+        double left = max_steps - (double)x.steps;
+        int nsteps = (int)fmax(0.0, fmin(ceil(ORI_DYN_SETTLE_PERIODS * t_long / h), left));
         double peak = 0.0;
         for (int i = 0; i < nsteps; ++i) {
             if (!advance(&s, &x, def, h, 0, &st, error)) goto fail;
