@@ -155,6 +155,7 @@ int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, or
     }
     ori_build_def def = ori_default_build_def();
     def.weld = weld;
+    def.planarize = true;
     st = ori_fold_get_pattern(*doc, frame, &def, pattern, &err);
     if (st != ORI_OK) {
         ori_fold_destroy(*doc);
@@ -171,6 +172,11 @@ int cli_load_pattern(const char *cmd, const char *path, int frame, bool weld, or
     if (absent > 0)
         fprintf(stderr, "orikin %s: %s: note: %d edge(s) have a null edges_foldAngle (e.g. Origami Simulator's boundary "
                         "edges): read as 0\n", cmd, path, absent);
+    int from = ori_pattern_planarized_from(*pattern);
+    if (from > 0)
+        fprintf(stderr, "orikin %s: %s: note: its edges cross or overlap: planarised %d edges into %d (edge numbers are "
+                        "the planarised ones; 'orikin convert' writes them)\n", cmd, path, from,
+                ori_pattern_edge_count(*pattern));
     return CLI_EXIT_OK;
 }
 

@@ -1,5 +1,6 @@
-// libFuzzer target for the FOLD reader: parse, read every frame's pattern (with validation),
-// write it back and re-read the output. The reader is checked against jansson as an independent
+// libFuzzer target for the FOLD reader: parse, read every frame's pattern (with validation, and
+// planarised where its edges cross or overlap, as the CLI reads it), write it back and re-read
+// the output without planarising (what orikin writes is planar). The reader is checked against jansson as an independent
 // JSON parser: they agree on what is valid JSON, and what orikin writes back is the same JSON
 // (numbers compared by value). Any crash, leak, disagreement or sanitizer report is a bug.
 #include <jansson.h>
@@ -61,9 +62,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     json_decref(ref);
     ori_buffer_free(text);
     int frames = ori_fold_frame_count(doc);
+    ori_build_def planar = ori_default_build_def();
+    planar.planarize = true;
     for (int f = 0; f < frames && f < 8; ++f) {
         ori_pattern *p = NULL;
-        if (ori_fold_get_pattern(doc, f, NULL, &p, &err) != ORI_OK) continue;
+        if (ori_fold_get_pattern(doc, f, &planar, &p, &err) != ORI_OK) continue;
         for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
             double sectors[64];
             int edges[64];

@@ -69,7 +69,7 @@ for name in $targets; do
     extra=""
     # seeds: fuzz/seeds/<name>/* and the repository's own inputs of that kind
     case $name in
-        fold) seeds="examples/patterns/*.fold tests/data/*.fold" ;;
+        fold) seeds="examples/patterns/*.fold tests/data/*.fold tests/data/layers/overlapping-creases.fold" ;;
         composite) seeds="examples/composites/*.json tests/data/*composite*.json" ;;
         sequence) seeds="examples/*.seq.json" ;;
         materials) seeds="data/materials.json tests/data/actuation/*.json" ;;

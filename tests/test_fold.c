@@ -432,6 +432,144 @@ Test(fold, malformed_input_names_the_position_or_the_fold_index)
     }
 }
 
+// A frame read with planarize (as the CLI reads files): *p, or NULL with the status.
+static ori_status planarized(const char *text, ori_pattern **p, ori_error *err)
+{
+    ori_fold *doc = NULL;
+    *p = NULL;
+    ori_status st = ori_fold_load_string(text, strlen(text), &doc, err);
+    if (st != ORI_OK) return st;
+    ori_build_def def = ori_default_build_def();
+    def.planarize = true;
+    st = ori_fold_get_pattern(doc, 0, &def, p, err);
+    if (st == ORI_OK) {
+        // What is written over the frame (as `orikin convert` does) is planar: it reads back
+        // without planarising.
+        cr_assert_eq(ori_fold_set_pattern(doc, 0, *p, err), ORI_OK);
+        char *back = ori_fold_to_string(doc);
+        ori_fold *out = NULL;
+        ori_pattern *q = NULL;
+        cr_assert_eq(ori_fold_load_string(back, strlen(back), &out, err), ORI_OK);
+        ori_buffer_free(back);
+        cr_assert_eq(ori_fold_get_pattern(out, 0, NULL, &q, err), ORI_OK, "%s", err->message);
+        cr_assert_eq(ori_pattern_edge_count(q), ori_pattern_edge_count(*p));
+        cr_assert_eq(ori_pattern_planarized_from(q), 0);
+        ori_pattern_destroy(q);
+        ori_fold_destroy(out);
+    }
+    ori_fold_destroy(doc);
+    return st;
+}
+
+Test(fold, planarize_splits_crossings_and_merges_overlaps)
+{
+    ori_pattern *p;
+    ori_error err;
+    // Crossing diagonals with fold angles: four halves keeping their angles, a vertex at the centre.
+    const char *cross = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1]],"
+                        "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[0,2],[1,3]],"
+                        "\"edges_assignment\": [\"B\",\"B\",\"B\",\"B\",\"V\",\"M\"],"
+                        "\"edges_foldAngle\": [0,0,0,0,90,-45]}";
+    cr_assert_eq(planarized(cross, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_planarized_from(p), 6);
+    cr_assert_eq(ori_pattern_vertex_count(p), 5);
+    cr_assert_eq(ori_pattern_edge_count(p), 8);
+    cr_assert_eq(ori_pattern_face_count(p), 4);
+    cr_assert(ori_pattern_has_fold_angles(p));
+    for (int e = 0; e < 8; ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        double want = ed.assignment == ORI_ASSIGN_VALLEY ? 90.0 : ed.assignment == ORI_ASSIGN_MOUNTAIN ? -45.0 : 0.0;
+        cr_assert_float_eq(ori_rad_to_deg(ed.fold_angle_rad), want, 1e-12, "edge %d", e);
+    }
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY), 2);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN), 2);
+    ori_pattern_destroy(p);
+
+    // A U edge along part of the boundary (Flat-Folder's General Grievous has one): the boundary
+    // stays; a V crease ends on the middle of the right side (a T-junction); a U crease over part
+    // of the V takes V; the file's degenerate face is dropped and the faces traced.
+    const char *overlap = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1],[0,0.5],[1,0.5],[0.25,0.5],[0.75,0.5]],"
+                          "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[4,5],[0,4],[6,7]],"
+                          "\"edges_assignment\": [\"B\",\"B\",\"B\",\"B\",\"V\",\"U\",\"U\"],"
+                          "\"faces_vertices\": [[0,1,2,3,0,4]]}";
+    cr_assert_eq(planarized(overlap, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_planarized_from(p), 7);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_UNASSIGNED), 0);
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY), 6); // left and right sides split
+    cr_assert_eq(ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY), 3);   // at x = 0.25 and 0.75
+    cr_assert_eq(ori_pattern_edge_count(p), 9);
+    cr_assert_eq(ori_pattern_face_count(p), 2);
+    cr_assert(!ori_pattern_has_fold_angles(p));
+    double area = 0.0;
+    for (int f = 0; f < 2; ++f) {
+        int vs[16], n = ori_pattern_face_vertices(p, f, vs, 16);
+        double a = 0.0;
+        for (int k = 0; k < n; ++k) {
+            ori_v3 u = ori_pattern_vertex(p, vs[k]), w = ori_pattern_vertex(p, vs[(k + 1) % n]);
+            a += 0.5 * (u.x * w.y - w.x * u.y);
+        }
+        cr_assert_float_eq(fabs(a), 0.5, 1e-12, "face %d", f);
+        area += fabs(a);
+    }
+    cr_assert_float_eq(area, 1.0, 1e-12);
+    ori_pattern_destroy(p);
+
+    // A repeated edge is an overlap too; what is left has no face, and the file's faces (not
+    // this pattern's) are not written back (fuzz_fold found them kept: the read-back failed).
+    const char *repeat = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1]], \"edges_vertices\": [[0,1],[1,2],[0,3],[3,0]],"
+                         "\"faces_vertices\": [[0,1,2,3],[0,2,3]]}";
+    cr_assert_eq(planarized(repeat, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_edge_count(p), 3);
+    cr_assert_eq(ori_pattern_face_count(p), 0);
+    ori_pattern_destroy(p);
+
+    // Without planarize the library refuses as before.
+    ori_fold *doc = NULL;
+    cr_assert_eq(ori_fold_load_string(overlap, strlen(overlap), &doc, &err), ORI_OK);
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_ERR_CROSSING);
+    ori_fold_destroy(doc);
+}
+
+Test(fold, planarize_refuses_what_it_cannot_decide_or_keep)
+{
+    ori_pattern *p;
+    ori_error err;
+    char msg[512];
+    // M drawn over half of a V: the file does not say which the crease is.
+    const char *mv = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1],[0.5,0.5]],"
+                     "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[0,2],[0,4]],"
+                     "\"edges_assignment\": [\"B\",\"B\",\"B\",\"B\",\"V\",\"M\"]}";
+    cr_assert_eq(planarized(mv, &p, &err), ORI_ERR_TOPOLOGY);
+    cr_assert_null(p);
+    cr_assert_str_eq(ori_error_format(&err, msg, sizeof msg),
+                     "edges_assignment: overlapping creases disagree on (0, 0)-(0.5, 0.5): valley and mountain");
+    // Two valleys over each other at different angles.
+    const char *angles = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1],[0.5,0.5]],"
+                         "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[0,2],[0,4]],"
+                         "\"edges_assignment\": [\"B\",\"B\",\"B\",\"B\",\"V\",\"V\"],"
+                         "\"edges_foldAngle\": [0,0,0,0,90,60]}";
+    cr_assert_eq(planarized(angles, &p, &err), ORI_ERR_TOPOLOGY);
+    cr_assert(strstr(ori_error_format(&err, msg, sizeof msg), "edges_foldAngle: overlapping creases disagree"), "%s", msg);
+    cr_assert(strstr(msg, "90 and 60 degrees"), "%s", msg);
+    // A field tied to the file's edge numbers would no longer match: the crossing is reported.
+    const char *custom = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1]],"
+                         "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[0,2],[1,3]],"
+                         "\"edges_assignment\": [\"B\",\"B\",\"B\",\"B\",\"V\",\"M\"],"
+                         "\"edges_myapp:width\": [1,1,1,1,2,2]}";
+    cr_assert_eq(planarized(custom, &p, &err), ORI_ERR_CROSSING);
+    cr_assert_str_eq(ori_error_format(&err, msg, sizeof msg),
+                     "edges_vertices 4: edge 4 intersects edge 5 away from a shared vertex (planarising the frame "
+                     "would lose edges_myapp:width, which follows the file's numbering)");
+    // FOLD's derived fields go stale anyway: they do not stop it.
+    const char *derived = "{\"vertices_coords\": [[0,0],[1,0],[1,1],[0,1]],"
+                          "\"edges_vertices\": [[0,1],[1,2],[2,3],[3,0],[0,2],[1,3]],"
+                          "\"edges_assignment\": [\"B\",\"B\",\"B\",\"B\",\"V\",\"M\"],"
+                          "\"vertices_vertices\": [[1,3,2],[2,0,3],[3,1,0],[0,2,1]]}";
+    cr_assert_eq(planarized(derived, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_edge_count(p), 8);
+    ori_pattern_destroy(p);
+}
+
 Test(fold, weld_merges_coincident_vertices)
 {
     ori_fold *doc = NULL;

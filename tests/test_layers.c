@@ -1557,6 +1557,36 @@ Test(layers, published_drawings_with_rounded_coordinates_count_by_default)
     free(out);
 }
 
+Test(layers, published_drawing_with_overlapping_creases_counts_once_planarised)
+{
+    // Flat-Folder's General Grievous draws a U crease over part of the sheet's boundary (edges
+    // 281 and 436 overlap): read planarised (the boundary stays), its published count and
+    // components. (Flat-Folder's 99 tortilla-tortilla constraints come from that U line, which
+    // it keeps as a crease; with the boundary there are none, and the states are the same.)
+    const char *path = test_require_shared("flat-folder-corpus/instagram/208_kei_General_Grievous.fold");
+    char cmd[4200], *out = NULL, *err = NULL;
+    snprintf(cmd, sizeof cmd, "layers '%s' --json", path);
+    cr_assert_eq(test_run_cli_split(cmd, &out, &err), 0, "%s%s", out, err);
+    cr_assert(strstr(err, "note: its edges cross or overlap: planarised 1706 edges into 1705"), "%s", err);
+    json_error_t jerr;
+    json_t *o = json_loads(out, 0, &jerr);
+    cr_assert(o, "%s", out);
+    cr_assert_str_eq(json_string_value(json_object_get(o, "states")), "122880");
+    cr_assert_eq(json_integer_value(json_object_get(o, "faces")), 933);
+    cr_assert_eq(json_integer_value(json_object_get(o, "variables")), 71596);
+    json_t *c = json_object_get(o, "constraints");
+    cr_assert_eq(json_integer_value(json_object_get(c, "taco_taco")), 17480);
+    cr_assert_eq(json_integer_value(json_object_get(c, "taco_tortilla")), 86831);
+    cr_assert_eq(json_integer_value(json_object_get(c, "transitivity")), 2938681);
+    const int comps[] = {1, 2, 2, 2, 3, 20, 16, 16};
+    json_t *cs = json_object_get(o, "components");
+    cr_assert_eq(json_array_size(cs), 8);
+    for (size_t i = 0; i < 8; ++i) cr_assert_eq(json_integer_value(json_array_get(cs, i)), comps[i], "component %zu", i);
+    json_decref(o);
+    free(out);
+    free(err);
+}
+
 Test(layers, cli_says_which_tolerance_decides_undecided_coordinates)
 {
     // 2.1e-8 apart at --tolerance 1e-8: undecided; the message names the value that decides.

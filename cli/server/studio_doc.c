@@ -189,7 +189,9 @@ bool studio_load_text(const char *name, const char *text, size_t size, ori_fold 
             error_line(err, err_size, &e);
             return false;
         }
-        if (ori_fold_get_pattern(d, 0, NULL, &p, &e) != ORI_OK) {
+        ori_build_def bd = ori_default_build_def();
+        bd.planarize = true; // as the CLI loads it (cli_load_pattern)
+        if (ori_fold_get_pattern(d, 0, &bd, &p, &e) != ORI_OK) {
             ori_fold_destroy(d);
             error_line(err, err_size, &e);
             return false;

@@ -45,6 +45,10 @@ ORI_API bool ori_fold_frame_is_folded_form(const ori_fold *doc, int frame);
 /// edges_assignment (default U), edges_foldAngle (degrees → radians), faces_vertices,
 /// orikin:faces_name and orikin:face_tree; then ori_pattern_build with def (NULL = default;
 /// planarity is never checked on folded forms). Errors name the field and the FOLD index.
+/// With def->planarize, a flat frame whose edges cross or overlap is planarised instead (see
+/// ori_pattern_planarized_from): refused when the frame holds other index-tied fields it would
+/// lose, or when overlapping creases disagree (M over V; a boundary wins over a crease and an
+/// assigned crease over U).
 ORI_API ori_status ori_fold_get_pattern(const ori_fold *doc, int frame, const ori_build_def *def,
                                         ori_pattern **out, ori_error *error);
 /// Write a pattern's fields into a frame (0 = top level), keeping every other field. When the

@@ -7,7 +7,7 @@
 /// ori_pattern_clone, ori_pattern_add_vertex, ori_pattern_add_edge, ori_pattern_add_face,
 /// ori_pattern_set_vertex, ori_pattern_set_assignment, ori_pattern_set_fold_angle,
 /// ori_pattern_clear_faces, ori_default_build_def, ori_pattern_build, ori_pattern_is_built,
-/// ori_pattern_absent_fold_angle_count, counts and element getters, topology queries, face names and the face tree.
+/// ori_pattern_absent_fold_angle_count, ori_pattern_planarized_from, counts and element getters, topology queries, face names and the face tree.
 ///
 /// Indices are FOLD indices: loading never reorders vertices, edges or faces. Mutating a
 /// pattern invalidates its derived topology until the next ori_pattern_build.
@@ -105,10 +105,12 @@ typedef struct ori_build_def {
     bool weld;             ///< merge vertices closer than the length tolerance instead of failing
     bool check_planarity;  ///< flat sheets: reject coincident vertices and crossing edges
     bool compute_faces;    ///< compute faces from the planar graph when none are given
+    bool planarize;        ///< ori_fold_get_pattern: a flat frame whose edges cross or overlap is planarised (split at
+                           ///< crossings, overlaps merged, faces retraced) instead of refused; default false
     int internal_value;    ///< set by ori_default_build_def; do not change
 } ori_build_def;
 
-/// Defaults: no welding, planarity checked, faces computed when missing.
+/// Defaults: no welding, planarity checked, faces computed when missing, no planarising.
 ORI_API ori_build_def ori_default_build_def(void);
 
 /// Validate the pattern and build its derived topology. Fails (status and error naming the
@@ -144,6 +146,9 @@ ORI_API bool ori_pattern_has_fold_angles(const ori_pattern *pattern);
 /// Edges whose FOLD edges_foldAngle entry was null (Origami Simulator writes null on boundary
 /// edges): read as absent, angle 0. 0 for patterns not read from FOLD.
 ORI_API int ori_pattern_absent_fold_angle_count(const ori_pattern *pattern);
+/// A FOLD frame planarised on reading (ori_build_def.planarize): the number of edges the file
+/// gave (the pattern's own edges are the planarised ones); 0 when it was read as it is.
+ORI_API int ori_pattern_planarized_from(const ori_pattern *pattern);
 /// Length of the bounding-box diagonal (the length scale of every relative tolerance); 1 for
 /// an empty or single-point pattern.
 ORI_API double ori_pattern_diagonal(const ori_pattern *pattern);

@@ -151,6 +151,7 @@ static PyObject *pattern_of_doc(ori_fold *doc, int frame, bool weld, const char 
     }
     ori_build_def def = ori_default_build_def();
     def.weld = weld;
+    def.planarize = true;
     ori_pattern *p = NULL;
     ori_error err;
     if (ori_fold_get_pattern(doc, frame, &def, &p, &err) != ORI_OK) {
@@ -159,6 +160,15 @@ static PyObject *pattern_of_doc(ori_fold *doc, int frame, bool weld, const char 
         char where[600];
         snprintf(where, sizeof where, "%s: frame %d", source, frame);
         return ori_py_raise(where, &err);
+    }
+    int from = ori_pattern_planarized_from(p);
+    if (from > 0 && PyErr_WarnFormat(PyExc_UserWarning, 1,
+                                     "%s: its edges cross or overlap: planarised %d edges into %d (edge numbers are "
+                                     "the planarised ones)",
+                                     source, from, ori_pattern_edge_count(p)) < 0) {
+        ori_pattern_destroy(p);
+        ori_fold_destroy(doc);
+        return NULL;
     }
     // Frame 0 as loaded with the faces the pattern uses (traced when the file had none), so
     // that frames written later inherit faces_vertices (as the CLI's kinematics commands do).

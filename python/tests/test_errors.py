@@ -4,11 +4,12 @@ after 'orikin CMD: ' — and where it points (status, FOLD index, field, line, c
 import pytest
 
 import orikin
-from conftest import cli_error, open_corner, repo
+from conftest import cli, cli_error, open_corner, repo
 
 
 @pytest.mark.parametrize("path", ["nope.fold", "tests/data/bad-json.fold", "tests/data/bad-index.fold",
-                                  "tests/data/bad-crossing.fold", "tests/data/bad-type.fold",
+                                  "tests/data/bad-crossing-extra-field.fold", "tests/data/bad-overlap-mv.fold",
+                                  "tests/data/bad-type.fold",
                                   "tests/data/bad-fold-angle.fold", "tests/data/bad-zero-length.fold"])
 def test_a_bad_file_raises_the_clis_message(path, monkeypatch):
     want = cli_error(f"check {path}")
@@ -17,6 +18,15 @@ def test_a_bad_file_raises_the_clis_message(path, monkeypatch):
         orikin.Pattern.load(path)
     assert str(e.value) == want
     assert isinstance(e.value, ValueError) and isinstance(e.value, orikin.Error)
+
+
+def test_crossing_or_overlapping_creases_are_planarised_as_the_cli_does():
+    path = repo("tests/data/layers/overlapping-creases.fold")
+    with pytest.warns(UserWarning, match="its edges cross or overlap: planarised 8 edges into 9"):
+        p = orikin.Pattern.load(path)
+    assert p.edge_count == 9 and p.face_count == 2
+    r = cli(f"info {path}")
+    assert r.returncode == 0 and "planarised 8 edges into 9" in r.stderr
 
 
 def test_the_exception_says_where():

@@ -2,6 +2,7 @@
 // the rest kept as JSON); patterns are read from and written into frames.
 #include <orikin/fold.h>
 
+#include <orikin/arrangement.h>
 #include <stdio.h>
 
 #include "../pattern/pattern_internal.h"
@@ -432,6 +433,102 @@ static ori_status read_names(const ori_fold *doc, int frame, ori_pattern *p, ori
     return ORI_OK;
 }
 
+// --- planarising a frame whose edges cross or overlap ---------------------------------------
+
+static bool is_derived(const char *key)
+{
+    for (size_t i = 0; i < sizeof derived_fields / sizeof derived_fields[0]; ++i)
+        if (strcmp(key, derived_fields[i]) == 0) return true;
+    return false;
+}
+
+// A field of the frame (or a frame it inherits from) tied to the file's vertex, edge or face
+// indices that planarising would lose, or NULL. The pattern's own fields are rebuilt; FOLD's
+// derived ones (vertices_vertices, faceOrders, ...) go stale and are dropped anyway.
+static const char *index_field_lost(const ori_fold *doc, int frame)
+{
+    static const char *const rebuilt[] = {"vertices_coords", "edges_vertices", "edges_assignment", "edges_foldAngle",
+                                          "faces_vertices"};
+    for (int depth = 0; depth <= MAX_INHERIT_DEPTH && frame >= 0 && frame < doc->frame_count; ++depth) {
+        const ori__frame *fr = &doc->frames[frame];
+        for (int i = 0; i < fr->count; ++i) {
+            const char *key = fr->fields[i].key;
+            if (strncmp(key, "vertices_", 9) != 0 && strncmp(key, "edges_", 6) != 0 && strncmp(key, "faces_", 6) != 0)
+                continue;
+            bool ok = is_derived(key);
+            for (size_t k = 0; k < sizeof rebuilt / sizeof rebuilt[0] && !ok; ++k) ok = strcmp(key, rebuilt[k]) == 0;
+            if (!ok) return key;
+        }
+        const ori__field *inh = own_field(doc, frame, "frame_inherit");
+        const ori__field *parent = own_field(doc, frame, "frame_parent");
+        if (frame == 0 || !inh || !json_is_true(inh->json) || !parent || !json_is_integer(parent->json)) break;
+        frame = (int)json_integer_value(parent->json);
+    }
+    return NULL;
+}
+
+static bool boundary_like(ori_assignment a) { return a == ORI_ASSIGN_BOUNDARY || a == ORI_ASSIGN_CUT; }
+
+// The planar pattern of the file's edges as segments (read: the frame as read, unbuilt). The
+// arrangement is made twice, overlapped edges keeping the first and taking the last segment's
+// assignment (the geometry is the same): where the two differ, a boundary or cut wins over a
+// crease and an assigned crease over U; two different creases (M on V) are refused.
+static ori_status planarize(const ori_pattern *read, ori_pattern **out, ori_error *error)
+{
+    *out = NULL;
+    int m = read->edge_count;
+    ori_segment *segs = ori__alloc(sizeof(ori_segment) * (size_t)(m ? m : 1));
+    for (int e = 0; e < m; ++e) {
+        ori_v3 a = read->vertices[read->edges[e].v[0]], b = read->vertices[read->edges[e].v[1]];
+        segs[e] = (ori_segment){ori_v2_make(a.x, a.y), ori_v2_make(b.x, b.y), read->edges[e].assignment,
+                                read->edges[e].fold_angle_rad};
+    }
+    ori_insert_def idef = ori_default_insert_def();
+    idef.name_faces = false;
+    idef.overlap = ORI_OVERLAP_KEEP_EXISTING;
+    ori_pattern *first = NULL, *last = NULL;
+    ori_status st = ori_pattern_from_segments(segs, m, &idef, &first, NULL, error);
+    idef.overlap = ORI_OVERLAP_REPLACE;
+    if (st == ORI_OK) st = ori_pattern_from_segments(segs, m, &idef, &last, NULL, error);
+    ori__free(segs);
+    if (st == ORI_OK && (first->edge_count != last->edge_count || first->vertex_count != last->vertex_count))
+        st = ori__fail(error, ORI_ERR_INTERNAL, "planarising the edges gave two different arrangements");
+    for (int e = 0; st == ORI_OK && e < first->edge_count; ++e) {
+        ori_edge *f = &first->edges[e];
+        const ori_edge *l = &last->edges[e];
+        if (f->assignment == l->assignment && f->fold_angle_rad == l->fold_angle_rad) continue;
+        bool fb = boundary_like(f->assignment), lb = boundary_like(l->assignment);
+        if (fb || lb) { // the sheet's outline stays
+            if (lb && !fb) f->assignment = l->assignment, f->fold_angle_rad = l->fold_angle_rad;
+            continue;
+        }
+        if (f->assignment == ORI_ASSIGN_UNASSIGNED) {
+            f->assignment = l->assignment, f->fold_angle_rad = l->fold_angle_rad;
+            continue;
+        }
+        if (l->assignment == ORI_ASSIGN_UNASSIGNED) continue;
+        ori_v3 a = first->vertices[f->v[0]], b = first->vertices[f->v[1]];
+        if (f->assignment != l->assignment)
+            st = ori__fail_at(error, ORI_ERR_TOPOLOGY, "edges_assignment", ORI_NULL_INDEX,
+                              "overlapping creases disagree on (%g, %g)-(%g, %g): %s and %s", a.x, a.y, b.x, b.y,
+                              ori_assignment_name(f->assignment), ori_assignment_name(l->assignment));
+        else
+            st = ori__fail_at(error, ORI_ERR_TOPOLOGY, "edges_foldAngle", ORI_NULL_INDEX,
+                              "overlapping creases disagree on (%g, %g)-(%g, %g): %g and %g degrees", a.x, a.y, b.x, b.y,
+                              ori_rad_to_deg_output(f->fold_angle_rad), ori_rad_to_deg_output(l->fold_angle_rad));
+    }
+    ori_pattern_destroy(last);
+    if (st != ORI_OK) {
+        ori_pattern_destroy(first);
+        return st;
+    }
+    first->has_fold_angles = read->has_fold_angles;
+    first->absent_fold_angles = read->absent_fold_angles;
+    first->planarized_from = m;
+    *out = first;
+    return ORI_OK;
+}
+
 ori_status ori_fold_get_pattern(const ori_fold *doc, int frame, const ori_build_def *def,
                                 ori_pattern **out, ori_error *error)
 {
@@ -454,6 +551,24 @@ ori_status ori_fold_get_pattern(const ori_fold *doc, int frame, const ori_build_
     if (st == ORI_OK) {
         p->folded_form = ori_fold_frame_is_folded_form(doc, frame) || ori_pattern_is_3d(p);
         st = ori_pattern_build(p, def, error);
+    }
+    bool repeats = st == ORI_ERR_TOPOLOGY && error && strcmp(error->field, "edges_vertices") == 0 &&
+                   strncmp(error->message, "edge repeats", 12) == 0;
+    if ((st == ORI_ERR_CROSSING || repeats) && def && def->planarize && !p->folded_form) {
+        const char *lost = index_field_lost(doc, frame);
+        if (lost) {
+            if (error) {
+                size_t n = strlen(error->message);
+                snprintf(error->message + n, sizeof error->message - n,
+                         " (planarising the frame would lose %s, which follows the file's numbering)", lost);
+            }
+        } else {
+            ori_pattern *q = NULL;
+            ori_error_clear(error);
+            st = planarize(p, &q, error);
+            ori_pattern_destroy(p);
+            p = q;
+        }
     }
     if (st != ORI_OK) {
         ori_pattern_destroy(p);
@@ -591,6 +706,7 @@ static void write_pattern_fields(ori__frame *fr, const ori_pattern *p, ori__pack
     else if (p->has_fold_angles) ori__frame_set(fr, "edges_foldAngle", NULL, angles ? angles : pattern_angles_packed(p, NULL));
     else ori__frame_del(fr, "edges_foldAngle");
     if (p->face_count > 0) ori__frame_set(fr, "faces_vertices", NULL, faces_packed(p));
+    else ori__frame_del(fr, "faces_vertices"); // (the frame's old faces, if any, are another pattern's)
     if (any_face_name(p)) {
         json_t *names = json_array();
         for (int f = 0; f < p->face_count; ++f)

@@ -15,6 +15,7 @@ ori_build_def ori_default_build_def(void)
     def.weld = false;
     def.check_planarity = true;
     def.compute_faces = true;
+    def.planarize = false;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }

@@ -246,6 +246,7 @@ int ori_pattern_face_edges(const ori_pattern *p, int f, int *out, int cap)
 bool ori_pattern_is_folded_form(const ori_pattern *p) { ORI_ASSERT(p); return p->folded_form; }
 bool ori_pattern_has_fold_angles(const ori_pattern *p) { ORI_ASSERT(p); return p->has_fold_angles; }
 int ori_pattern_absent_fold_angle_count(const ori_pattern *p) { ORI_ASSERT(p); return p->absent_fold_angles; }
+int ori_pattern_planarized_from(const ori_pattern *p) { ORI_ASSERT(p); return p->planarized_from; }
 
 bool ori_pattern_is_3d(const ori_pattern *p)
 {

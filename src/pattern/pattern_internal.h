@@ -25,6 +25,7 @@ struct ori_pattern {
     bool folded_form;
     bool has_fold_angles;
     int absent_fold_angles;         // edges whose file fold angle was null (read as 0)
+    int planarized_from;            // FOLD frame planarised on reading: the file's edge count (0: not planarised)
 
     // Derived topology, valid while built is true.
     bool built;
