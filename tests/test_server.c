@@ -1975,6 +1975,26 @@ Test(server, underdetermined_fold_lock_hint_equals_cli_json)
     studio_destroy(s);
 }
 
+Test(server, fold_lock_auto_equals_cli_json)
+{
+    // "lock": "auto" with one drive: the lock set orikin fold --lock auto computes, then the same
+    // fold (the waterbomb base: several degrees of freedom)
+    studio *s = open_studio("tests/data/waterbomb-base.fold");
+    json_t *api = call_json(s, "POST", "/api/fold", NULL, "{\"fix\": 0, \"drive\": 8, \"to\": -60, \"step\": 10, \"lock\": \"auto\"}", 200);
+    json_t *cli = cli_json("fold tests/data/waterbomb-base.fold --fix 0 --drive 8 --to -60 --step 10 --lock auto --json", 0);
+    assert_same(api, cli, "lock auto");
+    cr_assert_str_eq(json_string_value(json_object_get(api, "verdict")), "valid");
+    cr_assert_gt(json_array_size(json_object_get(api, "locked")), 0);
+    json_decref(api);
+    json_decref(cli);
+    // a drive that leaves no freedom to lock away: the CLI's words
+    studio_response r = call(s, "POST", "/api/fold", NULL, "{\"fix\": 0, \"drive\": 8, \"to\": -60, \"lock\": \"nope\"}");
+    cr_assert_eq(r.status, 400);
+    cr_assert(strstr(r.body, "lock: \\\"auto\\\" or an array"), "%s", r.body);
+    studio_response_free(&r);
+    studio_destroy(s);
+}
+
 // Host parsing is strict (issue: "Host: 127.0.0.1:+PORT" was accepted, and of two Host headers
 // only the first was read): the port in decimal digits equal to ours, and one Host, Origin and
 // token header each.

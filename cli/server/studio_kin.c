@@ -439,6 +439,7 @@ typedef struct fold_request {
     studio_collide_opts collide;
     ori_solver solver;
     ori_linear linear;
+    bool lock_auto;                         // "lock": "auto" (orikin fold --lock auto with one drive)
     json_t *fix_ref, *drive_ref, *lock_ref; // borrowed from the request body
 } fold_request;
 
@@ -482,9 +483,10 @@ static bool resolve_fold(const ori_pattern *p, fold_request *f, studio_response 
     }
     if (!crease_ref(p, f->drive_ref, "drive", &f->spec.drive, out)) return false;
     f->spec.lock_count = 0;
-    if (f->lock_ref) {
+    f->lock_auto = json_is_string(f->lock_ref) && strcmp(json_string_value(f->lock_ref), "auto") == 0;
+    if (f->lock_ref && !f->lock_auto) {
         if (!json_is_array(f->lock_ref) || json_array_size(f->lock_ref) > STUDIO_MAX_LOCKS) {
-            studio_fail(out, 400, "lock: an array of at most %d edges (indices or \"@x,y\")", STUDIO_MAX_LOCKS);
+            studio_fail(out, 400, "lock: \"auto\" or an array of at most %d edges (indices or \"@x,y\")", STUDIO_MAX_LOCKS);
             return false;
         }
         for (size_t i = 0; i < json_array_size(f->lock_ref); ++i)
@@ -537,6 +539,32 @@ static bool parse_fold(json_t *o, fold_request *f, studio_response *out)
     return true;
 }
 
+// "lock": "auto" with one drive: the lock set that leaves the drive one degree of freedom
+// (ori_mechanism_lock_set), then the ordinary fold with those locks, as orikin fold does.
+static bool auto_locks(const ori_mechanism *m, const double *angles, fold_request *f, studio_response *out)
+{
+    int E = ori_mechanism_edge_count(m);
+    int *locks = malloc(sizeof(int) * (size_t)(E + 1));
+    ori_error err;
+    int n = ori_mechanism_lock_set(m, angles, &f->spec.drive, 1, NULL, 0, NULL, locks, E + 1, &err);
+    bool ok = true;
+    if (n < 0) {
+        studio_fail_error(out, 400, &err);
+        ok = false;
+    } else if (n == 0) {
+        studio_fail(out, 400, "lock auto: nothing to lock, the drive leaves no freedom");
+        ok = false;
+    } else if (n > STUDIO_MAX_LOCKS) {
+        studio_fail(out, 400, "lock auto: %d creases to lock, more than the studio's %d", n, STUDIO_MAX_LOCKS);
+        ok = false;
+    } else {
+        memcpy(f->spec.locks, locks, sizeof(int) * (size_t)n);
+        f->spec.lock_count = n;
+    }
+    free(locks);
+    return ok;
+}
+
 void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
 {
     json_t *o = studio_body_object(req, out);
@@ -584,6 +612,7 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
         ok = false;
     }
     ok = ok && check_fold_indices(m, "", f.spec.fix, f.spec.drive, false, f.spec.locks, f.spec.lock_count, out);
+    if (ok && f.lock_auto) ok = auto_locks(m, angles, &f, out);
     if (ok) {
         double start_deg = f.spec.has_from ? f.spec.from_deg : ori_rad_to_deg_output(angles[f.spec.drive]);
         double frames = frames_of(f.spec.to_deg - start_deg, f.spec.step_deg);
