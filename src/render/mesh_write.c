@@ -271,6 +271,7 @@ ori_status ori_mesh_export(const ori_mesh *m, const ori_export_def *def, void **
     *data = NULL;
     *size = 0;
     ori_status st = check_def(m, def, error);
+    if (st == ORI_OK) st = ori__value_map_check(&def->values, error);
     if (st != ORI_OK) return st;
     ori__text t = {NULL, 0, 0};
     ori__text_reserve(&t, 0);
