@@ -1304,3 +1304,198 @@ Test(render, fold_spec_box_follows_its_face_orders)
     ori_pattern_destroy(p);
     ori_fold_destroy(doc);
 }
+
+// --- colour by value ---------------------------------------------------------------------------
+
+// matplotlib's viridis at 0, 0.5 and 1 (matplotlib 3.6), the colours the fit must reproduce.
+static const ori_rgb viridis_ref[3] = {{0.267004, 0.004874, 0.329415}, {0.127568, 0.566949, 0.550556}, {0.993248, 0.906157, 0.143936}};
+
+static double luminance(ori_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+// The colour map is viridis within the fit's 2.4/255 at both ends and the middle, clamps outside
+// [0, 1] (NaN to the bottom), and its luminance rises from end to end (a perceptual ramp).
+Test(render, colormap_is_viridis)
+{
+    const double t[3] = {0.0, 0.5, 1.0};
+    for (int i = 0; i < 3; ++i) {
+        ori_rgb c = ori_colormap(t[i]);
+        cr_assert_leq(fabs(c.r - viridis_ref[i].r), 2.4 / 255, "t %g red %g", t[i], c.r);
+        cr_assert_leq(fabs(c.g - viridis_ref[i].g), 2.4 / 255, "t %g green %g", t[i], c.g);
+        cr_assert_leq(fabs(c.b - viridis_ref[i].b), 2.4 / 255, "t %g blue %g", t[i], c.b);
+    }
+    ori_rgb lo = ori_colormap(0.0), hi = ori_colormap(1.0), below = ori_colormap(-3.0), above = ori_colormap(7.0),
+            nan = ori_colormap(NAN);
+    cr_assert(below.r == lo.r && below.g == lo.g && below.b == lo.b);
+    cr_assert(nan.r == lo.r && nan.g == lo.g && nan.b == lo.b);
+    cr_assert(above.r == hi.r && above.g == hi.g && above.b == hi.b);
+    for (int k = 1; k <= 100; ++k)
+        cr_assert_gt(luminance(ori_colormap(k / 100.0)), luminance(ori_colormap((k - 1) / 100.0)), "luminance rises at %d %%", k);
+}
+
+// Ticks: min and max exactly at the ends, evenly between, "%.3g" labels, zero read as "0"; one
+// tick for an empty range. Positions clamp to [0, 1].
+Test(render, colour_bar_ticks_and_positions)
+{
+    ori_value_map m = {NULL, NULL, -0.5, 1.5};
+    double v[ORI_RENDER_BAR_TICKS];
+    char l[ORI_RENDER_BAR_TICKS][ORI_RENDER_BAR_LABEL_MAX];
+    cr_assert_eq(ori_value_map_ticks(&m, v, l), 5);
+    const double want[5] = {-0.5, 0.0, 0.5, 1.0, 1.5};
+    const char *labels[5] = {"-0.5", "0", "0.5", "1", "1.5"};
+    for (int k = 0; k < 5; ++k) {
+        cr_assert_float_eq(v[k], want[k], 1e-15, "tick %d", k);
+        cr_assert_str_eq(l[k], labels[k]);
+    }
+    // Roundoff at zero: -0.3 … 0.1 puts a tick near 0 (−0.3 + 0.3 misses by an ulp).
+    ori_value_map z = {NULL, NULL, -0.3, 0.1};
+    ori_value_map_ticks(&z, v, l);
+    cr_assert_str_eq(l[3], "0", "%s", l[3]);
+    ori_value_map small = {NULL, NULL, 0.0, 0.0237822885};
+    ori_value_map_ticks(&small, NULL, l);
+    cr_assert_str_eq(l[4], "0.0238");
+    cr_assert_str_eq(l[2], "0.0119");
+    ori_value_map one = {NULL, NULL, 2.0, 2.0};
+    cr_assert_eq(ori_value_map_ticks(&one, v, l), 1);
+    cr_assert_str_eq(l[0], "2");
+    cr_assert_eq(ori_value_map_position(&one, 2.0), 0.0);
+    cr_assert_eq(ori_value_map_position(&m, 1.5), 1.0);
+    cr_assert_eq(ori_value_map_position(&m, 9.0), 1.0);
+    cr_assert_eq(ori_value_map_position(&m, -9.0), 0.0);
+    cr_assert_float_eq(ori_value_map_position(&m, 0.0), 0.25, 1e-15);
+}
+
+// Where draw.c puts the colour bar: its label size, the strip's left edge, the bar's x range and
+// its top and bottom (image units).
+typedef struct bar_box {
+    double x0, x1, y_top, y_bot, strip;
+} bar_box;
+static bar_box bar_of(int w, int h)
+{
+    double fs = fmax(6.0, 0.024 * fmin(w, h));
+    bar_box b;
+    b.strip = fmin(w / 3.0, 10.0 * fs);
+    b.x0 = w - b.strip + 0.6 * fs;
+    b.x1 = b.x0 + 1.2 * fs;
+    b.y_top = 0.12 * h;
+    b.y_bot = 0.88 * h;
+    return b;
+}
+
+// Three faces with values 0.1, 0.7, 0.4 on a bar from 0.1 to 0.7, from the top: the face of the
+// largest value shows the bar's top colour, the smallest its bottom, the middle one the middle
+// (each channel to 1/255, Cairo's rounding: a face is painted unshaded in its colour); the bar's own top and bottom pixels
+// are those colours (to 2/255: the gradient's stops). The sheet is fitted left of the bar.
+Test(render, face_values_paint_the_bar_colours)
+{
+    const ori_assignment cr[2] = {ORI_ASSIGN_FLAT, ORI_ASSIGN_FLAT};
+    ori_pattern *p = strip(3, cr);
+    ori_state_view sv = {p, NULL, NULL};
+    ori_render_def d = top_def(600, 300);
+    d.shading = true; // painted faces ignore the light
+    const double vals[3] = {0.1, 0.7, 0.4};
+    d.values = (ori_value_map){vals, NULL, 0.1, 0.7};
+    ori_camera cam;
+    ori_error err;
+    cr_assert_eq(ori_render_camera(&sv, &d, &cam, &err), ORI_OK, "%s", err.message);
+    cairo_surface_t *s = render_png(&sv, &d);
+    const double t[3] = {0.0, 1.0, 0.5};
+    for (int f = 0; f < 3; ++f) {
+        ori_v3 c = ori_camera_project(&cam, ori_v3_make(f + 0.5, 0.5, 0));
+        rgb8 want = to8(ori_colormap(t[f]), 1), got = pixel(s, (int)c.x, (int)c.y);
+        cr_assert_leq(dist2(got, want), 3, "face %d at (%g, %g): %d %d %d, want %d %d %d", f, c.x, c.y, got.r, got.g, got.b, want.r,
+                      want.g, want.b);
+    }
+    bar_box b = bar_of(600, 300);
+    ori_v3 right = ori_camera_project(&cam, ori_v3_make(3, 0.5, 0));
+    cr_assert_lt(right.x, 600 - b.strip, "the sheet ends left of the bar's strip (x %g)", right.x);
+    int bx = (int)(0.5 * (b.x0 + b.x1));
+    int ys[2] = {(int)ceil(b.y_top) + 1, (int)floor(b.y_bot) - 2};
+    for (int k = 0; k < 2; ++k) {
+        // The gradient at the pixel's centre.
+        double tp = (b.y_bot - (ys[k] + 0.5)) / (b.y_bot - b.y_top);
+        rgb8 got = pixel(s, bx, ys[k]), want = to8(ori_colormap(tp), 1);
+        cr_assert_gt(k == 0 ? tp : 1.0 - tp, 0.98, "near the %s", k == 0 ? "top" : "bottom");
+        cr_assert_leq(dist2(got, want), 3 * 4, "bar at y %d (t %.3f): %d %d %d, want %d %d %d", ys[k], tp, got.r, got.g, got.b,
+                      want.r, want.g, want.b);
+    }
+    cairo_surface_destroy(s);
+    // A range that is not finite or reversed is refused.
+    d.values.min = 1.0;
+    d.values.max = 0.0;
+    void *data = NULL;
+    size_t size = 0;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "values"), "%s", err.message);
+    cr_assert_null(data);
+    d.values.max = INFINITY;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    ori_pattern_destroy(p);
+}
+
+// Whether n bytes at data hold text (the drawing buffers are not NUL-terminated).
+static bool has_bytes(const void *data, size_t n, const char *text)
+{
+    size_t k = strlen(text);
+    for (size_t i = 0; i + k <= n; ++i)
+        if (memcmp((const char *)data + i, text, k) == 0) return true;
+    return false;
+}
+
+// Edge values in the crease view: a crease with a value is stroked in its colour; without face
+// values the paper keeps its colour; an inactive map (no arrays) leaves the picture byte for byte
+// as without one, whatever its range says.
+Test(render, edge_values_stroke_the_creases)
+{
+    const ori_assignment cr[1] = {ORI_ASSIGN_VALLEY};
+    ori_pattern *p = strip(2, cr);
+    int crease = -1;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e)
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY) crease = e;
+    cr_assert_geq(crease, 0);
+    double *ev = malloc(sizeof(double) * (size_t)ori_pattern_edge_count(p));
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) ev[e] = NAN;
+    ev[crease] = 90.0;
+    ori_state_view sv = {p, NULL, NULL};
+    ori_render_def d = ori_default_render_def();
+    d.width = 1000;
+    d.height = 600;
+    d.values = (ori_value_map){NULL, ev, 0.0, 90.0};
+    cairo_surface_t *s = render_png(&sv, &d);
+    // The crease view's fit (draw.c): the 2 × 1 strip fills the image left of the bar's strip.
+    bar_box b = bar_of(1000, 600);
+    double W = 1000 - b.strip, H = 600, margin = 0.06 * fmin(W, H);
+    double sc = fmin((W - 2 * margin) / 2.0, (H - 2 * margin) / 1.0);
+    double ox = 0.5 * W - sc * 1.0, oy = 0.5 * H + sc * 0.5;
+    // The crease (2.4 pixels wide) at x = 1: the pixel of the row nearest its colour.
+    rgb8 want = to8(ori_colormap(1.0), 1), on = {0, 0, 0};
+    int cx = (int)lround(ox + sc * 1.0), cy = (int)(oy - sc * 0.5);
+    for (int x = cx - 3; x <= cx + 3; ++x)
+        if (dist2(pixel(s, x, cy), want) < dist2(on, want)) on = pixel(s, x, cy);
+    rgb8 paper = pixel(s, (int)(ox + sc * 0.5), cy);
+    cr_assert_leq(dist2(on, want), 3 * 4, "crease pixel %d %d %d, want %d %d %d", on.r, on.g, on.b, want.r, want.g, want.b);
+    cr_assert_leq(dist2(paper, (rgb8){251, 249, 244}), 3, "paper %d %d %d", paper.r, paper.g, paper.b);
+    cairo_surface_destroy(s);
+    // Inactive maps change nothing (PNG bytes compared; Cairo numbers SVG ids per process).
+    ori_render_def active = d;
+    ori_render_def d0 = d;
+    d0.values = ori_default_render_def().values;
+    d.values = (ori_value_map){NULL, NULL, 5.0, -3.0};
+    void *a = NULL, *c = NULL;
+    size_t na = 0, nc = 0;
+    ori_error err;
+    cr_assert_eq(ori_render_image(&sv, &d0, &a, &na, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_render_image(&sv, &d, &c, &nc, &err), ORI_OK, "%s", err.message);
+    cr_assert(na == nc && memcmp(a, c, na) == 0, "an inactive value map draws the same PNG");
+    ori_buffer_free(a);
+    ori_buffer_free(c);
+    // The SVG's colour bar is a vector gradient, there only with values.
+    d0.format = active.format = ORI_IMAGE_SVG;
+    cr_assert_eq(ori_render_image(&sv, &d0, &a, &na, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_render_image(&sv, &active, &c, &nc, &err), ORI_OK, "%s", err.message);
+    cr_assert_not(has_bytes(a, na, "linearGradient"), "no colour bar without values");
+    cr_assert(has_bytes(c, nc, "linearGradient"), "the colour bar's gradient");
+    ori_buffer_free(a);
+    ori_buffer_free(c);
+    free(ev);
+    ori_pattern_destroy(p);
+}
