@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <cairo.h>
 #include <gif_lib.h>
+#include <jansson.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 #include <math.h>
@@ -1466,7 +1467,7 @@ Test(render, edge_values_stroke_the_creases)
     double W = 1000 - b.strip, H = 600, margin = 0.06 * fmin(W, H);
     double sc = fmin((W - 2 * margin) / 2.0, (H - 2 * margin) / 1.0);
     double ox = 0.5 * W - sc * 1.0, oy = 0.5 * H + sc * 0.5;
-    // The crease (2.4 pixels wide) at x = 1: the pixel of the row nearest its colour.
+    // The crease (3.75 pixels wide) at x = 1: the pixel of the row nearest its colour.
     rgb8 want = to8(ori_colormap(1.0), 1), on = {0, 0, 0};
     int cx = (int)lround(ox + sc * 1.0), cy = (int)(oy - sc * 0.5);
     for (int x = cx - 3; x <= cx + 3; ++x)
@@ -1498,4 +1499,122 @@ Test(render, edge_values_stroke_the_creases)
     ori_buffer_free(c);
     free(ev);
     ori_pattern_destroy(p);
+}
+
+// A frame's field as n numbers (malloc'd).
+static double *frame_numbers(const ori_fold *doc, int frame, const char *key, int n)
+{
+    char *text = ori_fold_get_custom(doc, frame, key);
+    cr_assert_not_null(text, "frame %d has %s", frame, key);
+    json_t *a = json_loads(text, JSON_DECODE_ANY, NULL);
+    ori_buffer_free(text);
+    cr_assert(json_is_array(a) && (int)json_array_size(a) == n, "%s has %d entries", key, n);
+    double *v = calloc((size_t)n + 1, sizeof(double));
+    for (int k = 0; k < n; ++k) v[k] = json_number_value(json_array_get(a, (size_t)k));
+    json_decref(a);
+    return v;
+}
+
+// The compliant open corner at 40 % (orikin fold --compliant -o): render --color strain paints
+// its most strained face (faces_orikin:strain of the frame) the bar's top colour and its least
+// strained face the bottom's, in the crease view; --json reports the bar's range as the frame's
+// smallest and largest face strain, labelled as printed; the 3D view shows the top colour
+// somewhere; a frame without strains is an input error that writes nothing.
+Test(render, cli_color_strain_paints_the_most_strained_face)
+{
+    char *dir = test_tmpdir();
+    char args[2048], path[1024], *out = NULL;
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 -o '%s/o.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/o.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    int F = ori_pattern_face_count(p);
+    double *fs = frame_numbers(doc, 1, "faces_orikin:strain", F);
+    int top = 0, bottom = 0;
+    for (int f = 1; f < F; ++f) {
+        if (fs[f] > fs[top]) top = f;
+        if (fs[f] < fs[bottom]) bottom = f;
+    }
+    cr_assert_gt(fs[top], 0.01, "the open corner at 40 %% strains (%g)", fs[top]);
+    for (int f = 0; f < F; ++f) cr_assert(f == top || fs[f] < fs[top] * 0.99, "one face strains most");
+
+    snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --view cp --color strain --json -o '%s/s.png'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    json_t *rep = json_loads(out, 0, NULL);
+    cr_assert_not_null(rep, "%s", out);
+    free(out);
+    json_t *col = json_object_get(rep, "color");
+    cr_assert_str_eq(json_string_value(json_object_get(col, "quantity")), "strain");
+    cr_assert_eq(json_integer_value(json_object_get(col, "shown")), F);
+    cr_assert_eq(json_real_value(json_object_get(col, "max")), fs[top], "bar max = the largest face strain");
+    cr_assert_eq(json_real_value(json_object_get(col, "min")), fs[bottom], "bar min = the smallest face strain");
+    json_t *labels = json_object_get(col, "labels");
+    cr_assert_eq(json_array_size(labels), ORI_RENDER_BAR_TICKS);
+    char want[32];
+    snprintf(want, sizeof want, "%.3g", fs[bottom]);
+    cr_assert_str_eq(json_string_value(json_array_get(labels, 0)), want);
+    snprintf(want, sizeof want, "%.3g", fs[top]);
+    cr_assert_str_eq(json_string_value(json_array_get(labels, ORI_RENDER_BAR_TICKS - 1)), want);
+    json_decref(rep);
+
+    // The crease view's fit (draw.c) of the sheet's box left of the bar's strip; each face's
+    // area centroid (inside: the open corner's faces are convex).
+    snprintf(path, sizeof path, "%s/s.png", dir);
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    cr_assert_eq(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        x0 = fmin(x0, q.x), x1 = fmax(x1, q.x), y0 = fmin(y0, q.y), y1 = fmax(y1, q.y);
+    }
+    bar_box b = bar_of(800, 600);
+    double W = 800 - b.strip, H = 600, margin = 0.06 * fmin(W, H);
+    double sc = fmin((W - 2 * margin) / (x1 - x0), (H - 2 * margin) / (y1 - y0));
+    double ox = 0.5 * W - sc * 0.5 * (x0 + x1), oy = 0.5 * H + sc * 0.5 * (y0 + y1);
+    const int faces[2] = {top, bottom};
+    for (int i = 0; i < 2; ++i) {
+        int fv[16], n = ori_pattern_face_vertices(p, faces[i], fv, 16);
+        double cx = 0, cy = 0;
+        for (int k = 0; k < n; ++k) {
+            cx += ori_pattern_vertex(p, fv[k]).x / n;
+            cy += ori_pattern_vertex(p, fv[k]).y / n;
+        }
+        rgb8 got = pixel(s, (int)(ox + sc * cx), (int)(oy - sc * cy)), w8 = to8(ori_colormap(i == 0 ? 1.0 : 0.0), 1);
+        cr_assert_leq(dist2(got, w8), 3, "face %d (%s strain %g): %d %d %d, want %d %d %d", faces[i], i == 0 ? "largest" : "smallest",
+                      fs[faces[i]], got.r, got.g, got.b, w8.r, w8.g, w8.b);
+    }
+    cairo_surface_destroy(s);
+
+    // The 3D view of the same frame: the top colour covers a good part of the picture (face 3
+    // is a quarter of the sheet), left of the bar.
+    snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --color strain -o '%s/s3.png'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    snprintf(want, sizeof want, "strain of %d faces from", F);
+    cr_assert(strstr(out, want), "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/s3.png", dir);
+    s = cairo_image_surface_create_from_png(path);
+    rgb8 hi8 = to8(ori_colormap(1.0), 1);
+    long hits = 0;
+    for (int y = 0; y < 600; ++y)
+        for (int x = 0; x < 800 - (int)b.strip; ++x) hits += dist2(pixel(s, x, y), hi8) <= 3;
+    cr_assert_gt(hits, 800 * 600 / 20, "%ld pixels of the top colour", hits);
+    cairo_surface_destroy(s);
+
+    // Frame 0 is the crease pattern: no strains. Nothing is written.
+    snprintf(args, sizeof args, "render '%s/o.fold' --color strain -o '%s/none.png'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert(strstr(out, "faces_orikin:strain") && strchr(out, '\n') == out + strlen(out) - 1, "one line: %s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/none.png", dir);
+    cr_assert_neq(access(path, F_OK), 0, "nothing written");
+    free(fs);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    test_tmpdir_remove(dir);
 }

@@ -322,6 +322,9 @@ static double bar_strip(const ori_render_def *def)
     return fmin(def->width / 3.0, 10.0 * fs);
 }
 
+// Width of an edge painted by its value, in line widths (wider than a crease, to show its colour).
+#define VALUE_LINE_WIDTH 2.5
+
 static ori_rgb value_colour(const ori_value_map *map, double v) { return ori_colormap(ori_value_map_position(map, v)); }
 
 // The colour bar in the strip: min at the bottom, max at the top, a gradient through the colour
@@ -359,7 +362,7 @@ static void draw_bar(cairo_t *cr, const ori_render_def *def)
         cairo_stroke(cr);
         size_t len = strlen(labels[k]);
         double width = (double)(len - 1) * 0.8 * fs + 0.5 * fs;
-        draw_label(cr, x0 + bw + 0.7 * fs + 0.5 * width, y, labels[k], rgb_of(0x202020), fs);
+        draw_label(cr, x0 + bw + 0.9 * fs + 0.5 * width, y, labels[k], rgb_of(0x202020), fs);
     }
 }
 
@@ -452,7 +455,7 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
     }
     cairo_set_dash(cr, NULL, 0, 0);
     if (vm->edge_values) {
-        cairo_set_line_width(cr, 1.6 * lw);
+        cairo_set_line_width(cr, VALUE_LINE_WIDTH * lw);
         cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
         for (int e = 0; e < ne; ++e) {
             if (isnan(vm->edge_values[e])) continue;
@@ -787,7 +790,7 @@ static void draw_3d(cairo_t *cr, const ori_mesh *m, const ori_render_def *def, c
             line_style st = edge_style_3d(m->assign[e]);
             if (def->values.edge_values && !isnan(def->values.edge_values[e])) {
                 st.colour = value_colour(&def->values, def->values.edge_values[e]);
-                st.width = 1.6;
+                st.width = VALUE_LINE_WIDTH;
             }
             apply_style(cr, &st, lw);
             cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
