@@ -1519,7 +1519,8 @@ static double *frame_numbers(const ori_fold *doc, int frame, const char *key, in
 // its most strained face (faces_orikin:strain of the frame) the bar's top colour and its least
 // strained face the bottom's, in the crease view; --json reports the bar's range as the frame's
 // smallest and largest face strain, labelled as printed; the 3D view shows the top colour
-// somewhere; a frame without strains is an input error that writes nothing.
+// somewhere; edges_orikin:strain alone gives each face its edges' largest |strain|; a frame
+// without strains, or with a field of the wrong length, is an input error that writes nothing.
 Test(render, cli_color_strain_paints_the_most_strained_face)
 {
     char *dir = test_tmpdir();
@@ -1550,6 +1551,7 @@ Test(render, cli_color_strain_paints_the_most_strained_face)
     free(out);
     json_t *col = json_object_get(rep, "color");
     cr_assert_str_eq(json_string_value(json_object_get(col, "quantity")), "strain");
+    cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "face");
     cr_assert_eq(json_integer_value(json_object_get(col, "shown")), F);
     cr_assert_eq(json_real_value(json_object_get(col, "max")), fs[top], "bar max = the largest face strain");
     cr_assert_eq(json_real_value(json_object_get(col, "min")), fs[bottom], "bar min = the smallest face strain");
@@ -1605,6 +1607,30 @@ Test(render, cli_color_strain_paints_the_most_strained_face)
         for (int x = 0; x < 800 - (int)b.strip; ++x) hits += dist2(pixel(s, x, y), hi8) <= 3;
     cr_assert_gt(hits, 800 * 600 / 20, "%ld pixels of the top colour", hits);
     cairo_surface_destroy(s);
+
+    // Without faces_orikin:strain a face's strain is the largest |strain| of its edges
+    // (edges_orikin:strain): the bar's top is the largest |edge strain|. A field of the wrong
+    // length is an input error naming it.
+    int E = ori_pattern_edge_count(p);
+    double *es = frame_numbers(doc, 1, "edges_orikin:strain", E), emax = 0.0;
+    for (int e = 0; e < E; ++e) emax = fmax(emax, fabs(es[e]));
+    free(es);
+    cr_assert_eq(ori_fold_set_custom(doc, 1, "faces_orikin:strain", NULL, &err), ORI_OK, "%s", err.message);
+    snprintf(path, sizeof path, "%s/edges.fold", dir);
+    cr_assert_eq(ori_fold_save_file(doc, path, &err), ORI_OK, "%s", err.message);
+    snprintf(args, sizeof args, "render '%s' --frame 1 --color strain --json -o '%s/e.png'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    rep = json_loads(out, 0, NULL);
+    cr_assert_not_null(rep, "%s", out);
+    free(out);
+    cr_assert_eq(json_real_value(json_object_get(json_object_get(rep, "color"), "max")), emax, "the largest |edge strain| %g", emax);
+    json_decref(rep);
+    cr_assert_eq(ori_fold_set_custom(doc, 1, "faces_orikin:strain", "[0.1,0.2]", &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fold_save_file(doc, path, &err), ORI_OK, "%s", err.message);
+    snprintf(args, sizeof args, "render '%s' --frame 1 --color strain -o '%s/bad.png'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert(strstr(out, "frame 1: faces_orikin:strain is not 5 finite numbers"), "%s", out);
+    free(out);
 
     // Frame 0 is the crease pattern: no strains. Nothing is written.
     snprintf(args, sizeof args, "render '%s/o.fold' --color strain -o '%s/none.png'", dir, dir);
