@@ -1644,3 +1644,54 @@ Test(render, cli_color_strain_paints_the_most_strained_face)
     ori_fold_destroy(doc);
     test_tmpdir_remove(dir);
 }
+
+// --color target-error and fold-angle of a compliant frame agree with the fold's own report:
+// the bar's top is the fold's crease_error_deg (its largest |ρ − target × fraction|, computed by
+// the model) and the largest crease fold angle of fold_angles_deg, to 1e-9 degrees (the frame
+// stores the angles in degrees).
+Test(render, cli_color_target_error_matches_the_fold_report)
+{
+    char *dir = test_tmpdir();
+    char args[2048], *out = NULL;
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 --json -o '%s/o.fold'", dir);
+    cr_assert_eq(test_run_cli_split(args, &out, NULL), 0, "%s", out);
+    json_t *fold = json_loads(out, 0, NULL);
+    cr_assert_not_null(fold, "%s", out);
+    free(out);
+    double cerr = json_real_value(json_object_get(fold, "crease_error_deg"));
+    cr_assert_gt(cerr, 1.0, "the open corner at 40 %% misses its targets (%g deg)", cerr);
+    test_open_corner oc = test_open_corner_load();
+    json_t *ang = json_object_get(fold, "fold_angles_deg");
+    double amax = -INFINITY, amin = INFINITY;
+    for (int e = 0; e < ori_pattern_edge_count(oc.p); ++e) {
+        int f[2];
+        ori_pattern_edge_faces(oc.p, e, f);
+        if (f[0] < 0 || f[1] < 0) continue;
+        double a = json_real_value(json_array_get(ang, (size_t)e));
+        amax = fmax(amax, a);
+        amin = fmin(amin, a);
+    }
+    test_open_corner_free(&oc);
+    json_decref(fold);
+    const char *kinds[2] = {"target-error", "fold-angle"};
+    for (int k = 0; k < 2; ++k) {
+        snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --color %s --json -o '%s/t.svg'", dir, kinds[k], dir);
+        cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+        json_t *rep = json_loads(out, 0, NULL);
+        cr_assert_not_null(rep, "%s", out);
+        free(out);
+        json_t *col = json_object_get(rep, "color");
+        cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "crease");
+        cr_assert_eq(json_integer_value(json_object_get(col, "shown")), 5, "the open corner's five creases");
+        double mx = json_real_value(json_object_get(col, "max")), mn = json_real_value(json_object_get(col, "min"));
+        if (k == 0) {
+            cr_assert_float_eq(mx, cerr, 1e-9, "target-error max %.12g, fold's crease error %.12g", mx, cerr);
+            cr_assert_geq(mn, 0.0);
+        } else {
+            cr_assert_float_eq(mx, amax, 1e-9, "fold-angle max %.12g vs %.12g", mx, amax);
+            cr_assert_float_eq(mn, amin, 1e-9, "fold-angle min %.12g vs %.12g", mn, amin);
+        }
+        json_decref(rep);
+    }
+    test_tmpdir_remove(dir);
+}
