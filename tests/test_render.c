@@ -950,6 +950,13 @@ Test(render, gif_animation_decodes)
     cr_assert_gt(paper, 160 * 120 / 10, "the last frame shows the cube (%d paper pixels)", paper);
     DGifCloseFile(gif, &e);
     ori_buffer_free(data);
+    // Colour by value is for one state: an animation refuses values.
+    double vals[5] = {0, 1, 2, 3, 4};
+    d.render.values = (ori_value_map){vals, NULL, 0.0, 4.0};
+    data = NULL;
+    cr_assert_eq(ori_gif_write(&d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "values"), "%s", err.message);
+    cr_assert_null(data);
     ori_record_destroy(r);
     ori_sequence_destroy(s);
     test_open_corner_free(&k.c);

@@ -223,7 +223,7 @@ typedef struct ori_render_def {
 
 /// Defaults: crease view, PNG, 800 × 600, iso camera fitted, amber front (#e8a33d) and ivory
 /// back (#f3efe4) on white, shading on, no grid, labels off, failing vertices marked, no
-/// texture, no faceOrders, line width 1/400 of the smaller side.
+/// texture, no faceOrders, no values (colour by value off), line width 1/400 of the smaller side.
 ORI_API ori_render_def ori_default_render_def(void);
 
 /// The camera a 3D drawing of the state uses (def's camera, fitted when def->fit_camera).
@@ -234,7 +234,7 @@ ORI_API ori_status ori_render_camera(const ori_state_view *state, const ori_rend
 /// with ORI_ERR_ARGUMENT for a size out of range, an unknown format or faceOrders naming a face
 /// that does not exist (or with s not ±1), ORI_ERR_UNSUPPORTED for
 /// the crease view of a folded form, ORI_ERR_PARSE for a texture that is not a readable PNG,
-/// and as ori_mesh_create.
+/// ORI_ERR_ARGUMENT for values whose range is not finite with min ≤ max, and as ori_mesh_create.
 ORI_API ori_status ori_render_image(const ori_state_view *state, const ori_render_def *def, void **data,
                                     size_t *size, ori_error *error);
 /// Draw a state to path atomically (ori_file_write_atomic) in the format of the path's
@@ -250,7 +250,7 @@ typedef ori_status ori_frame_fn(int index, ori_state_view *out, void *user, ori_
 
 /// Animation parameters; get them from ori_default_gif_def().
 typedef struct ori_gif_def {
-    ori_render_def render;    ///< how a frame is drawn (format ignored); with fit_camera the camera is fitted once to every frame, so the shape does not jump
+    ori_render_def render;    ///< how a frame is drawn (format ignored; no values: colour by value is for one state); with fit_camera the camera is fitted once to every frame, so the shape does not jump
     int frame_count;          ///< ≥ 1
     ori_frame_fn *frame;      ///< the frames (each is asked for more than once)
     void *user;               ///< passed to frame
@@ -267,7 +267,7 @@ ORI_API ori_gif_def ori_default_gif_def(void);
 /// Draw every frame and encode an animated GIF into memory (free *data with ori_buffer_free).
 /// One global palette of 256 colours by median cut over sample frames (docs/render.md), each
 /// frame stored as the rectangle that changed. Fails as ori_render_image, with ORI_ERR_LIMIT
-/// when cancelled.
+/// when cancelled, and with ORI_ERR_ARGUMENT for render values (colour by value).
 ORI_API ori_status ori_gif_write(const ori_gif_def *def, void **data, size_t *size, ori_error *error);
 
 // --- meshes -------------------------------------------------------------------------------
@@ -310,12 +310,13 @@ typedef struct ori_thick_info {
 ORI_API ori_status ori_mesh_thick_panels(const ori_mesh *mesh, const ori_export_def *def, ori_thick_info *out,
                                          ori_error *error);
 
-/// Defaults: glTF, no thickness, the render colours (front, back) and grey rims, no animation.
+/// Defaults: glTF, no thickness, the render colours (front, back) and grey rims, no animation,
+/// no values (no vertex colours).
 ORI_API ori_export_def ori_default_export_def(void);
 /// Write the mesh in its current pose (or animated) into memory (*data, *size; free with
 /// ori_buffer_free). Fails with ORI_ERR_ARGUMENT for an unknown format, a negative or
-/// non-finite thickness, keyframes for a format other than glTF/GLB or with a thickness, or
-/// times that do not increase.
+/// non-finite thickness, keyframes for a format other than glTF/GLB or with a thickness,
+/// times that do not increase, or face values whose range is not finite with min ≤ max.
 ORI_API ori_status ori_mesh_export(const ori_mesh *mesh, const ori_export_def *def, void **data, size_t *size,
                                    ori_error *error);
 /// The OBJ material library (MTL text: materials front, back and rim with def's colours) into

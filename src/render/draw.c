@@ -101,6 +101,7 @@ ori_render_def ori_default_render_def(void)
     d.mark_failing = true;
     d.texture_png = NULL;
     d.texture_size = 0;
+    d.values = (ori_value_map){NULL, NULL, 0.0, 1.0};
     d.line_width_rel = 1.0 / 400.0;
     d.internal_value = ORI__DEF_COOKIE;
     return d;

@@ -32,6 +32,7 @@ ori_export_def ori_default_export_def(void)
     d.obj_mtllib = NULL;
     d.face_orders = NULL;
     d.face_order_count = 0;
+    d.values = (ori_value_map){NULL, NULL, 0.0, 1.0};
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
