@@ -1381,7 +1381,7 @@ static bar_box bar_of(int w, int h)
 {
     double fs = fmax(6.0, 0.024 * fmin(w, h));
     bar_box b;
-    b.strip = fmin(w / 3.0, 10.0 * fs);
+    b.strip = fmin(w / 3.0, 11.0 * fs);
     b.x0 = w - b.strip + 0.6 * fs;
     b.x1 = b.x0 + 1.2 * fs;
     b.y_top = 0.12 * h;

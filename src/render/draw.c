@@ -315,12 +315,12 @@ static void draw_label(cairo_t *cr, double x, double y, const char *text, ori_rg
 static double bar_font(const ori_render_def *def) { return fmax(6.0, 0.024 * fmin(def->width, def->height)); }
 
 // Width of the strip on the right that the colour bar takes (0 without values): the bar, its
-// ticks and labels of up to 9 characters. At most a third of the image.
+// ticks and labels of up to 9 characters ("-1.23e-05"). At most a third of the image.
 static double bar_strip(const ori_render_def *def)
 {
     if (!ori__value_map_active(&def->values)) return 0.0;
     double fs = bar_font(def);
-    return fmin(def->width / 3.0, 10.0 * fs);
+    return fmin(def->width / 3.0, 11.0 * fs);
 }
 
 // Width of an edge painted by its value, in line widths (wider than a crease, to show its colour).
