@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "color_args.h"
 #include "state_args.h"
 
 static int run(int argc, char **argv)
@@ -14,6 +15,7 @@ static int run(int argc, char **argv)
     const char *out = NULL;
     bool json = false, animate = false, has_thickness = false, has_front = false, has_back = false;
     double thickness = 0.0;
+    int color = -1; // --color: -1 not given (strain when the frame has strains), 0 none, 1 strain
     ori_export_def def = ori_default_export_def();
     int rc;
     for (int i = 1; i < argc; ++i) {
@@ -39,6 +41,13 @@ static int run(int argc, char **argv)
             if (!ori_rgb_parse(v, front ? &def.front : &def.back))
                 return cli_usage(cmd, "%s needs a colour (#rrggbb, #rgb or a name such as orange), got '%s'", o, v);
             *(front ? &has_front : &has_back) = true;
+        } else if (strcmp(o, "--color") == 0) {
+            if (color >= 0) return cli_usage(cmd, "--color given twice");
+            const char *v = cli_option_value(cmd, argc, argv, &i);
+            if (!v) return CLI_EXIT_USAGE;
+            if (strcmp(v, "strain") == 0) color = 1;
+            else if (strcmp(v, "none") == 0) color = 0;
+            else return cli_usage(cmd, "--color is strain or none (a mesh colours its faces by strain), got '%s'", v);
         } else if (strcmp(o, "--animate") == 0) {
             if (animate) return cli_usage(cmd, "--animate given twice");
             animate = true;
@@ -63,12 +72,33 @@ static int run(int argc, char **argv)
         if (sa.source == CLI_STATE_FRAME && sa.has_frame)
             return cli_usage(cmd, "--animate exports every frame of IN: --frame only starts a fold given with fold options");
     }
+    bool gltf = format == ORI_MESH_GLTF || format == ORI_MESH_GLB;
+    if (color == 1 && !gltf) return cli_usage(cmd, "--color strain writes vertex colours (COLOR_0): use -o OUT.gltf or OUT.glb");
+    if (color == 1 && animate) return cli_usage(cmd, "--color strain colours one state: it takes no --animate");
     cli_state st;
     if ((rc = cli_state_load(cmd, &sa, !animate, &st)) != CLI_EXIT_OK) return rc;
+    // Strain colours: asked for, or by default for a glTF of a frame that carries strains.
+    cli_colors colors;
+    memset(&colors, 0, sizeof colors);
+    bool colored = color == 1;
+    if (color < 0 && gltf && !animate && st.source == CLI_STATE_FRAME && st.doc) {
+        const char *keys[2] = {"faces_orikin:strain", "edges_orikin:strain"};
+        for (int k = 0; k < 2 && !colored; ++k) {
+            char *t = ori_fold_get_custom(st.doc, sa.frame, keys[k]);
+            colored = t != NULL;
+            ori_buffer_free(t);
+        }
+    }
+    if (colored && (rc = cli_colors_load(cmd, &sa, &st, CLI_COLOR_STRAIN, &colors)) != CLI_EXIT_OK) {
+        cli_state_free(&st);
+        return rc;
+    }
+    if (colored) def.values = cli_colors_map(&colors);
     ori_state_view sv = cli_state_view(&st);
     ori_mesh *mesh = NULL;
     ori_error err;
     if (ori_mesh_create(&sv, &mesh, &err) != ORI_OK) {
+        cli_colors_free(&colors);
         cli_state_free(&st);
         return cli_input_error(cmd, sa.path, &err);
     }
@@ -127,6 +157,7 @@ static int run(int argc, char **argv)
         json_object_set_new(o, "overlapping", thickness > 0.0 ? json_integer(thick.overlapping) : json_null());
         json_object_set_new(o, "keyframes", json_integer(animate ? m.count : 0));
         json_object_set_new(o, "duration_s", animate ? json_real(m.times[m.count - 1] - m.times[0]) : json_null());
+        json_object_set_new(o, "color", colored ? cli_colors_json(&colors) : json_null());
         cli_print_json(o);
     } else if (animate) {
         printf("wrote %s: %d faces as nodes, %d keyframes over %g s (%s)\n", out, ori_mesh_face_count(mesh), m.count,
@@ -140,6 +171,7 @@ static int run(int argc, char **argv)
             if (thick.front) printf(", %d on the front side", thick.front);
             if (thick.overlapping) printf(", %d triangle pairs still overlapping", thick.overlapping);
         }
+        if (colored) printf(", COLOR_0 by strain from %.4g to %.4g", colors.min, colors.max);
         printf(" (%s)\n", ori_mesh_format_name(format));
         if (format == ORI_MESH_OBJ) printf("wrote its materials (front, back%s) beside it, .mtl\n", thickness > 0.0 ? ", rim" : "");
     }
@@ -147,6 +179,7 @@ done:
     if (poses && poses != m.poses) free(poses);
     cli_motion_free(&m);
     ori_mesh_destroy(mesh);
+    cli_colors_free(&colors);
     cli_state_free(&st);
     return rc;
 }
@@ -155,7 +188,8 @@ const cli_command cli_cmd_export = {
     "export",
     "a mesh of any state (OBJ, STL, PLY, glTF, GLB), thickened or animated",
     "usage: orikin export IN [--frame N | fold options | --at T] [--thickness T] [--animate]\n"
-    "                     [--front COLOR] [--back COLOR] [--json] -o OUT.{obj,stl,ply,gltf,glb}\n"
+    "                     [--front COLOR] [--back COLOR] [--color strain|none] [--json]\n"
+    "                     -o OUT.{obj,stl,ply,gltf,glb}\n"
     "\n"
     "Write the posed sheet of a state of IN (see orikin render for the state options) as a mesh:\n"
     "every face triangulated (ear clipping, non-convex faces too), both sides with their normals\n"
@@ -171,8 +205,11 @@ const cli_command cli_cmd_export = {
     "the file names them (OBJ objects panel_K, STL solids orikin_thick_panel_K). --animate\n"
     "writes the whole motion (a fold's steps, a sequence's recorded states, or a FOLD file's\n"
     "frames) as a glTF animation: one node per face, rotation and translation keyframes from the\n"
-    "exact face poses, one second per fold.\n"
-    "\n"
+    "exact face poses, one second per fold. A glTF of a frame that carries strains (the frames\n"
+    "`orikin fold --compliant -o` writes) gets every vertex coloured by its face's strain\n"
+    "(COLOR_0, viridis from the smallest to the largest, as render --color strain; white materials).\n"
+    "\n",
+    run,
     "options:\n"
     "  --frame N            the state in frame N of a FOLD file (default 0)\n"
     "  --fix F --drive E --to DEG [--from DEG] [--step DEG] [--lock E1,...] [--solver S]\n"
@@ -185,13 +222,14 @@ const cli_command cli_cmd_export = {
     "  --animate            the whole motion as a glTF animation (.gltf or .glb only)\n"
     "  --front COLOR        material of the front side (default #e8a33d)\n"
     "  --back COLOR         material of the back side (default #f3efe4)\n"
+    "  --color strain|none  glTF/GLB vertex colours by face strain (default: strain when the\n"
+    "                       frame has faces_orikin:strain or edges_orikin:strain), or none\n"
     "  --json               print {output, format, state, vertices, faces, triangles, area,\n"
     "                       thickness, volume, panels, stacked_panels, front_panels,\n"
-    "                       overlapping, keyframes, duration_s}\n"
+    "                       overlapping, keyframes, duration_s, color {quantity, per, shown,\n"
+    "                       min, max, labels} | null}\n"
     "  -o OUT               the mesh; its format by the suffix .obj, .stl, .ply, .gltf or .glb\n"
     "                       (an OBJ comes with its materials in OUT.mtl beside it)\n"
     "\n"
     "example: orikin export examples/open-corner.seq.json --animate -o open-corner.glb\n",
-    run,
-    NULL,
 };

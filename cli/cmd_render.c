@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "color_args.h"
 #include "render_args.h"
 #include "state_args.h"
 
@@ -15,12 +16,16 @@ static int run(int argc, char **argv)
     cli_render_args_init(&ra);
     const char *out = NULL;
     bool json = false;
+    cli_color_kind color = CLI_COLOR_NONE;
     int rc;
     for (int i = 1; i < argc; ++i) {
         int took = cli_state_option(cmd, argc, argv, &i, &sa, &rc);
         if (took < 0) return rc;
         if (took) continue;
         took = cli_render_option(cmd, argc, argv, &i, &ra, true, &rc);
+        if (took < 0) return rc;
+        if (took) continue;
+        took = cli_color_option(cmd, argc, argv, &i, &color, &rc);
         if (took < 0) return rc;
         if (took) continue;
         if (strcmp(argv[i], "-o") == 0) {
@@ -57,18 +62,27 @@ static int run(int argc, char **argv)
         cli_state_free(&st);
         return cli_input_fail(cmd, sa.path, "frame %d is a folded form without a crease pattern: use --view 3d", sa.frame);
     }
-    ori_render_def def = ori_default_render_def();
-    void *texture = NULL;
-    if ((rc = cli_render_def(cmd, &ra, &def, &texture)) != CLI_EXIT_OK) {
+    cli_colors colors;
+    memset(&colors, 0, sizeof colors);
+    if (color != CLI_COLOR_NONE && (rc = cli_colors_load(cmd, &sa, &st, color, &colors)) != CLI_EXIT_OK) {
         cli_state_free(&st);
         return rc;
     }
+    ori_render_def def = ori_default_render_def();
+    void *texture = NULL;
+    if ((rc = cli_render_def(cmd, &ra, &def, &texture)) != CLI_EXIT_OK) {
+        cli_colors_free(&colors);
+        cli_state_free(&st);
+        return rc;
+    }
+    if (color != CLI_COLOR_NONE) def.values = cli_colors_map(&colors);
     def.view = view;
     def.format = format;
     def.face_orders = st.face_orders; // a frame's own layer order of stacked faces
     def.face_order_count = st.face_order_count;
     if (texture && !st.has_flat) {
         ori_buffer_free(texture);
+        cli_colors_free(&colors);
         cli_state_free(&st);
         return cli_input_fail(cmd, sa.path, "--texture needs a flat crease pattern for texture coordinates; this is a folded form");
     }
@@ -99,6 +113,7 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "faces", json_integer(ori_pattern_face_count(st.pattern)));
             json_object_set_new(o, "face_orders", json_integer(view == ORI_RENDER_3D ? st.face_order_count : 0));
             json_object_set_new(o, "failing_vertices", failing >= 0 ? json_integer(failing) : json_null());
+            json_object_set_new(o, "color", color != CLI_COLOR_NONE ? cli_colors_json(&colors) : json_null());
             cli_print_json(o);
         } else {
             printf("wrote %s: %s of %s, %s (%dx%d %s)", out, view_name, sa.path, st.label, def.width, def.height,
@@ -106,10 +121,14 @@ static int run(int argc, char **argv)
             if (failing > 0)
                 printf("; %d %s not locally flat-foldable %s ringed", failing, failing == 1 ? "vertex" : "vertices",
                        failing == 1 ? "is" : "are");
+            if (color != CLI_COLOR_NONE)
+                printf("; %s of %d %s from %.4g to %.4g", cli_color_name(color), colors.shown,
+                       colors.face_values ? "faces" : "creases", colors.min, colors.max);
             printf("\n");
         }
     }
     ori_buffer_free(texture);
+    cli_colors_free(&colors);
     cli_state_free(&st);
     return rc;
 }
@@ -120,7 +139,8 @@ const cli_command cli_cmd_render = {
     "usage: orikin render IN [--frame N | fold options | --at T] [--view cp|3d]\n"
     "                     [--camera iso|top|front|side|bottom] [--yaw DEG] [--pitch DEG]\n"
     "                     [--roll DEG] [--perspective] [--size WxH] [--front COLOR] [--back COLOR]\n"
-    "                     [--texture IMG.png] [--edges] [--grid] [--labels] [--json]\n"
+    "                     [--texture IMG.png] [--edges] [--grid] [--labels]\n"
+    "                     [--color strain|fold-angle|target-error] [--json]\n"
     "                     -o OUT.{svg,pdf,png}\n"
     "\n"
     "Draw a state of IN. IN is a FOLD file (--frame N: a folded form, or a crease pattern posed\n"
@@ -136,7 +156,12 @@ const cli_command cli_cmd_render = {
     "faceOrders when it has them (a folded form's own, or the frame `orikin layers -o` writes),\n"
     "else the fold tree. The view is cp for a crease-pattern frame (unless a\n"
     "3D option is given), 3D for a folded form, a fold or a sequence.\n"
-    "\n"
+    "--color paints a quantity in either view with a colour bar on the right (viridis from the\n"
+    "smallest value shown to the largest, five labelled ticks): strain per face (the largest\n"
+    "|axial strain| of its bars, from the frames `orikin fold --compliant -o` writes), fold-angle\n"
+    "or target-error (|angle - target x orikin:fraction|) per crease; painted faces are not shaded.\n"
+    "\n",
+    run,
     "options:\n"
     "  --frame N            the state in frame N of a FOLD file (default 0)\n"
     "  --fix F --drive E --to DEG [--from DEG] [--step DEG] [--lock E1,...] [--solver S]\n"
@@ -158,11 +183,12 @@ const cli_command cli_cmd_render = {
     "  --edges              also draw flat (F) creases and joins (J) in 3D\n"
     "  --grid               a ground grid under the sheet\n"
     "  --labels             vertex, edge and face indices (crease view)\n"
+    CLI_COLOR_HELP
     "  --json               print {output, format, view, width, height, state, faces,\n"
-    "                       face_orders, failing_vertices}\n"
+    "                       face_orders, failing_vertices, color {quantity, per, shown, min,\n"
+    "                       max, labels} | null}\n"
     "  -o OUT               the picture; its format by the suffix .svg, .pdf or .png\n"
     "\n"
-    "example: orikin render examples/open-corner.seq.json --yaw 90 -o corner-cube.png\n",
-    run,
-    NULL,
+    "example: orikin render examples/open-corner.seq.json --yaw 90 -o corner-cube.png\n"
+    "         orikin render bent.fold --frame 1 --color strain -o strain.png\n",
 };

@@ -945,3 +945,155 @@ Test(export, cli_thick_export_summary_and_unfold_refusal)
     free(out);
     test_tmpdir_remove(dir);
 }
+
+// --- vertex colours by value -------------------------------------------------------------------
+
+static double lin(double c) { return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4); }
+
+// COLOR_0 of every primitive against face values: each vertex's colour is the linear RGB of
+// its face's place on the colour map (float precision, 1e-6); returns the faces whose vertices
+// carry the colour of the bar's top (t = 1) as a bit set.
+static unsigned check_colours(const gltf *g, const double *values, const ori_value_map *map)
+{
+    unsigned at_top = 0;
+    json_t *prims = json_object_get(json_array_get(json_object_get(g->root, "meshes"), 0), "primitives");
+    cr_assert_geq(json_array_size(prims), 1);
+    for (size_t pi = 0; pi < json_array_size(prims); ++pi) {
+        json_t *prim = json_array_get(prims, pi);
+        json_t *ac = json_object_get(json_object_get(prim, "attributes"), "COLOR_0");
+        cr_assert_not_null(ac, "primitive %zu has COLOR_0", pi);
+        int n, nc, ni, nci;
+        double *c = accessor(g, (int)json_integer_value(ac), &n, &nc);
+        cr_assert_eq(nc, 3);
+        json_t *fv = json_object_get(json_object_get(prim, "extras"), "fold_vertices");
+        cr_assert_eq((int)json_array_size(fv), n, "one colour per vertex");
+        double *idx = accessor(g, (int)json_integer_value(json_object_get(prim, "indices")), &ni, &nci);
+        json_t *ff = json_object_get(json_object_get(prim, "extras"), "fold_faces");
+        for (int t = 0; t < ni / 3; ++t) {
+            int f = (int)json_integer_value(json_array_get(ff, (size_t)t));
+            double tf = ori_value_map_position(map, values[f]);
+            ori_rgb want = ori_colormap(tf);
+            for (int k = 0; k < 3; ++k) {
+                const double *got = c + 3 * (int)idx[3 * t + k];
+                cr_assert_float_eq(got[0], lin(want.r), 1e-6, "face %d red", f);
+                cr_assert_float_eq(got[1], lin(want.g), 1e-6, "face %d green", f);
+                cr_assert_float_eq(got[2], lin(want.b), 1e-6, "face %d blue", f);
+            }
+            if (tf == 1.0) at_top |= 1u << f;
+        }
+        free(c);
+        free(idx);
+    }
+    return at_top;
+}
+
+// Face values become COLOR_0 in glTF and GLB (white materials, as COLOR_0 is multiplied by the
+// base colour); the face of the largest value has the top colour, viridis' yellow (to the fit's
+// 2.4/255 before the sRGB → linear step); without values there is no COLOR_0 and the materials
+// keep their colours.
+Test(export, gltf_face_values_as_vertex_colours)
+{
+    state s = corner_60();
+    ori_mesh *m = mesh_of(&s);
+    int F = ori_mesh_face_count(m);
+    double *vals = malloc(sizeof(double) * (size_t)F);
+    for (int f = 0; f < F; ++f) vals[f] = 0.01 * (f + 1);
+    for (int binary = 0; binary < 2; ++binary) {
+        ori_export_def d = ori_default_export_def();
+        d.format = binary ? ORI_MESH_GLB : ORI_MESH_GLTF;
+        d.values = (ori_value_map){vals, NULL, 0.01, 0.01 * F};
+        void *data = NULL;
+        size_t size = 0;
+        ori_error err;
+        cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_OK, "%s", err.message);
+        gltf g = gltf_parse(data, size);
+        cr_assert_eq(check_colours(&g, vals, &d.values), 1u << (F - 1), "only the last face is at the top");
+        json_t *mats = json_object_get(g.root, "materials");
+        for (size_t i = 0; i < json_array_size(mats); ++i) {
+            json_t *bc = json_object_get(json_object_get(json_array_get(mats, i), "pbrMetallicRoughness"), "baseColorFactor");
+            for (size_t k = 0; k < 4; ++k) cr_assert_eq(json_real_value(json_array_get(bc, k)) + json_integer_value(json_array_get(bc, k)), 1.0);
+        }
+        gltf_free(&g);
+        ori_buffer_free(data);
+    }
+    ori_rgb top = ori_colormap(1.0);
+    cr_assert_float_eq(top.r, 0.993248, 2.4 / 255);
+    cr_assert_float_eq(top.g, 0.906157, 2.4 / 255);
+    cr_assert_float_eq(top.b, 0.143936, 2.4 / 255);
+    ori_export_def d = ori_default_export_def();
+    void *data = NULL;
+    size_t size = 0;
+    ori_error err;
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_OK, "%s", err.message);
+    gltf g = gltf_parse(data, size);
+    json_t *prim = json_array_get(json_object_get(json_array_get(json_object_get(g.root, "meshes"), 0), "primitives"), 0);
+    cr_assert_null(json_object_get(json_object_get(prim, "attributes"), "COLOR_0"));
+    json_t *bc = json_object_get(json_object_get(json_array_get(json_object_get(g.root, "materials"), 0), "pbrMetallicRoughness"),
+                                 "baseColorFactor");
+    cr_assert_lt(json_real_value(json_array_get(bc, 2)), 0.5, "the front keeps its amber");
+    gltf_free(&g);
+    ori_buffer_free(data);
+    // A reversed range is refused.
+    d.values = (ori_value_map){vals, NULL, 1.0, 0.0};
+    cr_assert_eq(ori_mesh_export(m, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    free(vals);
+    ori_mesh_destroy(m);
+    state_free(&s);
+}
+
+// orikin export of a compliant fold's frame (orikin fold --compliant -o) writes COLOR_0 by the
+// frame's faces_orikin:strain by default, the most strained face at the top colour; --json
+// reports the range; --color none leaves the colours out.
+Test(export, cli_compliant_frame_exports_strain_colours)
+{
+    char *dir = test_tmpdir();
+    char args[2048], path[1024], *out = NULL;
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 -o '%s/o.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/o.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    char *text = ori_fold_get_custom(doc, 1, "faces_orikin:strain");
+    cr_assert_not_null(text);
+    json_t *arr = json_loads(text, 0, NULL);
+    ori_buffer_free(text);
+    int F = (int)json_array_size(arr), top = 0;
+    cr_assert_eq(F, 5);
+    double fs[5], lo = INFINITY, hi = -INFINITY;
+    for (int f = 0; f < F; ++f) {
+        fs[f] = json_number_value(json_array_get(arr, (size_t)f));
+        lo = fmin(lo, fs[f]);
+        hi = fmax(hi, fs[f]);
+        if (fs[f] > fs[top]) top = f;
+    }
+    json_decref(arr);
+    ori_fold_destroy(doc);
+    snprintf(args, sizeof args, "export '%s/o.fold' --frame 1 --json -o '%s/s.gltf'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    json_t *rep = json_loads(out, 0, NULL);
+    cr_assert_not_null(rep, "%s", out);
+    free(out);
+    json_t *col = json_object_get(rep, "color");
+    cr_assert_eq(json_real_value(json_object_get(col, "max")), hi);
+    cr_assert_eq(json_real_value(json_object_get(col, "min")), lo);
+    json_decref(rep);
+    snprintf(path, sizeof path, "%s/s.gltf", dir);
+    char *data = NULL;
+    size_t size = 0;
+    cr_assert_eq(ori_file_read_all(path, 1 << 28, &data, &size, &err), ORI_OK, "%s", err.message);
+    gltf g = gltf_parse((unsigned char *)data, size);
+    ori_value_map map = {fs, NULL, lo, hi};
+    cr_assert_eq(check_colours(&g, fs, &map), 1u << top, "face %d (strain %g) alone at the top colour", top, hi);
+    gltf_free(&g);
+    ori_buffer_free(data);
+    snprintf(args, sizeof args, "export '%s/o.fold' --frame 1 --color none -o '%s/n.gltf'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/n.gltf", dir);
+    char *t = test_read_text(path);
+    cr_assert_null(strstr(t, "COLOR_0"), "--color none: no vertex colours");
+    free(t);
+    test_tmpdir_remove(dir);
+}

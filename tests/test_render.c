@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <cairo.h>
 #include <gif_lib.h>
+#include <jansson.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 #include <math.h>
@@ -949,6 +950,13 @@ Test(render, gif_animation_decodes)
     cr_assert_gt(paper, 160 * 120 / 10, "the last frame shows the cube (%d paper pixels)", paper);
     DGifCloseFile(gif, &e);
     ori_buffer_free(data);
+    // Colour by value is for one state: an animation refuses values.
+    double vals[5] = {0, 1, 2, 3, 4};
+    d.render.values = (ori_value_map){vals, NULL, 0.0, 4.0};
+    data = NULL;
+    cr_assert_eq(ori_gif_write(&d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "values"), "%s", err.message);
+    cr_assert_null(data);
     ori_record_destroy(r);
     ori_sequence_destroy(s);
     test_open_corner_free(&k.c);
@@ -1303,4 +1311,394 @@ Test(render, fold_spec_box_follows_its_face_orders)
     free(fo);
     ori_pattern_destroy(p);
     ori_fold_destroy(doc);
+}
+
+// --- colour by value ---------------------------------------------------------------------------
+
+// matplotlib's viridis at 0, 0.5 and 1 (matplotlib 3.6), the colours the fit must reproduce.
+static const ori_rgb viridis_ref[3] = {{0.267004, 0.004874, 0.329415}, {0.127568, 0.566949, 0.550556}, {0.993248, 0.906157, 0.143936}};
+
+static double luminance(ori_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+// The colour map is viridis within the fit's 2.4/255 at both ends and the middle, clamps outside
+// [0, 1] (NaN to the bottom), and its luminance rises from end to end (a perceptual ramp).
+Test(render, colormap_is_viridis)
+{
+    const double t[3] = {0.0, 0.5, 1.0};
+    for (int i = 0; i < 3; ++i) {
+        ori_rgb c = ori_colormap(t[i]);
+        cr_assert_leq(fabs(c.r - viridis_ref[i].r), 2.4 / 255, "t %g red %g", t[i], c.r);
+        cr_assert_leq(fabs(c.g - viridis_ref[i].g), 2.4 / 255, "t %g green %g", t[i], c.g);
+        cr_assert_leq(fabs(c.b - viridis_ref[i].b), 2.4 / 255, "t %g blue %g", t[i], c.b);
+    }
+    ori_rgb lo = ori_colormap(0.0), hi = ori_colormap(1.0), below = ori_colormap(-3.0), above = ori_colormap(7.0),
+            nan = ori_colormap(NAN);
+    cr_assert(below.r == lo.r && below.g == lo.g && below.b == lo.b);
+    cr_assert(nan.r == lo.r && nan.g == lo.g && nan.b == lo.b);
+    cr_assert(above.r == hi.r && above.g == hi.g && above.b == hi.b);
+    for (int k = 1; k <= 100; ++k)
+        cr_assert_gt(luminance(ori_colormap(k / 100.0)), luminance(ori_colormap((k - 1) / 100.0)), "luminance rises at %d %%", k);
+}
+
+// Ticks: min and max exactly at the ends, evenly between, "%.3g" labels, zero read as "0"; one
+// tick for an empty range. Positions clamp to [0, 1].
+Test(render, colour_bar_ticks_and_positions)
+{
+    ori_value_map m = {NULL, NULL, -0.5, 1.5};
+    double v[ORI_RENDER_BAR_TICKS];
+    char l[ORI_RENDER_BAR_TICKS][ORI_RENDER_BAR_LABEL_MAX];
+    cr_assert_eq(ori_value_map_ticks(&m, v, l), 5);
+    const double want[5] = {-0.5, 0.0, 0.5, 1.0, 1.5};
+    const char *labels[5] = {"-0.5", "0", "0.5", "1", "1.5"};
+    for (int k = 0; k < 5; ++k) {
+        cr_assert_float_eq(v[k], want[k], 1e-15, "tick %d", k);
+        cr_assert_str_eq(l[k], labels[k]);
+    }
+    // Roundoff at zero: -0.3 … 0.1 puts a tick near 0 (−0.3 + 0.3 misses by an ulp).
+    ori_value_map z = {NULL, NULL, -0.3, 0.1};
+    ori_value_map_ticks(&z, v, l);
+    cr_assert_str_eq(l[3], "0", "%s", l[3]);
+    ori_value_map small = {NULL, NULL, 0.0, 0.0237822885};
+    ori_value_map_ticks(&small, NULL, l);
+    cr_assert_str_eq(l[4], "0.0238");
+    cr_assert_str_eq(l[2], "0.0119");
+    ori_value_map one = {NULL, NULL, 2.0, 2.0};
+    cr_assert_eq(ori_value_map_ticks(&one, v, l), 1);
+    cr_assert_str_eq(l[0], "2");
+    cr_assert_eq(ori_value_map_position(&one, 2.0), 0.0);
+    cr_assert_eq(ori_value_map_position(&m, 1.5), 1.0);
+    cr_assert_eq(ori_value_map_position(&m, 9.0), 1.0);
+    cr_assert_eq(ori_value_map_position(&m, -9.0), 0.0);
+    cr_assert_float_eq(ori_value_map_position(&m, 0.0), 0.25, 1e-15);
+}
+
+// Where draw.c puts the colour bar: its label size, the strip's left edge, the bar's x range and
+// its top and bottom (image units).
+typedef struct bar_box {
+    double x0, x1, y_top, y_bot, strip;
+} bar_box;
+static bar_box bar_of(int w, int h)
+{
+    double fs = fmax(6.0, 0.024 * fmin(w, h));
+    bar_box b;
+    b.strip = fmin(w / 3.0, 11.0 * fs);
+    b.x0 = w - b.strip + 0.6 * fs;
+    b.x1 = b.x0 + 1.2 * fs;
+    b.y_top = 0.12 * h;
+    b.y_bot = 0.88 * h;
+    return b;
+}
+
+// Three faces with values 0.1, 0.7, 0.4 on a bar from 0.1 to 0.7, from the top: the face of the
+// largest value shows the bar's top colour, the smallest its bottom, the middle one the middle
+// (each channel to 1/255, Cairo's rounding: a face is painted unshaded in its colour); the bar's own top and bottom pixels
+// are those colours (to 2/255: the gradient's stops). The sheet is fitted left of the bar.
+Test(render, face_values_paint_the_bar_colours)
+{
+    const ori_assignment cr[2] = {ORI_ASSIGN_FLAT, ORI_ASSIGN_FLAT};
+    ori_pattern *p = strip(3, cr);
+    ori_state_view sv = {p, NULL, NULL};
+    ori_render_def d = top_def(600, 300);
+    d.shading = true; // painted faces ignore the light
+    const double vals[3] = {0.1, 0.7, 0.4};
+    d.values = (ori_value_map){vals, NULL, 0.1, 0.7};
+    ori_camera cam;
+    ori_error err;
+    cr_assert_eq(ori_render_camera(&sv, &d, &cam, &err), ORI_OK, "%s", err.message);
+    cairo_surface_t *s = render_png(&sv, &d);
+    const double t[3] = {0.0, 1.0, 0.5};
+    for (int f = 0; f < 3; ++f) {
+        ori_v3 c = ori_camera_project(&cam, ori_v3_make(f + 0.5, 0.5, 0));
+        rgb8 want = to8(ori_colormap(t[f]), 1), got = pixel(s, (int)c.x, (int)c.y);
+        cr_assert_leq(dist2(got, want), 3, "face %d at (%g, %g): %d %d %d, want %d %d %d", f, c.x, c.y, got.r, got.g, got.b, want.r,
+                      want.g, want.b);
+    }
+    bar_box b = bar_of(600, 300);
+    ori_v3 right = ori_camera_project(&cam, ori_v3_make(3, 0.5, 0));
+    cr_assert_lt(right.x, 600 - b.strip, "the sheet ends left of the bar's strip (x %g)", right.x);
+    int bx = (int)(0.5 * (b.x0 + b.x1));
+    int ys[2] = {(int)ceil(b.y_top) + 1, (int)floor(b.y_bot) - 2};
+    for (int k = 0; k < 2; ++k) {
+        // The gradient at the pixel's centre.
+        double tp = (b.y_bot - (ys[k] + 0.5)) / (b.y_bot - b.y_top);
+        rgb8 got = pixel(s, bx, ys[k]), want = to8(ori_colormap(tp), 1);
+        cr_assert_gt(k == 0 ? tp : 1.0 - tp, 0.98, "near the %s", k == 0 ? "top" : "bottom");
+        cr_assert_leq(dist2(got, want), 3 * 4, "bar at y %d (t %.3f): %d %d %d, want %d %d %d", ys[k], tp, got.r, got.g, got.b,
+                      want.r, want.g, want.b);
+    }
+    cairo_surface_destroy(s);
+    // A range that is not finite or reversed is refused.
+    d.values.min = 1.0;
+    d.values.max = 0.0;
+    void *data = NULL;
+    size_t size = 0;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "values"), "%s", err.message);
+    cr_assert_null(data);
+    d.values.max = INFINITY;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    ori_pattern_destroy(p);
+}
+
+// Whether n bytes at data hold text (the drawing buffers are not NUL-terminated).
+static bool has_bytes(const void *data, size_t n, const char *text)
+{
+    size_t k = strlen(text);
+    for (size_t i = 0; i + k <= n; ++i)
+        if (memcmp((const char *)data + i, text, k) == 0) return true;
+    return false;
+}
+
+// Edge values in the crease view: a crease with a value is stroked in its colour; without face
+// values the paper keeps its colour; an inactive map (no arrays) leaves the picture byte for byte
+// as without one, whatever its range says.
+Test(render, edge_values_stroke_the_creases)
+{
+    const ori_assignment cr[1] = {ORI_ASSIGN_VALLEY};
+    ori_pattern *p = strip(2, cr);
+    int crease = -1;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e)
+        if (ori_pattern_edge(p, e).assignment == ORI_ASSIGN_VALLEY) crease = e;
+    cr_assert_geq(crease, 0);
+    double *ev = malloc(sizeof(double) * (size_t)ori_pattern_edge_count(p));
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) ev[e] = NAN;
+    ev[crease] = 90.0;
+    ori_state_view sv = {p, NULL, NULL};
+    ori_render_def d = ori_default_render_def();
+    d.width = 1000;
+    d.height = 600;
+    d.values = (ori_value_map){NULL, ev, 0.0, 90.0};
+    cairo_surface_t *s = render_png(&sv, &d);
+    // The crease view's fit (draw.c): the 2 × 1 strip fills the image left of the bar's strip.
+    bar_box b = bar_of(1000, 600);
+    double W = 1000 - b.strip, H = 600, margin = 0.06 * fmin(W, H);
+    double sc = fmin((W - 2 * margin) / 2.0, (H - 2 * margin) / 1.0);
+    double ox = 0.5 * W - sc * 1.0, oy = 0.5 * H + sc * 0.5;
+    // The crease (3.75 pixels wide) at x = 1: the pixel of the row nearest its colour.
+    rgb8 want = to8(ori_colormap(1.0), 1), on = {0, 0, 0};
+    int cx = (int)lround(ox + sc * 1.0), cy = (int)(oy - sc * 0.5);
+    for (int x = cx - 3; x <= cx + 3; ++x)
+        if (dist2(pixel(s, x, cy), want) < dist2(on, want)) on = pixel(s, x, cy);
+    rgb8 paper = pixel(s, (int)(ox + sc * 0.5), cy);
+    cr_assert_leq(dist2(on, want), 3 * 4, "crease pixel %d %d %d, want %d %d %d", on.r, on.g, on.b, want.r, want.g, want.b);
+    cr_assert_leq(dist2(paper, (rgb8){251, 249, 244}), 3, "paper %d %d %d", paper.r, paper.g, paper.b);
+    cairo_surface_destroy(s);
+    // Inactive maps change nothing (PNG bytes compared; Cairo numbers SVG ids per process).
+    ori_render_def active = d;
+    ori_render_def d0 = d;
+    d0.values = ori_default_render_def().values;
+    d.values = (ori_value_map){NULL, NULL, 5.0, -3.0};
+    void *a = NULL, *c = NULL;
+    size_t na = 0, nc = 0;
+    ori_error err;
+    cr_assert_eq(ori_render_image(&sv, &d0, &a, &na, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_render_image(&sv, &d, &c, &nc, &err), ORI_OK, "%s", err.message);
+    cr_assert(na == nc && memcmp(a, c, na) == 0, "an inactive value map draws the same PNG");
+    ori_buffer_free(a);
+    ori_buffer_free(c);
+    // The SVG's colour bar is a vector gradient, there only with values.
+    d0.format = active.format = ORI_IMAGE_SVG;
+    cr_assert_eq(ori_render_image(&sv, &d0, &a, &na, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_render_image(&sv, &active, &c, &nc, &err), ORI_OK, "%s", err.message);
+    cr_assert_not(has_bytes(a, na, "linearGradient"), "no colour bar without values");
+    cr_assert(has_bytes(c, nc, "linearGradient"), "the colour bar's gradient");
+    ori_buffer_free(a);
+    ori_buffer_free(c);
+    free(ev);
+    ori_pattern_destroy(p);
+}
+
+// A frame's field as n numbers (malloc'd).
+static double *frame_numbers(const ori_fold *doc, int frame, const char *key, int n)
+{
+    char *text = ori_fold_get_custom(doc, frame, key);
+    cr_assert_not_null(text, "frame %d has %s", frame, key);
+    json_t *a = json_loads(text, JSON_DECODE_ANY, NULL);
+    ori_buffer_free(text);
+    cr_assert(json_is_array(a) && (int)json_array_size(a) == n, "%s has %d entries", key, n);
+    double *v = calloc((size_t)n + 1, sizeof(double));
+    for (int k = 0; k < n; ++k) v[k] = json_number_value(json_array_get(a, (size_t)k));
+    json_decref(a);
+    return v;
+}
+
+// The compliant open corner at 40 % (orikin fold --compliant -o): render --color strain paints
+// its most strained face (faces_orikin:strain of the frame) the bar's top colour and its least
+// strained face the bottom's, in the crease view; --json reports the bar's range as the frame's
+// smallest and largest face strain, labelled as printed; the 3D view shows the top colour
+// somewhere; edges_orikin:strain alone gives each face its edges' largest |strain|; a frame
+// without strains, or with a field of the wrong length, is an input error that writes nothing.
+Test(render, cli_color_strain_paints_the_most_strained_face)
+{
+    char *dir = test_tmpdir();
+    char args[2048], path[1024], *out = NULL;
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 -o '%s/o.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/o.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    int F = ori_pattern_face_count(p);
+    double *fs = frame_numbers(doc, 1, "faces_orikin:strain", F);
+    int top = 0, bottom = 0;
+    for (int f = 1; f < F; ++f) {
+        if (fs[f] > fs[top]) top = f;
+        if (fs[f] < fs[bottom]) bottom = f;
+    }
+    cr_assert_gt(fs[top], 0.01, "the open corner at 40 %% strains (%g)", fs[top]);
+    for (int f = 0; f < F; ++f) cr_assert(f == top || fs[f] < fs[top] * 0.99, "one face strains most");
+
+    snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --view cp --color strain --json -o '%s/s.png'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    json_t *rep = json_loads(out, 0, NULL);
+    cr_assert_not_null(rep, "%s", out);
+    free(out);
+    json_t *col = json_object_get(rep, "color");
+    cr_assert_str_eq(json_string_value(json_object_get(col, "quantity")), "strain");
+    cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "face");
+    cr_assert_eq(json_integer_value(json_object_get(col, "shown")), F);
+    cr_assert_eq(json_real_value(json_object_get(col, "max")), fs[top], "bar max = the largest face strain");
+    cr_assert_eq(json_real_value(json_object_get(col, "min")), fs[bottom], "bar min = the smallest face strain");
+    json_t *labels = json_object_get(col, "labels");
+    cr_assert_eq(json_array_size(labels), ORI_RENDER_BAR_TICKS);
+    char want[32];
+    snprintf(want, sizeof want, "%.3g", fs[bottom]);
+    cr_assert_str_eq(json_string_value(json_array_get(labels, 0)), want);
+    snprintf(want, sizeof want, "%.3g", fs[top]);
+    cr_assert_str_eq(json_string_value(json_array_get(labels, ORI_RENDER_BAR_TICKS - 1)), want);
+    json_decref(rep);
+
+    // The crease view's fit (draw.c) of the sheet's box left of the bar's strip; each face's
+    // area centroid (inside: the open corner's faces are convex).
+    snprintf(path, sizeof path, "%s/s.png", dir);
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    cr_assert_eq(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int v = 0; v < ori_pattern_vertex_count(p); ++v) {
+        ori_v3 q = ori_pattern_vertex(p, v);
+        x0 = fmin(x0, q.x), x1 = fmax(x1, q.x), y0 = fmin(y0, q.y), y1 = fmax(y1, q.y);
+    }
+    bar_box b = bar_of(800, 600);
+    double W = 800 - b.strip, H = 600, margin = 0.06 * fmin(W, H);
+    double sc = fmin((W - 2 * margin) / (x1 - x0), (H - 2 * margin) / (y1 - y0));
+    double ox = 0.5 * W - sc * 0.5 * (x0 + x1), oy = 0.5 * H + sc * 0.5 * (y0 + y1);
+    const int faces[2] = {top, bottom};
+    for (int i = 0; i < 2; ++i) {
+        int fv[16], n = ori_pattern_face_vertices(p, faces[i], fv, 16);
+        double cx = 0, cy = 0;
+        for (int k = 0; k < n; ++k) {
+            cx += ori_pattern_vertex(p, fv[k]).x / n;
+            cy += ori_pattern_vertex(p, fv[k]).y / n;
+        }
+        rgb8 got = pixel(s, (int)(ox + sc * cx), (int)(oy - sc * cy)), w8 = to8(ori_colormap(i == 0 ? 1.0 : 0.0), 1);
+        cr_assert_leq(dist2(got, w8), 3, "face %d (%s strain %g): %d %d %d, want %d %d %d", faces[i], i == 0 ? "largest" : "smallest",
+                      fs[faces[i]], got.r, got.g, got.b, w8.r, w8.g, w8.b);
+    }
+    cairo_surface_destroy(s);
+
+    // The 3D view of the same frame: the top colour covers a good part of the picture (face 3
+    // is a quarter of the sheet), left of the bar.
+    snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --color strain -o '%s/s3.png'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    snprintf(want, sizeof want, "strain of %d faces from", F);
+    cr_assert(strstr(out, want), "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/s3.png", dir);
+    s = cairo_image_surface_create_from_png(path);
+    rgb8 hi8 = to8(ori_colormap(1.0), 1);
+    long hits = 0;
+    for (int y = 0; y < 600; ++y)
+        for (int x = 0; x < 800 - (int)b.strip; ++x) hits += dist2(pixel(s, x, y), hi8) <= 3;
+    cr_assert_gt(hits, 800 * 600 / 20, "%ld pixels of the top colour", hits);
+    cairo_surface_destroy(s);
+
+    // Without faces_orikin:strain a face's strain is the largest |strain| of its edges
+    // (edges_orikin:strain): the bar's top is the largest |edge strain|. A field of the wrong
+    // length is an input error naming it.
+    int E = ori_pattern_edge_count(p);
+    double *es = frame_numbers(doc, 1, "edges_orikin:strain", E), emax = 0.0;
+    for (int e = 0; e < E; ++e) emax = fmax(emax, fabs(es[e]));
+    free(es);
+    cr_assert_eq(ori_fold_set_custom(doc, 1, "faces_orikin:strain", NULL, &err), ORI_OK, "%s", err.message);
+    snprintf(path, sizeof path, "%s/edges.fold", dir);
+    cr_assert_eq(ori_fold_save_file(doc, path, &err), ORI_OK, "%s", err.message);
+    snprintf(args, sizeof args, "render '%s' --frame 1 --color strain --json -o '%s/e.png'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    rep = json_loads(out, 0, NULL);
+    cr_assert_not_null(rep, "%s", out);
+    free(out);
+    cr_assert_eq(json_real_value(json_object_get(json_object_get(rep, "color"), "max")), emax, "the largest |edge strain| %g", emax);
+    json_decref(rep);
+    cr_assert_eq(ori_fold_set_custom(doc, 1, "faces_orikin:strain", "[0.1,0.2]", &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fold_save_file(doc, path, &err), ORI_OK, "%s", err.message);
+    snprintf(args, sizeof args, "render '%s' --frame 1 --color strain -o '%s/bad.png'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert(strstr(out, "frame 1: faces_orikin:strain is not 5 finite numbers"), "%s", out);
+    free(out);
+
+    // Frame 0 is the crease pattern: no strains. Nothing is written.
+    snprintf(args, sizeof args, "render '%s/o.fold' --color strain -o '%s/none.png'", dir, dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert(strstr(out, "faces_orikin:strain") && strchr(out, '\n') == out + strlen(out) - 1, "one line: %s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/none.png", dir);
+    cr_assert_neq(access(path, F_OK), 0, "nothing written");
+    free(fs);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    test_tmpdir_remove(dir);
+}
+
+// --color target-error and fold-angle of a compliant frame agree with the fold's own report:
+// the bar's top is the fold's crease_error_deg (its largest |ρ − target × fraction|, computed by
+// the model) and the largest crease fold angle of fold_angles_deg, to 1e-9 degrees (the frame
+// stores the angles in degrees).
+Test(render, cli_color_target_error_matches_the_fold_report)
+{
+    char *dir = test_tmpdir();
+    char args[2048], *out = NULL;
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 --json -o '%s/o.fold'", dir);
+    cr_assert_eq(test_run_cli_split(args, &out, NULL), 0, "%s", out);
+    json_t *fold = json_loads(out, 0, NULL);
+    cr_assert_not_null(fold, "%s", out);
+    free(out);
+    double cerr = json_real_value(json_object_get(fold, "crease_error_deg"));
+    cr_assert_gt(cerr, 1.0, "the open corner at 40 %% misses its targets (%g deg)", cerr);
+    test_open_corner oc = test_open_corner_load();
+    json_t *ang = json_object_get(fold, "fold_angles_deg");
+    double amax = -INFINITY, amin = INFINITY;
+    for (int e = 0; e < ori_pattern_edge_count(oc.p); ++e) {
+        int f[2];
+        ori_pattern_edge_faces(oc.p, e, f);
+        if (f[0] < 0 || f[1] < 0) continue;
+        double a = json_real_value(json_array_get(ang, (size_t)e));
+        amax = fmax(amax, a);
+        amin = fmin(amin, a);
+    }
+    test_open_corner_free(&oc);
+    json_decref(fold);
+    const char *kinds[2] = {"target-error", "fold-angle"};
+    for (int k = 0; k < 2; ++k) {
+        snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --color %s --json -o '%s/t.svg'", dir, kinds[k], dir);
+        cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+        json_t *rep = json_loads(out, 0, NULL);
+        cr_assert_not_null(rep, "%s", out);
+        free(out);
+        json_t *col = json_object_get(rep, "color");
+        cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "crease");
+        cr_assert_eq(json_integer_value(json_object_get(col, "shown")), 5, "the open corner's five creases");
+        double mx = json_real_value(json_object_get(col, "max")), mn = json_real_value(json_object_get(col, "min"));
+        if (k == 0) {
+            cr_assert_float_eq(mx, cerr, 1e-9, "target-error max %.12g, fold's crease error %.12g", mx, cerr);
+            cr_assert_geq(mn, 0.0);
+        } else {
+            cr_assert_float_eq(mx, amax, 1e-9, "fold-angle max %.12g vs %.12g", mx, amax);
+            cr_assert_float_eq(mn, amin, 1e-9, "fold-angle min %.12g vs %.12g", mn, amin);
+        }
+        json_decref(rep);
+    }
+    test_tmpdir_remove(dir);
 }

@@ -14,7 +14,7 @@
 /// ori_default_render_def, ori_render_camera, ori_render_image, ori_render_file,
 /// ori_default_gif_def, ori_gif_write, ori_mesh_format_from_path, ori_mesh_format_name,
 /// ori_default_export_def, ori_mesh_export, ori_mesh_export_mtl, ori_mesh_export_file,
-/// ori_mesh_thick_panels.
+/// ori_mesh_thick_panels, ori_colormap, ori_value_map_position, ori_value_map_ticks.
 ///
 /// Frames. World coordinates are the pattern's (the flat sheet in z = 0, +z its front side).
 /// Images have x to the right and y downwards, in pixels (PNG, GIF) or points (SVG, PDF).
@@ -164,6 +164,34 @@ ORI_API const char *ori_image_format_name(ori_image_format format);
 /// antialiasing seams between adjacent faces.
 #define ORI_RENDER_SEAM_WIDTH 0.5
 
+// --- colour by value ------------------------------------------------------------------------
+
+/// Values shown in colour (docs/render.md, "Colour by value"): faces and/or edges painted with
+/// ori_colormap over [min, max]. A picture gets a colour bar on its right (min at the bottom, max
+/// at the top, labelled ticks from ori_value_map_ticks), the drawing fitted to the rest; a glTF
+/// gets the faces' colours as COLOR_0. A NaN value keeps the usual colour of its face or edge.
+typedef struct ori_value_map {
+    const double *face_values; ///< per face (face_count), or NULL; borrowed. Faces so painted are not shaded or textured
+    const double *edge_values; ///< per edge (edge_count), or NULL; borrowed. Drawn edges with a value are stroked solid in its colour (images only)
+    double min, max;           ///< the bar's range: finite, min ≤ max; values outside are clamped to it
+} ori_value_map;
+
+/// Most ticks on a colour bar, and the longest tick label (with its terminating zero).
+#define ORI_RENDER_BAR_TICKS 5
+#define ORI_RENDER_BAR_LABEL_MAX 16
+
+/// The colour map: a perceptually uniform blue–green–yellow ramp (matplotlib's viridis, as a
+/// degree-8 polynomial per channel fitted by least squares, within 2.4/255 of it; the fit is
+/// scripts/fit_viridis.py). t is clamped to [0, 1] (NaN gives t = 0). sRGB components.
+ORI_API ori_rgb ori_colormap(double t);
+/// Where a value lies on the bar: (value − min) / (max − min) clamped to [0, 1]; 0 when
+/// min = max or value is NaN.
+ORI_API double ori_value_map_position(const ori_value_map *map, double value);
+/// The colour bar's ticks: values[k] (bottom to top, the first min, the last max) and their
+/// labels ("%.3g"; a tick within ORI_TOL_BAR_ZERO_REL of the range's size from zero reads "0").
+/// Returns ORI_RENDER_BAR_TICKS, or 1 when min = max. values or labels may be NULL.
+ORI_API int ori_value_map_ticks(const ori_value_map *map, double *values, char (*labels)[ORI_RENDER_BAR_LABEL_MAX]);
+
 /// What to draw.
 typedef enum ori_render_view {
     ORI_RENDER_CREASES = 0, ///< the flat crease pattern, thesis line styles
@@ -188,13 +216,14 @@ typedef struct ori_render_def {
     size_t texture_size;      ///< its size in bytes
     const int *face_orders;   ///< 3D view: the state's FOLD faceOrders, face_order_count triples (f, g, s): f lies on the side of g's normal (s = +1) or the other (s = −1); they order faces folded flat onto each other where a pair is listed (else stacking along the fold tree, docs/render.md); borrowed; NULL: none
     int face_order_count;     ///< number of triples in face_orders
+    ori_value_map values;     ///< colour by value (both views) with a colour bar; default none (NULL arrays)
     double line_width_rel;    ///< line width as a fraction of the smaller image side, at least 0.75 image units but at most 1/12 of the mean edge length in the image (dense patterns)
     int internal_value;       ///< set by ori_default_render_def; do not change
 } ori_render_def;
 
 /// Defaults: crease view, PNG, 800 × 600, iso camera fitted, amber front (#e8a33d) and ivory
 /// back (#f3efe4) on white, shading on, no grid, labels off, failing vertices marked, no
-/// texture, no faceOrders, line width 1/400 of the smaller side.
+/// texture, no faceOrders, no values (colour by value off), line width 1/400 of the smaller side.
 ORI_API ori_render_def ori_default_render_def(void);
 
 /// The camera a 3D drawing of the state uses (def's camera, fitted when def->fit_camera).
@@ -205,7 +234,7 @@ ORI_API ori_status ori_render_camera(const ori_state_view *state, const ori_rend
 /// with ORI_ERR_ARGUMENT for a size out of range, an unknown format or faceOrders naming a face
 /// that does not exist (or with s not ±1), ORI_ERR_UNSUPPORTED for
 /// the crease view of a folded form, ORI_ERR_PARSE for a texture that is not a readable PNG,
-/// and as ori_mesh_create.
+/// ORI_ERR_ARGUMENT for values whose range is not finite with min ≤ max, and as ori_mesh_create.
 ORI_API ori_status ori_render_image(const ori_state_view *state, const ori_render_def *def, void **data,
                                     size_t *size, ori_error *error);
 /// Draw a state to path atomically (ori_file_write_atomic) in the format of the path's
@@ -221,7 +250,7 @@ typedef ori_status ori_frame_fn(int index, ori_state_view *out, void *user, ori_
 
 /// Animation parameters; get them from ori_default_gif_def().
 typedef struct ori_gif_def {
-    ori_render_def render;    ///< how a frame is drawn (format ignored); with fit_camera the camera is fitted once to every frame, so the shape does not jump
+    ori_render_def render;    ///< how a frame is drawn (format ignored; no values: colour by value is for one state); with fit_camera the camera is fitted once to every frame, so the shape does not jump
     int frame_count;          ///< ≥ 1
     ori_frame_fn *frame;      ///< the frames (each is asked for more than once)
     void *user;               ///< passed to frame
@@ -238,7 +267,7 @@ ORI_API ori_gif_def ori_default_gif_def(void);
 /// Draw every frame and encode an animated GIF into memory (free *data with ori_buffer_free).
 /// One global palette of 256 colours by median cut over sample frames (docs/render.md), each
 /// frame stored as the rectangle that changed. Fails as ori_render_image, with ORI_ERR_LIMIT
-/// when cancelled.
+/// when cancelled, and with ORI_ERR_ARGUMENT for render values (colour by value).
 ORI_API ori_status ori_gif_write(const ori_gif_def *def, void **data, size_t *size, ori_error *error);
 
 // --- meshes -------------------------------------------------------------------------------
@@ -260,6 +289,7 @@ typedef struct ori_export_def {
     const char *obj_mtllib;          ///< OBJ: the material library file its "mtllib" line names (NULL: none; ori_mesh_export_file sets it)
     const int *face_orders;          ///< thick panels: the state's FOLD faceOrders (face_order_count triples f, g, s as in ori_render_def) ranking panels stacked flat; borrowed; NULL: stacking along the fold tree
     int face_order_count;            ///< number of triples in face_orders
+    ori_value_map values;            ///< glTF/GLB: values.face_values become every vertex's COLOR_0 (linear RGB of ori_colormap; a face's vertices are its own); NULL: none. Other formats ignore it
     int internal_value;              ///< set by ori_default_export_def; do not change
 } ori_export_def;
 
@@ -280,12 +310,13 @@ typedef struct ori_thick_info {
 ORI_API ori_status ori_mesh_thick_panels(const ori_mesh *mesh, const ori_export_def *def, ori_thick_info *out,
                                          ori_error *error);
 
-/// Defaults: glTF, no thickness, the render colours (front, back) and grey rims, no animation.
+/// Defaults: glTF, no thickness, the render colours (front, back) and grey rims, no animation,
+/// no values (no vertex colours).
 ORI_API ori_export_def ori_default_export_def(void);
 /// Write the mesh in its current pose (or animated) into memory (*data, *size; free with
 /// ori_buffer_free). Fails with ORI_ERR_ARGUMENT for an unknown format, a negative or
-/// non-finite thickness, keyframes for a format other than glTF/GLB or with a thickness, or
-/// times that do not increase.
+/// non-finite thickness, keyframes for a format other than glTF/GLB or with a thickness,
+/// times that do not increase, or face values whose range is not finite with min ≤ max.
 ORI_API ori_status ori_mesh_export(const ori_mesh *mesh, const ori_export_def *def, void **data, size_t *size,
                                    ori_error *error);
 /// The OBJ material library (MTL text: materials front, back and rim with def's colours) into

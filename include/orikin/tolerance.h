@@ -598,4 +598,9 @@
 /// sample is that sample's seam gap. Unitless (relative length).
 #define ORI_TOL_FAB_CONTACT_REL 1e-6
 
+/// Colour bar labels (ori_value_map_ticks): a tick nearer zero than this × the bar's range
+/// (max − min) is zero (an interior tick computed as min + k·(max − min)/4 misses it by
+/// roundoff). Unitless (relative).
+#define ORI_TOL_BAR_ZERO_REL 1e-9
+
 #endif

@@ -101,6 +101,7 @@ ori_render_def ori_default_render_def(void)
     d.mark_failing = true;
     d.texture_png = NULL;
     d.texture_size = 0;
+    d.values = (ori_value_map){NULL, NULL, 0.0, 1.0};
     d.line_width_rel = 1.0 / 400.0;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
@@ -257,6 +258,9 @@ static const glyph glyphs[] = {
     {'v', {{0, 0.6f}, {0.25f, 0}, {0.5f, 0.6f}, {-1, -1}}},
     {'f', {{0.45f, 1}, {0.2f, 1}, {0.2f, 0}, {-1, -1}, {0, 0.6f}, {0.4f, 0.6f}, {-1, -1}}},
     {'-', {{0.05f, 0.5f}, {0.45f, 0.5f}, {-1, -1}}},
+    {'+', {{0.05f, 0.5f}, {0.45f, 0.5f}, {-1, -1}, {0.25f, 0.3f}, {0.25f, 0.7f}, {-1, -1}}},
+    {'.', {{0.2f, 0}, {0.3f, 0}, {0.3f, 0.1f}, {0.2f, 0.1f}, {0.2f, 0}, {-1, -1}}},
+    {'e', {{0, 0.3f}, {0.5f, 0.3f}, {0.5f, 0.6f}, {0, 0.6f}, {0, 0}, {0.5f, 0}, {-1, -1}}},
 };
 
 static const glyph *glyph_of(char c)
@@ -305,6 +309,64 @@ static void draw_label(cairo_t *cr, double x, double y, const char *text, ori_rg
     cairo_stroke(cr);
 }
 
+// --- colour by value: the colour bar -------------------------------------------------------
+
+// The bar's label size: glyphs this high (image units).
+static double bar_font(const ori_render_def *def) { return fmax(6.0, 0.024 * fmin(def->width, def->height)); }
+
+// Width of the strip on the right that the colour bar takes (0 without values): the bar, its
+// ticks and labels of up to 9 characters ("-1.23e-05"). At most a third of the image.
+static double bar_strip(const ori_render_def *def)
+{
+    if (!ori__value_map_active(&def->values)) return 0.0;
+    double fs = bar_font(def);
+    return fmin(def->width / 3.0, 11.0 * fs);
+}
+
+// Width of an edge painted by its value, in line widths (wider than a crease, to show its colour).
+#define VALUE_LINE_WIDTH 2.5
+
+static ori_rgb value_colour(const ori_value_map *map, double v) { return ori_colormap(ori_value_map_position(map, v)); }
+
+// The colour bar in the strip: min at the bottom, max at the top, a gradient through the colour
+// map (true vector in SVG and PDF), a thin frame, ticks and their labels on the right.
+static void draw_bar(cairo_t *cr, const ori_render_def *def)
+{
+    double fs = bar_font(def), W = def->width, H = def->height;
+    double x0 = W - bar_strip(def) + 0.6 * fs, bw = 1.2 * fs;
+    double y_top = 0.12 * H, y_bot = 0.88 * H;
+    cairo_pattern_t *g = cairo_pattern_create_linear(0.0, y_bot, 0.0, y_top);
+    enum { STOPS = 33 };
+    for (int k = 0; k < STOPS; ++k) {
+        double t = (double)k / (STOPS - 1);
+        ori_rgb c = ori_colormap(t);
+        cairo_pattern_add_color_stop_rgb(g, t, c.r, c.g, c.b);
+    }
+    cairo_rectangle(cr, x0, y_top, bw, y_bot - y_top);
+    cairo_set_source(cr, g);
+    cairo_fill(cr);
+    cairo_pattern_destroy(g);
+    cairo_set_dash(cr, NULL, 0, 0);
+    cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
+    cairo_set_line_width(cr, fmax(0.5, 0.06 * fs));
+    cairo_rectangle(cr, x0, y_top, bw, y_bot - y_top);
+    cairo_stroke(cr);
+    double values[ORI_RENDER_BAR_TICKS];
+    char labels[ORI_RENDER_BAR_TICKS][ORI_RENDER_BAR_LABEL_MAX];
+    int n = ori_value_map_ticks(&def->values, values, labels);
+    for (int k = 0; k < n; ++k) {
+        double y = n == 1 ? y_bot : y_bot - (y_bot - y_top) * k / (n - 1);
+        cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
+        cairo_set_line_width(cr, fmax(0.5, 0.06 * fs));
+        cairo_move_to(cr, x0 + bw, y);
+        cairo_line_to(cr, x0 + bw + 0.35 * fs, y);
+        cairo_stroke(cr);
+        size_t len = strlen(labels[k]);
+        double width = (double)(len - 1) * 0.8 * fs + 0.5 * fs;
+        draw_label(cr, x0 + bw + 0.9 * fs + 0.5 * width, y, labels[k], rgb_of(0x202020), fs);
+    }
+}
+
 static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_render_def *def, ori_error *error)
 {
     if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p))
@@ -319,7 +381,8 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
         y1 = fmax(y1, q.y);
     }
     if (nv == 0) x0 = x1 = y0 = y1 = 0.0;
-    double W = def->width, H = def->height, margin = 0.06 * fmin(W, H);
+    // With a colour bar the pattern is fitted to the image left of its strip.
+    double W = def->width - bar_strip(def), H = def->height, margin = 0.06 * fmin(W, H);
     double dx = x1 - x0, dy = y1 - y0;
     double s = (dx > 0.0 && dy > 0.0) ? fmin((W - 2 * margin) / dx, (H - 2 * margin) / dy)
                : dx > 0.0             ? (W - 2 * margin) / dx
@@ -353,7 +416,27 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
     cairo_set_source_rgb(cr, 0.985, 0.978, 0.955);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
     cairo_fill(cr);
-    // Lines: faint kinds first, the boundary last.
+    const ori_value_map *vm = &def->values;
+    if (vm->face_values) {
+        // Faces with a value in its colour (with a seam hairline, as in 3D).
+        for (int f = 0; f < nf; ++f) {
+            if (isnan(vm->face_values[f])) continue;
+            int n = ori_pattern_face_size(p, f);
+            ORI__RESERVE(fv, cap, n);
+            ori_pattern_face_vertices(p, f, fv, n);
+            for (int k = 0; k < n; ++k) {
+                ori_v3 q = ori_pattern_vertex(p, fv[k]);
+                if (k == 0) cairo_move_to(cr, IX(q), IY(q));
+                else cairo_line_to(cr, IX(q), IY(q));
+            }
+            cairo_close_path(cr);
+            set_source(cr, value_colour(vm, vm->face_values[f]));
+            cairo_fill_preserve(cr);
+            cairo_set_line_width(cr, ORI_RENDER_SEAM_WIDTH);
+            cairo_stroke(cr);
+        }
+    }
+    // Lines: faint kinds first, the boundary last; edges with a value after them, solid in its colour.
     static const ori_assignment order[] = {ORI_ASSIGN_JOIN,     ORI_ASSIGN_FLAT,   ORI_ASSIGN_UNASSIGNED, ORI_ASSIGN_CUT,
                                            ORI_ASSIGN_VALLEY,   ORI_ASSIGN_MOUNTAIN, ORI_ASSIGN_BOUNDARY};
     for (size_t k = 0; k < sizeof order / sizeof order[0]; ++k) {
@@ -362,6 +445,7 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
         for (int e = 0; e < ne; ++e) {
             ori_edge ed = ori_pattern_edge(p, e);
             if (ed.assignment != order[k]) continue;
+            if (vm->edge_values && !isnan(vm->edge_values[e])) continue;
             ori_v3 a = ori_pattern_vertex(p, ed.v[0]), b = ori_pattern_vertex(p, ed.v[1]);
             // Dashes start afresh on every crease, as a drawn crease pattern does.
             cairo_move_to(cr, IX(a), IY(a));
@@ -371,6 +455,19 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
         if (!st.dash_count) cairo_stroke(cr);
     }
     cairo_set_dash(cr, NULL, 0, 0);
+    if (vm->edge_values) {
+        cairo_set_line_width(cr, VALUE_LINE_WIDTH * lw);
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+        for (int e = 0; e < ne; ++e) {
+            if (isnan(vm->edge_values[e])) continue;
+            ori_edge ed = ori_pattern_edge(p, e);
+            ori_v3 a = ori_pattern_vertex(p, ed.v[0]), b = ori_pattern_vertex(p, ed.v[1]);
+            set_source(cr, value_colour(vm, vm->edge_values[e]));
+            cairo_move_to(cr, IX(a), IY(a));
+            cairo_line_to(cr, IX(b), IY(b));
+            cairo_stroke(cr);
+        }
+    }
     if (def->mark_failing) {
         ori_flat_report *r = ori_flat_check_pattern(p, NULL);
         cairo_set_source_rgb(cr, 1.0, 0.45, 0.0);
@@ -423,6 +520,7 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
 #undef IX
 #undef IY
     ori__free(fv);
+    if (ori__value_map_active(vm)) draw_bar(cr, def);
     return ORI_OK;
 }
 
@@ -469,7 +567,9 @@ int ori__render_scene_points(const ori_mesh *m, const ori_render_def *def, const
 ori_camera ori__render_fit(const ori_render_def *def, const ori_v3 *points, int count)
 {
     ori_camera c = def->camera;
-    if (def->fit_camera) ori_camera_fit(&c, points, count, def->width, def->height, 0.05);
+    // With a colour bar the sheet is fitted to the image left of its strip.
+    int w = def->width - (int)ceil(bar_strip(def));
+    if (def->fit_camera) ori_camera_fit(&c, points, count, w < 1 ? 1 : w, def->height, 0.05);
     return c;
 }
 
@@ -623,12 +723,18 @@ static void draw_3d(cairo_t *cr, const ori_mesh *m, const ori_render_def *def, c
         double k = 1.0;
         if (def->shading && ori_v3_norm(nv) > 0.0) k = ORI_RENDER_AMBIENT + ORI_RENDER_DIFFUSE * fmax(0.0, ori_v3_dot(nvis, light));
         ori_rgb c = front ? def->front : def->back;
+        // A face with a value shows its colour as it is (no light, no texture): it reads off the bar.
+        bool valued = def->values.face_values && !isnan(def->values.face_values[f]);
+        if (valued) {
+            c = value_colour(&def->values, def->values.face_values[f]);
+            k = 1.0;
+        }
         c.r *= k;
         c.g *= k;
         c.b *= k;
         path_piece(cr, &o, pc);
         set_source(cr, c);
-        if (front && tx.surface) {
+        if (front && tx.surface && !valued) {
             cairo_fill_preserve(cr);
             cairo_save(cr);
             cairo_clip(cr);
@@ -683,6 +789,10 @@ static void draw_3d(cairo_t *cr, const ori_mesh *m, const ori_render_def *def, c
             int e = o.side_edge[pc->first + kk];
             if (e < 0 || !edge_drawn(def, m->assign[e])) continue;
             line_style st = edge_style_3d(m->assign[e]);
+            if (def->values.edge_values && !isnan(def->values.edge_values[e])) {
+                st.colour = value_colour(&def->values, def->values.edge_values[e]);
+                st.width = VALUE_LINE_WIDTH;
+            }
             apply_style(cr, &st, lw);
             cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
             ori_v3 a = o.points[pc->first + kk], b = o.points[pc->first + (kk + 1) % pc->count];
@@ -692,6 +802,7 @@ static void draw_3d(cairo_t *cr, const ori_mesh *m, const ori_render_def *def, c
         }
     }
     ori__order_free(&o);
+    if (ori__value_map_active(&def->values)) draw_bar(cr, def);
 }
 
 ori_status ori__draw(cairo_t *cr, const ori_mesh *mesh, const ori_pattern *pattern, const ori_render_def *def,
@@ -762,6 +873,8 @@ ori_status ori_render_image(const ori_state_view *state, const ori_render_def *d
         return ori__fail(error, ORI_ERR_ARGUMENT, "unknown image format (svg, pdf or png)");
     if (def->view != ORI_RENDER_CREASES && def->view != ORI_RENDER_3D)
         return ori__fail(error, ORI_ERR_ARGUMENT, "unknown view");
+    st = ori__value_map_check(&def->values, error);
+    if (st != ORI_OK) return st;
     if (def->view == ORI_RENDER_CREASES && (ori_pattern_is_folded_form(state->pattern) || ori_pattern_is_3d(state->pattern)))
         return ori__fail(error, ORI_ERR_UNSUPPORTED, "the crease view needs a flat crease pattern, not a folded form");
     ori_mesh *m = NULL;

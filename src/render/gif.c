@@ -263,6 +263,8 @@ ori_status ori_gif_write(const ori_gif_def *def, void **data, size_t *size, ori_
         return ori__fail(error, ORI_ERR_ARGUMENT, "the last frame's hold must be a finite time >= 0");
     if (def->render.view != ORI_RENDER_3D)
         return ori__fail(error, ORI_ERR_ARGUMENT, "an animation shows the 3D view");
+    if (ori__value_map_active(&def->render.values))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "values: an animation is not coloured by value (one state's values)");
     int W = def->render.width, H = def->render.height, N = def->frame_count;
     gif_job j;
     memset(&j, 0, sizeof j);

@@ -32,6 +32,7 @@ ori_export_def ori_default_export_def(void)
     d.obj_mtllib = NULL;
     d.face_orders = NULL;
     d.face_order_count = 0;
+    d.values = (ori_value_map){NULL, NULL, 0.0, 1.0};
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -271,6 +272,7 @@ ori_status ori_mesh_export(const ori_mesh *m, const ori_export_def *def, void **
     *data = NULL;
     *size = 0;
     ori_status st = check_def(m, def, error);
+    if (st == ORI_OK) st = ori__value_map_check(&def->values, error);
     if (st != ORI_OK) return st;
     ori__text t = {NULL, 0, 0};
     ori__text_reserve(&t, 0);

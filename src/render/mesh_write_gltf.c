@@ -7,6 +7,10 @@
 // that POSITION + _POSITION_LO gives the double coordinate to about 1e-15 of its size. The FOLD
 // indices are kept in extras: fold_vertices (per vertex) and fold_faces (per triangle) of every
 // primitive, fold_face of every animated node.
+//
+// With face values (ori_export_def.values) every vertex gets COLOR_0, the linear RGB of its face's
+// colour on the colour map (a sheet vertex belongs to one face); the materials are then white, as
+// glTF multiplies COLOR_0 by the base colour.
 #include <math.h>
 #include <stdint.h>
 
@@ -15,7 +19,7 @@
 enum { GL_FLOAT = 5126, GL_UNSIGNED_INT = 5125, GL_ARRAY_BUFFER = 34962, GL_ELEMENT_ARRAY_BUFFER = 34963 };
 
 // Buffer views, in the order they are laid out in the buffer.
-enum { VIEW_POS, VIEW_POS_LO, VIEW_NORMAL, VIEW_UV, VIEW_INDEX, VIEW_TIME, VIEW_ROTATION, VIEW_TRANSLATION, VIEW_COUNT };
+enum { VIEW_POS, VIEW_POS_LO, VIEW_NORMAL, VIEW_UV, VIEW_COLOR, VIEW_INDEX, VIEW_TIME, VIEW_ROTATION, VIEW_TRANSLATION, VIEW_COUNT };
 
 typedef struct bytes {
     unsigned char *d;
@@ -72,6 +76,8 @@ typedef struct gl {
 
 static void real(ori__text *t, double x) { ori__text_real(t, x); }
 
+static double srgb_to_linear(double c);
+
 // An accessor over the last count elements written to a view (starting at byte offset).
 static int accessor(gl *g, int view, size_t offset, int count, const char *type, const float *mn, const float *mx,
                     int ncomp, int component_type)
@@ -104,7 +110,7 @@ static void primitive(gl *g, const ori__xpart *p, int part, bool has_uv, ori__te
 {
     if (p->tcount == 0) return;
     size_t off_pos = g->view[VIEW_POS].n, off_lo = g->view[VIEW_POS_LO].n, off_n = g->view[VIEW_NORMAL].n;
-    size_t off_uv = g->view[VIEW_UV].n, off_i = g->view[VIEW_INDEX].n;
+    size_t off_uv = g->view[VIEW_UV].n, off_i = g->view[VIEW_INDEX].n, off_c = g->view[VIEW_COLOR].n;
     float mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int v = 0; v < p->vcount; ++v) {
         double c[3] = {p->pos[v].x, p->pos[v].y, p->pos[v].z};
@@ -125,16 +131,34 @@ static void primitive(gl *g, const ori__xpart *p, int part, bool has_uv, ori__te
     }
     for (int t = 0; t < p->tcount; ++t)
         for (int k = 0; k < 3; ++k) put_u32(&g->view[VIEW_INDEX], (uint32_t)p->tri[t][k]);
+    const ori_value_map *vm = &g->def->values;
+    if (vm->face_values) {
+        // The face of each vertex: that of a triangle using it (-1: none, the bar's bottom).
+        int *vface = ori__alloc(sizeof(int) * (size_t)p->vcount);
+        for (int v = 0; v < p->vcount; ++v) vface[v] = -1;
+        for (int t = 0; t < p->tcount; ++t)
+            for (int k = 0; k < 3; ++k) vface[p->tri[t][k]] = p->fold_face[t];
+        for (int v = 0; v < p->vcount; ++v) {
+            double val = vface[v] >= 0 ? vm->face_values[vface[v]] : NAN;
+            ori_rgb c = ori_colormap(ori_value_map_position(vm, val));
+            put_f32(&g->view[VIEW_COLOR], (float)srgb_to_linear(c.r));
+            put_f32(&g->view[VIEW_COLOR], (float)srgb_to_linear(c.g));
+            put_f32(&g->view[VIEW_COLOR], (float)srgb_to_linear(c.b));
+        }
+        ori__free(vface);
+    }
     int a_pos = accessor(g, VIEW_POS, off_pos, p->vcount, "VEC3", mn, mx, 3, GL_FLOAT);
     int a_lo = accessor(g, VIEW_POS_LO, off_lo, p->vcount, "VEC3", NULL, NULL, 3, GL_FLOAT);
     int a_n = accessor(g, VIEW_NORMAL, off_n, p->vcount, "VEC3", NULL, NULL, 3, GL_FLOAT);
     int a_uv = has_uv ? accessor(g, VIEW_UV, off_uv, p->vcount, "VEC2", NULL, NULL, 2, GL_FLOAT) : -1;
+    int a_c = vm->face_values ? accessor(g, VIEW_COLOR, off_c, p->vcount, "VEC3", NULL, NULL, 3, GL_FLOAT) : -1;
     int a_i = accessor(g, VIEW_INDEX, off_i, 3 * p->tcount, "SCALAR", NULL, NULL, 1, GL_UNSIGNED_INT);
     g->used_material[part] = true;
     if (!*first) ori__text_puts(prim, ",");
     *first = false;
     ori__text_printf(prim, "{\"attributes\":{\"POSITION\":%d,\"_POSITION_LO\":%d,\"NORMAL\":%d", a_pos, a_lo, a_n);
     if (a_uv >= 0) ori__text_printf(prim, ",\"TEXCOORD_0\":%d", a_uv);
+    if (a_c >= 0) ori__text_printf(prim, ",\"COLOR_0\":%d", a_c);
     ori__text_printf(prim, "},\"indices\":%d,\"material\":%d,\"mode\":4,\"extras\":{\"side\":\"%s\",\"fold_vertices\":[", a_i,
                      part, part == ORI__PART_FRONT ? "front" : part == ORI__PART_BACK ? "back" : "rim");
     for (int v = 0; v < p->vcount; ++v) {
@@ -274,7 +298,7 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
     int K = def->keyframe_count, F = m->face_count;
     // The views that will hold data, numbered in layout order.
     bool present[VIEW_COUNT] = {m->tri_count > 0, m->tri_count > 0, m->tri_count > 0, m->tri_count > 0 && m->has_flat,
-                                m->tri_count > 0, K > 0, K > 0, K > 0};
+                                m->tri_count > 0 && def->values.face_values, m->tri_count > 0, K > 0, K > 0, K > 0};
     int nviews = 0;
     for (int v = 0; v < VIEW_COUNT; ++v) g.view_index[v] = present[v] ? nviews++ : -1;
     if (K == 0) {
@@ -386,6 +410,8 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
     ori__text_put(&j, g.meshes.data, g.meshes.len);
     ori__text_puts(&j, "],\"materials\":[");
     ori_rgb colour[ORI__PART_COUNT] = {def->front, def->back, def->edge};
+    if (def->values.face_values)
+        for (int i = 0; i < ORI__PART_COUNT; ++i) colour[i] = (ori_rgb){1.0, 1.0, 1.0}; // COLOR_0 carries the colour
     static const char *names[ORI__PART_COUNT] = {"front", "back", "rim"};
     // Front and back always; the rim's material when the solid has one.
     int nmat = g.used_material[ORI__PART_RIM] ? 3 : 2;
@@ -404,8 +430,8 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
         ori__text_puts(&j, ",\"accessors\":[");
         ori__text_put(&j, g.acc.data, g.acc.len);
         ori__text_puts(&j, "],\"bufferViews\":[");
-        static const int stride[VIEW_COUNT] = {12, 12, 12, 8, 0, 0, 0, 0};
-        static const int target[VIEW_COUNT] = {GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER,
+        static const int stride[VIEW_COUNT] = {12, 12, 12, 8, 12, 0, 0, 0, 0};
+        static const int target[VIEW_COUNT] = {GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER,
                                                GL_ELEMENT_ARRAY_BUFFER, 0, 0, 0};
         bool first = true;
         for (int v = 0; v < VIEW_COUNT; ++v) {

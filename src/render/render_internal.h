@@ -117,4 +117,11 @@ int ori__render_scene_points(const ori_mesh *m, const ori_render_def *def, const
 // each other step by their normal, by the sign of the crease between them (order.c).
 void ori__render_stacking(const ori_mesh *m, ori_v3 *layer);
 
+// --- colour by value (colormap.c) ---------------------------------------------------------
+
+// Whether a value map paints anything (face or edge values given).
+bool ori__value_map_active(const ori_value_map *map);
+// Check an active map's range (ORI_ERR_ARGUMENT, field "values"); ORI_OK for an inactive one.
+ori_status ori__value_map_check(const ori_value_map *map, ori_error *error);
+
 #endif

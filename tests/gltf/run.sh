@@ -1,7 +1,7 @@
 #!/bin/sh
 # glTF and GLB files written by `orikin export` pass the Khronos glTF validator (npm
 # gltf-validator) with no errors: a static sheet, a thick solid, a sequence's and a fold's
-# animation, a folded Miura-ori. Skipped (exit 77) when node or node_modules is missing.
+# animation, a folded Miura-ori, a compliant fold's frame with strain vertex colours (COLOR_0). Skipped (exit 77) when node or node_modules is missing.
 #
 # usage: tests/gltf/run.sh ORIKIN ROOT
 set -u
@@ -32,5 +32,12 @@ export_to examples/open-corner.seq.json --animate -o "$tmp/corner-animated.glb"
 export_to examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --animate -o "$tmp/fold.glb"
 "$ORIKIN" generate miura --rows 6 --cols 6 -o "$tmp/miura.fold" >/dev/null || fail=1
 export_to "$tmp/miura.fold" --fix 0 --drive 66 --to -120 -o "$tmp/miura.glb"
+"$ORIKIN" fold examples/patterns/open-corner.fold --compliant --percent 40 -o "$tmp/compliant.fold" >/dev/null || fail=1
+export_to "$tmp/compliant.fold" --frame 1 -o "$tmp/compliant-strain.gltf"
+export_to "$tmp/compliant.fold" --frame 1 --thickness 0.05 -o "$tmp/compliant-strain-thick.glb"
+if ! grep -q '"COLOR_0"' "$tmp/compliant-strain.gltf"; then
+    echo "FAIL: the compliant frame's glTF has no COLOR_0"
+    fail=1
+fi
 node tests/gltf/validate.js "$tmp"/*.gltf "$tmp"/*.glb || fail=1
 exit $fail
