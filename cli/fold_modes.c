@@ -11,8 +11,6 @@
 #include <string.h>
 
 #define MODES_MAX_LIST 256
-// Kawasaki misses below this (radians) look like rounded coordinates (as in cmd_fold.c).
-#define MODES_NEAR_KAWASAKI_RAD 1e-3
 // A crease within this of its goal counts as at its goal in the text summary (radians).
 #define MODES_AT_GOAL_RAD 1e-7
 // Fractions of the way closer than this are a tie for "farthest" (the lowest crease is named).
@@ -164,13 +162,6 @@ static int parse(const char *cmd, int argc, char **argv, modes_args *a)
     return CLI_EXIT_OK;
 }
 
-static json_t *int_array(const int *v, int n)
-{
-    json_t *a = json_array();
-    for (int i = 0; i < n; ++i) json_array_append_new(a, json_integer(v[i]));
-    return a;
-}
-
 // The lock-set search of an underdetermined fold's hint, with a progress bar on stderr when it
 // runs over a second (a large flat sheet: seconds); when it finds none, the hint says so.
 static int lock_suggestion(const char *cmd, const ori_mechanism *m, const double *angles, const int *drives, int ndrives,
@@ -211,25 +202,18 @@ struct cli_fold_modes {
     const char *cmd;
     modes_args a;
     cli_kin k;
-    int *group;      // symmetry orbits (edge_count) or NULL
-    int sym_order, sym_groups;
-    int *locks;      // the lock set used (given or automatic)
-    int nlocks;
-    ori_multifold *mf;
-    char hint[1024]; // an underdetermined fold's lock suggestion
+    cli_modes x; // the request as solved and its result (cli/report/modes_report.c)
     cli_collide_opts co;
-    cli_collision col; // the motion's self-collision check (--no-collisions: unchecked)
 };
 typedef struct cli_fold_modes modes_run;
 
 // Frames shown and written: all of them, or those before the first collision.
-static int shown_frames(const modes_run *r) { return cli_collide_frames(&r->col, ori_multifold_frame_count(r->mf)); }
-
+static int shown_frames(const modes_run *r) { return cli_modes_shown_frames(&r->x); }
 
 // The creases whose angle changes (at most cap), for the text table.
 static int moving_creases(const modes_run *r, int *cols, int cap, int *total)
 {
-    const ori_multifold *mf = r->mf;
+    const ori_multifold *mf = r->x.mf;
     int E = ori_mechanism_edge_count(r->k.mech), F = shown_frames(r), n = 0;
     *total = 0;
     if (F < 2) return 0;
@@ -242,13 +226,6 @@ static int moving_creases(const modes_run *r, int *cols, int cap, int *total)
     return n;
 }
 
-// Per crease: start, target, goal, reached, fraction of the way from start to goal.
-typedef struct crease_row {
-    int edge;
-    double start, target, goal, reached, fraction;
-    bool still; // short of its goal and not moved from its start (within ORI_TOL_FOLD_SIGN_RAD)
-} crease_row;
-
 // The text summary of the rows: how many reached their goal, how many stayed at their start
 // while short of it, and the moving crease farthest from its goal by fraction of its way (the
 // lowest fraction; -1 when every moving crease is at its goal).
@@ -256,11 +233,11 @@ typedef struct crease_summary {
     int at, still, farthest;
 } crease_summary;
 
-static crease_summary summarize_creases(crease_row *rows, int n)
+static crease_summary summarize_creases(cli_modes_crease *rows, int n)
 {
     crease_summary cs = {0, 0, -1};
     for (int i = 0; i < n; ++i) {
-        crease_row *c = &rows[i];
+        cli_modes_crease *c = &rows[i];
         bool at = fabs(c->reached - c->goal) <= MODES_AT_GOAL_RAD;
         c->still = !at && fabs(c->reached - c->start) <= ORI_TOL_FOLD_SIGN_RAD;
         if (at) cs.at++;
@@ -270,136 +247,10 @@ static crease_summary summarize_creases(crease_row *rows, int n)
     return cs;
 }
 
-static int crease_rows(const modes_run *r, crease_row *rows)
-{
-    const ori_mechanism *m = r->k.mech;
-    const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(m), F = shown_frames(r), n = 0;
-    if (F == 0) return 0;
-    double *target = malloc(sizeof(double) * (size_t)(E + 1));
-    ori_target_angles_default(r->k.flat, target);
-    const double *a0 = ori_multifold_frame_angles(mf, 0), *a1 = ori_multifold_frame_angles(mf, F - 1);
-    const double *goal = ori_multifold_goal(mf);
-    for (int e = 0; e < E; ++e) {
-        int j = ori_mechanism_edge_joint(m, e);
-        if (j == ORI_NULL_INDEX || ori_mechanism_joint(m, j).kind != ORI_JOINT_REVOLUTE) continue;
-        // Drives: the driven creases only (the others have no goal of their own).
-        if (!r->a.has_percent && fabs(goal[e] - a0[e]) <= ORI_TOL_TARGET_RAD) continue;
-        crease_row c = {e, a0[e], r->a.has_percent ? target[e] : goal[e], goal[e], a1[e], 1.0, false};
-        double span = c.goal - c.start;
-        if (fabs(span) > ORI_TOL_TARGET_RAD) c.fraction = (c.reached - c.start) / span;
-        else c.fraction = fabs(c.reached - c.start) <= ORI_TOL_FOLD_SIGN_RAD ? 1.0 : 0.0;
-        rows[n++] = c;
-    }
-    free(target);
-    return n;
-}
-
-// Creases that fold against their assignment on some frame (worst angle each), as in the
-// ordinary fold's invalid-assignment check: the modes report them without stopping.
-typedef struct against_row {
-    int edge;
-    char assignment;
-    double angle;
-} against_row;
-
-static int against_assignment(const modes_run *r, against_row *rows)
-{
-    const ori_mechanism *m = r->k.mech;
-    const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(m), F = shown_frames(r), n = 0;
-    for (int e = 0; e < E; ++e) {
-        ori_assignment as = ori_pattern_edge(r->k.flat, e).assignment;
-        int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
-        if (!sg) continue;
-        double worst = 0.0;
-        for (int f = 0; f < F; ++f) {
-            double x = ori_multifold_frame_angles(mf, f)[e];
-            if (x * sg < 0.0 && fabs(x) > ORI_TOL_FOLD_SIGN_RAD && fabs(x) > fabs(worst)) worst = x;
-        }
-        if (worst != 0.0) rows[n++] = (against_row){e, ori_assignment_to_char(as), worst};
-    }
-    return n;
-}
-
-static void print_json(const modes_run *r)
-{
-    const modes_args *a = &r->a;
-    const ori_multifold *mf = r->mf;
-    int E = ori_mechanism_edge_count(r->k.mech), F = shown_frames(r);
-    ori_multifold_verdict v = ori_multifold_verdict_of(mf);
-    json_t *out = json_object();
-    json_object_set_new(out, "file", json_string(a->path));
-    json_object_set_new(out, "mode", json_string(a->has_percent ? "targets" : "drives"));
-    bool collides = cli_collides(&r->col);
-    char hit[256] = "";
-    if (collides) cli_collision_describe(&r->col, false, hit, sizeof hit);
-    json_object_set_new(out, "valid", json_boolean(v == ORI_MULTIFOLD_REACHED && !collides));
-    json_object_set_new(out, "verdict", json_string(collides ? "collision" : ori_multifold_verdict_name(v)));
-    json_object_set_new(out, "reason", json_string(collides ? hit : ori_multifold_reason(mf)));
-    json_object_set_new(out, "collision", cli_collision_json(&r->col, false));
-    json_object_set_new(out, "hint", r->hint[0] ? json_string(r->hint) : json_null());
-    int se = ori_multifold_stop_edge(mf);
-    json_object_set_new(out, "stop_edge", se == ORI_NULL_INDEX ? json_null() : json_integer(se));
-    json_object_set_new(out, "fixed_face", json_integer(a->fix));
-    json_object_set_new(out, "percent", a->has_percent ? json_real(a->percent) : json_null());
-    json_object_set_new(out, "step_deg", json_real(a->step_deg));
-    if (r->group)
-        json_object_set_new(out, "symmetry",
-                            json_pack("{s:i,s:i}", "order", r->sym_order, "crease_groups", r->sym_groups));
-    else
-        json_object_set_new(out, "symmetry", json_null());
-    json_object_set_new(out, "locked", int_array(r->locks, r->nlocks));
-    json_object_set_new(out, "lock_auto", json_boolean(a->lock_auto));
-    json_t *dr = json_array();
-    for (int i = 0; !a->has_percent && i < a->ndrives; ++i)
-        json_array_append_new(dr, json_pack("{s:i,s:f}", "edge", a->drives[i], "to_deg", a->to[i]));
-    json_object_set_new(out, "drives", dr);
-    crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
-    int nr = crease_rows(r, rows);
-    json_t *cr = json_array();
-    for (int i = 0; i < nr; ++i)
-        json_array_append_new(cr, json_pack("{s:i,s:f,s:f,s:f,s:f,s:f}", "edge", rows[i].edge, "start_deg",
-                                            ori_rad_to_deg_output(rows[i].start), "target_deg",
-                                            ori_rad_to_deg_output(rows[i].target), "goal_deg",
-                                            ori_rad_to_deg_output(rows[i].goal), "reached_deg",
-                                            ori_rad_to_deg_output(rows[i].reached), "fraction", rows[i].fraction));
-    free(rows);
-    json_object_set_new(out, "creases", cr);
-    against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
-    int na = against_assignment(r, ag);
-    json_t *aj = json_array();
-    for (int i = 0; i < na; ++i) {
-        char as[2] = {ag[i].assignment, '\0'};
-        json_array_append_new(aj, json_pack("{s:i,s:s,s:f}", "edge", ag[i].edge, "assignment", as, "angle_deg",
-                                            ori_rad_to_deg_output(ag[i].angle)));
-    }
-    free(ag);
-    json_object_set_new(out, "against_assignment", aj);
-    json_t *frames = json_array();
-    double maxres = 0.0;
-    for (int f = 0; f < F; ++f) {
-        const double *ang = ori_multifold_frame_angles(mf, f);
-        json_t *angs = json_array();
-        for (int e = 0; e < E; ++e) json_array_append_new(angs, json_real(ori_rad_to_deg_output(ang[e])));
-        double res = ori_multifold_frame_residual(mf, f);
-        maxres = fmax(maxres, res);
-        json_array_append_new(frames, json_pack("{s:f,s:o,s:f}", "progress", ori_multifold_frame_progress(mf, f),
-                                                "fold_angles_deg", angs, "residual", res));
-    }
-    json_object_set_new(out, "frames", frames);
-    int steps, rejected, newton;
-    ori_multifold_stats(mf, &steps, &rejected, &newton);
-    json_object_set_new(out, "stats", json_pack("{s:i,s:i,s:i,s:i,s:f}", "steps", steps, "rejected_steps", rejected,
-                                                "newton_iterations", newton, "held_at_180", ori_multifold_held_count(mf),
-                                                "max_residual", maxres));
-    cli_print_json(out);
-}
-
 static void print_text(const modes_run *r)
 {
     const modes_args *a = &r->a;
-    const ori_multifold *mf = r->mf;
+    const ori_multifold *mf = r->x.mf;
     int E = ori_mechanism_edge_count(r->k.mech), F = shown_frames(r);
     if (a->has_percent) {
         printf("%s: fold toward the targets, %g %% of the way (step %g deg), face %d fixed%s", a->path, a->percent,
@@ -409,14 +260,14 @@ static void print_text(const modes_run *r)
         for (int i = 0; i < a->ndrives; ++i) printf("%s crease %d to %g deg", i ? "," : "", a->drives[i], a->to[i]);
         printf(" together (step %g deg), face %d fixed%s", a->step_deg, a->fix, a->fix_default ? CLI_FOLD_DEFAULT_FIX_NOTE : "");
     }
-    if (r->nlocks) {
+    if (r->x.nlocks) {
         printf(", locked%s", a->lock_auto ? " (auto)" : "");
-        for (int i = 0; i < r->nlocks; ++i) printf("%s%d", i ? "," : " ", r->locks[i]);
+        for (int i = 0; i < r->x.nlocks; ++i) printf("%s%d", i ? "," : " ", r->x.locks[i]);
     }
     printf("\n");
-    if (r->group)
-        printf("symmetry: %d symmetries of the flat pattern; %d groups of creases kept at equal angles\n", r->sym_order,
-               r->sym_groups);
+    if (r->x.group)
+        printf("symmetry: %d symmetries of the flat pattern; %d groups of creases kept at equal angles\n", r->x.sym_order,
+               r->x.sym_groups);
     int cols[8], total;
     int nc = moving_creases(r, cols, 8, &total);
     if (F > 0) {
@@ -431,9 +282,9 @@ static void print_text(const modes_run *r)
         if (total > nc) printf("(%d more moving creases: see --json)\n", total - nc);
     }
     ori_multifold_verdict v = ori_multifold_verdict_of(mf);
-    if (cli_collides(&r->col)) {
+    if (cli_collides(&r->x.col)) {
         char hit[256];
-        cli_collision_describe(&r->col, false, hit, sizeof hit);
+        cli_collision_describe(&r->x.col, false, hit, sizeof hit);
         printf("verdict: collision: %s (the motion stops at the last clean step)\n", hit);
     } else {
         printf("verdict: %s: %s\n", ori_multifold_verdict_name(v), ori_multifold_reason(mf));
@@ -442,9 +293,9 @@ static void print_text(const modes_run *r)
         printf("note: %d crease%s reached 180 deg (%s target) first and %s held there\n", ori_multifold_held_count(mf),
                ori_multifold_held_count(mf) == 1 ? "" : "s", ori_multifold_held_count(mf) == 1 ? "its" : "their",
                ori_multifold_held_count(mf) == 1 ? "was" : "were");
-    if (r->hint[0]) printf("hint: %s\n", r->hint);
-    against_row *ag = malloc(sizeof(against_row) * (size_t)(E + 1));
-    int na = against_assignment(r, ag);
+    if (r->x.hint[0]) printf("hint: %s\n", r->x.hint);
+    cli_modes_against *ag = malloc(sizeof(cli_modes_against) * (size_t)(E + 1));
+    int na = cli_modes_against_assignment(&r->x, ag);
     if (na && v != ORI_MULTIFOLD_INVALID_ASSIGNMENT) { // else the verdict names them
         printf("note: %d crease%s fold%s against %s assignment:", na, na == 1 ? "" : "s", na == 1 ? "s" : "",
                na == 1 ? "its" : "their");
@@ -454,8 +305,8 @@ static void print_text(const modes_run *r)
         printf("%s\n", na > 8 ? ", ... (--json)" : "");
     }
     free(ag);
-    crease_row *rows = malloc(sizeof(crease_row) * (size_t)(E + 1));
-    int nr = crease_rows(r, rows);
+    cli_modes_crease *rows = malloc(sizeof(cli_modes_crease) * (size_t)(E + 1));
+    int nr = cli_modes_creases(&r->x, rows);
     crease_summary cs = summarize_creases(rows, nr);
     if (nr > 0 && a->has_percent && a->percent < 100.0 && v == ORI_MULTIFOLD_REACHED) {
         // Part of the way: where each crease got on its way to its target.
@@ -488,9 +339,9 @@ static void print_text(const modes_run *r)
 static int write_frames(const modes_run *r)
 {
     const ori_mechanism *m = r->k.mech;
-    const ori_multifold *mf = r->mf;
+    const ori_multifold *mf = r->x.mf;
     int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
-    bool collides = cli_collides(&r->col);
+    bool collides = cli_collides(&r->x.col);
     bool partial = collides || ori_multifold_verdict_of(mf) != ORI_MULTIFOLD_REACHED;
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
     for (int f = 0; f < shown_frames(r); ++f) {
@@ -519,8 +370,6 @@ static int check_edge(const modes_run *r, const char *option, int e)
 static int solve(modes_run *r)
 {
     const modes_args *a = &r->a;
-    const ori_mechanism *m = r->k.mech;
-    int E = ori_mechanism_edge_count(m);
     ori_rigid pose;
     int rc = cli_kin_fixed_pose(r->cmd, a->path, &r->k, a->fix, &pose);
     if (rc != CLI_EXIT_OK) return rc;
@@ -528,85 +377,43 @@ static int solve(modes_run *r)
         if ((rc = check_edge(r, "--lock", a->locks[i])) != CLI_EXIT_OK) return rc;
     for (int i = 0; i < a->ndrives; ++i)
         if ((rc = check_edge(r, "--drive", a->drives[i])) != CLI_EXIT_OK) return rc;
-    if (a->symmetric) {
-        r->group = malloc(sizeof(int) * (size_t)(E + 1));
-        r->sym_groups = ori_mechanism_symmetry_orbits(m, r->group);
-        r->sym_order = ori_mechanism_symmetries(m, NULL, 0);
-    }
-    r->locks = malloc(sizeof(int) * (size_t)(E + 1));
-    memcpy(r->locks, a->locks, sizeof(int) * (size_t)a->nlocks);
-    r->nlocks = a->nlocks;
-    ori_error err;
-    if (a->lock_auto) {
-        int n = ori_mechanism_lock_set(m, r->k.angles, a->drives, a->ndrives, a->locks, a->nlocks, r->group,
-                                       r->locks + r->nlocks, E + 1 - r->nlocks, &err);
-        if (n < 0) return cli_input_error(r->cmd, a->path, &err);
-        r->nlocks += n;
-    }
-    ori_status st;
+    cli_modes *x = &r->x;
+    x->fix = a->fix;
+    x->has_percent = a->has_percent;
+    x->percent = a->percent;
+    x->drives = a->drives;
+    x->to_deg = a->to;
+    x->ndrives = a->ndrives;
+    x->given_locks = a->locks;
+    x->ngiven = a->nlocks;
+    x->lock_auto = a->lock_auto;
+    x->symmetric = a->symmetric;
+    x->step_deg = a->step_deg;
+    x->mech = r->k.mech;
+    x->flat = r->k.flat;
+    x->start = r->k.angles;
+    x->pose = pose;
     cli_progress bar; // a large sheet's solve may run for minutes
     cli_progress_begin(&bar, r->cmd, "solving");
-    if (a->has_percent) {
-        ori_target_fold_def d = ori_default_target_fold_def();
-        d.fixed_face = a->fix;
-        d.fixed_pose = pose;
-        d.start_angles_rad = r->k.angles;
-        d.fraction = a->percent / 100.0;
-        d.step_rad = ori_deg_to_rad(a->step_deg);
-        d.locked_edges = r->locks;
-        d.locked_count = r->nlocks;
-        d.edge_group = r->group;
-        d.progress = cli_progress_fn;
-        d.progress_user = &bar;
-        st = ori_target_fold_solve(m, &d, &r->mf, &err);
-    } else {
-        double to[MODES_MAX_LIST];
-        for (int i = 0; i < a->ndrives; ++i) to[i] = ori_deg_to_rad(a->to[i]);
-        ori_drives_fold_def d = ori_default_drives_fold_def();
-        d.fixed_face = a->fix;
-        d.fixed_pose = pose;
-        d.start_angles_rad = r->k.angles;
-        d.driven_edges = a->drives;
-        d.to_rad = to;
-        d.driven_count = a->ndrives;
-        d.step_rad = ori_deg_to_rad(a->step_deg);
-        d.locked_edges = r->locks;
-        d.locked_count = r->nlocks;
-        d.edge_group = r->group;
-        d.progress = cli_progress_fn;
-        d.progress_user = &bar;
-        st = ori_drives_fold_solve(m, &d, &r->mf, &err);
-    }
+    x->progress = cli_progress_fn;
+    x->progress_user = &bar;
+    ori_error err;
+    ori_status st = cli_modes_solve(x, &err);
     cli_progress_end(&bar);
+    x->progress = NULL;
+    x->progress_user = NULL;
     if (st != ORI_OK) {
+        if (x->lock_set_failed) return cli_input_error(r->cmd, a->path, &err);
         // A driven or locked crease the fold cannot use is a command-line value: usage error.
         for (int i = 0; i < a->ndrives && strcmp(err.field, "edges_vertices") == 0; ++i)
             if (err.element == a->drives[i]) return cli_value_fail(r->cmd, a->path, "--drive", "%s", err.message);
         rc = cli_input_error(r->cmd, a->path, &err);
         return st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL ? CLI_EXIT_INTERNAL : rc;
     }
-    // A drawing with rounded coordinates is rigid where its exact design folds: say so.
-    ori_multifold_verdict v = ori_multifold_verdict_of(r->mf);
-    if (v == ORI_MULTIFOLD_SINGULAR || v == ORI_MULTIFOLD_OVERDETERMINED) {
-        int near = 0;
-        double worst = 0.0;
-        for (int x = 0; x < ori_pattern_vertex_count(r->k.flat); ++x) {
-            if (!ori_pattern_vertex_is_interior(r->k.flat, x)) continue;
-            ori_vertex_report vr;
-            ori_flat_check_vertex(r->k.flat, x, &vr);
-            if (vr.degree % 2 || vr.kawasaki || fabs(vr.kawasaki_rad) > MODES_NEAR_KAWASAKI_RAD) continue;
-            near++;
-            worst = fmax(worst, fabs(vr.kawasaki_rad));
-        }
-        if (near)
-            snprintf(r->hint, sizeof r->hint,
-                     "%d interior vertices miss Kawasaki by up to %.2g rad (rounded coordinates?): rigid folding is "
-                     "exact; see orikin check --tolerance, and orikin regularize --rigid to make the drawing exact",
-                     near, worst);
-    }
-    if (v == ORI_MULTIFOLD_UNDERDETERMINED)
-        lock_suggestion(r->cmd, m, r->k.angles, a->drives, a->ndrives, r->locks, r->nlocks, r->group, r->hint,
-                        sizeof r->hint, NULL);
+    cli_progress hb; // an underdetermined fold's lock-set search (a large flat sheet: seconds)
+    cli_progress_begin(&hb, r->cmd, "looking for a lock set");
+    cli_modes_hint(x, cli_progress_fn, &hb);
+    cli_progress_end(&hb);
     return CLI_EXIT_OK;
 }
 
@@ -717,45 +524,37 @@ int cli_fold_modes_solve(cli_fold_modes *r)
 int cli_fold_modes_resolve_step(cli_fold_modes *r, double step_deg)
 {
     if (!(step_deg > 0.0)) return CLI_EXIT_OK;
-    ori_multifold *old = r->mf;
-    double keep = r->a.step_deg;
-    int *keep_locks = r->locks, keep_n = r->nlocks, *keep_group = r->group;
-    r->mf = NULL;
-    r->locks = NULL;
-    r->group = NULL;
+    cli_modes keep = r->x;
+    double keep_step = r->a.step_deg;
+    r->x.mf = NULL;
+    r->x.locks = NULL;
+    r->x.group = NULL;
     r->a.step_deg = step_deg;
     int rc = solve(r);
     if (rc != CLI_EXIT_OK) { // keep the first solve
-        ori_multifold_destroy(r->mf);
-        free(r->locks);
-        free(r->group);
-        r->mf = old;
-        r->locks = keep_locks;
-        r->nlocks = keep_n;
-        r->group = keep_group;
-        r->a.step_deg = keep;
+        cli_modes_free(&r->x);
+        r->x = keep;
+        r->a.step_deg = keep_step;
         return rc;
     }
-    ori_multifold_destroy(old);
-    free(keep_locks);
-    free(keep_group);
+    cli_modes_free(&keep);
     return CLI_EXIT_OK;
 }
 
-const ori_multifold *cli_fold_modes_result(const cli_fold_modes *r) { return r->mf; }
+const ori_multifold *cli_fold_modes_result(const cli_fold_modes *r) { return r->x.mf; }
 cli_kin *cli_fold_modes_kin(cli_fold_modes *r) { return &r->k; }
 int cli_fold_modes_fixed_face(const cli_fold_modes *r) { return r->a.fix; }
 bool cli_fold_modes_fix_default(const cli_fold_modes *r) { return r->a.fix_default; }
 
 const int *cli_fold_modes_locks(const cli_fold_modes *r, int *count)
 {
-    *count = r->nlocks;
-    return r->locks;
+    *count = r->x.nlocks;
+    return r->x.locks;
 }
 
 double cli_fold_modes_span(const cli_fold_modes *r)
 {
-    const ori_multifold *mf = r->mf;
+    const ori_multifold *mf = r->x.mf;
     if (!mf || ori_multifold_frame_count(mf) == 0) return 0.0;
     int E = ori_mechanism_edge_count(r->k.mech);
     const double *a0 = ori_multifold_frame_angles(mf, 0), *goal = ori_multifold_goal(mf);
@@ -767,7 +566,7 @@ double cli_fold_modes_span(const cli_fold_modes *r)
 void cli_fold_modes_label(const cli_fold_modes *r, char *buf, size_t size)
 {
     const modes_args *a = &r->a;
-    const ori_multifold *mf = r->mf;
+    const ori_multifold *mf = r->x.mf;
     int F = mf ? ori_multifold_frame_count(mf) : 0;
     double reached = F ? 100.0 * ori_multifold_frame_progress(mf, F - 1) : 0.0;
     if (a->has_percent) {
@@ -792,9 +591,7 @@ void cli_fold_modes_label(const cli_fold_modes *r, char *buf, size_t size)
 void cli_fold_modes_free(cli_fold_modes *r)
 {
     if (!r) return;
-    ori_multifold_destroy(r->mf);
-    free(r->group);
-    free(r->locks);
+    cli_modes_free(&r->x);
     cli_kin_free(&r->k);
     free(r);
 }
@@ -825,20 +622,18 @@ int cli_fold_modes_run(int argc, char **argv)
     if (rc == CLI_EXIT_OK) rc = guard_output(&r, force);
     if (rc == CLI_EXIT_OK) rc = solve(&r);
     if (rc == CLI_EXIT_OK)
-        rc = cli_collide_multifold("fold", r.a.path, &r.co, r.k.flat, r.mf, r.locks, r.nlocks, &r.col);
+        rc = cli_collide_multifold("fold", r.a.path, &r.co, r.k.flat, r.x.mf, r.x.locks, r.x.nlocks, &r.x.col);
     if (rc == CLI_EXIT_OK) {
-        if (r.a.json) print_json(&r);
+        if (r.a.json) cli_print_json(cli_modes_json(&r.x, r.a.path));
         else print_text(&r);
-        ori_multifold_verdict v = ori_multifold_verdict_of(r.mf);
-        rc = v == ORI_MULTIFOLD_REACHED && !cli_collides(&r.col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
+        ori_multifold_verdict v = ori_multifold_verdict_of(r.x.mf);
+        rc = v == ORI_MULTIFOLD_REACHED && !cli_collides(&r.x.col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
         if (r.a.out && shown_frames(&r) > 0) {
             int wr = write_frames(&r);
             if (wr != CLI_EXIT_OK) rc = wr;
         }
     }
-    ori_multifold_destroy(r.mf);
-    free(r.group);
-    free(r.locks);
+    cli_modes_free(&r.x);
     cli_kin_free(&r.k);
     return rc;
 }

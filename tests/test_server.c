@@ -1995,6 +1995,65 @@ Test(server, fold_lock_auto_equals_cli_json)
     studio_destroy(s);
 }
 
+Test(server, fold_modes_equal_cli_json)
+{
+    // toward the targets, symmetric, several drives with lock auto: the answer orikin fold gives
+    // in that mode (cli/report/modes_report.c), and its states served by /api/fold/frame
+    studio *s = open_studio("tests/data/waterbomb-base.fold");
+    const struct {
+        const char *body, *cli;
+        int rc;
+    } cases[] = {
+        {"{\"percent\": 60, \"step\": 10}", "--percent 60 --step 10", 0},
+        {"{\"fix\": 0, \"drive\": 8, \"to\": -60, \"step\": 10, \"symmetric\": true}", "--fix 0 --drive 8 --to -60 --step 10 --symmetric", 0},
+        {"{\"fix\": 0, \"drive\": [8, 12], \"to\": [-60, 30], \"step\": 10, \"lock\": \"auto\"}",
+         "--fix 0 --drive 8,12 --to -60,30 --step 10 --lock auto", 1},
+        {"{\"percent\": 100, \"symmetric\": true, \"no_collisions\": true}", "--percent 100 --symmetric --no-collisions", 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        json_t *api = call_json(s, "POST", "/api/fold", NULL, cases[i].body, 200);
+        char cmd[256];
+        snprintf(cmd, sizeof cmd, "fold tests/data/waterbomb-base.fold %s --json", cases[i].cli);
+        json_t *cli = cli_json(cmd, cases[i].rc);
+        assert_same(api, cli, cases[i].cli);
+        json_t *frames = json_object_get(api, "frames");
+        size_t n = json_array_size(frames);
+        cr_assert_gt(n, 1, "%s", cases[i].cli);
+        // the last state: the answer's angles, a closed state
+        char query[64];
+        snprintf(query, sizeof query, "k=%zu", n - 1);
+        json_t *fr = call_json(s, "GET", "/api/fold/frame", query, NULL, 200);
+        cr_assert(json_is_null(json_object_get(fr, "drive_deg")), "a mode has no drive angle");
+        json_t *want = json_object_get(json_array_get(frames, n - 1), "fold_angles_deg");
+        json_t *got = json_object_get(fr, "fold_angles_deg");
+        cr_assert_eq(json_array_size(got), json_array_size(want));
+        for (size_t e = 0; e < json_array_size(want); ++e)
+            cr_assert_float_eq(json_number_value(json_array_get(got, e)), json_number_value(json_array_get(want, e)), 1e-12,
+                               "%s: edge %zu", cases[i].cli, e);
+        cr_assert_leq(json_number_value(json_object_get(fr, "residual")), 1e-9);
+        json_decref(fr);
+        json_decref(api);
+        json_decref(cli);
+    }
+    // the mistakes orikin fold refuses, refused in the same terms
+    const struct {
+        const char *body, *text;
+    } bad[] = {
+        {"{\"percent\": 120}", "percent needs a number from 0 to 100, got 120"},
+        {"{\"percent\": 50, \"drive\": 8}", "percent folds every crease toward its target: no drive or to with it"},
+        {"{\"percent\": 50, \"from\": 0}", "from applies to a single drive"},
+        {"{\"drive\": [8, 12], \"to\": [-60]}", "to has 1 angles for 2 driven creases"},
+        {"{\"drive\": [8, 99], \"to\": [-60, 30]}", "no edge 99"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        studio_response r = call(s, "POST", "/api/fold", NULL, bad[i].body);
+        cr_assert_eq(r.status, 400, "%s: %d %s", bad[i].body, r.status, r.body);
+        cr_assert(strstr(r.body, bad[i].text), "%s: %s", bad[i].body, r.body);
+        studio_response_free(&r);
+    }
+    studio_destroy(s);
+}
+
 // Host parsing is strict (issue: "Host: 127.0.0.1:+PORT" was accepted, and of two Host headers
 // only the first was read): the port in decimal digits equal to ours, and one Host, Origin and
 // token header each.

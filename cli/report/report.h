@@ -10,7 +10,9 @@
 // cli_layers_count_json, cli_info_json, cli_tree_json, cli_dof_json, cli_axiom_json,
 // cli_axiom_solution_error,
 // cli_regularize_request_error, cli_regularize_pattern_error, cli_regularize_refusal,
-// cli_regularize_json, cli_face_label, cli_apply_counts_json, cli_apply_new_faces_json.
+// cli_regularize_json, cli_face_label, cli_apply_counts_json, cli_apply_new_faces_json,
+// cli_modes_solve, cli_modes_hint, cli_modes_shown_frames, cli_modes_creases,
+// cli_modes_against_assignment, cli_modes_json, cli_modes_free.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -93,6 +95,68 @@ json_t *cli_fold_json(const cli_fold_fields *fields, const ori_pattern *flat, co
 // folds, frames} of a recorded sequence (docs/sequence.md; edge_count creases): a new object.
 json_t *cli_record_json(const char *sequence, const char *pattern, const ori_sequence *s, const ori_record *r,
                         int edge_count, const cli_collision *col);
+
+// --- the fold modes (orikin fold --percent / several --drive / --symmetric / --lock auto; POST /api/fold)
+
+// A fold of several degrees of freedom: the request (resolved creases and face), the pattern it
+// runs on (borrowed), and what cli_modes_solve made (owned; cli_modes_free).
+typedef struct cli_modes {
+    int fix;                            // the face held fixed
+    bool has_percent;                   // toward the targets, percent (0–100) of the way
+    double percent;
+    const int *drives;                  // several drives: creases and targets (ndrives each; borrowed)
+    const double *to_deg;
+    int ndrives;
+    const int *given_locks;             // creases held at their start angle (borrowed)
+    int ngiven;
+    bool lock_auto, symmetric;
+    double step_deg;
+    const ori_mechanism *mech;          // the pattern (borrowed)
+    const ori_pattern *flat;
+    const double *start;                // start fold angles (edge_count, radians)
+    ori_rigid pose;                     // the fixed face's world pose at the start
+    ori_progress_fn *progress;          // the solve's progress (may be NULL)
+    void *progress_user;
+    // results
+    ori_multifold *mf;
+    int *group;                         // symmetry orbits (edge_count) or NULL
+    int sym_order, sym_groups;
+    int *locks;                         // the lock set used (given, then automatic)
+    int nlocks;
+    bool lock_set_failed;               // the failure was the automatic lock set's
+    char hint[1024];                    // rounded coordinates, or an underdetermined fold's lock suggestion
+    cli_collision col;                  // the caller's self-collision check of mf (zero: unchecked)
+} cli_modes;
+
+// Symmetry orbits, the automatic lock set and the fold (ori_target_fold_solve or
+// ori_drives_fold_solve); the library's failure with *err (lock_set_failed says which step).
+ori_status cli_modes_solve(cli_modes *x, ori_error *err);
+// The hint of a fold that did not reach its goal: rounded coordinates (Kawasaki missed by under
+// 1e-3 rad) or, underdetermined, a lock set (searched with progress, which may be NULL).
+void cli_modes_hint(cli_modes *x, ori_progress_fn *progress, void *user);
+// Frames to show and write: all of them, or those before the first collision.
+int cli_modes_shown_frames(const cli_modes *x);
+// Per crease with a goal: start, target, goal, reached (radians), fraction of the way.
+typedef struct cli_modes_crease {
+    int edge;
+    double start, target, goal, reached, fraction;
+    bool still; // set by the text summary: short of its goal and not moved
+} cli_modes_crease;
+// The rows into rows (edge_count + 1 entries); returns their number.
+int cli_modes_creases(const cli_modes *x, cli_modes_crease *rows);
+// Creases folding against their assignment on a shown frame: edge, M/V, worst angle (radians).
+typedef struct cli_modes_against {
+    int edge;
+    char assignment;
+    double angle;
+} cli_modes_against;
+int cli_modes_against_assignment(const cli_modes *x, cli_modes_against *rows);
+// orikin fold --json of a mode: {file, mode, valid, verdict, reason, collision, hint, stop_edge,
+// fixed_face, percent, step_deg, symmetry, locked, lock_auto, drives, creases,
+// against_assignment, frames, stats}: a new object.
+json_t *cli_modes_json(const cli_modes *x, const char *file);
+// Release the results (the request and pattern are the caller's).
+void cli_modes_free(cli_modes *x);
 
 // --- local flat-foldability (orikin check; GET /api/check) ----------------------------------
 

@@ -73,8 +73,9 @@ void studio_seq_unref(studio_seq *q);
 typedef struct studio_fold {
     atomic_int refs;
     studio_model *model;
-    ori_motion *motion;
-    ori_motion_def def;      // as solved (its arrays below are owned)
+    ori_motion *motion;      // a single-drive fold, or NULL
+    ori_multifold *multi;    // else a fold mode (toward the targets, several drives, symmetric)
+    ori_motion_def def;      // as solved (its arrays below are owned; a mode: fixed_face and fixed_pose)
     double *start_angles;
     int *locks;
     double start_drive_rad;  // where the drive starts (exports time the motion from it)

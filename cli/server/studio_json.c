@@ -99,7 +99,8 @@ char *studio_json_frame_text(int frame, double drive_rad, const double *angles_r
     tb_str(&b, "{\"frame\":");
     tb_num(&b, frame);
     tb_str(&b, ",\"drive_deg\":");
-    tb_num(&b, ori_rad_to_deg_output(drive_rad));
+    if (isnan(drive_rad)) tb_str(&b, "null"); // a fold mode: no drive angle
+    else tb_num(&b, ori_rad_to_deg_output(drive_rad));
     tb_str(&b, ",\"fold_angles_deg\":");
     tb_degrees(&b, angles_rad, E);
     tb_str(&b, ",\"residual\":");

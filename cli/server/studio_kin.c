@@ -565,10 +565,278 @@ static bool auto_locks(const ori_mechanism *m, const double *angles, fold_reques
     return ok;
 }
 
+// --- the fold modes (orikin fold --percent, several drives, --symmetric, --lock auto) ------
+
+// A body asking for a mode: "percent", "symmetric": true, or "drive" as an array.
+static bool wants_mode(json_t *o)
+{
+    return json_object_get(o, "percent") || json_is_true(json_object_get(o, "symmetric")) ||
+           json_is_array(json_object_get(o, "drive"));
+}
+
+#define MODES_MAX 256 // drives and locks of a mode (as orikin fold takes)
+
+// The mode's fields as orikin fold's options: {fix (default: the face at the centre), percent |
+// drive: [E…] and to: [A…], step, lock: [E…] | "auto", symmetric, frame, no_collisions,
+// clearance}. The creases and face are resolved against p.
+typedef struct modes_request {
+    int fix;
+    bool has_percent, lock_auto, symmetric;
+    double percent, step_deg;
+    int drives[MODES_MAX], ndrives;
+    double to[MODES_MAX];
+    int locks[MODES_MAX], nlocks;
+    int frame;
+    studio_collide_opts collide;
+} modes_request;
+
+static bool parse_modes(json_t *o, const ori_pattern *p, modes_request *q, studio_response *out)
+{
+    static const char *const keys[] = {"fix", "drive", "to", "percent", "step", "lock", "symmetric", "frame",
+                                       "no_collisions", "clearance", "from", "solver", "linear", "after_sequence", NULL};
+    memset(q, 0, sizeof *q);
+    q->step_deg = 10.0;
+    if (!studio_check_keys(o, keys, out)) return false;
+    for (const char *const *k = (const char *const[]){"from", "solver", "linear", "after_sequence", NULL}; *k; ++k)
+        if (json_object_get(o, *k)) {
+            studio_fail(out, 400, "%s applies to a single drive, not with percent, several drives or symmetric", *k);
+            return false;
+        }
+    bool has_to;
+    if (!studio_get_number(o, "percent", false, &q->percent, &q->has_percent, out) ||
+        !studio_get_number(o, "step", false, &q->step_deg, NULL, out) || !studio_get_bool(o, "symmetric", &q->symmetric, out) ||
+        !studio_get_int(o, "frame", false, &q->frame, NULL, out) || !collide_opts_json(o, &q->collide, out))
+        return false;
+    if (q->has_percent && !(q->percent >= 0.0 && q->percent <= 100.0)) {
+        studio_fail(out, 400, "percent needs a number from 0 to 100, got %g", q->percent);
+        return false;
+    }
+    if (!(q->step_deg > 0.0)) {
+        studio_fail(out, 400, "step must be a positive angle in degrees, got %g", q->step_deg);
+        return false;
+    }
+    if (q->frame < 0) {
+        studio_fail(out, 400, "frame: must be a frame number >= 0");
+        return false;
+    }
+    json_t *fix = json_object_get(o, "fix");
+    if (!fix) {
+        q->fix = ori_pattern_center_face(p); // as orikin fold without --fix
+    } else if (json_is_string(fix)) {
+        q->fix = ori_pattern_find_face_by_name(p, json_string_value(fix));
+        if (q->fix == ORI_NULL_INDEX) {
+            studio_fail(out, 400, "fix: no face named %.64s", json_string_value(fix));
+            return false;
+        }
+    } else if (json_is_integer(fix) && json_integer_value(fix) >= 0 && json_integer_value(fix) < ori_pattern_face_count(p)) {
+        q->fix = (int)json_integer_value(fix);
+    } else {
+        studio_fail(out, 400, "fix: a face index (0 to %d) or name", ori_pattern_face_count(p) - 1);
+        return false;
+    }
+    json_t *lock = json_object_get(o, "lock");
+    q->lock_auto = json_is_string(lock) && strcmp(json_string_value(lock), "auto") == 0;
+    if (lock && !q->lock_auto) {
+        if (!json_is_array(lock) || json_array_size(lock) > MODES_MAX) {
+            studio_fail(out, 400, "lock: \"auto\" or an array of at most %d edges (indices or \"@x,y\")", MODES_MAX);
+            return false;
+        }
+        for (size_t i = 0; i < json_array_size(lock); ++i)
+            if (!crease_ref(p, json_array_get(lock, i), "lock", &q->locks[q->nlocks++], out)) return false;
+    }
+    json_t *drive = json_object_get(o, "drive"), *to = json_object_get(o, "to");
+    has_to = to != NULL;
+    if (q->has_percent) {
+        if (drive || has_to) {
+            studio_fail(out, 400, "percent folds every crease toward its target: no drive or to with it");
+            return false;
+        }
+        if (q->lock_auto) {
+            studio_fail(out, 400, "lock auto applies to drives: percent needs no lock set");
+            return false;
+        }
+        return true;
+    }
+    if (!drive) {
+        studio_fail(out, 400, "drive: missing (or percent)");
+        return false;
+    }
+    json_t *one = json_is_array(drive) ? NULL : drive;
+    q->ndrives = one ? 1 : (int)json_array_size(drive);
+    if (q->ndrives < 1 || q->ndrives > MODES_MAX) {
+        studio_fail(out, 400, "drive: an edge or an array of 1 to %d edges (indices or \"@x,y\")", MODES_MAX);
+        return false;
+    }
+    for (int i = 0; i < q->ndrives; ++i)
+        if (!crease_ref(p, one ? one : json_array_get(drive, (size_t)i), "drive", &q->drives[i], out)) return false;
+    int nto = json_is_array(to) ? (int)json_array_size(to) : has_to ? 1 : 0;
+    if (nto != q->ndrives) {
+        studio_fail(out, 400, "to has %d angles for %d driven creases", nto, q->ndrives);
+        return false;
+    }
+    for (int i = 0; i < nto; ++i) {
+        json_t *v = json_is_array(to) ? json_array_get(to, (size_t)i) : to;
+        if (!json_is_number(v) || !(fabs(json_number_value(v)) <= 180.0)) {
+            studio_fail(out, 400, "to: angles in [-180, 180] degrees");
+            return false;
+        }
+        q->to[i] = json_number_value(v);
+    }
+    return true;
+}
+
+// POST /api/fold in a mode: the same solve, collision check and answer as orikin fold in that
+// mode (cli/report/modes_report.c), kept for GET /api/fold/frame.
+static void fold_modes_api(studio *s, json_t *o, studio_response *out)
+{
+    char file[STUDIO_PATH_MAX];
+    double *angles = NULL;
+    ori_v3 *coords = NULL;
+    bool folded = false;
+    pthread_mutex_lock(&s->lock);
+    studio_model *model = studio_model_ref(s->model);
+    long version = s->version;
+    copy_string(file, sizeof file, s->file);
+    pthread_mutex_unlock(&s->lock);
+    modes_request q;
+    bool ok = parse_modes(o, model->pattern, &q, out);
+    if (ok) {
+        pthread_mutex_lock(&s->lock);
+        ok = studio_frame_state(s, q.frame, &angles, &coords, &folded, out);
+        pthread_mutex_unlock(&s->lock);
+    }
+    ori_error err;
+    const ori_mechanism *m = ok ? studio_model_mechanism(model, &err) : NULL;
+    if (ok && !m) {
+        studio_fail_error(out, 400, &err);
+        ok = false;
+    }
+    ok = ok && check_fold_indices(m, "", q.fix, q.ndrives ? q.drives[0] : ORI_NULL_INDEX, q.has_percent, q.locks, q.nlocks, out);
+    for (int i = 1; ok && i < q.ndrives; ++i) ok = check_fold_indices(m, "", q.fix, q.drives[i], false, NULL, 0, out);
+    if (ok) { // the studio's limit on recorded states, from the largest crease change over the step
+        int E = ori_mechanism_edge_count(m);
+        double change = 0.0;
+        if (q.has_percent) {
+            double *tgt = malloc(sizeof(double) * (size_t)(E + 1));
+            ori_target_angles_default(model->pattern, tgt);
+            for (int e = 0; e < E; ++e) change = fmax(change, fabs(q.percent / 100.0 * (tgt[e] - angles[e])));
+            free(tgt);
+        } else {
+            for (int i = 0; i < q.ndrives; ++i) change = fmax(change, fabs(ori_deg_to_rad(q.to[i]) - angles[q.drives[i]]));
+        }
+        double frames = frames_of(ori_rad_to_deg(change), q.step_deg);
+        if (frames > STUDIO_MAX_FRAMES_PER_FOLD || frames * elements_of(m) > s->def.work_limit) {
+            studio_fail(out, 400, "the fold would record %.0f states of %.0f elements; the studio's limit is %d states and "
+                        "%.3g in all: use a larger step", frames, elements_of(m), STUDIO_MAX_FRAMES_PER_FOLD, s->def.work_limit);
+            ok = false;
+        }
+    }
+    ori_rigid pose = ori_rigid_identity();
+    ok = ok && start_pose(m, q.fix, folded, coords, &pose, out);
+    cli_modes x;
+    memset(&x, 0, sizeof x);
+    if (ok) {
+        x.fix = q.fix;
+        x.has_percent = q.has_percent;
+        x.percent = q.percent;
+        x.drives = q.drives;
+        x.to_deg = q.to;
+        x.ndrives = q.ndrives;
+        x.given_locks = q.locks;
+        x.ngiven = q.nlocks;
+        x.lock_auto = q.lock_auto;
+        x.symmetric = q.symmetric;
+        x.step_deg = q.step_deg;
+        x.mech = m;
+        x.flat = model->pattern;
+        x.start = angles;
+        x.pose = pose;
+        x.progress = studio_job_progress;
+        x.progress_user = s;
+        studio_job_phase(s, "fold: solving");
+        ori_status st = cli_modes_solve(&x, &err);
+        if (st != ORI_OK) {
+            studio_fail_error(out, studio_status_of(st), &err);
+            ok = false;
+        }
+    }
+    if (ok) cli_modes_hint(&x, studio_job_progress, s);
+    if (ok && !q.collide.skip) {
+        // every step checked for self-collision (as orikin fold)
+        ori_collider *c = studio_collider(model->pattern, q.collide.clearance, out);
+        ok = c != NULL;
+        if (ok) {
+            studio_job_phase(s, "fold: checking collisions");
+            ori_collision_motion_def cd = ori_default_collision_motion_def();
+            cd.progress = studio_job_progress;
+            cd.progress_user = s;
+            ori_status st = ori_collision_check_multifold(c, x.mf, x.locks, x.nlocks, &cd, &x.col.ev, &err);
+            ori_collider_destroy(c);
+            x.col.checked = st == ORI_OK;
+            x.col.progress = true;
+            if (st != ORI_OK) {
+                studio_fail_error(out, studio_status_of(st), &err);
+                ok = false;
+            }
+        }
+    }
+    if (ok) {
+        studio_respond_json(out, 200, cli_modes_json(&x, file));
+        int E = ori_mechanism_edge_count(m), V = ori_mechanism_vertex_count(m);
+        studio_fold *res = calloc(1, sizeof *res);
+        atomic_init(&res->refs, 1);
+        res->model = studio_model_ref(model);
+        res->def = ori_default_motion_def();
+        res->def.fixed_face = q.fix;
+        res->def.fixed_pose = pose;
+        res->start_angles = malloc(sizeof(double) * (size_t)(E + 1));
+        memcpy(res->start_angles, angles, sizeof(double) * (size_t)E);
+        res->def.start_angles_rad = res->start_angles;
+        res->locks = malloc(sizeof(int) * (size_t)(x.nlocks + 1));
+        memcpy(res->locks, x.locks, sizeof(int) * (size_t)x.nlocks);
+        res->def.locked_edges = res->locks;
+        res->def.locked_count = x.nlocks;
+        res->start_drive_rad = NAN;
+        res->collision = x.col;
+        res->clean_frames = cli_modes_shown_frames(&x);
+        if (cli_collides(&x.col)) { // the state at first contact, at the event's progress
+            studio_contact *c = &res->contact;
+            contact_alloc(c, E, V);
+            c->has = ori_multifold_at(x.mf, x.locks, x.nlocks, x.col.ev.drive_rad, c->angles, c->positions, &err) == ORI_OK;
+            if (!c->has) studio_contact_free(c);
+            c->t = x.col.ev.time;
+            c->drive_rad = NAN;
+            c->residual = c->has ? ori_mechanism_residual(m, c->angles) : 0.0;
+        }
+        res->multi = x.mf;
+        x.mf = NULL;
+        pthread_mutex_lock(&s->lock);
+        if (s->version == version) {
+            studio_fold_unref(s->fold);
+            s->fold = res;
+            res = NULL;
+        }
+        pthread_mutex_unlock(&s->lock);
+        studio_fold_unref(res);
+    }
+    cli_modes_free(&x);
+    free(angles);
+    free(coords);
+    studio_model_unref(model);
+}
+
 void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
 {
     json_t *o = studio_body_object(req, out);
     if (!o) return;
+    if (wants_mode(o)) {
+        if (studio_job_begin(s, "fold", out)) {
+            fold_modes_api(s, o, out);
+            studio_job_end(s);
+        }
+        json_decref(o);
+        return;
+    }
     fold_request f;
     if (!parse_fold(o, &f, out) || !studio_job_begin(s, "fold", out)) {
         json_decref(o);
@@ -732,9 +1000,19 @@ void studio_api_fold_frame(studio *s, const studio_request *req, studio_response
     const ori_mechanism *m = f->model->mech;
     int V = ori_mechanism_vertex_count(m), E = ori_mechanism_edge_count(m);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
-    ori_motion_frame_vertices(f->motion, k, pos);
-    const double *ang = ori_motion_frame_angles(f->motion, k);
-    double drive = ori_motion_frame_drive(f->motion, k), res = ori_motion_frame_residual(f->motion, k);
+    const double *ang;
+    double drive, res;
+    if (f->multi) { // a fold mode: no drive angle
+        ori_multifold_frame_vertices(f->multi, k, pos);
+        ang = ori_multifold_frame_angles(f->multi, k);
+        drive = NAN;
+        res = ori_multifold_frame_residual(f->multi, k);
+    } else {
+        ori_motion_frame_vertices(f->motion, k, pos);
+        ang = ori_motion_frame_angles(f->motion, k);
+        drive = ori_motion_frame_drive(f->motion, k);
+        res = ori_motion_frame_residual(f->motion, k);
+    }
     size_t size;
     bool binary = binary_requested(req);
     char *b = binary ? studio_state_binary((double)k, 0, drive, res, pos, V, ang, E, &size)

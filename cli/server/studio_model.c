@@ -95,6 +95,7 @@ void studio_fold_unref(studio_fold *f)
 {
     if (!f || atomic_fetch_sub(&f->refs, 1) != 1) return;
     ori_motion_destroy(f->motion);
+    ori_multifold_destroy(f->multi);
     studio_model_unref(f->model);
     studio_contact_free(&f->contact);
     free(f->start_angles);

@@ -423,8 +423,11 @@ static bool fold_motion(studio *s, int samples, double work_limit, motion *m, st
         studio_fail(out, 409, "of=fold: no fold has been computed on this document");
         return false;
     }
-    bool ok = ori_motion_verdict_of(f->motion) == ORI_MOTION_VALID && ori_motion_frame_count(f->motion) > 0;
-    if (!ok) studio_fail(out, 409, "of=fold: the fold is %s", ori_motion_verdict_name(ori_motion_verdict_of(f->motion)));
+    bool ok = f->motion && ori_motion_verdict_of(f->motion) == ORI_MOTION_VALID && ori_motion_frame_count(f->motion) > 0;
+    if (!f->motion) // (its frames are viewed and collided as states: of=fold&k=…)
+        studio_fail(out, 409, "of=fold: a fold mode (percent, several drives, symmetric) is not exported as a motion by "
+                              "the studio yet: orikin fold … -o exports it");
+    else if (!ok) studio_fail(out, 409, "of=fold: the fold is %s", ori_motion_verdict_name(ori_motion_verdict_of(f->motion)));
     const ori_mechanism *mech = f->model->mech;
     const ori_motion *mo = f->motion;
     ori_motion *resolved = NULL;

@@ -350,9 +350,15 @@ static bool load_fold_state(studio *s, int k, studio_state *st, studio_response 
         st->frame = -1;
         snprintf(st->label, sizeof st->label, "fold state %d", k);
         alloc_state(st, m);
-        ori_motion_frame_vertices(f->motion, k, st->positions);
-        ori_motion_frame_face_poses(f->motion, k, st->poses);
-        memcpy(st->angles, ori_motion_frame_angles(f->motion, k), sizeof(double) * (size_t)ori_mechanism_edge_count(m));
+        if (f->multi) { // a fold mode
+            memcpy(st->angles, ori_multifold_frame_angles(f->multi, k), sizeof(double) * (size_t)ori_mechanism_edge_count(m));
+            ori_multifold_frame_vertices(f->multi, k, st->positions);
+            ori_mechanism_face_poses(m, st->angles, f->def.fixed_face, f->def.fixed_pose, st->poses);
+        } else {
+            ori_motion_frame_vertices(f->motion, k, st->positions);
+            ori_motion_frame_face_poses(f->motion, k, st->poses);
+            memcpy(st->angles, ori_motion_frame_angles(f->motion, k), sizeof(double) * (size_t)ori_mechanism_edge_count(m));
+        }
     }
     studio_fold_unref(f);
     return ok;

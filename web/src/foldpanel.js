@@ -91,7 +91,8 @@ export function createFoldPanel(ctx) {
       const c = document.createElement('div');
       c.className = 'contact';
       const stop = r.frames.length ? `the motion stops at state ${r.frames.length - 1}` : 'the start state collides';
-      c.textContent = `${stop}; first contact at drive ${fmt(r.collision.drive_deg, 6)}° (step ${r.collision.step}) `;
+      const at = r.collision.progress !== undefined ? `${fmt(100 * r.collision.progress, 4)} % of the way` : `drive ${fmt(r.collision.drive_deg, 6)}°`;
+      c.textContent = `${stop}; first contact at ${at} (step ${r.collision.step}) `;
       const b = document.createElement('button');
       b.className = 'small';
       b.id = 'show-fold-contact';
@@ -108,16 +109,20 @@ export function createFoldPanel(ctx) {
     }
     const meta = document.createElement('div');
     meta.className = 'hint';
-    meta.textContent = `DOF at the last state ${r.dof} · Grübler–Kutzbach ${r.grubler}` + (body.after_sequence ? ' · after the sequence' : '');
+    // a fold mode (percent, several drives, symmetric) answers as orikin fold does in that mode
+    meta.textContent = r.mode
+      ? `${r.mode === 'targets' ? 'toward the targets' : 'several drives'} · locked ${r.locked.length}` + (r.symmetry ? ` · ${r.symmetry.crease_groups} symmetric groups` : '')
+      : `DOF at the last state ${r.dof} · Grübler–Kutzbach ${r.grubler}` + (body.after_sequence ? ' · after the sequence' : '');
     box.appendChild(meta);
     // the offending creases, named and marked
-    ctx.v2.setHalos('offending', r.offending_edges.map((o) => o.edge));
-    ctx.v2.setLabels(r.offending_edges.map((o) => {
+    const offending = r.offending_edges || [];
+    ctx.v2.setHalos('offending', offending.map((o) => o.edge));
+    ctx.v2.setLabels(offending.map((o) => {
       const [a, b] = state.doc.edges[o.edge];
       const P = state.doc.flat;
       return { x: (P[a][0] + P[b][0]) / 2, y: (P[a][1] + P[b][1]) / 2, text: `${o.edge}: ${o.assignment} → ${fmt(o.angle_deg, 2)}°` };
     }));
-    for (const o of r.offending_edges) message(`crease ${o.edge} (${ASSIGNMENT_NAMES[o.assignment]}) would fold to ${fmt(o.angle_deg, 6)}° at drive ${fmt(o.at_drive_deg, 4)}°`, true);
+    for (const o of offending) message(`crease ${o.edge} (${ASSIGNMENT_NAMES[o.assignment]}) would fold to ${fmt(o.angle_deg, 6)}° at drive ${fmt(o.at_drive_deg, 4)}°`, true);
     // Frame A, Frame B, surrounding of a single vertex (thesis fig. 9-8)
     const sp = $('split');
     sp.replaceChildren();

@@ -26,6 +26,6 @@ export function foldStateText(k, n, driveDeg) {
 // The fold's verdict line: "valid: 19 states, <solver>" or the verdict with the states reached.
 export function foldVerdictText(r) {
   const n = r.frames.length;
-  if (r.valid) return `valid: ${n} state${n === 1 ? '' : 's'}, ${r.solver}`;
+  if (r.valid) return `valid: ${n} state${n === 1 ? '' : 's'}${r.solver ? `, ${r.solver}` : ''}`;
   return n > 1 ? `${r.verdict}: ${n} states up to the stop` : `${r.verdict}`;
 }
