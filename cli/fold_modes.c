@@ -41,7 +41,6 @@ bool cli_fold_modes_wanted(int argc, char **argv)
     for (int i = 1; i < argc; ++i) {
         const char *o = argv[i];
         if (strcmp(o, "--percent") == 0 || strcmp(o, "--symmetric") == 0 || strcmp(o, "--ratio") == 0) return true;
-        if (i + 1 < argc && strcmp(o, "--lock") == 0 && strcmp(argv[i + 1], "auto") == 0) return true;
         if (i + 1 < argc && strcmp(o, "--drive") == 0 && cli_spec_edge_count(argv[i + 1]) > 1) return true;
         if (i + 1 < argc && strcmp(o, "--to") == 0 && strchr(argv[i + 1], ',')) return true;
     }
@@ -125,8 +124,8 @@ static int parse(const char *cmd, int argc, char **argv, modes_args *a)
                 a->out = v;
             }
         } else if (strcmp(o, "--from") == 0 || strcmp(o, "--solver") == 0 || strcmp(o, "--linear") == 0) {
-            return cli_usage(cmd, "%s applies to a single drive, not with --percent, several drives, --ratio, "
-                                  "--symmetric or --lock auto", o);
+            return cli_usage(cmd, "%s applies to a single drive, not with --percent, several drives, --ratio or "
+                                  "--symmetric", o);
         } else if (o[0] == '-' && o[1] != '\0') {
             return cli_usage(cmd, "unknown option %s", o);
         } else if (!a->path) {
@@ -439,44 +438,7 @@ static int guard_output(const modes_run *r, bool force)
     return cli_guard_check(r->cmd, frames, bytes, force);
 }
 
-extern const cli_command cli_cmd_fold;
-
-// One drive with --lock auto (and nothing else of the modes): the lock set, then the ordinary
-// fold (its branch analysis at a flat start, collision checks and output) with "auto" replaced.
-static int single_drive_auto(modes_run *r, int argc, char **argv)
-{
-    int E = ori_mechanism_edge_count(r->k.mech);
-    int *locks = malloc(sizeof(int) * (size_t)(E + r->a.nlocks + 1));
-    memcpy(locks, r->a.locks, sizeof(int) * (size_t)r->a.nlocks);
-    ori_error err;
-    int rc = check_edge(r, "--drive", r->a.drives[0]);
-    int n = rc == CLI_EXIT_OK ? ori_mechanism_lock_set(r->k.mech, r->k.angles, r->a.drives, 1, r->a.locks, r->a.nlocks,
-                                                       NULL, locks + r->a.nlocks, E, &err)
-                              : -1;
-    if (rc == CLI_EXIT_OK && n < 0) rc = cli_input_error("fold", r->a.path, &err);
-    if (rc == CLI_EXIT_OK) {
-        size_t len = 16;
-        for (int i = 0; i < r->a.nlocks + n; ++i) len += 12;
-        char *list = malloc(len);
-        list[0] = '\0';
-        size_t w = 0;
-        for (int i = 0; i < r->a.nlocks + n; ++i) w += (size_t)snprintf(list + w, len - w, "%s%d", i ? "," : "", locks[i]);
-        char **av = malloc(sizeof(char *) * (size_t)(argc + 1));
-        for (int i = 0; i < argc; ++i) av[i] = argv[i];
-        av[argc] = NULL;
-        for (int i = 1; i + 1 < argc; ++i)
-            if (strcmp(argv[i], "--lock") == 0 && strcmp(argv[i + 1], "auto") == 0) av[i + 1] = list;
-        if (r->a.nlocks + n > 0) rc = cli_cmd_fold.run(argc, av);
-        else rc = cli_usage("fold", "--lock auto: nothing to lock, the drive leaves no freedom");
-        free(av);
-        free(list);
-    }
-    free(locks);
-    return rc;
-}
-
-// Load the pattern, resolve the faces and creases named, and solve (not the single-drive
-// --lock auto hand-over, which the fold command does itself).
+// Load the pattern and resolve the faces and creases named.
 static int load_resolve(modes_run *r)
 {
     const char *cmd = r->cmd;
@@ -601,8 +563,7 @@ int cli_fold_modes_run(int argc, char **argv)
     modes_run r;
     memset(&r, 0, sizeof r);
     r.cmd = "fold";
-    // The collision options come out of a copy: --lock auto with one drive hands the original
-    // command line to the ordinary fold, which takes them itself.
+    // The collision and output-guard options come out of a copy of the command line.
     char **av = malloc(sizeof(char *) * (size_t)(argc + 1));
     memcpy(av, argv, sizeof(char *) * (size_t)argc);
     av[argc] = NULL;
@@ -614,11 +575,6 @@ int cli_fold_modes_run(int argc, char **argv)
     free(av);
     if (rc != CLI_EXIT_OK) return rc;
     rc = load_resolve(&r);
-    if (rc == CLI_EXIT_OK && r.a.lock_auto && r.a.ndrives == 1 && !r.a.symmetric && !r.a.has_percent) {
-        rc = single_drive_auto(&r, argc, argv);
-        cli_kin_free(&r.k);
-        return rc;
-    }
     if (rc == CLI_EXIT_OK) rc = guard_output(&r, force);
     if (rc == CLI_EXIT_OK) rc = solve(&r);
     if (rc == CLI_EXIT_OK)

@@ -1,15 +1,16 @@
 // The folding modes of `orikin fold` for patterns with several degrees of freedom: toward the
 // targets (--percent), several drives (--drive E1,E2 --to A1,A2 / --ratio), an automatic lock
-// set (--lock auto) and symmetry (--symmetric). cmd_fold.c hands a command line over when
-// cli_fold_modes_wanted says so; its ordinary single-drive fold asks for a lock suggestion when
-// the fold is underdetermined.
+// set (--lock auto, with several drives or symmetry) and symmetry (--symmetric). cmd_fold.c hands
+// a command line over when cli_fold_modes_wanted says so; its ordinary single-drive fold (--lock
+// auto included) asks for a lock suggestion when the fold is underdetermined.
 #ifndef ORI_CLI_FOLD_MODES_H
 #define ORI_CLI_FOLD_MODES_H
 
 #include "kin_args.h"
 
-// True when the fold command line uses one of the modes (--percent, --symmetric, --ratio,
-// --lock auto, or several comma-separated --drive creases).
+// True when the fold command line uses one of the modes (--percent, --symmetric, --ratio, or
+// several comma-separated --drive creases; --lock auto with one drive is the ordinary fold's,
+// resolved by cli_fold_resolve).
 bool cli_fold_modes_wanted(int argc, char **argv);
 // Run `orikin fold` in one of the modes; returns the exit code.
 int cli_fold_modes_run(int argc, char **argv);

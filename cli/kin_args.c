@@ -234,6 +234,8 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
             a->has_from = true;
         } else if (strcmp(o, "--step") == 0) {
             if ((rc = parse_angle(cmd, o, v, &a->step_deg)) != CLI_EXIT_OK) return rc;
+        } else if (strcmp(o, "--lock") == 0 && strcmp(v, "auto") == 0) {
+            a->lock_auto = true; // cli_fold_resolve
         } else if (strcmp(o, "--lock") == 0) {
             int cap = (int)(sizeof a->locks / sizeof *a->locks), n = cli_spec_edge_count(v);
             if (n > cap) return cli_usage(cmd, "--lock takes at most %d edges, got %d", cap, n);
@@ -394,6 +396,17 @@ int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k)
         int n = cli_spec_edges(cmd, a->path, p, "--lock", a->lock_spec, true, a->locks,
                                (int)(sizeof a->locks / sizeof *a->locks));
         if (n < 0) return -n;
+        a->lock_count = n;
+    }
+    if (a->lock_auto) { // the lock set that leaves the drive one degree of freedom
+        int E = ori_mechanism_edge_count(k->mech);
+        if (a->drive < 0 || a->drive >= E)
+            return cli_value_fail(cmd, a->path, "--drive", "no edge %d (the pattern has edges 0 to %d)", a->drive, E - 1);
+        ori_error err;
+        int n = ori_mechanism_lock_set(k->mech, k->angles, &a->drive, 1, NULL, 0, NULL, a->locks,
+                                       (int)(sizeof a->locks / sizeof *a->locks), &err);
+        if (n < 0) return cli_input_error(cmd, a->path, &err);
+        if (n == 0) return cli_usage(cmd, "--lock auto: nothing to lock, the drive leaves no freedom");
         a->lock_count = n;
     }
     a->fix_spec = a->drive_spec = a->lock_spec = NULL; // resolved

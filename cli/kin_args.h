@@ -73,6 +73,7 @@ typedef struct cli_fold_args {
     double to_deg, from_deg, step_deg;
     int locks[CLI_FOLD_MAX_LOCKS];
     int lock_count;
+    bool lock_auto;       // --lock auto: cli_fold_resolve finds the set (ori_mechanism_lock_set)
     int frame;
     bool json;
     const char *out;
@@ -90,7 +91,9 @@ typedef struct cli_fold_args {
 int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_args *a);
 
 // Resolve --fix, --drive and --lock (cli_spec_face, cli_spec_edge, cli_spec_edges) against the
-// loaded crease pattern; every caller of cli_fold_def resolves first. Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after a message naming the option.
+// loaded crease pattern, and --lock auto into the lock set that leaves the drive one degree of
+// freedom at the start state (exit 3 when none is found, 2 when nothing needs locking); every
+// caller of cli_fold_def resolves first. Returns CLI_EXIT_OK, or CLI_EXIT_USAGE after a message naming the option.
 int cli_fold_resolve(const char *cmd, cli_fold_args *a, const cli_kin *k);
 
 // After ori_motion_solve of a def from cli_fold_def failed: a driven or locked crease the fold
