@@ -565,6 +565,36 @@ static bool auto_locks(const ori_mechanism *m, const double *angles, fold_reques
     return ok;
 }
 
+// A computed fold on model, for GET /api/fold/frame: def as solved, with its own copies of the
+// start angles (E) and of the def.locked_count locks.
+static studio_fold *new_fold(studio_model *model, const ori_motion_def *def, const double *angles, int E, const int *locks)
+{
+    studio_fold *res = calloc(1, sizeof *res);
+    atomic_init(&res->refs, 1);
+    res->model = studio_model_ref(model);
+    res->def = *def;
+    res->start_angles = malloc(sizeof(double) * (size_t)(E + 1));
+    memcpy(res->start_angles, angles, sizeof(double) * (size_t)E);
+    res->def.start_angles_rad = res->start_angles;
+    res->locks = malloc(sizeof(int) * (size_t)(def->locked_count + 1));
+    memcpy(res->locks, locks, sizeof(int) * (size_t)def->locked_count);
+    res->def.locked_edges = res->locks;
+    return res;
+}
+
+// Make res the document's fold unless the document changed while it was computed.
+static void publish_fold(studio *s, long version, studio_fold *res)
+{
+    pthread_mutex_lock(&s->lock);
+    if (s->version == version) {
+        studio_fold_unref(s->fold);
+        s->fold = res;
+        res = NULL;
+    }
+    pthread_mutex_unlock(&s->lock);
+    studio_fold_unref(res);
+}
+
 // --- the fold modes (orikin fold --percent, several drives, --symmetric, --lock auto) ------
 
 // A body asking for a mode: "percent", "symmetric": true, or "drive" as an array.
@@ -783,19 +813,11 @@ static void fold_modes_api(studio *s, json_t *o, studio_response *out)
     if (ok) {
         studio_respond_json(out, 200, cli_modes_json(&x, file));
         int E = ori_mechanism_edge_count(m), V = ori_mechanism_vertex_count(m);
-        studio_fold *res = calloc(1, sizeof *res);
-        atomic_init(&res->refs, 1);
-        res->model = studio_model_ref(model);
-        res->def = ori_default_motion_def();
-        res->def.fixed_face = q.fix;
-        res->def.fixed_pose = pose;
-        res->start_angles = malloc(sizeof(double) * (size_t)(E + 1));
-        memcpy(res->start_angles, angles, sizeof(double) * (size_t)E);
-        res->def.start_angles_rad = res->start_angles;
-        res->locks = malloc(sizeof(int) * (size_t)(x.nlocks + 1));
-        memcpy(res->locks, x.locks, sizeof(int) * (size_t)x.nlocks);
-        res->def.locked_edges = res->locks;
-        res->def.locked_count = x.nlocks;
+        ori_motion_def def = ori_default_motion_def();
+        def.fixed_face = q.fix;
+        def.fixed_pose = pose;
+        def.locked_count = x.nlocks;
+        studio_fold *res = new_fold(model, &def, angles, E, x.locks);
         res->start_drive_rad = NAN;
         res->collision = x.col;
         res->clean_frames = cli_modes_shown_frames(&x);
@@ -810,14 +832,7 @@ static void fold_modes_api(studio *s, json_t *o, studio_response *out)
         }
         res->multi = x.mf;
         x.mf = NULL;
-        pthread_mutex_lock(&s->lock);
-        if (s->version == version) {
-            studio_fold_unref(s->fold);
-            s->fold = res;
-            res = NULL;
-        }
-        pthread_mutex_unlock(&s->lock);
-        studio_fold_unref(res);
+        publish_fold(s, version, res);
     }
     cli_modes_free(&x);
     free(angles);
@@ -937,32 +952,15 @@ void studio_api_fold(studio *s, const studio_request *req, studio_response *out)
         cli_fold_fields fields = {file, f.spec.fix, f.spec.drive, f.spec.to_deg, f.spec.step_deg, f.spec.locks,
                                   f.spec.lock_count};
         studio_respond_json(out, 200, cli_fold_json(&fields, model->pattern, m, mo, &col, lock_hint));
-        int E = ori_mechanism_edge_count(m);
-        studio_fold *res = calloc(1, sizeof *res);
-        atomic_init(&res->refs, 1);
-        res->model = studio_model_ref(model);
+        studio_fold *res = new_fold(model, &def, angles, ori_mechanism_edge_count(m), f.spec.locks);
         res->motion = mo;
         mo = NULL;
-        res->def = def;
-        res->start_angles = malloc(sizeof(double) * (size_t)(E + 1));
-        memcpy(res->start_angles, angles, sizeof(double) * (size_t)E);
-        res->def.start_angles_rad = res->start_angles;
-        res->locks = malloc(sizeof(int) * (size_t)(f.spec.lock_count + 1));
-        memcpy(res->locks, f.spec.locks, sizeof(int) * (size_t)f.spec.lock_count);
-        res->def.locked_edges = res->locks;
         res->start_drive_rad = f.spec.has_from ? def.from_rad : angles[f.spec.drive];
         res->collision = col;
         res->clean_frames = cli_collide_frames(&col, ori_motion_frame_count(res->motion));
         res->contact = contact;
         memset(&contact, 0, sizeof contact);
-        pthread_mutex_lock(&s->lock);
-        if (s->version == version) {
-            studio_fold_unref(s->fold);
-            s->fold = res;
-            res = NULL;
-        }
-        pthread_mutex_unlock(&s->lock);
-        studio_fold_unref(res);
+        publish_fold(s, version, res);
     }
     studio_contact_free(&contact);
     ori_motion_destroy(mo);
