@@ -37,6 +37,22 @@ int cli_kin_load_sequence(const char *cmd, const char *seq_path, const char *pat
     return kin_load(cmd, path, frame, NULL, seq_path, k);
 }
 
+// Neither .fold nor a drawing by its name: FOLD is JSON, so a file that does not start like JSON
+// (an image, say) is named as what it is not (exit 3), rather than as a JSON syntax error.
+static int not_a_pattern(const char *cmd, const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return CLI_EXIT_OK; // (the loader names the missing file)
+    int c;
+    do c = fgetc(fp);
+    while (c == ' ' || c == '\t' || c == '\n' || c == '\r');
+    fclose(fp);
+    if (c != '{' && c != 0xEF && c != EOF) // 0xEF: a UTF-8 byte-order mark
+        return cli_input_fail(cmd, path, "not a FOLD file or a drawing (FOLD is JSON, .fold; drawings are .svg, .opx "
+                                         "or .cp)");
+    return CLI_EXIT_OK;
+}
+
 // frame_from: NULL when the frame is --frame, else the sequence file whose "frame" it is.
 static int kin_load(const char *cmd, const char *path, int frame, const cli_input *options, const char *frame_from,
                     cli_kin *k)
@@ -56,18 +72,8 @@ static int kin_load(const char *cmd, const char *path, int frame, const cli_inpu
         return cli_usage(cmd, "--frame applies to .fold input, not to %s", path);
     }
     if (f == ORI_FORMAT_UNKNOWN) {
-        // Neither .fold nor a drawing by its name: FOLD is JSON, so anything that does not start
-        // like JSON (an image, say) is named as what it is not, rather than as a JSON syntax error.
-        FILE *fp = fopen(path, "rb");
-        if (fp) {
-            int c;
-            do c = fgetc(fp);
-            while (c == ' ' || c == '\t' || c == '\n' || c == '\r');
-            fclose(fp);
-            if (c != '{' && c != 0xEF && c != EOF) // 0xEF: a UTF-8 byte-order mark
-                return cli_input_fail(cmd, path, "not a FOLD file or a drawing (FOLD is JSON, .fold; drawings are .svg, .opx "
-                                                 "or .cp)");
-        }
+        int rc = not_a_pattern(cmd, path);
+        if (rc != CLI_EXIT_OK) return rc;
     }
     int rc = cli_input_load(cmd, path, &in, &k->doc, &k->flat);
     if (rc != CLI_EXIT_OK) return rc;
@@ -269,6 +275,8 @@ int cli_fold_parse(const char *cmd, int argc, char **argv, bool fit, cli_fold_ar
         }
     }
     if (!a->path) return cli_usage(cmd, "missing FILE");
+    // A file that is no pattern at all is said first (orikin fold pic.png), before what is missing.
+    if (ori_format_from_path(a->path) == ORI_FORMAT_UNKNOWN && not_a_pattern(cmd, a->path) != CLI_EXIT_OK) return CLI_EXIT_INPUT;
     if (!a->has_drive) return cli_usage(cmd, "missing --drive EDGE");
     if (!a->has_to) return cli_usage(cmd, "missing --to DEG");
     if (!(fabs(a->to_deg) <= 180.0)) return cli_usage(cmd, "--to %g is outside [-180, 180] degrees", a->to_deg);
