@@ -164,6 +164,69 @@ Test(compliant, flap_under_gravity_torque_balance)
     ori_pattern_destroy(p);
 }
 
+// A hinge the dynamics turns past 180° (a distorted degree-4 vertex at 100 %, stiff bars, soft
+// facets: fuzz_compliant's input, kept as its seed) is reported at ±180°, and the frames written read back:
+// a FOLD file holds fold angles in [−180°, 180°] (it was written at 210° and refused on reading).
+Test(compliant, a_hinge_past_180_is_reported_at_180_and_reads_back)
+{
+    // the seed: 16 bytes of parameters (decoded here as the target does), then the FOLD text
+    FILE *f = fopen(test_repo_path("fuzz/seeds/compliant/flap-past-180-under-gravity"), "rb");
+    cr_assert(f);
+    char buf[8192];
+    size_t n = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    cr_assert_gt(n, 16);
+    ori_fold *in = NULL;
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(buf + 16, n - 16, &in, &err), ORI_OK, "%s", err.message);
+    ori_build_def bd = ori_default_build_def();
+    bd.planarize = true; // (its mutated edges cross, as the target reads them)
+    cr_assert_eq(ori_fold_get_pattern(in, 0, &bd, &p, &err), ORI_OK, "%s", err.message);
+    ori_fold_destroy(in);
+    const unsigned char *b = (const unsigned char *)buf; // as fuzz/fuzz_compliant.c decodes them
+    ori_compliant_def d = ori_default_compliant_def();
+    cr_assert_eq(b[0] & 1, 0, "the preset of Origami Simulator");
+    d.axial_stiffness = 20.0 * pow(10.0, 6.0 * b[1] / 255.0 - 3.0);
+    d.facet_stiffness = 0.2 * pow(10.0, 6.0 * b[2] / 255.0 - 3.0);
+    d.crease_stiffness = 0.7 * pow(10.0, 6.0 * b[3] / 255.0 - 3.0);
+    d.fraction = (b[4] | (b[5] << 8)) / 65535.0;
+    d.max_step_rad = 0.02 + 0.5 * ((b[6] | (b[7] << 8)) / 65535.0);
+    d.max_iterations = 40;
+    d.damping = (b[8] / 255.0) * 2.0;
+    d.gravity = (b[9] & 1) ? 0.0 : 0.05 * (b[9] / 255.0);
+    d.fixed_face = b[10] % (ori_pattern_face_count(p) + 2) - 1;
+    d.keep_frames = (b[11] & 1) != 0;
+    d.check_contacts = (b[11] & 2) != 0;
+    ori_compliant *c = make(p, &d);
+    ori_compliant_solve_static(c, &err); // (converged or not: the state reached)
+    int steps = 0;
+    ori_compliant_run_dynamic(c, 400, 1e-6, &steps, &err);
+    int E = ori_pattern_edge_count(p), at = 0;
+    double *angles = malloc(sizeof(double) * (size_t)E);
+    for (int e = 0; e < E; ++e) {
+        angles[e] = ori_compliant_fold_angle(c, e);
+        cr_assert_leq(fabs(angles[e]), ORI_PI, "edge %d: %.17g", e, angles[e]);
+        at += fabs(angles[e]) == ORI_PI;
+    }
+    cr_assert_geq(at, 1, "a hinge held at 180 degrees");
+    ori_fold *doc = ori_fold_create();
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, &err), ORI_OK);
+    ori_fold_append_state(doc, 0, ori_compliant_vertex_count(c), ori_compliant_positions(c), E, angles, "dynamic");
+    char *text = ori_fold_to_string(doc);
+    ori_fold *back = NULL;
+    ori_pattern *q = NULL;
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &back, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fold_get_pattern(back, 1, NULL, &q, &err), ORI_OK, "%s", err.message);
+    ori_pattern_destroy(q);
+    ori_fold_destroy(back);
+    ori_buffer_free(text);
+    ori_fold_destroy(doc);
+    free(angles);
+    ori_compliant_destroy(c);
+    ori_pattern_destroy(p);
+}
+
 // The sign of a driven valley agrees with the rigid kinematics: a valley target of 90° lifts the flap.
 Test(compliant, valley_lifts_like_the_rigid_fold)
 {

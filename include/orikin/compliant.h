@@ -100,7 +100,9 @@ ORI_API int ori_compliant_triangle_count(const ori_compliant *c);
 
 /// Current vertex positions (vertex_count, owned by c, valid until the next solve).
 ORI_API const ori_v3 *ori_compliant_positions(const ori_compliant *c);
-/// Current fold angle of a pattern edge (radians, FOLD sign: + valley); 0 for boundary edges.
+/// Current fold angle of a pattern edge (radians, FOLD sign: + valley), in [−π, π]: a hinge
+/// turned past ±π (its faces passing through each other, see the contacts) is reported at ±π;
+/// 0 for boundary edges.
 ORI_API double ori_compliant_fold_angle(const ori_compliant *c, int edge);
 /// Axial strain (L − L0)/L0 of a pattern edge's bar.
 ORI_API double ori_compliant_edge_strain(const ori_compliant *c, int edge);

@@ -685,10 +685,15 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
 
 // --- results ------------------------------------------------------------------------------
 
+// The reported fold angle: the hinge's angle, followed continuously (the energy needs that), held
+// at ±180° when it has gone past (the faces then pass through each other, as the contact warnings
+// say): a FOLD file holds angles in [−180°, 180°], and orikin reads back what it writes (the
+// compliant fuzz target found a flap under gravity at 210°).
 static double edge_angle(const ori_compliant *c, const double *x, int e)
 {
     int h = c->edge_hinge[e];
-    return h < 0 ? 0.0 : ori__cmp_hinge_angle(x, &c->hinges[h], c->hinges[h].ref);
+    double a = h < 0 ? 0.0 : ori__cmp_hinge_angle(x, &c->hinges[h], c->hinges[h].ref);
+    return a > ORI_PI ? ORI_PI : a < -ORI_PI ? -ORI_PI : a;
 }
 
 static double bar_strain(const cmp_bar *b, const double *x)
