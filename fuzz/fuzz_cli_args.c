@@ -1,0 +1,295 @@
+// libFuzzer target for the command line's option parsing: the input is an argv, tokens split on
+// newline or NUL bytes; the first token names a command of a short list of cheap ones (below),
+// the rest are its options and values. "@F0".."@F9" stand for fixed input files (copies of
+// examples/patterns/*.fold and two drawings, in a temporary directory), "@O" and "@O.EXT" for an
+// output file in the run's own temporary directory. The command runs in-process through
+// cli_main (cli/dispatch.c), the dispatch of the orikin binary, with stdin from /dev/null and
+// the CLI's stdout and stderr discarded (fd 2 stays for the sanitizers' reports).
+//
+// Work stays bounded: commands that serve, spawn jobs or simulate (view, sweep, simulate,
+// animate, actuate, sequence) are not on the list, and an input with a number of magnitude over
+// 64 in any token (or comma-separated part of one) is skipped, so --limit 1e9, --grid 500 or
+// --width 100000 never run; at most 24 tokens of 200 bytes.
+//
+// Invariants: no crash, leak or sanitizer report; the exit code is one of the documented ones
+// (0 ok, 1 negative, 2 usage, 3 bad input, 5 partial; 4, an internal failure, is a finding);
+// nothing is written outside the run's temporary directory: a token with a '/' (an absolute
+// path, "..") is skipped, the run's working directory is its temporary directory, the fixed
+// inputs are compared with their originals after every run (and an input that names one as an
+// output is skipped), and the temporary directory holds nothing beside in/ and run/.
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cblas.h>
+
+#include "cli.h"
+
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+#define MAX_TOKENS 24
+#define MAX_TOKEN_BYTES 200
+#define MAX_NUMBER 64.0
+
+static const char *const cheap_commands[] = {
+    "apply", "axiom",  "check", "collide", "convert",    "crease", "dof",    "edit",
+    "export", "fab",   "fit",   "fold",    "generate",   "info",   "layers", "mv-count",
+    "new",   "regularize", "render", "tolerance", "tree", "unfold", "unfold-linkage",
+};
+
+static const char *const input_sources[] = {
+    "examples/patterns/degree4-vertex.fold",  "examples/patterns/degree6-vertex.fold",
+    "examples/patterns/non-flat-foldable-vertex.fold", "examples/patterns/open-corner-gold.fold",
+    "examples/patterns/open-corner.fold",     "examples/patterns/thesis-flap.fold",
+    "examples/patterns/two-flaps.fold",       "tests/data/formats/bird.cp",
+    "tests/data/formats/gap.svg",             "examples/patterns/open-corner.fold",
+};
+#define INPUT_COUNT ((int)(sizeof input_sources / sizeof input_sources[0]))
+
+typedef struct fixed_input {
+    char path[512];
+    char *data;
+    size_t size;
+} fixed_input;
+
+static char base_dir[256];   // the fuzz target's temporary directory: in/ and run/
+static char parent_dir[256];
+static char run_dir[300];
+static fixed_input inputs[INPUT_COUNT];
+static int start_dir = -1; // the working directory libFuzzer started in (its corpus paths)
+static char start_path[1024];
+static char artifact_arg[1100];
+static char *new_argv[256];
+
+static void die(const char *what)
+{
+    fprintf(stderr, "fuzz_cli_args: %s: %s\n", what, strerror(errno));
+    abort();
+}
+
+static char *read_file(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    size_t cap = 1 << 16, n = 0;
+    char *buf = malloc(cap);
+    size_t got;
+    while (buf && (got = fread(buf + n, 1, cap - n, f)) > 0) {
+        n += got;
+        if (n == cap) buf = realloc(buf, cap *= 2);
+    }
+    fclose(f);
+    *size = n;
+    return buf;
+}
+
+static void write_file(const char *path, const char *data, size_t size)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f || fwrite(data, 1, size, f) != size || fclose(f) != 0) die(path);
+}
+
+static long count_entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d) die(dir);
+    long n = 0;
+    for (struct dirent *e; (e = readdir(d));) ++n;
+    closedir(d);
+    return n;
+}
+
+// Empty the run directory (the command's outputs, flat: no token has a '/').
+static void clear_run_dir(void)
+{
+    DIR *d = opendir(run_dir);
+    if (!d) die(run_dir);
+    for (struct dirent *e; (e = readdir(d));) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
+        if (unlinkat(dirfd(d), e->d_name, 0) != 0 && unlinkat(dirfd(d), e->d_name, AT_REMOVEDIR) != 0)
+            die(e->d_name);
+    }
+    closedir(d);
+}
+
+// Each run's working directory is run/, and libFuzzer writes a crash's input while still in it:
+// a relative -artifact_prefix (run.sh's) becomes absolute, and without one it is the starting
+// directory, libFuzzer's default ("./"). Flags are parsed after LLVMFuzzerInitialize.
+static void absolute_artifact_prefix(int *argc, char ***argv)
+{
+    const char *flag = "-artifact_prefix=";
+    size_t flag_len = strlen(flag);
+    int n = *argc < 254 ? *argc : 254, given = -1;
+    for (int i = 0; i < n; ++i) {
+        new_argv[i] = (*argv)[i];
+        if (strncmp(new_argv[i], flag, flag_len) == 0) given = i;
+    }
+    const char *prefix = given >= 0 ? (*argv)[given] + flag_len : "";
+    if (prefix[0] == '/') return;
+    snprintf(artifact_arg, sizeof artifact_arg, "%s%s/%s", flag, start_path, prefix);
+    if (given >= 0) {
+        new_argv[given] = artifact_arg;
+    } else {
+        new_argv[n++] = artifact_arg;
+    }
+    new_argv[n] = NULL;
+    *argc = n;
+    *argv = new_argv;
+}
+
+static void remove_base_dir(void)
+{
+    if (start_dir >= 0 && fchdir(start_dir) != 0) return;
+    clear_run_dir();
+    rmdir(run_dir);
+    for (int i = 0; i < INPUT_COUNT; ++i) unlink(inputs[i].path);
+    char in_dir[300];
+    snprintf(in_dir, sizeof in_dir, "%s/in", base_dir);
+    rmdir(in_dir);
+    rmdir(base_dir);
+}
+
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    start_dir = open(".", O_RDONLY | O_DIRECTORY);
+    if (start_dir < 0 || !getcwd(start_path, sizeof start_path)) die("working directory");
+    absolute_artifact_prefix(argc, argv);
+    openblas_set_num_threads(1);
+    const char *tmp = getenv("TMPDIR");
+    snprintf(parent_dir, sizeof parent_dir, "%s", tmp && *tmp ? tmp : "/tmp");
+    snprintf(base_dir, sizeof base_dir, "%s/fuzz_cli_args.XXXXXX", parent_dir);
+    if (!mkdtemp(base_dir)) die("mkdtemp");
+    char in_dir[300];
+    snprintf(in_dir, sizeof in_dir, "%s/in", base_dir);
+    snprintf(run_dir, sizeof run_dir, "%s/run", base_dir);
+    if (mkdir(in_dir, 0700) != 0 || mkdir(run_dir, 0700) != 0) die("mkdir");
+    for (int i = 0; i < INPUT_COUNT; ++i) {
+        char src[512];
+        snprintf(src, sizeof src, "%s/%s", ORI_SOURCE_DIR, input_sources[i]);
+        inputs[i].data = read_file(src, &inputs[i].size);
+        if (!inputs[i].data) die(src);
+        const char *name = strrchr(input_sources[i], '/') + 1;
+        snprintf(inputs[i].path, sizeof inputs[i].path, "%s/%d-%s", in_dir, i, name);
+        write_file(inputs[i].path, inputs[i].data, inputs[i].size);
+    }
+    atexit(remove_base_dir);
+    // stdin from /dev/null, stdout discarded; the CLI's stderr discarded through the stream
+    // (libFuzzer keeps the stream it started with; the sanitizers write to fd 2).
+    int null_in = open("/dev/null", O_RDONLY), null_out = open("/dev/null", O_WRONLY);
+    if (null_in < 0 || null_out < 0 || dup2(null_in, 0) < 0 || dup2(null_out, 1) < 0) die("/dev/null");
+    close(null_in), close(null_out);
+    FILE *quiet = fopen("/dev/null", "w");
+    if (!quiet) die("/dev/null");
+    stderr = quiet;
+    return 0;
+}
+
+// A number in a token, or in any comma-separated part of one, of magnitude over MAX_NUMBER.
+static bool has_big_number(const char *tok)
+{
+    for (const char *p = tok; *p;) {
+        const char *end = strchr(p, ',');
+        size_t n = end ? (size_t)(end - p) : strlen(p);
+        char part[MAX_TOKEN_BYTES + 1];
+        memcpy(part, p, n);
+        part[n] = '\0';
+        // Scan each number in the part ("1e9", "x=300", "--grid=500").
+        for (const char *q = part; *q; ++q) {
+            if ((*q >= '0' && *q <= '9') || *q == '.' || ((*q == 'i' || *q == 'I' || *q == 'n' || *q == 'N') &&
+                                                         (q == part || q[-1] == '-' || q[-1] == '+' || q[-1] == '='))) {
+                char *stop;
+                double v = strtod(q, &stop);
+                if (stop > q) {
+                    if (!(fabs(v) <= MAX_NUMBER)) return true;
+                    q = stop - 1;
+                }
+            }
+        }
+        if (!end) break;
+        p = end + 1;
+    }
+    return false;
+}
+
+static bool is_output_option(const char *tok)
+{
+    return strcmp(tok, "-o") == 0 || strncmp(tok, "--out", 5) == 0 || strncmp(tok, "--save", 6) == 0 ||
+           strncmp(tok, "--write", 7) == 0 || strncmp(tok, "--db", 4) == 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static char tokens[MAX_TOKENS][MAX_TOKEN_BYTES + 1];
+    static char storage[MAX_TOKENS][600];
+    char *argv[MAX_TOKENS + 2];
+    int count = 0;
+    size_t start = 0;
+    for (size_t i = 0; i <= size; ++i) {
+        if (i < size && data[i] != '\n' && data[i] != '\0') continue;
+        size_t n = i - start;
+        if (count == MAX_TOKENS || n > MAX_TOKEN_BYTES) return 0;
+        memcpy(tokens[count], data + start, n);
+        tokens[count][n] = '\0';
+        ++count;
+        start = i + 1;
+    }
+    if (count == 0) return 0;
+    bool known = false;
+    for (size_t c = 0; c < sizeof cheap_commands / sizeof cheap_commands[0]; ++c)
+        if (strcmp(tokens[0], cheap_commands[c]) == 0) known = true;
+    if (!known) return 0;
+    argv[0] = "orikin";
+    for (int t = 0; t < count; ++t) {
+        const char *tok = tokens[t];
+        if (strchr(tok, '/') || has_big_number(tok)) return 0;
+        if (tok[0] == '@' && tok[1] == 'F' && tok[2] >= '0' && tok[2] <= '9' && tok[3] == '\0') {
+            // An input named as the value of an output option would be overwritten: skipped.
+            if (t > 0 && is_output_option(tokens[t - 1])) return 0;
+            argv[t + 1] = inputs[tok[2] - '0'].path;
+        } else if (tok[0] == '@' && tok[1] == 'O' && (tok[2] == '\0' || tok[2] == '.')) {
+            snprintf(storage[t], sizeof storage[t], "%s/out%s", run_dir, tok + 2);
+            argv[t + 1] = storage[t];
+        } else {
+            argv[t + 1] = tokens[t];
+        }
+        if (strchr(argv[t + 1], '=') && strchr(argv[t + 1], '@')) return 0; // --out=@F0 and the like
+    }
+    argv[count + 1] = NULL;
+
+    if (chdir(run_dir) != 0) die(run_dir);
+    int rc = cli_main(count + 1, argv);
+    if (fchdir(start_dir) != 0) die("working directory");
+    fflush(stdout);
+    fflush(stderr);
+    if (rc != CLI_EXIT_OK && rc != CLI_EXIT_NEGATIVE && rc != CLI_EXIT_USAGE && rc != CLI_EXIT_INPUT &&
+        rc != CLI_EXIT_PARTIAL) {
+        char msg[96];
+        int len = snprintf(msg, sizeof msg, "fuzz_cli_args: exit code %d is not a documented one\n", rc);
+        (void)!write(2, msg, (size_t)len);
+        abort();
+    }
+    for (int i = 0; i < INPUT_COUNT; ++i) {
+        size_t n = 0;
+        char *now = read_file(inputs[i].path, &n);
+        if (!now || n != inputs[i].size || memcmp(now, inputs[i].data, n) != 0) {
+            (void)!write(2, "fuzz_cli_args: a fixed input file was changed\n", 46);
+            abort();
+        }
+        free(now);
+    }
+    if (count_entries(base_dir) != 4) { // ".", "..", in, run
+        (void)!write(2, "fuzz_cli_args: a file was written beside in/ and run/\n", 55);
+        abort();
+    }
+    clear_run_dir();
+    return 0;
+}
