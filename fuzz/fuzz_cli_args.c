@@ -17,7 +17,9 @@
 // path, "..") is skipped, the run's working directory is its temporary directory, the fixed
 // inputs are compared with their originals after every run (and an input that names one as an
 // output is skipped), and the temporary directory holds nothing beside in/ and run/.
+// FUZZ_CLI_ARGS_TRACE=1 prints each run's command and exit code (to see what a corpus reaches).
 #define _POSIX_C_SOURCE 200809L
+#include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -69,6 +71,7 @@ static int start_dir = -1; // the working directory libFuzzer started in (its co
 static char start_path[1024];
 static char artifact_arg[1100];
 static char *new_argv[256];
+static bool trace; // FUZZ_CLI_ARGS_TRACE set: each run's command and exit code on fd 2
 
 static void die(const char *what)
 {
@@ -163,6 +166,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     start_dir = open(".", O_RDONLY | O_DIRECTORY);
     if (start_dir < 0 || !getcwd(start_path, sizeof start_path)) die("working directory");
     absolute_artifact_prefix(argc, argv);
+    trace = getenv("FUZZ_CLI_ARGS_TRACE") != NULL;
     openblas_set_num_threads(1);
     const char *tmp = getenv("TMPDIR");
     snprintf(parent_dir, sizeof parent_dir, "%s", tmp && *tmp ? tmp : "/tmp");
@@ -208,9 +212,12 @@ static bool has_big_number(const char *tok)
                                                          (q == part || q[-1] == '-' || q[-1] == '+' || q[-1] == '='))) {
                 char *stop;
                 double v = strtod(q, &stop);
-                if (stop > q) {
+                bool word = !(*q >= '0' && *q <= '9') && *q != '.'; // "inf", "nan": not "info"
+                if (stop > q && !(word && isalpha((unsigned char)*stop))) {
                     if (!(fabs(v) <= MAX_NUMBER)) return true;
                     q = stop - 1;
+                } else if (word) {
+                    while (isalpha((unsigned char)q[1])) ++q;
                 }
             }
         }
@@ -268,6 +275,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (chdir(run_dir) != 0) die(run_dir);
     int rc = cli_main(count + 1, argv);
     if (fchdir(start_dir) != 0) die("working directory");
+    if (trace) {
+        char line[160];
+        int len = snprintf(line, sizeof line, "fuzz_cli_args: %s: exit %d\n", tokens[0], rc);
+        (void)!write(2, line, (size_t)len);
+    }
     fflush(stdout);
     fflush(stderr);
     if (rc != CLI_EXIT_OK && rc != CLI_EXIT_NEGATIVE && rc != CLI_EXIT_USAGE && rc != CLI_EXIT_INPUT &&
