@@ -1,15 +1,15 @@
 // libFuzzer target for the command line's option parsing: the input is an argv, tokens split on
 // newline or NUL bytes; the first token names a command of a short list of cheap ones (below),
 // the rest are its options and values. "@F0".."@F9" stand for fixed input files (copies of
-// examples/patterns/*.fold and two drawings, in a temporary directory), "@O" and "@O.EXT" for an
+// examples/patterns/*.fold, two drawings and a fold sequence, in a temporary directory), "@O" and "@O.EXT" for an
 // output file in the run's own temporary directory. The command runs in-process through
 // cli_main (cli/dispatch.c), the dispatch of the orikin binary, with stdin from /dev/null and
 // the CLI's stdout and stderr discarded (fd 2 stays for the sanitizers' reports).
 //
 // Work stays bounded: commands that serve, spawn jobs or simulate (view, sweep, simulate,
-// animate, actuate, sequence) are not on the list, and an input with a number of magnitude over
-// 64 in any token (or comma-separated part of one) is skipped, so --limit 1e9, --grid 500 or
-// --width 100000 never run; at most 24 tokens of 200 bytes.
+// animate) are not on the list, and an input with a number of magnitude over
+// 180 in any token (or comma-separated part of one; 12 for generate) is skipped, so --limit 1e9,
+// --size 100000x100000 or a 500 x 500 grid never run; at most 24 tokens of 200 bytes.
 //
 // Invariants: no crash, leak or sanitizer report; the exit code is one of the documented ones
 // (0 ok, 1 negative, 2 usage, 3 bad input, 5 partial; 4, an internal failure, is a finding);
@@ -18,11 +18,12 @@
 // inputs are compared with their originals after every run (and an input that names one as an
 // output is skipped), and the temporary directory holds nothing beside in/ and run/.
 // FUZZ_CLI_ARGS_TRACE=1 prints each run's command and exit code (to see what a corpus reaches).
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700
 #include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <ftw.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -40,20 +41,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 #define MAX_TOKENS 24
 #define MAX_TOKEN_BYTES 200
-#define MAX_NUMBER 64.0
+#define MAX_NUMBER 180.0      // degrees go to 180
+#define MAX_GENERATE_NUMBER 12.0 // generate's counts and sizes: a 12 x 12 grid at most
 
 static const char *const cheap_commands[] = {
     "apply", "axiom",  "check", "collide", "convert",    "crease", "dof",    "edit",
     "export", "fab",   "fit",   "fold",    "generate",   "info",   "layers", "mv-count",
-    "new",   "regularize", "render", "tolerance", "tree", "unfold", "unfold-linkage",
+    "new",   "regularize", "render", "tolerance", "tree", "unfold", "unfold-linkage", "sequence",
+    "actuate",
 };
 
+// @F0..@F9 (copied with the pattern the sequence names, which @F4 is).
 static const char *const input_sources[] = {
     "examples/patterns/degree4-vertex.fold",  "examples/patterns/degree6-vertex.fold",
     "examples/patterns/non-flat-foldable-vertex.fold", "examples/patterns/open-corner-gold.fold",
     "examples/patterns/open-corner.fold",     "examples/patterns/thesis-flap.fold",
     "examples/patterns/two-flaps.fold",       "tests/data/formats/bird.cp",
-    "tests/data/formats/gap.svg",             "examples/patterns/open-corner.fold",
+    "tests/data/formats/gap.svg",             "examples/open-corner.seq.json",
 };
 #define INPUT_COUNT ((int)(sizeof input_sources / sizeof input_sources[0]))
 
@@ -149,16 +153,26 @@ static void absolute_artifact_prefix(int *argc, char ***argv)
     *argv = new_argv;
 }
 
+static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
+{
+    (void)st, (void)flag, (void)ftw;
+    return remove(path);
+}
+
 static void remove_base_dir(void)
 {
     if (start_dir >= 0 && fchdir(start_dir) != 0) return;
-    clear_run_dir();
-    rmdir(run_dir);
-    for (int i = 0; i < INPUT_COUNT; ++i) unlink(inputs[i].path);
-    char in_dir[300];
-    snprintf(in_dir, sizeof in_dir, "%s/in", base_dir);
-    rmdir(in_dir);
-    rmdir(base_dir);
+    nftw(base_dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+}
+
+// mkdir -p of the directories of path.
+static void make_parents(char *path)
+{
+    for (char *slash = strchr(path + 1, '/'); slash; slash = strchr(slash + 1, '/')) {
+        *slash = '\0';
+        if (mkdir(path, 0700) != 0 && errno != EEXIST) die(path);
+        *slash = '/';
+    }
 }
 
 int LLVMFuzzerInitialize(int *argc, char ***argv)
@@ -181,8 +195,9 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
         snprintf(src, sizeof src, "%s/%s", ORI_SOURCE_DIR, input_sources[i]);
         inputs[i].data = read_file(src, &inputs[i].size);
         if (!inputs[i].data) die(src);
-        const char *name = strrchr(input_sources[i], '/') + 1;
-        snprintf(inputs[i].path, sizeof inputs[i].path, "%s/%d-%s", in_dir, i, name);
+        // in/ mirrors the source tree: a sequence names its pattern relative to itself.
+        snprintf(inputs[i].path, sizeof inputs[i].path, "%s/%s", in_dir, input_sources[i]);
+        make_parents(inputs[i].path);
         write_file(inputs[i].path, inputs[i].data, inputs[i].size);
     }
     atexit(remove_base_dir);
@@ -198,7 +213,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 }
 
 // A number in a token, or in any comma-separated part of one, of magnitude over MAX_NUMBER.
-static bool has_big_number(const char *tok)
+static bool has_big_number(const char *tok, double max)
 {
     for (const char *p = tok; *p;) {
         const char *end = strchr(p, ',');
@@ -214,7 +229,7 @@ static bool has_big_number(const char *tok)
                 double v = strtod(q, &stop);
                 bool word = !(*q >= '0' && *q <= '9') && *q != '.'; // "inf", "nan": not "info"
                 if (stop > q && !(word && isalpha((unsigned char)*stop))) {
-                    if (!(fabs(v) <= MAX_NUMBER)) return true;
+                    if (!(fabs(v) <= max)) return true;
                     q = stop - 1;
                 } else if (word) {
                     while (isalpha((unsigned char)q[1])) ++q;
@@ -255,9 +270,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (strcmp(tokens[0], cheap_commands[c]) == 0) known = true;
     if (!known) return 0;
     argv[0] = "orikin";
+    double max = strcmp(tokens[0], "generate") == 0 ? MAX_GENERATE_NUMBER : MAX_NUMBER;
     for (int t = 0; t < count; ++t) {
         const char *tok = tokens[t];
-        if (strchr(tok, '/') || has_big_number(tok)) return 0;
+        if (strchr(tok, '/') || has_big_number(tok, max)) return 0;
         if (tok[0] == '@' && tok[1] == 'F' && tok[2] >= '0' && tok[2] <= '9' && tok[3] == '\0') {
             // An input named as the value of an output option would be overwritten: skipped.
             if (t > 0 && is_output_option(tokens[t - 1])) return 0;
