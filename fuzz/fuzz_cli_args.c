@@ -11,7 +11,11 @@
 // 180 in any token (or comma-separated part of one; 12 for generate) is skipped, so --limit 1e9,
 // --size 100000x100000 or a 500 x 500 grid never run; defaults that are much work are bounded
 // (bounded_defaults: tolerance gets --samples 8 unless it is given) and counts of work capped
-// (option_caps: --samples 16, --threads 2); at most 24 tokens of 200 bytes.
+// (option_caps: --samples 16, --threads 2); at most 24 tokens of 200 bytes. fold --compliant
+// is skipped: its static solver's bounded search (load steps quartered until 1e-6 of the first,
+// each up to max_iterations Newton steps) took 0.4 s in RelWithDebInfo and over 10 s under the
+// sanitizers on degree4-vertex.fold (3,076 Newton iterations before "no equilibrium beyond
+// 41.8 %"), found by this target's second run; it needs its own target with a smaller budget.
 //
 // Invariants: no crash, leak or sanitizer report; the exit code is one of the documented ones
 // (0 ok, 1 negative, 2 usage, 3 bad input, 5 partial; 4, an internal failure, is a finding);
@@ -300,6 +304,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 cap = option_caps[c].max;
         }
         if (strchr(tok, '/') || has_big_number(tok, cap)) return 0;
+        if (strncmp(tok, "--compliant", 11) == 0) return 0; // see the header comment
         if (tok[0] == '@' && tok[1] == 'F' && tok[2] >= '0' && tok[2] <= '9' && tok[3] == '\0') {
             // An input named as the value of an output option would be overwritten: skipped.
             if (t > 0 && is_output_option(tokens[t - 1])) return 0;
