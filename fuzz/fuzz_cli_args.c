@@ -1,8 +1,8 @@
 // libFuzzer target for the command line's option parsing: the input is an argv, tokens split on
 // newline or NUL bytes; the first token names a command of a short list of cheap ones (below),
 // the rest are its options and values. "@F0".."@F9" stand for fixed input files (copies of
-// examples/patterns/*.fold, two drawings and a fold sequence, in a temporary directory), "@O" and "@O.EXT" for an
-// output file in the run's own temporary directory. The command runs in-process through
+// examples/patterns/*.fold, two drawings and a fold sequence, in a temporary directory), "@O"
+// and "@O.EXT" for an output file in the run's own temporary directory. The command runs in-process through
 // cli_main (cli/dispatch.c), the dispatch of the orikin binary, with stdin from /dev/null and
 // the CLI's stdout and stderr discarded (fd 2 stays for the sanitizers' reports).
 //
@@ -138,17 +138,16 @@ static long count_entries(const char *dir)
     return n;
 }
 
-// Empty the run directory (the command's outputs, flat: no token has a '/').
+static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
+{
+    (void)st, (void)flag, (void)ftw;
+    return remove(path);
+}
+
+// Empty the run directory (the command's outputs, directories too): removed and made again.
 static void clear_run_dir(void)
 {
-    DIR *d = opendir(run_dir);
-    if (!d) die(run_dir);
-    for (struct dirent *e; (e = readdir(d));) {
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0) continue;
-        if (unlinkat(dirfd(d), e->d_name, 0) != 0 && unlinkat(dirfd(d), e->d_name, AT_REMOVEDIR) != 0)
-            die(e->d_name);
-    }
-    closedir(d);
+    if (nftw(run_dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS) != 0 || mkdir(run_dir, 0700) != 0) die(run_dir);
 }
 
 // Each run's working directory is run/, and libFuzzer writes a crash's input while still in it:
@@ -174,12 +173,6 @@ static void absolute_artifact_prefix(int *argc, char ***argv)
     new_argv[n] = NULL;
     *argc = n;
     *argv = new_argv;
-}
-
-static int remove_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)
-{
-    (void)st, (void)flag, (void)ftw;
-    return remove(path);
 }
 
 static void remove_base_dir(void)
