@@ -19,6 +19,12 @@ enum cli_exit {
     CLI_EXIT_PARTIAL = 5,  // stopped at a budget (--limit, --timeout, Ctrl-C of a search): the answer is partial
 };
 
+// Run the command line argv[0..argc) (argv[0] the program, argv[1] the command) in-process and
+// return its exit code (enum cli_exit): help and --version, the command's outputs staged and
+// committed together when it succeeds, stdout flushed (cli_finish). Never calls exit(); the
+// caller sets up signals and threads (cli/main.c). Defined in cli/dispatch.c.
+int cli_main(int argc, char **argv);
+
 // A subcommand: cli/cmd_<id>.c defines `const cli_command cli_cmd_<id>`.
 typedef struct cli_command {
     const char *name;     // as typed: "mv-count"

@@ -92,6 +92,8 @@ for name in $targets; do
             ;;
         api) seeds="tests/data/server/*.req" ;;
         layers) seeds="tests/data/layers/*.fold examples/patterns/*.fold" ;;
+        # argv tokens, one a line; option names from fuzz/cli_args.dict
+        cli_args) seeds="" ; extra="-max_len=1024 -dict=fuzz/cli_args.dict" ;;
         *) seeds="tests/data/formats/*.$name" ;;
     esac
     for f in fuzz/seeds/"$name"/* $seeds; do
