@@ -296,3 +296,16 @@ void test_open_corner_free(test_open_corner *c)
     ori_mechanism_destroy(c->m);
     ori_pattern_destroy(c->p);
 }
+
+ori_fold *test_compliant_open_corner(const char *dir)
+{
+    char args[2048], path[1024], *out = NULL;
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 -o '%s/o.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/o.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    return doc;
+}

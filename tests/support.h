@@ -30,6 +30,9 @@ int test_run_cli_split(const char *args, char **out, char **err);
 // A fresh temporary directory (malloc'd path); removed by test_tmpdir_remove.
 char *test_tmpdir(void);
 void test_tmpdir_remove(char *dir);
+// orikin fold examples/patterns/open-corner.fold --compliant --percent 40 -o DIR/o.fold, loaded:
+// the document (frame 1: the bent state, with its strain fields). Destroy with ori_fold_destroy.
+ori_fold *test_compliant_open_corner(const char *dir);
 
 // Read a whole file (malloc'd, NUL-terminated) or NULL.
 char *test_read_text(const char *path);

@@ -55,6 +55,17 @@ static void set_gravity(loaded *x, bool on)
     cr_assert_eq(ori_design_set_actuation(x->d, &a, &err), ORI_OK);
 }
 
+// A simulation of x's design and mechanism at 20 mA for 1 ms (the tests change what they test).
+static ori_simulation_def flap_def(const loaded *x)
+{
+    ori_simulation_def d = ori_default_simulation_def();
+    d.design = x->d;
+    d.mechanism = x->m;
+    d.current_a = 0.02;
+    d.duration_s = 1e-3;
+    return d;
+}
+
 static ori_simulation *run_ok(const ori_simulation_def *d)
 {
     ori_simulation *s = NULL;
@@ -236,10 +247,7 @@ Test(dynamics, thesis_flap_folds_in_a_few_milliseconds_and_latches)
     ori_sizing *z = NULL;
     cr_assert_eq(ori_sizing_solve(&sd, &z, &err), ORI_OK);
     ori_field_change sched[2] = {ori_sizing_schedule_at(z, 0), ori_sizing_schedule_at(z, 1)};
-    ori_simulation_def d = ori_default_simulation_def();
-    d.design = x.d;
-    d.mechanism = x.m;
-    d.current_a = 0.02;
+    ori_simulation_def d = flap_def(&x); // (its duration set below)
     d.schedule = sched;
     d.schedule_count = 2;
     d.duration_s = 6e-3;
@@ -401,11 +409,7 @@ Test(dynamics, closed_loop_energy_is_conserved)
 Test(dynamics, bad_input)
 {
     loaded x = load_example("examples/patterns/thesis-flap.fold");
-    ori_simulation_def d = ori_default_simulation_def();
-    d.design = x.d;
-    d.mechanism = x.m;
-    d.current_a = 0.02;
-    d.duration_s = 1e-3;
+    ori_simulation_def d = flap_def(&x);
     ori_simulation *s = NULL;
     ori_error err;
     d.duration_s = 0.0;
@@ -454,11 +458,7 @@ Test(dynamics, max_steps_bounds_the_run_and_the_settling)
     // A caller's own step budget: a run planned longer is refused up front, naming the budget;
     // settling (which may need many periods of the slowest hinge) stops at the steps left.
     loaded x = load_example("examples/patterns/thesis-flap.fold");
-    ori_simulation_def d = ori_default_simulation_def();
-    d.design = x.d;
-    d.mechanism = x.m;
-    d.current_a = 0.02;
-    d.duration_s = 1e-3;
+    ori_simulation_def d = flap_def(&x);
     d.has_dt = true;
     d.dt_s = 1e-5; // 100 planned steps
     d.output_frames = 11;

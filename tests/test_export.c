@@ -1048,13 +1048,8 @@ Test(export, cli_compliant_frame_exports_strain_colours)
 {
     char *dir = test_tmpdir();
     char args[2048], path[1024], *out = NULL;
-    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 -o '%s/o.fold'", dir);
-    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-    free(out);
-    snprintf(path, sizeof path, "%s/o.fold", dir);
-    ori_fold *doc = NULL;
+    ori_fold *doc = test_compliant_open_corner(dir);
     ori_error err;
-    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
     char *text = ori_fold_get_custom(doc, 1, "faces_orikin:strain");
     cr_assert_not_null(text);
     json_t *arr = json_loads(text, 0, NULL);

@@ -1532,13 +1532,8 @@ Test(render, cli_color_strain_paints_the_most_strained_face)
 {
     char *dir = test_tmpdir();
     char args[2048], path[1024], *out = NULL;
-    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 -o '%s/o.fold'", dir);
-    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-    free(out);
-    snprintf(path, sizeof path, "%s/o.fold", dir);
-    ori_fold *doc = NULL;
+    ori_fold *doc = test_compliant_open_corner(dir);
     ori_error err;
-    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
     ori_pattern *p = NULL;
     cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
     int F = ori_pattern_face_count(p);

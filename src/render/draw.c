@@ -329,6 +329,20 @@ static double bar_strip(const ori_render_def *def)
 static ori_rgb value_colour(const ori_value_map *map, double v) { return ori_colormap(ori_value_map_position(map, v)); }
 
 // The colour bar in the strip: min at the bottom, max at the top, a gradient through the colour
+// Face f of a flat pattern as a closed path, at (ox + s x, oy − s y); *fv (capacity *cap) is scratch.
+static void face_path(cairo_t *cr, const ori_pattern *p, int f, double ox, double oy, double s, int **fv, int *cap)
+{
+    int n = ori_pattern_face_size(p, f);
+    ORI__RESERVE(*fv, *cap, n);
+    ori_pattern_face_vertices(p, f, *fv, n);
+    for (int k = 0; k < n; ++k) {
+        ori_v3 q = ori_pattern_vertex(p, (*fv)[k]);
+        if (k == 0) cairo_move_to(cr, ox + s * q.x, oy - s * q.y);
+        else cairo_line_to(cr, ox + s * q.x, oy - s * q.y);
+    }
+    cairo_close_path(cr);
+}
+
 // map (true vector in SVG and PDF), a thin frame, ticks and their labels on the right.
 static void draw_bar(cairo_t *cr, const ori_render_def *def)
 {
@@ -403,15 +417,7 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
     int *fv = NULL, cap = 0;
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     for (int f = 0; f < nf; ++f) {
-        int n = ori_pattern_face_size(p, f);
-        ORI__RESERVE(fv, cap, n);
-        ori_pattern_face_vertices(p, f, fv, n);
-        for (int k = 0; k < n; ++k) {
-            ori_v3 q = ori_pattern_vertex(p, fv[k]);
-            if (k == 0) cairo_move_to(cr, IX(q), IY(q));
-            else cairo_line_to(cr, IX(q), IY(q));
-        }
-        cairo_close_path(cr);
+        face_path(cr, p, f, ox, oy, s, &fv, &cap);
     }
     cairo_set_source_rgb(cr, 0.985, 0.978, 0.955);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
@@ -421,15 +427,7 @@ static ori_status draw_creases(cairo_t *cr, const ori_pattern *p, const ori_rend
         // Faces with a value in its colour (with a seam hairline, as in 3D).
         for (int f = 0; f < nf; ++f) {
             if (isnan(vm->face_values[f])) continue;
-            int n = ori_pattern_face_size(p, f);
-            ORI__RESERVE(fv, cap, n);
-            ori_pattern_face_vertices(p, f, fv, n);
-            for (int k = 0; k < n; ++k) {
-                ori_v3 q = ori_pattern_vertex(p, fv[k]);
-                if (k == 0) cairo_move_to(cr, IX(q), IY(q));
-                else cairo_line_to(cr, IX(q), IY(q));
-            }
-            cairo_close_path(cr);
+            face_path(cr, p, f, ox, oy, s, &fv, &cap);
             set_source(cr, value_colour(vm, vm->face_values[f]));
             cairo_fill_preserve(cr);
             cairo_set_line_width(cr, ORI_RENDER_SEAM_WIDTH);
