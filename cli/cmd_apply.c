@@ -19,14 +19,19 @@ static void report(bool json, const char *out, const ori_pattern *p, int node_be
                    const char *pattern, const ori_apply_result *r)
 {
     json_t *o = json_object(), *leaves = cli_apply_new_faces_json(p, node_before);
-    char names[2048] = "";
-    size_t len = 0;
-    for (size_t i = 0; i < json_array_size(leaves) && len < sizeof names - 64; ++i) {
+    // The text line names the first few new faces and counts the rest (--json lists them all):
+    // 512 random creases make 90,000 faces, which no line should spell out.
+    enum { SHOWN = 8 };
+    char names[1024] = "";
+    size_t len = 0, count = json_array_size(leaves);
+    for (size_t i = 0; i < count && i < SHOWN; ++i) {
         json_t *leaf = json_array_get(leaves, i);
-        len += (size_t)snprintf(names + len, sizeof names - len, "%s%s (face %d)", len ? ", " : "; new folding elements: ",
-                                json_string_value(json_object_get(leaf, "name")),
+        len += (size_t)snprintf(names + len, sizeof names - len, "%s%.60s (face %d)",
+                                len ? ", " : "; new folding elements: ", json_string_value(json_object_get(leaf, "name")),
                                 (int)json_integer_value(json_object_get(leaf, "face")));
     }
+    if (count > SHOWN)
+        snprintf(names + len, sizeof names - len, " and %zu more (--json lists them all)", count - SHOWN);
     json_object_set_new(o, "output", json_string(out));
     json_object_set_new(o, "pattern", json_string(pattern));
     json_object_set_new(o, "face", json_string(face_name));
