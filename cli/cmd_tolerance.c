@@ -6,6 +6,7 @@
 
 #include "fab_args.h"
 #include "kin_args.h"
+#include "output_guard.h"
 #include "progress.h"
 
 static const char *const metric_keys[ORI_TOLERANCE_METRIC_COUNT] = {"position", "end_effector", "face_normal_deg",
@@ -28,7 +29,8 @@ static int run(int argc, char **argv)
     double sigma = 0.0, sigma_unit = 0.0;
     int samples = 1000, threads = 1;
     unsigned long long seed = 1;
-    int rc = CLI_EXIT_OK;
+    bool force = false;
+    int rc = cli_guard_strip(cmd, &argc, argv, &force);
     for (int i = 1; i < argc && rc == CLI_EXIT_OK; ++i) {
         if (strcmp(argv[i], "--vertex-sigma") == 0) {
             if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) rc = CLI_EXIT_USAGE;
@@ -85,6 +87,13 @@ static int run(int argc, char **argv)
     ori_motion_def def;
     rc = cli_fold_resolve(cmd, &fa, &k);
     if (rc == CLI_EXIT_OK) rc = cli_fold_def(cmd, &fa, &k, &def);
+    // Every sample is a whole fold: its output steps (start, one a step, the end) are exact
+    // solves, bounded together as `fit` bounds its samples (--force lifts it).
+    if (rc == CLI_EXIT_OK) {
+        double from = def.has_from ? def.from_rad : (def.start_angles_rad ? def.start_angles_rad[def.driven_edge] : 0.0);
+        double steps = ceil(fabs(def.to_rad - from) / def.step_rad) + 1.0;
+        rc = cli_guard_solves(cmd, (double)samples * steps, "--step or fewer --samples", force);
+    }
     double file_m = 0.0;
     bool has_unit = fab_file_unit(k.doc, &file_m);
     if (unit_opt) has_unit = true, file_m = unit_m;
@@ -198,7 +207,7 @@ const cli_command cli_cmd_tolerance = {
     "tolerance",
     "fabrication tolerance: a fold's final-pose error over seeded perturbations of the pattern",
     "usage: orikin tolerance FILE --vertex-sigma LEN [--fix FACE] --drive EDGE --to DEG [fold options]\n"
-    "                        [--samples N] [--seed S] [--threads N] [--json]\n"
+    "                        [--samples N] [--seed S] [--threads N] [--force] [--json]\n"
     "\n"
     "How lithography and alignment errors change the folded device (thesis ch. 2.1.1): fold FILE\n"
     "as orikin fold does (rigid), then N copies of its crease pattern with every vertex moved by\n"
@@ -214,7 +223,8 @@ const cli_command cli_cmd_tolerance = {
     "options:\n"
     "  --vertex-sigma LEN    standard deviation of each vertex coordinate (required; 0: the\n"
     "                        nominal design, zero error)\n"
-    "  --samples N           number of samples (default 1000)\n"
+    "  --samples N           number of samples (default 1000); samples x fold steps over 1000000\n"
+    "                        exact solves need --force\n"
     "  --seed S              random seed, a non-negative integer (default 1)\n"
     "  --threads N           worker threads (default 1)\n"
     "  --width-sigma REL     also perturb every hinge's width by this relative standard deviation\n"

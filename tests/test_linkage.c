@@ -211,6 +211,38 @@ Test(linkage, spiral_chain, .init = test_leak_setup, .fini = test_leak_check)
     free_case(&c);
 }
 
+// The event bound (docs/conventions.md, "Bounded work"): the spiral needs many events; with
+// max_events at half that count the run stops with ORI_ERR_LIMIT, names the bound and hands out
+// nothing; with the bound at the count it needs, it finishes. (The bound is checked before each
+// motion segment, so the event that ends the motion may be the one past it.)
+Test(linkage, event_limit_stops_the_motion, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_v2 p[40];
+    for (int i = 0; i < 40; ++i) {
+        double t = 0.5 * i, r = 0.3 + 0.15 * t;
+        p[i] = ori_v2_make(r * cos(t), r * sin(t));
+    }
+    lcase c = make(p, 40, false);
+    ori_linkage_def def = ori_default_linkage_def();
+    def.coords = c.p, def.vertex_count = c.n, def.edges = c.e, def.edge_count = c.m;
+    ori_linkage_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_OK, "%s", err.message);
+    int events = ori_linkage_motion_result(mo).events;
+    ori_linkage_motion_destroy(mo);
+    cr_assert_gt(events, 2);
+    def.max_events = events / 2;
+    mo = NULL;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_LIMIT);
+    cr_assert_null(mo);
+    cr_assert(strstr(err.message, "events") != NULL, "%s", err.message);
+    def.max_events = events;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_linkage_motion_result(mo).events, events);
+    ori_linkage_motion_destroy(mo);
+    free_case(&c);
+}
+
 Test(linkage, star_polygon, .init = test_leak_setup, .fini = test_leak_check)
 {
     ori_v2 p[16];

@@ -186,6 +186,33 @@ Test(regularize, kawasaki_exact_with_least_moves)
     ori_pattern_destroy(m);
 }
 
+// The iteration bound (docs/conventions.md, "Bounded work"): the perturbed Miura needs a few
+// Gauss-Newton iterations; with max_iterations = 1 the run stops there, says it did not converge,
+// counts one iteration, improves nothing beyond what one step does and hands out no pattern.
+Test(regularize, iteration_bound_stops_without_a_pattern)
+{
+    ori_pattern *m = test_miura(6, 6, 1.0, 1.0, deg(60), NULL);
+    ori_pattern *q = perturbed(m, 1e-3, 11);
+    ori_regularize_def d = ori_default_regularize_def();
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    ori_error err;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.converged);
+    int needed = r.iterations;
+    cr_assert_gt(needed, 1, "converged in %d iteration(s): the bound is not reached", needed);
+    ori_pattern_destroy(out);
+    out = NULL;
+    d.max_iterations = 1;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_not(r.converged);
+    cr_assert_eq(r.iterations, 1);
+    cr_assert_null(out);
+    cr_assert_gt(r.kawasaki_after_rad, 1e-12);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(m);
+}
+
 // An exact pattern is left where it is.
 Test(regularize, exact_pattern_does_not_move)
 {

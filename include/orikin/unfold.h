@@ -33,7 +33,7 @@ typedef struct ori_linkage_def {
     const int *edges;      ///< bars as vertex pairs (2 × edge_count entries)
     int edge_count;
     int steps_per_event;   ///< frames kept between two events (≥ 1), 0 = every integration step
-    int max_events;        ///< give up (ORI_ERR_LIMIT) after this many events; 0 = 100 × vertices
+    int max_events;        ///< give up (ORI_ERR_LIMIT) once more than this many events happened (checked before each motion segment); 0 = 100 × vertices
     int internal_value;    ///< set by ori_default_linkage_def; do not change
 } ori_linkage_def;
 
