@@ -919,6 +919,28 @@ Test(formats, svg_of_a_generated_pattern_shows_its_creases)
     ori_pattern_destroy(p);
 }
 
+// A chain of nearly collinear edges (within the weld) merged into its chord can cross an edge
+// that passes closer than the weld: the merged pattern does not build, and the chain keeps its
+// vertices. Before, the first read succeeded (its segments in another order), but the CP orikin
+// wrote was refused on reading ("edge 0 intersects edge 1 away from a shared vertex"; fuzz_cp,
+// fuzz/seeds/cp/merged-chord-crosses-an-edge). Whatever orikin writes, it reads.
+Test(formats, a_merged_chord_that_would_cross_keeps_its_vertices)
+{
+    const char *cp = "1 -014 -200 200 -100\n1 200 -4 00300 280\n1 200 100 -00 0032\n"
+                     "1 -201 -21 0 520200\n1 2 -216 200 977\n1 200 100 -00 003200200\n";
+    ori_pattern *p = reimport(cp, ORI_FORMAT_CP);
+    for (int round = 0; round < 3; ++round) { // written and read again, three times over
+        char *text = ori_cp_write(p);
+        cr_assert_not_null(text);
+        ori_pattern *q = reimport(text, ORI_FORMAT_CP);
+        cr_assert_gt(ori_pattern_edge_count(q), 0);
+        ori_buffer_free(text);
+        ori_pattern_destroy(p);
+        p = q;
+    }
+    ori_pattern_destroy(p);
+}
+
 // Labels: one <text> per face (index and name) and per edge, in a group the reader skips
 // silently; the drawing reads back as the same pattern.
 Test(formats, svg_labels_faces_and_edges_and_reads_back)

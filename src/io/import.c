@@ -379,11 +379,16 @@ static ori_status pipeline(const ori_segment *segs, int count, const ori_import_
     ori_pattern_set_has_fold_angles(p, true);
     ori_build_def bdef = ori_default_build_def();
     if (def->merge_collinear) {
+        // A chain of nearly collinear edges becomes its chord, which lies up to the weld away from
+        // the chain: where another edge passes closer than that, the chord crosses it and the
+        // merged pattern does not build. Such chains keep their vertices (the pattern as
+        // planarised), so that a file orikin writes from it reads back (fuzz_cp found one).
         ori_pattern *q = merge_collinear(p, weld);
-        if (q) {
+        if (q && ori_pattern_build(q, &bdef, NULL) == ORI_OK) {
             ori_pattern_destroy(p);
             p = q;
-            st = ori_pattern_build(p, &bdef, error);
+        } else {
+            ori_pattern_destroy(q);
         }
     }
     if (st == ORI_OK && def->remove_holes && remove_holes(p) > 0) st = ori_pattern_build(p, &bdef, error);
