@@ -2,16 +2,16 @@
 // (ori_fab_layout_create), its GDSII stream (ori_gds_write) and layer map, the cutting files
 // (ori_dxf_write, ori_cut_svg_write) and the dash rule (ori_crease_dashes), on fuzzed small
 // patterns with fuzzed parameters, hostile ones included (0, negative, huge, tiny, NaN, ±inf).
-// The input is a 52-byte header of parameters followed by a FOLD document (read planarised, at
+// The input is a 56-byte header of parameters followed by a FOLD document (read planarised, at
 // most 64 vertices; with header bit 0 its actuation data make a design, so wires and pads are
 // drawn). Work stays bounded: a cutting SVG of more than 20,000 dashes is not written.
 //
 // Invariants beyond "no crash, no leak, no sanitizer report":
-// - a refusal (layout, GDSII, cutting file) carries a message; an accepted layout's points and
-//   widths are finite;
+// - a refusal (layout, GDSII, DXF, SVG) carries a message; an accepted layout's points and
+//   widths are finite, its polygons of 3 points or more;
 // - the GDSII stream is a well-formed record sequence: every record's length even and ≥ 4 and
-//   inside the stream, HEADER first, then BGNLIB, LIBNAME (the name asked for), UNITS (both
-//   reals > 0, the database unit the one asked for), one BGNSTR … ENDSTR, ENDLIB last; one
+//   inside the stream, HEADER first, then BGNLIB, LIBNAME (the name asked for), UNITS (two
+//   finite reals > 0), one BGNSTR, STRNAME (the name asked for) … ENDSTR, ENDLIB last; one
 //   element per shape in shape order (BOUNDARY per polygon, PATH per path, TEXT per text) on
 //   the shape's layer, each ended by ENDEL; a BOUNDARY's XY closed (first point = last) with
 //   point_count + 1 of 4 … 8191 points; every coordinate and width the shape's in database
@@ -20,12 +20,13 @@
 //   |x| in [16^-65, 16^63), is 0 below, refused above; the mantissa is normalised;
 // - the layer map has a line per layer whose shape count is the layout's;
 // - the DXF is (group code, value) line pairs: integer codes, finite coordinates, a comment,
-//   then SECTION … ENDSEC blocks, EOF last; one LINE per B, C, M, V or U edge;
-// - the cutting SVG parses (libxml2); its "cut" group has a line per B and C edge (the DXF's
-//   CUT lines), every other group an "eN" group per crease of its kind (the DXF's other
-//   lines) with ori_crease_dashes lines;
-// - ori_crease_dashes: the count does not depend on cap; dashes increase, do not overlap and
-//   lie within [vertex_gap, length − vertex_gap] (to rounding).
+//   then SECTION … ENDSEC blocks, EOF last; one LINE per B, C, M, V or U edge on its layer;
+// - the cutting SVG parses (libxml2), has a finite viewBox with every line inside it; its "cut"
+//   group has a line per B and C edge (the DXF's CUT lines), every other group an "eN" group
+//   per crease of its kind (the DXF's lines of that layer) with ori_crease_dashes lines; an SVG
+//   is written only when the DXF is, and refused when a crease's dashes are;
+// - ori_crease_dashes: the count does not depend on cap, is −1 (refused) or ≥ 0; the dashes
+//   increase, do not overlap and lie within [vertex_gap, length − vertex_gap] (to rounding).
 #include <float.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
@@ -38,7 +39,7 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-#define HEADER 52
+#define HEADER 56
 #define MAX_SVG_DASHES 20000
 
 static void fail(const char *what)
@@ -287,11 +288,44 @@ static void check_dxf(const char *dxf, int lines[4])
     if (!eof) fail("dxf: no EOF last");
 }
 
-static int count_lines(xmlNode *n)
+// A crease's length in the SVG, as the writer has it: X = (x − x0)·s + margin, Y = (y1 − y)·s + margin.
+static double svg_length(const ori_pattern *p, const ori_cut_def *cd, ori_edge ed)
+{
+    double x0 = INFINITY, y1 = -INFINITY;
+    for (int i = 0; i < ori_pattern_vertex_count(p); ++i) {
+        x0 = fmin(x0, ori_pattern_vertex(p, i).x);
+        y1 = fmax(y1, ori_pattern_vertex(p, i).y);
+    }
+    double s = cd->mm_per_unit, margin = 2.0 * cd->stroke_mm;
+    ori_v3 a = ori_pattern_vertex(p, ed.v[0]), b = ori_pattern_vertex(p, ed.v[1]);
+    double ax = (a.x - x0) * s + margin, ay = (y1 - a.y) * s + margin;
+    double bx = (b.x - x0) * s + margin, by = (y1 - b.y) * s + margin;
+    return hypot(bx - ax, by - ay);
+}
+
+static double attr(xmlNode *n, const char *name)
+{
+    xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
+    char *end;
+    double x = v ? strtod((const char *)v, &end) : NAN;
+    if (v && *end) x = NAN;
+    xmlFree(v);
+    return x;
+}
+
+// Lines of a group, each inside the view box [0, w] × [0, h] (to rounding).
+static int count_lines_in(xmlNode *n, double w, double h)
 {
     int c = 0;
+    double tol = 1e-9 * (w + h);
     for (xmlNode *k = n->children; k; k = k->next)
-        if (k->type == XML_ELEMENT_NODE && xmlStrcmp(k->name, (const xmlChar *)"line") == 0) ++c;
+        if (k->type == XML_ELEMENT_NODE && xmlStrcmp(k->name, (const xmlChar *)"line") == 0) {
+            double x[2] = {attr(k, "x1"), attr(k, "x2")}, y[2] = {attr(k, "y1"), attr(k, "y2")};
+            for (int i = 0; i < 2; ++i)
+                if (!(x[i] >= -tol && x[i] <= w + tol && y[i] >= -tol && y[i] <= h + tol))
+                    fail("svg: a line outside the view box or not a number");
+            ++c;
+        }
     return c;
 }
 
@@ -301,6 +335,11 @@ static void check_svg(const char *svg, const ori_pattern *p, const ori_cut_def *
     if (!doc) fail("svg: not well-formed XML");
     xmlNode *root = xmlDocGetRootElement(doc);
     if (!root || xmlStrcmp(root->name, (const xmlChar *)"svg") != 0) fail("svg: root is not <svg>");
+    xmlChar *vb = xmlGetProp(root, (const xmlChar *)"viewBox");
+    double w = NAN, h = NAN;
+    if (!vb || sscanf((const char *)vb, "0 0 %lf %lf", &w, &h) != 2 || !(w >= 0.0) || !(h >= 0.0) || !isfinite(w) || !isfinite(h))
+        fail("svg: no finite viewBox");
+    xmlFree(vb);
     static const char *const groups[4] = {"cut", "mountain", "valley", "unassigned"};
     int k = 0;
     for (xmlNode *g = root->children; g; g = g->next) {
@@ -311,7 +350,7 @@ static void check_svg(const char *svg, const ori_pattern *p, const ori_cut_def *
         xmlFree(id);
         if (!same) fail("svg: groups out of order");
         if (k == 0) {
-            if (count_lines(g) != lines[0]) fail("svg: cut lines are not the DXF's CUT lines");
+            if (count_lines_in(g, w, h) != lines[0]) fail("svg: cut lines are not the DXF's CUT lines");
         } else {
             int creases = 0;
             for (xmlNode *e = g->children; e; e = e->next) {
@@ -322,10 +361,8 @@ static void check_svg(const char *svg, const ori_pattern *p, const ori_cut_def *
                 if (edge < 0 || edge >= ori_pattern_edge_count(p)) fail("svg: a crease group without its edge");
                 ori_edge ed = ori_pattern_edge(p, edge);
                 if (edge_kind(ed.assignment) != k) fail("svg: a crease in the wrong group");
-                ori_v3 a = ori_pattern_vertex(p, ed.v[0]), b = ori_pattern_vertex(p, ed.v[1]);
-                double len = hypot((b.x - a.x) * cd->mm_per_unit, (b.y - a.y) * cd->mm_per_unit);
-                int want = ori_crease_dashes(len, cd, NULL, NULL, 0);
-                if (count_lines(e) != want) fail("svg: a crease's lines are not its dashes");
+                int want = ori_crease_dashes(svg_length(p, cd, ed), cd, NULL, NULL, 0);
+                if (count_lines_in(e, w, h) != want) fail("svg: a crease's lines are not its dashes");
                 ++creases;
             }
             if (creases != lines[k]) fail("svg: creases are not the DXF's lines of the layer");
@@ -343,7 +380,8 @@ static void check_dashes(double length, const ori_cut_def *cd)
     int n = ori_crease_dashes(length, cd, s, e, CAP);
     int n0 = ori_crease_dashes(length, cd, NULL, NULL, 0);
     if (n != n0) fail("dashes: the count depends on cap");
-    if (n < 0) fail("dashes: negative count");
+    if (n < -1) fail("dashes: a count below -1");
+    if (n == -1) return; // refused: the def out of range, or more than ORI_CUT_MAX_DASHES
     double tol = 1e-9 * (fabs(length) + fabs(cd->vertex_gap_mm));
     for (int i = 0; i < n && i < CAP; ++i) {
         if (!isfinite(s[i]) || !isfinite(e[i]) || !(s[i] <= e[i])) fail("dashes: a dash ends before it starts");
@@ -430,8 +468,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         static const char *const names[] = {"ORIKIN", "", "A", "odd", "DEVICE_WITH_A_LONG_NAME_0123456789", long_name};
         ori_gds_def gd = ori_default_gds_def();
         if (flags & 16) {
-            gd.library_name = names[q[40] % 6];
-            gd.cell_name = names[q[41] % 6];
+            gd.library_name = names[q[52] % 6];
+            gd.cell_name = names[q[53] % 6];
         }
         if (flags & 32) gd.user_unit_m = hostile(q + 24, 1e-6);
         if (flags & 64) gd.database_unit_m = hostile(q + 26, 1e-9);
@@ -455,9 +493,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                        &cd.perforation_pitch_mm, &cd.stroke_mm};
     for (int i = 0; i < 7; ++i) *cuts[i] = hostile(q + 28 + 2 * i, *cuts[i]);
     check_dashes(hostile(q + 2, 10.0), &cd);
-    char *dxf = ori_dxf_write(p, &cd);
+    char *dxf = ori_dxf_write(p, &cd, &err);
     int lines[4] = {0};
-    if (dxf) {
+    if (!dxf) {
+        if (!err.message[0]) fail("dxf refused without a message");
+    } else {
         check_dxf(dxf, lines);
         int want[4] = {0};
         for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
@@ -465,22 +505,31 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (k >= 0) want[k]++;
         }
         if (memcmp(want, lines, sizeof want) != 0) fail("dxf: LINE count is not the edges'");
-        // bounded work: the SVG's dashes
-        double total = 0.0;
-        for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
-            ori_edge ed = ori_pattern_edge(p, e);
-            if (edge_kind(ed.assignment) <= 0) continue;
-            ori_v3 a = ori_pattern_vertex(p, ed.v[0]), b = ori_pattern_vertex(p, ed.v[1]);
-            check_dashes(hypot((b.x - a.x) * cd.mm_per_unit, (b.y - a.y) * cd.mm_per_unit), &cd);
-            total += ori_crease_dashes(hypot((b.x - a.x) * cd.mm_per_unit, (b.y - a.y) * cd.mm_per_unit), &cd, NULL, NULL, 0);
-        }
-        if (total <= MAX_SVG_DASHES) {
-            char *svg = ori_cut_svg_write(p, &cd);
-            if (trace) fprintf(stderr, "fuzz_fab: dxf ok, svg of %.0f dashes\n", total);
-            if (!svg) fail("svg refused a pattern the DXF took");
+    }
+    // bounded work: the SVG's dashes (−1: a def out of range or too many for a crease)
+    double total = 0.0;
+    bool refused = false;
+    for (int e = 0; e < ori_pattern_edge_count(p); ++e) {
+        ori_edge ed = ori_pattern_edge(p, e);
+        if (edge_kind(ed.assignment) <= 0) continue;
+        double len = svg_length(p, &cd, ed);
+        check_dashes(len, &cd);
+        int n = ori_crease_dashes(len, &cd, NULL, NULL, 0);
+        if (n < 0) refused = true;
+        else total += n;
+    }
+    if (total <= MAX_SVG_DASHES) {
+        char *svg = ori_cut_svg_write(p, &cd, &err);
+        if (trace) fprintf(stderr, "fuzz_fab: dxf %s, svg of %.0f dashes %s%s\n", dxf ? "ok" : "refused", total,
+                           svg ? "ok" : "refused: ", svg ? "" : err.message);
+        if (!svg) {
+            if (!err.message[0]) fail("svg refused without a message");
+        } else {
+            if (refused) fail("svg took a crease whose dashes are refused");
+            if (!dxf) fail("svg took what the DXF refused");
             check_svg(svg, p, &cd, lines);
-            ori_buffer_free(svg);
         }
+        ori_buffer_free(svg);
     }
     ori_buffer_free(dxf);
     ori_pattern_destroy(p);

@@ -285,13 +285,16 @@ Test(fab, dxf_and_svg_layers)
     ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
     ori_cut_def d = ori_default_cut_def();
     d.mm_per_unit = 50.0; // a 100 mm sheet
-    char *dxf = ori_dxf_write(p, &d);
+    ori_error err;
+    char *dxf = ori_dxf_write(p, &d, &err);
+    cr_assert(dxf, "%s", err.message);
     cr_assert(strstr(dxf, "$ACADVER\n1\nAC1009\n"));
     cr_assert_eq(count_of(dxf, "0\nLINE\n8\nCUT\n"), ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY));
     cr_assert_eq(count_of(dxf, "0\nLINE\n8\nMOUNTAIN\n"), ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN));
     cr_assert_eq(count_of(dxf, "0\nLINE\n8\nVALLEY\n"), ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY));
     cr_assert(strstr(dxf, "0\nEOF\n"));
-    char *svg = ori_cut_svg_write(p, &d);
+    char *svg = ori_cut_svg_write(p, &d, &err);
+    cr_assert(svg, "%s", err.message);
     cr_assert(strstr(svg, "width=\"100.4mm\""), "100 mm and two stroke widths of margin");
     cr_assert(strstr(svg, "<g id=\"mountain\"") && strstr(svg, "<g id=\"valley\"") && strstr(svg, "<g id=\"cut\""));
     // every crease of the open corner (50 or 70.7 mm) as its dashes
