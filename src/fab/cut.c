@@ -222,7 +222,7 @@ char *ori_cut_svg_write(const ori_pattern *p, const ori_cut_def *def, ori_error 
                 ori__free(en);
                 ori__free(t.data);
                 ori__fail_at(error, ORI_ERR_LIMIT, "edges_vertices", e,
-                             "edge %d: more than %d dashes (longer dashes or gaps, or fewer mm per unit)", e, ORI_CUT_MAX_DASHES);
+                             "more than %d dashes (longer dashes or gaps, or fewer mm per unit)", ORI_CUT_MAX_DASHES);
                 return NULL;
             }
             if (n > cap) {
