@@ -121,7 +121,6 @@ static ori_status check_input(const ori_pattern *p, const ori_cut_def *d, bool s
     return ORI_OK;
 }
 
-
 char *ori_dxf_write(const ori_pattern *p, const ori_cut_def *def, ori_error *error)
 {
     ori_cut_def d = def ? *def : ori_default_cut_def();
