@@ -117,7 +117,7 @@ static int mask(void)
     size_t n = 0;
     unsigned char *bytes = ori_gds_write(l, NULL, &n, &err);
     double t2 = bench_now();
-    char *svg = ori_cut_svg_write(p, NULL);
+    char *svg = ori_cut_svg_write(p, NULL, &err);
     double t3 = bench_now();
     printf("   mask 100x100 Miura (%d faces, %d edges): layout %d shapes in %.3f s, GDSII %.1f MB in %.3f s; laser SVG %.1f MB "
            "in %.3f s\n",
@@ -174,7 +174,7 @@ static int chain(void)
     if (ori_fab_layout_create(&fd, &l, &err) != ORI_OK) goto done;
     size_t n = 0;
     unsigned char *bytes = ori_gds_write(l, NULL, &n, &err);
-    char *dxf = ori_dxf_write(p, NULL);
+    char *dxf = ori_dxf_write(p, NULL, &err);
     double t3 = bench_now();
     printf("   device chain, open corner: load + design + fold to 180 deg %.2f ms, sizing (actuate) %.2f ms, mask (%zu bytes) "
            "and DXF %.2f ms: %.2f ms in all; needs %.4g mA\n",

@@ -242,8 +242,11 @@ static int run(int argc, char **argv)
         rc = cli_usage(cmd, "--pitch must be longer than --slit (a slit starts every pitch)");
         goto done;
     }
-    char *text = kind == OUT_DXF ? ori_dxf_write(p, &cd) : ori_cut_svg_write(p, &cd);
-    if (ori_file_write_atomic(out, text, strlen(text), &err) != ORI_OK) {
+    char *text = kind == OUT_DXF ? ori_dxf_write(p, &cd, &err) : ori_cut_svg_write(p, &cd, &err);
+    if (!text) {
+        rc = cli_input_error(cmd, path, &err);
+        json_decref(summary);
+    } else if (ori_file_write_atomic(out, text, strlen(text), &err) != ORI_OK) {
         rc = cli_input_error(cmd, out, &err);
         json_decref(summary);
     } else {

@@ -117,6 +117,56 @@ Test(fab, gds_records_of_a_tiny_library)
     ori_pattern_destroy(p);
 }
 
+// What a GDSII stream cannot hold is refused, not written wrong (fuzz_fab's finds): a name past
+// a record's 16-bit length, a database unit that the excess-64 real would write as 0.
+Test(fab, gds_refuses_what_a_stream_cannot_hold)
+{
+    ori_pattern *p = test_pattern_of_text(square_text);
+    ori_fab_def d = ori_default_fab_def();
+    d.pattern = p;
+    d.meters_per_unit = 1e-6;
+    d.mark_size_m = 0.0;
+    d.label[0] = '\0';
+    ori_fab_layout *l = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fab_layout_create(&d, &l, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    static char name[70001];
+    memset(name, 'N', sizeof name - 1);
+    ori_gds_def gd = ori_default_gds_def();
+    gd.cell_name = name; // 70,000 bytes: the record length would wrap to 4,468
+    size_t n = 1;
+    cr_assert_null(ori_gds_write(l, &gd, &n, &err));
+    cr_assert_eq(err.status, ORI_ERR_LIMIT);
+    cr_assert_str_eq(err.field, "cell_name");
+    cr_assert_eq(n, 0, "no size on failure");
+    name[65530] = '\0'; // the longest that fits: 65,530 bytes + the 4-byte header
+    unsigned char *g = ori_gds_write(l, &gd, &n, &err);
+    cr_assert(g, "%s", err.message);
+    ori_buffer_free(g);
+    gd = ori_default_gds_def();
+    gd.database_unit_m = 1e-80; // below 16^-65 m: written as 0 before
+    cr_assert_null(ori_gds_write(l, &gd, &n, &err));
+    cr_assert_eq(err.status, ORI_ERR_RANGE);
+    cr_assert_str_eq(err.field, "units");
+    ori_fab_layout_destroy(l);
+    // metres per unit so small that the default pads are beyond the range of doubles in pattern
+    // units (1e-4 m / 5e-324 m): refused with the field, not laid out at infinity
+    d.meters_per_unit = 5e-324;
+    d.hinge_overlap_m = 0.0;
+    d.default_hinge_span_m = 0.0;
+    d.mark_size_m = 100e-6;
+    cr_assert_eq(ori_fab_layout_create(&d, &l, &err), ORI_ERR_RANGE);
+    cr_assert_str_eq(err.field, "pad_size", "the first length out of range");
+    cr_assert_null(l);
+    // each length in range, their sum not: a mark margin near the largest double
+    d.meters_per_unit = 1.0;
+    d.mark_margin_m = 1.7e308;
+    d.mark_size_m = 1e308;
+    cr_assert_eq(ori_fab_layout_create(&d, &l, &err), ORI_ERR_RANGE, "%s", err.message);
+    cr_assert_null(l);
+    ori_pattern_destroy(p);
+}
+
 static double poly_area(ori_fab_shape s)
 {
     double a = 0.0;
@@ -273,6 +323,64 @@ Test(fab, crease_dashes)
     cr_assert_float_eq(e[0] - s[0], 0.5, 1e-12);
 }
 
+// A dash tiny against its crease: ⌊(stretch + gap) / (dash + gap)⌋ was converted to int beyond
+// its range (undefined behaviour; fuzz_fab's find, orikin fab -o x.svg --dash 1e-300 --dash-gap 0).
+Test(fab, crease_dashes_refuse_out_of_range)
+{
+    ori_cut_def d = ori_default_cut_def();
+    d.dash_mm = 1e-300;
+    d.gap_mm = 0.0;
+    cr_assert_eq(ori_crease_dashes(10.0, &d, NULL, NULL, 0), -1, "8e300 dashes: refused");
+    d.dash_mm = 1.0 / 1024.0; // the 8 mm stretch: 8,192 dashes, exactly (binary fractions)
+    cr_assert_eq(ori_crease_dashes(10.0, &d, NULL, NULL, 0), 8192);
+    d.dash_mm = 0x1.0p-20; // 8,388,608: more than ORI_CUT_MAX_DASHES
+    cr_assert_eq(ori_crease_dashes(10.0, &d, NULL, NULL, 0), -1);
+    d = ori_default_cut_def();
+    d.gap_mm = NAN;
+    cr_assert_eq(ori_crease_dashes(10.0, &d, NULL, NULL, 0), -1, "a NaN gap");
+    d = ori_default_cut_def();
+    d.perforate = true;
+    d.perforation_pitch_mm = d.perforation_mm; // no gap between slits
+    cr_assert_eq(ori_crease_dashes(10.0, &d, NULL, NULL, 0), -1, "pitch not longer than the slit");
+    d.gap_mm = NAN; // the dash style's fields do not matter when perforating
+    d.perforation_pitch_mm = 1.5;
+    cr_assert_eq(ori_crease_dashes(100.0, &d, NULL, NULL, 0), (int)floor(99.0 / 1.5));
+    // the writers say why
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_error err;
+    d = ori_default_cut_def();
+    d.mm_per_unit = 50.0; // a 100 mm sheet, creases of 50 and 70.7 mm
+    d.dash_mm = 1e-300;
+    d.gap_mm = 0.0;
+    cr_assert_null(ori_cut_svg_write(p, &d, &err));
+    cr_assert_eq(err.status, ORI_ERR_LIMIT);
+    cr_assert(err.element >= 0 && ori_assignment_is_fold(ori_pattern_edge(p, err.element).assignment), "the crease: %d",
+              err.element);
+    char *dxf = ori_dxf_write(p, &d, &err); // whole lines: the dashes do not matter
+    cr_assert(dxf, "%s", err.message);
+    ori_buffer_free(dxf);
+    d = ori_default_cut_def();
+    d.stroke_mm = INFINITY;
+    cr_assert_null(ori_cut_svg_write(p, &d, &err));
+    cr_assert_str_eq(err.field, "stroke_mm");
+    d = ori_default_cut_def();
+    d.mm_per_unit = INFINITY;
+    cr_assert_null(ori_dxf_write(p, &d, &err));
+    cr_assert_str_eq(err.field, "mm_per_unit");
+    d.mm_per_unit = 1e308; // finite, but the 2-unit sheet is beyond the range of coordinates in mm
+    cr_assert_null(ori_cut_svg_write(p, &d, &err));
+    cr_assert_eq(err.status, ORI_ERR_RANGE);
+    ori_pattern_destroy(p);
+    char *out = NULL;
+    remove("/tmp/orikin-fab-tiny-dash.svg");
+    cr_assert_eq(test_run_cli("fab examples/patterns/open-corner.fold -o /tmp/orikin-fab-tiny-dash.svg --scale 50 --dash 1e-300 "
+                              "--dash-gap 0", &out), 3);
+    cr_assert(strstr(out, "dashes"), "%s", out);
+    free(out);
+    FILE *f = fopen("/tmp/orikin-fab-tiny-dash.svg", "rb");
+    cr_assert_null(f, "nothing written");
+}
+
 static int count_of(const char *text, const char *needle)
 {
     int n = 0;
@@ -285,13 +393,16 @@ Test(fab, dxf_and_svg_layers)
     ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
     ori_cut_def d = ori_default_cut_def();
     d.mm_per_unit = 50.0; // a 100 mm sheet
-    char *dxf = ori_dxf_write(p, &d);
+    ori_error err;
+    char *dxf = ori_dxf_write(p, &d, &err);
+    cr_assert(dxf, "%s", err.message);
     cr_assert(strstr(dxf, "$ACADVER\n1\nAC1009\n"));
     cr_assert_eq(count_of(dxf, "0\nLINE\n8\nCUT\n"), ori_pattern_count_assignment(p, ORI_ASSIGN_BOUNDARY));
     cr_assert_eq(count_of(dxf, "0\nLINE\n8\nMOUNTAIN\n"), ori_pattern_count_assignment(p, ORI_ASSIGN_MOUNTAIN));
     cr_assert_eq(count_of(dxf, "0\nLINE\n8\nVALLEY\n"), ori_pattern_count_assignment(p, ORI_ASSIGN_VALLEY));
     cr_assert(strstr(dxf, "0\nEOF\n"));
-    char *svg = ori_cut_svg_write(p, &d);
+    char *svg = ori_cut_svg_write(p, &d, &err);
+    cr_assert(svg, "%s", err.message);
     cr_assert(strstr(svg, "width=\"100.4mm\""), "100 mm and two stroke widths of margin");
     cr_assert(strstr(svg, "<g id=\"mountain\"") && strstr(svg, "<g id=\"valley\"") && strstr(svg, "<g id=\"cut\""));
     // every crease of the open corner (50 or 70.7 mm) as its dashes

@@ -252,6 +252,11 @@ static int parse_param(sweep_spec *spec, json_t *o, int j, char *err, size_t n)
         if (!json_is_integer(c) || json_integer_value(c) < 1 || json_integer_value(c) > 100000000)
             return sweep_fail(err, n, "parameters[%d].count: must be an integer from 1 to 100000000", j);
         p->count = (int)json_integer_value(c);
+        // from + (to − from)·i / (count − 1) must stay finite: an infinite value would be
+        // substituted as nothing (jansson has no real for it), the job silently without it.
+        if (p->count > 1 && !isfinite((p->b - p->a) * (p->count - 1)))
+            return sweep_fail(err, n, "parameters[%d]: from and to are too far apart for %d values (a value would overflow)", j,
+                              p->count);
     } else if (found == 1) {
         p->kind = SWEEP_LIST;
         p->values = json_object_get(o, "values");
@@ -272,6 +277,12 @@ static int parse_param(sweep_spec *spec, json_t *o, int j, char *err, size_t n)
             return sweep_fail(err, n, "parameters[%d].%s: must be [%s]", j, kinds[found], found == 2 ? "lo, hi" : "mean, sd");
         if (found == 2 && !(p->b >= p->a)) return sweep_fail(err, n, "parameters[%d].uniform: hi must be >= lo", j);
         if (found == 3 && !(p->b >= 0.0)) return sweep_fail(err, n, "parameters[%d].normal: sd must be >= 0", j);
+        // every draw finite: hi − lo, and mean ± 9 sd (the largest Box–Muller deviate of 53-bit
+        // uniforms is √(2·53·ln 2) ≈ 8.6)
+        if (found == 2 && !isfinite(p->b - p->a))
+            return sweep_fail(err, n, "parameters[%d].uniform: lo and hi are too far apart (a draw would overflow)", j);
+        if (found == 3 && !isfinite(fabs(p->a) + 9.0 * p->b))
+            return sweep_fail(err, n, "parameters[%d].normal: mean and sd too large (a draw would overflow)", j);
         p->count = 1;
         spec->has_random = true;
     }

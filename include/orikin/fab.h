@@ -107,7 +107,8 @@ typedef struct ori_fab_layout ori_fab_layout;
 /// its panel (legs at the ends of the wire, perpendicular to the crease, and the wire at its
 /// lever), two leads across the crease onto the other panel and a pad at each, four alignment
 /// crosses and the label. Fails with ORI_ERR_ARGUMENT (no pattern, not built, folded, no unit),
-/// ORI_ERR_RANGE (a negative or non-finite length: field names it) and ORI_ERR_DEGENERATE
+/// ORI_ERR_RANGE (a negative or non-finite length, or one beyond the range of lengths in the
+/// pattern's unit: field names it; a shape beyond the range of coordinates) and ORI_ERR_DEGENERATE
 /// (element = the face) when a gap this wide leaves a panel with no area. Destroy with ori_fab_layout_destroy.
 ORI_API ori_status ori_fab_layout_create(const ori_fab_def *def, ori_fab_layout **out, ori_error *error);
 /// Destroy a layout; NULL is a no-op.
@@ -142,7 +143,10 @@ ORI_API bool ori_gds_real8(double x, unsigned char out[8]);
 /// BOUNDARY per polygon, a PATH per path (PATHTYPE 0, WIDTH), a TEXT per text, on the layer
 /// numbers of ori_fab_layer, datatype 0; dates 1970-01-01 so that the bytes depend on the input
 /// only. Coordinates are rounded to the database unit. Fails (NULL, error set) with ORI_ERR_LIMIT
-/// for a coordinate beyond ±2^31 database units or a polygon of more than 8190 points.
+/// for a coordinate beyond ±2^31 database units, a polygon of more than 8190 points or a library
+/// or cell name of more than 65530 bytes (what a record holds), and with ORI_ERR_RANGE (field
+/// "units") for a user or database unit, or a text height, that GDSII reals cannot hold (beyond
+/// 16^63, or nonzero below 16^-65, which would be written as 0).
 /// *size receives the byte count; free with ori_buffer_free.
 ORI_API unsigned char *ori_gds_write(const ori_fab_layout *layout, const ori_gds_def *def, size_t *size,
                                      ori_error *error);
@@ -168,27 +172,36 @@ typedef struct ori_cut_def {
 /// Defaults: 1 mm per unit, 3 mm dashes with 1.5 mm gaps stopping 1 mm from the vertices.
 ORI_API ori_cut_def ori_default_cut_def(void);
 
+/// Most dashes (or slits) of one crease.
+#define ORI_CUT_MAX_DASHES 1000000
+
 /// The dashes of a crease of length length_mm (all in mm, measured from its first vertex) into
 /// starts[i], ends[i] (cap entries): the stretch [vertex_gap, length − vertex_gap] filled with n =
 /// ⌊(stretch + gap) / (dash + gap)⌋ dashes separated by gap, centred (the left-over split
 /// between the ends); one dash over the whole stretch when it is shorter than a dash; none when
 /// the crease is shorter than two vertex gaps. With perforate the slits and pitch replace dash
-/// and dash + gap. Returns the count (which may exceed cap: only cap are written).
+/// and dash + gap. Returns the count (which may exceed cap: only cap are written); −1 when def
+/// is out of range (as ori_cut_svg_write checks it) or the count would exceed ORI_CUT_MAX_DASHES.
 ORI_API int ori_crease_dashes(double length_mm, const ori_cut_def *def, double *starts, double *ends, int cap);
 
 /// The flat pattern as an ASCII DXF (R12, AC1009): layers CUT (B and C edges, colour 7),
 /// MOUNTAIN (colour 1, red), VALLEY (colour 5, blue) and UNASSIGNED (U, colour 3); F and J
 /// edges are not written. One LINE per edge in edge order, whole (the cutter's driver dashes
-/// or scores a layer as it is set up), coordinates in mm, y up, $INSUNITS 4 (mm). Free with
-/// ori_buffer_free; NULL when the pattern is not flat.
-ORI_API char *ori_dxf_write(const ori_pattern *pattern, const ori_cut_def *def);
+/// or scores a layer as it is set up), coordinates in mm, y up, $INSUNITS 4 (mm). def NULL: the
+/// defaults. Free with ori_buffer_free. Fails (NULL, error set) with ORI_ERR_ARGUMENT when the
+/// pattern is not flat, ORI_ERR_RANGE when mm_per_unit is not a finite number > 0 or puts the
+/// pattern beyond the range of coordinates.
+ORI_API char *ori_dxf_write(const ori_pattern *pattern, const ori_cut_def *def, ori_error *error);
 /// The flat pattern as an SVG for laser cutters, in mm (width/height in mm, viewBox in mm, y
 /// down): a group (an Inkscape layer) per kind: "cut" (B, C: solid black lines), "mountain"
 /// (red) and "valley" (blue) with each crease as its dashes (ori_crease_dashes) or
 /// perforations, "unassigned" (U, green dashes); F and J edges are left out. Every dash is its
-/// own <line> (laser drivers ignore stroke-dasharray). Free with ori_buffer_free; NULL when the
-/// pattern is not flat.
-ORI_API char *ori_cut_svg_write(const ori_pattern *pattern, const ori_cut_def *def);
+/// own <line> (laser drivers ignore stroke-dasharray). Free with ori_buffer_free. Fails (NULL,
+/// error set) as ori_dxf_write, and with ORI_ERR_RANGE (field named) for a dash, slit or stroke
+/// that is not a finite length > 0, a gap or vertex gap not finite ≥ 0, a pitch not longer than
+/// its slit (the fields of the style asked for: dash and gap, or slit and pitch), ORI_ERR_LIMIT
+/// (element = the edge) for a crease of more than ORI_CUT_MAX_DASHES dashes.
+ORI_API char *ori_cut_svg_write(const ori_pattern *pattern, const ori_cut_def *def, ori_error *error);
 
 // --- fabrication tolerance -----------------------------------------------------------------
 

@@ -23,19 +23,44 @@ ori_cut_def ori_default_cut_def(void)
     return d;
 }
 
+// The def's lengths that the SVG uses (all: the DXF only mm_per_unit): finite, the dashes and
+// slits, the stroke and the scale > 0, gaps ≥ 0, a slit shorter than its pitch.
+static ori_status check_def(const ori_cut_def *d, bool svg, ori_error *error)
+{
+    if (!(isfinite(d->mm_per_unit) && d->mm_per_unit > 0.0))
+        return ori__fail_at(error, ORI_ERR_RANGE, "mm_per_unit", ORI_NULL_INDEX, "mm_per_unit must be a finite number > 0");
+    if (!svg) return ORI_OK;
+    const char *names[] = {"dash_mm", "gap_mm", "vertex_gap_mm", "perforation_mm", "perforation_pitch_mm", "stroke_mm"};
+    double vals[] = {d->dash_mm, d->gap_mm, d->vertex_gap_mm, d->perforation_mm, d->perforation_pitch_mm, d->stroke_mm};
+    bool zero_ok[] = {false, true, true, false, false, false};
+    for (int i = 0; i < 6; ++i) {
+        if (d->perforate ? i <= 1 : i == 3 || i == 4) continue; // the other style's fields are not used
+        if (!(isfinite(vals[i]) && (vals[i] > 0.0 || (zero_ok[i] && vals[i] == 0.0))))
+            return ori__fail_at(error, ORI_ERR_RANGE, names[i], ORI_NULL_INDEX, "%s must be a finite length %s (mm)", names[i],
+                                zero_ok[i] ? ">= 0" : "> 0");
+    }
+    if (d->perforate && !(d->perforation_pitch_mm > d->perforation_mm))
+        return ori__fail_at(error, ORI_ERR_RANGE, "perforation_pitch_mm", ORI_NULL_INDEX,
+                            "perforation_pitch_mm must be longer than perforation_mm (a slit starts every pitch)");
+    return ORI_OK;
+}
+
 int ori_crease_dashes(double length, const ori_cut_def *def, double *starts, double *ends, int cap)
 {
     ori_cut_def d = def ? *def : ori_default_cut_def();
+    if (check_def(&d, true, NULL) != ORI_OK) return -1;
     double dash = d.perforate ? d.perforation_mm : d.dash_mm;
     double gap = d.perforate ? d.perforation_pitch_mm - d.perforation_mm : d.gap_mm;
     double s0 = d.vertex_gap_mm, stretch = length - 2.0 * d.vertex_gap_mm;
-    if (!(stretch > 0.0) || !(dash > 0.0)) return 0;
-    if (gap < 0.0) gap = 0.0;
+    if (!(stretch > 0.0)) return 0;
     if (stretch <= dash) {
         if (cap > 0) starts[0] = s0, ends[0] = s0 + stretch;
         return 1;
     }
-    int n = (int)floor((stretch + gap) / (dash + gap));
+    // (as a double first: a dash tiny against the crease would overflow an int)
+    double count = floor((stretch + gap) / (dash + gap));
+    if (!(count <= ORI_CUT_MAX_DASHES)) return -1;
+    int n = (int)count;
     double used = n * dash + (n - 1) * gap, lead = 0.5 * (stretch - used);
     for (int i = 0; i < n && i < cap; ++i) {
         starts[i] = s0 + lead + i * (dash + gap);
@@ -67,11 +92,6 @@ static void pair_real(ori__text *t, int code, double x)
     ori__text_puts(t, "\n");
 }
 
-static bool flat_pattern(const ori_pattern *p)
-{
-    return p && !ori_pattern_is_folded_form(p) && !ori_pattern_is_3d(p);
-}
-
 static void bounds(const ori_pattern *p, double *x0, double *y0, double *x1, double *y1)
 {
     *x0 = *y0 = INFINITY;
@@ -83,13 +103,30 @@ static void bounds(const ori_pattern *p, double *x0, double *y0, double *x1, dou
     if (!(*x0 <= *x1)) *x0 = *y0 = *x1 = *y1 = 0.0;
 }
 
-char *ori_dxf_write(const ori_pattern *p, const ori_cut_def *def)
+// The pattern flat and the def in range, its extent in mm finite (*x0 … *y1 its bounds).
+static ori_status check_input(const ori_pattern *p, const ori_cut_def *d, bool svg, double *x0, double *y0, double *x1,
+                              double *y1, ori_error *error)
 {
-    if (!flat_pattern(p)) return NULL;
+    ORI_ASSERT(p);
+    if (ori_pattern_is_folded_form(p) || ori_pattern_is_3d(p))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "cut: the pattern is folded (a cutting file needs the flat crease pattern)");
+    ori_status st = check_def(d, svg, error);
+    if (st != ORI_OK) return st;
+    bounds(p, x0, y0, x1, y1);
+    double s = d->mm_per_unit, m = svg ? 4.0 * d->stroke_mm : 0.0;
+    if (!(isfinite(fmax(fabs(*x0), fabs(*x1)) * s + m) && isfinite(fmax(fabs(*y0), fabs(*y1)) * s + m) &&
+          isfinite((*x1 - *x0) * s + m) && isfinite((*y1 - *y0) * s + m)))
+        return ori__fail_at(error, ORI_ERR_RANGE, "mm_per_unit", ORI_NULL_INDEX,
+                            "the pattern at %g mm per unit is beyond the range of coordinates", s);
+    return ORI_OK;
+}
+
+char *ori_dxf_write(const ori_pattern *p, const ori_cut_def *def, ori_error *error)
+{
     ori_cut_def d = def ? *def : ori_default_cut_def();
     double s = d.mm_per_unit;
     double x0, y0, x1, y1;
-    bounds(p, &x0, &y0, &x1, &y1);
+    if (check_input(p, &d, false, &x0, &y0, &x1, &y1, error) != ORI_OK) return NULL;
     ori__text t = {NULL, 0, 0};
     ori__text_puts(&t, "999\norikin crease pattern (mm)\n0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1009\n9\n$INSUNITS\n70\n4\n");
     ori__text_puts(&t, "9\n$EXTMIN\n");
@@ -139,13 +176,12 @@ static void svg_line(ori__text *t, double ax, double ay, double bx, double by)
     ori__text_puts(t, "\"/>\n");
 }
 
-char *ori_cut_svg_write(const ori_pattern *p, const ori_cut_def *def)
+char *ori_cut_svg_write(const ori_pattern *p, const ori_cut_def *def, ori_error *error)
 {
-    if (!flat_pattern(p)) return NULL;
     ori_cut_def d = def ? *def : ori_default_cut_def();
     double s = d.mm_per_unit;
     double x0, y0, x1, y1;
-    bounds(p, &x0, &y0, &x1, &y1);
+    if (check_input(p, &d, true, &x0, &y0, &x1, &y1, error) != ORI_OK) return NULL;
     double margin = 2.0 * d.stroke_mm;
     // mm, y down: X = (x − x0)·s + margin, Y = (y1 − y)·s + margin
     double w = (x1 - x0) * s + 2.0 * margin, h = (y1 - y0) * s + 2.0 * margin;
@@ -180,6 +216,14 @@ char *ori_cut_svg_write(const ori_pattern *p, const ori_cut_def *def)
             }
             double len = hypot(bx - ax, by - ay);
             int n = ori_crease_dashes(len, &d, st, en, cap);
+            if (n < 0) {
+                ori__free(st);
+                ori__free(en);
+                ori__free(t.data);
+                ori__fail_at(error, ORI_ERR_LIMIT, "edges_vertices", e,
+                             "more than %d dashes (longer dashes or gaps, or fewer mm per unit)", ORI_CUT_MAX_DASHES);
+                return NULL;
+            }
             if (n > cap) {
                 cap = n;
                 st = ori__realloc(st, sizeof(double) * (size_t)cap);

@@ -40,6 +40,9 @@ enum {
 // Most points of a BOUNDARY: its XY record holds at most (65535 − 4) / 8 = 8191 points, the
 // closing repetition of the first point included.
 #define GDS_MAX_POLYGON_POINTS 8190
+// Longest string of a record: its data, padded to even length, within the 65535 − 4 bytes after
+// the record's header.
+#define GDS_MAX_STRING 65530
 
 ori_gds_def ori_default_gds_def(void)
 {
@@ -129,6 +132,13 @@ static void record_dates(gds_buf *b, unsigned type)
     }
 }
 
+// A real of the UNITS or MAG record: false when it is not finite, beyond 16^63, or a nonzero
+// value that underflows (below 16^-65 ori_gds_real8 writes 0: a zero database unit or text size).
+static bool unit_real(double x, unsigned char out[8])
+{
+    return ori_gds_real8(x, out) && (x == 0.0 || fabs(x) >= ldexp(1.0, -260));
+}
+
 static bool quantise(double x, double scale, int32_t *out)
 {
     double r = nearbyint(x * scale);
@@ -167,19 +177,28 @@ unsigned char *ori_gds_write(const ori_fab_layout *l, const ori_gds_def *def, si
     }
     double scale = mpu / dbu; // pattern units → database units
     if (size) *size = 0;
+    const char *names[2] = {d.library_name ? d.library_name : "ORIKIN", d.cell_name ? d.cell_name : "DEVICE"};
+    for (int k = 0; k < 2; ++k)
+        if (strlen(names[k]) > GDS_MAX_STRING) {
+            // (the record's 16-bit length would wrap and the stream fall apart after it)
+            ori__fail_at(error, ORI_ERR_LIMIT, k ? "cell_name" : "library_name", ORI_NULL_INDEX,
+                         "a %s of %zu bytes (a GDSII record holds %d)", k ? "cell name" : "library name", strlen(names[k]),
+                         GDS_MAX_STRING);
+            return NULL;
+        }
     gds_buf b = {NULL, 0, 0};
     record_i16(&b, GDS_HEADER, 600);
     record_dates(&b, GDS_BGNLIB);
-    record_string(&b, GDS_LIBNAME, d.library_name ? d.library_name : "ORIKIN");
+    record_string(&b, GDS_LIBNAME, names[0]);
     record(&b, GDS_UNITS, 16);
     unsigned char r[8];
     // user units per database unit: exactly 1/1000 by default (dbu / user would round to 0.001000…02)
-    if (!ori_gds_real8(d.database_unit_m > 0.0 ? dbu / user : 1e-3, r)) goto units;
+    if (!unit_real(d.database_unit_m > 0.0 ? dbu / user : 1e-3, r) || !(dbu / user > 0.0)) goto units;
     put_bytes(&b, r, 8);
-    if (!ori_gds_real8(dbu, r)) goto units;
+    if (!unit_real(dbu, r)) goto units;
     put_bytes(&b, r, 8);
     record_dates(&b, GDS_BGNSTR);
-    record_string(&b, GDS_STRNAME, d.cell_name ? d.cell_name : "DEVICE");
+    record_string(&b, GDS_STRNAME, names[1]);
     for (int i = 0; i < ori_fab_shape_count(l); ++i) {
         ori_fab_shape s = ori_fab_shape_at(l, i);
         ori_status st = ORI_OK;
@@ -212,7 +231,7 @@ unsigned char *ori_gds_write(const ori_fab_layout *l, const ori_gds_def *def, si
             record_i16(&b, GDS_TEXTTYPE, 0);
             record_i16(&b, GDS_PRESENTATION, 0); // font 0, top-left… here: bottom, left
             record(&b, GDS_MAG, 8);
-            ori_gds_real8(s.width * mpu / user, r); // text height in user units
+            if (!unit_real(s.width * mpu / user, r)) goto units; // text height in user units
             put_bytes(&b, r, 8);
             st = put_xy(&b, s.points, 1, false, scale, i, error);
             if (st == ORI_OK) record_string(&b, GDS_STRING, s.text);

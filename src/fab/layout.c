@@ -298,6 +298,9 @@ ori_status ori_fab_layout_create(const ori_fab_def *d, ori_fab_layout **out, ori
         double x = vals[i];
         if (i == 0 || i == 3 || i == 4) x = x < 0.0 ? 0.0 : x; // ≤ 0 means "default" there
         if ((st = check_length(error, names[i], x)) != ORI_OK) return st;
+        if (!isfinite(x / mpu))
+            return ori__fail_at(error, ORI_ERR_RANGE, names[i], ORI_NULL_INDEX,
+                                "%s is beyond the range of lengths in the pattern's unit (%g m)", names[i], mpu);
     }
     int nf = ori_pattern_face_count(p), ne = ori_pattern_edge_count(p);
     ori_fab_layout *l = ori__calloc(1, sizeof *l);
@@ -362,6 +365,15 @@ ori_status ori_fab_layout_create(const ori_fab_def *d, ori_fab_layout **out, ori
     if (d->label[0] && d->label_height_m > 0.0) {
         ori_v2 at = v2(x0 + mm, y0 - mm - 0.5 * d->label_height_m / mpu);
         add_shape(l, ORI_FAB_LABEL, ORI_FAB_TEXT, ORI_NULL_INDEX, &at, 1, d->label_height_m / mpu, d->label);
+    }
+    // Lengths each in range can still sum past it (a mark margin near the largest double).
+    bool finite = true;
+    for (int i = 0; i < l->point_count; ++i) finite = finite && isfinite(l->points[i].x) && isfinite(l->points[i].y);
+    for (int i = 0; i < l->count; ++i) finite = finite && isfinite(l->shapes[i].width);
+    if (!finite) {
+        ori_fab_layout_destroy(l);
+        return ori__fail(error, ORI_ERR_RANGE, "fab: a shape reaches beyond the range of coordinates (lengths too large "
+                                               "for the pattern's unit)");
     }
     *out = l;
     return ORI_OK;
