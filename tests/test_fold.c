@@ -461,6 +461,44 @@ static ori_status planarized(const char *text, ori_pattern **p, ori_error *err)
     return st;
 }
 
+// A z is written whenever it is not exactly 0, and a file mixing [x, y] and [x, y, z] rows
+// keeps its z on write-back. Before, the writer asked ori_pattern_is_3d (a z within the
+// planarity tolerance counts as flat) and looked at the first row only, so z = 0.25 at
+// y = 6e15 was dropped (fuzz_fold, fuzz/seeds/fold/mixed-rows-small-z.fold).
+Test(fold, write_back_keeps_every_z, .init = test_leak_setup, .fini = test_leak_check)
+{
+    const char *text = "{\"vertices_coords\": [[0, 0], [-0.4, 5962305510809975, 0.25], [3e15, 0]],"
+                       " \"edges_vertices\": [[0, 1], [1, 2], [2, 0]], \"edges_assignment\": [\"B\", \"B\", \"B\"]}";
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_string(text, strlen(text), &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_vertex(p, 1).z, 0.25);
+    cr_assert_eq(ori_fold_set_pattern(doc, 0, p, &err), ORI_OK, "%s", err.message);
+    char *out = ori_fold_to_string(doc);
+    ori_fold *again = NULL;
+    ori_pattern *q = NULL;
+    cr_assert_eq(ori_fold_load_string(out, strlen(out), &again, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_fold_get_pattern(again, 0, NULL, &q, &err), ORI_OK, "%s", err.message);
+    for (int v = 0; v < 3; ++v) {
+        ori_v3 a = ori_pattern_vertex(p, v), b = ori_pattern_vertex(q, v);
+        cr_assert(a.x == b.x && a.y == b.y && a.z == b.z, "vertex %d: (%.17g, %.17g, %.17g) came back as (%.17g, %.17g, %.17g)",
+                  v, a.x, a.y, a.z, b.x, b.y, b.z);
+    }
+    // A new frame of a pattern with such a z carries it too.
+    int f = ori_fold_append_frame(again, p, NULL, NULL, ORI_NULL_INDEX);
+    ori_pattern *r = NULL;
+    cr_assert_eq(ori_fold_get_pattern(again, f, NULL, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_pattern_vertex(r, 1).z, 0.25);
+    ori_pattern_destroy(r);
+    ori_pattern_destroy(q);
+    ori_fold_destroy(again);
+    ori_buffer_free(out);
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+}
+
 Test(fold, planarize_splits_crossings_and_merges_overlaps)
 {
     ori_pattern *p;

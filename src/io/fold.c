@@ -732,12 +732,34 @@ static int64_t field_count(const ori__field *f)
     return json_is_array(f->json) ? (int64_t)json_array_size(f->json) : -1;
 }
 
+// Whether any row of the frame's vertices_coords had 3 numbers (a file may mix [x, y] and
+// [x, y, z] rows: the first row alone does not say).
 static bool had_three_coords(const ori__field *coords)
 {
     if (!coords) return false;
-    if (coords->pk) return coords->pk->kind == ORI__PK_ROWS && coords->pk->count > 0 && ori__pk_len(coords->pk, 0) == 3;
-    json_t *first = json_array_get(coords->json, 0);
-    return json_is_array(first) && json_array_size(first) == 3;
+    if (coords->pk) {
+        if (coords->pk->kind != ORI__PK_ROWS) return false;
+        for (int64_t i = 0; i < coords->pk->count; ++i)
+            if (ori__pk_len(coords->pk, i) == 3) return true;
+        return false;
+    }
+    size_t i;
+    json_t *row;
+    json_array_foreach(coords->json, i, row)
+    {
+        if (json_is_array(row) && json_array_size(row) == 3) return true;
+    }
+    return false;
+}
+
+// Whether the pattern's coordinates need a z to be written without loss: any z that is not
+// exactly 0 (ori_pattern_is_3d ignores a z within the planarity tolerance, which a 2D row would
+// drop: fuzz_fold found a vertex at y = 6e15 with z = 0.28 written as [x, y]).
+static bool needs_z(const ori_pattern *p)
+{
+    for (int i = 0; i < p->vertex_count; ++i)
+        if (p->vertices[i].z != 0.0) return true;
+    return false;
 }
 
 // Whether entry i of an index-array field equals ints[0..n).
@@ -823,7 +845,7 @@ ori_status ori_fold_set_pattern(ori_fold *doc, int frame, const ori_pattern *p, 
     if (frame < 0 || frame >= ori_fold_frame_count(doc))
         return ori__fail(error, ORI_ERR_RANGE, "frame %d does not exist", frame);
     const ori__field *old_coords = frame_field(doc, frame, "vertices_coords");
-    bool three = ori_pattern_is_3d(p) || had_three_coords(old_coords);
+    bool three = needs_z(p) || had_three_coords(old_coords);
     // Same topology? Then FOLD's derived index fields stay valid.
     bool same = field_count(old_coords) == p->vertex_count && same_edges(frame_field(doc, frame, "edges_vertices"), p) &&
                 same_faces(frame_field(doc, frame, "faces_vertices"), p);
@@ -897,7 +919,7 @@ int ori_fold_append_frame(ori_fold *doc, const ori_pattern *p, const char *frame
     ORI_ASSERT(parent == ORI_NULL_INDEX || (parent >= 0 && parent < ori_fold_frame_count(doc)));
     ori__frame *fr = new_frame(doc, frame_class, title);
     if (parent == ORI_NULL_INDEX) {
-        write_pattern_fields(fr, p, NULL, NULL, ori_pattern_is_3d(p));
+        write_pattern_fields(fr, p, NULL, NULL, needs_z(p));
     } else {
         double *a = ori__alloc(sizeof(double) * (size_t)(p->edge_count ? p->edge_count : 1));
         for (int e = 0; e < p->edge_count; ++e) a[e] = p->edges[e].fold_angle_rad;
