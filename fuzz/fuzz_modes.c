@@ -10,8 +10,6 @@
 
 #include <stdbool.h>
 
-#include <stdbool.h>
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 // One input's work is bounded through the progress callback (called once per accepted step): a

@@ -304,6 +304,42 @@ static bool lock_progress_fn(double f, void *user)
     return ++lp->calls != lp->cancel_after;
 }
 
+// Part of the way near the flat state: the 2 x 2 waterbomb with its symmetry orbits at 512/65535
+// (0.78 %), 0.5° frames. The step that crosses the fraction starts near the singular flat state,
+// where its corrected chord jumps across the stop distance, so bisection found no state on it;
+// the fold stopped at the step's end, 0.84 %, and called it reached (fuzz_modes,
+// fuzz/seeds/modes/waterbomb-orbits-near-flat). Now the step is retaken shorter and the stop
+// lands on the fraction.
+Test(fold_modes, a_small_fraction_near_the_flat_state_lands_on_it, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = waterbomb(2);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m);
+    int *group = malloc(sizeof(int) * (size_t)(E + 1));
+    ori_mechanism_symmetry_orbits(m, group);
+    ori_target_fold_def d = ori_default_target_fold_def();
+    d.fixed_face = 0;
+    d.fraction = 512.0 / 65535.0;
+    d.step_rad = 0.5 * ORI_PI / 180.0;
+    d.edge_group = group;
+    ori_multifold *mf = NULL;
+    ori_error err;
+    cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+    cr_assert_eq(ori_multifold_verdict_of(mf), ORI_MULTIFOLD_REACHED);
+    int n = ori_multifold_frame_count(mf);
+    cr_assert_gt(n, 1);
+    double last = ori_multifold_frame_progress(mf, n - 1);
+    cr_assert_leq(fabs(last - d.fraction), 1e-10, "stopped at %.12g, asked %.12g", last, d.fraction);
+    for (int f = 0; f < n; ++f) {
+        cr_assert_leq(ori_multifold_frame_residual(mf, f), 1e-9);
+        cr_assert_leq(ori_multifold_frame_progress(mf, f), d.fraction + 1e-10, "frame %d past the stop", f);
+    }
+    ori_multifold_destroy(mf);
+    free(group);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // ori_mechanism_lock_set_progress: the same set as ori_mechanism_lock_set, the progress monotone
 // and 1 at the end; cancelled, it returns -1 with ORI_ERR_LIMIT.
 Test(fold_modes, lock_set_progress, .init = test_leak_setup, .fini = test_leak_check)

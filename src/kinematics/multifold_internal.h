@@ -17,6 +17,11 @@
 // D₀), by at most this many bisections of the step.
 #define ORI_TOL_MULTIFOLD_PROGRESS 1e-13
 #define ORI_MULTIFOLD_STOP_BISECTIONS 80
+// A stop short of the fraction by more than ORI_TOL_MULTIFOLD_LAND × D₀ (the bisection found no
+// closer state on the corrected chord) retakes the step shorter, down to
+// ORI_MULTIFOLD_LAND_MIN_STEP_RAD, below which the closest state found is the stop. Unitless; radians.
+#define ORI_TOL_MULTIFOLD_LAND 1e-11
+#define ORI_MULTIFOLD_LAND_MIN_STEP_RAD 1e-8
 
 typedef struct mf_system {
     const ori_mechanism *m;

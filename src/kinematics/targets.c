@@ -893,7 +893,15 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 ori__free(x);
                 Dn = best;
                 res = best_res;
-                finished = true;
+                // Near a singular state (the flat sheet) the corrected chord can jump across the
+                // fraction: the corrector lands on one sheet of the constraints for part of the
+                // chord and on another beyond it, so no point of it is at the stop distance. Then
+                // the step is taken again shorter (the path from th is continuous) until it
+                // lands; a fuzzed waterbomb at 0.78 % stopped at 0.84 % before.
+                if (fabs(best - stop_distance) > ORI_TOL_MULTIFOLD_LAND * D0 && h > ORI_MULTIFOLD_LAND_MIN_STEP_RAD)
+                    accept = false;
+                else
+                    finished = true;
             }
             // Frames every def->step_rad of the largest crease change: those that fall inside this
             // step are the chord from th to trial at that change, corrected onto the constraints;
