@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "color_args.h"
 #include "progress.h"
 #include "render_args.h"
 #include "state_args.h"
@@ -14,7 +15,19 @@
 typedef struct anim_frames {
     const cli_state *st;
     const cli_motion *m;
+    const cli_colors *colors; // --color: every frame's values, or NULL
 } anim_frames;
+
+// --color: frame index's values (face_count or edge_count of them).
+static ori_status values_of(int index, const double **face_values, const double **edge_values, void *user, ori_error *error)
+{
+    (void)error;
+    const anim_frames *a = user;
+    const cli_colors *c = a->colors;
+    if (c->face_values) *face_values = c->face_values + (size_t)index * (size_t)a->m->face_count;
+    else *edge_values = c->edge_values + (size_t)index * (size_t)a->m->edge_count;
+    return ORI_OK;
+}
 
 static ori_status frame_of(int index, ori_state_view *out, void *user, ori_error *error)
 {
@@ -38,9 +51,13 @@ static int run(int argc, char **argv)
     double fps = 15.0, duration = 3.0;
     cli_collide_opts co;
     memset(&co, 0, sizeof co);
+    cli_color_kind color = CLI_COLOR_NONE;
     int rc;
     for (int i = 1; i < argc; ++i) {
         int took = cli_state_option(cmd, argc, argv, &i, &sa, &rc);
+        if (took < 0) return rc;
+        if (took) continue;
+        took = cli_color_option(cmd, argc, argv, &i, &color, &rc);
         if (took < 0) return rc;
         if (took) continue;
         if (strcmp(argv[i], "--view") == 0) return cli_usage(cmd, "an animation shows the 3D view (no --view)");
@@ -118,7 +135,20 @@ static int run(int argc, char **argv)
         cli_state_free(&st);
         return cli_input_fail(cmd, sa.path, "--texture needs a flat crease pattern for texture coordinates; this is a folded form");
     }
-    anim_frames af = {&st, &m};
+    cli_colors colors;
+    memset(&colors, 0, sizeof colors);
+    if (color != CLI_COLOR_NONE && (rc = cli_colors_motion(cmd, &sa, &st, &m, color, &colors)) != CLI_EXIT_OK) {
+        ori_buffer_free(texture);
+        cli_motion_free(&m);
+        cli_state_free(&st);
+        return rc;
+    }
+    anim_frames af = {&st, &m, color != CLI_COLOR_NONE ? &colors : NULL};
+    if (color != CLI_COLOR_NONE) { // one bar over the whole motion: its range is every frame's
+        def.frame_values = values_of;
+        def.render.values.min = colors.min;
+        def.render.values.max = colors.max;
+    }
     def.frame_count = m.count;
     def.frame = frame_of;
     def.user = &af;
@@ -150,10 +180,15 @@ static int run(int argc, char **argv)
         json_object_set_new(o, "height", json_integer(def.render.height));
         json_object_set_new(o, "bytes", json_integer((json_int_t)size));
         json_object_set_new(o, "collision", cli_collision_json(&coll, st.source == CLI_STATE_SEQUENCE));
+        json_object_set_new(o, "color", color != CLI_COLOR_NONE ? cli_colors_json(&colors) : json_null());
         cli_print_json(o);
     } else {
-        printf("wrote %s: %d frames of %s over %g s (%dx%d gif, %zu bytes)\n", out, m.count, sa.path, duration,
+        printf("wrote %s: %d frames of %s over %g s (%dx%d gif, %zu bytes)", out, m.count, sa.path, duration,
                def.render.width, def.render.height, size);
+        if (color != CLI_COLOR_NONE)
+            printf("; %s of %d %s from %.4g to %.4g over the motion", cli_color_name(color), colors.shown,
+                   colors.face_values ? "faces" : "creases", colors.min, colors.max);
+        printf("\n");
         if (cli_collides(&coll)) {
             char why[256];
             cli_collision_describe(&coll, st.source == CLI_STATE_SEQUENCE, why, sizeof why);
@@ -167,6 +202,7 @@ static int run(int argc, char **argv)
     }
     ori_buffer_free(data);
     ori_buffer_free(texture);
+    cli_colors_free(&colors);
     cli_motion_free(&m);
     cli_state_free(&st);
     return rc;
@@ -178,7 +214,8 @@ const cli_command cli_cmd_animate = {
     "usage: orikin animate IN [fold options] [--fps N] [--duration S] [--size WxH]\n"
     "                      [--camera iso|top|front|side|bottom] [--yaw DEG] [--pitch DEG]\n"
     "                      [--roll DEG] [--perspective] [--front COLOR] [--back COLOR]\n"
-    "                      [--texture IMG.png] [--edges] [--grid] [--json] -o OUT.gif\n"
+    "                      [--texture IMG.png] [--edges] [--grid]\n"
+    "                      [--color strain|fold-angle|target-error] [--json] -o OUT.gif\n"
     "\n"
     "Draw the whole motion as an animated GIF in the 3D view (see orikin render). IN is a fold\n"
     "sequence SEQ.json, a FOLD file with the options of `orikin fold`, or a FOLD file with\n"
@@ -202,8 +239,12 @@ const cli_command cli_cmd_animate = {
     "  --no-collisions      do not check the motion for self-collision (a fold or a sequence\n"
     "                       is checked as by orikin fold; a collision is noted, the motion drawn)\n"
     "  --clearance D        faces sharing no vertex closer than D collide too\n"
+    CLI_COLOR_HELP
+    "                       One bar serves the whole motion (its range: every frame's values);\n"
+    "                       strain needs a FOLD file's frames (fold --compliant --all-frames -o)\n"
     "  --json               print {output, frames, fps, duration_s, width, height, bytes,\n"
-    "                       collision: {fold, step, drive_deg, faces, point} | null}\n"
+    "                       collision: {fold, step, drive_deg, faces, point} | null,\n"
+    "                       color: {quantity, per, shown, min, max, labels} | null}\n"
     "  -o OUT.gif           the animation\n"
     "\n"
     "example: orikin animate examples/open-corner.seq.json --yaw 90 --grid -o open-corner.gif\n",

@@ -40,12 +40,19 @@ typedef struct cli_colors {
     double *face_values, *edge_values; // face_count / edge_count, NaN where not shown; one of them NULL
     double min, max;                   // over the values shown (0, 0 when none)
     int shown;                         // faces or creases with a value
+    int frames;                        // cli_colors_motion: frames of values (each face_count or edge_count); 0: one state
 } cli_colors;
 
 // Read or compute the values for st (loaded from a = the state options). Prints the error (one
 // line naming the file and field) and returns CLI_EXIT_INPUT when the state does not have them
 // (strain of a state that is not a FOLD frame with strains, a field of the wrong length).
 int cli_colors_load(const char *cmd, const cli_state_args *a, const cli_state *st, cli_color_kind kind, cli_colors *out);
+// The values of every frame of a motion (animate --color), one bar for all of them: the range is
+// over every frame. strain needs the motion of a FOLD file's frames (m->sources); fold-angle and
+// target-error its angles (target-error: each shown frame's orikin:fraction, else 1). Prints the
+// error and returns CLI_EXIT_INPUT as cli_colors_load.
+int cli_colors_motion(const char *cmd, const cli_state_args *a, const cli_state *st, const cli_motion *m,
+                      cli_color_kind kind, cli_colors *out);
 // The library's value map of the colours.
 ori_value_map cli_colors_map(const cli_colors *c);
 // {"quantity", "min", "max", "labels": [...]} for --json reports.

@@ -566,6 +566,7 @@ void cli_motion_free(cli_motion *m)
     free(m->positions);
     free(m->poses);
     free(m->angles);
+    free(m->sources);
     memset(m, 0, sizeof *m);
 }
 
@@ -579,6 +580,7 @@ static void motion_alloc(cli_motion *m, int count, int V, int F, int E, bool pos
     m->positions = xcalloc((size_t)count * (size_t)V, sizeof(ori_v3));
     m->poses = poses ? xcalloc((size_t)count * (size_t)F, sizeof(ori_rigid)) : NULL;
     m->angles = angles ? xcalloc((size_t)count * (size_t)E, sizeof(double)) : NULL;
+    m->sources = NULL;
 }
 
 // A FOLD file's states: after a crease-pattern frame 0, its folded frames; otherwise every frame.
@@ -644,6 +646,8 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
         stored.angles = NULL;
     }
     stored.duration = stored.times[n - 1] - stored.times[0];
+    stored.sources = xcalloc((size_t)n, sizeof(int));
+    for (int i = 0; i < n; ++i) stored.sources[i] = first + i;
     if (samples < 2) {
         *m = stored;
         return CLI_EXIT_OK;
@@ -651,11 +655,13 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
     // Evenly spaced times, each showing the stored frame nearest to it.
     motion_alloc(m, samples, V, F, E, stored.poses != NULL, stored.angles != NULL);
     m->duration = stored.duration;
+    m->sources = xcalloc((size_t)samples, sizeof(int));
     int j = 0;
     for (int i = 0; i < samples; ++i) {
         double t = stored.times[0] + stored.duration * i / (samples - 1);
         while (j + 1 < n && fabs(stored.times[j + 1] - t) <= fabs(stored.times[j] - t)) j++;
         m->times[i] = t;
+        m->sources[i] = stored.sources[j];
         memcpy(m->positions + (size_t)i * V, stored.positions + (size_t)j * V, sizeof(ori_v3) * (size_t)V);
         if (m->poses) memcpy(m->poses + (size_t)i * F, stored.poses + (size_t)j * F, sizeof(ori_rigid) * (size_t)F);
         if (m->angles) memcpy(m->angles + (size_t)i * E, stored.angles + (size_t)j * E, sizeof(double) * (size_t)E);

@@ -130,6 +130,7 @@ typedef struct cli_motion {
     ori_v3 *positions;  // count × vertex_count
     ori_rigid *poses;   // count × face_count, or NULL when some face is not rigid
     double *angles;     // count × edge_count, or NULL
+    int *sources;       // count: the FOLD frame each one shows (a FOLD file's frames), or NULL
     double duration;    // seconds
 } cli_motion;
 

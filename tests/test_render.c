@@ -950,7 +950,7 @@ Test(render, gif_animation_decodes)
     cr_assert_gt(paper, 160 * 120 / 10, "the last frame shows the cube (%d paper pixels)", paper);
     DGifCloseFile(gif, &e);
     ori_buffer_free(data);
-    // Colour by value is for one state: an animation refuses values.
+    // An animation takes its values frame by frame: one state's arrays are refused.
     double vals[5] = {0, 1, 2, 3, 4};
     d.render.values = (ori_value_map){vals, NULL, 0.0, 4.0};
     data = NULL;
@@ -960,6 +960,103 @@ Test(render, gif_animation_decodes)
     ori_record_destroy(r);
     ori_sequence_destroy(s);
     test_open_corner_free(&k.c);
+    test_tmpdir_remove(dir);
+}
+
+// Colour by value in an animation (animate --color): frame_values gives each frame's values under
+// one bar (render.values' range). Two frames of the flat open corner, every face at the bar's
+// bottom in the first and at its top in the second: decoded, each frame paints the faces its
+// colour (within the 256-colour palette's rounding). Arrays in render.values, a frame giving
+// both kinds or none, and a range that is not finite are refused.
+typedef struct gif_valued {
+    const ori_pattern *p;
+    double lo[8], hi[8];
+    int give; // 0 faces, 1 both, 2 none
+} gif_valued;
+static ori_status valued_frame(int index, ori_state_view *out, void *user, ori_error *error)
+{
+    (void)index, (void)error;
+    out->pattern = ((gif_valued *)user)->p;
+    out->positions = NULL;
+    out->fold_angles_rad = NULL;
+    return ORI_OK;
+}
+static ori_status valued_values(int index, const double **fv, const double **ev, void *user, ori_error *error)
+{
+    (void)error;
+    gif_valued *g = user;
+    if (g->give != 2) *fv = index == 0 ? g->lo : g->hi;
+    if (g->give == 1) *ev = g->lo;
+    return ORI_OK;
+}
+static long colour_count(const GifFileType *gif, const unsigned char *canvas, int n, rgb8 want)
+{
+    long hits = 0;
+    for (int i = 0; i < n; ++i) {
+        GifColorType c = gif->SColorMap->Colors[canvas[i]];
+        rgb8 got = {c.Red, c.Green, c.Blue};
+        hits += dist2(got, want) <= 12;
+    }
+    return hits;
+}
+Test(render, gif_frames_coloured_by_value_under_one_bar)
+{
+    gif_valued g;
+    memset(&g, 0, sizeof g);
+    g.p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    cr_assert_leq(ori_pattern_face_count(g.p), 8);
+    for (int f = 0; f < 8; ++f) g.lo[f] = 1.0, g.hi[f] = 3.0;
+    ori_gif_def d = ori_default_gif_def();
+    d.render.width = 200;
+    d.render.height = 150;
+    d.render.camera = ori_camera_preset(ORI_CAMERA_TOP, 0.0, 0.0, 0.0);
+    d.frame_count = 2;
+    d.frame = valued_frame;
+    d.frame_values = valued_values;
+    d.user = &g;
+    d.render.values.min = 1.0;
+    d.render.values.max = 3.0;
+    void *data = NULL;
+    size_t size = 0;
+    ori_error err;
+    cr_assert_eq(ori_gif_write(&d, &data, &size, &err), ORI_OK, "%s", err.message);
+    char *dir = test_tmpdir();
+    char path[512];
+    snprintf(path, sizeof path, "%s/v.gif", dir);
+    cr_assert_eq(ori_file_write_atomic(path, data, size, &err), ORI_OK);
+    ori_buffer_free(data);
+    int e = 0;
+    GifFileType *gif = DGifOpenFileName(path, &e);
+    cr_assert_not_null(gif);
+    cr_assert_eq(DGifSlurp(gif), GIF_OK);
+    cr_assert_eq(gif->ImageCount, 2);
+    unsigned char canvas[200 * 150];
+    memset(canvas, 0, sizeof canvas);
+    long low[2], high[2];
+    for (int i = 0; i < 2; ++i) {
+        GifImageDesc *id = &gif->SavedImages[i].ImageDesc;
+        for (int y = 0; y < id->Height; ++y)
+            for (int x = 0; x < id->Width; ++x)
+                canvas[(y + id->Top) * 200 + x + id->Left] = gif->SavedImages[i].RasterBits[y * id->Width + x];
+        low[i] = colour_count(gif, canvas, 200 * 150, to8(ori_colormap(0.0), 1));
+        high[i] = colour_count(gif, canvas, 200 * 150, to8(ori_colormap(1.0), 1));
+    }
+    DGifCloseFile(gif, &e);
+    // The sheet covers a good part of the picture; the bar shows both colours in both frames.
+    cr_assert_gt(low[0], high[0] + 200 * 150 / 10, "frame 0: %ld bottom-colour pixels, %ld top", low[0], high[0]);
+    cr_assert_gt(high[1], low[1] + 200 * 150 / 10, "frame 1: %ld top-colour pixels, %ld bottom", high[1], low[1]);
+    g.give = 1;
+    cr_assert_eq(ori_gif_write(&d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "both"), "%s", err.message);
+    g.give = 2;
+    cr_assert_eq(ori_gif_write(&d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "no values"), "%s", err.message);
+    g.give = 0;
+    d.render.values.max = NAN;
+    cr_assert_eq(ori_gif_write(&d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "range"), "%s", err.message);
+    cr_assert_null(data);
+    ori_pattern_destroy((ori_pattern *)g.p);
     test_tmpdir_remove(dir);
 }
 
@@ -1520,6 +1617,65 @@ static double *frame_numbers(const ori_fold *doc, int frame, const char *key, in
     for (int k = 0; k < n; ++k) v[k] = json_number_value(json_array_get(a, (size_t)k));
     json_decref(a);
     return v;
+}
+
+// animate --color: one bar over the whole motion. The compliant open corner folded to 40 % with
+// every load step a frame (fold --compliant --all-frames): the bar's range is the smallest and
+// largest face strain over all folded frames; fold-angle over a rigid fold spans the driven
+// crease's start and end; strain of a motion that is not FOLD frames is an input error that
+// writes nothing.
+Test(render, cli_animate_color_has_one_bar_over_the_motion)
+{
+    char *dir = test_tmpdir();
+    char args[2048], path[1024], *out = NULL;
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 --all-frames -o '%s/all.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/all.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = NULL;
+    cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
+    int F = ori_pattern_face_count(p), frames = ori_fold_frame_count(doc);
+    cr_assert_geq(frames, 3, "frame 0 and at least two load steps");
+    double lo = INFINITY, hi = -INFINITY;
+    for (int k = 1; k < frames; ++k) {
+        double *fs = frame_numbers(doc, k, "faces_orikin:strain", F);
+        for (int f = 0; f < F; ++f) lo = fmin(lo, fabs(fs[f])), hi = fmax(hi, fabs(fs[f]));
+        free(fs);
+    }
+    // Enough animation frames to show every stored frame (the nearest in time to each).
+    snprintf(args, sizeof args, "animate '%s' --color strain --fps 50 --duration 2 --size 160x120 --json -o '%s/s.gif'", path, dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    json_t *rep = json_loads(out, 0, NULL);
+    cr_assert_not_null(rep, "%s", out);
+    free(out);
+    json_t *col = json_object_get(rep, "color");
+    cr_assert_str_eq(json_string_value(json_object_get(col, "quantity")), "strain");
+    cr_assert_eq(json_integer_value(json_object_get(col, "shown")), F);
+    cr_assert_eq(json_number_value(json_object_get(col, "min")), lo, "bar min %g, want %g", json_number_value(json_object_get(col, "min")), lo);
+    cr_assert_eq(json_number_value(json_object_get(col, "max")), hi, "bar max %g, want %g", json_number_value(json_object_get(col, "max")), hi);
+    json_decref(rep);
+    snprintf(args, sizeof args, "animate examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --color fold-angle "
+             "--size 160x120 --json -o '%s/a.gif'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    rep = json_loads(out, 0, NULL);
+    cr_assert_not_null(rep, "%s", out);
+    free(out);
+    col = json_object_get(rep, "color");
+    cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "crease");
+    cr_assert_float_eq(json_number_value(json_object_get(col, "max")), 90.0, 1e-9);
+    json_decref(rep);
+    snprintf(args, sizeof args, "animate examples/open-corner.seq.json --color strain -o '%s/none.gif'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 3, "%s", out);
+    cr_assert(strstr(out, "--color strain needs FOLD frames with strains"), "%s", out);
+    free(out);
+    snprintf(path, sizeof path, "%s/none.gif", dir);
+    cr_assert_neq(access(path, F_OK), 0, "nothing written");
+    ori_pattern_destroy(p);
+    ori_fold_destroy(doc);
+    test_tmpdir_remove(dir);
 }
 
 // The compliant open corner at 40 % (orikin fold --compliant -o): render --color strain paints

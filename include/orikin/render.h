@@ -248,9 +248,16 @@ ORI_API ori_status ori_render_file(const ori_state_view *state, const ori_render
 /// call; the pattern must be the same in every frame). Returning a failure stops the animation.
 typedef ori_status ori_frame_fn(int index, ori_state_view *out, void *user, ori_error *error);
 
+/// Supplies frame index's values for an animation coloured by value: *face_values (face_count)
+/// or *edge_values (edge_count), the other NULL (valid until the next call). NaN keeps a face's
+/// or edge's usual colour.
+typedef ori_status ori_frame_values_fn(int index, const double **face_values, const double **edge_values, void *user,
+                                       ori_error *error);
+
 /// Animation parameters; get them from ori_default_gif_def().
 typedef struct ori_gif_def {
-    ori_render_def render;    ///< how a frame is drawn (format ignored; no values: colour by value is for one state); with fit_camera the camera is fitted once to every frame, so the shape does not jump
+    ori_render_def render;    ///< how a frame is drawn (format ignored; render.values' arrays must be NULL: with frame_values its min and max are the bar's range for every frame); with fit_camera the camera is fitted once to every frame, so the shape does not jump
+    ori_frame_values_fn *frame_values; ///< colour by value, frame by frame, under one colour bar (render.values.min … max); NULL: none
     int frame_count;          ///< ≥ 1
     ori_frame_fn *frame;      ///< the frames (each is asked for more than once)
     void *user;               ///< passed to frame
@@ -267,7 +274,8 @@ ORI_API ori_gif_def ori_default_gif_def(void);
 /// Draw every frame and encode an animated GIF into memory (free *data with ori_buffer_free).
 /// One global palette of 256 colours by median cut over sample frames (docs/render.md), each
 /// frame stored as the rectangle that changed. Fails as ori_render_image, with ORI_ERR_LIMIT
-/// when cancelled, and with ORI_ERR_ARGUMENT for render values (colour by value).
+/// when cancelled, and with ORI_ERR_ARGUMENT for render values given as arrays (an animation
+/// takes them frame by frame from frame_values) or a frame giving none or both.
 ORI_API ori_status ori_gif_write(const ori_gif_def *def, void **data, size_t *size, ori_error *error);
 
 // --- meshes -------------------------------------------------------------------------------

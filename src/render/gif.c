@@ -228,8 +228,19 @@ static ori_status draw_frame(gif_job *j, int index, ori_error *error)
     ori_state_view sv;
     ori_status st = pose_frame(j, index, &sv, error);
     if (st != ORI_OK) return st;
+    ori_render_def rd = j->def->render;
+    if (j->def->frame_values) { // this frame's values under the animation's one colour bar
+        const double *fv = NULL, *ev = NULL;
+        st = j->def->frame_values(index, &fv, &ev, j->def->user, error);
+        if (st != ORI_OK) return st;
+        if ((fv == NULL) == (ev == NULL))
+            return ori__fail(error, ORI_ERR_ARGUMENT, "values: frame %d gives %s", index,
+                             fv ? "both face and edge values" : "no values");
+        rd.values.face_values = fv;
+        rd.values.edge_values = ev;
+    }
     cairo_t *cr = cairo_create(j->surface);
-    st = ori__draw(cr, j->mesh, sv.pattern, &j->def->render, &j->cam, j->texture, &j->lo, &j->hi, error);
+    st = ori__draw(cr, j->mesh, sv.pattern, &rd, &j->cam, j->texture, &j->lo, &j->hi, error);
     cairo_status_t cs = cairo_status(cr);
     cairo_destroy(cr);
     cairo_surface_flush(j->surface);
@@ -264,7 +275,12 @@ ori_status ori_gif_write(const ori_gif_def *def, void **data, size_t *size, ori_
     if (def->render.view != ORI_RENDER_3D)
         return ori__fail(error, ORI_ERR_ARGUMENT, "an animation shows the 3D view");
     if (ori__value_map_active(&def->render.values))
-        return ori__fail(error, ORI_ERR_ARGUMENT, "values: an animation is not coloured by value (one state's values)");
+        return ori__fail(error, ORI_ERR_ARGUMENT,
+                         "values: an animation takes its values frame by frame (frame_values), not as one state's arrays");
+    if (def->frame_values && (!isfinite(def->render.values.min) || !isfinite(def->render.values.max) ||
+                              def->render.values.min > def->render.values.max))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "values: the colour bar's range needs finite min <= max (got %g, %g)",
+                         def->render.values.min, def->render.values.max);
     int W = def->render.width, H = def->render.height, N = def->frame_count;
     gif_job j;
     memset(&j, 0, sizeof j);
