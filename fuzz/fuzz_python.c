@@ -24,7 +24,8 @@
 // from the package too, is a finding; the library's counted allocations
 // (_orikin._alloc_live_count) are back to their count before the input once its results are
 // dropped (a reference the extension forgets to release keeps a library object alive). Nothing
-// is written outside the temporary directory: it is the working directory, a fuzzed string has
+// is written outside the temporary directory: it is the working directory during the calls (removed
+// at exit; left after a finding, with the copies only), a fuzzed string has
 // no '/', the example copies are restored after a call that may write.
 //
 // Bounded work (fuzz_python.py: INT_CAPS, FLOAT_CAPS, MIN_STEP, FORCED, SKIP): sizes and counts
@@ -52,7 +53,18 @@ int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 PyMODINIT_FUNC PyInit__orikin(void); // python/src/module.c
 
-static PyObject *run_fn;
+static PyObject *run_fn, *cleanup_fn;
+
+// At exit (libFuzzer's exit(), not the interpreter's): the temporary directory removed.
+static void cleanup(void)
+{
+    if (!cleanup_fn) return;
+    PyGILState_STATE g = PyGILState_Ensure();
+    PyObject *r = PyObject_CallNoArgs(cleanup_fn);
+    if (!r) PyErr_Clear();
+    Py_XDECREF(r);
+    PyGILState_Release(g);
+}
 
 static void fail(const char *what)
 {
@@ -95,8 +107,10 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     fprintf(stderr, "fuzz_python: %d functions of the extension, %d attributes of the receivers in all\n", functions,
             attributes);
     run_fn = PyObject_GetAttrString(mod, "run");
+    cleanup_fn = PyObject_GetAttrString(mod, "cleanup");
     Py_DECREF(mod);
-    if (!run_fn) fail("fuzz_python.run");
+    if (!run_fn || !cleanup_fn) fail("fuzz_python.run, fuzz_python.cleanup");
+    atexit(cleanup);
     __lsan_enable();
     return 0;
 }

@@ -4,7 +4,7 @@ interpreter and compiles python/src/*.c in as the built-in module orikin._orikin
 setup(source_dir) runs once: it registers the built-in extension as orikin._orikin, imports the
 package from the source tree (python/orikin, whose `from . import _orikin` then finds the
 in-process module), copies the example inputs into a temporary directory (the working
-directory from then on), builds the receivers (the extension module, the pure-Python package,
+directory during the calls), builds the receivers (the extension module, the pure-Python package,
 a Pattern loaded from examples/patterns/open-corner.fold, a Motion, a Record and a Layers of it,
 the package's own Pattern) and lists each receiver's attributes (dir(), sorted) and each
 callable's parameter names (the kwlist arrays of python/src/*.c, the package's signatures).
@@ -173,9 +173,15 @@ def _reset_dir():
         else:
             os.unlink(p)
     for src, dst in S.copies:
-        with open(src, "rb") as f, open(dst, "rb") as g:
-            same = f.read() == g.read()
+        same = False
+        if os.path.isfile(dst) and not os.path.islink(dst):
+            with open(src, "rb") as f, open(dst, "rb") as g:
+                same = f.read() == g.read()
         if not same:
+            if os.path.isdir(dst) and not os.path.islink(dst):
+                shutil.rmtree(dst, ignore_errors=True)
+            elif os.path.lexists(dst):
+                os.unlink(dst)
             shutil.copyfile(src, dst)
 
 
@@ -208,7 +214,6 @@ def setup(src):
     S.fixed_names = {os.path.basename(b) for b in S.fixed}
     S.seq_text_path = next(b for b in S.fixed if b.endswith("open-corner.seq.json"))
     S.flat_path = next(b for b in S.fixed if b.endswith("degree4-vertex.fold"))
-    os.chdir(S.tmp)  # a relative output path lands here too
     exts = ["fold", "svg", "pdf", "png", "cp", "opx", "obj", "stl", "ply", "gltf", "glb", "gif", "json", "txt", ""]
     S.paths = S.fixed + [os.path.join(S.tmp, "out." + e) for e in exts] + [
         os.path.join(S.tmp, "missing", "none.fold"), os.path.join(S.tmp, "none.fold"), S.tmp, "", "out.svg"]
@@ -316,11 +321,58 @@ def _array(r, depth, results):
     return a
 
 
+_NONE = object()
+INT_NAMES = {"fix", "drive", "face", "edge", "frame", "k", "rows", "cols", "sides", "axiom", "limit", "threads",
+             "budget", "seed", "tries", "max_iterations", "max_steps", "probe_budget", "steps", "frames", "stops",
+             "reorientations", "steps_per_event", "max_events", "keep_frames", "size"}
+FLOAT_NAMES = {"fraction", "clearance", "current", "duration", "thickness", "tolerance", "t", "gravity", "fps",
+               "hold", "width", "height", "step", "to", "from_", "angle", "max_move_rel", "max_move", "damping",
+               "axial", "facet", "crease", "twist_size", "dt", "settle", "pulse", "current_limit",
+               "meters_per_unit", "percent", "ratio"}
+ARRAY_E = {"angles", "start", "targets", "fold_angles", "state"}
+ARRAY_V3 = {"positions", "coords", "vertices"}
+
+
+def _typed(r, name, hint):
+    """A value of the type parameter `name` takes, near its valid range (_NONE: no rule)."""
+    p = S.bases[2][1] if S.bases else None
+    e = p.edge_count if p else 4
+    v = p.vertex_count if p else 4
+    if name in INT_NAMES:
+        return (r.u8() % 40) - 4 if hint & 4 else r.u8() % max(e, 1)
+    if name in FLOAT_NAMES or name.endswith("_rad"):
+        return r.pick(SMALL_FLOATS) if hint & 4 else (r.u8() - 128) / 32.0
+    if name in ("lock", "drives", "group", "edges" if hint & 8 else "lock"):
+        return [r.u8() % max(e, 1) for _ in range(r.u8() % 4)]
+    if name in ("a", "b", "p1", "p2"):
+        return ((r.u8() - 64) / 64.0, (r.u8() - 64) / 64.0)
+    if name in ("l1", "l2"):
+        return (((r.u8() - 64) / 64.0, (r.u8() - 64) / 64.0), ((r.u8() - 64) / 64.0, (r.u8() - 64) / 64.0))
+    if name == "polygon":
+        return [((r.u8() - 64) / 32.0, (r.u8() - 64) / 32.0) for _ in range(r.u8() % 7)]
+    if name in ARRAY_E:
+        n = e if hint & 8 else r.u8() % 8
+        return np.array([(r.u8() - 128) / 40.0 for _ in range(n)])
+    if name in ARRAY_V3:
+        n = v if hint & 8 else r.u8() % 8
+        return np.array([[(r.u8() - 128) / 64.0 for _ in range(3)] for _ in range(n)]).reshape(n, 3)
+    if name in ("assignment", "kind", "solver", "linear", "format", "view", "schedule", "camera", "option"):
+        return r.pick(S.words)
+    if name in ("infinite", "weld", "rigid", "count", "probe", "loop", "last_frame_only", "as_drawn", "physical",
+                "all", "develop", "hull", "collisions", "bistable_height", "perspective", "labels", "grid"):
+        return bool(hint & 4)
+    return _NONE
+
+
 def value(r, depth=0, name=None, results=()):
     """A value for parameter `name` (None when not known)."""
     if name in FORCED:
         return FORCED[name]
     hint = r.u8()
+    if name is not None and hint % 4 != 3:
+        typed = _typed(r, name, hint)
+        if typed is not _NONE:
+            return clamp(name, typed)
     if name is not None and hint % 3 == 0:
         if name in ("pattern",):
             return S.bases[2][1]
@@ -429,7 +481,14 @@ def _classify(exc, owner):
 
 
 def run(data):
-    finding, wrote, touched = _calls(Reader(data))
+    # The temporary directory is the working directory during the calls (a relative output path
+    # lands there), not between them: libFuzzer writes its corpus and artifacts relative to its own.
+    here = os.getcwd()
+    os.chdir(S.tmp)
+    try:
+        finding, wrote, touched = _calls(Reader(data))
+    finally:
+        os.chdir(here)
     # (the calls' locals, which hold the receivers and results, are gone here)
     if wrote:
         _reset_dir()
@@ -472,9 +531,9 @@ def _calls(r):
         kwargs = {}
         for _ in range((flags >> 3) % 4):
             sel = r.u8()
-            if sel % 4 and params:
-                key = params[sel % len(params)]
-            elif sel % 4 == 1:
+            if sel % 8 < 6 and params:
+                key = params[(sel >> 3) % len(params)]
+            elif sel % 8 < 7:
                 key = r.pick(S.kwpool)
             else:
                 key = _str(r)
@@ -497,6 +556,12 @@ def _calls(r):
         if isinstance(out, tuple):
             results.extend(x for x in out if type(x).__module__.startswith("orikin"))
     return finding, wrote, touched
+
+
+def cleanup():
+    """Remove the temporary directory (fuzz_python.c calls it at exit)."""
+    if S is not None:
+        shutil.rmtree(S.tmp, ignore_errors=True)
 
 
 def _rebuild():

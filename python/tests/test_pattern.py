@@ -125,3 +125,16 @@ def test_a_shared_drawing_folds_from_its_svg():
         pytest.skip("no Origami Simulator SVG")
     p = orikin.Pattern.load(svgs[0])
     assert p.edge_count > 0 and p.face_count > 0
+
+
+def test_a_crease_without_an_assignment_is_unassigned_as_the_cli_makes_it():
+    # fuzz_python's first find (fuzz/seeds/python/crease-no-assignment): the extension read the
+    # optional assignment it had not initialised, a NULL dereference when it was omitted.
+    p = orikin.Pattern.load(repo("examples/patterns/open-corner.fold"))._p
+    q, what = p.crease((0.5, 0.0), (0.5, 2.0))
+    # x = 0.5 crosses faces 1, 3 and 4: three new crease segments, the last edges added
+    assert what["faces_split"] == 3 and q.assignment()[-3:] == "UUU"
+    q, what = p.crease((0.5, 0.0), (0.5, 2.0), assignment="M")
+    assert what["faces_split"] == 3 and q.assignment()[-3:] == "MMM"
+    with pytest.raises(ValueError, match="assignment must be one FOLD letter"):
+        p.crease((0.5, 0.0), (0.5, 2.0), assignment=None)
