@@ -24,9 +24,10 @@
 // from the package too, is a finding; the library's counted allocations
 // (_orikin._alloc_live_count) are back to their count before the input once its results are
 // dropped (a reference the extension forgets to release keeps a library object alive). Nothing
-// is written outside the temporary directory: it is the working directory during the calls (removed
-// at exit; left after a finding, with the copies only), a fuzzed string has
-// no '/', the example copies are restored after a call that may write.
+// is written outside a temporary directory (removed at exit; left after a finding): every `path`
+// parameter (all the writers' outputs, the extension's and the package's) gets one of its files
+// or a name in it, other strings have no '/' (the FOLD and sequence texts are not
+// directories), the example copies in it are restored after a call that may write.
 //
 // Bounded work (fuzz_python.py: INT_CAPS, FLOAT_CAPS, MIN_STEP, FORCED, SKIP): sizes and counts
 // (rows, cols, sides, steps, frames, tries, budget, limit, threads, max_iterations, pixels, fps)

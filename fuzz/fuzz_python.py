@@ -4,7 +4,7 @@ interpreter and compiles python/src/*.c in as the built-in module orikin._orikin
 setup(source_dir) runs once: it registers the built-in extension as orikin._orikin, imports the
 package from the source tree (python/orikin, whose `from . import _orikin` then finds the
 in-process module), copies the example inputs into a temporary directory (the working
-directory during the calls), builds the receivers (the extension module, the pure-Python package,
+directory's paths are the only ones given to a `path` parameter), builds the receivers (the extension module, the pure-Python package,
 a Pattern loaded from examples/patterns/open-corner.fold, a Motion, a Record and a Layers of it,
 the package's own Pattern) and lists each receiver's attributes (dir(), sorted) and each
 callable's parameter names (the kwlist arrays of python/src/*.c, the package's signatures).
@@ -216,7 +216,7 @@ def setup(src):
     S.flat_path = next(b for b in S.fixed if b.endswith("degree4-vertex.fold"))
     exts = ["fold", "svg", "pdf", "png", "cp", "opx", "obj", "stl", "ply", "gltf", "glb", "gif", "json", "txt", ""]
     S.paths = S.fixed + [os.path.join(S.tmp, "out." + e) for e in exts] + [
-        os.path.join(S.tmp, "missing", "none.fold"), os.path.join(S.tmp, "none.fold"), S.tmp, "", "out.svg"]
+        os.path.join(S.tmp, "missing", "none.fold"), os.path.join(S.tmp, "none.fold"), S.tmp]
     S.texts = []
     for p in S.fixed:
         with open(p, encoding="utf-8", errors="surrogateescape") as f:
@@ -272,7 +272,7 @@ DTYPES = [np.float64, np.int32, np.int64, object, np.bool_, np.float32, np.compl
 def _str(r):
     raw = r.take(r.u8() % 24)
     s = raw.decode("utf-8", errors="surrogateescape")  # lone surrogates for the undecodable bytes
-    return s.replace("/", "_")  # never a path outside the working (temporary) directory
+    return s.replace("/", "_")  # no directory in it (a relative name is never written: every `path` is one of S.paths)
 
 
 def _bytes(r):
@@ -369,6 +369,15 @@ def value(r, depth=0, name=None, results=()):
     if name in FORCED:
         return FORCED[name]
     hint = r.u8()
+    if name is not None and (name == "path" or name.endswith("_path")):
+        # Every writer's output is a `path` (the extension's, the package's): always inside the
+        # temporary directory, or not a path at all.
+        k = hint % 4
+        if k < 2:
+            return r.pick(S.paths)
+        if k == 2:
+            return os.path.join(S.tmp, _str(r)) if hint & 4 else os.fsencode(os.path.join(S.tmp, "")) + _bytes(r)
+        return r.pick([None, 0, -1, 1.5, [], (S.tmp,), {}])
     if name is not None and hint % 4 != 3:
         typed = _typed(r, name, hint)
         if typed is not _NONE:
@@ -378,7 +387,7 @@ def value(r, depth=0, name=None, results=()):
             return S.bases[2][1]
         if name in ("fold",):
             return S.bases[3 + hint % 2][1]
-        if name in ("path", "composite") or name.endswith("path"):
+        if name == "composite":
             return r.pick(S.paths)
         if name == "progress":
             return _callable(r)
@@ -481,14 +490,7 @@ def _classify(exc, owner):
 
 
 def run(data):
-    # The temporary directory is the working directory during the calls (a relative output path
-    # lands there), not between them: libFuzzer writes its corpus and artifacts relative to its own.
-    here = os.getcwd()
-    os.chdir(S.tmp)
-    try:
-        finding, wrote, touched = _calls(Reader(data))
-    finally:
-        os.chdir(here)
+    finding, wrote, touched = _calls(Reader(data))
     # (the calls' locals, which hold the receivers and results, are gone here)
     if wrote:
         _reset_dir()
