@@ -38,11 +38,18 @@
 //
 // Memory: CPython's objects are allocated with malloc (PYMEM_ALLOCATOR_MALLOC) so that
 // AddressSanitizer sees them. The interpreter lives as long as the process: Py_FinalizeEx per
-// input is no option (numpy cannot be initialised twice in one process, and the start-up costs
-// a second). What it keeps for the process's lifetime is reachable from its globals, so
-// LeakSanitizer reports only what is unreachable; the few unreachable blocks CPython's own
-// start-up leaves are suppressed by fuzz/fuzz_python.lsan (frames of libpython only, passed by
-// fuzz/run.sh for this target alone), so a leak with a frame in orikin is still reported.
+// input is no option (numpy cannot be initialised twice in one process, and the start-up takes
+// seconds under the sanitizers). CPython's start-up and imports leave blocks LeakSanitizer calls
+// unreachable (code objects of numpy's modules, tuples of the import system); they are excluded
+// by allocation time, not by stack: __lsan_disable() around Py_Initialize, the imports, the
+// receivers and a warm-up of 200 generated inputs (the lazy imports and one-time caches), so
+// that whatever an input allocates and loses is still reported. A suppressions file could not be
+// narrow: Debian's libpython has no frame pointers, the fast unwinder stops after its first
+// frame, and a pattern naming libpython would hide the extension's leaks too (every object is
+// allocated in libpython). fuzz/run.sh runs this target with -detect_leaks=0 (libFuzzer's check
+// after each new input scans the interpreter's whole heap: 10 inputs/s instead of 130), so the
+// leak check is LeakSanitizer's at exit, for the whole run; leaked references to objects that
+// hold library memory are caught per input by the counted allocator (above).
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 
