@@ -49,7 +49,7 @@ FLOAT_CAPS = {  # finite values clamped; inf and nan kept (the library must refu
 # a fold's frame count is its span over its step, a simulation's steps its duration over dt.
 MIN_STEP = {"step_rad": 0.05, "step": 3.0, "dt": 1e-3, "tolerance": 1e-9, "tolerance_rad": 1e-9}
 # Parameters whose value is forced: no compliant (bar-and-hinge) solve from the package's fold
-# (it has its own target, fuzz_compliant); at most 8 states counted by the layer solver.
+# (it has its own target, fuzz_compliant).
 FORCED = {"compliant": False, "dynamic": False}
 # Attributes never called: the package's own long runs, which fuzz_simulate, fuzz_compliant and
 # the CLI targets cover (names of the extension itself are all called, with the caps above).
