@@ -423,6 +423,10 @@ PyObject *ori_py_pattern_pose(PyObject *self, PyObject *args, PyObject *kw)
     PyObject *angles, *coords = Py_None;
     int fix;
     if (!PyArg_ParseTupleAndKeywords(args, kw, "Oi|O", kwlist, &angles, &fix, &coords)) return NULL;
+    if (angles == Py_None) { // a fold's start may be None (the flat state), the state posed may not
+        PyErr_SetString(PyExc_ValueError, "angles must be a 1-D array of numbers");
+        return NULL;
+    }
     fold_inputs in;
     if (!fold_inputs_read(&in, pat, fix, angles, coords, Py_None, Py_None)) return NULL;
     npy_intp E = ori_mechanism_edge_count(in.mech->m), dims[2] = {ori_mechanism_vertex_count(in.mech->m), 3};

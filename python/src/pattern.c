@@ -848,16 +848,18 @@ static PyObject *apply_result(const ori_apply_result *r)
 }
 
 // crease(a, b, infinite, assignment, angle_rad, face): the crease through a→b applied (a clone).
+// Without an assignment the crease is unassigned (U), as `orikin crease` makes it.
 static PyObject *pattern_crease(PyObject *self, PyObject *args, PyObject *kw)
 {
     static char *kwlist[] = {"a", "b", "infinite", "assignment", "angle_rad", "face", NULL};
     ori_py_pattern *pat = (ori_py_pattern *)self;
-    PyObject *ao, *bo, *asg;
+    PyObject *ao, *bo, *asg = NULL; // optional: not written by PyArg_Parse* when omitted
     int infinite = 1, face = ORI_NULL_INDEX;
     double angle = 0.0;
     if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|pOdi", kwlist, &ao, &bo, &infinite, &asg, &angle, &face)) return NULL;
     ori_crease c;
-    if (!ori_py_read_v2(ao, &c.a, "a") || !ori_py_read_v2(bo, &c.b, "b") || !read_assignment(asg, &c.assignment))
+    c.assignment = ORI_ASSIGN_UNASSIGNED;
+    if (!ori_py_read_v2(ao, &c.a, "a") || !ori_py_read_v2(bo, &c.b, "b") || (asg && !read_assignment(asg, &c.assignment)))
         return NULL;
     c.infinite = infinite;
     c.fold_angle_rad = angle;

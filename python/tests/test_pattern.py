@@ -125,3 +125,27 @@ def test_a_shared_drawing_folds_from_its_svg():
         pytest.skip("no Origami Simulator SVG")
     p = orikin.Pattern.load(svgs[0])
     assert p.edge_count > 0 and p.face_count > 0
+
+
+def test_a_crease_without_an_assignment_is_unassigned_as_the_cli_makes_it():
+    # fuzz_python's first find (fuzz/seeds/python/crease-no-assignment): the extension read the
+    # optional assignment it had not initialised, a NULL dereference when it was omitted.
+    p = orikin.Pattern.load(repo("examples/patterns/open-corner.fold"))._p
+    q, what = p.crease((0.5, 0.0), (0.5, 2.0))
+    # x = 0.5 crosses faces 1, 3 and 4: three new crease segments, the last edges added
+    assert what["faces_split"] == 3 and q.assignment()[-3:] == "UUU"
+    q, what = p.crease((0.5, 0.0), (0.5, 2.0), assignment="M")
+    assert what["faces_split"] == 3 and q.assignment()[-3:] == "MMM"
+    with pytest.raises(ValueError, match="assignment must be one FOLD letter"):
+        p.crease((0.5, 0.0), (0.5, 2.0), assignment=None)
+
+
+def test_pose_refuses_angles_none():
+    # fuzz_python's second find (fuzz/seeds/python/pose-angles-none): None passed the optional
+    # start's check and reached ori_mechanism_pose_state's assertion (a NULL state: abort).
+    p = orikin.Pattern.load(repo("examples/patterns/open-corner.fold"))._p
+    with pytest.raises(ValueError, match="angles must be a 1-D array of numbers"):
+        p.pose(None, 4)
+    angles, positions = p.pose(np.zeros(p.edge_count), 4)
+    assert angles.shape == (13,) and positions.shape == (9, 3)
+    assert np.max(np.abs(angles)) == 0.0 and np.max(np.abs(positions[:, 2])) == 0.0  # the flat state stays flat
