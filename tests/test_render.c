@@ -1062,6 +1062,45 @@ Test(render, gif_frames_coloured_by_value_under_one_bar)
 
 // --- bad input --------------------------------------------------------------------------------
 
+// A camera that is not finite (ori_camera_preset turned by a NaN yaw; an infinite scale) is
+// refused with ORI_ERR_ARGUMENT naming the camera, for an image and an animation alike. Before,
+// render(yaw_rad=nan) from Python drew NaN points and reached undefined behaviour in the depth
+// order's grid (fuzz_python, fuzz/seeds/python/render-nan-yaw).
+Test(render, a_camera_that_is_not_finite_is_refused)
+{
+    ori_pattern *p = test_load_pattern(test_repo_path("examples/patterns/open-corner.fold"), 0);
+    ori_state_view sv = {p, NULL, NULL};
+    ori_render_def d = ori_default_render_def();
+    d.view = ORI_RENDER_3D;
+    d.width = 64;
+    d.height = 48;
+    void *data = NULL;
+    size_t size = 0;
+    ori_error err;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_OK, "%s", err.message);
+    ori_buffer_free(data);
+    data = NULL;
+    d.camera = ori_camera_preset(ORI_CAMERA_ISO, NAN, 0.0, 0.0);
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "camera"), "%s", err.message);
+    cr_assert_null(data);
+    d.camera = ori_camera_preset(ORI_CAMERA_ISO, 0.0, 0.0, 0.0);
+    d.camera.scale = INFINITY;
+    cr_assert_eq(ori_render_image(&sv, &d, &data, &size, &err), ORI_ERR_ARGUMENT);
+    ori_gif_def g = ori_default_gif_def();
+    g.render.camera = ori_camera_preset(ORI_CAMERA_TOP, 0.0, NAN, 0.0);
+    g.frame_count = 1;
+    g.frame = valued_frame;
+    gif_valued gv;
+    memset(&gv, 0, sizeof gv);
+    gv.p = p;
+    g.user = &gv;
+    cr_assert_eq(ori_gif_write(&g, &data, &size, &err), ORI_ERR_ARGUMENT);
+    cr_assert(strstr(err.message, "camera"), "%s", err.message);
+    cr_assert_null(data);
+    ori_pattern_destroy(p);
+}
+
 Test(render, bad_input_is_refused_and_nothing_written)
 {
     corner k;

@@ -114,6 +114,15 @@ ori_status ori__render_check_size(const ori_render_def *def, ori_error *error)
                          ORI_RENDER_MAX_SIZE);
     if (!(def->line_width_rel >= 0.0) || !isfinite(def->line_width_rel))
         return ori__fail(error, ORI_ERR_ARGUMENT, "line width must be a finite number >= 0");
+    // A camera from a NaN or infinite turn (ori_camera_preset with yaw NaN) puts every point at
+    // NaN: refused here, not drawn (fuzz_python: render(yaw_rad=nan) reached undefined behaviour
+    // in the depth order's grid).
+    const ori_camera *c = &def->camera;
+    bool finite = isfinite(c->target.x) && isfinite(c->target.y) && isfinite(c->target.z) && isfinite(c->cx) &&
+                  isfinite(c->cy) && isfinite(c->scale) && isfinite(c->distance);
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) finite = finite && isfinite(c->rotation.m[i][k]);
+    if (!finite) return ori__fail(error, ORI_ERR_ARGUMENT, "camera: its rotation, target, scale and distance must be finite");
     return ORI_OK;
 }
 

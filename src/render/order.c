@@ -516,7 +516,7 @@ void ori__order_build(const ori_mesh *m, const ori_camera *cam, const int *face_
             if (cam->perspective && !(p.z > 0.0)) q->visible = false;
         }
         q->area2 = ori_v2_cross(ori_v2_sub(q->p[1], q->p[0]), ori_v2_sub(q->p[2], q->p[0]));
-        if (q->area2 == 0.0) q->visible = false;
+        if (!(q->area2 != 0.0 && isfinite(q->area2))) q->visible = false; // degenerate, or off at infinity
         q->x0 = fmin(q->p[0].x, fmin(q->p[1].x, q->p[2].x));
         q->x1 = fmax(q->p[0].x, fmax(q->p[1].x, q->p[2].x));
         q->y0 = fmin(q->p[0].y, fmin(q->p[1].y, q->p[2].y));
@@ -551,7 +551,9 @@ void ori__order_build(const ori_mesh *m, const ori_camera *cam, const int *face_
         double limit = sqrt(4.0 * nvis + 16.0);
         if ((gx1 - gx0) / cell > limit) cell = (gx1 - gx0) / limit;
         if ((gy1 - gy0) / cell > limit) cell = (gy1 - gy0) / limit;
-        int gw = (int)((gx1 - gx0) / cell) + 1, gh = (int)((gy1 - gy0) / cell) + 1;
+        // (Extents beyond the double range give one cell: slower, never an int overflow.)
+        double fw = (gx1 - gx0) / cell, fh = (gy1 - gy0) / cell;
+        int gw = fw >= 0.0 && fw <= limit + 1.0 ? (int)fw + 1 : 1, gh = fh >= 0.0 && fh <= limit + 1.0 ? (int)fh + 1 : 1;
         int ncell = gw * gh;
         int *cstart = ori__calloc((size_t)ncell + 2, sizeof(int));
 #define CELL_X(x) ((int)fmin(gw - 1, fmax(0.0, floor(((x) - gx0) / cell))))
