@@ -38,6 +38,10 @@ int sweep_fail(char *err, size_t size, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(err, size, fmt, ap);
     va_end(ap);
+    // One line: a name quoted from the spec may hold a newline or another control character
+    // (a key "l\nx"): each becomes a '?' (fuzz_sweep found a two-line refusal).
+    for (char *c = err; *c; ++c)
+        if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
     return SWEEP_EXIT_INPUT;
 }
 
