@@ -297,13 +297,25 @@ void test_open_corner_free(test_open_corner *c)
     ori_pattern_destroy(c->p);
 }
 
-ori_fold *test_compliant_open_corner(const char *dir)
+ori_fold *test_compliant_open_corner(const char *dir) { return test_compliant_open_corner_with(dir, "", "o.fold"); }
+
+json_t *test_run_cli_json(const char *args)
+{
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    json_t *o = json_loads(out, 0, NULL);
+    cr_assert_not_null(o, "%s", out);
+    free(out);
+    return o;
+}
+
+ori_fold *test_compliant_open_corner_with(const char *dir, const char *extra, const char *name)
 {
     char args[2048], path[1024], *out = NULL;
-    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 -o '%s/o.fold'", dir);
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 %s -o '%s/%s'", extra, dir, name);
     cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
     free(out);
-    snprintf(path, sizeof path, "%s/o.fold", dir);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     ori_fold *doc = NULL;
     ori_error err;
     cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);

@@ -3,6 +3,7 @@
 #ifndef ORI_TEST_SUPPORT_H
 #define ORI_TEST_SUPPORT_H
 
+#include <jansson.h>
 #include <criterion/criterion.h>
 #include <orikin/orikin.h>
 
@@ -33,6 +34,11 @@ void test_tmpdir_remove(char *dir);
 // orikin fold examples/patterns/open-corner.fold --compliant --percent 40 -o DIR/o.fold, loaded:
 // the document (frame 1: the bent state, with its strain fields). Destroy with ori_fold_destroy.
 ori_fold *test_compliant_open_corner(const char *dir);
+// The same with extra options (e.g. "--all-frames") written to DIR/NAME, loaded.
+ori_fold *test_compliant_open_corner_with(const char *dir, const char *extra, const char *name);
+// Run the CLI (as test_run_cli), assert exit 0 and that stdout+stderr is one JSON object: the
+// parsed object (json_decref it).
+json_t *test_run_cli_json(const char *args);
 
 // Read a whole file (malloc'd, NUL-terminated) or NULL.
 char *test_read_text(const char *path);

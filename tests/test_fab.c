@@ -62,10 +62,9 @@ static void be32(unsigned char *p, int v)
     p[0] = (unsigned char)(u >> 24), p[1] = (unsigned char)(u >> 16), p[2] = (unsigned char)(u >> 8), p[3] = (unsigned char)u;
 }
 
-// A 2 × 2 µm square with no marks and no label: the whole stream, byte for byte.
-Test(fab, gds_records_of_a_tiny_library)
+// The layout of the 2 × 2 µm square p (µm units) with no marks and no label.
+static ori_fab_layout *tiny_layout(const ori_pattern *p)
 {
-    ori_pattern *p = test_pattern_of_text(square_text);
     ori_fab_def d = ori_default_fab_def();
     d.pattern = p;
     d.meters_per_unit = 1e-6;
@@ -74,6 +73,15 @@ Test(fab, gds_records_of_a_tiny_library)
     ori_fab_layout *l = NULL;
     ori_error err;
     cr_assert_eq(ori_fab_layout_create(&d, &l, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
+    return l;
+}
+
+// A 2 × 2 µm square with no marks and no label: the whole stream, byte for byte.
+Test(fab, gds_records_of_a_tiny_library)
+{
+    ori_pattern *p = test_pattern_of_text(square_text);
+    ori_fab_layout *l = tiny_layout(p);
+    ori_error err;
     cr_assert_eq(ori_fab_shape_count(l), 1);
     size_t n = 0;
     unsigned char *g = ori_gds_write(l, NULL, &n, &err);
@@ -122,14 +130,8 @@ Test(fab, gds_records_of_a_tiny_library)
 Test(fab, gds_refuses_what_a_stream_cannot_hold)
 {
     ori_pattern *p = test_pattern_of_text(square_text);
-    ori_fab_def d = ori_default_fab_def();
-    d.pattern = p;
-    d.meters_per_unit = 1e-6;
-    d.mark_size_m = 0.0;
-    d.label[0] = '\0';
-    ori_fab_layout *l = NULL;
+    ori_fab_layout *l = tiny_layout(p);
     ori_error err;
-    cr_assert_eq(ori_fab_layout_create(&d, &l, &err), ORI_OK, "%s", ori_error_format(&err, msg, sizeof msg));
     static char name[70001];
     memset(name, 'N', sizeof name - 1);
     ori_gds_def gd = ori_default_gds_def();
@@ -151,6 +153,9 @@ Test(fab, gds_refuses_what_a_stream_cannot_hold)
     ori_fab_layout_destroy(l);
     // metres per unit so small that the default pads are beyond the range of doubles in pattern
     // units (1e-4 m / 5e-324 m): refused with the field, not laid out at infinity
+    ori_fab_def d = ori_default_fab_def();
+    d.pattern = p;
+    d.label[0] = '\0';
     d.meters_per_unit = 5e-324;
     d.hinge_overlap_m = 0.0;
     d.default_hinge_span_m = 0.0;

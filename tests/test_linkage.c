@@ -199,14 +199,20 @@ Test(linkage, random_500, .init = test_leak_setup, .fini = test_leak_check, .tim
 }
 #endif
 
-Test(linkage, spiral_chain, .init = test_leak_setup, .fini = test_leak_check)
+// A 40-vertex open spiral (an Archimedean spiral's points every half radian).
+static lcase spiral40(void)
 {
     ori_v2 p[40];
     for (int i = 0; i < 40; ++i) {
         double t = 0.5 * i, r = 0.3 + 0.15 * t;
         p[i] = ori_v2_make(r * cos(t), r * sin(t));
     }
-    lcase c = make(p, 40, false);
+    return make(p, 40, false);
+}
+
+Test(linkage, spiral_chain, .init = test_leak_setup, .fini = test_leak_check)
+{
+    lcase c = spiral40();
     check_motion(&c, false);
     free_case(&c);
 }
@@ -217,12 +223,7 @@ Test(linkage, spiral_chain, .init = test_leak_setup, .fini = test_leak_check)
 // motion segment, so the event that ends the motion may be the one past it.)
 Test(linkage, event_limit_stops_the_motion, .init = test_leak_setup, .fini = test_leak_check)
 {
-    ori_v2 p[40];
-    for (int i = 0; i < 40; ++i) {
-        double t = 0.5 * i, r = 0.3 + 0.15 * t;
-        p[i] = ori_v2_make(r * cos(t), r * sin(t));
-    }
-    lcase c = make(p, 40, false);
+    lcase c = spiral40();
     ori_linkage_def def = ori_default_linkage_def();
     def.coords = c.p, def.vertex_count = c.n, def.edges = c.e, def.edge_count = c.m;
     ori_linkage_motion *mo = NULL;

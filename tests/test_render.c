@@ -1667,13 +1667,9 @@ Test(render, cli_animate_color_has_one_bar_over_the_motion)
 {
     char *dir = test_tmpdir();
     char args[2048], path[1024], *out = NULL;
-    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 --all-frames -o '%s/all.fold'", dir);
-    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-    free(out);
+    ori_fold *doc = test_compliant_open_corner_with(dir, "--all-frames", "all.fold");
     snprintf(path, sizeof path, "%s/all.fold", dir);
-    ori_fold *doc = NULL;
     ori_error err;
-    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
     ori_pattern *p = NULL;
     cr_assert_eq(ori_fold_get_pattern(doc, 0, NULL, &p, &err), ORI_OK, "%s", err.message);
     int F = ori_pattern_face_count(p), frames = ori_fold_frame_count(doc);
@@ -1686,10 +1682,7 @@ Test(render, cli_animate_color_has_one_bar_over_the_motion)
     }
     // Enough animation frames to show every stored frame (the nearest in time to each).
     snprintf(args, sizeof args, "animate '%s' --color strain --fps 50 --duration 2 --size 160x120 --json -o '%s/s.gif'", path, dir);
-    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-    json_t *rep = json_loads(out, 0, NULL);
-    cr_assert_not_null(rep, "%s", out);
-    free(out);
+    json_t *rep = test_run_cli_json(args);
     json_t *col = json_object_get(rep, "color");
     cr_assert_str_eq(json_string_value(json_object_get(col, "quantity")), "strain");
     cr_assert_eq(json_integer_value(json_object_get(col, "shown")), F);
@@ -1698,10 +1691,7 @@ Test(render, cli_animate_color_has_one_bar_over_the_motion)
     json_decref(rep);
     snprintf(args, sizeof args, "animate examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to 90 --color fold-angle "
              "--size 160x120 --json -o '%s/a.gif'", dir);
-    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-    rep = json_loads(out, 0, NULL);
-    cr_assert_not_null(rep, "%s", out);
-    free(out);
+    rep = test_run_cli_json(args);
     col = json_object_get(rep, "color");
     cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "crease");
     cr_assert_float_eq(json_number_value(json_object_get(col, "max")), 90.0, 1e-9);
@@ -1742,10 +1732,7 @@ Test(render, cli_color_strain_paints_the_most_strained_face)
     for (int f = 0; f < F; ++f) cr_assert(f == top || fs[f] < fs[top] * 0.99, "one face strains most");
 
     snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --view cp --color strain --json -o '%s/s.png'", dir, dir);
-    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-    json_t *rep = json_loads(out, 0, NULL);
-    cr_assert_not_null(rep, "%s", out);
-    free(out);
+    json_t *rep = test_run_cli_json(args);
     json_t *col = json_object_get(rep, "color");
     cr_assert_str_eq(json_string_value(json_object_get(col, "quantity")), "strain");
     cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "face");
@@ -1816,10 +1803,7 @@ Test(render, cli_color_strain_paints_the_most_strained_face)
     snprintf(path, sizeof path, "%s/edges.fold", dir);
     cr_assert_eq(ori_fold_save_file(doc, path, &err), ORI_OK, "%s", err.message);
     snprintf(args, sizeof args, "render '%s' --frame 1 --color strain --json -o '%s/e.png'", path, dir);
-    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-    rep = json_loads(out, 0, NULL);
-    cr_assert_not_null(rep, "%s", out);
-    free(out);
+    rep = test_run_cli_json(args);
     cr_assert_eq(json_real_value(json_object_get(json_object_get(rep, "color"), "max")), emax, "the largest |edge strain| %g", emax);
     json_decref(rep);
     cr_assert_eq(ori_fold_set_custom(doc, 1, "faces_orikin:strain", "[0.1,0.2]", &err), ORI_OK, "%s", err.message);
@@ -1873,10 +1857,7 @@ Test(render, cli_color_target_error_matches_the_fold_report)
     const char *kinds[2] = {"target-error", "fold-angle"};
     for (int k = 0; k < 2; ++k) {
         snprintf(args, sizeof args, "render '%s/o.fold' --frame 1 --color %s --json -o '%s/t.svg'", dir, kinds[k], dir);
-        cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
-        json_t *rep = json_loads(out, 0, NULL);
-        cr_assert_not_null(rep, "%s", out);
-        free(out);
+        json_t *rep = test_run_cli_json(args);
         json_t *col = json_object_get(rep, "color");
         cr_assert_str_eq(json_string_value(json_object_get(col, "per")), "crease");
         cr_assert_eq(json_integer_value(json_object_get(col, "shown")), 5, "the open corner's five creases");
