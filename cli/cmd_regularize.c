@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "progress.h"
 #include "report.h"
 
 static double deg(double rad) { return ori_rad_to_deg_output(rad); }
@@ -15,6 +16,7 @@ static int run(int argc, char **argv)
 {
     const char *cmd = "regularize", *path = NULL, *out = NULL;
     bool json = false, rigid = false, rigid_only = false;
+    double timeout_s = 0.0;
     ori_regularize_def def = ori_default_regularize_def();
     cli_input in;
     cli_input_init(&in);
@@ -34,6 +36,16 @@ static int run(int argc, char **argv)
             if (!v) return CLI_EXIT_USAGE;
             if (!cli_parse_double(v, &def.max_move_rel))
                 return cli_usage(cmd, "--max-move needs a fraction of the sheet size in (0, 1], got '%s'", v);
+        } else if (strcmp(o, "--limit") == 0) {
+            const char *v = cli_option_once(cmd, argc, argv, &i, &seen);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &def.max_iterations) || def.max_iterations < 1 || def.max_iterations > 1000000)
+                return cli_usage(cmd, "--limit needs a number of iterations from 1 to 1000000, got '%s'", v);
+        } else if (strcmp(o, "--timeout") == 0) {
+            const char *v = cli_option_once(cmd, argc, argv, &i, &seen);
+            if (!v) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &timeout_s) || !(timeout_s > 0.0) || timeout_s > 1e9)
+                return cli_usage(cmd, "--timeout needs seconds in (0, 1e9], got '%s'", v);
         } else if (o[0] == '-' && o[1] != '\0') {
             return cli_usage(cmd, "unknown option %s", o);
         } else if (!path) {
@@ -60,7 +72,17 @@ static int run(int argc, char **argv)
     ori_regularize_result r;
     ori_pattern *q = NULL;
     ori_error err;
+    // The budget: --limit iterations per attempt, --timeout seconds; stopped, the best found is
+    // reported (exit 5) and written with -o, to be regularized further.
+    cli_deadline deadline;
+    cli_progress_begin(&deadline.bar, cmd, "regularizing");
+    deadline.seconds = timeout_s;
+    deadline.expired = false;
+    def.progress = cli_deadline_fn, def.progress_user = &deadline;
+    def.keep_partial = true;
     ori_status st = ori_regularize(p, &def, &q, &r, &err);
+    cli_progress_end(&deadline.bar);
+    if (st == ORI_ERR_LIMIT && r.stopped) st = ORI_OK; // (cancelled at --timeout: a partial answer)
     if (st != ORI_OK) {
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
@@ -70,13 +92,15 @@ static int run(int argc, char **argv)
     char buf[320];
     const char *why = cli_regularize_refusal(&r, &def, buf, sizeof buf);
     bool ok = why == NULL;
-    int code = ok ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
-    if (ok && out) {
+    bool partial = r.stopped && q != NULL; // the best found, written for another run to go on from
+    int code = ok ? CLI_EXIT_OK : r.stopped ? CLI_EXIT_PARTIAL : CLI_EXIT_NEGATIVE;
+    if ((ok || partial) && out) {
         code = cli_write_frame_pattern("regularize", &doc, &in, q, out);
-        if (code != CLI_EXIT_OK) ok = false;
+        if (code != CLI_EXIT_OK) ok = partial = false;
+        else if (partial) code = CLI_EXIT_PARTIAL;
     }
     if (json) {
-        json_t *o = cli_regularize_json(path, &def, &r, why, ok && out ? out : NULL);
+        json_t *o = cli_regularize_json(path, &def, &r, why, (ok || partial) && out ? out : NULL);
         cli_print_json(o);
         printf("\n");
     } else {
@@ -120,7 +144,16 @@ static int run(int argc, char **argv)
         if (!rigid_only && r.flat_foldable)
             printf("  full local check of the result: every interior vertex passes (Kawasaki, Maekawa, "
                    "big-little-big, the assignment)\n");
-        if (!ok && why) printf("verdict: refused: %s\n", why);
+        if (r.stopped)
+        {
+            char bound[64];
+            if (deadline.expired) snprintf(bound, sizeof bound, "--timeout %g s", timeout_s);
+            else snprintf(bound, sizeof bound, "--limit %d iterations", def.max_iterations);
+            if (partial && out) printf("verdict: %s (%s); written to %s: regularize it again to go on\n", why, bound, out);
+            else if (partial) printf("verdict: %s (%s); give -o OUT to keep it and go on from there\n", why, bound);
+            else printf("verdict: %s (%s); nothing to keep: its moves are too large or make edges cross\n", why, bound);
+        }
+        else if (!ok && why) printf("verdict: refused: %s\n", why);
         else if (out) printf("verdict: %s; written to %s\n", kind, out);
         else printf("verdict: %s (dry run: give -o OUT to write it)\n", kind);
     }
@@ -133,8 +166,8 @@ static int run(int argc, char **argv)
 const cli_command cli_cmd_regularize = {
     "regularize",
     "move vertices the least so that a rounded drawing is exactly flat- (and rigidly) foldable",
-    "usage: orikin regularize FILE [-o OUT] [--rigid | --rigid-only] [--max-move REL] [--json]\n"
-    "                         [input options]\n"
+    "usage: orikin regularize FILE [-o OUT] [--rigid | --rigid-only] [--max-move REL]\n"
+    "                         [--limit N] [--timeout S] [--json] [input options]\n"
     "\n"
     "Drawings from other tools carry rounded coordinates: their vertices miss Kawasaki by a\n"
     "few thousandths of a degree, so exact checks fail and a rigid fold finds no motion. This\n"
@@ -154,7 +187,8 @@ const cli_command cli_cmd_regularize = {
     "assignment) before it is called flat-foldable.\n"
     "Reports the largest and RMS displacement relative to the sheet's diagonal. Refuses (exit 1,\n"
     "nothing written) when a vertex would move more than --max-move of the sheet size: such a\n"
-    "drawing is not a rounded exact pattern. See docs/verification.md.\n"
+    "drawing is not a rounded exact pattern. Exit codes: 0 exact, 1 refused, 5 stopped at\n"
+    "--limit or --timeout (the best found, a partial answer). See docs/verification.md.\n"
     "\n"
     "options:\n"
     "  -o OUT          write the regularized pattern (FOLD: every other field kept; .svg, .cp,\n"
@@ -163,20 +197,22 @@ const cli_command cli_cmd_regularize = {
     "                  second order elsewhere)\n"
     "  --rigid-only    rigid foldability without Kawasaki (no flat-foldability asked or checked)\n"
     "  --max-move REL  largest displacement accepted, relative to the sheet's diagonal; default 1e-3\n"
+    "  --limit N       Gauss-Newton iterations per attempt (default 100); reached while still\n"
+    "                  converging, it stops with the best found (exit 5, written with -o)\n"
+    "  --timeout S     stop after S seconds with the best found (exit 5, written with -o)\n"
 
     "  --json          print {\"file\", \"rigid\", \"converged\", \"refused\", \"reason\",\n"
-    "                  \"interior_vertices\", \"unknowns\", \"equations\", \"iterations\",\n"
+    "                  \"interior_vertices\", \"unknowns\", \"equations\", \"iterations\", \"stopped\",\n"
     "                  \"moved_vertices\", \"max_move_rel\", \"max_move_vertex\", \"rms_move_rel\",\n"
     "                  \"max_move_allowed_rel\", \"kawasaki_before_deg\", \"kawasaki_after_deg\",\n"
     "                  \"crossing_edge\", \"rigid_before\", \"rigid_after\", \"mode_vertices\",\n"
     "                  \"against_edge\", \"rigid_only\", \"equal_tolerance_deg\", \"ties\",\n"
     "                  \"parallels_kept\", \"sides_moved\", \"flat_foldable\", \"check_vertex\",\n"
     "                  \"output\"}\n"
-    "\n"
+    "\n",
+    run,
     "input options (FILE is a FOLD file or a drawing: .svg, .opx, .cp):\n"
     CLI_INPUT_HELP
     "\n"
     "example: orikin regularize miura.fold --rigid -o miura-exact.fold\n",
-    run,
-    NULL,
 };

@@ -5,13 +5,15 @@
 #include <string.h>
 
 #include "cli.h"
+#include "progress.h"
 
 #define CMD "unfold-linkage"
 
 extern const cli_command cli_cmd_unfold_linkage;
 
 static const char help[] =
-    "usage: orikin unfold-linkage FILE [--steps-per-event N] [-o OUT.fold] [--json]\n"
+    "usage: orikin unfold-linkage FILE [--steps-per-event N] [--limit N] [--timeout S]\n"
+    "                             [-o OUT.fold] [--json]\n"
     "\n"
     "Unfold a planar linkage (carpenter's rule): FILE is a FOLD file whose frame_classes list\n"
     "\"linkage\", with 2D vertices_coords and edges_vertices forming one simple open chain or one\n"
@@ -24,11 +26,18 @@ static const char help[] =
     "\n"
     "options:\n"
     "  --steps-per-event N  frames kept between two events (default 8; 0 = every step)\n"
+    "  --limit N            stop after N events (default 100 x vertices + 100: Streinu's motion\n"
+    "                       has O(n^2) events at most, more at the default means flips cycling)\n"
+    "  --timeout S          stop after S seconds\n"
     "  -o, --output OUT     write the motion as a FOLD animation (frame 0 the input, one frame per\n"
     "                       kept configuration; played backwards it folds the straight chain or\n"
     "                       convex polygon into the input)\n"
-    "  --json               print {kind, events, frames, final, max_length_error,\n"
+    "  --json               print {kind, events, frames, final, stopped, max_length_error,\n"
     "                       min_distance_change} as JSON\n"
+    "\n"
+    "exit codes: 0 straight or convex, 1 not reached, 3 bad linkage, 4 the motion broke its\n"
+    "guarantees, 5 stopped at --limit or --timeout (the motion so far is written, \"final\":\n"
+    "\"not reached\", \"stopped\" names the bound; run again from its last frame to go on)\n"
     "\n"
     "example:\n"
     "  orikin unfold-linkage tests/data/unfold/spiral.fold -o spiral-motion.fold --json\n";
@@ -108,7 +117,8 @@ static int write_motion(const char *out, json_t *root, const ori_linkage_motion 
 static int run(int argc, char **argv)
 {
     const char *path = NULL, *out = NULL, *v;
-    int per = 8;
+    int per = 8, limit = 0;
+    double timeout_s = 0.0;
     bool json = false;
     cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
@@ -121,6 +131,14 @@ static int run(int argc, char **argv)
             if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
             if (!cli_parse_int(v, &per) || per < 0 || per > 100000)
                 return cli_usage(CMD, "--steps-per-event needs an integer from 0 to 100000, got '%s'", v);
+        } else if (strcmp(argv[i], "--limit") == 0) {
+            if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_int(v, &limit) || limit < 1 || limit > 100000000)
+                return cli_usage(CMD, "--limit needs a number of events from 1 to 100000000, got '%s'", v);
+        } else if (strcmp(argv[i], "--timeout") == 0) {
+            if (!(v = cli_option_once(CMD, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &timeout_s) || !(timeout_s > 0.0) || timeout_s > 1e9)
+                return cli_usage(CMD, "--timeout needs seconds in (0, 1e9], got '%s'", v);
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             return cli_usage(CMD, "unknown option %s", argv[i]);
         } else if (!path) {
@@ -140,10 +158,24 @@ static int run(int argc, char **argv)
     }
     ori_linkage_def def = ori_default_linkage_def();
     def.coords = coords, def.vertex_count = n, def.edges = edges, def.edge_count = m, def.steps_per_event = per;
+    def.max_events = limit;
+    cli_deadline deadline;
+    cli_progress_begin(&deadline.bar, CMD, "unfolding");
+    deadline.seconds = timeout_s;
+    deadline.expired = false;
+    def.progress = cli_deadline_fn, def.progress_user = &deadline;
+    def.keep_partial = true;
     ori_linkage_motion *mo = NULL;
     ori_error err;
     ori_error_clear(&err);
     ori_status st = ori_linkage_unfold(&def, &mo, &err);
+    cli_progress_end(&deadline.bar);
+    // Stopped at a budget: the motion so far is the answer (exit 5).
+    const char *stopped = NULL;
+    if (st == ORI_ERR_LIMIT && mo) {
+        stopped = deadline.expired ? "timeout" : "limit";
+        st = ORI_OK;
+    }
     if (st != ORI_OK) {
         rc = (st == ORI_ERR_NOT_CONVERGED || st == ORI_ERR_INTERNAL || st == ORI_ERR_LIMIT)
                  ? (fprintf(stderr, "orikin %s: %s: %s\n", CMD, path, err.message), CLI_EXIT_INTERNAL)
@@ -165,6 +197,7 @@ static int run(int argc, char **argv)
             json_object_set_new(o, "steps", json_integer(r.steps));
             json_object_set_new(o, "frames", json_integer(r.frames));
             json_object_set_new(o, "final", json_string(final));
+            json_object_set_new(o, "stopped", stopped ? json_string(stopped) : json_null());
             json_object_set_new(o, "max_length_error", json_real(r.max_length_error));
             json_object_set_new(o, "min_distance_change", json_real(r.min_distance_change));
             json_object_set_new(o, "max_event_residual", json_real(r.max_event_residual));
@@ -174,8 +207,14 @@ static int run(int argc, char **argv)
                    final, r.events, r.flips, r.straightened, r.frames);
             printf("bar lengths kept to %.3g (relative); least distance change %.3g\n", r.max_length_error,
                    r.min_distance_change);
+            if (stopped && deadline.expired)
+                printf("stopped at --timeout %g s: the motion so far%s\n", timeout_s, out ? " is written" : "");
+            else if (stopped)
+                printf("stopped at --limit %d events%s: the motion so far%s\n", def.max_events > 0 ? def.max_events : 100 * n + 100,
+                       limit > 0 ? "" : " (the default: flips cycling?)", out ? " is written" : "");
         }
-        if (!r.final_ok) rc = CLI_EXIT_NEGATIVE;
+        if (stopped) rc = CLI_EXIT_PARTIAL;
+        else if (!r.final_ok) rc = CLI_EXIT_NEGATIVE;
     }
     ori_linkage_motion_destroy(mo);
     free(coords), free(edges), json_decref(root);

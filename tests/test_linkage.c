@@ -237,9 +237,69 @@ Test(linkage, event_limit_stops_the_motion, .init = test_leak_setup, .fini = tes
     cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_LIMIT);
     cr_assert_null(mo);
     cr_assert(strstr(err.message, "events") != NULL, "%s", err.message);
+    // With keep_partial the motion so far: exactly max_events events, not straight, every bar
+    // length kept and no distance decreasing over its frames, its last frame an event.
+    def.keep_partial = true;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_LIMIT);
+    cr_assert_not_null(mo);
+    ori_linkage_result r = ori_linkage_motion_result(mo);
+    cr_assert(r.stopped && !r.final_ok);
+    cr_assert_eq(r.events, events / 2);
+    cr_assert_eq(r.frames, ori_linkage_motion_frame_count(mo));
+    cr_assert_gt(r.frames, 1);
+    cr_assert(ori_linkage_motion_frame_is_event(mo, r.frames - 1));
+    cr_assert_leq(r.max_length_error, 1e-12);
+    cr_assert_geq(r.min_distance_change, -1e-12);
+    ori_linkage_motion_destroy(mo);
+    mo = NULL;
+    def.keep_partial = false;
     def.max_events = events;
     cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_OK, "%s", err.message);
     cr_assert_eq(ori_linkage_motion_result(mo).events, events);
+    ori_linkage_motion_destroy(mo);
+    free_case(&c);
+}
+
+// Progress: the chain's end distance over its length, never decreasing, 1 at the straight end;
+// returning false cancels with ORI_ERR_LIMIT (not retried with another perturbation), and with
+// keep_partial the motion up to the cancel comes back.
+typedef struct lk_fractions {
+    double last;
+    int n, cancel_at;
+    bool monotone;
+} lk_fractions;
+static bool lk_record(double f, void *user)
+{
+    lk_fractions *F = user;
+    if (f < F->last || f < 0.0 || f > 1.0) F->monotone = false;
+    F->last = f;
+    return ++F->n != F->cancel_at;
+}
+Test(linkage, progress_and_cancel, .init = test_leak_setup, .fini = test_leak_check)
+{
+    lcase c = spiral40();
+    ori_linkage_def def = ori_default_linkage_def();
+    def.coords = c.p, def.vertex_count = c.n, def.edges = c.e, def.edge_count = c.m;
+    lk_fractions F = {0.0, 0, -1, true};
+    def.progress = lk_record, def.progress_user = &F;
+    ori_linkage_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_OK, "%s", err.message);
+    ori_linkage_result r = ori_linkage_motion_result(mo);
+    ori_linkage_motion_destroy(mo);
+    cr_assert(F.monotone);
+    cr_assert_gt(F.n, 2);
+    cr_assert_leq(F.n, r.events + 1);
+    cr_assert_gt(F.last, 0.5, "the chain is mostly straight before its last events: %g", F.last);
+    F = (lk_fractions){0.0, 0, 3, true};
+    def.keep_partial = true;
+    mo = NULL;
+    cr_assert_eq(ori_linkage_unfold(&def, &mo, &err), ORI_ERR_LIMIT);
+    cr_assert(strstr(err.message, "cancelled") != NULL, "%s", err.message);
+    cr_assert_eq(F.n, 3, "one cancel, no retry");
+    cr_assert_not_null(mo);
+    cr_assert(ori_linkage_motion_result(mo).stopped);
+    cr_assert_lt(ori_linkage_motion_result(mo).events, r.events);
     ori_linkage_motion_destroy(mo);
     free_case(&c);
 }

@@ -209,6 +209,71 @@ Test(regularize, iteration_bound_stops_without_a_pattern)
     cr_assert_eq(r.iterations, 1);
     cr_assert_null(out);
     cr_assert_gt(r.kawasaki_after_rad, 1e-12);
+    cr_assert(r.stopped, "the bound, not a stall, ended it");
+    // With keep_partial the best found comes back: better than the input, not exact, and a
+    // second run from it (the CLI's "regularize it again") converges to an exact pattern.
+    d.keep_partial = true;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.stopped && !r.converged);
+    cr_assert_not_null(out);
+    double before = r.kawasaki_before_rad, after = r.kawasaki_after_rad;
+    cr_assert_lt(after, 0.1 * before, "one step removes most of the miss: %g -> %g", before, after);
+    cr_assert_gt(after, 1e-12);
+    ori_regularize_def d2 = ori_default_regularize_def();
+    ori_pattern *again = NULL;
+    cr_assert_eq(ori_regularize(out, &d2, &again, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.converged && !r.stopped);
+    cr_assert_not_null(again);
+    cr_assert_leq(r.kawasaki_after_rad, ORI_TOL_REGULARIZE_KAWASAKI_RAD);
+    cr_assert_float_eq(r.kawasaki_before_rad, after, 1e-15);
+    ori_pattern_destroy(again);
+    ori_pattern_destroy(out);
+    ori_pattern_destroy(q);
+    ori_pattern_destroy(m);
+}
+
+// The progress callback: fractions in [0, 1], never decreasing, one per iteration; returning
+// false cancels with ORI_ERR_LIMIT and the result says stopped (the best found with keep_partial).
+typedef struct fractions {
+    double f[256];
+    int n, cancel_at;
+} fractions;
+static bool record_fraction(double f, void *user)
+{
+    fractions *F = user;
+    if (F->n < 256) F->f[F->n] = f;
+    return ++F->n != F->cancel_at;
+}
+Test(regularize, progress_is_monotone_and_cancels)
+{
+    ori_pattern *m = test_miura(6, 6, 1.0, 1.0, deg(60), NULL);
+    ori_pattern *q = perturbed(m, 1e-3, 11);
+    ori_regularize_def d = ori_default_regularize_def();
+    fractions F = {.n = 0, .cancel_at = -1};
+    d.progress = record_fraction, d.progress_user = &F;
+    ori_regularize_result r;
+    ori_pattern *out = NULL;
+    ori_error err;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_OK, "%s", err.message);
+    cr_assert(r.converged && !r.stopped);
+    cr_assert_geq(F.n, r.iterations, "%d calls for %d iterations", F.n, r.iterations);
+    cr_assert_leq(F.n, 256);
+    cr_assert_geq(F.f[0], 0.0);
+    for (int i = 1; i < F.n; ++i) cr_assert_geq(F.f[i], F.f[i - 1], "fraction %d: %g after %g", i, F.f[i], F.f[i - 1]);
+    cr_assert_leq(F.f[F.n - 1], 1.0);
+    cr_assert_gt(F.f[F.n - 1], 0.3, "the last iteration before convergence removed most of the miss (log scale)");
+    ori_pattern_destroy(out);
+    out = NULL;
+    F.n = 0, F.cancel_at = 2;
+    d.keep_partial = true;
+    cr_assert_eq(ori_regularize(q, &d, &out, &r, &err), ORI_ERR_LIMIT);
+    cr_assert(strstr(err.message, "cancelled") != NULL, "%s", err.message);
+    cr_assert(r.stopped && !r.converged);
+    cr_assert_eq(F.n, 2);
+    cr_assert_eq(r.iterations, 1, "cancelled at the second iteration's report: one step done");
+    cr_assert_not_null(out);
+    cr_assert_lt(r.kawasaki_after_rad, r.kawasaki_before_rad);
+    ori_pattern_destroy(out);
     ori_pattern_destroy(q);
     ori_pattern_destroy(m);
 }

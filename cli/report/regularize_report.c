@@ -15,6 +15,19 @@ const char *cli_regularize_refusal(const ori_regularize_result *r, const ori_reg
                  "the nearest %s pattern moves vertex %d by %.3g of the sheet size, more than %.3g (--max-move): "
                  "the drawing is not a rounded version of one",
                  goal, r->max_move_vertex, r->max_move_rel, def->max_move_rel);
+    else if (r->stopped && r->iterations == 0)
+        snprintf(buf, size, "stopped at the budget before the first iteration: nothing moved yet");
+    else if (r->stopped && def->rigid_only)
+        snprintf(buf, size, "stopped at the budget after %d iterations, still converging: the best found has rigid defect %.3g",
+                 r->iterations, r->rigid_after);
+    else if (r->stopped && rigid)
+        snprintf(buf, size,
+                 "stopped at the budget after %d iterations, still converging: the best found misses Kawasaki by %.3g "
+                 "rad, rigid defect %.3g",
+                 r->iterations, r->kawasaki_after_rad, r->rigid_after);
+    else if (r->stopped)
+        snprintf(buf, size, "stopped at the budget after %d iterations, still converging: the best found misses Kawasaki by %.3g rad",
+                 r->iterations, r->kawasaki_after_rad);
     else if (r->crossing_edge != ORI_NULL_INDEX)
         snprintf(buf, size, "the nearest %s pattern would make edges cross (%s): the drawing's topology does not allow it",
                  goal, r->crossing);
@@ -71,6 +84,7 @@ json_t *cli_regularize_json(const char *file, const ori_regularize_def *def, con
     json_object_set_new(o, "unknowns", json_integer(r->unknowns));
     json_object_set_new(o, "equations", json_integer(r->equations));
     json_object_set_new(o, "iterations", json_integer(r->iterations));
+    json_object_set_new(o, "stopped", json_boolean(r->stopped));
     json_object_set_new(o, "moved_vertices", json_integer(r->moved_vertices));
     json_object_set_new(o, "max_move_rel", json_real(r->max_move_rel));
     json_object_set_new(o, "max_move_vertex", index_or_null(r->max_move_vertex));

@@ -29,11 +29,20 @@ typedef struct ori_regularize_def {
                             ///< rigidly but not flat: odd degrees allowed, no flat check)
     double max_move_rel;    ///< refuse (result.refused) when a vertex must move farther than this
                             ///< × the sheet's bounding-box diagonal
-    int max_iterations;     ///< Gauss–Newton iterations at most (≥ 1)
+    int max_iterations;     ///< Gauss–Newton iterations at most per attempt (≥ 1): the budget; reaching it
+                            ///< while the defect still shrinks sets result.stopped
+    ori_progress_fn *progress; ///< called per Gauss–Newton iteration with the share of the defect removed
+                            ///< (log scale from the input's to the tolerance, monotone), may be NULL;
+                            ///< returning false cancels: ORI_ERR_LIMIT ("cancelled"), result.stopped set
+    void *progress_user;    ///< passed to progress
+    bool keep_partial;      ///< when stopped (budget or cancel): *out receives the best pattern found, not
+                            ///< exact (result.converged false), if its moves stay within max_move_rel and
+                            ///< keep the edges from crossing; false (default): nothing
     int internal_value;     ///< set by ori_default_regularize_def; do not change
 } ori_regularize_def;
 
-/// Defaults: Kawasaki only (not rigid, not rigid only), max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL, 100 iterations.
+/// Defaults: Kawasaki only (not rigid, not rigid only), max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL, 100 iterations,
+/// no progress, no partial answer.
 ORI_API ori_regularize_def ori_default_regularize_def(void);
 
 /// What regularization did. Displacements are relative to the sheet's bounding-box diagonal.
@@ -45,6 +54,8 @@ typedef struct ori_regularize_result {
     int moved_vertices;         ///< vertices that moved at all
     int unknowns, equations;    ///< size of the least-squares problem
     int iterations;             ///< Gauss–Newton iterations done
+    bool stopped;               ///< the budget ended the search: max_iterations reached while the defect still
+                                ///< shrank, or progress cancelled (kawasaki_after_rad, rigid_after: the best found)
     double max_move_rel;        ///< largest vertex displacement
     int max_move_vertex;        ///< the vertex that moved most (ORI_NULL_INDEX when none moved)
     double rms_move_rel;        ///< root mean square displacement over all vertices
@@ -90,8 +101,10 @@ typedef struct ori_regularize_result {
 /// check_* say why). F and J edges are not creases (their sectors merge). Fold rates for the
 /// rigid conditions start from the assignment and the targets (edges_foldAngle, else ±π).
 /// *out receives the pattern only when the result is converged, not refused and the moves
-/// keep the edges from crossing (else NULL: the result says why); destroy it with
-/// ori_pattern_destroy. Fails with ORI_ERR_ARGUMENT for a folded form or an unbuilt pattern.
+/// keep the edges from crossing (else NULL: the result says why), or, with keep_partial, the
+/// best found when stopped at the budget; destroy it with ori_pattern_destroy. A stopped search
+/// tries no further set of equalities. Fails with ORI_ERR_ARGUMENT for a folded form or an
+/// unbuilt pattern, ORI_ERR_LIMIT when progress cancels (result and, with keep_partial, *out set).
 ORI_API ori_status ori_regularize(const ori_pattern *pattern, const ori_regularize_def *def,
                                   ori_pattern **out, ori_regularize_result *result, ori_error *error);
 

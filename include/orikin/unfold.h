@@ -33,11 +33,16 @@ typedef struct ori_linkage_def {
     const int *edges;      ///< bars as vertex pairs (2 × edge_count entries)
     int edge_count;
     int steps_per_event;   ///< frames kept between two events (≥ 1), 0 = every integration step
-    int max_events;        ///< give up (ORI_ERR_LIMIT) once more than this many events happened (checked before each motion segment); 0 = 100 × vertices
+    int max_events;        ///< stop (ORI_ERR_LIMIT) when this many events happened and more motion is needed (checked before each motion segment); 0 = 100 × vertices
+    ori_progress_fn *progress; ///< called before each motion segment with the fraction done (a chain: its ends' distance over its
+                           ///< length; a polygon: the share of max_events), may be NULL; returning false cancels: ORI_ERR_LIMIT
+    void *progress_user;   ///< passed to progress
+    bool keep_partial;     ///< on ORI_ERR_LIMIT (max_events or cancelled), *out receives the motion so far (result.stopped,
+                           ///< final_ok false), its last frame the state at the stop; false (default): nothing
     int internal_value;    ///< set by ori_default_linkage_def; do not change
 } ori_linkage_def;
 
-/// Defaults: no linkage (set one), 8 frames per event, automatic event limit.
+/// Defaults: no linkage (set one), 8 frames per event, automatic event limit, no progress, no partial motion.
 ORI_API ori_linkage_def ori_default_linkage_def(void);
 
 /// What kind of linkage was unfolded.
@@ -58,6 +63,7 @@ typedef struct ori_linkage_result {
     double max_length_error;    ///< max over kept frames and bars of |length − L| / L
     double min_distance_change; ///< least change of any vertex–vertex distance between consecutive kept frames (length)
     double max_event_residual;  ///< largest |sin| of the aligned angle at the located events (unitless)
+    bool stopped;               ///< the motion stopped at max_events or a cancel: a partial motion (keep_partial)
 } ori_linkage_result;
 
 /// Opaque linkage motion (frames of vertex positions).
@@ -68,7 +74,8 @@ typedef struct ori_linkage_motion ori_linkage_motion;
 /// field "vertices_coords" or "edges_vertices") and follow Streinu's expansive motion to the
 /// straight chain or the convex polygon. Fails with ORI_ERR_NOT_CONVERGED when the kept frames
 /// break the motion's guarantees (a bar length off by 1e-9 relative, a distance decreasing by
-/// 1e-9 of the size). Destroy with ori_linkage_motion_destroy.
+/// 1e-9 of the size), with ORI_ERR_LIMIT past max_events or when progress cancels (then, with
+/// keep_partial, *out holds the motion so far, checked the same way). Destroy with ori_linkage_motion_destroy.
 ORI_API ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **out, ori_error *error);
 /// Destroy a motion; NULL is a no-op.
 ORI_API void ori_linkage_motion_destroy(ori_linkage_motion *motion);

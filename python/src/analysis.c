@@ -118,7 +118,7 @@ PyObject *ori_py_pattern_regularize(PyObject *self, PyObject *args, PyObject *kw
         "converged", PyBool_FromLong(r.converged), "refused", PyBool_FromLong(r.refused), "odd_vertex",
         r.odd_vertex == ORI_NULL_INDEX ? Py_NewRef(Py_None) : PyLong_FromLong(r.odd_vertex), "interior_vertices",
         PyLong_FromLong(r.interior_vertices), "moved_vertices", PyLong_FromLong(r.moved_vertices), "iterations",
-        PyLong_FromLong(r.iterations), "max_move_rel", PyFloat_FromDouble(r.max_move_rel), "max_move_vertex",
+        PyLong_FromLong(r.iterations), "stopped", PyBool_FromLong(r.stopped), "max_move_rel", PyFloat_FromDouble(r.max_move_rel), "max_move_vertex",
         r.max_move_vertex == ORI_NULL_INDEX ? Py_NewRef(Py_None) : PyLong_FromLong(r.max_move_vertex), "rms_move_rel",
         PyFloat_FromDouble(r.rms_move_rel), "kawasaki_before_rad", PyFloat_FromDouble(r.kawasaki_before_rad),
         "kawasaki_after_rad", PyFloat_FromDouble(r.kawasaki_after_rad), "rigid_before", PyFloat_FromDouble(r.rigid_before),

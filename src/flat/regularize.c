@@ -35,8 +35,20 @@ typedef struct reg_vertex {
     int opp[2];   // and with opposite rates (the odd crease and the one across from it)
 } reg_vertex;
 
+// The budget shared by the attempts of one ori_regularize: the progress callback, its fraction
+// (monotone over the attempts) and whether it cancelled.
+typedef struct reg_budget {
+    ori_progress_fn *progress;
+    void *user;
+    double k0, tol;  // the input's defect and the tolerance: the fraction's log scale
+    double fraction; // reported so far
+    bool cancelled;
+} reg_budget;
+
 typedef struct reg {
     const ori_pattern *p;
+    reg_budget *budget;  // progress and cancel of the main solve (NULL: none, as in the rate pre-pass)
+    bool stopped;        // the main solve ended at max_iterations still converging, or was cancelled
     int nv;
     double L, R, w_rate;
     ori_v2 *x0, *x;      // original and current coordinates (unscaled)
@@ -433,6 +445,9 @@ ori_regularize_def ori_default_regularize_def(void)
     def.rigid_only = false;
     def.max_move_rel = ORI_REGULARIZE_MAX_MOVE_REL;
     def.max_iterations = 100;
+    def.progress = NULL;
+    def.progress_user = NULL;
+    def.keep_partial = false;
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
@@ -452,6 +467,19 @@ static double max_kawasaki(const ori_pattern *p)
         if (k > worst) worst = k;
     }
     return worst;
+}
+
+// Report the share of the defect removed, on a log scale from the input's defect k0 to the
+// tolerance (monotone: never less than before); false when the callback cancels.
+static bool report_progress(reg_budget *b, double worst)
+{
+    if (!b->progress) return true;
+    double f = 1.0;
+    if (b->k0 > b->tol && worst > b->tol) f = worst >= b->k0 ? 0.0 : log(b->k0 / worst) / log(b->k0 / b->tol);
+    if (f > b->fraction) b->fraction = f;
+    if (b->progress(b->fraction, b->user)) return true;
+    b->cancelled = true;
+    return false;
 }
 
 // Iterate until the equations hold (or max_iterations); returns the iterations done.
@@ -481,6 +509,10 @@ static int solve(reg *g, int max_iterations, double kaw_tol, double rig_tol, boo
             break;
         }
         double worst = fmax(kaw, rig);
+        if (g->budget && !report_progress(g->budget, worst)) {
+            g->stopped = true;
+            break;
+        }
         // Close to the solution, weight coordinates and rates alike and anchor the step at the
         // current state: the remaining moves are ~1e-9 and no longer shape the answer, while
         // the disparate weights would cost six digits of the coordinate part.
@@ -518,6 +550,7 @@ static int solve(reg *g, int max_iterations, double kaw_tol, double rig_tol, boo
         double kaw, rig;
         defects(g, &kaw, &rig);
         *converged = kaw <= kaw_tol && rig <= rig_tol;
+        if (!*converged && g->budget) g->stopped = true; // the budget, not a stall, ended it
     }
     cholmod_free_factor(&L, &cm);
     cholmod_finish(&cm);
@@ -645,7 +678,8 @@ static void find_ties(reg *g, int *cap, double tau, bool parallel)
 // (every vertex free, a vertex on a straight side kept on a straight line through its
 // neighbours): the drawing's own corners may miss its equalities by its precision.
 static ori_status regularize_level(const ori_pattern *p, const ori_regularize_def *def, int level, bool free_sides,
-                                   double tau, ori_pattern **out, ori_regularize_result *res, ori_error *error)
+                                   double tau, reg_budget *budget, ori_pattern **out, ori_regularize_result *res,
+                                   ori_error *error)
 {
     *out = NULL;
     memset(res, 0, sizeof *res);
@@ -826,8 +860,16 @@ static ori_status regularize_level(const ori_pattern *p, const ori_regularize_de
         g.polish = false;
         g.w_rate = ORI_REGULARIZE_RATE_WEIGHT;
     }
+    g.budget = budget;
+    if (budget->k0 < 0.0) { // (the first attempt: the input's defect starts the progress scale)
+        budget->k0 = g.kawasaki ? res->kawasaki_before_rad : 0.0;
+        if (g.rigid) budget->k0 = fmax(budget->k0, res->rigid_before);
+        budget->tol = g.kawasaki ? ORI_TOL_REGULARIZE_KAWASAKI_RAD : ORI_TOL_REGULARIZE_RIGID;
+    }
     res->iterations = solve(&g, def->max_iterations, ORI_TOL_REGULARIZE_KAWASAKI_RAD,
                             g.rigid ? ORI_TOL_REGULARIZE_RIGID : INFINITY, &converged);
+    g.budget = NULL;
+    res->stopped = g.stopped;
     if (g.rigid) {
         double kaw, rig;
         assemble(&g);
@@ -873,7 +915,10 @@ static ori_status regularize_level(const ori_pattern *p, const ori_regularize_de
     }
     res->rms_move_rel = g.nv > 0 ? sqrt(sum2 / g.nv) : 0.0;
     res->refused = res->max_move_rel > def->max_move_rel;
-    if (res->refused || !converged || res->odd_vertex != ORI_NULL_INDEX) {
+    if (res->refused || res->odd_vertex != ORI_NULL_INDEX) res->stopped = false; // (a verdict, whatever the budget)
+    // Stopped at the budget: the best found is handed back on request (not exact).
+    bool partial = def->keep_partial && res->stopped && !converged && !res->refused && res->odd_vertex == ORI_NULL_INDEX;
+    if (!partial && (res->refused || !converged || res->odd_vertex != ORI_NULL_INDEX)) {
         // No pattern to hand back: the result says why.
         ori_pattern_destroy(q);
         goto fail;
@@ -890,7 +935,7 @@ static ori_status regularize_level(const ori_pattern *p, const ori_regularize_de
         goto fail;
     }
     res->kawasaki_after_rad = max_kawasaki(q);
-    res->converged = !g.kawasaki || res->kawasaki_after_rad <= ORI_TOL_REGULARIZE_KAWASAKI_RAD;
+    res->converged = !partial && (!g.kawasaki || res->kawasaki_after_rad <= ORI_TOL_REGULARIZE_KAWASAKI_RAD);
     *out = q;
 fail:
     ori__free(g.x0);
@@ -970,15 +1015,17 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
     ori_pattern *q = NULL;
     static const int levels[5] = {2, 1, 2, 1, 0};
     static const bool free_sides[5] = {false, false, true, true, false};
+    reg_budget budget = {def->progress, def->progress_user, -1.0, 0.0, 0.0, false};
     for (int t = 0; t < 5; ++t) {
         int level = levels[t];
-        ori_status st = regularize_level(p, def, level, free_sides[t], tau, &q, res, error);
+        ori_status st = regularize_level(p, def, level, free_sides[t], tau, &budget, &q, res, error);
         if (st != ORI_OK) return st;
         res->check_vertex = ORI_NULL_INDEX;
         res->check_rule = ORI_FLAT_RULE_COUNT;
         res->check_failed = 0;
         res->check_detail[0] = '\0';
         res->flat_foldable = false;
+        if (res->stopped) break; // the budget is spent: the best found (with keep_partial, in q)
         if (q) {
             res->flat_foldable = local_check(q, res);
             if (res->flat_foldable || def->rigid_only) break;
@@ -990,5 +1037,6 @@ ori_status ori_regularize(const ori_pattern *p, const ori_regularize_def *def, o
         if (res->odd_vertex != ORI_NULL_INDEX) break; // (no tie helps a vertex of odd degree)
     }
     *out = q;
+    if (budget.cancelled) return ori__fail(error, ORI_ERR_LIMIT, "cancelled");
     return ORI_OK;
 }

@@ -528,7 +528,27 @@ typedef struct lk_run {
     int per;          // frames kept per event interval (0 = all)
     ori_v2 *buf;      // steps of the current interval, every stride-th (per > 0)
     int buf_count, buf_cap, stride, skipped;
+    ori_progress_fn *progress; // per event, may be NULL
+    void *progress_user;
+    int end_a, end_b;          // a chain's ends (−1 for a polygon) and
+    double total;              // its total bar length: progress is their distance over it
+    double fraction;           // reported so far (monotone)
+    bool cancelled;            // the progress callback returned false
 } lk_run;
+
+// Progress at an event: for a chain the distance of its ends over its length (every distance
+// grows along an expansive motion; 1 when straight), for a polygon the share of the event budget.
+static bool report_progress(lk_run *R, int max_events)
+{
+    if (!R->progress) return true;
+    double f = (double)R->M->result.events / max_events;
+    if (R->end_a >= 0 && R->total > 0.0) f = ori_v2_norm(ori_v2_sub(R->L->p[R->end_b], R->L->p[R->end_a])) / R->total;
+    f = fmin(fmax(f, R->fraction), 1.0);
+    R->fraction = f;
+    if (R->progress(f, R->progress_user)) return true;
+    R->cancelled = true;
+    return false;
+}
 
 static void append_frame(ori_linkage_motion *M, const ori_v2 *f, bool event)
 {
@@ -912,8 +932,12 @@ static ori_status run_motion(lk_run *R, int max_events, ori_error *error)
     }
     int rs = restructure(R, -1, -1, error);
     while (rs == 1) {
-        if (R->M->result.events > max_events) {
-            st = ori__fail(error, ORI_ERR_LIMIT, "more than %d events", max_events);
+        if (R->M->result.events >= max_events) { // (more motion to go: the budget is spent)
+            st = ori__fail(error, ORI_ERR_LIMIT, "stopped at the limit of %d events", max_events);
+            break;
+        }
+        if (!report_progress(R, max_events)) {
+            st = ori__fail(error, ORI_ERR_LIMIT, "cancelled after %d events", R->M->result.events);
             break;
         }
         build_adj(L, false);
@@ -1226,7 +1250,7 @@ static void measure(const ori_linkage_def *def, ori_linkage_motion *M)
 
 // One run of the motion under perturbation variant 0–3 (see ori_linkage_unfold).
 static ori_status attempt(const ori_linkage_def *def, const int *order, bool closed, int variant,
-                          ori_linkage_motion **out, ori_error *error)
+                          ori_linkage_motion **out, bool *cancelled, ori_error *error)
 {
     int n = def->vertex_count;
     lk L;
@@ -1275,11 +1299,20 @@ static ori_status attempt(const ori_linkage_def *def, const int *order, bool clo
     R.buf_cap = R.per > 0 ? 4 * R.per + 16 : 0;
     R.buf = R.per > 0 ? ori__alloc((size_t)R.buf_cap * (size_t)n * sizeof *R.buf) : NULL;
     R.stride = 1;
+    R.progress = def->progress, R.progress_user = def->progress_user;
+    R.end_a = closed ? -1 : order[0], R.end_b = closed ? -1 : order[n - 1];
+    for (int k = 0; k < def->edge_count; ++k)
+        R.total += ori_v2_norm(ori_v2_sub(def->coords[def->edges[2 * k]], def->coords[def->edges[2 * k + 1]]));
     int max_events = def->max_events > 0 ? def->max_events : 100 * n + 100;
     ori_status st = run_motion(&R, max_events, error);
-    if (st == ORI_OK) {
+    // Stopped at the budget (max_events, or cancelled): on request the motion so far, whose last
+    // frame is the state at the stop (an event), checked like a whole one.
+    bool partial = st == ORI_ERR_LIMIT && def->keep_partial && M->frame_count > 0;
+    M->result.stopped = st == ORI_ERR_LIMIT;
+    *cancelled = R.cancelled;
+    if (st == ORI_OK || partial) {
         const ori_v2 *last = M->frames + (size_t)(M->frame_count - 1) * n;
-        M->result.final_ok = final_shape_ok(def, order, closed, last, L.scale);
+        M->result.final_ok = st == ORI_OK && final_shape_ok(def, order, closed, last, L.scale);
         M->result.frames = M->frame_count;
         measure(def, M);
         // the motion's own guarantees, checked over the kept frames: a motion that breaks them
@@ -1290,16 +1323,17 @@ static ori_status attempt(const ori_linkage_def *def, const int *order, bool clo
         else if (M->result.min_distance_change < -ORI_TOL_LINKAGE_CHECK_REL * L.scale)
             st = ori__fail(error, ORI_ERR_NOT_CONVERGED, "motion: a distance decreased by %.3g (not expansive)",
                            -M->result.min_distance_change);
+        if (st != ORI_ERR_LIMIT) partial = false;
     }
     ori__free(R.rhs), ori__free(R.sol), ori__free(R.w1), ori__free(R.w2), ori__free(R.buf);
     ori__free(L.p), ori__free(L.frozen), ori__free(L.fa), ori__free(L.fb), ori__free(L.forder), ori__free(L.ft);
     ori__free(L.e), ori__free(L.adj), ori__free(L.adj_start), ori__free(L.sd), ori__free(L.se);
-    if (st != ORI_OK) {
+    if (st != ORI_OK && !partial) {
         ori_linkage_motion_destroy(M);
         return st;
     }
     *out = M;
-    return ORI_OK;
+    return st;
 }
 
 ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **out, ori_error *error)
@@ -1322,17 +1356,21 @@ ori_status ori_linkage_unfold(const ori_linkage_def *def, ori_linkage_motion **o
     // expansion reversed, then the parabola first.
     ori_linkage_motion *M = NULL;
     for (int variant = 0; variant < 4; ++variant) {
-        st = attempt(def, order, closed, variant, &M, error);
-        bool cycle = st == ORI_ERR_LIMIT && def->max_events == 0; // the automatic limit: flips cycling
+        ori_linkage_motion_destroy(M); // (a partial motion of the variant before)
+        M = NULL;
+        bool cancelled = false;
+        st = attempt(def, order, closed, variant, &M, &cancelled, error);
+        // the automatic limit: flips cycling, another perturbation may not (a cancel is the user's)
+        bool cycle = st == ORI_ERR_LIMIT && def->max_events == 0 && !cancelled;
         if (st != ORI_ERR_NOT_CONVERGED && st != ORI_ERR_INTERNAL && !cycle) break;
     }
     ori__free(order);
-    if (st != ORI_OK) {
+    if (st != ORI_OK && !(st == ORI_ERR_LIMIT && M)) {
         ori_linkage_motion_destroy(M);
         return st;
     }
     *out = M;
-    return ORI_OK;
+    return st;
 }
 
 void ori_linkage_motion_destroy(ori_linkage_motion *motion)
