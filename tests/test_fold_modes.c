@@ -956,6 +956,60 @@ Test(fold_modes, the_output_step_does_not_change_the_path_or_the_verdict, .init 
     ori_pattern_destroy(p);
 }
 
+// The assignment verdict is the solver's, not the output's (fuzz_modes, 450 s run, 2026-12-03):
+// the 2 × 2 waterbomb toward its targets with creases 0 and 127 mod E locked and symmetry
+// orbits. Its output frames at 0.5° once interpolated a state 0.235 % of the way with two
+// mountain creases at +0.010° (against their assignment), which the 59.77° output never
+// sampled: the verdicts differed. Now the verdict judges every accepted solver state (the same
+// for any output step), and no output frame shows a crease against its assignment beyond the
+// check's tolerance unless the verdict says so.
+Test(fold_modes, the_assignment_verdict_does_not_depend_on_the_output_step, .init = test_leak_setup,
+     .fini = test_leak_check)
+{
+    ori_pattern *p = waterbomb(2);
+    ori_mechanism *m = test_mechanism_of(p);
+    int E = ori_mechanism_edge_count(m), F = ori_mechanism_face_count(m);
+    int *group = malloc(sizeof(int) * (size_t)(E + 1));
+    ori_mechanism_symmetry_orbits(m, group);
+    int locks[2] = {0, 127 % E};
+    const double steps_deg[] = {0.5 + 59.5 * 65279.0 / 65535.0, 0.5, 5.0};
+    ori_multifold_verdict ref = ORI_MULTIFOLD_REACHED;
+    for (size_t i = 0; i < sizeof steps_deg / sizeof steps_deg[0]; ++i) {
+        ori_target_fold_def d = ori_default_target_fold_def();
+        d.fixed_face = 253 % F;
+        d.fraction = 1.0;
+        d.step_rad = steps_deg[i] * DEG;
+        d.locked_edges = locks;
+        d.locked_count = 2;
+        d.edge_group = group;
+        ori_multifold *mf = NULL;
+        ori_error err;
+        cr_assert_eq(ori_target_fold_solve(m, &d, &mf, &err), ORI_OK, "%s", err.message);
+        ori_multifold_verdict v = ori_multifold_verdict_of(mf);
+        cr_log_info("step %g°: %s, %d frames: %s", steps_deg[i], ori_multifold_verdict_name(v),
+                    ori_multifold_frame_count(mf), ori_multifold_reason(mf));
+        if (i == 0) ref = v;
+        cr_assert_eq(v, ref, "step %g°: %s, at %g°: %s", steps_deg[i], ori_multifold_verdict_name(v), steps_deg[0],
+                     ori_multifold_verdict_name(ref));
+        if (v != ORI_MULTIFOLD_INVALID_ASSIGNMENT) {
+            for (int f = 0; f < ori_multifold_frame_count(mf); ++f) {
+                const double *a = ori_multifold_frame_angles(mf, f);
+                for (int e = 0; e < E; ++e) {
+                    ori_assignment as = ori_pattern_edge(p, e).assignment;
+                    int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+                    cr_assert(!(sg && a[e] * sg < 0.0 && fabs(a[e]) > ORI_TOL_KIN_STOP_SIGN_RAD),
+                              "step %g°, frame %d: crease %d at %.6g° against its assignment", steps_deg[i], f, e,
+                              a[e] / DEG);
+                }
+            }
+        }
+        ori_multifold_destroy(mf);
+    }
+    free(group);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}
+
 // --- kirigami: cuts are boundaries inside the sheet ------------------------------------------
 
 // The largest change of a distance between two vertices of one face from the flat sheet to the

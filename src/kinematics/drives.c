@@ -156,6 +156,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
     if (mo) {
         memcpy(th0, th, sizeof(double) * (size_t)J);
         ori__mf_record(mo, th, ori__kin_residual(m, th), 0.0);
+        ori__mf_watch(mo, th, 0.0);
         double dt_out = rmax > 0.0 ? fmin(1.0, def->step_rad / rmax) : 1.0;
         double dt_max = rmax > 0.0 ? ORI_MULTIFOLD_MAX_STEP_RAD / rmax : 1.0;
         double h = fmin(dt_out, dt_max), t = 0.0, defect = 0.0;
@@ -258,6 +259,7 @@ ori_status ori_drives_fold_solve(const ori_mechanism *m, const ori_drives_fold_d
             memcpy(th, trial, sizeof(double) * (size_t)J);
             t = tn;
             mo->steps++;
+            ori__mf_watch(mo, th, fmin(t, 1.0));
             if (def->progress && !def->progress(fmin(t, 1.0), def->progress_user)) { // t only grows
                 cancelled = true;
                 break;

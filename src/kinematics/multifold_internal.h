@@ -88,12 +88,23 @@ struct ori_multifold {
     ori_multifold_verdict motion_verdict; // how the motion itself ended (verdict before that check)
     int *off_edge;
     double *off_angle, *off_progress;
+    // The assignment watch over the solver's accepted states (ori__mf_watch), whatever the output
+    // spacing: the start's edge angles, each crease's worst angle against its assignment and the
+    // progress there (edge_count + 1 each; NULL until the first watched state).
+    double *watch_a0, *watch_worst, *watch_at, *watch_buf;
 };
 
 ori_multifold *ori__mf_result_create(const ori_mechanism *m, int fixed_face, ori_rigid fixed_pose);
 // The verdict INVALID_ASSIGNMENT, with the creases named in the reason, when some frame folds
 // an M/V crease against its assignment beyond ORI_TOL_KIN_STOP_SIGN_RAD and further than frame 0.
 void ori__mf_check_assignment(ori_multifold *mo);
+// Watch one accepted solver state (joint angles th, its progress) for creases against their
+// assignment; the first call is the start. ori__mf_check_assignment then judges the watched
+// states, not the output frames, so that the verdict does not depend on the output spacing.
+void ori__mf_watch(ori_multifold *mo, const double *th, double progress);
+// True when joint angles th fold an M/V crease against its assignment beyond what the check
+// allows (after the start was watched): an interpolated output frame that does so is not kept.
+bool ori__mf_against(ori_multifold *mo, const double *th);
 // Append a frame from joint angles.
 void ori__mf_record(ori_multifold *mo, const double *th, double residual, double progress);
 

@@ -329,6 +329,10 @@ void ori_multifold_destroy(ori_multifold *mo)
     ori__free(mo->residual);
     ori__free(mo->progress);
     ori__free(mo->goal);
+    ori__free(mo->watch_a0);
+    ori__free(mo->watch_worst);
+    ori__free(mo->watch_at);
+    ori__free(mo->watch_buf);
     ori__free(mo->vertices);
     ori__free(mo->off_edge);
     ori__free(mo->off_angle);
@@ -353,14 +357,65 @@ void ori_multifold_offending(const ori_multifold *mo, int i, int *edge, double *
 // How many offending creases a reason names (the worst first).
 #define MF_OFFENDING_NAMED 5
 
-void ori__mf_check_assignment(ori_multifold *mo)
+// The sign an M/V crease must keep (+1 valley, −1 mountain; 0: no constraint) and how far it may
+// go against it: the tolerance of the states near a stop (1e-4 rad) — minimum-norm continuation
+// leaves creases of order 1e-5 rad on the wrong side where its first-order projection is not
+// sign-constrained (the flat sheet) and where an unfold ends at the flat state — plus, for a
+// start already against the assignment (a frame read from a file), that start.
+static int mf_sign(const ori_multifold *mo, int e, double a0, double *allowed)
 {
     const ori_mechanism *m = mo->m;
+    int j = m->edge_joint[e];
+    if (j == ORI_NULL_INDEX || m->joints[j].kind != ORI_JOINT_REVOLUTE) return 0;
+    ori_assignment as = m->edges[e].assignment;
+    int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+    *allowed = ORI_TOL_KIN_STOP_SIGN_RAD + (a0 * sg < 0.0 ? fabs(a0) : 0.0);
+    return sg;
+}
+
+void ori__mf_watch(ori_multifold *mo, const double *th, double progress)
+{
+    int E = mo->edge_count;
+    if (!mo->watch_a0) {
+        mo->watch_a0 = ori__alloc(sizeof(double) * (size_t)(E + 1));
+        mo->watch_worst = ori__calloc((size_t)E + 1, sizeof(double));
+        mo->watch_at = ori__calloc((size_t)E + 1, sizeof(double));
+        mo->watch_buf = ori__alloc(sizeof(double) * (size_t)(E + 1));
+        ori__kin_joints_to_edges(mo->m, th, mo->watch_a0);
+        return;
+    }
+    double *a = mo->watch_buf;
+    ori__kin_joints_to_edges(mo->m, th, a);
+    for (int e = 0; e < E; ++e) {
+        double allowed;
+        int sg = mf_sign(mo, e, mo->watch_a0[e], &allowed);
+        if (sg && a[e] * sg < 0.0 && fabs(a[e]) > allowed && fabs(a[e]) > fabs(mo->watch_worst[e])) {
+            mo->watch_worst[e] = a[e];
+            mo->watch_at[e] = progress;
+        }
+    }
+}
+
+bool ori__mf_against(ori_multifold *mo, const double *th)
+{
+    if (!mo->watch_a0) return false;
+    double *a = mo->watch_buf;
+    ori__kin_joints_to_edges(mo->m, th, a);
+    for (int e = 0; e < mo->edge_count; ++e) {
+        double allowed;
+        int sg = mf_sign(mo, e, mo->watch_a0[e], &allowed);
+        if (sg && a[e] * sg < 0.0 && fabs(a[e]) > allowed) return true;
+    }
+    return false;
+}
+
+void ori__mf_check_assignment(ori_multifold *mo)
+{
     int E = mo->edge_count, F = mo->nframes;
     mo->motion_verdict = mo->verdict;
     // Drives that cannot move (as prescribed, or alone) say so: their frames are no motion.
     if (F < 2 || mo->verdict == ORI_MULTIFOLD_UNDERDETERMINED || mo->verdict == ORI_MULTIFOLD_OVERDETERMINED) return;
-    const double *a0 = ori_multifold_frame_angles(mo, 0);
+    const double *a0 = mo->watch_a0 ? mo->watch_a0 : ori_multifold_frame_angles(mo, 0);
     ori__free(mo->off_edge);
     ori__free(mo->off_angle);
     ori__free(mo->off_progress);
@@ -370,18 +425,13 @@ void ori__mf_check_assignment(ori_multifold *mo)
     mo->noff = 0;
     double worst_all = 0.0;
     for (int e = 0; e < E; ++e) {
-        int j = m->edge_joint[e];
-        if (j == ORI_NULL_INDEX || m->joints[j].kind != ORI_JOINT_REVOLUTE) continue;
-        ori_assignment as = m->edges[e].assignment;
-        int sg = as == ORI_ASSIGN_VALLEY ? 1 : as == ORI_ASSIGN_MOUNTAIN ? -1 : 0;
+        double allowed;
+        int sg = mf_sign(mo, e, a0[e], &allowed);
         if (!sg) continue;
-        // A start already against the assignment (a frame read from a file) counts only beyond it.
-        // The tolerance is that of the states near a stop (1e-4 rad): minimum-norm continuation
-        // leaves creases of order 1e-5 rad on the wrong side where its first-order projection
-        // is not sign-constrained (the flat sheet) and where an unfold ends at the flat state.
-        double allowed = ORI_TOL_KIN_STOP_SIGN_RAD + (a0[e] * sg < 0.0 ? fabs(a0[e]) : 0.0);
-        double worst = 0.0, at = 0.0;
-        for (int k = 1; k < F; ++k) {
+        // The solver's accepted states when they were watched (the output frames between them
+        // are interpolations that keep the assignment: ori__mf_against); else the frames.
+        double worst = mo->watch_a0 ? mo->watch_worst[e] : 0.0, at = mo->watch_a0 ? mo->watch_at[e] : 0.0;
+        for (int k = 1; k < F && !mo->watch_a0; ++k) {
             double x = ori_multifold_frame_angles(mo, k)[e];
             if (x * sg < 0.0 && fabs(x) > allowed && fabs(x) > fabs(worst)) {
                 worst = x;
@@ -409,6 +459,7 @@ void ori__mf_check_assignment(ori_multifold *mo)
         }
         order[pos] = i;
     }
+    const ori_mechanism *m = mo->m;
     char before[1024];
     snprintf(before, sizeof before, "%s", mo->reason);
     ori_multifold_verdict was = mo->verdict;
@@ -741,6 +792,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
     double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double D0 = goal_distance(m, joint_var, th, goal);
     ori__mf_record(mo, th, ori__kin_residual(m, th), D0 > 0.0 ? 0.0 : 1.0);
+    ori__mf_watch(mo, th, D0 > 0.0 ? 0.0 : 1.0);
     // The solver's steps do not depend on the output spacing (a fold's path and verdict are the
     // same for every --step): frames between two steps are interpolated (below).
     double hmax = ORI_MULTIFOLD_MAX_STEP_RAD;
@@ -929,6 +981,8 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 bool closed = ori__mf_correct(&sys, x, &im, &rm) && rm <= ORI_TOL_RESIDUAL;
                 for (int j = 0; j < J && closed; ++j)
                     if (joint_var[j] >= 0 && !(fabs(x[j]) <= ORI_PI + ORI_TOL_NEWTON)) closed = false;
+                // (nor one against the assignment: the verdict judges the solver's states)
+                if (closed && ori__mf_against(mo, x)) closed = false;
                 if (!closed) {
                     at_end = true;
                     break;
@@ -952,6 +1006,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
                 since = at_end ? 0.0 : since + moved - (double)(k - 1) * def->step_rad;
                 memcpy(th, trial, sizeof(double) * (size_t)J);
                 mo->steps++;
+                ori__mf_watch(mo, th, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0);
                 last_res = res;
                 recorded = at_end;
                 if (at_end) ori__mf_record(mo, th, res, D0 > 0.0 ? 1.0 - Dn / D0 : 1.0);
@@ -993,6 +1048,7 @@ ori_status ori_target_fold_solve(const ori_mechanism *m, const ori_target_fold_d
             ori__mf_init(&sys, m, joint_var, nv2);
             if (nv2 >= 0 && ori__mf_correct(&sys, trial, &its, &res)) {
                 memcpy(th, trial, sizeof(double) * (size_t)J);
+                ori__mf_watch(mo, th, D0 > 0.0 ? 1.0 - goal_distance(m, joint_var, th, goal) / D0 : 1.0);
                 nvar = nv2;
                 for (int v = 0; v < nvar; ++v) {
                     gvar[v] = 0.0;
