@@ -1365,3 +1365,74 @@ Test(solver_agree, partial_and_fit_outputs_read_back)
     free(out);
     test_tmpdir_remove(dir);
 }
+
+// A degree-5 vertex (fuzz_motion, 3 December 2026): crease 0 locked at 0.24°, crease 4 (at 0°)
+// driven from a folded start toward −75.5°. The branch through the start is steep (crease 1
+// turns 25 times as fast as the drive) and turns back at crease 4 = −0.2469°, a limit of the
+// drive next to the perturbed bifurcation of the near-flat state: the neighbouring branch passes
+// within a fraction of a degree. At 1° and 59.6° output steps the closed form stepped over the
+// limit onto it (its cone-directed first step took no turn bound; then a steep step landed
+// beyond the limit within the correction allowed) and went on to −75.5° ("invalid
+// assignment"); the numeric solver could do the same (finding 4 of docs/fuzzing.md). Now every
+// step has the turn bound and a steep step whose end tangent points back against it is
+// rejected: both stop at the limit, at every output step. The limit is checked independently:
+// the least crease-4 angle along the same branch driven by crease 1 instead.
+static const char *deg5_text =
+    "{\"vertices_coords\":[[0,0],[0.67495230246118831,-0.73786136191180285],[0.62767040119611761,0.77847920168897555],"
+    "[0.00014007025384513269,0.99999999019016195],[-0.67515898083100057,-0.73767225147977777],"
+    "[0.16608174302259207,-0.98611198889100704]],"
+    "\"edges_vertices\":[[0,1],[0,2],[0,3],[0,4],[0,5],[1,2],[2,3],[3,4],[4,5],[5,1]],"
+    "\"edges_assignment\":[\"V\",\"V\",\"M\",\"V\",\"M\",\"B\",\"B\",\"B\",\"B\",\"B\"]}";
+
+Test(solver_agree, a_steep_branch_stops_at_its_drive_limit_next_to_a_perturbed_bifurcation)
+{
+    snprintf(last_text, sizeof last_text, "%s", deg5_text);
+    ori_pattern *p = test_pattern_of_text(deg5_text);
+    ori_mechanism *m = test_mechanism_of(p);
+    // the start as the fuzzer reached it (two runs: the first fold's last frame before and after the fix)
+    static const double starts[2][4] = {
+        {0x1.0e2e5bf838ddp-8, 0x1.10da18f31f7fep-3, -0x1.9be9bd5ac34c3p-8, 0x1.0612504ae5e93p-3},
+        {0x1.0e2e5bf838ddp-8, 0x1.10da18f31f802p-3, -0x1.9be9bd5ac34cbp-8, 0x1.0612504ae5e97p-3},
+    };
+    const double steps_deg[] = {59.585046158541232, 1.0, 0.01};
+    int lock0[1] = {0};
+    // The branch's drive limit from crease 1's side: crease 4's least value along it.
+    double start[10] = {0};
+    memcpy(start, starts[0], sizeof starts[0]);
+    ori_motion_def d1 = ori_default_motion_def();
+    d1.fixed_face = 4, d1.driven_edge = 1, d1.to_rad = 0.2 * DEG, d1.step_rad = 0.0005 * DEG;
+    d1.start_angles_rad = start, d1.locked_edges = lock0, d1.locked_count = 1, d1.solver = ORI_SOLVER_NUMERIC;
+    ori_motion *sweep = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(m, &d1, &sweep, &err), ORI_OK, "%s", err.message);
+    cr_assert_gt(ori_motion_frame_count(sweep), 10000);
+    double least = 0.0;
+    for (int f = 0; f < ori_motion_frame_count(sweep); ++f) least = fmin(least, ori_motion_frame_angles(sweep, f)[4]);
+    ori_motion_destroy(sweep);
+    cr_assert(least / DEG < -0.24 && least / DEG > -0.25, "crease 4's least value %.10g°", least / DEG);
+    for (int si = 0; si < 2; ++si)
+        for (size_t k = 0; k < sizeof steps_deg / sizeof steps_deg[0]; ++k)
+            for (int q = 0; q < 2; ++q) {
+                memcpy(start, starts[si], sizeof starts[si]);
+                ori_motion_def d = ori_default_motion_def();
+                d.fixed_face = 4, d.driven_edge = 4, d.to_rad = -75.512932021057452 * DEG;
+                d.step_rad = steps_deg[k] * DEG, d.start_angles_rad = start, d.locked_edges = lock0, d.locked_count = 1;
+                d.solver = q ? ORI_SOLVER_NUMERIC : ORI_SOLVER_ANALYTIC;
+                ori_motion *mo = NULL;
+                cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+                const char *who = q ? "numeric" : "closed form";
+                cr_assert_eq(ori_motion_verdict_of(mo), ORI_MOTION_BLOCKED, "start %d, %g° steps, %s: %s (%s)", si,
+                             steps_deg[k], who, ori_motion_verdict_name(ori_motion_verdict_of(mo)), ori_motion_reason(mo));
+                ori_motion_block b;
+                cr_assert(ori_motion_block_of(mo, &b));
+                // the stop is the limit (located to 1e-9; the sweep samples it at 0.0005° of crease 1)
+                cr_assert(fabs(b.drive_rad - least) < 1e-6 * DEG, "start %d, %g° steps, %s: stop at %.12g°, limit %.12g°",
+                          si, steps_deg[k], who, b.drive_rad / DEG, least / DEG);
+                int n = ori_motion_frame_count(mo);
+                for (int f = 0; f < n; ++f)
+                    cr_assert_geq(ori_motion_frame_drive(mo, f), least - 1e-9, "frame %d beyond the limit", f);
+                ori_motion_destroy(mo);
+            }
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

@@ -557,6 +557,12 @@
 /// (docs/kinematics.md §6.2).
 #define ORI_KIN_MAX_TURN_RAD 0.1
 #define ORI_KIN_TURN_SHRINK 0.75
+/// A step whose predicted rate max |Δθ|/Δs exceeds this (unitless) is checked for folding back:
+/// the tangent at its end, in the walk's direction, must not point against its secant. Near a
+/// turning point of the drive by a perturbed bifurcation the neighbouring branch can pass within
+/// the correction a steep step allows; a step onto it reverses the tangent (fuzz_motion finding 4,
+/// docs/kinematics.md §6.2). Both solvers; halved like any rejected step.
+#define ORI_KIN_FOLDBACK_RATE 4.0
 
 /// A fully folded start (docs/kinematics.md §6.3): a moving crease within this of ±π is at the
 /// limit; the branch analysis lets it move only toward 0 (its admitted fold direction is −sign θ,

@@ -609,6 +609,21 @@ static bool escape_straight(const ctx *c, const kin_escape *e)
 // over the last step's rate max |Δθ|/Δs, so that no moving crease turns further; a prediction
 // that still turns one further is shortened before it is corrected (outside the escape).
 #define ORI_KIN_HISTORY 6
+
+// Whether an accepted step from th to x over the drive change ds folds back: the tangent at x
+// (per unit drive), taken in the walk's direction, points against the step's secant in (drive,
+// angles) space. The step then crossed a turning point of the drive onto the neighbouring
+// branch (ORI_KIN_FOLDBACK_RATE). A state without a tangent (singular) is left to the stop logic.
+static bool folds_back(ctx *c, const double *th, const double *x, double ds, double *tbuf)
+{
+    const ori_mechanism *m = c->m;
+    if (!ori__kin_tangent(c->solver, x, tbuf)) return false;
+    double dot = ds * ds;
+    for (int j = 0; j < m->joint_count; ++j)
+        if (j != c->jd) dot += (x[j] - th[j]) * ds * tbuf[j];
+    return dot < 0.0;
+}
+
 static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, const double *t_first,
                                const kin_escape *esc)
 {
@@ -622,6 +637,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
     double *thp = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double *pred = ori__alloc(sizeof(double) * (size_t)(J + 1));
     double *trial = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *scratch_t = ori__alloc(sizeof(double) * (size_t)(J + 1)); // the fold-back test's tangent
     double *hist = ori__alloc(sizeof(double) * (size_t)(J + 1) * ORI_KIN_HISTORY);
     double hs[ORI_KIN_HISTORY]; // drive values, oldest first
     int nh = 0, hist0 = 0;
@@ -709,7 +725,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         // steepens): shorten the step before correcting. A steep branch is followed in steps
         // short against its turn, whatever the output step: a step across it could be corrected
         // onto another branch that passes within half the predicted change.
-        if (!in_esc && !(singular_first && first)) {
+        if (!in_esc) {
             double turn = 0.0;
             for (int j = 0; j < J; ++j)
                 if (c->col[j] >= 0) turn = fmax(turn, fabs(pred[j] - c->th[j]));
@@ -734,6 +750,9 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         // A moving crease turned past ±π within this step (or only seems to, near a fully folded
         // state): halve; a stop there is located by locate_stop.
         if (accept && beyond_limit(c, trial)) accept = false;
+        // A steep step that folded back onto the neighbouring branch (tangent reversed).
+        if (accept && !in_esc && tn > ORI_KIN_FOLDBACK_RATE && folds_back(c, c->th, trial, snew - s, scratch_t))
+            accept = false;
         if (!accept) {
             c->mo->stats.rejected_steps++;
             t_here = false; // as before the turn bound: the tangent is computed afresh after a correction
@@ -800,6 +819,7 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
     ori__free(thp);
     ori__free(pred);
     ori__free(trial);
+    ori__free(scratch_t);
     ori__free(hist);
 #undef HIST
     return result;
@@ -821,6 +841,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
     for (int i = 0; i < 3 && t_first; ++i) steep_start = steep_start || fabs(t_first[fj[i]]) > ORI_KIN_STEEP_START_RATE;
     if (s1 == s) return LEG_OK;
     double *scratch = ori__alloc(sizeof(double) * (size_t)(J + 1));
+    double *fb_t = ori__alloc(sizeof(double) * (size_t)(J + 1)); // the fold-back test's tangent
     double sg = s1 > s ? 1.0 : -1.0;
     // The last accepted states (drive, three free angles), oldest first: the prediction is their
     // Lagrange extrapolation (as the numeric solver's), which also stands in where the closed
@@ -883,7 +904,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
                 for (int q = 0; q < nh; ++q) pred[i] += w[q] * hx[q][i];
             }
         }
-        if (!in_esc && !by_cone) {
+        if (!in_esc) {
             double turn = 0.0;
             for (int i = 0; i < 3; ++i) turn = fmax(turn, fabs(pred[i] - c->th[fj[i]]));
             // (Down to ORI_KIN_MIN_STEP_RAD: a step that short is corrected and judged as any.)
@@ -931,6 +952,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         if (nc > 0) {
             memcpy(scratch, c->th, sizeof(double) * (size_t)J);
             for (int i = 0; i < 3; ++i) scratch[fj[i]] = cand[k][i];
+            scratch[c->jd] = snew;
         }
         // The chosen solution is far from the prediction (the branch turns faster than the step
         // resolves, and the nearest candidate may be the other branch): the numeric solver's
@@ -943,6 +965,8 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
                 move = fmax(move, fabs(cand[k][i] - pred[i]));
             }
             jump = move > ORI_KIN_MAX_CORRECTION * hh * tn + ORI_KIN_CORRECTION_SLACK_RAD;
+            // (a steep step onto the neighbouring branch: the tangent there reversed)
+            if (!jump && tn > ORI_KIN_FOLDBACK_RATE && folds_back(c, c->th, scratch, snew - s, fb_t)) jump = true;
         }
         // No solution, a jump, or a moving crease turned past ±π within this step (or only seems
         // to, near a fully folded state): halve; a stop there is located by locate_stop.
@@ -1003,6 +1027,7 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         }
     }
     ori__free(scratch);
+    ori__free(fb_t);
     return result;
 }
 
