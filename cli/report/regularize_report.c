@@ -39,6 +39,9 @@ const char *cli_regularize_refusal(const ori_regularize_result *r, const ori_reg
     else if (!def->rigid_only && !r->flat_foldable && r->check_vertex != ORI_NULL_INDEX)
         snprintf(buf, size, "Kawasaki holds after the moves, but vertex %d is not flat-foldable (%s): %s", r->check_vertex,
                  ori_flat_rule_name((ori_flat_rule)r->check_rule), r->check_detail);
+    else if (!r->converged && def->rigid_only)
+        snprintf(buf, size, "no rigidly foldable pattern was found near this one (rigid defect %.3g after %d iterations)",
+                 r->rigid_after, r->iterations);
     else if (!r->converged && rigid)
         snprintf(buf, size,
                  "no rigidly foldable pattern was found near this one (Kawasaki %.3g rad, rigid defect %.3g after %d "
