@@ -200,6 +200,8 @@ static int run(int argc, char **argv)
     if (!a.json && locks_hint[0]) printf("hint: %s\n", locks_hint);
     bool valid = ori_motion_verdict_of(mo) == ORI_MOTION_VALID;
     rc = valid && !cli_collides(&col) ? CLI_EXIT_OK : CLI_EXIT_NEGATIVE;
+    ori_motion_block stop;
+    if (ori_motion_block_of(mo, &stop) && stop.kind == ORI_BLOCK_STEP_LIMIT) rc = CLI_EXIT_PARTIAL; // (the budget)
     // A blocked fold writes its motion up to the stop, marked "orikin:partial".
     bool blocked = ori_motion_verdict_of(mo) == ORI_MOTION_BLOCKED && ori_motion_frame_count(mo) > 0;
     if (a.out && (valid || blocked)) {
@@ -236,7 +238,8 @@ const cli_command cli_cmd_fold = {
     "would pass through each other) or at a singular point (the creases that can move there are\n"
     "named); no crease ever leaves [-180, 180] deg. From the flat sheet the branch is found once,\n"
     "a fixed 1 deg out: the verdict depends on neither --step nor how small --to is.\n"
-    "Exit 0 valid, 1 invalid / not foldable / underdetermined / blocked / collision, 3 bad input.\n"
+    "Exit 0 valid, 1 invalid / not foldable / underdetermined / blocked / collision, 3 bad input,\n"
+    "5 stopped at the budget of 50000 steps (the motion so far; beyond it, undetermined).\n"
     "\n"
     "options:\n"
     "  --fix FACE      face held fixed: FOLD index, name (Obj12) or @x,y (the face there);\n"

@@ -1243,3 +1243,38 @@ Test(kinematics, dof_says_when_its_nearby_motion_ignores_the_assignment)
         ori_pattern_destroy(p);
     }
 }
+
+// The step budget (ori_motion_def.max_steps, default ORI_KIN_MAX_WALK_STEPS): the 2 × 2 waterbomb
+// from flat with the lock set --lock auto proposes for crease 20 is a branch the drive barely
+// moves along (steps of ~4e-7 rad, one rejected per accepted): before the budget, `fold
+// --lock auto` ran past ten minutes in the proposal's trial folds. The motion stops when the
+// budget is spent, the stop of kind ORI_BLOCK_STEP_LIMIT, its frames closed up to there.
+Test(kinematics, a_creeping_motion_stops_at_its_step_budget, .init = test_leak_setup, .fini = test_leak_check)
+{
+    ori_pattern *p = test_load_pattern("tests/data/waterbomb-2x2.fold", 0);
+    ori_mechanism *m = test_mechanism_of(p);
+    int locks[] = {4, 15, 16, 17, 19, 23, 31, 36, 37, 39, 41, 42};
+    ori_motion_def d = ori_default_motion_def();
+    cr_assert_eq(d.max_steps, ORI_KIN_MAX_WALK_STEPS);
+    d.fixed_face = 0, d.driven_edge = 20, d.to_rad = ORI_PI / 2, d.step_rad = 10.0 * ORI_PI / 180.0;
+    d.locked_edges = locks, d.locked_count = 12;
+    d.max_steps = 2000;
+    ori_motion *mo = NULL;
+    ori_error err;
+    cr_assert_eq(ori_motion_solve(m, &d, &mo, &err), ORI_OK, "%s", err.message);
+    ori_motion_block b;
+    cr_assert(ori_motion_block_of(mo, &b), "%s", ori_motion_reason(mo));
+    cr_assert_eq(b.kind, ORI_BLOCK_STEP_LIMIT, "%s", ori_motion_reason(mo));
+    ori_motion_stats st = ori_motion_stats_of(mo);
+    cr_assert_eq(st.steps + st.rejected_steps, 2000);
+    cr_assert(strstr(ori_motion_reason(mo), "after 2000 continuation steps (the budget)") != NULL, "%s", ori_motion_reason(mo));
+    int n = ori_motion_frame_count(mo);
+    cr_assert_geq(n, 2);
+    cr_assert_gt(b.drive_rad, 0.0);
+    cr_assert_lt(b.drive_rad, d.to_rad);
+    cr_assert_float_eq(ori_motion_frame_drive(mo, n - 1), b.drive_rad, 1e-15);
+    for (int f = 0; f < n; ++f) cr_assert_leq(ori_mechanism_residual(m, ori_motion_frame_angles(mo, f)), 1e-9);
+    ori_motion_destroy(mo);
+    ori_mechanism_destroy(m);
+    ori_pattern_destroy(p);
+}

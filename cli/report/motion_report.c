@@ -8,7 +8,9 @@ json_t *cli_motion_block_json(const ori_motion *mo)
     if (!ori_motion_block_of(mo, &b)) return json_null();
     json_t *o = json_object();
     bool limit = b.kind == ORI_BLOCK_CREASE_LIMIT;
-    json_object_set_new(o, "kind", json_string(limit ? "crease_limit" : "singular"));
+    json_object_set_new(o, "kind", json_string(limit                               ? "crease_limit"
+                                               : b.kind == ORI_BLOCK_STEP_LIMIT ? "step_limit"
+                                                                                : "singular"));
     json_object_set_new(o, "drive_deg", json_real(ori_rad_to_deg_output(b.drive_rad)));
     json_object_set_new(o, "edge", limit ? json_integer(b.edge) : json_null());
     json_object_set_new(o, "edge_angle_deg", limit ? json_real(ori_rad_to_deg_output(b.edge_angle_rad)) : json_null());

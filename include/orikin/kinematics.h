@@ -269,6 +269,8 @@ typedef struct ori_motion_def {
     void *progress_user;
     bool last_frame_only;           ///< keep only the last output frame (frame count ≤ 1; stats.frames counts them all):
                                     ///< a 1000 × 1000 sheet's 101 frames would be 1.6 GB. Default false
+    int max_steps;                  ///< continuation steps at most, accepted and rejected (the budget; past it the motion
+                                    ///< stops with ORI_BLOCK_STEP_LIMIT); default ORI_KIN_MAX_WALK_STEPS
     int internal_value;             ///< set by ori_default_motion_def; do not change
 } ori_motion_def;
 
@@ -331,6 +333,8 @@ typedef enum ori_block_kind {
     ORI_BLOCK_NONE = 0,        ///< not blocked
     ORI_BLOCK_CREASE_LIMIT,    ///< a moving crease reached ±180° (its faces would pass through each other beyond)
     ORI_BLOCK_SINGULAR,        ///< no state beyond: a limit of the drive or a bifurcation (singular Jacobian)
+    ORI_BLOCK_STEP_LIMIT,      ///< the budget: ORI_KIN_MAX_WALK_STEPS steps spent (the drive barely moves along the branch);
+                               ///< the motion beyond is undetermined (a partial answer, not a verdict on it)
 } ori_block_kind;
 
 /// Where and why a fold stopped before its target (ori_motion_block).

@@ -563,6 +563,12 @@
 /// the correction a steep step allows; a step onto it reverses the tangent (fuzz_motion finding 4,
 /// docs/kinematics.md §6.2). Both solvers; halved like any rejected step.
 #define ORI_KIN_FOLDBACK_RATE 4.0
+/// Budget of one fold motion: continuation steps (accepted and rejected, both solvers) at most. A
+/// branch the drive barely moves along (a crease turning 10⁵ times as fast, near a limit the
+/// drive creeps towards) is walked in steps of 1e-7 rad; past this many the motion stops
+/// (ORI_BLOCK_STEP_LIMIT), its frames up to there a partial answer. A 100 × 100 Miura-ori takes
+/// 100 steps; no fold of the test suite comes near it.
+#define ORI_KIN_MAX_WALK_STEPS 50000
 
 /// A fully folded start (docs/kinematics.md §6.3): a moving crease within this of ±π is at the
 /// limit; the branch analysis lets it move only toward 0 (its admitted fold direction is −sign θ,

@@ -581,7 +581,7 @@ static PyObject *motion_info(PyObject *obj, PyObject *args)
         PyObject *blk = Py_NewRef(Py_None);
         if (ori_motion_block_of(self->mo, &b)) {
             Py_DECREF(blk);
-            blk = ori_py_dict("kind", PyUnicode_FromString(b.kind == ORI_BLOCK_CREASE_LIMIT ? "crease_limit" : "singular"),
+            blk = ori_py_dict("kind", PyUnicode_FromString(b.kind == ORI_BLOCK_CREASE_LIMIT ? "crease_limit" : b.kind == ORI_BLOCK_STEP_LIMIT ? "step_limit" : "singular"),
                               "drive_rad", PyFloat_FromDouble(b.drive_rad), "edge",
                               b.edge == ORI_NULL_INDEX ? Py_NewRef(Py_None) : PyLong_FromLong(b.edge), "edge_angle_rad",
                               PyFloat_FromDouble(b.edge_angle_rad), "singular_edges",

@@ -63,6 +63,7 @@ ori_motion_def ori_default_motion_def(void)
     d.progress = NULL;
     d.progress_user = NULL;
     d.last_frame_only = false;
+    d.max_steps = ORI_KIN_MAX_WALK_STEPS;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -124,6 +125,7 @@ typedef struct ctx {
     double approach_floor; // … nor need be shorter than this, and within 16 × this of it no longer (radians)
     int label; // closed form: the branch label followed (±1), 0 until known
     double leg_end; // the end of the leg being walked (a stop is never located beyond it)
+    int max_steps;        // the step budget (def->max_steps)
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -610,6 +612,17 @@ static bool escape_straight(const ctx *c, const kin_escape *e)
 // that still turns one further is shortened before it is corrected (outside the escape).
 #define ORI_KIN_HISTORY 6
 
+// The motion's step budget (ORI_KIN_MAX_WALK_STEPS) is spent: the walk stops where it is, a stop
+// of kind ORI_BLOCK_STEP_LIMIT (not located: the branch goes on, the budget ended it).
+static bool step_budget_spent(ctx *c)
+{
+    if ((long)c->mo->stats.steps + c->mo->stats.rejected_steps < c->max_steps) return false;
+    c->blocked_at = c->th[c->jd];
+    c->block_kind = ORI_BLOCK_STEP_LIMIT;
+    c->block_joint = -1;
+    return true;
+}
+
 // Whether an accepted step from th to x over the drive change ds folds back: the tangent at x
 // (per unit drive), taken in the walk's direction, points against the step's secant in (drive,
 // angles) space. The step then crossed a turning point of the drive onto the neighbouring
@@ -663,6 +676,10 @@ static leg_result numeric_walk(ctx *c, double s1, double step_out, bool rec, con
         s = c->th[c->jd];
         if (c->cancelled) break; // the progress callback asked to stop (ori_motion_solve fails)
         if (s == s1 && (!rec || target == s1)) break;
+        if (step_budget_spent(c)) {
+            result = LEG_BLOCKED;
+            break;
+        }
         double dist = fabs(target - s);
         // Within the escape the prediction does not depend on the step: go straight to the
         // next output value, but through the escape's end (beyond it the tangent takes over);
@@ -872,6 +889,10 @@ static leg_result analytic_walk(ctx *c, double s1, double step_out, bool rec, co
         s = c->th[c->jd];
         if (c->cancelled) break; // the progress callback asked to stop (ori_motion_solve fails)
         if (s == s1 && (!rec || target == s1)) break;
+        if (step_budget_spent(c)) {
+            result = LEG_BLOCKED;
+            break;
+        }
         double dist = fabs(target - s);
         bool in_esc = esc && (s - esc->s1) * sg < 0.0;
         // Out of the start the branch is the tangent's (the cone's at a singular start), as for
@@ -1666,6 +1687,13 @@ static void describe_stop(ori_motion *mo, const ori_motion_block *b, int driven_
                  driven_edge, deg(b->drive_rad), b->edge, deg(b->edge_angle_rad), b->edge_angle_rad < 0 ? "-" : "");
         return;
     }
+    if (b->kind == ORI_BLOCK_STEP_LIMIT) {
+        snprintf(p, room,
+                 "the motion stopped at crease %d = %.10g° after %d continuation steps (the budget): the drive barely "
+                 "moves along this branch there, the motion beyond is undetermined",
+                 driven_edge, deg(b->drive_rad), mo->stats.steps + mo->stats.rejected_steps);
+        return;
+    }
     int w = snprintf(p, room, "the motion stops at crease %d = %.10g°, a singular point (a limit of the drive or a "
                               "bifurcation)",
                      driven_edge, deg(b->drive_rad));
@@ -1726,6 +1754,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
     memset(&c, 0, sizeof c);
     c.m = m;
     c.jd = jd;
+    c.max_steps = def->max_steps > 0 ? def->max_steps : ORI_KIN_MAX_WALK_STEPS;
     c.last_residual = -1.0;
     c.col = ori__alloc(sizeof(int) * (size_t)(J + 1));
     c.th = ori__alloc(sizeof(double) * (size_t)(J + 1));
@@ -1813,7 +1842,7 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
         if (b->kind == ORI_BLOCK_CREASE_LIMIT) {
             b->edge = m->joints[c.block_joint].edge;
             b->edge_angle_rad = fmax(-ORI_PI, fmin(ORI_PI, c.th[c.block_joint]));
-        } else {
+        } else if (b->kind == ORI_BLOCK_SINGULAR) {
             singular_set(&c, b);
         }
     }
