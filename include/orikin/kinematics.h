@@ -269,8 +269,9 @@ typedef struct ori_motion_def {
     void *progress_user;
     bool last_frame_only;           ///< keep only the last output frame (frame count ≤ 1; stats.frames counts them all):
                                     ///< a 1000 × 1000 sheet's 101 frames would be 1.6 GB. Default false
-    int max_steps;                  ///< continuation steps at most, accepted and rejected (the budget; past it the motion
-                                    ///< stops with ORI_BLOCK_STEP_LIMIT); default ORI_KIN_MAX_WALK_STEPS
+    int max_steps;                  ///< continuation steps at most, accepted and rejected, beyond twice the output steps
+                                    ///< the range asks for (the budget; past it the motion stops with
+                                    ///< ORI_BLOCK_STEP_LIMIT); default ORI_KIN_MAX_WALK_STEPS
     int internal_value;             ///< set by ori_default_motion_def; do not change
 } ori_motion_def;
 

@@ -125,7 +125,7 @@ typedef struct ctx {
     double approach_floor; // … nor need be shorter than this, and within 16 × this of it no longer (radians)
     int label; // closed form: the branch label followed (±1), 0 until known
     double leg_end; // the end of the leg being walked (a stop is never located beyond it)
-    int max_steps;        // the step budget (def->max_steps)
+    long max_steps;       // the step budget (def->max_steps and twice the output's steps)
 } ctx;
 
 static int assigned_sign(const ori_mechanism *m, int j)
@@ -1754,7 +1754,16 @@ ori_status ori_motion_solve(const ori_mechanism *m, const ori_motion_def *def, o
     memset(&c, 0, sizeof c);
     c.m = m;
     c.jd = jd;
-    c.max_steps = def->max_steps > 0 ? def->max_steps : ORI_KIN_MAX_WALK_STEPS;
+    {
+        // The budget is on top of the steps the output asks for (every output state is a step's
+        // end): twice the planned output steps of the whole way (from, then to).
+        double s0 = def->start_angles_rad ? def->start_angles_rad[def->driven_edge] : 0.0, way = 0.0;
+        if (def->has_from) way = fabs(def->from_rad - s0) + fabs(def->to_rad - def->from_rad);
+        else way = fabs(def->to_rad - s0);
+        double planned = def->step_rad > 0.0 ? way / def->step_rad : 0.0;
+        double budget = (def->max_steps > 0 ? def->max_steps : ORI_KIN_MAX_WALK_STEPS) + 2.0 * fmin(planned, 1e9);
+        c.max_steps = budget < 2e9 ? (long)budget : 2000000000L;
+    }
     c.last_residual = -1.0;
     c.col = ori__alloc(sizeof(int) * (size_t)(J + 1));
     c.th = ori__alloc(sizeof(double) * (size_t)(J + 1));
