@@ -286,11 +286,11 @@ static ori_collision_motion_def fc_check_def(fk_bytes *b)
 {
     ori_collision_motion_def cm = ori_default_collision_motion_def();
     switch (fk_u8(b) % 8) {
-    case 0: cm.drive_tol_rad = 0.0; break;
-    case 1: cm.drive_tol_rad = -1.0; break;
-    case 2: cm.drive_tol_rad = NAN; break;
-    case 3: cm.drive_tol_rad = INFINITY; break;
-    case 4: break; // the default
+    case 0: case 1: break; // the default (also past the input's end)
+    case 2: cm.drive_tol_rad = 0.0; break;
+    case 3: cm.drive_tol_rad = -1.0; break;
+    case 4: cm.drive_tol_rad = NAN; break;
+    case 5: cm.drive_tol_rad = INFINITY; break;
     default: cm.drive_tol_rad = fk_range(b, 1e-6, 0.2); break;
     }
     return cm;
@@ -310,9 +310,10 @@ static void fc_motion_checks(fk_bytes *b, const ori_pattern *p, const ori_mechan
         fk_check_motion(m, mo);
         ori_trajectory t = ori_trajectory_of_motion(m, &d, mo);
         int n = ori_trajectory_frame_count(&t);
-        // A few states checked in full.
+        // A few states checked in full: the last frame, the middle one, a fuzzed one.
         for (int q = 0; q < 3 && n > 0; ++q) {
-            ori_trajectory_frame_vertices(&t, fk_u8(b) % n, pos);
+            int k = q == 0 ? n - 1 : q == 1 ? n / 2 : fk_u8(b) % n;
+            ori_trajectory_frame_vertices(&t, k, pos);
             fc_state(b, p, col, c, fv, pos);
         }
         ori_collision_motion_def cm = fc_check_def(b);
@@ -325,6 +326,37 @@ static void fc_motion_checks(fk_bytes *b, const ori_pattern *p, const ori_mechan
         if (st2 != st || st3 != st) abort();
         if (st == ORI_OK && (!fc_same_event(&ev, &ev2) || !fc_same_event(&ev, &ev3))) abort();
         ori_motion_destroy(mo);
+    }
+
+    // A hostile state: fold angles that need not close (each vertex placed by the face nearest the
+    // fixed one), some vertices moved anywhere, sometimes a coordinate that is not finite (refused
+    // with ORI_ERR_RANGE). Triangles stay planar, so single vertices give crossings here.
+    if (fk_u8(b) & 1) {
+        int E = ori_mechanism_edge_count(m);
+        double *a = malloc(sizeof(double) * (size_t)(E + 1));
+        for (int e = 0; e < E; ++e) a[e] = fk_range(b, -ORI_PI, ORI_PI);
+        ori_mechanism_vertex_positions(m, a, 0, ori_rigid_identity(), pos);
+        free(a);
+        double L = ori_pattern_diagonal(p);
+        int moves = fk_u8(b) % 4;
+        for (int i = 0; i < moves; ++i) {
+            int v = fk_u8(b) % V;
+            pos[v].x += fk_range(b, -L, L);
+            pos[v].y += fk_range(b, -L, L);
+            pos[v].z += fk_range(b, -L, L);
+        }
+        uint8_t poison = fk_u8(b);
+        if (poison >= 240) {
+            static const double bad[3] = {NAN, INFINITY, -INFINITY};
+            pos[poison % V].z = bad[poison % 3];
+            ori_collision_result r;
+            ori_error e2;
+            ori_status st = ori_collider_check(col, pos, &r, &e2);
+            fc_refusal(st, &e2);
+            if (st != ORI_ERR_RANGE) abort();
+        } else {
+            fc_state(b, p, col, c, fv, pos);
+        }
     }
 
     // A one- or two-fold sequence, checked as a record.
