@@ -317,14 +317,13 @@ static void fc_motion_checks(fk_bytes *b, const ori_pattern *p, const ori_mechan
             fc_state(b, p, col, c, fv, pos);
         }
         ori_collision_motion_def cm = fc_check_def(b);
-        ori_collision_event ev, ev2, ev3;
+        ori_collision_event ev, ev2;
         ori_status st = ori_collision_check_motion(col, m, &d, mo, &cm, &ev, &err);
         if (!(cm.drive_tol_rad > 0.0) && st != ORI_ERR_RANGE) abort();
         fc_event(col, &t, c, st, &err, &ev);
-        ori_status st2 = ori_collision_check_motion(col, m, &d, mo, &cm, &ev2, &err);
-        ori_status st3 = ori_collision_check_trajectory(col, &t, &cm, &ev3, &err);
-        if (st2 != st || st3 != st) abort();
-        if (st == ORI_OK && (!fc_same_event(&ev, &ev2) || !fc_same_event(&ev, &ev3))) abort();
+        // Again through the trajectory view: the same answer (determinism and the view at once).
+        ori_status st2 = ori_collision_check_trajectory(col, &t, &cm, &ev2, &err);
+        if (st2 != st || (st == ORI_OK && !fc_same_event(&ev, &ev2))) abort();
         ori_motion_destroy(mo);
     }
 
@@ -366,7 +365,7 @@ static void fc_motion_checks(fk_bytes *b, const ori_pattern *p, const ori_mechan
         size_t len = (size_t)snprintf(text, sizeof text, "{\"pattern\":\"x.fold\",\"folds\":[");
         for (int k = 0; k < nf; ++k) {
             ori_motion_def s = fk_fold(b, m, locks);
-            double step = s.step_rad < 15.0 * FK_DEG ? 15.0 * FK_DEG : s.step_rad;
+            double step = s.step_rad < 20.0 * FK_DEG ? 20.0 * FK_DEG : s.step_rad;
             len += (size_t)snprintf(text + len, sizeof text - len, "%s{\"fix\":%d,\"drive\":%d,\"to\":%.17g,\"step\":%.17g}",
                                     k ? "," : "", s.fixed_face, s.driven_edge, s.to_rad / FK_DEG, step / FK_DEG);
         }
@@ -395,8 +394,8 @@ static void fc_motion_checks(fk_bytes *b, const ori_pattern *p, const ori_mechan
         int F = ori_mechanism_face_count(m), E = ori_mechanism_edge_count(m);
         td.fixed_face = F > 0 ? fk_u8(b) % F : 0;
         td.fraction = fk_range(b, 0.0, 1.0);
-        td.step_rad = fk_range(b, 15.0, 90.0) * FK_DEG;
-        td.max_steps = 1 + fk_u8(b) % 24;
+        td.step_rad = fk_range(b, 20.0, 90.0) * FK_DEG;
+        td.max_steps = 1 + fk_u8(b) % 8;
         int tl[2], nl = fk_u8(b) % 3;
         for (int i = 0; i < nl; ++i) tl[i] = E > 0 ? fk_u8(b) % E : 0;
         td.locked_edges = tl;
