@@ -2,17 +2,19 @@
 // FOLD document (it starts with '{'; frame 0, at most 64 vertices and 160 edges, as fuzz_layers
 // reads it) or bytes that make a nearly flat-foldable pattern: a single vertex of degree 4, 6 or
 // 8 whose alternate sectors sum to π, with a Maekawa assignment (or a fuzzed one), or a generated
-// Miura or square twist of at most 2 × 2 cells; its vertices then jittered (up to about 1e-3 of
+// Miura, Yoshimura or square twist of at most 2 × 2 cells; its vertices then jittered (up to about 1e-3 of
 // its size, sometimes not at all) and the pattern rebuilt from FOLD text. Options fuzzed: rigid,
 // rigid only, max_move_rel (0, tiny, the default, 1, huge, inf) and 1–8 iterations (bounded work).
-// Invariants: no crash, leak or sanitizer report; a refusal carries a message and gives no
-// pattern; iterations ≤ the limit; a pattern is given only for a converged, not refused answer
-// with no crossing edge, and then it has the same vertex, edge and face counts, the same edge
-// ends, assignments and fold angles, Kawasaki after ≤ ORI_TOL_REGULARIZE_KAWASAKI_RAD and (but
-// rigid only) passes ori_flat_check_pattern exactly as flat_foldable says, no vertex moved
-// farther than the reported max_move_rel ≤ the option's, the reported vertex the one that moved
-// most, rms ≤ max; an answer without a pattern is not converged, refused or crossing; a vertex of
-// odd degree is never converged but with rigid only; the same input twice gives the same answer.
+// Invariants: no crash, leak or sanitizer report; a refusal carries a message and gives no pattern;
+// iterations ≤ the limit; a pattern is given only for a converged, not refused answer with no
+// crossing edge, and then it has the same vertex, edge and face counts, the same edge ends,
+// assignments and fold angles, Kawasaki after ≤ ORI_TOL_REGULARIZE_KAWASAKI_RAD and (but rigid
+// only) passes ori_flat_check_pattern exactly as flat_foldable says, no vertex moved farther than
+// the reported max_move_rel ≤ the option's, the reported vertex the one that moved most, the moved
+// ones counted, rms ≤ max; refused only beyond the limit; an answer without a pattern is not
+// converged, refused or crossing; a vertex of odd degree is never converged but with rigid only;
+// the same input twice gives the same answer; the result regularized again is converged and moves
+// no vertex farther than 1e-9 of the diagonal.
 #include <float.h>
 #include <math.h>
 #include <orikin/orikin.h>
@@ -173,6 +175,7 @@ static void fr_check(const ori_pattern *p, const ori_regularize_def *def)
     if (!(r.check_vertex == ORI_NULL_INDEX || (r.check_vertex >= 0 && r.check_vertex < V))) abort();
     if (!(r.max_move_rel >= 0.0) || !(r.rms_move_rel >= 0.0)) abort();
     if (r.converged && r.odd_vertex != ORI_NULL_INDEX && !def->rigid_only) abort(); // no move helps an odd degree
+    if (r.refused && !(r.max_move_rel > def->max_move_rel)) abort(); // refused only beyond the limit
     if (!q) {
         if (r.converged && !r.refused && r.crossing_edge == ORI_NULL_INDEX) abort(); // where is the pattern?
         return;
@@ -221,7 +224,17 @@ static void fr_check(const ori_pattern *p, const ori_regularize_def *def)
     } else if (most > 1e-15) {
         abort(); // moved, but no vertex named
     }
-    (void)moved;
+    if (moved != r.moved_vertices) abort();
+    // Idempotent: the result regularized again is converged and (nearly) stays where it is.
+    ori_pattern *q3 = NULL;
+    ori_regularize_result r3;
+    if (fr_run(q, def, &q3, &r3) != ORI_OK) abort();
+    if (!q3 || !r3.converged || !(r3.max_move_rel <= 1e-9)) {
+        fprintf(stderr, "regularized again: converged %d, pattern %d, moved %.3g (first %.3g)\n", r3.converged, q3 != NULL,
+                r3.max_move_rel, r.max_move_rel);
+        abort();
+    }
+    ori_pattern_destroy(q3);
     ori_pattern_destroy(q);
 }
 
