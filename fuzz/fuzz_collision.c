@@ -2,7 +2,9 @@
 // (fuzz_kin.h: a single vertex of degree 4–8 or a generated tessellation of at most 2 × 2 cells)
 // folded along a fuzzed fold (coarse steps, ≥ 10°), then: ori_collider_create with a fuzzed
 // clearance (hostile values too: 0, −0, negative, NaN, ±inf, huge, tiny), ori_collider_check at a
-// few frames, the cloud of proximity with fuzzed spacing and distance (a small sample limit), and
+// few frames and at a hostile state (fold angles that need not close, vertices moved anywhere, a
+// coordinate not finite), the cloud of proximity with fuzzed spacing and distance (hostile too,
+// a small sample limit), and
 // ori_collision_check_motion / _trajectory on the fold, _record on a one- or two-fold sequence and
 // _multifold on a bounded target fold, with a fuzzed drive tolerance.
 // Invariants: no crash, leak or sanitizer report; a refusal carries a message (and a bad
@@ -13,7 +15,8 @@
 // twice gives the same answer; at a smaller clearance the penetrating and touching pairs are the
 // same, the NEAR pairs a subset (those nearer than it), the least clearance the same; brute force:
 // the least clearance is at most any vertex–vertex distance of two faces sharing no vertex, and a
-// pair with two vertices nearer than the clearance is reported; cloud pairs are sorted, share no
+// pair with two vertices nearer than the clearance is reported, two triangles one of whose edges
+// passes through the other well inside are reported penetrating; cloud pairs are sorted, share no
 // vertex, lie within the distance and not below the exact clearance; a motion's first colliding
 // frame has only clean frames before it (checked one by one), a clean motion only clean frames,
 // and the trajectory view gives the same event as the direct call.
@@ -148,6 +151,52 @@ static void fc_brute(const ori_collider *col, const fc_faces *fv, const ori_v3 *
         }
 }
 
+// An edge p0–p1 crossing triangle abc's plane (its ends at least margin on either side) at a point
+// inside the triangle at least margin from its sides: the faces cross there.
+static bool fc_edge_pierces(ori_v3 p0, ori_v3 p1, ori_v3 a, ori_v3 b, ori_v3 c, double margin)
+{
+    ori_v3 n = ori_v3_cross(ori_v3_sub(b, a), ori_v3_sub(c, a));
+    double nn = ori_v3_norm(n);
+    if (!(nn > 0.0)) return false;
+    n = ori_v3_scale(n, 1.0 / nn);
+    double d0 = ori_v3_dot(n, ori_v3_sub(p0, a)), d1 = ori_v3_dot(n, ori_v3_sub(p1, a));
+    if (!((d0 >= margin && d1 <= -margin) || (d0 <= -margin && d1 >= margin))) return false;
+    ori_v3 x = ori_v3_add(p0, ori_v3_scale(ori_v3_sub(p1, p0), d0 / (d0 - d1)));
+    const ori_v3 t[3] = {a, b, c};
+    for (int i = 0; i < 3; ++i) {
+        ori_v3 u = t[i], w = t[(i + 1) % 3];
+        double len = ori_v3_norm(ori_v3_sub(w, u));
+        if (!(ori_v3_dot(ori_v3_cross(ori_v3_sub(w, u), ori_v3_sub(x, u)), n) >= margin * len)) return false;
+    }
+    return true;
+}
+
+// Brute force on triangles: an edge of one piercing the other well inside is a penetrating pair,
+// whether the faces share a vertex or not.
+static void fc_brute_triangles(const ori_collider *col, const fc_faces *fv, const ori_v3 *pos, double margin,
+                               const fc_pairs *got)
+{
+    int F = ori_collider_face_count(col);
+    for (int f = 0; f < F; ++f)
+        for (int g = f + 1; g < F; ++g) {
+            if (fv->n[f] != 3 || fv->n[g] != 3) continue;
+            bool cross = false;
+            for (int s = 0; s < 2 && !cross; ++s) {
+                const int *e = fv->v[s ? g : f], *t = fv->v[s ? f : g];
+                for (int i = 0; i < 3 && !cross; ++i)
+                    cross = fc_edge_pierces(pos[e[i]], pos[e[(i + 1) % 3]], pos[t[0]], pos[t[1]], pos[t[2]], margin);
+            }
+            if (!cross) continue;
+            bool found = false;
+            for (int i = 0; i < got->n && !found; ++i)
+                found = got->k[i].face_a == f && got->k[i].face_b == g && got->k[i].kind == ORI_CONTACT_PENETRATING;
+            if (!found) {
+                fprintf(stderr, "triangles %d and %d cross (an edge through the other), not reported penetrating\n", f, g);
+                abort();
+            }
+        }
+}
+
 // One state: checked twice (determinism), against brute force and at a smaller clearance.
 static void fc_state(fk_bytes *b, const ori_pattern *p, ori_collider *col, double c, const fc_faces *fv, const ori_v3 *pos)
 {
@@ -174,6 +223,7 @@ static void fc_state(fk_bytes *b, const ori_pattern *p, ori_collider *col, doubl
     double L = ori_pattern_diagonal(p);
     double tol = 1e-9 * L + 4.0 * r.tolerance;
     fc_brute(col, fv, pos, c, tol, &r, &one);
+    fc_brute_triangles(col, fv, pos, fmax(1e-6 * L, 8.0 * r.tolerance), &one);
 
     // A smaller clearance: the same penetrating and touching pairs, NEAR a subset.
     ori_collider_def cd = ori_default_collider_def();
