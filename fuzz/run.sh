@@ -91,6 +91,8 @@ for name in $targets; do
             extra="-max_len=512"
             ;;
         api) seeds="tests/data/server/*.req" ;;
+        # raw FOLD documents (an input starting with '{') besides the generated patterns
+        regularize) seeds="tests/data/rounded-miura.fold examples/patterns/degree*-vertex.fold examples/patterns/non-flat-foldable-vertex.fold" ;;
         layers) seeds="tests/data/layers/*.fold examples/patterns/*.fold" ;;
         # sweep specs (JSON); short, so that the few points a spec is checked at stay cheap
         sweep) seeds="examples/sweeps/*.json tests/data/sweep/*.json" ; extra="-max_len=4096 -dict=fuzz/sweep.dict" ;;
