@@ -14,6 +14,7 @@
 #include <orikin/orikin.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -53,16 +54,22 @@ static double dist(ori_line l, ori_v2 x)
     return fabs(cross(l.dir, sub(x, l.point))) / len;
 }
 
-static void check_canonical(ori_line l)
+// scale: the input magnitude (the nearest point is rounded relative to it)
+static void check_canonical(ori_line l, double scale)
 {
     if (!isfinite(l.point.x) || !isfinite(l.point.y) || !isfinite(l.dir.x) || !isfinite(l.dir.y)) abort();
     if (fabs(hypot(l.dir.x, l.dir.y) - 1.0) > 1e-12) abort();
     if (!(l.dir.x > 0.0 || (l.dir.x == 0.0 && l.dir.y == 1.0))) abort();
     double r = hypot(l.point.x, l.point.y);
-    if (fabs(dot(l.point, l.dir)) > 1e-9 * (r > 1.0 ? r : 1.0)) abort();
+    if (fabs(dot(l.point, l.dir)) > 1e-9 * fmax(fmax(r, scale), 1e-300)) {
+        if (getenv("FUZZ_DEBUG")) fprintf(stderr, "line %.17g %.17g dir %.17g %.17g\n", l.point.x, l.point.y, l.dir.x, l.dir.y);
+        abort();
+    }
 }
 
 static double mag(ori_v2 v) { return fmax(fabs(v.x), fabs(v.y)); }
+// Largest finite coordinate magnitude (non-finite ones ignored).
+static double fin(ori_v2 v) { return fmax(isfinite(v.x) ? fabs(v.x) : 0.0, isfinite(v.y) ? fabs(v.y) : 0.0); }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -101,7 +108,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     bool finite_in = isfinite(in.l1.point.x) && isfinite(in.l1.point.y) && isfinite(in.l1.dir.x) &&
                      isfinite(in.l1.dir.y);
     bool zero = m.point.x == 0 && m.point.y == 0 && m.dir.x == 0 && m.dir.y == 0;
-    if (finite_in && mag(in.l1.point) < 1e150 && !zero) check_canonical(m);
+    if (finite_in && mag(in.l1.point) < 1e150 && !zero) check_canonical(m, mag(in.l1.point));
 
     double S = fmax(fmax(mag(in.p1), mag(in.p2)), fmax(mag(in.l1.point), mag(in.l2.point)));
     bool all_finite = isfinite(S) && isfinite(mag(in.l1.dir)) && isfinite(mag(in.l2.dir));
@@ -112,7 +119,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     double tol = 1e-6 * (S > 0 ? S : 1.0);
     for (int i = 0; i < s.count; i++) {
         ori_line l = s.lines[i];
-        check_canonical(l);
+        check_canonical(l, fmax(fmax(fin(in.p1), fin(in.p2)), fmax(fin(in.l1.point), fin(in.l2.point))));
         if (!checkable) continue;
         ori_v2 back = ori_line_reflect(l, ori_line_reflect(l, in.p1));
         if (mag(sub(back, in.p1)) > tol) abort();
