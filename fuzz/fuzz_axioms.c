@@ -133,7 +133,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             break;
         case 3: {
             ori_v2 a = in.l1.point, b = {in.l1.point.x + S * u1.x, in.l1.point.y + S * u1.y};
-            if (dist(in.l2, ori_line_reflect(l, a)) > tol || dist(in.l2, ori_line_reflect(l, b)) > tol) abort();
+            if (dist(in.l2, ori_line_reflect(l, a)) > tol || dist(in.l2, ori_line_reflect(l, b)) > tol) {
+                if (getenv("FUZZ_DEBUG"))
+                    fprintf(stderr, "l1 %.17g %.17g %.17g %.17g l2 %.17g %.17g %.17g %.17g -> %.17g %.17g %.17g %.17g\n", in.l1.point.x, in.l1.point.y,
+                            in.l1.dir.x, in.l1.dir.y, in.l2.point.x, in.l2.point.y, in.l2.dir.x, in.l2.dir.y,
+                            l.point.x, l.point.y, l.dir.x, l.dir.y);
+                abort();
+            }
             break;
         }
         case 4:
