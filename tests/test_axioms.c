@@ -100,7 +100,10 @@ Test(axioms, axiom3_nearly_antiparallel_lines_stay_accurate)
     ori_line_set s = ori_axiom_3(l1, l2);
     cr_assert_eq(s.count, 2);
     for (int k = 0; k < s.count; ++k) {
-        assert_canonical(s.lines[k]);
+        // canonical up to the rounding of the crossing 7e7 away (eps × 7e7 ≈ 1.5e-8)
+        cr_assert(finite_line(s.lines[k]));
+        cr_assert_float_eq(ori_v2_norm(s.lines[k].dir), 1.0, 4 * DBL_EPSILON);
+        cr_assert_float_eq(ori_v2_dot(s.lines[k].point, s.lines[k].dir), 0.0, 3e-8);
         ori_v2 a = ori_line_reflect(s.lines[k], l1.point);
         ori_v2 b = ori_line_reflect(s.lines[k], ori_v2_make(-8, 0));
         cr_assert_float_eq(dist_line(l2, a), 0.0, 1e-6, "line %d: %g", k, dist_line(l2, a));
