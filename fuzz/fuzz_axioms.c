@@ -119,7 +119,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     double tol = 1e-6 * (S > 0 ? S : 1.0);
     for (int i = 0; i < s.count; i++) {
         ori_line l = s.lines[i];
-        check_canonical(l, fmax(fmax(fin(in.p1), fin(in.p2)), fmax(fin(in.l1.point), fin(in.l2.point))));
+        double sc = fmax(fmax(fin(in.p1), fin(in.p2)), fmax(fin(in.l1.point), fin(in.l2.point)));
+        // axiom 3's bisectors pass through the crossing, |q| / |sin angle| away: rounded there
+        if (axiom == 3 && checkable) {
+            double sn = fabs(cross(in.l1.dir, in.l2.dir)) / (len1 * len2);
+            if (sn > 0.0) sc = fmax(sc, 4.0 * S / sn);
+        }
+        check_canonical(l, sc);
         if (!checkable) continue;
         ori_v2 back = ori_line_reflect(l, ori_line_reflect(l, in.p1));
         if (mag(sub(back, in.p1)) > tol) abort();
