@@ -121,9 +121,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         ori_line l = s.lines[i];
         double sc = fmax(fmax(fin(in.p1), fin(in.p2)), fmax(fin(in.l1.point), fin(in.l2.point)));
         // axiom 3's bisectors pass through the crossing, |q| / |sin angle| away: rounded there
-        if (axiom == 3 && checkable) {
+        if (axiom == 3) {
             double sn = fabs(cross(in.l1.dir, in.l2.dir)) / (len1 * len2);
-            if (sn > 0.0) sc = fmax(sc, 4.0 * S / sn);
+            if (sn > 0.0 && isfinite(sn)) sc = fmax(sc, 4.0 * sc / sn);
         }
         check_canonical(l, sc);
         if (!checkable) continue;
