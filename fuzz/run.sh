@@ -94,6 +94,7 @@ for name in $targets; do
         # raw FOLD documents (an input starting with '{') besides the generated patterns
         regularize) seeds="tests/data/rounded-miura.fold examples/patterns/degree*-vertex.fold examples/patterns/non-flat-foldable-vertex.fold" ;;
         layers) seeds="tests/data/layers/*.fold examples/patterns/*.fold" ;;
+        flat) seeds="examples/patterns/*.fold tests/data/layers/*.fold" ;;
         # sweep specs (JSON); short, so that the few points a spec is checked at stay cheap
         sweep) seeds="examples/sweeps/*.json tests/data/sweep/*.json" ; extra="-max_len=4096 -dict=fuzz/sweep.dict" ;;
         # argv tokens, one a line; option names from fuzz/cli_args.dict

@@ -91,6 +91,26 @@ Test(axioms, axiom3_bisectors_midline_and_coincident)
     cr_assert_eq(ori_axiom_3(L(0, 1, 0, 0), L(7, 1, 2, 0)).count, 0, "zero direction");
 }
 
+// Nearly antiparallel directions (found by fuzz_axioms): u1 + u2 is almost zero, and the
+// bisector built from it was off by ~1e-9 rad, so that near the inputs (scale 8, the lines
+// meeting 7e7 away) l1 reflected 0.11 away from l2.
+Test(axioms, axiom3_nearly_antiparallel_lines_stay_accurate)
+{
+    ori_line l1 = L(-8, -8, 0, -7.25), l2 = L(0, 0, -1e-7, 0.875);
+    ori_line_set s = ori_axiom_3(l1, l2);
+    cr_assert_eq(s.count, 2);
+    for (int k = 0; k < s.count; ++k) {
+        // canonical up to the rounding of the crossing 7e7 away (eps × 7e7 ≈ 1.5e-8)
+        cr_assert(finite_line(s.lines[k]));
+        cr_assert_float_eq(ori_v2_norm(s.lines[k].dir), 1.0, 4 * DBL_EPSILON);
+        cr_assert_float_eq(ori_v2_dot(s.lines[k].point, s.lines[k].dir), 0.0, 3e-8);
+        ori_v2 a = ori_line_reflect(s.lines[k], l1.point);
+        ori_v2 b = ori_line_reflect(s.lines[k], ori_v2_make(-8, 0));
+        cr_assert_float_eq(dist_line(l2, a), 0.0, 1e-6, "line %d: %g", k, dist_line(l2, a));
+        cr_assert_float_eq(dist_line(l2, b), 0.0, 1e-6, "line %d: %g", k, dist_line(l2, b));
+    }
+}
+
 Test(axioms, axiom4_perpendicular_through_point)
 {
     ori_line_set s = ori_axiom_4(ori_v2_make(1, 2), L(0, 0, 1, 0));

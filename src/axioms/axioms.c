@@ -121,8 +121,14 @@ ori_line_set ori_axiom_3(ori_line l1, ori_line l2)
         return s;
     }
     ori_v2 x = ori_v2_add(l1.point, ori_v2_scale(u1, ori_v2_cross(q, u2) / c));
-    add_line(&s, x, ori_v2_add(u1, u2), L);
-    add_line(&s, x, ori_v2_sub(u1, u2), L);
+    // The bisectors are perpendicular: take the longer of u1 ± u2 and the other as its
+    // perpendicular, since the shorter one loses its direction to cancellation when the lines
+    // are nearly (anti)parallel (an angle error of ~1e-9 rad, found by fuzz_axioms).
+    ori_v2 a = ori_v2_add(u1, u2), b = ori_v2_sub(u1, u2);
+    if (ori_v2_dot(a, a) >= ori_v2_dot(b, b)) b = ori_v2_perp(a);
+    else a = ori_v2_perp(b);
+    add_line(&s, x, a, L);
+    add_line(&s, x, b, L);
     return s;
 }
 
