@@ -370,3 +370,19 @@ Test(axioms, never_nan_on_degenerate_or_huge_input)
                         for (int k = 0; k < s.count; ++k) cr_assert(finite_line(s.lines[k]), "axiom %d", ax);
                     }
 }
+
+// A subnormal direction (fuzz_axioms): its norm lost the digits, so the "unit" vector of
+// ori_line_make was off unit by up to 20 %; scaled up first it is a unit vector, pointing the
+// same way and canonical.
+Test(axioms, a_line_from_a_subnormal_direction_is_unit)
+{
+    const ori_v2 dirs[] = {{3e-324, 5e-324}, {-1e-310, 4e-311}, {0.0, -7e-320}, {2.5e-300, 1e-300}};
+    for (size_t i = 0; i < sizeof dirs / sizeof dirs[0]; ++i) {
+        ori_line l = ori_line_make(ori_v2_make(1.0, 2.0), dirs[i]);
+        cr_assert_float_eq(hypot(l.dir.x, l.dir.y), 1.0, 1e-15, "direction %zu: |dir| = %.17g", i, hypot(l.dir.x, l.dir.y));
+        cr_assert(l.dir.x > 0.0 || (l.dir.x == 0.0 && l.dir.y > 0.0), "direction %zu not canonical", i);
+        // parallel to the input (the cross product of the unit vectors vanishes)
+        double nx = dirs[i].x / fmax(fabs(dirs[i].x), fabs(dirs[i].y)), ny = dirs[i].y / fmax(fabs(dirs[i].x), fabs(dirs[i].y));
+        cr_assert_leq(fabs(l.dir.x * ny - l.dir.y * nx), 1e-15 * hypot(nx, ny), "direction %zu turned", i);
+    }
+}

@@ -14,6 +14,10 @@ static bool finite2(ori_v2 a) { return isfinite(a.x) && isfinite(a.y); }
 ori_line ori_line_make(ori_v2 point, ori_v2 dir)
 {
     ori_line l = {{0.0, 0.0}, {0.0, 0.0}};
+    // A subnormal direction loses its digits in the norm: scaled up first (exactly, by a power
+    // of two), its unit vector is a unit vector (found by fuzz_axioms).
+    double big = fmax(fabs(dir.x), fabs(dir.y));
+    if (big > 0.0 && big < 1e-290) dir = v2(ldexp(dir.x, 600), ldexp(dir.y, 600));
     ori_v2 d = ori_v2_normalize(dir);
     if ((d.x == 0.0 && d.y == 0.0) || !finite2(point)) return l;
     // Canonical sign: pointing to x > 0, or straight up when vertical.
