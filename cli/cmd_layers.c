@@ -230,9 +230,7 @@ static int run(int argc, char **argv)
     def.threads = threads;
     def.snap_rel = tol;
     budget bud;
-    cli_progress_begin(&bud.deadline.bar, CMD, "counting layer orders");
-    bud.deadline.seconds = timeout_s;
-    bud.deadline.expired = false;
+    cli_deadline_begin(&bud.deadline, CMD, "counting layer orders", timeout_s);
     bud.start = mono_s();
     bud.hinted = false;
     def.progress = budget_fn;

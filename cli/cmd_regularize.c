@@ -75,9 +75,7 @@ static int run(int argc, char **argv)
     // The budget: --limit iterations per attempt, --timeout seconds; stopped, the best found is
     // reported (exit 5) and written with -o, to be regularized further.
     cli_deadline deadline;
-    cli_progress_begin(&deadline.bar, cmd, "regularizing");
-    deadline.seconds = timeout_s;
-    deadline.expired = false;
+    cli_deadline_begin(&deadline, cmd, "regularizing", timeout_s);
     def.progress = cli_deadline_fn, def.progress_user = &deadline;
     def.keep_partial = true;
     ori_status st = ori_regularize(p, &def, &q, &r, &err);

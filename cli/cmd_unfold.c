@@ -286,8 +286,7 @@ static int run(int argc, char **argv)
     if ((limit_given || timeout_s > 0.0) && !def.all)
         return cli_usage(CMD, "%s bounds --all: give --all too", limit_given ? "--limit" : "--timeout");
     cli_deadline deadline;
-    cli_progress_begin(&deadline.bar, CMD, "enumerating spanning trees");
-    deadline.seconds = timeout_s;
+    cli_deadline_begin(&deadline, CMD, "enumerating spanning trees", timeout_s);
     def.progress = cli_deadline_fn, def.progress_user = &deadline;
     ori_error err;
     ori_error_clear(&err);

@@ -160,9 +160,7 @@ static int run(int argc, char **argv)
     def.coords = coords, def.vertex_count = n, def.edges = edges, def.edge_count = m, def.steps_per_event = per;
     def.max_events = limit;
     cli_deadline deadline;
-    cli_progress_begin(&deadline.bar, CMD, "unfolding");
-    deadline.seconds = timeout_s;
-    deadline.expired = false;
+    cli_deadline_begin(&deadline, CMD, "unfolding", timeout_s);
     def.progress = cli_deadline_fn, def.progress_user = &deadline;
     def.keep_partial = true;
     ori_linkage_motion *mo = NULL;

@@ -84,3 +84,10 @@ bool cli_deadline_fn(double fraction, void *user)
     if (d->seconds > 0.0 && now_s() - d->bar.start > d->seconds) d->expired = true;
     return !d->expired;
 }
+
+void cli_deadline_begin(cli_deadline *d, const char *cmd, const char *label, double seconds)
+{
+    cli_progress_begin(&d->bar, cmd, label);
+    d->seconds = seconds;
+    d->expired = false;
+}

@@ -35,5 +35,7 @@ typedef struct cli_deadline {
     bool expired; // the budget ran out
 } cli_deadline;
 bool cli_deadline_fn(double fraction, void *user);
+// Start a deadline: the bar (cli_progress_begin) and a budget of `seconds` (≤ 0: none), not expired.
+void cli_deadline_begin(cli_deadline *d, const char *cmd, const char *label, double seconds);
 
 #endif

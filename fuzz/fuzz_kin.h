@@ -17,18 +17,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_bytes.h"
+
 #define FK_DEG (ORI_PI / 180.0)
 
-// A byte reader: past the end every read is 0.
-typedef struct fk_bytes {
-    const uint8_t *p;
-    size_t n, at;
-} fk_bytes;
-
-static uint8_t fk_u8(fk_bytes *b) { return b->at < b->n ? b->p[b->at++] : 0; }
-static uint16_t fk_u16(fk_bytes *b) { return (uint16_t)(fk_u8(b) | (fk_u8(b) << 8)); }
-// A value in [lo, hi] from 16 bits.
-static double fk_range(fk_bytes *b, double lo, double hi) { return lo + (hi - lo) * fk_u16(b) / 65535.0; }
 
 // A single vertex at the origin with n creases to the unit circle, every sector between 12° and
 // 170° (so that the sector triangles are proper faces), and boundary chords.

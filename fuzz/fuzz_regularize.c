@@ -23,16 +23,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_bytes.h"
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-typedef struct fr_bytes {
-    const uint8_t *p;
-    size_t n, at;
-} fr_bytes;
-
-static uint8_t fr_u8(fr_bytes *b) { return b->at < b->n ? b->p[b->at++] : 0; }
-static uint16_t fr_u16(fr_bytes *b) { return (uint16_t)(fr_u8(b) | (fr_u8(b) << 8)); }
-static double fr_range(fr_bytes *b, double lo, double hi) { return lo + (hi - lo) * fr_u16(b) / 65535.0; }
 
 static ori_pattern *fr_from_text(const char *text)
 {
@@ -47,20 +41,20 @@ static ori_pattern *fr_from_text(const char *text)
 
 // A flat-foldable vertex of degree 4, 6 or 8 (alternate sectors summing to π, every sector in
 // [12°, 170°]) with creases to the unit circle and boundary chords, written as FOLD text.
-static ori_pattern *fr_vertex(fr_bytes *b, double jitter)
+static ori_pattern *fr_vertex(fk_bytes *b, double jitter)
 {
-    int k = 2 + fr_u8(b) % 3, n = 2 * k;
+    int k = 2 + fk_u8(b) % 3, n = 2 * k;
     double w[8], sum[2] = {0.0, 0.0};
-    for (int i = 0; i < n; ++i) sum[i & 1] += w[i] = 1.0 + fr_u8(b);
-    double t = fr_range(b, 0.0, 2.0 * ORI_PI);
-    double cx = jitter * fr_range(b, -1.0, 1.0), cy = jitter * fr_range(b, -1.0, 1.0);
+    for (int i = 0; i < n; ++i) sum[i & 1] += w[i] = 1.0 + fk_u8(b);
+    double t = fk_range(b, 0.0, 2.0 * ORI_PI);
+    double cx = jitter * fk_range(b, -1.0, 1.0), cy = jitter * fk_range(b, -1.0, 1.0);
     char text[4096];
     size_t len = 0;
     len += (size_t)snprintf(text + len, sizeof text - len, "{\"vertices_coords\":[[%.17g,%.17g]", cx, cy);
     for (int i = 0; i < n; ++i) {
         double gap = ORI_PI * w[i] / sum[i & 1];
         if (gap < 12.0 * ORI_PI / 180.0 || gap > 170.0 * ORI_PI / 180.0) return NULL;
-        double a = t + jitter * fr_range(b, -1.0, 1.0);
+        double a = t + jitter * fk_range(b, -1.0, 1.0);
         len += (size_t)snprintf(text + len, sizeof text - len, ",[%.17g,%.17g]", cos(a), sin(a));
         t += gap;
     }
@@ -69,7 +63,7 @@ static ori_pattern *fr_vertex(fr_bytes *b, double jitter)
     for (int i = 0; i < n; ++i) len += (size_t)snprintf(text + len, sizeof text - len, ",[%d,%d]", i + 1, (i + 1) % n + 1);
     len += (size_t)snprintf(text + len, sizeof text - len, "],\"edges_assignment\":[");
     // Maekawa: k + 1 creases of one kind, rotated; or the fuzzed bits as they come.
-    uint8_t mv = fr_u8(b), how = fr_u8(b);
+    uint8_t mv = fk_u8(b), how = fk_u8(b);
     char letter[8];
     for (int i = 0; i < n; ++i) {
         if (how & 1) letter[i] = (mv >> i) & 1 ? 'M' : 'V';
@@ -82,13 +76,13 @@ static ori_pattern *fr_vertex(fr_bytes *b, double jitter)
 }
 
 // A generated Miura or square twist (flat-foldable), its vertices jittered, rebuilt from FOLD text.
-static ori_pattern *fr_generated(fr_bytes *b, double jitter)
+static ori_pattern *fr_generated(fk_bytes *b, double jitter)
 {
     static const ori_tessellation kinds[] = {ORI_TESS_MIURA, ORI_TESS_SQUARE_TWIST, ORI_TESS_MIURA, ORI_TESS_YOSHIMURA};
-    ori_generate_def g = ori_default_generate_def(kinds[fr_u8(b) % 4]);
-    g.rows = 1 + fr_u8(b) % 2;
-    g.cols = 1 + fr_u8(b) % 2;
-    if (fr_u8(b) & 1) g.angle_rad = fr_range(b, 5.0, 85.0) * ORI_PI / 180.0;
+    ori_generate_def g = ori_default_generate_def(kinds[fk_u8(b) % 4]);
+    g.rows = 1 + fk_u8(b) % 2;
+    g.cols = 1 + fk_u8(b) % 2;
+    if (fk_u8(b) & 1) g.angle_rad = fk_range(b, 5.0, 85.0) * ORI_PI / 180.0;
     ori_pattern *p = NULL;
     ori_error err;
     if (ori_generate(&g, &p, NULL, &err) != ORI_OK) return NULL;
@@ -100,9 +94,9 @@ static ori_pattern *fr_generated(fr_bytes *b, double jitter)
     for (int v = 0; v < V; ++v) {
         ori_v3 x = ori_pattern_vertex(p, v);
         double dx = 0.0, dy = 0.0;
-        if (fr_u8(b) & 1) {
-            dx = jitter * L * fr_range(b, -1.0, 1.0);
-            dy = jitter * L * fr_range(b, -1.0, 1.0);
+        if (fk_u8(b) & 1) {
+            dx = jitter * L * fk_range(b, -1.0, 1.0);
+            dy = jitter * L * fk_range(b, -1.0, 1.0);
         }
         len += (size_t)snprintf(text + len, cap - len, "%s[%.17g,%.17g]", v ? "," : "", x.x + dx, x.y + dy);
     }
@@ -121,16 +115,16 @@ static ori_pattern *fr_generated(fr_bytes *b, double jitter)
     return q;
 }
 
-static double fr_max_move(fr_bytes *b)
+static double fr_max_move(fk_bytes *b)
 {
-    switch (fr_u8(b) % 8) {
+    switch (fk_u8(b) % 8) {
     case 0: return 0.0;
     case 1: return 1e-300;
     case 2: return 1.0;
     case 3: return 1e300;
     case 4: return INFINITY;
     case 5: return DBL_MAX;
-    case 6: return fr_range(b, 0.0, 1e-2);
+    case 6: return fk_range(b, 0.0, 1e-2);
     default: return ORI_REGULARIZE_MAX_MOVE_REL;
     }
 }
@@ -258,7 +252,7 @@ static void fr_check(const ori_pattern *p, const ori_regularize_def *def, bool t
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     ori_pattern *p = NULL;
-    fr_bytes b = {data, size, 0};
+    fk_bytes b = {data, size, 0};
     if (size > 0 && data[0] == '{') {
         // A raw FOLD document; the options from its last bytes.
         ori_fold *doc = NULL;
@@ -273,17 +267,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             p = NULL;
         }
     } else {
-        uint8_t how = fr_u8(&b);
-        double jitter = how & 2 ? 0.0 : how & 4 ? 1e-3 * fr_range(&b, 0.0, 1.0) : 1e-7 * fr_range(&b, 0.0, 1.0);
+        uint8_t how = fk_u8(&b);
+        double jitter = how & 2 ? 0.0 : how & 4 ? 1e-3 * fk_range(&b, 0.0, 1.0) : 1e-7 * fk_range(&b, 0.0, 1.0);
         p = how & 1 ? fr_generated(&b, jitter) : fr_vertex(&b, jitter);
     }
     if (p) {
         ori_regularize_def def = ori_default_regularize_def();
-        uint8_t o = fr_u8(&b);
+        uint8_t o = fk_u8(&b);
         def.rigid = o & 1;
         def.rigid_only = (o & 6) == 6;
         def.max_move_rel = fr_max_move(&b);
-        def.max_iterations = 1 + fr_u8(&b) % 8;
+        def.max_iterations = 1 + fk_u8(&b) % 8;
         fr_check(p, &def, (o & 24) == 24);
         ori_pattern_destroy(p);
     }
