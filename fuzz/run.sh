@@ -14,6 +14,11 @@
 # FUZZ_SEED=N makes a run repeatable: libFuzzer's -seed=N and generated inputs drawn from N, so
 # the inputs tried are a prefix of one fixed sequence however fast the machine (CI sets it; a
 # random run, the default, explores further each time and belongs in fuzz-long).
+#
+# FUZZ_RUNS=FILE (lines "target runs") or FUZZ_RUNS_<name>=N also caps a target's inputs at N
+# (libFuzzer's -runs): with FUZZ_SEED, a target then tries the same N inputs on any machine fast
+# enough to finish them in its time (a slower one tries a prefix), so that a run which passed
+# here passes in CI. CI uses fuzz/ci-runs (about 7 s a target on the 2-core machine).
 set -eu
 BUILD=$1
 shift
@@ -26,8 +31,15 @@ BUDGET=${FUZZ_BUDGET:-420}
 TIMEOUT=${FUZZ_TIMEOUT:-10}
 RSS_MB=${FUZZ_RSS_MB:-2048}
 SEED=${FUZZ_SEED:-}
+RUNS_FILE=${FUZZ_RUNS:-}
+[ -z "$RUNS_FILE" ] || [ -r "$RUNS_FILE" ] || { echo "fuzz: FUZZ_RUNS=$RUNS_FILE is not a readable file"; exit 1; }
 seed_arg=""
-[ -n "$SEED" ] && seed_arg="-seed=$SEED"
+# (-reload=0: libFuzzer otherwise re-reads the corpus directory every second, a timing-dependent input)
+[ -n "$SEED" ] && seed_arg="-seed=$SEED -reload=0"
+# and without address randomisation: libFuzzer's comparison dictionary picks up values compared
+# in the code under test, addresses among them, so a run is repeatable only at fixed addresses
+no_aslr=""
+if [ -n "$SEED" ] && setarch "$(uname -m)" -R true 2>/dev/null; then no_aslr="setarch $(uname -m) -R"; fi
 corpus=fuzz/corpus-run
 rm -rf "$corpus"
 mkdir -p "$corpus"
@@ -57,7 +69,7 @@ if [ "$shared" -gt 0 ] && [ $((each * shared)) -gt $((BUDGET - fixed)) ]; then
     each=$(((BUDGET - fixed) / shared))
     [ "$each" -ge 10 ] || each=10
 fi
-echo "fuzz: $count target(s), ${each}s each (budget ${BUDGET}s), -timeout=$TIMEOUT -rss_limit_mb=$RSS_MB ${seed_arg:-(random seed)}"
+echo "fuzz: $count target(s), ${each}s each (budget ${BUDGET}s), -timeout=$TIMEOUT -rss_limit_mb=$RSS_MB ${seed_arg:-(random seed)}${RUNS_FILE:+, runs from $RUNS_FILE}"
 
 status=0
 failed=""
@@ -108,10 +120,15 @@ for name in $targets; do
     for f in fuzz/seeds/"$name"/* $seeds; do
         [ -e "$f" ] && cp "$f" "$dir"/
     done
-    echo "fuzz: $name for ${seconds}s"
+    runs=$(eval "echo \${FUZZ_RUNS_$name:-}")
+    if [ -z "$runs" ] && [ -n "$RUNS_FILE" ]; then
+        runs=$(awk -v t="$name" '$1 == t { print $2 }' "$RUNS_FILE")
+    fi
+    [ -z "$runs" ] || extra="$extra -runs=$runs"
+    echo "fuzz: $name for ${seconds}s${runs:+ or $runs inputs}"
     log="$corpus/$name.log"
     # shellcheck disable=SC2086
-    if ASAN_OPTIONS=detect_leaks=1 "$t" -max_total_time="$seconds" -max_len=65536 -timeout="$TIMEOUT" \
+    if ASAN_OPTIONS=detect_leaks=1 $no_aslr "$t" -max_total_time="$seconds" -max_len=65536 -timeout="$TIMEOUT" \
         -rss_limit_mb="$RSS_MB" -print_final_stats=1 -artifact_prefix="$corpus/$name-" $seed_arg $extra "$dir" >"$log" 2>&1; then
         grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+.*DONE" "$log" | tail -n 3
     else
@@ -129,7 +146,10 @@ if [ $status -ne 0 ]; then
             "$corpus/$name.log" || echo "no report line")
         echo "fuzz: FAILED $name: $why"
         for a in "$corpus/$name"-*; do
-            [ -e "$a" ] && echo "fuzz:   input $a: $(head -c 200 "$a" | od -An -c | tr -s ' ' | head -c 300)"
+            [ -e "$a" ] || continue
+            echo "fuzz:   input $a: $(head -c 200 "$a" | od -An -c | tr -s ' ' | head -c 300)"
+            # the whole input, to reproduce it from CI's log: base64 -d > x; build-fuzz/fuzz/fuzz_<name> x
+            if [ "$(wc -c <"$a")" -le 4096 ]; then echo "fuzz:   base64 $(base64 -w 0 "$a")"; fi
         done
     done
 fi
