@@ -12,6 +12,7 @@
 #ifndef ORIKIN_COMPLIANT_H
 #define ORIKIN_COMPLIANT_H
 
+#include "actuation.h"
 #include "base.h"
 #include "math.h"
 #include "pattern.h"
@@ -49,6 +50,14 @@ typedef struct ori_compliant_def {
     double max_step_rad;             ///< static solver: largest rest-angle change per load step (> 0)
     int max_iterations;              ///< static solver: Newton iterations per load step
     double tolerance;                ///< static equilibrium: |∇E|∞ ≤ tolerance · load scale (1e-10)
+    // --- a device design (both presets; its stiffnesses are physical, so use it with the physical preset) ---
+    const ori_design *design;        ///< NULL, or the design of the pattern (edges and faces alike; read at creation only):
+                                     ///< pattern lengths in its frame_unit; creases with a hinge are layered
+                                     ///< elastoplastic sections (rest angle target · fraction); faces with a panel take its
+                                     ///< material's E and density and its thickness; wires carry current × fraction in field_t
+    double current_a;                ///< current of every wire without its own (A, ≥ 0), at fraction 1
+    ori_v3 field_t;                  ///< uniform magnetic field (T)
+    bool auto_polarity;              ///< each wire's current is signed to turn its crease toward its assignment (valley +) at the flat state (default true)
     bool keep_frames;                ///< keep one frame per load step (else only the last)
     bool check_contacts;             ///< warn of faces passing through each other (after each load step; every 1024 explicit steps and at the end); default true
     int internal_value;              ///< set by the default functions; do not change
@@ -115,6 +124,14 @@ ORI_API double ori_compliant_energy(const ori_compliant *c);
 ORI_API double ori_compliant_gradient_norm(const ori_compliant *c);
 ORI_API double ori_compliant_load_scale(const ori_compliant *c);
 ORI_API double ori_compliant_gradient_floor(const ori_compliant *c);
+/// Permanent (plastic) rotation of an edge's layered hinge in the current state (radians: the
+/// fold angle at which it would carry no moment, minus its rest angle); 0 for other edges.
+ORI_API double ori_compliant_plastic_rotation(const ori_compliant *c, int edge);
+/// Signed current (A) of an edge's wire at the current fraction (current × fraction × polarity);
+/// 0 without a wire.
+ORI_API double ori_compliant_wire_current(const ori_compliant *c, int edge);
+/// Number of the design's wires in the model.
+ORI_API int ori_compliant_wire_count(const ori_compliant *c);
 /// Fraction of the current state (the last equilibrium's).
 ORI_API double ori_compliant_fraction(const ori_compliant *c);
 /// Largest |fold angle − target · fraction| over the creases (radians).

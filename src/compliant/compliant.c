@@ -27,6 +27,8 @@
 // A sheet given in another plane than z = 0 is flat when no vertex is farther than this × the
 // pattern's diagonal from the faces' mean plane (single-precision exports: 1e-6).
 #define CMP_PLANE_REL 1e-6
+// Largest change of the wires' current fraction per load step of the static solver.
+#define CMP_WIRE_LOAD_STEP (1.0 / 32.0)
 // Contact warnings kept (face pairs).
 #define CMP_MAX_CONTACTS 256
 // Explicit steps between contact checks.
@@ -55,6 +57,10 @@ ori_compliant_def ori_default_compliant_def(void)
     d.tolerance = CMP_DEFAULT_TOLERANCE;
     d.check_contacts = true;
     d.keep_frames = false;
+    d.design = NULL;
+    d.current_a = 0.0;
+    d.field_t = (ori_v3){0.0, 0.0, 0.0};
+    d.auto_polarity = true;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -99,6 +105,11 @@ void ori_compliant_destroy(ori_compliant *c)
     ori__free(c->edge_bar);
     ori__free(c->edge_hinge);
     ori__free(c->mass);
+    ori__free(c->hsec);
+    ori__free(c->hfib);
+    ori__free(c->hplastic);
+    ori__free(c->wires);
+    ori__free(c->wpts);
     ori__free(c->dof);
     ori__free(c->x);
     ori__free(c->x0);
@@ -257,6 +268,12 @@ static ori_status check_def(const ori_compliant_def *d, ori_error *error)
     if (!(d->fraction >= 0.0 && d->fraction <= 1.0))
         return ori__fail(error, ORI_ERR_RANGE, "compliant: fraction must be in [0, 1] (got %g)", d->fraction);
     if (d->max_iterations <= 0) return ori__fail(error, ORI_ERR_RANGE, "compliant: max_iterations must be > 0");
+    if (!finite_nonneg(d->current_a))
+        return ori__fail(error, ORI_ERR_RANGE, "compliant: current_a must be finite and ≥ 0 (got %g)", d->current_a);
+    if (!isfinite(d->field_t.x) || !isfinite(d->field_t.y) || !isfinite(d->field_t.z))
+        return ori__fail(error, ORI_ERR_RANGE, "compliant: field_t must be finite");
+    if (d->design && d->preset != ORI_COMPLIANT_PHYSICAL)
+        return ori__fail(error, ORI_ERR_ARGUMENT, "compliant: a design's hinges, panels and wires are physical: use the physical preset");
     return ORI_OK;
 }
 
@@ -273,6 +290,21 @@ static void build_pattern(ori_compliant *c)
     int *deg = ori__calloc((size_t)nv + 1, sizeof(int));
     // pairs (lower dof, higher dof): from bars and hinge wing pairs (i, l); all other hinge pairs are bars
     int npairs = c->nbar + c->nhinge;
+    // a wire couples every vertex of its loop's triangles with every other
+    int *wv = NULL, nwv = 0, cap_wv = 0, *wstart = ori__calloc((size_t)c->nwire + 1, sizeof(int));
+    for (int w = 0; w < c->nwire; ++w) {
+        int from = nwv;
+        for (int k = 0; k < c->wires[w].count; ++k)
+            for (int q = 0; q < 3; ++q) {
+                int v = c->wpts[c->wires[w].first + k].v[q];
+                bool seen = false;
+                for (int r = from; r < nwv && !seen; ++r) seen = wv[r] == v;
+                if (!seen) ORI__PUSH(wv, nwv, cap_wv, v);
+            }
+        wstart[w + 1] = nwv;
+        int n = nwv - from;
+        npairs += n * (n - 1) / 2;
+    }
     int *pa = ori__alloc(sizeof(int) * (size_t)(npairs > 0 ? npairs : 1));
     int *pb = ori__alloc(sizeof(int) * (size_t)(npairs > 0 ? npairs : 1));
     int np = 0;
@@ -284,6 +316,14 @@ static void build_pattern(ori_compliant *c)
         pa[np] = c->hinges[h].i;
         pb[np++] = c->hinges[h].l;
     }
+    for (int w = 0; w < c->nwire; ++w)
+        for (int r = wstart[w]; r < wstart[w + 1]; ++r)
+            for (int q = r + 1; q < wstart[w + 1]; ++q) {
+                pa[np] = wv[r];
+                pb[np++] = wv[q];
+            }
+    ori__free(wv);
+    ori__free(wstart);
     for (int k = 0; k < np; ++k) {
         int a = pa[k], b = pb[k];
         if (c->dof[a] < 0 || c->dof[b] < 0 || a == b) continue;
@@ -408,6 +448,127 @@ static bool sheet_plane(const ori_pattern *p, ori_m3 *rot)
 static void store_frame(ori_compliant *c, bool replace_last);
 static void make_collider(ori_compliant *c, const builder *bd);
 
+// Does a triangle of face f have the vertices a, b and o?
+static bool face_has_triangle(const ori_compliant *c, int f, int a, int b, int o)
+{
+    for (int t = 0; t < c->ntri; ++t) {
+        if (c->tri_face[t] != f) continue;
+        const int *v = c->tris + 3 * t;
+        bool ha = v[0] == a || v[1] == a || v[2] == a, hb = v[0] == b || v[1] == b || v[2] == b;
+        bool ho = v[0] == o || v[1] == o || v[2] == o;
+        if (ha && hb && ho) return true;
+    }
+    return false;
+}
+
+// A point X (flat sheet, z = 0) as barycentric weights in the triangle of face f that holds it
+// (the one it is deepest inside: a point on an edge shared by two of them takes either).
+static void locate(const ori_compliant *c, int f, const double X[2], cmp_wpt *out)
+{
+    double best = -INFINITY;
+    for (int t = 0; t < c->ntri; ++t) {
+        if (c->tri_face[t] != f) continue;
+        const int *v = c->tris + 3 * t;
+        const double *a = c->x + 3 * v[0], *b = c->x + 3 * v[1], *cc = c->x + 3 * v[2];
+        double area = cross2(a, b, cc), w[3];
+        w[0] = ((b[0] - X[0]) * (cc[1] - X[1]) - (b[1] - X[1]) * (cc[0] - X[0])) / area;
+        w[1] = ((cc[0] - X[0]) * (a[1] - X[1]) - (cc[1] - X[1]) * (a[0] - X[0])) / area;
+        w[2] = 1.0 - w[0] - w[1];
+        double m = fmin(w[0], fmin(w[1], w[2]));
+        if (m > best) {
+            best = m;
+            for (int q = 0; q < 3; ++q) {
+                out->v[q] = v[q];
+                out->w[q] = w[q];
+            }
+        }
+    }
+}
+
+// The design's wires: each current loop (ori__wire_segments, on the panel the design names or
+// else the one of its crease farther from the fixed face) in CMP_WIRE_SUBSEGMENTS pieces per
+// segment, its points fixed in their triangles; with auto_polarity, the current signed so that
+// the loop's moment at the flat state turns the crease toward its assignment.
+static void place_wires(ori_compliant *c, const ori_pattern *p, const ori_design *dsg, const ori_m3 *rot)
+{
+    int nf = c->nf;
+    int *depth = ori__alloc(sizeof(int) * (size_t)nf);
+    for (int f = 0; f < nf; ++f) depth[f] = -1;
+    depth[c->def.fixed_face] = 0;
+    for (bool changed = true; changed;) { // breadth-first depths by relaxation
+        changed = false;
+        for (int hh = 0; hh < c->nhinge; ++hh) {
+            int a = c->hinges[hh].face[0], b = c->hinges[hh].face[1];
+            if (a < 0 || b < 0) continue;
+            if (depth[a] >= 0 && (depth[b] < 0 || depth[b] > depth[a] + 1)) depth[b] = depth[a] + 1, changed = true;
+            if (depth[b] >= 0 && (depth[a] < 0 || depth[a] > depth[b] + 1)) depth[a] = depth[b] + 1, changed = true;
+        }
+    }
+    int cap_w = 0, cap_p = 0;
+    for (int e = 0; e < c->ne; ++e) {
+        ori_hinge hg;
+        if (!ori_design_hinge(dsg, e, &hg) || !hg.has_wire || c->edge_hinge[e] < 0) continue;
+        int fa = dsg->edge_faces[e][0], fb = dsg->edge_faces[e][1];
+        if (fa < 0 || fb < 0) continue;
+        int face = hg.wire.face != ORI_NULL_INDEX ? hg.wire.face : depth[fb] > depth[fa] ? fb : fa;
+        wire_segments ws;
+        ori__wire_segments(dsg, e, face, &ws);
+        cmp_wire wr = {e, face, ws.turns, c->nwpt, 4 * CMP_WIRE_SUBSEGMENTS,
+                       (double)ws.turns * (hg.wire.has_current ? hg.wire.current_a : c->def.current_a)};
+        for (int sg = 0; sg < 4; ++sg)
+            for (int k = 0; k < CMP_WIRE_SUBSEGMENTS; ++k) {
+                double t = (double)k / CMP_WIRE_SUBSEGMENTS;
+                ori_v3 P = ori_v3_add(ws.a[sg], ori_v3_scale(ori_v3_sub(ws.b[sg], ws.a[sg]), t));
+                double X[2] = {c->unit * (rot->m[0][0] * P.x + rot->m[0][1] * P.y + rot->m[0][2] * P.z),
+                               c->unit * (rot->m[1][0] * P.x + rot->m[1][1] * P.y + rot->m[1][2] * P.z)};
+                cmp_wpt pt;
+                locate(c, face, X, &pt);
+                ORI__PUSH(c->wpts, c->nwpt, cap_p, pt);
+            }
+        if (c->def.auto_polarity) {
+            const cmp_hinge *h = &c->hinges[c->edge_hinge[e]];
+            int wing = face_has_triangle(c, face, h->j, h->k, h->i) ? 2 : 3, wv = wing == 2 ? h->i : h->l;
+            const double *xj = c->x + 3 * h->j, *xk = c->x + 3 * h->k;
+            double ax[3] = {xk[0] - xj[0], xk[1] - xj[1], xk[2] - xj[2]};
+            double al = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+            for (int q = 0; q < 3; ++q) ax[q] /= al;
+            // turning the panel by δ about the crease: dp = δ ax × (p − x_j); dU/dδ and dθ/dδ
+            double B[3] = {c->field.x, c->field.y, c->field.z}, dU = 0.0;
+            for (int i = 0; i < wr.count; ++i) {
+                double pm[3], pp[3], pi[3], d[3], gu[3], r[3], mv[3];
+                ori__cmp_wire_point(c, wr.first + (i + wr.count - 1) % wr.count, c->x, pm);
+                ori__cmp_wire_point(c, wr.first + (i + 1) % wr.count, c->x, pp);
+                ori__cmp_wire_point(c, wr.first + i, c->x, pi);
+                for (int q = 0; q < 3; ++q) {
+                    d[q] = pp[q] - pm[q];
+                    r[q] = pi[q] - xj[q];
+                }
+                gu[0] = d[1] * B[2] - d[2] * B[1]; // ∂U/∂p_i = −½ ni (p_{i+1} − p_{i−1}) × B
+                gu[1] = d[2] * B[0] - d[0] * B[2];
+                gu[2] = d[0] * B[1] - d[1] * B[0];
+                mv[0] = ax[1] * r[2] - ax[2] * r[1];
+                mv[1] = ax[2] * r[0] - ax[0] * r[2];
+                mv[2] = ax[0] * r[1] - ax[1] * r[0];
+                dU -= 0.5 * wr.ni * (gu[0] * mv[0] + gu[1] * mv[1] + gu[2] * mv[2]);
+            }
+            double g[12], r[3], mv[3];
+            ori__cmp_hinge_gradient(c->x, h, g);
+            const double *xw = c->x + 3 * wv;
+            for (int q = 0; q < 3; ++q) r[q] = xw[q] - xj[q];
+            mv[0] = ax[1] * r[2] - ax[2] * r[1];
+            mv[1] = ax[2] * r[0] - ax[0] * r[2];
+            mv[2] = ax[0] * r[1] - ax[1] * r[0];
+            double dth = g[3 * wing] * mv[0] + g[3 * wing + 1] * mv[1] + g[3 * wing + 2] * mv[2];
+            ori_assignment as = ori_pattern_edge(p, e).assignment;
+            double dir = as == ORI_ASSIGN_VALLEY ? 1.0 : as == ORI_ASSIGN_MOUNTAIN ? -1.0 : h->target < 0.0 ? -1.0 : 1.0;
+            double drive = dth != 0.0 ? -dU / dth : 0.0; // the moment on the fold angle
+            if (drive * dir < 0.0) wr.ni = -wr.ni;
+        }
+        ORI__PUSH(c->wires, c->nwire, cap_w, wr);
+    }
+    ori__free(depth);
+}
+
 ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *def, ori_compliant **out,
                                 ori_error *error)
 {
@@ -426,6 +587,10 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     if (def->fixed_face != ORI_NULL_INDEX && (def->fixed_face < 0 || def->fixed_face >= nf))
         return ori__fail_at(error, ORI_ERR_RANGE, "faces_vertices", def->fixed_face, "compliant: no face %d to fix",
                             def->fixed_face);
+    const ori_design *dsg = def->design;
+    if (dsg && (ori_design_edge_count(dsg) != ne || ori_design_face_count(dsg) != nf))
+        return ori__fail(error, ORI_ERR_ARGUMENT, "compliant: the design has %d edges and %d faces, the pattern %d and %d",
+                         ori_design_edge_count(dsg), ori_design_face_count(dsg), ne, nf);
     double *target = ori__alloc(sizeof(double) * (size_t)(ne > 0 ? ne : 1));
     if (def->target_angles_rad) memcpy(target, def->target_angles_rad, sizeof(double) * (size_t)ne);
     else ori_target_angles_default(p, target);
@@ -438,6 +603,9 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     ori_compliant *c = ori__calloc(1, sizeof *c);
     c->def = *def;
     c->def.target_angles_rad = NULL;
+    c->def.design = NULL;
+    c->unit = dsg ? ori_design_meters_per_unit(dsg) : 1.0;
+    c->field = def->field_t;
     c->nv = nv;
     c->ne = ne;
     c->x = ori__alloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
@@ -448,6 +616,8 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
         c->x[3 * v] = rot.m[0][0] * q.x + rot.m[0][1] * q.y + rot.m[0][2] * q.z;
         c->x[3 * v + 1] = rot.m[1][0] * q.x + rot.m[1][1] * q.y + rot.m[1][2] * q.z;
         c->x[3 * v + 2] = 0.0;
+        c->x[3 * v] *= c->unit;
+        c->x[3 * v + 1] *= c->unit;
     }
     memcpy(c->x0, c->x, sizeof(double) * 3 * (size_t)nv);
 
@@ -503,10 +673,27 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     }
     const ori_compliant_def *d = &c->def;
     bool phys = d->preset == ORI_COMPLIANT_PHYSICAL;
+    // per face: Young's modulus, thickness, density (a design's panel, else the preset's)
+    double *fE = ori__alloc(sizeof(double) * (size_t)nf), *ft = ori__alloc(sizeof(double) * (size_t)nf);
+    double *frho = ori__alloc(sizeof(double) * (size_t)nf);
+    for (int f = 0; f < nf; ++f) {
+        fE[f] = d->young_modulus_pa;
+        ft[f] = d->thickness_m;
+        frho[f] = d->density_kg_m3;
+        ori_panel pn;
+        if (dsg && ori_design_panel(dsg, f, &pn)) {
+            const ori_material *m = ori__materials_get(dsg->materials, pn.material);
+            if (m && m->youngs_modulus_pa > 0.0) fE[f] = m->youngs_modulus_pa;
+            if (m && m->density_kg_m3 > 0.0) frho[f] = m->density_kg_m3;
+            ft[f] = pn.thickness_m;
+        }
+    }
     // masses: unit per vertex (Origami Simulator), or ρ t A / 3 per triangle corner
     c->mass = ori__calloc((size_t)(nv > 0 ? nv : 1), sizeof(double));
-    for (int t = 0; t < c->ntri; ++t)
-        for (int q = 0; q < 3; ++q) c->mass[c->tris[3 * t + q]] += phys ? d->density_kg_m3 * d->thickness_m * tri_area[t] / 3.0 : 0.0;
+    for (int t = 0; t < c->ntri; ++t) {
+        int f = c->tri_face[t];
+        for (int q = 0; q < 3; ++q) c->mass[c->tris[3 * t + q]] += phys ? frho[f] * ft[f] * tri_area[t] / 3.0 : 0.0;
+    }
     bool *used = ori__calloc((size_t)(nv > 0 ? nv : 1), sizeof(bool));
     for (int t = 0; t < 3 * c->ntri; ++t) used[c->tris[t]] = true;
     if (!phys)
@@ -529,9 +716,12 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
         cmp_bar bar = {l->a, l->b, l->edge, l0, 0.0, 0.0, {-1, -1}};
         link_faces(c, l, bar.face);
         if (phys) {
-            double at = 0.0;
-            for (int s = 0; s < l->ntri; ++s) at += tri_area[l->tri[s]];
-            bar.k = (2.0 / 3.0) * d->young_modulus_pa * d->thickness_m / (1.0 - d->poisson_ratio) * at / (l0 * l0);
+            double eta = 0.0; // Σ E t A over the bar's triangles
+            for (int s = 0; s < l->ntri; ++s) {
+                int f = c->tri_face[l->tri[s]];
+                eta += fE[f] * ft[f] * tri_area[l->tri[s]];
+            }
+            bar.k = (2.0 / 3.0) * eta / (1.0 - d->poisson_ratio) / (l0 * l0);
         } else {
             bar.k = d->axial_stiffness / l0;
         }
@@ -542,6 +732,11 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     }
     // hinges
     c->hinges = ori__alloc(sizeof(cmp_hinge) * (size_t)(bd.nlinks > 0 ? bd.nlinks : 1));
+    if (dsg) {
+        c->hsec = ori__calloc((size_t)(bd.nlinks > 0 ? bd.nlinks : 1), sizeof(hinge_section));
+        c->hfib = ori__calloc((size_t)(bd.nlinks > 0 ? bd.nlinks : 1), sizeof(hinge_fibres));
+        c->hplastic = ori__calloc((size_t)(bd.nlinks > 0 ? bd.nlinks : 1), sizeof(bool));
+    }
     for (int k = 0; k < bd.nlinks && !st; ++k) {
         const link *l = &bd.links[k];
         if (l->ntri != 2) continue;
@@ -568,11 +763,17 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
         }
         const double *a = c->x + 3 * h.j, *b = c->x + 3 * h.k;
         double len = hypot(b[0] - a[0], b[1] - a[1]);
-        if (crease) {
+        hinge_section sec;
+        if (crease && dsg && l->edge >= 0 && ori__design_section(dsg, l->edge, &sec)) {
+            c->hsec[c->nhinge] = sec;
+            c->hplastic[c->nhinge] = true;
+            h.k_h = sec.k;
+        } else if (crease) {
             h.k_h = phys ? d->crease_stiffness_per_m * len : d->crease_stiffness * len;
         } else if (phys) {
-            double D = d->young_modulus_pa * pow(d->thickness_m, 3) / (12.0 * (1.0 - d->poisson_ratio * d->poisson_ratio));
-            h.k_h = CMP_FILIPOV_C * D * cbrt(len / d->thickness_m);
+            int f = h.face[0];
+            double D = fE[f] * pow(ft[f], 3) / (12.0 * (1.0 - d->poisson_ratio * d->poisson_ratio));
+            h.k_h = CMP_FILIPOV_C * D * cbrt(len / ft[f]);
         } else {
             h.k_h = d->facet_stiffness * len;
         }
@@ -581,6 +782,9 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     }
     ori__free(bd.links);
     ori__free(target);
+    ori__free(fE);
+    ori__free(ft);
+    ori__free(frho);
     if (st) {
         ori__free(tri_area);
         ori__free(used);
@@ -632,6 +836,7 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
         }
     ori__free(tri_area);
     ori__free(used);
+    if (dsg) place_wires(c, p, dsg, &rot);
 
     // scales
     double load = 0.0, floor_scale = 0.0, kmax_h = 0.0;
@@ -642,6 +847,18 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
     }
     if (d->gravity != 0.0)
         for (int v = 0; v < nv; ++v) load = fmax(load, c->mass[v] * fabs(d->gravity));
+    // a wire's Lorentz force N·I·|B|·(its loop's longest segment)
+    for (int w = 0; w < c->nwire; ++w) {
+        const cmp_wire *wr = &c->wires[w];
+        double seg = 0.0;
+        for (int i = 0; i < wr->count; ++i) {
+            double a[3], b[3];
+            ori__cmp_wire_point(c, wr->first + i, c->x, a);
+            ori__cmp_wire_point(c, wr->first + (i + 1) % wr->count, c->x, b);
+            seg = fmax(seg, sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2])));
+        }
+        load = fmax(load, fabs(wr->ni) * ori_v3_norm(c->field) * seg * CMP_WIRE_SUBSEGMENTS);
+    }
     if (!(load > 0.0)) load = kmax_h > 0.0 ? kmax_h / c->mean_length : 1.0;
     for (int b = 0; b < c->nbar; ++b) floor_scale = fmax(floor_scale, c->bars[b].k * c->bars[b].l0);
     // a hinge's force k_h (ρ − ρ_rest) ∇ρ is known to about ε k_h π |∇ρ|, |∇ρ| ≤ |r_kj| / height
@@ -717,7 +934,8 @@ static void store_frame(ori_compliant *c, bool replace_last)
     cmp_frame *f = &c->frames[c->nframes++];
     f->fraction = c->fraction;
     f->x = ori__alloc(sizeof(ori_v3) * (size_t)(c->nv > 0 ? c->nv : 1));
-    for (int v = 0; v < c->nv; ++v) f->x[v] = (ori_v3){c->x[3 * v], c->x[3 * v + 1], c->x[3 * v + 2]};
+    for (int v = 0; v < c->nv; ++v)
+        f->x[v] = (ori_v3){c->x[3 * v] / c->unit, c->x[3 * v + 1] / c->unit, c->x[3 * v + 2] / c->unit};
     f->angles = ori__alloc(sizeof(double) * (size_t)(c->ne > 0 ? c->ne : 1));
     f->strains = ori__alloc(sizeof(double) * (size_t)(c->ne > 0 ? c->ne : 1));
     for (int e = 0; e < c->ne; ++e) {
@@ -832,6 +1050,7 @@ static int relax(ori_compliant *c, double frac, int max_steps, double ftol, doub
             *diverged = true;
             return k + 1;
         }
+        ori__cmp_commit_fibres(c, c->x, frac);
         if (k % CMP_CONTACT_INTERVAL == CMP_CONTACT_INTERVAL - 1) check_contacts(c, k + 1, frac);
         if ((k & 15) == 15) {
             accept_angles(c);
@@ -955,6 +1174,7 @@ ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
     // the load parameter t runs 0 → 1: fraction f0 → f1, gravity factor g0 → 1
     double dt0 = fmin(1.0, c->def.max_step_rad / fmax(span, DBL_MIN));
     if (c->def.gravity != 0.0 && g0 < 1.0) dt0 = fmin(dt0, 0.1);
+    if (c->nwire > 0 && f1 != f0) dt0 = fmin(dt0, CMP_WIRE_LOAD_STEP / fabs(f1 - f0)); // the current ramps with the fraction
     double tol = fmax(c->def.tolerance * c->load_scale, c->grad_floor);
     ori_status st = ORI_OK;
     double t = 0.0, dt = dt0, dt_prev = 0.0;
@@ -978,6 +1198,7 @@ ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
             dt_prev = tn - t;
             t = tn;
             c->fraction = f;
+            ori__cmp_commit_fibres(c, c->x, f);
             store_frame(c, !c->def.keep_frames);
             check_contacts(c, c->load_steps, f);
             dt = fmin(dt0, dt * 1.5);
@@ -1074,6 +1295,29 @@ void ori_compliant_stats(const ori_compliant *c, int *iterations, int *factoriza
 }
 
 int ori_compliant_face_count(const ori_compliant *c) { return c->nf; }
+
+double ori_compliant_plastic_rotation(const ori_compliant *c, int edge)
+{
+    ORI_ASSERT(edge >= 0 && edge < c->ne);
+    int hh = c->edge_hinge[edge];
+    if (hh < 0 || !c->hplastic || !c->hplastic[hh]) return 0.0;
+    const cmp_hinge *h = &c->hinges[hh];
+    hinge_section s = c->hsec[hh];
+    s.rest = h->crease ? h->target * c->fraction : 0.0;
+    return ori__hinge_plastic_rotation(&s, &c->hfib[hh], ori__cmp_hinge_angle(c->x, h, h->ref));
+}
+
+double ori_compliant_wire_current(const ori_compliant *c, int edge)
+{
+    ORI_ASSERT(edge >= 0 && edge < c->ne);
+    for (int w = 0; w < c->nwire; ++w)
+        if (c->wires[w].edge == edge) {
+            return c->wires[w].ni * c->fraction / (double)c->wires[w].turns;
+        }
+    return 0.0;
+}
+
+int ori_compliant_wire_count(const ori_compliant *c) { return c->nwire; }
 
 double ori_compliant_face_energy(const ori_compliant *c, int face)
 {

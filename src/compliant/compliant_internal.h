@@ -9,6 +9,7 @@
 
 #include "../core/core_internal.h"
 #include "../kinematics/kinematics_internal.h"
+#include "../mechanics/mechanics_internal.h"
 
 typedef struct cmp_bar {
     int a, b;
@@ -28,6 +29,28 @@ typedef struct cmp_hinge {
     double ref;  // last accepted fold angle: the unwrapping reference
     int face[2]; // the pattern faces of its two triangles (face[1] −1 when both are face[0])
 } cmp_hinge;
+
+// A point of a wire's current loop, fixed in its triangle: p = Σ w[q] x[v[q]].
+typedef struct cmp_wpt {
+    int v[3];
+    double w[3];
+} cmp_wpt;
+
+// A design's wire: its closed current loop (points first … first + count − 1, in order of the
+// current) on its panel. Its energy in a uniform field B is −ni·fraction·B·A(p), A = ½ Σ p_i ×
+// p_{i+1} the loop's vector area: the Lorentz forces on the loop's segments, lumped half to
+// each end, are exactly minus its gradient.
+// Pieces each straight segment of a wire's loop is split into (its points follow the panel's
+// triangles as they bend).
+#define CMP_WIRE_SUBSEGMENTS 8
+// Point k of the wire loops at positions x (3 nv).
+void ori__cmp_wire_point(const ori_compliant *c, int k, const double *x, double p[3]);
+
+typedef struct cmp_wire {
+    int edge, face, turns;
+    int first, count;
+    double ni; // turns × signed current at fraction 1 (A)
+} cmp_wire;
 
 typedef struct cmp_frame {
     double fraction;
@@ -56,6 +79,15 @@ struct ori_compliant {
     int *tri_face;  // triangle → pattern face
     int *edge_bar;  // pattern edge → bar
     int *edge_hinge; // pattern edge → hinge or -1
+    hinge_section *hsec; // per hinge: its layered section (a design's hinge), when hplastic
+    hinge_fibres *hfib;  // per hinge: the fibres of the last accepted state
+    bool *hplastic;      // per hinge (NULL without a design)
+    cmp_wire *wires;
+    int nwire;
+    cmp_wpt *wpts;
+    int nwpt;
+    ori_v3 field;   // B (T)
+    double unit;    // metres per pattern unit (1 without a design): positions inside are metres
     double *mass;   // per vertex
     double m_min;
     int *dof;       // vertex → first free dof, or -1 when held
@@ -92,6 +124,12 @@ void ori__cmp_hinge_gradient(const double *x, const cmp_hinge *h, double g[12]);
 // Hessian of ρ (12 × 12, row-major), complex-step differentiation of the exact gradient.
 void ori__cmp_hinge_hessian(const double *x, const cmp_hinge *h, double hess[144]);
 
+// Energy of hinge hh at fold angle theta and fraction, its first and second derivatives in theta
+// (*d1, *d2): ½k(θ − rest)², or a layered section's incremental potential from its last accepted
+// fibres.
+double ori__cmp_hinge_energy(const ori_compliant *c, int hh, double theta, double fraction, double *d1, double *d2);
+// Accept the layered hinges' fibres at positions x (fraction): the plastic strain moves on.
+void ori__cmp_commit_fibres(ori_compliant *c, const double *x, double fraction);
 // Total energy at positions x (3 nv) and fraction; gradient (3 nv, NULL = skip, held vertices 0).
 double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction, double *grad);
 // Assemble the Hessian of the energy at x into the sparse matrix's values (upper triangle); with

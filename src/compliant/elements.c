@@ -116,6 +116,80 @@ void ori__cmp_hinge_hessian(const double *x, const cmp_hinge *h, double hess[144
         }
 }
 
+double ori__cmp_hinge_energy(const ori_compliant *c, int hh, double theta, double fraction, double *d1, double *d2)
+{
+    const cmp_hinge *h = &c->hinges[hh];
+    double rest = h->crease ? h->target * fraction : 0.0;
+    if (c->hplastic && c->hplastic[hh]) {
+        hinge_section s = c->hsec[hh];
+        s.rest = rest;
+        return ori__hinge_potential(&s, &c->hfib[hh], theta, d1, d2);
+    }
+    double d = theta - rest;
+    if (d1) *d1 = h->k_h * d;
+    if (d2) *d2 = h->k_h;
+    return 0.5 * h->k_h * d * d;
+}
+
+void ori__cmp_commit_fibres(ori_compliant *c, const double *x, double fraction)
+{
+    if (!c->hplastic) return;
+    for (int hh = 0; hh < c->nhinge; ++hh) {
+        if (!c->hplastic[hh]) continue;
+        const cmp_hinge *h = &c->hinges[hh];
+        hinge_section s = c->hsec[hh];
+        s.rest = h->crease ? h->target * fraction : 0.0;
+        ori__hinge_moment(&s, &c->hfib[hh], ori__cmp_hinge_angle(x, h, h->ref), &c->hfib[hh], NULL);
+    }
+}
+
+// A wire loop's point k at positions x.
+void ori__cmp_wire_point(const ori_compliant *c, int k, const double *x, double p[3])
+{
+    const cmp_wpt *w = &c->wpts[k];
+    for (int q = 0; q < 3; ++q) p[q] = w->w[0] * x[3 * w->v[0] + q] + w->w[1] * x[3 * w->v[1] + q] + w->w[2] * x[3 * w->v[2] + q];
+}
+
+static void cross3(const double *a, const double *b, double *out)
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// The wires' energy −Σ ni·fraction·B·A(loop) and its gradient (added to grad).
+static double wires_energy(const ori_compliant *c, const double *x, double fraction, double *grad)
+{
+    double e = 0.0, B[3] = {c->field.x, c->field.y, c->field.z};
+    for (int w = 0; w < c->nwire; ++w) {
+        const cmp_wire *wr = &c->wires[w];
+        double s = wr->ni * fraction;
+        if (s == 0.0) continue;
+        int n = wr->count;
+        double area[3] = {0, 0, 0};
+        for (int i = 0; i < n; ++i) {
+            double p[3], q[3], cr[3];
+            ori__cmp_wire_point(c, wr->first + i, x, p);
+            ori__cmp_wire_point(c, wr->first + (i + 1) % n, x, q);
+            cross3(p, q, cr);
+            for (int r = 0; r < 3; ++r) area[r] += 0.5 * cr[r];
+            if (!grad) continue;
+            // ∂(B·A)/∂p_i = ½ (p_{i+1} − p_{i−1}) × B: this pair gives p_i ½ p_{i+1} × B and p_{i+1} −½ p_i × B
+            double fq[3], fp[3];
+            cross3(q, B, fq);
+            cross3(p, B, fp);
+            const cmp_wpt *a = &c->wpts[wr->first + i], *b = &c->wpts[wr->first + (i + 1) % n];
+            for (int t = 0; t < 3; ++t)
+                for (int r = 0; r < 3; ++r) {
+                    grad[3 * a->v[t] + r] -= s * 0.5 * a->w[t] * fq[r];
+                    grad[3 * b->v[t] + r] += s * 0.5 * b->w[t] * fp[r];
+                }
+        }
+        e -= s * (B[0] * area[0] + B[1] * area[1] + B[2] * area[2]);
+    }
+    return e;
+}
+
 double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction, double *grad)
 {
     double e = 0.0;
@@ -138,17 +212,17 @@ double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction,
     }
     for (int hh = 0; hh < c->nhinge; ++hh) {
         const cmp_hinge *h = &c->hinges[hh];
-        double rest = h->crease ? h->target * fraction : 0.0;
-        double d = ori__cmp_hinge_angle(x, h, h->ref) - rest;
-        e += 0.5 * h->k_h * d * d;
+        double m;
+        e += ori__cmp_hinge_energy(c, hh, ori__cmp_hinge_angle(x, h, h->ref), fraction, &m, NULL);
         if (grad) {
             double g[12];
             ori__cmp_hinge_gradient(x, h, g);
             const int node[4] = {h->j, h->k, h->i, h->l};
             for (int a = 0; a < 4; ++a)
-                for (int q = 0; q < 3; ++q) grad[3 * node[a] + q] += h->k_h * d * g[3 * a + q];
+                for (int q = 0; q < 3; ++q) grad[3 * node[a] + q] += m * g[3 * a + q];
         }
     }
+    if (c->nwire) e += wires_energy(c, x, fraction, grad);
     double g = c->def.gravity * c->gravity_factor;
     if (g != 0.0)
         for (int v = 0; v < c->nv; ++v) {
@@ -255,8 +329,8 @@ void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction, bool p
     }
     for (int hh = 0; hh < c->nhinge; ++hh) {
         const cmp_hinge *h = &c->hinges[hh];
-        double rest = h->crease ? h->target * fraction : 0.0;
-        double d = ori__cmp_hinge_angle(x, h, h->ref) - rest;
+        double d1, d2;
+        ori__cmp_hinge_energy(c, hh, ori__cmp_hinge_angle(x, h, h->ref), fraction, &d1, &d2);
         double g[12], H[144];
         ori__cmp_hinge_gradient(x, h, g);
         if (psd) memset(H, 0, sizeof H);
@@ -268,9 +342,30 @@ void ori__cmp_hessian(ori_compliant *c, const double *x, double fraction, bool p
                 for (int p = 0; p < 3; ++p)
                     for (int q = 0; q < 3; ++q) {
                         int r = 3 * a + p, s = 3 * b + q;
-                        K[p][q] = h->k_h * (g[r] * g[s] + d * H[r * 12 + s]);
+                        K[p][q] = d2 * g[r] * g[s] + d1 * H[r * 12 + s];
                     }
                 add_block(c, val, node[a], node[b], K);
             }
+    }
+    // The wires' energy is bilinear in the loop points: ∂²/∂p_i∂p_{i+1} of −(s/2) B·(p_i × p_{i+1})
+    // is (s/2)[B]×. Skew, so a vertex's own block gets nothing; indefinite, so the positive
+    // semi-definite fallback leaves it out.
+    if (psd) return;
+    for (int w = 0; w < c->nwire; ++w) {
+        const cmp_wire *wr = &c->wires[w];
+        double s = 0.5 * wr->ni * fraction;
+        if (s == 0.0) continue;
+        double Bx[3][3] = {{0.0, -c->field.z, c->field.y}, {c->field.z, 0.0, -c->field.x}, {-c->field.y, c->field.x, 0.0}};
+        for (int i = 0; i < wr->count; ++i) {
+            const cmp_wpt *a = &c->wpts[wr->first + i], *b = &c->wpts[wr->first + (i + 1) % wr->count];
+            for (int ta = 0; ta < 3; ++ta)
+                for (int tb = 0; tb < 3; ++tb) {
+                    if (a->v[ta] == b->v[tb] || a->w[ta] == 0.0 || b->w[tb] == 0.0) continue;
+                    double K[3][3], f = s * a->w[ta] * b->w[tb];
+                    for (int p = 0; p < 3; ++p)
+                        for (int q = 0; q < 3; ++q) K[p][q] = f * Bx[p][q];
+                    add_block(c, val, a->v[ta], b->v[tb], K);
+                }
+        }
     }
 }

@@ -106,3 +106,28 @@ double ori__hinge_plastic_rotation(const hinge_section *s, const hinge_fibres *f
     double m = ori__hinge_moment(s, f, theta, NULL, NULL);
     return theta - s->rest - m / s->k;
 }
+
+double ori__hinge_potential(const hinge_section *s, const hinge_fibres *from, double theta, double *moment, double *tangent)
+{
+    double u = (theta - s->rest) / s->th_y, c = scale_c();
+    double phi = 0.0, sum = 0.0, stiff = 0.0;
+    for (int i = 0; i < ORI__HALF_LAYERS; ++i) {
+        double z = zeta(i), st = u * c * z - from->p[i];
+        if (st > 1.0) {
+            phi += st - 0.5;
+            sum += z;
+        } else if (st < -1.0) {
+            phi += -st - 0.5;
+            sum -= z;
+        } else {
+            phi += 0.5 * st * st;
+            sum += st * z;
+            stiff += c * z * z;
+        }
+    }
+    // Per fibre ½s² while elastic, ½ + (|s| − 1) beyond yield (the plastic work of the step):
+    // the same scale as ori__hinge_energy, whose derivative is the moment above.
+    if (moment) *moment = s->m_p * (4.0 / layers) * sum;
+    if (tangent) *tangent = s->m_p * (4.0 / layers) * stiff / s->th_y;
+    return s->m_p * s->th_y * (4.0 / (layers * c)) * phi;
+}

@@ -64,6 +64,11 @@ double ori__hinge_moment(const hinge_section *s, const hinge_fibres *from, doubl
 double ori__hinge_energy(const hinge_section *s, const hinge_fibres *f, double theta);
 // Permanent rotation: the fold angle at which the hinge would carry no moment, minus the rest.
 double ori__hinge_plastic_rotation(const hinge_section *s, const hinge_fibres *f, double theta);
+// Incremental potential of a step from fibres `from` to fold angle theta (J): the elastic energy
+// while no fibre yields, plus the step's plastic work beyond; convex in theta. Its derivative
+// (*moment, = ori__hinge_moment's) and second derivative (*tangent, the elastic fibres'
+// stiffness) in theta; either may be NULL. The compliant model's energy of a layered hinge.
+double ori__hinge_potential(const hinge_section *s, const hinge_fibres *from, double theta, double *moment, double *tangent);
 // The section of an edge's hinge (false when none); rest angle 0.
 bool ori__design_section(const ori_design *d, int edge, hinge_section *out);
 
