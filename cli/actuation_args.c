@@ -23,7 +23,7 @@ static const opt_spec specs[] = {
     {"--damping", true, true, false},         {"--pulse", true, true, false},
     {"--frames", true, true, false},          {"--no-stops", false, true, false},
     {"--frame", true, true, false},           {"--json", false, true, false},
-    {"-o", true, true, false},
+    {"-o", true, true, false},                {"--model", true, true, false},
 };
 
 static int positive(const char *cmd, const char *opt, const char *v, double *out, bool allow_zero)
@@ -104,6 +104,10 @@ int act_parse(const char *cmd, int argc, char **argv, bool simulate, act_opts *o
             if (!cli_parse_int(v, &o->frame) || o->frame < 0) return cli_usage(cmd, "--frame needs a frame number >= 0");
         } else if (strcmp(a, "--json") == 0) o->json = true;
         else if (strcmp(a, "-o") == 0) o->out = v;
+        else if (strcmp(a, "--model") == 0) {
+            if (strcmp(v, "compliant") == 0) o->compliant = true;
+            else if (strcmp(v, "rigid") != 0) return cli_usage(cmd, "--model is rigid or compliant, got '%s'", v);
+        }
         if (rc != CLI_EXIT_OK) return rc;
     }
     if (o->fixed_field && o->reorientations >= 0) return cli_usage(cmd, "--fixed-field and --reorientations exclude each other");

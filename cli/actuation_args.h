@@ -40,6 +40,7 @@ typedef struct act_opts {
     int frame;                 // --frame N
     bool json;
     const char *out;           // -o OUT.fold
+    bool compliant;            // --model compliant (simulate)
 } act_opts;
 
 // Parse the command's own options (simulate: all of them) from argv; everything else is copied
@@ -72,6 +73,9 @@ int act_run_sequence(const char *cmd, act_input *in, ori_record **out);
 int act_size(const char *cmd, act_input *in, const act_opts *o, const ori_motion *motion, int driven_edge,
              const ori_record *record, ori_sizing **out);
 
+// simulate --model compliant (simulate_compliant.c): the quasi-static equilibria of the
+// bar-and-hinge model as the wires' current ramps up and off; o parsed by act_parse, path a FILE.
+int act_simulate_compliant(const char *path, const act_opts *o);
 // JSON of a field schedule: [{"from_deg", "crease", "field"}].
 json_t *act_schedule_json(const ori_field_change *s, int n);
 

@@ -198,6 +198,7 @@ static int run(int argc, char **argv)
     free(rest);
     if (rc != CLI_EXIT_OK) return rc;
     if (!path) return cli_usage("simulate", "missing FILE or SEQ.json");
+    if (o.compliant) return act_simulate_compliant(path, &o);
     if (!o.has_duration) return cli_usage("simulate", "missing --duration S");
     if (o.has_dt && !(ceil(o.duration / (o.frames - 1) / o.dt) * (o.frames - 1) <= ORI_DYN_MAX_STEPS)) // the library's own bound, before any work
         return cli_usage("simulate", "--dt %g over --duration %g is more than the %.3g time steps a simulation takes: --dt at least %.3g", o.dt, o.duration, (double)ORI_DYN_MAX_STEPS, o.duration / ORI_DYN_MAX_STEPS);
@@ -335,6 +336,7 @@ const cli_command cli_cmd_simulate = {
     "folding dynamics: Lorentz-driven elastoplastic hinges, closed loops, latched angles",
     "usage: orikin simulate FILE --fix FACE --current A --duration S [options]\n"
     "       orikin simulate SEQ.json --current A --duration S [options]\n"
+    "       orikin simulate FILE --model compliant --fix FACE --current A [options]\n"
     "\n"
     "Integrate the motion of the whole sheet in time (closed loops included): panels with mass\n"
     "and inertia from their geometry and density, elastoplastic hinges (elastic up to first\n"
@@ -350,6 +352,7 @@ const cli_command cli_cmd_simulate = {
     "the time to the target, the latched angles after the sheet comes to rest, the peak angular\n"
     "velocity, the energy drift and the largest loop-closure residual. Exit 0 done, 2 usage, 3\n"
     "bad input, 4 the integration failed.\n"
+
     "\n"
     "options:\n"
     "  --fix FACE          face held in place: FOLD index, name (Obj12) or @x,y (FILE; a sequence\n"
@@ -368,6 +371,7 @@ const cli_command cli_cmd_simulate = {
     "  --frame N           start from the fold angles of frame N (FILE)\n"
     "  --materials FILE    materials JSON extending the built-in table\n"
     "  --unit U            length unit of the coordinates: m, cm, mm, um, nm, in, pt\n"
+    "  --model M           rigid (default: rigid panels, dynamics in time) or compliant\n"
     "  --json              print {file, time_to_target (s or null), latched_angle_deg: [per edge],\n"
     "                      peak_angular_velocity, energy_drift, max_residual, dt, steps,\n"
     "                      explicit_steps, energy_in, dissipated, schedule, field_schedule,\n"
@@ -377,7 +381,22 @@ const cli_command cli_cmd_simulate = {
     "                      frame_time (s), orikin:edges_current (A), orikin:edges_plasticRotation\n"
     "                      (deg) and orikin:field (T)\n"
     "\n"
-    "example: orikin simulate examples/patterns/thesis-flap.fold --fix 0 --current 0.02 --duration 0.01\n",
+    "example: orikin simulate examples/patterns/thesis-flap.fold --fix 0 --current 0.02 --duration 0.01\n"
+    "         orikin simulate examples/patterns/thesis-flap.fold --model compliant --fix 0 --current 0.02\n",
     run,
-    NULL,
+    "\ncompliant panels (--model compliant):\n"
+    "The panels bend and stretch: the bar-and-hinge model of fold --compliant with the file's\n"
+    "panels, layered hinges and wires (docs/compliant.md). Each wire is a current loop on its\n"
+    "panel in the field, its Lorentz forces lumped on the panel's vertices. The equilibria are\n"
+    "followed as the current ramps from 0 to A in load steps and then off again. Reports the\n"
+    "angles under current, the permanent (plastic) rotations, the largest strain and the\n"
+    "latched angles. The field is the file's (or its schedule's first), gravity along -z; the\n"
+    "rigid model's time options do not apply. Exit 4 when there is no equilibrium along the\n"
+    "ramp (the sheet snaps).\n"
+    "  --json              prints {file, model, fixed_face, field, current, vertices,\n"
+    "                      bars, hinges, wires, loaded: {angles_deg, plastic_rotation_deg,\n"
+    "                      currents, max_strain, energy}, latched_angle_deg, plastic_rotation_deg,\n"
+    "                      frames: [{current_fraction, current_on, angles_deg, max_strain}],\n"
+    "                      contacts}; -o writes every load step as a folded-form frame with\n"
+    "                      orikin:fraction (of the current) and the strains of fold --compliant\n",
 };

@@ -103,15 +103,16 @@ static json_t *edge_array(const double *v, int n, bool degrees)
     return arr;
 }
 
-static int write_frames(const compliant_args *a, ori_fold *doc, const ori_compliant *c, int E)
+int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, const ori_compliant *c, int E, bool all,
+                               const char *title_format)
 {
     int V = ori_compliant_vertex_count(c);
     ori_error err;
     for (int k = 0; k < ori_compliant_frame_count(c); ++k) {
-        if (k == 0 && ori_compliant_frame_count(c) > 1 && ori_compliant_frame_fraction(c, 0) == 0.0 && !a->frames) continue;
+        if (k == 0 && ori_compliant_frame_count(c) > 1 && ori_compliant_frame_fraction(c, 0) == 0.0 && !all) continue;
         double f = ori_compliant_frame_fraction(c, k);
-        char title[96];
-        snprintf(title, sizeof title, "compliant fold: %.6g %% of the way to the targets", 100.0 * f);
+        char title[128];
+        snprintf(title, sizeof title, title_format, 100.0 * f);
         int fr = ori_fold_append_state(doc, 0, V, ori_compliant_frame_positions(c, k), E, ori_compliant_frame_angles(c, k), title);
         char num[64];
         snprintf(num, sizeof num, "%.17g", f);
@@ -131,10 +132,10 @@ static int write_frames(const compliant_args *a, ori_fold *doc, const ori_compli
             st = ori_fold_set_custom(doc, fr, keys[q], text, &err);
             free(text);
         }
-        if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
+        if (st != ORI_OK) return cli_input_error(cmd, out, &err);
     }
-    ori_status st = ori_fold_save_file(doc, a->out, &err);
-    if (st != ORI_OK) return cli_input_error("fold", a->out, &err);
+    ori_status st = ori_fold_save_file(doc, out, &err);
+    if (st != ORI_OK) return cli_input_error(cmd, out, &err);
     return CLI_EXIT_OK;
 }
 
@@ -283,7 +284,8 @@ int cli_fold_compliant_run(int argc, char **argv)
                NF > 0 ? 100.0 * ori_compliant_face_strain(c, worst_face) : 0.0, ori_compliant_contact_count(c),
                ori_compliant_contact_count(c) == 1 ? "" : "s");
     }
-    if (rc == CLI_EXIT_OK && a.out) rc = write_frames(&a, doc, c, E);
+    if (rc == CLI_EXIT_OK && a.out)
+        rc = cli_compliant_write_frames("fold", a.out, doc, c, E, a.frames, "compliant fold: %.6g %% of the way to the targets");
     if (rc == CLI_EXIT_OK && !reached) rc = a.dynamic ? CLI_EXIT_PARTIAL : CLI_EXIT_NEGATIVE;
     ori_compliant_destroy(c);
     ori_pattern_destroy(p);

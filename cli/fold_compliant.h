@@ -5,10 +5,18 @@
 
 #include <stdbool.h>
 
+#include <orikin/compliant.h>
+#include <orikin/fold.h>
+
 // Whether --compliant is given.
 bool cli_fold_compliant_wanted(int argc, char **argv);
 // Run the compliant fold (argv[0] = "fold").
 int cli_fold_compliant_run(int argc, char **argv);
+// Append the model's frames to doc as folded-form frames ("orikin:fraction", "edges_orikin:strain",
+// "faces_orikin:strain_energy", "faces_orikin:strain"; the flat first frame only with all) and
+// save it to out; title_format takes the frame's percent. Prints errors (as cmd).
+int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, const ori_compliant *c, int E, bool all,
+                               const char *title_format);
 
 #define CLI_FOLD_COMPLIANT_HELP                                                                          \
     "compliant folding (--compliant; docs/compliant.md):\n"                                              \
