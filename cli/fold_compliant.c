@@ -16,7 +16,7 @@ typedef struct compliant_args {
     const char *path, *out, *fix;
     double percent;
     bool dynamic, json, physical, frames;
-    int steps;
+    int steps, threads;
     double axial, facet, crease, damping, gravity;
     bool has_axial, has_facet, has_crease, has_damping;
     cli_input input;
@@ -35,6 +35,7 @@ static int parse(int argc, char **argv, compliant_args *a)
     memset(a, 0, sizeof *a);
     a->percent = 100.0;
     a->steps = 1000000;
+    a->threads = 1;
     cli_input_init(&a->input);
     cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
@@ -49,7 +50,7 @@ static int parse(int argc, char **argv, compliant_args *a)
         else if (strcmp(o, "--percent") == 0 || strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0 ||
                  strcmp(o, "--fix") == 0 || strcmp(o, "--preset") == 0 || strcmp(o, "--axial") == 0 ||
                  strcmp(o, "--facet") == 0 || strcmp(o, "--crease") == 0 || strcmp(o, "--damping") == 0 ||
-                 strcmp(o, "--gravity") == 0 || strcmp(o, "--steps") == 0) {
+                 strcmp(o, "--gravity") == 0 || strcmp(o, "--steps") == 0 || strcmp(o, "--threads") == 0) {
             if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
             int rc = CLI_EXIT_OK;
             if (strcmp(o, "--percent") == 0) {
@@ -81,6 +82,9 @@ static int parse(int argc, char **argv, compliant_args *a)
             } else if (strcmp(o, "--steps") == 0) {
                 if (!cli_parse_int(v, &a->steps) || a->steps <= 0)
                     return cli_usage(cmd, "--steps needs a positive integer, got '%s'", v);
+            } else if (strcmp(o, "--threads") == 0) {
+                if (!cli_parse_int(v, &a->threads) || a->threads < 1 || a->threads > 64)
+                    return cli_usage(cmd, "--threads needs an integer from 1 to 64, got '%s'", v);
             }
             if (rc != CLI_EXIT_OK) return rc;
         } else if (o[0] == '-' && o[1]) {
@@ -164,6 +168,7 @@ int cli_fold_compliant_run(int argc, char **argv)
         d.crease_stiffness_per_m = a.crease;
     }
     if (a.has_damping) d.damping = a.damping;
+    d.threads = a.threads;
     d.gravity = a.gravity;
     d.fraction = a.percent / 100.0;
     d.keep_frames = a.frames;

@@ -22,7 +22,7 @@ int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, 
     "compliant folding (--compliant; docs/compliant.md):\n"                                              \
     "  orikin fold FILE --compliant [--percent P] [--dynamic] [--fix FACE] [--preset NAME]\n"            \
     "                   [--axial K] [--facet K] [--crease K] [--damping Z] [--gravity G]\n"            \
-    "                   [--steps N] [--all-frames] [--json] [-o OUT]\n"                                 \
+    "                   [--steps N] [--threads N] [--all-frames] [--json] [-o OUT]\n"                   \
     "  Fold with a bar-and-hinge model (Origami Simulator's: faces triangulated, bars on every\n"      \
     "  edge and diagonal, creases driven to P % of their targets, facet hinges resisting panel\n"     \
     "  bending), so that patterns that are not rigidly foldable fold too, bending a little. The\n"    \
@@ -30,6 +30,7 @@ int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, 
     "  of the load); --dynamic runs the explicit damped solver until it settles.\n"                   \
     "  --percent P     how far toward the targets (edges_foldAngle, else +-180 by M/V); default 100\n" \
     "  --dynamic       explicit solver (damped Verlet, stable time step), at most --steps steps\n"     \
+    "  --threads N     explicit solver threads (default 1)\n"                                       \
     "  --preset NAME   origami-simulator (default: axial 20, facet 0.2, crease 0.7, damping 0.45)\n"   \
     "                  or physical (SI: 1 um silicon panels; lengths in metres)\n"                     \
     "  --axial K, --facet K, --crease K, --damping Z   the stiffnesses of the preset, replaced\n"      \

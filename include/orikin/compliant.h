@@ -58,6 +58,8 @@ typedef struct ori_compliant_def {
     double current_a;                ///< current of every wire without its own (A, ≥ 0), at fraction 1
     ori_v3 field_t;                  ///< uniform magnetic field (T)
     bool auto_polarity;              ///< each wire's current is signed to turn its crease toward its assignment (valley +) at the flat state (default true)
+    int threads;                     ///< threads of the explicit solver (1 … 64; default 1): fewer when a thread would get
+                                     ///< under 4,096 bars and hinges; the result is the one thread's to roundoff
     bool keep_frames;                ///< keep one frame per load step (else only the last)
     bool check_contacts;             ///< warn of faces passing through each other (after each load step; every 1024 explicit steps and at the end); default true
     int internal_value;              ///< set by the default functions; do not change

@@ -445,7 +445,7 @@ class Pattern:
              clearance: float = 0.0, progress: Progress = None, compliant: bool = False, dynamic: bool = False,
              preset: str = "origami-simulator", axial: Optional[float] = None, facet: Optional[float] = None,
              crease: Optional[float] = None, damping: Optional[float] = None, gravity: float = 0.0,
-             steps: int = 1000000, all_frames: bool = False) -> Union["Motion", "CompliantFold"]:
+             steps: int = 1000000, threads: int = 1, all_frames: bool = False) -> Union["Motion", "CompliantFold"]:
         """Fold rigidly: fix a face, lock creases, drive a crease (`orikin fold`).
 
         Treat the crease pattern as a mechanism (faces = rigid bodies, creases = revolute
@@ -516,6 +516,7 @@ class Pattern:
           axial, facet, crease, damping   the stiffnesses of the preset, replaced
           gravity   acceleration along -z (model units or m/s^2); default 0
           steps     the explicit solver's step bound (> 0)
+          threads   the explicit solver's threads (1 to 64; large sheets only share them)
           all_frames  keep one frame per load step (the CLI's --all-frames; static only)
         A fold that does not reach its fraction is a result (fold.reached False, fold.reason:
         the CLI's exit 1, or 5 for dynamic); bad stiffnesses are orikin.InputError with the
@@ -541,11 +542,12 @@ class Pattern:
                 if given:
                     raise _usage(f"unknown option '{name}' with --compliant (see orikin fold -h)", name)
             return self._compliant_fold(fix, 100.0 if percent is None else percent, dynamic, preset, axial, facet,
-                                        crease, damping, gravity, steps, all_frames)
+                                        crease, damping, gravity, steps, all_frames, threads)
         for name, given in (("--dynamic", dynamic), ("--preset", preset != "origami-simulator"),
                             ("--axial", axial is not None), ("--facet", facet is not None),
                             ("--crease", crease is not None), ("--damping", damping is not None),
-                            ("--gravity", gravity != 0.0), ("--steps", steps != 1000000), ("--all-frames", all_frames)):
+                            ("--gravity", gravity != 0.0), ("--steps", steps != 1000000), ("--threads", threads != 1),
+                            ("--all-frames", all_frames)):
             if given:
                 raise _usage(f"{name} is an option of the compliant fold: add --compliant", name)
         if fix is None:
@@ -622,7 +624,7 @@ class Pattern:
         return motion
 
     def _compliant_fold(self, fix, percent, dynamic, preset, axial, facet, crease, damping, gravity, steps,
-                        all_frames) -> "CompliantFold":
+                        all_frames, threads=1) -> "CompliantFold":
         """Pattern.fold(compliant=True): the CLI's checks (cli/fold_compliant.c), then the solve."""
         if not (0.0 <= percent <= 100.0):
             raise _usage(f"--percent needs a number from 0 to 100, got '{percent:g}'", "--percent")
@@ -636,13 +638,15 @@ class Pattern:
             raise _usage(f"--gravity needs a number, got '{gravity:g}'", "--gravity")
         if int(steps) != steps or steps <= 0:
             raise _usage(f"--steps needs a positive integer, got '{steps}'", "--steps")
+        if int(threads) != threads or not (1 <= threads <= 64):
+            raise _usage(f"--threads needs an integer from 1 to 64, got '{threads}'", "--threads")
         if dynamic and all_frames:
             raise _usage("--all-frames is for the static solver's load steps, not --dynamic", "--all-frames")
         fix_index = -1 if fix is None else self.face(fix, "--fix")
         d = _c.compliant_fold(self._p, percent / 100.0, bool(dynamic), fix_index, preset == "physical",
                               None if axial is None else float(axial), None if facet is None else float(facet),
                               None if crease is None else float(crease), None if damping is None else float(damping),
-                              float(gravity), int(steps), bool(all_frames))
+                              float(gravity), int(steps), bool(all_frames), threads=int(threads))
         d["percent"] = float(percent)
         return CompliantFold(d, self)
 

@@ -29,18 +29,18 @@ static PyObject *frames_array(const ori_compliant *c, int F, int n, int what)
 }
 
 // compliant_fold(pattern, fraction, dynamic, fix, physical, axial, facet, crease, damping, gravity,
-// steps, keep_frames, tolerance, contacts): the results as a dict (the CLI's --json keys; arrays in radians).
+// steps, keep_frames, tolerance, contacts, threads): the results as a dict (the CLI's --json keys; arrays in radians).
 static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
 {
     (void)mod;
     static char *kwlist[] = {"pattern", "fraction", "dynamic", "fix", "physical", "axial", "facet", "crease",
-                             "damping", "gravity", "steps", "keep_frames", "tolerance", "contacts", NULL};
+                             "damping", "gravity", "steps", "keep_frames", "tolerance", "contacts", "threads", NULL};
     PyObject *pobj, *axial = Py_None, *facet = Py_None, *crease = Py_None, *damping = Py_None;
     double fraction = 1.0, gravity = 0.0, tolerance = 1e-6;
-    int dynamic = 0, fix = ORI_NULL_INDEX, physical = 0, steps = 1000000, keep = 0, check_contacts = 1;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "O!|dpipOOOOdipdp", kwlist, &ori_py_PatternType, &pobj, &fraction,
+    int dynamic = 0, fix = ORI_NULL_INDEX, physical = 0, steps = 1000000, keep = 0, check_contacts = 1, threads = 1;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O!|dpipOOOOdipdpi", kwlist, &ori_py_PatternType, &pobj, &fraction,
                                      &dynamic, &fix, &physical, &axial, &facet, &crease, &damping, &gravity, &steps,
-                                     &keep, &tolerance, &check_contacts))
+                                     &keep, &tolerance, &check_contacts, &threads))
         return NULL;
     ori_py_pattern *pat = (ori_py_pattern *)pobj;
     const char *src = ori_py_pattern_source(pat);
@@ -56,6 +56,7 @@ static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
     d.keep_frames = keep;
     d.fixed_face = fix;
     d.check_contacts = check_contacts;
+    d.threads = threads;
     ori_compliant *c = NULL;
     ori_error err;
     ori_status st;

@@ -133,8 +133,13 @@ def test_errors_are_the_clis(monkeypatch):
     with pytest.raises(orikin.InputError) as e:
         p.fold(compliant=True, dynamic=True, all_frames=True)
     assert str(e.value) == cli_error(f"fold {src} --compliant --dynamic --all-frames")
+    with pytest.raises(orikin.InputError) as e:
+        p.fold(compliant=True, dynamic=True, threads=0)
+    assert str(e.value) == cli_error(f"fold {src} --compliant --dynamic --threads 0")
     with pytest.raises(orikin.InputError, match="--dynamic is an option of the compliant fold"):
         p.fold(fix=4, drive=12, to=10, dynamic=True)
+    with pytest.raises(orikin.InputError, match="--threads is an option of the compliant fold"):
+        p.fold(fix=4, drive=12, to=10, threads=2)
 
 
 def test_contact_warnings_are_the_clis(tmp_path):

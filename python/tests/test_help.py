@@ -14,7 +14,7 @@ FOLD_OPTIONS = {
     "--clearance": "clearance", "--percent": "percent", "--ratio": "ratio", "--symmetric": "symmetric",
     # the compliant fold (docs/compliant.md)
     "--compliant": "compliant", "--dynamic": "dynamic", "--preset": "preset", "--axial": "axial", "--facet": "facet",
-    "--crease": "crease", "--damping": "damping", "--gravity": "gravity", "--steps": "steps",
+    "--crease": "crease", "--damping": "damping", "--gravity": "gravity", "--steps": "steps", "--threads": "threads",
     "--all-frames": "all_frames",
 }
 # Options of the CLI alone, which the docstring names with their Python counterpart.

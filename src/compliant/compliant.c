@@ -4,6 +4,8 @@
 // the fold fraction, a backtracking line search on the energy), results and frames.
 // docs/compliant.md gives the model equation by equation.
 #include <float.h>
+#include <pthread.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 
 #include "compliant_internal.h"
@@ -27,6 +29,10 @@
 // A sheet given in another plane than z = 0 is flat when no vertex is farther than this × the
 // pattern's diagonal from the faces' mean plane (single-precision exports: 1e-6).
 #define CMP_PLANE_REL 1e-6
+// Most threads of the explicit solver, and the fewest elements (bars and hinges) a thread gets:
+// below, a step takes less time than the threads take to meet.
+#define CMP_MAX_THREADS 64
+#define CMP_THREAD_ELEMENTS 4096
 // Largest change of the wires' current fraction per load step of the static solver.
 #define CMP_WIRE_LOAD_STEP (1.0 / 32.0)
 // Contact warnings kept (face pairs).
@@ -61,6 +67,7 @@ ori_compliant_def ori_default_compliant_def(void)
     d.current_a = 0.0;
     d.field_t = (ori_v3){0.0, 0.0, 0.0};
     d.auto_polarity = true;
+    d.threads = 1;
     d.internal_value = ORI__DEF_COOKIE;
     return d;
 }
@@ -268,6 +275,8 @@ static ori_status check_def(const ori_compliant_def *d, ori_error *error)
     if (!(d->fraction >= 0.0 && d->fraction <= 1.0))
         return ori__fail(error, ORI_ERR_RANGE, "compliant: fraction must be in [0, 1] (got %g)", d->fraction);
     if (d->max_iterations <= 0) return ori__fail(error, ORI_ERR_RANGE, "compliant: max_iterations must be > 0");
+    if (d->threads < 1 || d->threads > CMP_MAX_THREADS)
+        return ori__fail(error, ORI_ERR_RANGE, "compliant: threads must be 1 to %d (got %d)", CMP_MAX_THREADS, d->threads);
     if (!finite_nonneg(d->current_a))
         return ori__fail(error, ORI_ERR_RANGE, "compliant: current_a must be finite and ≥ 0 (got %g)", d->current_a);
     if (!isfinite(d->field_t.x) || !isfinite(d->field_t.y) || !isfinite(d->field_t.z))
@@ -749,7 +758,7 @@ ori_status ori_compliant_create(const ori_pattern *p, const ori_compliant_def *d
         h.k = l->b;
         h.edge = l->edge;
         h.crease = crease;
-        h.ref = 0.0;
+        ori__cmp_set_ref(&h, 0.0);
         link_faces(c, l, h.face);
         h.target = crease && l->edge >= 0 ? target[l->edge] : 0.0;
         // the wing on the left of j → k is i
@@ -1010,57 +1019,261 @@ static void check_contacts(ori_compliant *c, int step, double fraction)
 
 static void accept_angles(ori_compliant *c)
 {
-    for (int h = 0; h < c->nhinge; ++h) c->hinges[h].ref = ori__cmp_hinge_angle(c->x, &c->hinges[h], c->hinges[h].ref);
+    for (int h = 0; h < c->nhinge; ++h)
+        ori__cmp_set_ref(&c->hinges[h], ori__cmp_hinge_angle(c->x, &c->hinges[h], c->hinges[h].ref));
 }
 
 // --- explicit solver ----------------------------------------------------------------------
+
+// The explicit solver on def.threads threads. A step has two phases, each thread taking its share:
+// (A) the forces of a share of the bars (with their damping) and hinges into the thread's own
+// buffer (the wires, on thread 0); (B) for a share of the vertices, the buffers summed, gravity
+// added and the vertex moved (held ones stay). The shares meet at a barrier after each phase. A
+// convergence check is the same without damping, with the hinges' references accepted first,
+// and (B) only measuring |∇E|∞.
+
+// A barrier that spins a little before it sleeps: a step takes a millisecond or less, and a
+// condition variable's wake-up alone costs tens of microseconds. Sequentially consistent
+// atomics: the last to arrive advances gen and then looks for sleepers; a sleeper counts itself
+// (under the mutex) before it looks at gen, so one of the two always sees the other.
+#define CMP_BARRIER_SPINS 4000
+
+typedef struct cmp_barrier {
+    pthread_mutex_t m;
+    pthread_cond_t cv;
+    int count;
+    atomic_int waiting, sleepers;
+    atomic_uint gen;
+} cmp_barrier;
+
+static void barrier_wait(cmp_barrier *b)
+{
+    unsigned g = atomic_load(&b->gen);
+    if (atomic_fetch_add(&b->waiting, 1) + 1 == b->count) {
+        atomic_store(&b->waiting, 0);
+        atomic_fetch_add(&b->gen, 1);
+        if (atomic_load(&b->sleepers) > 0) {
+            pthread_mutex_lock(&b->m);
+            pthread_cond_broadcast(&b->cv);
+            pthread_mutex_unlock(&b->m);
+        }
+        return;
+    }
+    for (int i = 0; i < CMP_BARRIER_SPINS; ++i)
+        if (atomic_load(&b->gen) != g) return;
+    pthread_mutex_lock(&b->m);
+    atomic_fetch_add(&b->sleepers, 1);
+    while (atomic_load(&b->gen) == g) pthread_cond_wait(&b->cv, &b->m);
+    atomic_fetch_sub(&b->sleepers, 1);
+    pthread_mutex_unlock(&b->m);
+}
+
+static void barrier_init(cmp_barrier *b)
+{
+    pthread_mutex_init(&b->m, NULL);
+    pthread_cond_init(&b->cv, NULL);
+    b->count = 1;
+    atomic_init(&b->waiting, 0);
+    atomic_init(&b->sleepers, 0);
+    atomic_init(&b->gen, 0u);
+}
+
+static void barrier_free(cmp_barrier *b)
+{
+    pthread_mutex_destroy(&b->m);
+    pthread_cond_destroy(&b->cv);
+}
+
+typedef struct cmp_pool cmp_pool;
+typedef struct cmp_worker {
+    cmp_pool *pool;
+    int id;
+    double *buf;    // its forces (phase A)
+    double vmax;    // phase B: largest |speed| (a step) or |∇E| (a check) of its vertices
+    bool finite;
+    pthread_t tid;
+} cmp_worker;
+
+enum { CMP_POOL_STEP, CMP_POOL_CHECK, CMP_POOL_QUIT };
+
+struct cmp_pool {
+    ori_compliant *c;
+    int n; // shares, the caller's included
+    cmp_barrier go, mid, done;
+    double frac;
+    int mode;
+    cmp_worker w[CMP_MAX_THREADS];
+};
+
+static void share(int total, int n, int id, int *from, int *to)
+{
+    *from = (int)((long)total * id / n);
+    *to = (int)((long)total * (id + 1) / n);
+}
+
+static void phase_a(cmp_pool *pl, cmp_worker *w)
+{
+    ori_compliant *c = pl->c;
+    int b0, b1, h0, h1;
+    share(c->nbar, pl->n, w->id, &b0, &b1);
+    share(c->nhinge, pl->n, w->id, &h0, &h1);
+    double *buf = w->buf;
+    memset(buf, 0, sizeof(double) * 3 * (size_t)c->nv);
+    if (pl->mode == CMP_POOL_CHECK)
+        for (int h = h0; h < h1; ++h) ori__cmp_set_ref(&c->hinges[h], ori__cmp_hinge_angle(c->x, &c->hinges[h], c->hinges[h].ref));
+    ori__cmp_forces_range(c, c->x, pl->frac, buf, b0, b1, h0, h1);
+    if (w->id == 0) ori__cmp_wire_forces(c, c->x, pl->frac, buf);
+    if (pl->mode == CMP_POOL_CHECK) return;
+    for (int b = b0; b < b1; ++b) {
+        const cmp_bar *bar = &c->bars[b];
+        for (int q = 0; q < 3; ++q) {
+            double dv = c->v[3 * bar->b + q] - c->v[3 * bar->a + q];
+            buf[3 * bar->a + q] -= bar->c * dv;
+            buf[3 * bar->b + q] += bar->c * dv;
+        }
+    }
+}
+
+static void phase_b(cmp_pool *pl, cmp_worker *w)
+{
+    ori_compliant *c = pl->c;
+    int v0, v1;
+    share(c->nv, pl->n, w->id, &v0, &v1);
+    double dt = c->dt, g = c->def.gravity * c->gravity_factor, vmax = 0.0;
+    bool finite = true, step = pl->mode == CMP_POOL_STEP;
+    for (int v = v0; v < v1; ++v) {
+        if (c->dof[v] < 0) continue;
+        double inv = dt / c->mass[v];
+        for (int q = 0; q < 3; ++q) {
+            double f = 0.0;
+            for (int i = 0; i < pl->n; ++i) f += pl->w[i].buf[3 * v + q];
+            if (q == 2) f += c->mass[v] * g;
+            if (!step) {
+                vmax = fmax(vmax, fabs(f));
+                continue;
+            }
+            double vv = c->v[3 * v + q] - f * inv;
+            c->v[3 * v + q] = vv;
+            c->x[3 * v + q] += dt * vv;
+            vmax = fmax(vmax, fabs(vv));
+            finite &= isfinite(c->x[3 * v + q]) != 0;
+        }
+    }
+    w->vmax = vmax;
+    w->finite = finite;
+}
+
+static void *pool_worker(void *arg)
+{
+    cmp_worker *w = arg;
+    cmp_pool *pl = w->pool;
+    for (;;) {
+        barrier_wait(&pl->go);
+        if (pl->mode == CMP_POOL_QUIT) break;
+        phase_a(pl, w);
+        barrier_wait(&pl->mid);
+        phase_b(pl, w);
+        barrier_wait(&pl->done);
+    }
+    return NULL;
+}
+
+// Start def.threads − 1 workers (fewer when the system gives fewer, none for a small model).
+// F (3 nv) is the caller's buffer.
+static void pool_start(cmp_pool *pl, ori_compliant *c, double frac, double *F)
+{
+    memset(pl, 0, sizeof *pl);
+    pl->c = c;
+    pl->frac = frac;
+    barrier_init(&pl->go);
+    barrier_init(&pl->mid);
+    barrier_init(&pl->done);
+    int want = c->def.threads;
+    while (want > 1 && c->nbar + c->nhinge < CMP_THREAD_ELEMENTS * want) want--; // too little work to share
+    pl->w[0].pool = pl;
+    pl->w[0].buf = F;
+    pl->n = 1;
+    for (int i = 1; i < want; ++i) {
+        cmp_worker *w = &pl->w[i];
+        w->pool = pl;
+        w->id = i;
+        w->buf = ori__alloc(sizeof(double) * 3 * (size_t)(c->nv > 0 ? c->nv : 1));
+        if (pthread_create(&w->tid, NULL, pool_worker, w) != 0) {
+            ori__free(w->buf);
+            w->buf = NULL;
+            break;
+        }
+        pl->n = i + 1;
+    }
+    // no worker has passed the first barrier yet: the counts can still be set
+    cmp_barrier *bs[3] = {&pl->go, &pl->mid, &pl->done};
+    for (int k = 0; k < 3; ++k) {
+        pthread_mutex_lock(&bs[k]->m);
+        bs[k]->count = pl->n;
+        pthread_mutex_unlock(&bs[k]->m);
+    }
+}
+
+static void pool_stop(cmp_pool *pl)
+{
+    if (pl->n > 1) {
+        pl->mode = CMP_POOL_QUIT;
+        barrier_wait(&pl->go);
+        for (int i = 1; i < pl->n; ++i) pthread_join(pl->w[i].tid, NULL);
+    }
+    for (int i = 1; i < pl->n; ++i) ori__free(pl->w[i].buf);
+    barrier_free(&pl->go);
+    barrier_free(&pl->mid);
+    barrier_free(&pl->done);
+}
+
+// One explicit step (mode CMP_POOL_STEP: returns the largest speed, *finite) or a check
+// (CMP_POOL_CHECK: references accepted, returns |∇E|∞).
+static double pool_run(cmp_pool *pl, int mode, bool *finite)
+{
+    pl->mode = mode;
+    bool par = pl->n > 1;
+    if (par) barrier_wait(&pl->go);
+    phase_a(pl, &pl->w[0]);
+    if (par) barrier_wait(&pl->mid);
+    phase_b(pl, &pl->w[0]);
+    if (par) barrier_wait(&pl->done);
+    double m = 0.0;
+    bool fin = true;
+    for (int i = 0; i < pl->n; ++i) {
+        m = fmax(m, pl->w[i].vmax);
+        fin &= pl->w[i].finite;
+    }
+    if (finite) *finite = fin;
+    return m;
+}
 
 // Damped explicit steps at fraction frac until |∇E|∞ ≤ ftol and every speed ≤ ftol Δt / m_min
 // (checked every 16 steps), at most max_steps. Returns the steps done; *settled, *diverged.
 static int relax(ori_compliant *c, double frac, int max_steps, double ftol, double *F, bool *settled, bool *diverged)
 {
-    int nv = c->nv;
     double dt = c->dt, vtol = ftol * dt / c->m_min;
     *settled = *diverged = false;
     int k;
+    cmp_pool pool;
+    pool_start(&pool, c, frac, F);
     for (k = 0; k < max_steps; ++k) {
-        ori__cmp_energy(c, c->x, frac, F); // F = ∇E
-        for (int b = 0; b < c->nbar; ++b) {
-            const cmp_bar *bar = &c->bars[b];
-            for (int q = 0; q < 3; ++q) {
-                double dv = c->v[3 * bar->b + q] - c->v[3 * bar->a + q];
-                F[3 * bar->a + q] -= bar->c * dv;
-                F[3 * bar->b + q] += bar->c * dv;
-            }
-        }
-        double vmax = 0.0;
-        bool finite = true;
-        for (int v = 0; v < nv; ++v) {
-            if (c->dof[v] < 0) continue;
-            double inv = dt / c->mass[v];
-            for (int q = 0; q < 3; ++q) {
-                double vv = c->v[3 * v + q] - F[3 * v + q] * inv;
-                c->v[3 * v + q] = vv;
-                c->x[3 * v + q] += dt * vv;
-                vmax = fmax(vmax, fabs(vv));
-                if (!isfinite(c->x[3 * v + q])) finite = false;
-            }
-        }
+        bool finite;
+        double vmax = pool_run(&pool, CMP_POOL_STEP, &finite);
         if (!finite) {
             *diverged = true;
+            pool_stop(&pool);
             return k + 1;
         }
         ori__cmp_commit_fibres(c, c->x, frac);
         if (k % CMP_CONTACT_INTERVAL == CMP_CONTACT_INTERVAL - 1) check_contacts(c, k + 1, frac);
-        if ((k & 15) == 15) {
-            accept_angles(c);
-            ori__cmp_energy(c, c->x, frac, F);
-            if (ori__cmp_grad_norm(c, F) <= ftol && vmax <= vtol) {
-                *settled = true;
-                return k + 1;
-            }
+        if ((k & 15) == 15 && pool_run(&pool, CMP_POOL_CHECK, NULL) <= ftol && vmax <= vtol) {
+            *settled = true;
+            pool_stop(&pool);
+            return k + 1;
         }
     }
+    pool_stop(&pool);
     accept_angles(c);
     return k;
 }
@@ -1153,7 +1366,7 @@ ori_status ori_compliant_set_fraction(ori_compliant *c, double fraction, ori_err
 static void restore(ori_compliant *c, const double *x, const double *ref)
 {
     memcpy(c->x, x, sizeof(double) * 3 * (size_t)c->nv);
-    for (int h = 0; h < c->nhinge; ++h) c->hinges[h].ref = ref[h];
+    for (int h = 0; h < c->nhinge; ++h) ori__cmp_set_ref(&c->hinges[h], ref[h]);
 }
 
 ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)

@@ -27,6 +27,7 @@ typedef struct cmp_hinge {
     double k_h;  // stiffness (torque per radian)
     double target; // rest angle at fraction 1 (radians)
     double ref;  // last accepted fold angle: the unwrapping reference
+    double cache_ref, cref, sref; // cos and sin of cache_ref (set with ori__cmp_set_ref; NaN: none)
     int face[2]; // the pattern faces of its two triangles (face[1] −1 when both are face[0])
 } cmp_hinge;
 
@@ -117,6 +118,18 @@ struct ori_compliant {
     int check_step; // the step number the next check is recorded with
 };
 
+// Set a hinge's unwrapping reference (and the cos and sin the angle uses when asked about it).
+void ori__cmp_set_ref(cmp_hinge *h, double ref);
+// The explicit solver's forces: ∇E at x and fraction into grad (3 nv, zeroed here; held vertices
+// 0), with each hinge's angle and gradient in one pass and no energy.
+void ori__cmp_forces(const ori_compliant *c, const double *x, double fraction, double *grad);
+// Its parts: the bars [bar0, bar1) and hinges [hinge0, hinge1) added to grad; then the wires,
+// gravity and the held vertices (ori__cmp_forces_finish), once the parts are summed.
+void ori__cmp_forces_range(const ori_compliant *c, const double *x, double fraction, double *grad, int bar0, int bar1,
+                           int hinge0, int hinge1);
+void ori__cmp_forces_finish(const ori_compliant *c, const double *x, double fraction, double *grad);
+// The wires' part of ∇E added to grad.
+void ori__cmp_wire_forces(const ori_compliant *c, const double *x, double fraction, double *grad);
 // Fold angle ρ of a hinge (radians, + valley) from positions x (3 per vertex), unwrapped about ref.
 double ori__cmp_hinge_angle(const double *x, const cmp_hinge *h, double ref);
 // Exact gradient of ρ with respect to the 12 coordinates (x_j, x_k, x_i, x_l), as MERLIN's.

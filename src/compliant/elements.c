@@ -25,6 +25,42 @@ static double wrap_pi(double a)
     return a;
 }
 
+void ori__cmp_set_ref(cmp_hinge *h, double ref)
+{
+    h->ref = ref;
+    h->cache_ref = ref;
+    h->cref = cos(ref);
+    h->sref = sin(ref);
+}
+
+// The angle of (cth, s) unwrapped about ref: ref + the angle turned from ref, in (−π, π]. About the
+// hinge's cached reference (the usual case: the last accepted angle) the turn is the atan2 of the
+// pair rotated by −ref, and a small turn (|tan| ≤ 1/8, every step of the explicit solver) is its
+// Taylor series (to t⁹ up to 1/64, to t¹⁷ beyond; truncation below 1e-18): no atan2 call.
+static inline double unwrap(const cmp_hinge *h, double ref, double s, double cth)
+{
+    if (ref != h->cache_ref) return ref + wrap_pi(atan2(s, cth) - ref);
+    double y = s * h->cref - cth * h->sref, xx = cth * h->cref + s * h->sref;
+    if (xx > 0.0 && fabs(y) <= 0.015625 * xx) { // |t| ≤ 1/64: to t⁹ (truncation below 1e-21)
+        double t = y / xx, t2 = t * t;
+        double p = 1.0 / 3.0 - t2 * (1.0 / 5.0 - t2 * (1.0 / 7.0 - t2 * (1.0 / 9.0)));
+        return ref + t * (1.0 - t2 * p);
+    }
+    if (xx > 0.0 && fabs(y) <= 0.125 * xx) {
+        double t = y / xx, t2 = t * t;
+        double p = 1.0 / 17.0;
+        p = 1.0 / 15.0 - t2 * p;
+        p = 1.0 / 13.0 - t2 * p;
+        p = 1.0 / 11.0 - t2 * p;
+        p = 1.0 / 9.0 - t2 * p;
+        p = 1.0 / 7.0 - t2 * p;
+        p = 1.0 / 5.0 - t2 * p;
+        p = 1.0 / 3.0 - t2 * p;
+        return ref + t * (1.0 - t2 * p);
+    }
+    return ref + atan2(y, xx);
+}
+
 double ori__cmp_hinge_angle(const double *x, const cmp_hinge *h, double ref)
 {
     const double *xj = x + 3 * h->j, *xk = x + 3 * h->k, *xi = x + 3 * h->i, *xl = x + 3 * h->l;
@@ -46,8 +82,33 @@ double ori__cmp_hinge_angle(const double *x, const cmp_hinge *h, double ref)
     double len = sqrt(rkj[0] * rkj[0] + rkj[1] * rkj[1] + rkj[2] * rkj[2]);
     double s = (mn[0] * rkj[0] + mn[1] * rkj[1] + mn[2] * rkj[2]) / (len > 0.0 ? len : 1.0);
     double cth = -(m[0] * n[0] + m[1] * n[1] + m[2] * n[2]);
-    double rho = atan2(s, cth);
-    return ref + wrap_pi(rho - ref);
+    return unwrap(h, ref, s, cth);
+}
+
+// A hinge's angle about h->ref and its gradient (as gradient_real), sharing r, m, n. Written in
+// scalars: vectors on the stack, stored one lane and loaded two, stall the store forwarding.
+static double hinge_angle_gradient(const double *x, const cmp_hinge *h, double *g)
+{
+    const double *xj = x + 3 * h->j, *xk = x + 3 * h->k, *xi = x + 3 * h->i, *xl = x + 3 * h->l;
+    double ax = xi[0] - xj[0], ay = xi[1] - xj[1], az = xi[2] - xj[2]; // r_ij
+    double kx = xk[0] - xj[0], ky = xk[1] - xj[1], kz = xk[2] - xj[2]; // r_kj
+    double lx = xk[0] - xl[0], ly = xk[1] - xl[1], lz = xk[2] - xl[2]; // r_kl
+    double mx = ay * kz - az * ky, my = az * kx - ax * kz, mz = ax * ky - ay * kx; // m = r_ij × r_kj
+    double nx = ky * lz - kz * ly, ny = kz * lx - kx * lz, nz = kx * ly - ky * lx; // n = r_kj × r_kl
+    double cx = my * nz - mz * ny, cy = mz * nx - mx * nz, cz = mx * ny - my * nx; // m × n
+    double kk = kx * kx + ky * ky + kz * kz;
+    double len = sqrt(kk), ikk = 1.0 / kk;
+    // the angle's sine and cosine both times |r_kj| (its atan2 does not see a common scale)
+    double s = cx * kx + cy * ky + cz * kz;
+    double cth = -(mx * nx + my * ny + mz * nz) * len;
+    double mm = mx * mx + my * my + mz * mz, nn = nx * nx + ny * ny + nz * nz;
+    double a = (ax * kx + ay * ky + az * kz) * ikk, b = (lx * kx + ly * ky + lz * kz) * ikk;
+    double imn = len / (mm * nn), fi = -nn * imn, fl = mm * imn;
+    double gix = fi * mx, giy = fi * my, giz = fi * mz, glx = fl * nx, gly = fl * ny, glz = fl * nz;
+    g[6] = gix, g[7] = giy, g[8] = giz, g[9] = glx, g[10] = gly, g[11] = glz;
+    g[0] = (a - 1.0) * gix - b * glx, g[1] = (a - 1.0) * giy - b * gly, g[2] = (a - 1.0) * giz - b * glz;
+    g[3] = (b - 1.0) * glx - a * gix, g[4] = (b - 1.0) * gly - a * giy, g[5] = (b - 1.0) * glz - a * giz;
+    return unwrap(h, h->ref, s, cth);
 }
 
 // The gradient, written once for real and complex coordinates.
@@ -233,6 +294,58 @@ double ori__cmp_energy(const ori_compliant *c, const double *x, double fraction,
         for (int v = 0; v < c->nv; ++v)
             if (c->dof[v] < 0) grad[3 * v] = grad[3 * v + 1] = grad[3 * v + 2] = 0.0;
     return e;
+}
+
+void ori__cmp_forces_range(const ori_compliant *c, const double *x, double fraction, double *grad, int bar0, int bar1,
+                           int hinge0, int hinge1)
+{
+    for (int b = bar0; b < bar1; ++b) {
+        const cmp_bar *bar = &c->bars[b];
+        const double *xa = x + 3 * bar->a, *xb = x + 3 * bar->b;
+        double dx = xb[0] - xa[0], dy = xb[1] - xa[1], dz = xb[2] - xa[2]; // scalars, as in hinge_angle_gradient
+        double len = sqrt(dx * dx + dy * dy + dz * dz);
+        if (!(len > 0.0)) continue;
+        double f = bar->k * (len - bar->l0) / len;
+        double *ga = grad + 3 * bar->a, *gb = grad + 3 * bar->b;
+        gb[0] += f * dx, gb[1] += f * dy, gb[2] += f * dz;
+        ga[0] -= f * dx, ga[1] -= f * dy, ga[2] -= f * dz;
+    }
+    for (int hh = hinge0; hh < hinge1; ++hh) {
+        const cmp_hinge *h = &c->hinges[hh];
+        double g[12], m;
+        double th = hinge_angle_gradient(x, h, g);
+        if (c->hplastic && c->hplastic[hh]) ori__cmp_hinge_energy(c, hh, th, fraction, &m, NULL);
+        else m = h->k_h * (th - (h->crease ? h->target * fraction : 0.0));
+        double *gj = grad + 3 * h->j, *gk = grad + 3 * h->k, *gi = grad + 3 * h->i, *gl = grad + 3 * h->l;
+        for (int q = 0; q < 3; ++q) {
+            gj[q] += m * g[q];
+            gk[q] += m * g[3 + q];
+            gi[q] += m * g[6 + q];
+            gl[q] += m * g[9 + q];
+        }
+    }
+}
+
+void ori__cmp_wire_forces(const ori_compliant *c, const double *x, double fraction, double *grad)
+{
+    if (c->nwire) wires_energy(c, x, fraction, grad);
+}
+
+void ori__cmp_forces_finish(const ori_compliant *c, const double *x, double fraction, double *grad)
+{
+    if (c->nwire) wires_energy(c, x, fraction, grad);
+    double gr = c->def.gravity * c->gravity_factor;
+    if (gr != 0.0)
+        for (int v = 0; v < c->nv; ++v) grad[3 * v + 2] += c->mass[v] * gr;
+    for (int v = 0; v < c->nv; ++v)
+        if (c->dof[v] < 0) grad[3 * v] = grad[3 * v + 1] = grad[3 * v + 2] = 0.0;
+}
+
+void ori__cmp_forces(const ori_compliant *c, const double *x, double fraction, double *grad)
+{
+    memset(grad, 0, sizeof(double) * 3 * (size_t)c->nv);
+    ori__cmp_forces_range(c, x, fraction, grad, 0, c->nbar, 0, c->nhinge);
+    ori__cmp_forces_finish(c, x, fraction, grad);
 }
 
 void ori__cmp_face_strain(const ori_compliant *c, const double *x, double *energy, double *strain)

@@ -13,6 +13,37 @@
 
 #include "kinematics_internal.h"
 
+#ifdef ORI_HAVE_GOMP
+// The OpenMP runtime CHOLMOD is built with (declared here: no -fopenmp for the library itself).
+int omp_get_max_active_levels(void);
+void omp_set_max_active_levels(int levels);
+#endif
+
+// CHOLMOD's OpenMP loops run serially inside our calls. Debian's CHOLMOD (SuiteSparse 5) zeroes and
+// assembles supernodes in parallel loops of a fixed 4 threads, whose start-up and spinning cost
+// more than the loops on this size of problem: a 100 × 100 Miura-ori's compliant static solve
+// takes half the time with them serial (docs/compliant.md, section 6). The setting is the
+// process's: it is restored after the call.
+static int serial_begin(void)
+{
+#ifdef ORI_HAVE_GOMP
+    int levels = omp_get_max_active_levels();
+    omp_set_max_active_levels(0);
+    return levels;
+#else
+    return 0;
+#endif
+}
+
+static void serial_end(int levels)
+{
+#ifdef ORI_HAVE_GOMP
+    omp_set_max_active_levels(levels);
+#else
+    (void)levels;
+#endif
+}
+
 // Flops per factor entry above which the factorization is supernodal (see start()).
 #define ORI_KIN_SUPERNODAL_SWITCH 100.0
 
@@ -114,7 +145,9 @@ bool ori__sls_factor(kin_sls *s, double lambda)
     if (!s->L) return false;
     double beta[2] = {lambda, 0.0};
     s->factorizations++;
+    int levels = serial_begin();
     int ok = cholmod_factorize_p(s->at, beta, NULL, 0, s->L, &s->cm);
+    serial_end(levels);
     s->factored = ok && s->cm.status == CHOLMOD_OK && s->L->minor == s->L->n;
     return s->factored;
 }
@@ -125,7 +158,10 @@ bool ori__sls_solve(kin_sls *s, const double *rhs, double *out)
     route_memory();
     double *b = s->b->x;
     for (int k = 0; k < s->n; ++k) b[k] = rhs[k];
-    if (!cholmod_solve2(CHOLMOD_A, s->L, s->b, NULL, &s->x, NULL, &s->y, &s->e, &s->cm)) return false;
+    int levels = serial_begin();
+    int ok = cholmod_solve2(CHOLMOD_A, s->L, s->b, NULL, &s->x, NULL, &s->y, &s->e, &s->cm);
+    serial_end(levels);
+    if (!ok) return false;
     const double *x = s->x->x;
     for (int k = 0; k < s->n; ++k) {
         if (!isfinite(x[k])) return false;
