@@ -144,8 +144,17 @@ static double hinge_angle_gradient(const double *x, const cmp_hinge *h, double *
         }                                                                                        \
     }
 
+// The square root of a complex step's coordinate a + ib, |b| ≪ a: √a + i b / (2√a), exact to
+// first order in b, which is all a complex step keeps (b ~ 1e-30 of the scale, so the next term
+// is below 1e-60 of it). csqrt's general branch cuts and scalings cost a fifth of the Hessian.
+static inline double complex csqrt_step(double complex z)
+{
+    double r = sqrt(creal(z));
+    return CMPLX(r, cimag(z) / (2.0 * r));
+}
+
 CMP_HINGE_GRADIENT(double, sqrt, gradient_real)
-CMP_HINGE_GRADIENT(double complex, csqrt, gradient_complex)
+CMP_HINGE_GRADIENT(double complex, csqrt_step, gradient_complex)
 
 void ori__cmp_hinge_gradient(const double *x, const cmp_hinge *h, double g[12])
 {
@@ -382,38 +391,41 @@ double ori__cmp_grad_norm(const ori_compliant *c, const double *grad)
     return n;
 }
 
-// Value index of entry (row dof of vertex a, component p; column of vertex b, component q),
-// a's dof ≤ b's. -1 never happens for pairs of the model (the pattern holds them all).
-static int slot(const ori_compliant *c, int a, int p, int b, int q)
+// Position of vertex a in vertex b's list of lower neighbours (a's dof < b's), by bisection; -1
+// never happens for pairs of the model (the pattern holds them all).
+static int neighbour(const ori_compliant *c, int a, int b)
 {
-    int col = c->dof[b] + q;
-    int base = c->colptr[col];
-    if (a == b) return base + 3 * (c->nb_start[b + 1] - c->nb_start[b]) + p;
     int lo = c->nb_start[b], hi = c->nb_start[b + 1] - 1;
     while (lo <= hi) {
         int mid = (lo + hi) / 2;
-        if (c->nb[mid] == a) return base + 3 * (mid - c->nb_start[b]) + p;
+        if (c->nb[mid] == a) return mid - c->nb_start[b];
         if (c->dof[c->nb[mid]] < c->dof[a]) lo = mid + 1;
         else hi = mid - 1;
     }
     return -1;
 }
 
-// Add the node block K (3 × 3, K[p][q] = ∂²E/∂x_a,p ∂x_b,q) of nodes a, b (a ≠ b or a = b).
+// Add the node block K (3 × 3, K[p][q] = ∂²E/∂x_a,p ∂x_b,q) of nodes a, b (a ≠ b or a = b). Column
+// dof(b) + q holds b's lower neighbours' rows (3 each, in order), then b's own rows 0 … q: one
+// bisection finds the block, not one an entry.
 static void add_block(ori_compliant *c, double *val, int a, int b, double K[3][3])
 {
     if (c->dof[a] < 0 || c->dof[b] < 0) return;
     if (a == b) {
+        const int *cp = c->colptr + c->dof[a];
+        int own = 3 * (c->nb_start[a + 1] - c->nb_start[a]);
         for (int q = 0; q < 3; ++q)
-            for (int p = 0; p <= q; ++p) val[slot(c, a, p, a, q)] += K[p][q];
+            for (int p = 0; p <= q; ++p) val[cp[q] + own + p] += K[p][q];
         return;
     }
-    if (c->dof[a] < c->dof[b]) {
-        for (int p = 0; p < 3; ++p)
-            for (int q = 0; q < 3; ++q) val[slot(c, a, p, b, q)] += K[p][q];
-    } else {
-        for (int p = 0; p < 3; ++p)
-            for (int q = 0; q < 3; ++q) val[slot(c, b, q, a, p)] += K[p][q];
+    bool fwd = c->dof[a] < c->dof[b];
+    int lo = fwd ? a : b, hi = fwd ? b : a;
+    int pos = neighbour(c, lo, hi);
+    if (pos < 0) return;
+    const int *cp = c->colptr + c->dof[hi];
+    for (int q = 0; q < 3; ++q) {
+        double *col = val + cp[q] + 3 * pos;
+        for (int p = 0; p < 3; ++p) col[p] += fwd ? K[p][q] : K[q][p];
     }
 }
 
