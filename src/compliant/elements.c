@@ -150,7 +150,7 @@ static double hinge_angle_gradient(const double *x, const cmp_hinge *h, double *
 static inline double complex csqrt_step(double complex z)
 {
     double r = sqrt(creal(z));
-    return CMPLX(r, cimag(z) / (2.0 * r));
+    return r + cimag(z) / (2.0 * r) * I;
 }
 
 CMP_HINGE_GRADIENT(double, sqrt, gradient_real)
