@@ -11,14 +11,12 @@
 #include "kin_args.h"
 #include "output_guard.h"
 #include "progress.h"
+#include "report.h"
 
 typedef struct compliant_args {
     const char *path, *out, *fix;
-    double percent;
-    bool dynamic, json, physical, frames;
-    int steps, threads;
-    double axial, facet, crease, damping, gravity;
-    bool has_axial, has_facet, has_crease, has_damping;
+    bool json;
+    cli_compliant_request r; // the fold asked (shared with the studio: cli/report)
     cli_input input;
 } compliant_args;
 
@@ -33,9 +31,7 @@ static int parse(int argc, char **argv, compliant_args *a)
 {
     const char *cmd = "fold";
     memset(a, 0, sizeof *a);
-    a->percent = 100.0;
-    a->steps = 1000000;
-    a->threads = 1;
+    cli_compliant_request_init(&a->r);
     cli_input_init(&a->input);
     cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
@@ -44,9 +40,9 @@ static int parse(int argc, char **argv, compliant_args *a)
         if (r < 0) return -r;
         if (r > 0) continue;
         if (strcmp(o, "--compliant") == 0) continue;
-        if (strcmp(o, "--dynamic") == 0) a->dynamic = true;
+        if (strcmp(o, "--dynamic") == 0) a->r.dynamic = true;
         else if (strcmp(o, "--json") == 0) a->json = true;
-        else if (strcmp(o, "--all-frames") == 0) a->frames = true;
+        else if (strcmp(o, "--all-frames") == 0) a->r.all_frames = true;
         else if (strcmp(o, "--percent") == 0 || strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0 ||
                  strcmp(o, "--fix") == 0 || strcmp(o, "--preset") == 0 || strcmp(o, "--axial") == 0 ||
                  strcmp(o, "--facet") == 0 || strcmp(o, "--crease") == 0 || strcmp(o, "--damping") == 0 ||
@@ -54,36 +50,36 @@ static int parse(int argc, char **argv, compliant_args *a)
             if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
             int rc = CLI_EXIT_OK;
             if (strcmp(o, "--percent") == 0) {
-                if (!cli_parse_double(v, &a->percent) || !(a->percent >= 0.0 && a->percent <= 100.0))
+                if (!cli_parse_double(v, &a->r.percent) || !(a->r.percent >= 0.0 && a->r.percent <= 100.0))
                     return cli_usage(cmd, "--percent needs a number from 0 to 100, got '%s'", v);
             } else if (o[1] == 'o' || strcmp(o, "--output") == 0) {
                 a->out = v;
             } else if (strcmp(o, "--fix") == 0) {
                 a->fix = v;
             } else if (strcmp(o, "--preset") == 0) {
-                if (strcmp(v, "origami-simulator") == 0) a->physical = false;
-                else if (strcmp(v, "physical") == 0) a->physical = true;
+                if (strcmp(v, "origami-simulator") == 0) a->r.physical = false;
+                else if (strcmp(v, "physical") == 0) a->r.physical = true;
                 else return cli_usage(cmd, "--preset is origami-simulator or physical, got '%s'", v);
             } else if (strcmp(o, "--axial") == 0) {
-                rc = parse_positive(cmd, o, v, false, &a->axial);
-                a->has_axial = true;
+                rc = parse_positive(cmd, o, v, false, &a->r.axial);
+                a->r.has_axial = true;
             } else if (strcmp(o, "--facet") == 0) {
-                rc = parse_positive(cmd, o, v, true, &a->facet);
-                a->has_facet = true;
+                rc = parse_positive(cmd, o, v, true, &a->r.facet);
+                a->r.has_facet = true;
             } else if (strcmp(o, "--crease") == 0) {
-                rc = parse_positive(cmd, o, v, true, &a->crease);
-                a->has_crease = true;
+                rc = parse_positive(cmd, o, v, true, &a->r.crease);
+                a->r.has_crease = true;
             } else if (strcmp(o, "--damping") == 0) {
-                rc = parse_positive(cmd, o, v, true, &a->damping);
-                a->has_damping = true;
+                rc = parse_positive(cmd, o, v, true, &a->r.damping);
+                a->r.has_damping = true;
             } else if (strcmp(o, "--gravity") == 0) {
-                if (!cli_parse_double(v, &a->gravity) || !isfinite(a->gravity))
+                if (!cli_parse_double(v, &a->r.gravity) || !isfinite(a->r.gravity))
                     return cli_usage(cmd, "--gravity needs a number, got '%s'", v);
             } else if (strcmp(o, "--steps") == 0) {
-                if (!cli_parse_int(v, &a->steps) || a->steps <= 0)
+                if (!cli_parse_int(v, &a->r.steps) || a->r.steps <= 0)
                     return cli_usage(cmd, "--steps needs a positive integer, got '%s'", v);
             } else if (strcmp(o, "--threads") == 0) {
-                if (!cli_parse_int(v, &a->threads) || a->threads < 1 || a->threads > 64)
+                if (!cli_parse_int(v, &a->r.threads) || a->r.threads < 1 || a->r.threads > 64)
                     return cli_usage(cmd, "--threads needs an integer from 1 to 64, got '%s'", v);
             }
             if (rc != CLI_EXIT_OK) return rc;
@@ -96,14 +92,17 @@ static int parse(int argc, char **argv, compliant_args *a)
         }
     }
     if (!a->path) return cli_usage(cmd, "missing FILE");
-    if (a->dynamic && a->frames) return cli_usage(cmd, "--all-frames is for the static solver's load steps, not --dynamic");
+    {
+        char mistake[200];
+        if (cli_compliant_request_error(&a->r, mistake, sizeof mistake)) return cli_usage(cmd, "%s", mistake);
+    }
     return CLI_EXIT_OK;
 }
 
-static json_t *edge_array(const double *v, int n, bool degrees)
+static json_t *edge_array(const double *v, int n)
 {
     json_t *arr = json_array();
-    for (int e = 0; e < n; ++e) json_array_append_new(arr, json_real(degrees ? ori_rad_to_deg_output(v[e]) : v[e]));
+    for (int e = 0; e < n; ++e) json_array_append_new(arr, json_real(v[e]));
     return arr;
 }
 
@@ -121,7 +120,7 @@ int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, 
         char num[64];
         snprintf(num, sizeof num, "%.17g", f);
         ori_status st = ori_fold_set_custom(doc, fr, "orikin:fraction", num, &err);
-        json_t *s = edge_array(ori_compliant_frame_strains(c, k), E, false);
+        json_t *s = edge_array(ori_compliant_frame_strains(c, k), E);
         char *text = json_dumps(s, JSON_COMPACT);
         json_decref(s);
         if (st == ORI_OK) st = ori_fold_set_custom(doc, fr, "edges_orikin:strain", text, &err);
@@ -130,7 +129,7 @@ int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, 
         const char *keys[2] = {"faces_orikin:strain_energy", "faces_orikin:strain"};
         const double *vals[2] = {ori_compliant_frame_face_energies(c, k), ori_compliant_frame_face_strains(c, k)};
         for (int q = 0; q < 2 && st == ORI_OK; ++q) {
-            s = edge_array(vals[q], F, false);
+            s = edge_array(vals[q], F);
             text = json_dumps(s, JSON_COMPACT);
             json_decref(s);
             st = ori_fold_set_custom(doc, fr, keys[q], text, &err);
@@ -160,25 +159,13 @@ int cli_fold_compliant_run(int argc, char **argv)
     ori_fold *doc = NULL;
     ori_pattern *p = NULL;
     if ((rc = cli_input_load("fold", a.path, &a.input, &doc, &p)) != CLI_EXIT_OK) return rc;
-    ori_compliant_def d = a.physical ? ori_compliant_physical_def() : ori_default_compliant_def();
-    if (a.has_axial) d.axial_stiffness = a.axial;
-    if (a.has_facet) d.facet_stiffness = a.facet;
-    if (a.has_crease) {
-        d.crease_stiffness = a.crease;
-        d.crease_stiffness_per_m = a.crease;
-    }
-    if (a.has_damping) d.damping = a.damping;
-    d.threads = a.threads;
-    d.gravity = a.gravity;
-    d.fraction = a.percent / 100.0;
-    d.keep_frames = a.frames;
-    if (a.fix && (rc = cli_spec_face("fold", a.path, p, "--fix", a.fix, &d.fixed_face)) != CLI_EXIT_OK) {
+    if (a.fix && (rc = cli_spec_face("fold", a.path, p, "--fix", a.fix, &a.r.fix)) != CLI_EXIT_OK) {
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
         return rc;
     }
     int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p);
-    double frames = a.frames ? ceil(180.0 * d.fraction / 10.0) * 4.0 + 1.0 : 1.0;
+    double frames = a.r.all_frames ? ceil(180.0 * a.r.percent / 100.0 / 10.0) * 4.0 + 1.0 : 1.0;
     double bytes = a.out ? frames * (3.0 * V + 2.0 * E) * 20.0 : 0.0;
     if ((rc = cli_guard_check("fold", frames, bytes, force)) != CLI_EXIT_OK) {
         ori_pattern_destroy(p);
@@ -186,21 +173,20 @@ int cli_fold_compliant_run(int argc, char **argv)
         return rc;
     }
     ori_compliant *c = NULL;
-    ori_error err;
-    ori_status st = ori_compliant_create(p, &d, &c, &err);
+    ori_error err, why;
+    bool reached = false;
+    int dyn_steps = 0;
+    cli_progress bar;
+    cli_progress_begin(&bar, "fold", a.r.dynamic ? "explicit dynamics" : "static equilibrium");
+    ori_status st = cli_compliant_solve(p, &a.r, &c, &reached, &dyn_steps, &why, &err);
+    cli_progress_end(&bar);
     if (st != ORI_OK) {
         rc = cli_input_error("fold", a.path, &err);
         ori_pattern_destroy(p);
         ori_fold_destroy(doc);
         return rc;
     }
-    int dyn_steps = 0;
-    cli_progress bar;
-    cli_progress_begin(&bar, "fold", a.dynamic ? "explicit dynamics" : "static equilibrium");
-    st = a.dynamic ? ori_compliant_run_dynamic(c, a.steps, 1e-6, &dyn_steps, &err) : ori_compliant_solve_static(c, &err);
-    cli_progress_end(&bar);
-    bool reached = st == ORI_OK;
-    if (!reached && !a.json) fprintf(stderr, "orikin fold: %s: %s\n", a.path, err.message);
+    if (!reached && !a.json) fprintf(stderr, "orikin fold: %s: %s\n", a.path, why.message);
     double energy = ori_compliant_energy(c), strain = ori_compliant_max_strain(c);
     double cerr = ori_compliant_crease_error(c), frac = ori_compliant_fraction(c);
     int it, fa, bt, ls;
@@ -214,72 +200,20 @@ int cli_fold_compliant_run(int argc, char **argv)
         double fr;
         ori_compliant_contact(c, k, &f0, &f1, &step, &fr);
         fprintf(stderr, "orikin fold: %s: warning: faces %d and %d pass through each other at %s step %d (%.6g %%)\n", a.path,
-                f0, f1, a.dynamic ? "explicit" : "load", step, 100.0 * fr);
+                f0, f1, a.r.dynamic ? "explicit" : "load", step, 100.0 * fr);
     }
     if (ori_compliant_contacts_truncated(c) && !a.json)
         fprintf(stderr, "orikin fold: %s: warning: more face pairs pass through each other (the first %d are listed)\n", a.path,
                 ori_compliant_contact_count(c));
     if (a.json) {
-        json_t *o = json_object();
-        json_object_set_new(o, "file", json_string(a.path));
-        json_object_set_new(o, "model", json_string("compliant"));
-        json_object_set_new(o, "solver", json_string(a.dynamic ? "explicit" : "static"));
-        json_object_set_new(o, "preset", json_string(a.physical ? "physical" : "origami-simulator"));
-        json_object_set_new(o, "percent", json_real(a.percent));
-        json_object_set_new(o, "reached", json_boolean(reached));
-        json_object_set_new(o, "reached_fraction", json_real(frac));
-        json_object_set_new(o, "max_strain", json_real(strain));
-        json_object_set_new(o, "energy", json_real(energy));
-        json_object_set_new(o, "crease_error_deg", json_real(cerr * 180.0 / ORI_PI));
-        json_object_set_new(o, "gradient_norm", json_real(ori_compliant_gradient_norm(c)));
-        json_object_set_new(o, "load_scale", json_real(ori_compliant_load_scale(c)));
-        json_object_set_new(o, "vertices", json_integer(V));
-        json_object_set_new(o, "bars", json_integer(ori_compliant_bar_count(c)));
-        json_object_set_new(o, "hinges", json_integer(ori_compliant_hinge_count(c)));
-        if (a.dynamic) {
-            json_object_set_new(o, "steps", json_integer(dyn_steps));
-            json_object_set_new(o, "time_step", json_real(ori_compliant_time_step(c)));
-        } else {
-            json_object_set_new(o, "newton_iterations", json_integer(it));
-            json_object_set_new(o, "load_steps", json_integer(ls));
-        }
-        double *ang = malloc(sizeof(double) * (size_t)(E + 1)), *str = malloc(sizeof(double) * (size_t)(E + 1));
-        for (int e = 0; e < E; ++e) {
-            ang[e] = ori_compliant_fold_angle(c, e);
-            str[e] = ori_compliant_edge_strain(c, e);
-        }
-        json_object_set_new(o, "fold_angles_deg", edge_array(ang, E, true));
-        json_object_set_new(o, "strains", edge_array(str, E, false));
-        free(ang);
-        free(str);
-        json_t *fe = json_array();
-        for (int f = 0; f < NF; ++f) json_array_append_new(fe, json_real(ori_compliant_face_energy(c, f)));
-        json_object_set_new(o, "face_energies", fe);
-        json_t *fs = json_array();
-        for (int f = 0; f < NF; ++f) json_array_append_new(fs, json_real(ori_compliant_face_strain(c, f)));
-        json_object_set_new(o, "face_strains", fs);
-        json_t *cs = json_array();
-        for (int k = 0; k < ori_compliant_contact_count(c); ++k) {
-            int f0, f1, step;
-            double fr;
-            ori_compliant_contact(c, k, &f0, &f1, &step, &fr);
-            json_t *ct = json_object();
-            json_object_set_new(ct, "faces", json_pack("[ii]", f0, f1));
-            json_object_set_new(ct, "step", json_integer(step));
-            json_object_set_new(ct, "fraction", json_real(fr));
-            json_array_append_new(cs, ct);
-        }
-        json_object_set_new(o, "contacts", cs);
-        json_object_set_new(o, "contacts_truncated", json_boolean(ori_compliant_contacts_truncated(c)));
-        if (!reached) json_object_set_new(o, "reason", json_string(err.message));
-        cli_print_json(o);
+        cli_print_json(cli_compliant_json(a.path, &a.r, c, reached, dyn_steps, why.message, false));
     } else {
         printf("%s: compliant fold (%s, %s solver) to %g %%: %s %.6g %%\n", a.path,
-               a.physical ? "physical preset" : "Origami Simulator's preset", a.dynamic ? "explicit" : "static", a.percent,
-               reached ? "reached" : "stopped at", 100.0 * frac);
+               a.r.physical ? "physical preset" : "Origami Simulator's preset", a.r.dynamic ? "explicit" : "static",
+               a.r.percent, reached ? "reached" : "stopped at", 100.0 * frac);
         printf("model: %d vertices, %d bars, %d hinges (%d triangles)\n", V, ori_compliant_bar_count(c),
                ori_compliant_hinge_count(c), ori_compliant_triangle_count(c));
-        if (a.dynamic) printf("explicit: %d steps of %.4g\n", dyn_steps, ori_compliant_time_step(c));
+        if (a.r.dynamic) printf("explicit: %d steps of %.4g\n", dyn_steps, ori_compliant_time_step(c));
         else printf("static: %d Newton iterations (%d factorizations), %d load steps, |grad E| %.2g (load scale %.3g)\n", it, fa, ls,
                     ori_compliant_gradient_norm(c), ori_compliant_load_scale(c));
         printf("max strain %.4g %%, energy %.6g, largest crease error vs target %.4g deg\n", 100.0 * strain, energy,
@@ -290,8 +224,9 @@ int cli_fold_compliant_run(int argc, char **argv)
                ori_compliant_contact_count(c) == 1 ? "" : "s");
     }
     if (rc == CLI_EXIT_OK && a.out)
-        rc = cli_compliant_write_frames("fold", a.out, doc, c, E, a.frames, "compliant fold: %.6g %% of the way to the targets");
-    if (rc == CLI_EXIT_OK && !reached) rc = a.dynamic ? CLI_EXIT_PARTIAL : CLI_EXIT_NEGATIVE;
+        rc = cli_compliant_write_frames("fold", a.out, doc, c, E, a.r.all_frames,
+                                        "compliant fold: %.6g %% of the way to the targets");
+    if (rc == CLI_EXIT_OK && !reached) rc = a.r.dynamic ? CLI_EXIT_PARTIAL : CLI_EXIT_NEGATIVE;
     ori_compliant_destroy(c);
     ori_pattern_destroy(p);
     ori_fold_destroy(doc);

@@ -592,6 +592,57 @@ Test(server, info_tree_dof_regularize_equal_cli_json_on_degree4)
     studio_destroy(s);
 }
 
+// The compliant fold (issue 23, the studio half): POST /api/compliant answers what `fold
+// --compliant --json` prints, field by field (one request, solve and JSON: cli/report), plus the
+// positions the studio draws; a bad value is refused with the CLI's words.
+Test(server, compliant_fold_equals_cli_json)
+{
+    const char *file = "examples/patterns/open-corner.fold";
+    studio *s = open_studio(file);
+    struct {
+        const char *body, *cli;
+        int rc;
+    } cases[] = {
+        {"{\"percent\": 40}", "fold examples/patterns/open-corner.fold --compliant --percent 40 --json", 0},
+        {"{\"percent\": 25, \"fix\": 2, \"crease\": 1.5}",
+         "fold examples/patterns/open-corner.fold --compliant --percent 25 --fix 2 --crease 1.5 --json", 0},
+        {"{\"percent\": 30, \"dynamic\": true, \"steps\": 500}",
+         "fold examples/patterns/open-corner.fold --compliant --percent 30 --dynamic --steps 500 --json", 5},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        json_t *api = call_json(s, "POST", "/api/compliant", NULL, cases[i].body, 200);
+        json_t *cli = cli_json(cases[i].cli, cases[i].rc);
+        json_t *pos = json_object_get(api, "positions");
+        cr_assert_eq(json_array_size(pos), (size_t)json_integer_value(json_object_get(cli, "vertices")), "%s", cases[i].cli);
+        double zmax = 0.0;
+        for (size_t v = 0; v < json_array_size(pos); ++v)
+            zmax = fmax(zmax, fabs(json_real_value(json_array_get(json_array_get(pos, v), 2))));
+        cr_assert_gt(zmax, 1e-3, "%s: the sheet is folded", cases[i].cli);
+        json_object_del(api, "positions");
+        json_object_del(api, "version");
+        cr_assert_geq(json_object_size(cli), 10, "%s: a real answer", cases[i].cli);
+        assert_same(api, cli, cases[i].cli);
+        json_decref(api);
+        json_decref(cli);
+    }
+    studio_response r = call(s, "POST", "/api/compliant", NULL, "{\"percent\": 120}");
+    cr_assert_eq(r.status, 400);
+    cr_assert(strstr(r.body, "--percent needs a number from 0 to 100, got '120'"), "%s", r.body);
+    studio_response_free(&r);
+    r = call(s, "POST", "/api/compliant", NULL, "{\"fix\": 99}");
+    cr_assert_eq(r.status, 400);
+    cr_assert(strstr(r.body, "fix: a face index"), "%s", r.body);
+    studio_response_free(&r);
+    r = call(s, "POST", "/api/compliant", NULL, "{\"percent\": 10, \"stiff\": 1}");
+    cr_assert_eq(r.status, 400);
+    studio_response_free(&r);
+    char *cli_out = NULL;
+    cr_assert_eq(test_run_cli("fold examples/patterns/open-corner.fold --compliant --percent 120", &cli_out), 2);
+    cr_assert(strstr(cli_out, "--percent needs a number from 0 to 100, got '120'"), "%s", cli_out);
+    free(cli_out);
+    studio_destroy(s);
+}
+
 // --- robustness: failed requests change nothing -------------------------------------------------
 
 Test(server, bad_requests_leave_the_document_unchanged)

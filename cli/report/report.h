@@ -12,7 +12,8 @@
 // cli_regularize_request_error, cli_regularize_pattern_error, cli_regularize_refusal,
 // cli_regularize_json, cli_face_label, cli_apply_counts_json, cli_apply_new_faces_json,
 // cli_modes_solve, cli_modes_hint, cli_modes_shown_frames, cli_modes_creases,
-// cli_modes_against_assignment, cli_modes_json, cli_modes_free.
+// cli_modes_against_assignment, cli_modes_json, cli_modes_free, cli_compliant_request_init,
+// cli_compliant_request_error, cli_compliant_def, cli_compliant_solve, cli_compliant_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -239,5 +240,41 @@ const char *cli_face_label(const ori_pattern *p, int f, char *buf, size_t size);
 void cli_apply_counts_json(json_t *o, const ori_apply_result *r);
 // [{name, face}] of the folding elements that tree nodes nodes_before … of p name: a new array.
 json_t *cli_apply_new_faces_json(const ori_pattern *p, int nodes_before);
+
+// --- the compliant fold (orikin fold --compliant; POST /api/compliant) --------------------
+
+// A compliant fold as asked: the options of fold --compliant and the fields of the request.
+typedef struct cli_compliant_request {
+    double percent;          // 0 … 100
+    bool dynamic;            // the explicit solver
+    bool physical;           // the physical preset (else Origami Simulator's)
+    bool has_axial, has_facet, has_crease, has_damping;
+    double axial, facet, crease, damping;
+    double gravity;
+    int steps;               // explicit steps (> 0)
+    int threads;             // explicit solver threads (1 … 64)
+    int fix;                 // face held (ORI_NULL_INDEX: the model's default)
+    bool all_frames;         // keep one frame per load step (static)
+} cli_compliant_request;
+
+// Defaults: 100 %, static, Origami Simulator's preset, no gravity, 1,000,000 steps, 1 thread.
+void cli_compliant_request_init(cli_compliant_request *r);
+// The mistake of a request (a range, a combination), written as the CLI's usage message with the
+// option names (--percent, --axial, ...); false when there is none.
+bool cli_compliant_request_error(const cli_compliant_request *r, char *buf, size_t size);
+// The model's definition for a request (the fraction, the preset with its replaced stiffnesses).
+ori_compliant_def cli_compliant_def(const cli_compliant_request *r);
+// Build the model of p and fold it. ORI_OK with *out (destroy with ori_compliant_destroy) and
+// *reached, *explicit_steps and, when not reached, *why (the solver's message); otherwise the
+// model's refusal (bad input) in *error.
+ori_status cli_compliant_solve(const ori_pattern *p, const cli_compliant_request *r, ori_compliant **out, bool *reached,
+                               int *explicit_steps, ori_error *why, ori_error *error);
+// fold --compliant --json: {file, model, solver, preset, percent, reached, reached_fraction,
+// max_strain, energy, crease_error_deg, gradient_norm, load_scale, vertices, bars, hinges, steps |
+// newton_iterations, load_steps, fold_angles_deg, strains, face_energies, face_strains, contacts,
+// contacts_truncated, reason (when not reached)}; with positions also "positions" ([x, y, z] per
+// vertex, the studio's drawing).
+json_t *cli_compliant_json(const char *file, const cli_compliant_request *r, const ori_compliant *c, bool reached,
+                           int explicit_steps, const char *reason, bool positions);
 
 #endif

@@ -245,6 +245,7 @@ void studio_api_progress(studio *s, const studio_request *req, studio_response *
 void studio_api_contact(studio *s, const studio_request *req, studio_response *out);
 void studio_api_collide(studio *s, const studio_request *req, studio_response *out);
 void studio_api_regularize(studio *s, const studio_request *req, studio_response *out);
+void studio_api_compliant(studio *s, const studio_request *req, studio_response *out);
 // GET /api/frames (studio_frames.c): a multi-frame document's states, times and vertex coordinates.
 void studio_api_frames(studio *s, const studio_request *req, studio_response *out);
 

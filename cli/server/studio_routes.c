@@ -160,6 +160,7 @@ static const route routes[] = {
     {"GET", "/api/frames", studio_api_frames},
     {"POST", "/api/collide", studio_api_collide},
     {"POST", "/api/regularize", studio_api_regularize},
+    {"POST", "/api/compliant", studio_api_compliant},
     {"POST", "/api/actuate", api_actuate},
 };
 

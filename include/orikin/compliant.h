@@ -142,6 +142,8 @@ ORI_API double ori_compliant_crease_error(const ori_compliant *c);
 ORI_API void ori_compliant_stats(const ori_compliant *c, int *iterations, int *factorizations, int *backtracks,
                                  int *load_steps);
 
+/// Number of pattern edges (the per-edge results).
+ORI_API int ori_compliant_edge_count(const ori_compliant *c);
 /// Number of pattern faces (the per-face results below).
 ORI_API int ori_compliant_face_count(const ori_compliant *c);
 /// Strain energy of a pattern face in the current state: its bars' and facet hinges' energy (a bar

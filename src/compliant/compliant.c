@@ -1508,6 +1508,7 @@ void ori_compliant_stats(const ori_compliant *c, int *iterations, int *factoriza
 }
 
 int ori_compliant_face_count(const ori_compliant *c) { return c->nf; }
+int ori_compliant_edge_count(const ori_compliant *c) { return c->ne; }
 
 double ori_compliant_plastic_rotation(const ori_compliant *c, int edge)
 {

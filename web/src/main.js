@@ -466,6 +466,7 @@ function wire() {
   $('clear-spec').onclick = () => { state.spec = { fix: -1, drive: -1, drives: [], locks: new Set() }; clearFold(); renderSpec(); renderTree(); maybeDof(); };
   $('compute').onclick = compute;
   $('whole-slider').oninput = (ev) => wholeFold.fold(+ev.target.value);
+  $('whole-compliant').onchange = () => wholeFold.fold(+$('whole-slider').value);
   $('check-tolerance').onchange = () => action(runCheck);
   $('regularize').onclick = () => action(regularize);
   $('collide').onclick = () => action(collideShown);
@@ -576,6 +577,7 @@ window.studio = {
   busy: () => (api ? api.busy + api.pending : 0) + (state.inflight ? 1 : 0) + state.work + (wholeFold.running() ? 1 : 0),
   angles: () => (state.shownAngles ? Array.from(state.shownAngles) : []),
   wholePercent: () => wholeFold.percent(),
+  compliant: () => state.compliant || null,
   stats: () => ({
     states: state.stats.states,
     framesDrawn: v3 ? v3.frameCount : 0,

@@ -31,9 +31,10 @@ export function createSequence(ctx) {
     setupTimeline();
     if (r.collision) message(`collision: ${r.reason} (the sequence stops before it)`, true);
     else if (!r.valid) message(`fold ${r.failed_fold} is ${r.verdict}: ${r.reason}`, true);
-    // a sequence that recorded no state (its first fold failed) has no instant to show: asking
-    // for one would only add a second, stale error ("t: time 0 is outside [0, 0]")
-    if (r.frames.length) await showTime(lastCleanT());
+    // a sequence that recorded no state or no time (its first fold failed, or did not move from
+    // its start) has no instant to show: asking for one would only add a second, stale error
+    // ("t: time 0 is outside [0, 0]")
+    if (r.frames.length && r.duration > 0) await showTime(lastCleanT());
     if (r.collision) await ctx.showContact('sequence');
   }
 

@@ -2,7 +2,10 @@
 // file's target angles, as `orikin fold --percent P` (the server's default fixed face unless one
 // is chosen). Each position is one sequence of one fold toward the targets, shown at its end:
 // the state is the CLI's exactly. Requests never pile up: while one runs only the latest P waits.
-// ctx: {state, $, v3, action, runSequence}.
+// With "compliant" ticked the slider runs the bar-and-hinge model instead (POST /api/compliant,
+// the CLI's `fold --compliant --percent P --json` plus the positions): every pattern folds,
+// bending its panels where it must, and the label says how far and how much the sheet strains.
+// ctx: {state, $, v3, api, action, runSequence}.
 import { faceLabel } from './document.js';
 
 export function createWholeFold(ctx) {
@@ -17,7 +20,11 @@ export function createWholeFold(ctx) {
       while (whole.want !== null) {
         const want = whole.want;
         whole.want = null;
-        if (want === 0 && !state.sequence) continue;
+        if (want === 0 && !state.sequence && !$('whole-compliant').checked) continue;
+        if ($('whole-compliant').checked) {
+          await ctx.action(() => compliant(want));
+          continue;
+        }
         const f = { name: 'the whole pattern', percent: want };
         if (state.spec.fix >= 0) f.fix = state.spec.fix;
         await ctx.action(async () => {
@@ -32,7 +39,8 @@ export function createWholeFold(ctx) {
           const r = state.sequence;
           const fix = r && r.folds && r.folds[0] ? r.folds[0].fix : null;
           const face = fix !== null && fix !== undefined ? `, fixed ${faceLabel(state.doc, fix)}${state.spec.fix >= 0 ? '' : ' (default)'}` : '';
-          $('whole-label').textContent = !r ? 'flat' : r.valid ? `${want} % of the way toward the targets${face}` : `${r.verdict}: ${r.reason}`;
+          $('whole-label').textContent = !r ? 'flat' : r.valid ? `${want} % of the way toward the targets${face}`
+            : `${r.verdict}: ${r.reason} (tick "compliant" to fold it with bending panels)`;
           $('whole-label').title = $('whole-label').textContent;
         });
       }
@@ -40,11 +48,30 @@ export function createWholeFold(ctx) {
       whole.running = false;
     }
   }
+  // The compliant fold at p %: the bent sheet in the 3D view, its figures in the label.
+  async function compliant(p) {
+    const body = { percent: p };
+    if (state.spec.fix >= 0) body.fix = state.spec.fix;
+    const r = await ctx.api.compute('compliant fold', () => ctx.api.post('compliant', body));
+    state.compliant = r;
+    ctx.v3.setPositions(Float64Array.from(r.positions.flat()));
+    state.shown = 'compliant';
+    state.shownAngles = Float64Array.from(r.fold_angles_deg); // degrees, as the sequence states
+    whole.percent = p;
+    const strain = `max strain ${(100 * r.max_strain).toPrecision(3)} %`;
+    const text = r.reached
+      ? `compliant: ${p} % of the way toward the targets, ${strain}`
+      : `compliant: stopped at ${(100 * r.reached_fraction).toPrecision(4)} % (${r.reason}), ${strain}`;
+    $('whole-label').textContent = text;
+    $('whole-label').title = text;
+    $('state3d').textContent = `compliant fold, ${p} %`;
+  }
   // A new document: the slider back at 0.
   function reset() {
     $('whole-slider').value = '0';
     $('whole-value').textContent = '0 %';
     $('whole-label').textContent = '';
+    state.compliant = null;
   }
   return { fold, reset, running: () => whole.running, percent: () => whole.percent };
 }

@@ -1,0 +1,86 @@
+// POST /api/compliant: the compliant fold of the document's pattern (the bar-and-hinge model),
+// as `orikin fold FILE --compliant --json` with the same request, solve and JSON (cli/report),
+// plus the vertex positions the studio draws. Body: {percent, dynamic, preset, axial, facet,
+// crease, damping, gravity, steps, threads, fix (a face index or name)}, each optional.
+#include <string.h>
+
+#include "studio_internal.h"
+
+static bool parse_request(json_t *o, const ori_pattern *p, cli_compliant_request *r, studio_response *out)
+{
+    static const char *const keys[] = {"percent", "dynamic", "preset", "axial", "facet", "crease", "damping",
+                                       "gravity", "steps", "threads", "fix", NULL};
+    if (!studio_check_keys(o, keys, out)) return false;
+    const char *preset = NULL;
+    bool ok = studio_get_number(o, "percent", false, &r->percent, NULL, out) &&
+              studio_get_bool(o, "dynamic", &r->dynamic, out) && studio_get_string(o, "preset", false, &preset, out) &&
+              studio_get_number(o, "axial", false, &r->axial, &r->has_axial, out) &&
+              studio_get_number(o, "facet", false, &r->facet, &r->has_facet, out) &&
+              studio_get_number(o, "crease", false, &r->crease, &r->has_crease, out) &&
+              studio_get_number(o, "damping", false, &r->damping, &r->has_damping, out) &&
+              studio_get_number(o, "gravity", false, &r->gravity, NULL, out) &&
+              studio_get_int(o, "steps", false, &r->steps, NULL, out) && studio_get_int(o, "threads", false, &r->threads, NULL, out);
+    if (!ok) return false;
+    if (preset) {
+        if (strcmp(preset, "physical") == 0) r->physical = true;
+        else if (strcmp(preset, "origami-simulator") != 0) {
+            studio_fail(out, 400, "preset: origami-simulator or physical, got '%.64s'", preset);
+            return false;
+        }
+    }
+    json_t *fix = json_object_get(o, "fix");
+    if (fix && json_is_string(fix)) {
+        r->fix = ori_pattern_find_face_by_name(p, json_string_value(fix));
+        if (r->fix == ORI_NULL_INDEX) {
+            studio_fail(out, 400, "fix: no face named %.64s", json_string_value(fix));
+            return false;
+        }
+    } else if (fix && json_is_integer(fix) && json_integer_value(fix) >= 0 &&
+               json_integer_value(fix) < ori_pattern_face_count(p)) {
+        r->fix = (int)json_integer_value(fix);
+    } else if (fix) {
+        studio_fail(out, 400, "fix: a face index (0 to %d) or name", ori_pattern_face_count(p) - 1);
+        return false;
+    }
+    char mistake[200];
+    if (cli_compliant_request_error(r, mistake, sizeof mistake)) {
+        studio_fail(out, 400, "%s", mistake);
+        return false;
+    }
+    return true;
+}
+
+void studio_api_compliant(studio *s, const studio_request *req, studio_response *out)
+{
+    json_t *o = studio_body_object(req, out);
+    if (!o) return;
+    char file[STUDIO_PATH_MAX];
+    pthread_mutex_lock(&s->lock);
+    studio_model *model = studio_model_ref(s->model);
+    long version = s->version;
+    snprintf(file, sizeof file, "%s", s->file);
+    pthread_mutex_unlock(&s->lock);
+    cli_compliant_request r;
+    cli_compliant_request_init(&r);
+    bool ok = parse_request(o, model->pattern, &r, out);
+    json_decref(o);
+    if (!ok || !studio_job_begin(s, "compliant", out)) {
+        studio_model_unref(model);
+        return;
+    }
+    ori_compliant *c = NULL;
+    ori_error err, why;
+    bool reached = false;
+    int steps = 0;
+    ori_status st = cli_compliant_solve(model->pattern, &r, &c, &reached, &steps, &why, &err);
+    if (st != ORI_OK) {
+        studio_fail_error(out, studio_status_of(st), &err);
+    } else {
+        json_t *j = cli_compliant_json(file, &r, c, reached, steps, why.message, true);
+        json_object_set_new(j, "version", json_integer(version));
+        studio_respond_json(out, 200, j);
+    }
+    ori_compliant_destroy(c);
+    studio_model_unref(model);
+    studio_job_end(s);
+}
