@@ -1,7 +1,8 @@
 // POST /api/compliant: the compliant fold of the document's pattern (the bar-and-hinge model),
 // as `orikin fold FILE --compliant --json` with the same request, solve and JSON (cli/report),
-// plus the vertex positions the studio draws. Body: {percent, dynamic, preset, axial, facet,
+// plus the vertex positions the studio draws and the faces' strain colours. Body: {percent, dynamic, preset, axial, facet,
 // crease, damping, gravity, steps, threads, fix (a face index or name)}, each optional.
+#include <math.h>
 #include <string.h>
 
 #include "studio_internal.h"
@@ -50,6 +51,30 @@ static bool parse_request(json_t *o, const ori_pattern *p, cli_compliant_request
     return true;
 }
 
+// The faces coloured by their largest strain as `orikin render --color strain` paints them: the
+// render module's colour map over [smallest, largest] (sRGB), and the bar's ticks.
+static json_t *strain_colors(const ori_compliant *c)
+{
+    int F = ori_compliant_face_count(c);
+    ori_value_map map = {NULL, NULL, INFINITY, -INFINITY};
+    for (int f = 0; f < F; ++f) {
+        map.min = fmin(map.min, ori_compliant_face_strain(c, f));
+        map.max = fmax(map.max, ori_compliant_face_strain(c, f));
+    }
+    if (F == 0) map.min = map.max = 0.0;
+    json_t *faces = json_array();
+    for (int f = 0; f < F; ++f) {
+        ori_rgb k = ori_colormap(ori_value_map_position(&map, ori_compliant_face_strain(c, f)));
+        json_array_append_new(faces, json_pack("[fff]", k.r, k.g, k.b));
+    }
+    double ticks[ORI_RENDER_BAR_TICKS];
+    char labels[ORI_RENDER_BAR_TICKS][ORI_RENDER_BAR_LABEL_MAX];
+    int n = ori_value_map_ticks(&map, ticks, labels);
+    json_t *lab = json_array();
+    for (int k = 0; k < n; ++k) json_array_append_new(lab, json_string(labels[k]));
+    return json_pack("{s:o,s:f,s:f,s:o}", "faces", faces, "min", map.min, "max", map.max, "ticks", lab);
+}
+
 void studio_api_compliant(studio *s, const studio_request *req, studio_response *out)
 {
     json_t *o = studio_body_object(req, out);
@@ -78,6 +103,7 @@ void studio_api_compliant(studio *s, const studio_request *req, studio_response 
     } else {
         json_t *j = cli_compliant_json(file, &r, c, reached, steps, why.message, true);
         json_object_set_new(j, "version", json_integer(version));
+        json_object_set_new(j, "strain_colors", strain_colors(c));
         studio_respond_json(out, 200, j);
     }
     ori_compliant_destroy(c);

@@ -43,12 +43,22 @@ await run('compliant', FILE, async ({ page }) => {
   assert(pos.length === 3 * want, `the 3D view has the model's ${want} vertices (${pos.length / 3})`);
   const zmax = Math.max(...pos.filter((_, i) => i % 3 === 2).map(Math.abs));
   assert(zmax > 0.05, `the 3D view shows the bent sheet (max |z| ${zmax})`);
+  // the faces coloured by strain, as orikin render --color strain paints them: the most strained
+  // face at the top of viridis, the least at its bottom
+  const colors = await page.evaluate(() => window.studio.faceColors());
+  const fs = ref.face_strains;
+  assert(colors && colors.length === fs.length, `a colour per face (${colors && colors.length})`);
+  const top = fs.indexOf(Math.max(...fs)), low = fs.indexOf(Math.min(...fs));
+  const near = (c, want) => c.every((x, i) => Math.abs(x - want[i]) < 0.01);
+  assert(near(colors[top], [0.993, 0.906, 0.144]), `the most strained face is yellow (${colors[top]})`);
+  assert(near(colors[low], [0.267, 0.005, 0.329]), `the least strained face is dark blue (${colors[low]})`);
   await page.screenshot({ path: path.join(OUT, 'compliant-half.png') });
 
   // unticked: the rigid fold again, at the same percent
   await page.locator('#whole-compliant').click();
   await settle(page);
   const back = await page.textContent('#whole-label');
+  assert((await page.evaluate(() => window.studio.faceColors())) === null, 'unticked, the sheet\'s own colours');
   assert(back.includes('gets no nearer to the goal'), `unticked, the rigid fold (${back})`);
   // the page says the rigid fold is blocked (each time it runs), and nothing else
   const errs = await page.evaluate(() => window.studio.errors());

@@ -578,6 +578,7 @@ window.studio = {
   angles: () => (state.shownAngles ? Array.from(state.shownAngles) : []),
   wholePercent: () => wholeFold.percent(),
   compliant: () => state.compliant || null,
+  faceColors: () => (v3 && v3.faceColors ? v3.faceColors : null),
   stats: () => ({
     states: state.stats.states,
     framesDrawn: v3 ? v3.frameCount : 0,

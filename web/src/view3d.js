@@ -245,7 +245,38 @@ export class View3D {
   }
 
   // Show a state: 3V coordinates (float64, kept as given).
-  setPositions(pos) {
+  // Paint each face its own colour (colors: [r, g, b] per face, sRGB 0 … 1; both sides), or
+  // null for the sheet's colours again. A new state (setPositions) clears them.
+  setFaceColors(colors) {
+    this.faceColors = colors ? colors.map((c) => [...c]) : null;
+    if (!colors) {
+      if (this.geometry.getAttribute('color')) this.geometry.deleteAttribute('color');
+      if (this.material.vertexColors) {
+        this.material.vertexColors = false;
+        this.material.color.copy(this.sheetColor || this.material.color);
+        this.material.needsUpdate = true;
+      }
+      this.render();
+      return;
+    }
+    const C = this.cornerVertex.length, col = new Float32Array(3 * C), k = new THREE.Color();
+    for (let f = 0; f < this.faceCorners.length; f++) {
+      const [c0, n] = this.faceCorners[f];
+      k.setRGB(colors[f][0], colors[f][1], colors[f][2], THREE.SRGBColorSpace);
+      for (let c = c0; c < c0 + n; c++) col.set([k.r, k.g, k.b], 3 * c);
+    }
+    this.geometry.setAttribute('color', new THREE.BufferAttribute(col, 3));
+    if (!this.material.vertexColors) {
+      this.sheetColor = this.material.color.clone();
+      this.material.vertexColors = true;
+      this.material.color.set(0xffffff);
+      this.material.needsUpdate = true;
+    }
+    this.render();
+  }
+
+  setPositions(pos, keepColors = false) {
+    if (this.faceColors && !keepColors) this.setFaceColors(null);
     this.positions = Float64Array.from(pos);
     const p = this.posAttr.array;
     const off = stackOffsets(this.doc, this.stackTree, pos, this.faceCorners, this.cornerVertex);

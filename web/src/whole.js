@@ -29,7 +29,8 @@ export function createWholeFold(ctx) {
         if (state.spec.fix >= 0) f.fix = state.spec.fix;
         await ctx.action(async () => {
           await ctx.runSequence(want === 0 ? [] : [f], 'fold');
-          if (want === 0) {
+          // back to the rigid model: a fold that showed no state of its own shows the sheet
+          if (want === 0 || state.shown === 'compliant') {
             ctx.v3.setPositions(Float64Array.from(state.doc.vertices.flat()));
             state.shown = 'flat';
             state.shownAngles = null;
@@ -55,10 +56,12 @@ export function createWholeFold(ctx) {
     const r = await ctx.api.compute('compliant fold', () => ctx.api.post('compliant', body));
     state.compliant = r;
     ctx.v3.setPositions(Float64Array.from(r.positions.flat()));
+    ctx.v3.setFaceColors(r.strain_colors.faces); // as orikin render --color strain paints them
     state.shown = 'compliant';
     state.shownAngles = Float64Array.from(r.fold_angles_deg); // degrees, as the sequence states
     whole.percent = p;
-    const strain = `max strain ${(100 * r.max_strain).toPrecision(3)} %`;
+    const bar = r.strain_colors;
+    const strain = `max strain ${(100 * r.max_strain).toPrecision(3)} % (faces coloured by strain, ${bar.ticks[0]} to ${bar.ticks[bar.ticks.length - 1]}: blue to yellow)`;
     const text = r.reached
       ? `compliant: ${p} % of the way toward the targets, ${strain}`
       : `compliant: stopped at ${(100 * r.reached_fraction).toPrecision(4)} % (${r.reason}), ${strain}`;
