@@ -618,6 +618,24 @@ Test(server, compliant_fold_equals_cli_json)
         for (size_t v = 0; v < json_array_size(pos); ++v)
             zmax = fmax(zmax, fabs(json_real_value(json_array_get(json_array_get(pos, v), 2))));
         cr_assert_gt(zmax, 1e-3, "%s: the sheet is folded", cases[i].cli);
+        // the strain colours: render --color strain's map over the CLI's face strains (JSON numbers:
+        // a whole number reads as an integer)
+        json_t *sc = json_object_get(api, "strain_colors"), *fs = json_object_get(cli, "face_strains");
+        ori_value_map map = {NULL, NULL, INFINITY, -INFINITY};
+        for (size_t f = 0; f < json_array_size(fs); ++f) {
+            map.min = fmin(map.min, json_number_value(json_array_get(fs, f)));
+            map.max = fmax(map.max, json_number_value(json_array_get(fs, f)));
+        }
+        cr_assert_float_eq(json_number_value(json_object_get(sc, "max")), map.max, 1e-15 * (1.0 + map.max));
+        cr_assert_eq(json_array_size(json_object_get(sc, "faces")), json_array_size(fs));
+        for (size_t f = 0; f < json_array_size(fs); ++f) {
+            ori_rgb k = ori_colormap(ori_value_map_position(&map, json_number_value(json_array_get(fs, f))));
+            json_t *got = json_array_get(json_object_get(sc, "faces"), f);
+            cr_assert_float_eq(json_number_value(json_array_get(got, 0)), k.r, 1e-12, "face %zu", f);
+            cr_assert_float_eq(json_number_value(json_array_get(got, 1)), k.g, 1e-12, "face %zu", f);
+            cr_assert_float_eq(json_number_value(json_array_get(got, 2)), k.b, 1e-12, "face %zu", f);
+        }
+        json_object_del(api, "strain_colors");
         json_object_del(api, "positions");
         json_object_del(api, "version");
         cr_assert_geq(json_object_size(cli), 10, "%s: a real answer", cases[i].cli);
