@@ -9,6 +9,7 @@
 
 #include "actuation_args.h"
 #include "fold_compliant.h"
+#include "report.h"
 
 static json_t *deg_list(const double *a, int n)
 {
@@ -144,14 +145,7 @@ int act_simulate_compliant(const char *path, const act_opts *o)
                                                 deg_list(ori_compliant_frame_angles(c, k), E), "max_strain",
                                                 frame_max_strain(c, k)));
         json_object_set_new(j, "frames", fr);
-        json_t *cs = json_array();
-        for (int k = 0; k < ori_compliant_contact_count(c); ++k) {
-            int f0, f1, step;
-            double fra;
-            ori_compliant_contact(c, k, &f0, &f1, &step, &fra);
-            json_array_append_new(cs, json_pack("{s:[ii],s:i,s:f}", "faces", f0, f1, "step", step, "current_fraction", fra));
-        }
-        json_object_set_new(j, "contacts", cs);
+        json_object_set_new(j, "contacts", cli_compliant_contacts_json(c, "current_fraction"));
         cli_print_json(j);
     } else if (rc == CLI_EXIT_OK) {
         printf("%s: compliant model (%d vertices, %d bars, %d hinges, %d wire%s), face %d held, B = (%.6g, %.6g, %.6g) T\n",

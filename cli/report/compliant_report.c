@@ -92,6 +92,18 @@ static json_t *real_array(const double *v, int n, bool degrees)
     return a;
 }
 
+json_t *cli_compliant_contacts_json(const ori_compliant *c, const char *fraction_key)
+{
+    json_t *cs = json_array();
+    for (int k = 0; k < ori_compliant_contact_count(c); ++k) {
+        int f0, f1, step;
+        double fr;
+        ori_compliant_contact(c, k, &f0, &f1, &step, &fr);
+        json_array_append_new(cs, json_pack("{s:[ii],s:i,s:f}", "faces", f0, f1, "step", step, fraction_key, fr));
+    }
+    return cs;
+}
+
 json_t *cli_compliant_json(const char *file, const cli_compliant_request *r, const ori_compliant *c, bool reached,
                            int explicit_steps, const char *reason, bool positions)
 {
@@ -140,14 +152,7 @@ json_t *cli_compliant_json(const char *file, const cli_compliant_request *r, con
     json_object_set_new(o, "face_strains", real_array(fs, NF, false));
     free(fe);
     free(fs);
-    json_t *cs = json_array();
-    for (int k = 0; k < ori_compliant_contact_count(c); ++k) {
-        int f0, f1, step;
-        double fr;
-        ori_compliant_contact(c, k, &f0, &f1, &step, &fr);
-        json_array_append_new(cs, json_pack("{s:[ii],s:i,s:f}", "faces", f0, f1, "step", step, "fraction", fr));
-    }
-    json_object_set_new(o, "contacts", cs);
+    json_object_set_new(o, "contacts", cli_compliant_contacts_json(c, "fraction"));
     json_object_set_new(o, "contacts_truncated", json_boolean(ori_compliant_contacts_truncated(c)));
     if (!reached) json_object_set_new(o, "reason", json_string(reason ? reason : ""));
     if (positions) {

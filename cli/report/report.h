@@ -13,7 +13,8 @@
 // cli_regularize_json, cli_face_label, cli_apply_counts_json, cli_apply_new_faces_json,
 // cli_modes_solve, cli_modes_hint, cli_modes_shown_frames, cli_modes_creases,
 // cli_modes_against_assignment, cli_modes_json, cli_modes_free, cli_compliant_request_init,
-// cli_compliant_request_error, cli_compliant_def, cli_compliant_solve, cli_compliant_json.
+// cli_compliant_request_error, cli_compliant_def, cli_compliant_solve, cli_compliant_contacts_json,
+// cli_compliant_json.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -269,6 +270,8 @@ ori_compliant_def cli_compliant_def(const cli_compliant_request *r);
 // model's refusal (bad input) in *error.
 ori_status cli_compliant_solve(const ori_pattern *p, const cli_compliant_request *r, ori_compliant **out, bool *reached,
                                int *explicit_steps, ori_error *why, ori_error *error);
+// The model's contact warnings: [{faces: [a, b], step, <fraction_key>: the fraction}].
+json_t *cli_compliant_contacts_json(const ori_compliant *c, const char *fraction_key);
 // fold --compliant --json: {file, model, solver, preset, percent, reached, reached_fraction,
 // max_strain, energy, crease_error_deg, gradient_norm, load_scale, vertices, bars, hinges, steps |
 // newton_iterations, load_steps, fold_angles_deg, strains, face_energies, face_strains, contacts,
