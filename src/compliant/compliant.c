@@ -204,18 +204,30 @@ static ori_status triangulate(builder *bd, const ori_pattern *p, int f, int *fv,
     }
     double scale = fabs(area);
     while (n >= 3) {
+        // the ear of the best shape (the largest smallest sine of its angles): sliver triangles
+        // give their hinges wing heights near 0, and gradients of the fold angle near 1/0
         int ear = -1;
-        for (int t = 0; t < n && ear < 0; ++t) {
+        double best = -1.0;
+        for (int t = 0; t < n; ++t) {
             int pv = fv[(t + n - 1) % n], cv = fv[t], nv = fv[(t + 1) % n];
             const double *a = x + 3 * pv, *b = x + 3 * cv, *cc = x + 3 * nv;
-            if (!(cross2(a, b, cc) > DBL_EPSILON * scale)) continue;
+            double twice = cross2(a, b, cc);
+            if (!(twice > DBL_EPSILON * scale)) continue;
             bool ok = true;
             for (int s = 0; s < n && ok; ++s) {
                 int w = fv[s];
                 if (w == pv || w == cv || w == nv) continue;
                 if (in_triangle(x + 3 * w, a, b, cc)) ok = false;
             }
-            if (ok) ear = t;
+            if (!ok) continue;
+            double ab = hypot(b[0] - a[0], b[1] - a[1]), bc = hypot(cc[0] - b[0], cc[1] - b[1]);
+            double ca = hypot(a[0] - cc[0], a[1] - cc[1]);
+            // sin of each angle = 2·area / (product of its two sides)
+            double q = fmin(twice / (ab * ca), fmin(twice / (ab * bc), twice / (bc * ca)));
+            if (q > best * (1.0 + 1e-12)) {
+                best = q;
+                ear = t;
+            }
         }
         if (ear < 0) {
             ori__free(side);
