@@ -8,22 +8,25 @@
 
 #include "cli.h"
 
-// Options and the tessellations that read them (bit k = ori_tessellation k).
-#define ALL ((1u << ORI_TESS_COUNT) - 1u)
-#define BIT(k) (1u << (k))
+// Options and the parameter each sets: an option applies to the tessellations that read its
+// parameter (the library's table, ori_tessellation_params).
 enum opt { OPT_ROWS, OPT_COLS, OPT_SIDES, OPT_ANGLE, OPT_WIDTH, OPT_HEIGHT, OPT_TWIST_SIZE, OPT_COUNT };
 static const struct {
     const char *name;
-    unsigned kinds;
+    unsigned param;
 } options[OPT_COUNT] = {
-    {"--rows", ALL},
-    {"--cols", ALL & ~BIT(ORI_TESS_KRESLING)},
-    {"--sides", BIT(ORI_TESS_KRESLING)},
-    {"--angle", ALL & ~BIT(ORI_TESS_WATERBOMB)},
-    {"--width", ALL},
-    {"--height", ALL},
-    {"--twist-size", BIT(ORI_TESS_SQUARE_TWIST)},
+    {"--rows", ORI_GEN_ROWS},   {"--cols", ORI_GEN_COLS},     {"--sides", ORI_GEN_SIDES},
+    {"--angle", ORI_GEN_ANGLE}, {"--width", ORI_GEN_WIDTH},   {"--height", ORI_GEN_HEIGHT},
+    {"--twist-size", ORI_GEN_TWIST_SIZE},
 };
+
+static bool applies(int o, ori_tessellation kind)
+{
+    // Yoshimura has no height of its own: --height there gives its angle (θ = atan(2h / w)).
+    if (o == OPT_HEIGHT && (ori_tessellation_params(kind) & ORI_GEN_ANGLE) && !(ori_tessellation_params(kind) & ORI_GEN_HEIGHT))
+        return true;
+    return (ori_tessellation_params(kind) & options[o].param) != 0;
+}
 
 static const char *option_for_field(const char *field)
 {
@@ -36,17 +39,18 @@ static const char *option_for_field(const char *field)
 // "orikin:generator": the tessellation and the parameters it read.
 static void generator_json(const ori_generate_def *def, char *buf, size_t size)
 {
-    ori_tessellation k = def->kind;
-    int n = snprintf(buf, size, "{\"kind\":\"%s\",\"rows\":%d", ori_tessellation_name(k), def->rows);
-    if (k == ORI_TESS_KRESLING) n += snprintf(buf + n, size - (size_t)n, ",\"sides\":%d", def->sides);
-    else n += snprintf(buf + n, size - (size_t)n, ",\"cols\":%d", def->cols);
-    if (k != ORI_TESS_WATERBOMB) n += snprintf(buf + n, size - (size_t)n, ",\"angle_deg\":%.17g", ori_rad_to_deg_output(def->angle_rad));
+    unsigned reads = ori_tessellation_params(def->kind);
+    int n = snprintf(buf, size, "{\"kind\":\"%s\",\"rows\":%d", ori_tessellation_name(def->kind), def->rows);
+    if (reads & ORI_GEN_SIDES) n += snprintf(buf + n, size - (size_t)n, ",\"sides\":%d", def->sides);
+    if (reads & ORI_GEN_COLS) n += snprintf(buf + n, size - (size_t)n, ",\"cols\":%d", def->cols);
+    if (reads & ORI_GEN_ANGLE)
+        n += snprintf(buf + n, size - (size_t)n, ",\"angle_deg\":%.17g", ori_rad_to_deg_output(def->angle_rad));
     n += snprintf(buf + n, size - (size_t)n, ",\"width\":%.17g", def->width);
-    if (k == ORI_TESS_KRESLING && def->bistable_height)
+    if ((reads & ORI_GEN_BISTABLE_HEIGHT) && def->bistable_height)
         n += snprintf(buf + n, size - (size_t)n, ",\"height\":\"bistable\"");
-    else if (k != ORI_TESS_YOSHIMURA)
+    else if (reads & ORI_GEN_HEIGHT)
         n += snprintf(buf + n, size - (size_t)n, ",\"height\":%.17g", def->height);
-    if (k == ORI_TESS_SQUARE_TWIST) n += snprintf(buf + n, size - (size_t)n, ",\"twist_size\":%.17g", def->twist_size);
+    if (reads & ORI_GEN_TWIST_SIZE) n += snprintf(buf + n, size - (size_t)n, ",\"twist_size\":%.17g", def->twist_size);
     snprintf(buf + n, size - (size_t)n, "}");
 }
 
@@ -88,7 +92,7 @@ static int run(int argc, char **argv)
         int o = 0;
         while (o < OPT_COUNT && strcmp(argv[i], options[o].name) != 0) ++o;
         if (o == OPT_COUNT) return cli_usage("generate", "unknown option %s", argv[i]);
-        if (!(options[o].kinds & BIT(kind)))
+        if (!applies(o, kind))
             return cli_usage("generate", "%s does not apply to %s", options[o].name, ori_tessellation_name(kind));
         const char *v = cli_option_once("generate", argc, argv, &i, &once);
         if (!v) return CLI_EXIT_USAGE;
@@ -109,14 +113,14 @@ static int run(int argc, char **argv)
     if (seen[OPT_WIDTH]) def.width = value[OPT_WIDTH];
     if (seen[OPT_TWIST_SIZE]) def.twist_size = value[OPT_TWIST_SIZE];
     if (seen[OPT_HEIGHT]) {
-        if (kind == ORI_TESS_YOSHIMURA) {
+        if (!(ori_tessellation_params(kind) & ORI_GEN_HEIGHT)) {
             // Yoshimura's height is the strip height h; θ = atan(2h / w).
             if (seen[OPT_ANGLE]) return cli_usage("generate", "give --angle or --height for yoshimura, not both");
             if (!(value[OPT_HEIGHT] > 0.0)) return cli_usage("generate", "--height: must be a number > 0");
             def.angle_rad = atan2(2.0 * value[OPT_HEIGHT], def.width);
         } else {
             def.height = value[OPT_HEIGHT];
-            if (kind == ORI_TESS_KRESLING) def.bistable_height = false;
+            def.bistable_height = false; // a height given replaces the bistable one
         }
     }
 
@@ -150,7 +154,7 @@ static int run(int argc, char **argv)
     // Written directly (no JSON tree): a 1000 x 1000 Miura-ori costs its text, not gigabytes.
     char title[160], title_json[200], params[512];
     snprintf(title, sizeof title, "%s, %d x %d", ori_tessellation_name(kind), def.rows,
-             kind == ORI_TESS_KRESLING ? def.sides : def.cols);
+             (ori_tessellation_params(kind) & ORI_GEN_SIDES) ? def.sides : def.cols);
     snprintf(title_json, sizeof title_json, "\"%s\"", title);
     generator_json(&def, params, sizeof params);
     char *classes = classes_json(cls, ori_pattern_edge_count(p));

@@ -3,7 +3,7 @@
 /// mountain/valley assignment, explicit flat fold angles (0), counter-clockwise faces and a
 /// class per edge (which family of creases it belongs to). docs/generators.md has the geometry.
 ///
-/// Functions: ori_tessellation_name, ori_tessellation_from_name, ori_edge_class_name,
+/// Functions: ori_tessellation_params, ori_tessellation_name, ori_tessellation_from_name, ori_edge_class_name,
 /// ori_default_generate_def, ori_generate_counts, ori_generate, ori_kresling_bistable_height.
 ///
 /// Lengths are unitless; angles are radians. Sizes up to ORI_GENERATE_MAX_EDGES edges.
@@ -30,6 +30,21 @@ typedef enum ori_tessellation {
     ORI_TESS_COUNT
 } ori_tessellation;
 
+/// The ori_generate_def fields a tessellation reads (ori_tessellation_params gives them as bits).
+typedef enum ori_generate_param {
+    ORI_GEN_ROWS = 1 << 0,            ///< rows
+    ORI_GEN_COLS = 1 << 1,            ///< cols
+    ORI_GEN_SIDES = 1 << 2,           ///< sides
+    ORI_GEN_ANGLE = 1 << 3,           ///< angle_rad
+    ORI_GEN_WIDTH = 1 << 4,           ///< width
+    ORI_GEN_HEIGHT = 1 << 5,          ///< height
+    ORI_GEN_TWIST_SIZE = 1 << 6,      ///< twist_size
+    ORI_GEN_BISTABLE_HEIGHT = 1 << 7, ///< bistable_height (on by default where read)
+} ori_generate_param;
+
+/// The parameters a tessellation reads: a set of ori_generate_param bits (one row of the
+/// generators' table, which also holds its defaults, counts and writer).
+ORI_API unsigned ori_tessellation_params(ori_tessellation kind);
 /// Command-line name of a tessellation ("square-twist"); static string.
 ORI_API const char *ori_tessellation_name(ori_tessellation kind);
 /// Parse a tessellation name (as ori_tessellation_name gives). Returns false when unknown.

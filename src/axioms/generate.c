@@ -11,8 +11,19 @@
 // formula far from int64 overflow); the edge limit is the real bound.
 #define MAX_GRID_SIDE (1 << 26)
 
-static const char *const tess_names[ORI_TESS_COUNT] = {"miura", "yoshimura", "waterbomb", "square-twist",
-                                                        "kresling"};
+// The table of tessellations (one row each, at the end of this file): name, parameters read,
+// defaults, counts with their own checks, face size and writer.
+typedef struct gen gen; // the arrays being written
+typedef struct tess_row {
+    const char *name;        // ori_tessellation_name
+    unsigned params;         // the ori_generate_def fields it reads (ori_generate_param bits)
+    int rows;                // default rows
+    double angle_rad;        // default angle (0 where none is read)
+    int face_size;           // vertices of each of its faces
+    ori_status (*counts)(const ori_generate_def *def, int64_t rows, int64_t cols, ori_pattern_counts *n, ori_error *error);
+    void (*write)(gen *g, const ori_generate_def *def);
+} tess_row;
+static const tess_row *tess_row_of(ori_tessellation kind);
 
 static const char *const class_names[ORI_EDGE_CLASS_COUNT] = {
     "boundary", "straight", "zigzag", "horizontal", "vertical", "diagonal",
@@ -21,14 +32,14 @@ static const char *const class_names[ORI_EDGE_CLASS_COUNT] = {
 const char *ori_tessellation_name(ori_tessellation kind)
 {
     ORI_ASSERT((int)kind >= 0 && kind < ORI_TESS_COUNT);
-    return tess_names[kind];
+    return tess_row_of(kind)->name;
 }
 
 bool ori_tessellation_from_name(const char *name, ori_tessellation *out)
 {
     ORI_ASSERT(name && out);
     for (int i = 0; i < ORI_TESS_COUNT; ++i)
-        if (strcmp(name, tess_names[i]) == 0) {
+        if (strcmp(name, tess_row_of((ori_tessellation)i)->name) == 0) {
             *out = (ori_tessellation)i;
             return true;
         }
@@ -54,18 +65,10 @@ ori_generate_def ori_default_generate_def(ori_tessellation kind)
     def.height = 1.0;
     def.twist_size = 0.5;
     def.bistable_height = false;
-    switch (kind) {
-    case ORI_TESS_MIURA: def.angle_rad = ORI_PI / 3.0; break;
-    case ORI_TESS_YOSHIMURA: def.angle_rad = ORI_PI / 6.0; break;
-    case ORI_TESS_WATERBOMB: break;
-    case ORI_TESS_SQUARE_TWIST: def.angle_rad = ORI_PI / 4.0; break;
-    case ORI_TESS_KRESLING:
-        def.rows = 3;
-        def.angle_rad = ORI_PI / 6.0;
-        def.bistable_height = true;
-        break;
-    case ORI_TESS_COUNT: break;
-    }
+    const tess_row *t = tess_row_of(kind);
+    def.rows = t->rows;
+    def.angle_rad = t->angle_rad;
+    def.bistable_height = (t->params & ORI_GEN_BISTABLE_HEIGHT) != 0; // on where it is read
     def.internal_value = ORI__DEF_COOKIE;
     return def;
 }
@@ -146,74 +149,92 @@ static kresling_geom kresling_geometry(const ori_generate_def *def)
     return g;
 }
 
+// --- counts, each tessellation checking its own parameters -------------------------------------
+
+static ori_status counts_miura(const ori_generate_def *def, int64_t r, int64_t c, ori_pattern_counts *n, ori_error *error)
+{
+    ori_status st = check_angle(def->angle_rad, 0.0, 0.5 * ORI_PI, false, error);
+    if (st != ORI_OK) return st;
+    n->vertices = (r + 1) * (c + 1);
+    n->edges = c * (r + 1) + r * (c + 1);
+    n->faces = r * c;
+    return ORI_OK;
+}
+
+static ori_status counts_yoshimura(const ori_generate_def *def, int64_t r, int64_t c, ori_pattern_counts *n,
+                                   ori_error *error)
+{
+    ori_status st = check_angle(def->angle_rad, 0.0, ORI_PI / 3.0, true, error);
+    if (st != ORI_OK) return st;
+    n->vertices = (c + 1) * (r + 1) + (r + 1) / 2;
+    n->edges = c * (r + 1) + (r + 1) / 2 + 2 * r * c + 2 * r;
+    n->faces = r * (2 * c + 1);
+    return ORI_OK;
+}
+
+static ori_status counts_waterbomb(const ori_generate_def *def, int64_t r, int64_t c, ori_pattern_counts *n,
+                                   ori_error *error)
+{
+    // Big-little-big at a base centre needs the diagonals at ≥ 30° from the x axis.
+    double phi = atan2(def->height, def->width);
+    if (phi < ORI_PI / 6.0 - ORI_TOL_ANGLE_EQUAL_RAD)
+        return ori__fail_at(error, ORI_ERR_ARGUMENT, "height", ORI_NULL_INDEX,
+                            "height/width = %g is below tan 30° = 0.57735: the diagonals must make at "
+                            "least 30° with the x axis for the waterbomb assignment to fold flat",
+                            def->height / def->width);
+    int64_t centres = ((r + 1) / 2) * c + (r / 2) * (c + 1);
+    n->vertices = (2 * c + 1) * (r + 1) + centres;
+    n->edges = 2 * c * (r + 1) + r * (2 * c + 1) + centres + 4 * c * r;
+    n->faces = 6 * c * r;
+    return ORI_OK;
+}
+
+static ori_status counts_square_twist(const ori_generate_def *def, int64_t r, int64_t c, ori_pattern_counts *n,
+                                      ori_error *error)
+{
+    ori_status st = check_angle(def->angle_rad, 0.0, 0.5 * ORI_PI, false, error);
+    if (st != ORI_OK) return st;
+    if (!(def->twist_size > 0.0 && def->twist_size < 1.0))
+        return ori__fail_at(error, ORI_ERR_ARGUMENT, "twist_size", ORI_NULL_INDEX, "must be in (0, 1) (got %g)",
+                            def->twist_size);
+    n->vertices = 4 * r * c + 4 * r + 4 * c + 4;
+    n->edges = 8 * r * c + 6 * r + 6 * c + 4;
+    n->faces = 4 * r * c + 2 * r + 2 * c + 1;
+    return ORI_OK;
+}
+
+static ori_status counts_kresling(const ori_generate_def *def, int64_t r, int64_t c, ori_pattern_counts *n,
+                                  ori_error *error)
+{
+    (void)c; // the Kresling has sides, not columns
+    int64_t s = def->sides;
+    double limit = 0.5 * ORI_PI - ORI_PI / (double)def->sides;
+    ori_status st = check_angle(def->angle_rad, 0.0, limit, false, error);
+    if (st != ORI_OK) return st;
+    kresling_geom g = kresling_geometry(def);
+    if (!(g.strip_h > 0.0) || !isfinite(g.strip_h))
+        return ori__fail_at(error, ORI_ERR_ARGUMENT, "height", ORI_NULL_INDEX, "the storey is degenerate");
+    n->vertices = (s + 1) * (r + 1);
+    n->edges = s * (r + 1) + (2 * s + 1) * r;
+    n->faces = 2 * s * r;
+    return ORI_OK;
+}
+
 ori_status ori_generate_counts(const ori_generate_def *def, ori_pattern_counts *out, ori_error *error)
 {
     ORI_ASSERT(def && out && def->internal_value == ORI__DEF_COOKIE);
     ORI_ASSERT((int)def->kind >= 0 && def->kind < ORI_TESS_COUNT);
     ori_error_clear(error);
+    const tess_row *t = tess_row_of(def->kind);
     ori_status st;
     if ((st = check_grid(def->rows, "rows", 1, error)) != ORI_OK) return st;
-    if (def->kind == ORI_TESS_KRESLING) {
-        if ((st = check_grid(def->sides, "sides", 3, error)) != ORI_OK) return st;
-    } else if ((st = check_grid(def->cols, "cols", 1, error)) != ORI_OK) {
-        return st;
-    }
+    if ((t->params & ORI_GEN_SIDES) && (st = check_grid(def->sides, "sides", 3, error)) != ORI_OK) return st;
+    if ((t->params & ORI_GEN_COLS) && (st = check_grid(def->cols, "cols", 1, error)) != ORI_OK) return st;
     if ((st = check_positive(def->width, "width", error)) != ORI_OK) return st;
-    bool uses_height = def->kind != ORI_TESS_YOSHIMURA && !(def->kind == ORI_TESS_KRESLING && def->bistable_height);
+    bool uses_height = (t->params & ORI_GEN_HEIGHT) && !((t->params & ORI_GEN_BISTABLE_HEIGHT) && def->bistable_height);
     if (uses_height && (st = check_positive(def->height, "height", error)) != ORI_OK) return st;
-
-    int64_t r = def->rows, c = def->cols;
     ori_pattern_counts n = {0, 0, 0};
-    switch (def->kind) {
-    case ORI_TESS_MIURA:
-        if ((st = check_angle(def->angle_rad, 0.0, 0.5 * ORI_PI, false, error)) != ORI_OK) return st;
-        n.vertices = (r + 1) * (c + 1);
-        n.edges = c * (r + 1) + r * (c + 1);
-        n.faces = r * c;
-        break;
-    case ORI_TESS_YOSHIMURA:
-        if ((st = check_angle(def->angle_rad, 0.0, ORI_PI / 3.0, true, error)) != ORI_OK) return st;
-        n.vertices = (c + 1) * (r + 1) + (r + 1) / 2;
-        n.edges = c * (r + 1) + (r + 1) / 2 + 2 * r * c + 2 * r;
-        n.faces = r * (2 * c + 1);
-        break;
-    case ORI_TESS_WATERBOMB: {
-        // Big-little-big at a base centre needs the diagonals at ≥ 30° from the x axis.
-        double phi = atan2(def->height, def->width);
-        if (phi < ORI_PI / 6.0 - ORI_TOL_ANGLE_EQUAL_RAD)
-            return ori__fail_at(error, ORI_ERR_ARGUMENT, "height", ORI_NULL_INDEX,
-                                "height/width = %g is below tan 30° = 0.57735: the diagonals must make at "
-                                "least 30° with the x axis for the waterbomb assignment to fold flat",
-                                def->height / def->width);
-        int64_t centres = ((r + 1) / 2) * c + (r / 2) * (c + 1);
-        n.vertices = (2 * c + 1) * (r + 1) + centres;
-        n.edges = 2 * c * (r + 1) + r * (2 * c + 1) + centres + 4 * c * r;
-        n.faces = 6 * c * r;
-        break;
-    }
-    case ORI_TESS_SQUARE_TWIST:
-        if ((st = check_angle(def->angle_rad, 0.0, 0.5 * ORI_PI, false, error)) != ORI_OK) return st;
-        if (!(def->twist_size > 0.0 && def->twist_size < 1.0))
-            return ori__fail_at(error, ORI_ERR_ARGUMENT, "twist_size", ORI_NULL_INDEX,
-                                "must be in (0, 1) (got %g)", def->twist_size);
-        n.vertices = 4 * r * c + 4 * r + 4 * c + 4;
-        n.edges = 8 * r * c + 6 * r + 6 * c + 4;
-        n.faces = 4 * r * c + 2 * r + 2 * c + 1;
-        break;
-    case ORI_TESS_KRESLING: {
-        int64_t s = def->sides;
-        double limit = 0.5 * ORI_PI - ORI_PI / (double)def->sides;
-        if ((st = check_angle(def->angle_rad, 0.0, limit, false, error)) != ORI_OK) return st;
-        kresling_geom g = kresling_geometry(def);
-        if (!(g.strip_h > 0.0) || !isfinite(g.strip_h))
-            return ori__fail_at(error, ORI_ERR_ARGUMENT, "height", ORI_NULL_INDEX, "the storey is degenerate");
-        n.vertices = (s + 1) * (r + 1);
-        n.edges = s * (r + 1) + (2 * s + 1) * r;
-        n.faces = 2 * s * r;
-        break;
-    }
-    case ORI_TESS_COUNT: break;
-    }
+    if ((st = t->counts(def, def->rows, def->cols, &n, error)) != ORI_OK) return st;
     if (n.edges > ORI_GENERATE_MAX_EDGES)
         return ori__fail(error, ORI_ERR_LIMIT, "the pattern would have %lld edges; the limit is %lld",
                          (long long)n.edges, (long long)ORI_GENERATE_MAX_EDGES);
@@ -223,10 +244,10 @@ ori_status ori_generate_counts(const ori_generate_def *def, ori_pattern_counts *
 
 // --- writing the arrays ----------------------------------------------------------------------
 
-typedef struct gen {
+struct gen {
     ori_pattern *p;
     ori_edge_class *cls; // may be NULL
-} gen;
+};
 
 static inline void put_vertex(ori_pattern *p, int v, double x, double y)
 {
@@ -675,13 +696,26 @@ static void gen_kresling(gen *g, const ori_generate_def *def)
 
 // --- entry point -----------------------------------------------------------------------------
 
-static int64_t face_vertex_total(const ori_generate_def *def, const ori_pattern_counts *n)
+// --- the table ---------------------------------------------------------------------------------
+
+#define GRID (ORI_GEN_ROWS | ORI_GEN_COLS | ORI_GEN_WIDTH)
+static const tess_row tess_table[ORI_TESS_COUNT] = {
+    [ORI_TESS_MIURA] = {"miura", GRID | ORI_GEN_ANGLE | ORI_GEN_HEIGHT, 4, ORI_PI / 3.0, 4, counts_miura, gen_miura},
+    [ORI_TESS_YOSHIMURA] = {"yoshimura", GRID | ORI_GEN_ANGLE, 4, ORI_PI / 6.0, 3, counts_yoshimura, gen_yoshimura},
+    [ORI_TESS_WATERBOMB] = {"waterbomb", GRID | ORI_GEN_HEIGHT, 4, 0.0, 3, counts_waterbomb, gen_waterbomb},
+    [ORI_TESS_SQUARE_TWIST] = {"square-twist", GRID | ORI_GEN_ANGLE | ORI_GEN_HEIGHT | ORI_GEN_TWIST_SIZE, 4, ORI_PI / 4.0,
+                               4, counts_square_twist, gen_square_twist},
+    [ORI_TESS_KRESLING] = {"kresling",
+                           ORI_GEN_ROWS | ORI_GEN_SIDES | ORI_GEN_WIDTH | ORI_GEN_ANGLE | ORI_GEN_HEIGHT | ORI_GEN_BISTABLE_HEIGHT,
+                           3, ORI_PI / 6.0, 3, counts_kresling, gen_kresling},
+};
+
+static const tess_row *tess_row_of(ori_tessellation kind) { return &tess_table[kind]; }
+
+unsigned ori_tessellation_params(ori_tessellation kind)
 {
-    switch (def->kind) {
-    case ORI_TESS_MIURA:
-    case ORI_TESS_SQUARE_TWIST: return 4 * n->faces;
-    default: return 3 * n->faces;
-    }
+    ORI_ASSERT((int)kind >= 0 && kind < ORI_TESS_COUNT);
+    return tess_table[kind].params;
 }
 
 ori_status ori_generate(const ori_generate_def *def, ori_pattern **out, ori_edge_class **classes, ori_error *error)
@@ -697,20 +731,14 @@ ori_status ori_generate(const ori_generate_def *def, ori_pattern **out, ori_edge
     pdef.vertex_capacity = (int)n.vertices;
     pdef.edge_capacity = (int)n.edges;
     ori_pattern *p = ori_pattern_create(&pdef);
-    ori__pattern_reserve_faces(p, (int)n.faces, (int)face_vertex_total(def, &n));
+    const tess_row *t = tess_row_of(def->kind);
+    ori__pattern_reserve_faces(p, (int)n.faces, (int)(t->face_size * n.faces));
     p->vertex_count = (int)n.vertices;
     p->has_fold_angles = true;
     gen g = {p, classes ? ori__alloc(sizeof(ori_edge_class) * (size_t)n.edges) : NULL};
-    switch (def->kind) {
-    case ORI_TESS_MIURA: gen_miura(&g, def); break;
-    case ORI_TESS_YOSHIMURA: gen_yoshimura(&g, def); break;
-    case ORI_TESS_WATERBOMB: gen_waterbomb(&g, def); break;
-    case ORI_TESS_SQUARE_TWIST: gen_square_twist(&g, def); break;
-    case ORI_TESS_KRESLING: gen_kresling(&g, def); break;
-    case ORI_TESS_COUNT: break;
-    }
+    t->write(&g, def);
     ORI_ASSERT(p->edge_count == n.edges && p->face_count == n.faces);
-    ORI_ASSERT(p->face_vertex_count == face_vertex_total(def, &n));
+    ORI_ASSERT(p->face_vertex_count == t->face_size * n.faces);
 
     // The patterns are planar by construction (tests/test_generate.c runs the full planarity
     // check on every generator), so the build checks indices, lengths, duplicate edges and that
