@@ -71,6 +71,53 @@ Test(generate, names_round_trip)
 
 // --- Miura-ori -----------------------------------------------------------------------------
 
+// The table's parameter sets say what each tessellation reads: a field outside its set changes
+// nothing (the same vertices and edges), and a field in it (set to another valid value) changes
+// the pattern.
+static bool same_pattern(const ori_pattern *a, const ori_pattern *b)
+{
+    if (ori_pattern_vertex_count(a) != ori_pattern_vertex_count(b) || ori_pattern_edge_count(a) != ori_pattern_edge_count(b))
+        return false;
+    for (int v = 0; v < ori_pattern_vertex_count(a); ++v) {
+        ori_v3 p = ori_pattern_vertex(a, v), q = ori_pattern_vertex(b, v);
+        if (p.x != q.x || p.y != q.y || p.z != q.z) return false;
+    }
+    for (int e = 0; e < ori_pattern_edge_count(a); ++e) {
+        ori_edge x = ori_pattern_edge(a, e), y = ori_pattern_edge(b, e);
+        if (x.v[0] != y.v[0] || x.v[1] != y.v[1] || x.assignment != y.assignment) return false;
+    }
+    return true;
+}
+
+Test(generate, the_table_says_which_parameters_each_tessellation_reads)
+{
+    for (int k = 0; k < ORI_TESS_COUNT; ++k) {
+        ori_tessellation kind = (ori_tessellation)k;
+        unsigned reads = ori_tessellation_params(kind);
+        cr_assert(reads & ORI_GEN_ROWS && reads & ORI_GEN_WIDTH, "%s", ori_tessellation_name(kind));
+        cr_assert_neq((reads & ORI_GEN_COLS) != 0, (reads & ORI_GEN_SIDES) != 0, "%s: columns or sides", ori_tessellation_name(kind));
+        ori_generate_def base = ori_default_generate_def(kind);
+        cr_assert_eq(base.bistable_height, (reads & ORI_GEN_BISTABLE_HEIGHT) != 0);
+        if (reads & ORI_GEN_BISTABLE_HEIGHT) base.bistable_height = false; // so that height is read
+        ori_pattern *p0 = gen_ok(&base, NULL);
+        for (unsigned bit = ORI_GEN_COLS; bit <= ORI_GEN_TWIST_SIZE; bit <<= 1) {
+            ori_generate_def d = base;
+            if (bit == ORI_GEN_COLS) d.cols = 3;
+            if (bit == ORI_GEN_SIDES) d.sides = 5;
+            if (bit == ORI_GEN_ANGLE) d.angle_rad *= 0.9;
+            if (bit == ORI_GEN_WIDTH) d.width = 1.3;
+            if (bit == ORI_GEN_HEIGHT) d.height = 1.2;
+            if (bit == ORI_GEN_TWIST_SIZE) d.twist_size = 0.4;
+            ori_pattern *p1 = gen_ok(&d, NULL);
+            bool same = same_pattern(p0, p1);
+            cr_assert_eq(!same, (reads & bit) != 0, "%s: parameter bit %u %s", ori_tessellation_name(kind), bit,
+                         same ? "changes nothing though the table says it is read" : "changes the pattern though the table says it is not read");
+            ori_pattern_destroy(p1);
+        }
+        ori_pattern_destroy(p0);
+    }
+}
+
 Test(generate, miura_counts_sectors_and_classes)
 {
     const int sizes[][2] = {{1, 1}, {2, 3}, {5, 4}, {7, 7}};
