@@ -16,9 +16,9 @@
 // equations: y = W⁻¹Aᵀλ with (A W⁻¹ Aᵀ + δI) λ = A_x (x̂_k − x̂₀) − c_k, factored by CHOLMOD
 // (AAᵀ of the column-scaled A, simplicial LDLᵀ). The tiny w makes the rates cheap, so the
 // coordinates move as little as the conditions allow; δ handles dependent (consistent) rows.
-#include <cholmod.h>
 #include <orikin/regularize.h>
 
+#include "../core/suitesparse.h"
 #include "flat_internal.h"
 
 #include "../pattern/pattern_internal.h"
@@ -316,11 +316,6 @@ static bool mode_of(const reg *g, reg_vertex *V)
     return true;
 }
 
-static void *ss_malloc(size_t n) { return ori__alloc(n ? n : 1); }
-static void *ss_calloc(size_t n, size_t s) { return ori__calloc(n ? n : 1, s ? s : 1); }
-static void *ss_realloc(void *p, size_t n) { return ori__realloc(p, n ? n : 1); }
-static void ss_free(void *p) { ori__free(p); }
-
 // Max-norm of the equations: Kawasaki rows in radians, rigid rows scaled (rates / R).
 static void defects(const reg *g, double *kaw, double *rig)
 {
@@ -486,13 +481,8 @@ static bool report_progress(reg_budget *b, double worst)
 static int solve(reg *g, int max_iterations, double kaw_tol, double rig_tol, bool *converged)
 {
     cholmod_common cm;
-    SuiteSparse_config.malloc_func = ss_malloc;
-    SuiteSparse_config.calloc_func = ss_calloc;
-    SuiteSparse_config.realloc_func = ss_realloc;
-    SuiteSparse_config.free_func = ss_free;
-    cholmod_start(&cm);
-    cm.print = 0;
-    cm.error_handler = NULL;
+    ori__cholmod_start(&cm);
+    cm.quick_return_if_not_posdef = 0; // as before: a failed factorization is told by its status
     cm.supernodal = CHOLMOD_SIMPLICIAL;
     cholmod_factor *L = NULL;
     int it = 0;

@@ -5,44 +5,12 @@
 // normal matrix of a loop-closure Jacobian is cheap to accumulate loop by loop. The
 // fill-reducing ordering (AMD) is analysed once per pattern; numeric factorizations reuse it.
 //
-// CHOLMOD's memory goes through the library's counted allocator (SuiteSparse_config is a
-// global of SuiteSparse 5: every solve sets the same functions again), and it never prints
-// (Common->print = 0).
-#include <cholmod.h>
+// CHOLMOD starts as everywhere in the library (src/core/suitesparse.h): memory through the
+// counted allocator, no printing, its OpenMP loops serial inside our factorizations and solves.
 #include <string.h>
 
+#include "../core/suitesparse.h"
 #include "kinematics_internal.h"
-
-#ifdef ORI_HAVE_GOMP
-// The OpenMP runtime CHOLMOD is built with (declared here: no -fopenmp for the library itself).
-int omp_get_max_active_levels(void);
-void omp_set_max_active_levels(int levels);
-#endif
-
-// CHOLMOD's OpenMP loops run serially inside our calls. Debian's CHOLMOD (SuiteSparse 5) zeroes and
-// assembles supernodes in parallel loops of a fixed 4 threads, whose start-up and spinning cost
-// more than the loops on this size of problem: a 100 × 100 Miura-ori's compliant static solve
-// takes half the time with them serial (docs/compliant.md, section 6). The setting is the
-// process's: it is restored after the call.
-static int serial_begin(void)
-{
-#ifdef ORI_HAVE_GOMP
-    int levels = omp_get_max_active_levels();
-    omp_set_max_active_levels(0);
-    return levels;
-#else
-    return 0;
-#endif
-}
-
-static void serial_end(int levels)
-{
-#ifdef ORI_HAVE_GOMP
-    omp_set_max_active_levels(levels);
-#else
-    (void)levels;
-#endif
-}
 
 // Flops per factor entry above which the factorization is supernodal (see start()).
 #define ORI_KIN_SUPERNODAL_SWITCH 100.0
@@ -57,27 +25,10 @@ struct kin_sls {
     int factorizations;
 };
 
-static void *ss_malloc(size_t n) { return ori__alloc(n ? n : 1); }
-static void *ss_calloc(size_t n, size_t s) { return ori__calloc(n ? n : 1, s ? s : 1); }
-static void *ss_realloc(void *p, size_t n) { return ori__realloc(p, n ? n : 1); }
-static void ss_free(void *p) { ori__free(p); }
-
-static void route_memory(void)
-{
-    SuiteSparse_config.malloc_func = ss_malloc;
-    SuiteSparse_config.calloc_func = ss_calloc;
-    SuiteSparse_config.realloc_func = ss_realloc;
-    SuiteSparse_config.free_func = ss_free;
-}
-
 static kin_sls *start(void)
 {
-    route_memory();
     kin_sls *s = ori__calloc(1, sizeof *s);
-    cholmod_start(&s->cm);
-    s->cm.print = 0;
-    s->cm.error_handler = NULL;
-    s->cm.quick_return_if_not_posdef = 1;
+    ori__cholmod_start(&s->cm);
     // Simplicial LDLᵀ up to ORI_KIN_SUPERNODAL_SWITCH flops per factor entry (AMD's estimate at
     // analysis), supernodal LLᵀ (BLAS on dense blocks) above. On loop-closure Jacobians of
     // sheet-like patterns the flops per entry grow with the size (nested-dissection fill):
@@ -119,7 +70,7 @@ kin_sls *ori__sls_create_sym(int n, const int *colptr, const int *rowind)
 void ori__sls_destroy(kin_sls *s)
 {
     if (!s) return;
-    route_memory();
+    ori__suitesparse_route_memory();
     cholmod_free_factor(&s->L, &s->cm);
     cholmod_free_sparse(&s->at, &s->cm);
     cholmod_free_dense(&s->b, &s->cm);
@@ -141,13 +92,13 @@ void ori__sls_clear_values(kin_sls *s)
 
 bool ori__sls_factor(kin_sls *s, double lambda)
 {
-    route_memory();
+    ori__suitesparse_route_memory();
     if (!s->L) return false;
     double beta[2] = {lambda, 0.0};
     s->factorizations++;
-    int levels = serial_begin();
+    int levels = ori__suitesparse_serial_begin();
     int ok = cholmod_factorize_p(s->at, beta, NULL, 0, s->L, &s->cm);
-    serial_end(levels);
+    ori__suitesparse_serial_end(levels);
     s->factored = ok && s->cm.status == CHOLMOD_OK && s->L->minor == s->L->n;
     return s->factored;
 }
@@ -155,12 +106,12 @@ bool ori__sls_factor(kin_sls *s, double lambda)
 bool ori__sls_solve(kin_sls *s, const double *rhs, double *out)
 {
     if (!s->factored) return false;
-    route_memory();
+    ori__suitesparse_route_memory();
     double *b = s->b->x;
     for (int k = 0; k < s->n; ++k) b[k] = rhs[k];
-    int levels = serial_begin();
+    int levels = ori__suitesparse_serial_begin();
     int ok = cholmod_solve2(CHOLMOD_A, s->L, s->b, NULL, &s->x, NULL, &s->y, &s->e, &s->cm);
-    serial_end(levels);
+    ori__suitesparse_serial_end(levels);
     if (!ok) return false;
     const double *x = s->x->x;
     for (int k = 0; k < s->n; ++k) {
@@ -173,7 +124,7 @@ bool ori__sls_solve(kin_sls *s, const double *rhs, double *out)
 bool ori__sls_solve_many(kin_sls *s, int k, const double *rhs, double *out)
 {
     if (!s->factored) return false;
-    route_memory();
+    ori__suitesparse_route_memory();
     cholmod_dense *b = cholmod_allocate_dense((size_t)s->n, (size_t)k, (size_t)s->n, CHOLMOD_REAL, &s->cm);
     if (!b) return false;
     size_t total = (size_t)s->n * (size_t)k;
@@ -214,7 +165,7 @@ void ori__sls_mult(const kin_sls *s, const double *v, double *out)
 double ori__sls_rcond(kin_sls *s)
 {
     if (!s->factored) return 0.0;
-    route_memory();
+    ori__suitesparse_route_memory();
     return cholmod_rcond(s->L, &s->cm);
 }
 

@@ -2,10 +2,10 @@
 // for small systems, CHOLMOD's simplicial LDLᵀ for large sparse ones with the fill-reducing
 // ordering analysed once per pattern. CHOLMOD's memory goes through the library's counted
 // allocator and it never prints.
-#include <cholmod.h>
 #include <lapacke.h>
 #include <stdlib.h>
 
+#include "../core/suitesparse.h"
 #include "mechanics_internal.h"
 
 struct mech_spd {
@@ -18,19 +18,6 @@ struct mech_spd {
     cholmod_factor *L;
     cholmod_dense *b, *x, *y, *e;
 };
-
-static void *ss_malloc(size_t n) { return ori__alloc(n ? n : 1); }
-static void *ss_calloc(size_t n, size_t s) { return ori__calloc(n ? n : 1, s ? s : 1); }
-static void *ss_realloc(void *p, size_t n) { return ori__realloc(p, n ? n : 1); }
-static void ss_free(void *p) { ori__free(p); }
-
-static void route_memory(void)
-{
-    SuiteSparse_config.malloc_func = ss_malloc;
-    SuiteSparse_config.calloc_func = ss_calloc;
-    SuiteSparse_config.realloc_func = ss_realloc;
-    SuiteSparse_config.free_func = ss_free;
-}
 
 static int cmp_int(const void *a, const void *b)
 {
@@ -78,11 +65,7 @@ mech_spd *ori__spd_create(int n, int pairs, const int *ii, const int *jj)
             if (k == 0 || col[k] != col[k - 1]) rows[nnz++] = col[k];
     }
     p2[n] = nnz;
-    route_memory();
-    cholmod_start(&s->cm);
-    s->cm.print = 0;
-    s->cm.error_handler = NULL;
-    s->cm.quick_return_if_not_posdef = 1;
+    ori__cholmod_start(&s->cm);
     s->cm.supernodal = CHOLMOD_SIMPLICIAL;
     s->A = cholmod_allocate_sparse((size_t)n, (size_t)n, (size_t)(nnz > 0 ? nnz : 1), 1, 1, 1, CHOLMOD_REAL, &s->cm);
     int *cp = s->A->p, *ri = s->A->i;
@@ -102,7 +85,7 @@ void ori__spd_destroy(mech_spd *s)
 {
     if (!s) return;
     if (!s->dense) {
-        route_memory();
+        ori__suitesparse_route_memory();
         cholmod_free_factor(&s->L, &s->cm);
         cholmod_free_sparse(&s->A, &s->cm);
         cholmod_free_dense(&s->b, &s->cm);
@@ -156,7 +139,7 @@ bool ori__spd_factor(mech_spd *s)
         s->factored = s->n == 0 || LAPACKE_dpotrf(LAPACK_COL_MAJOR, 'U', s->n, s->lu, s->n) == 0;
         return s->factored;
     }
-    route_memory();
+    ori__suitesparse_route_memory();
     int ok = cholmod_factorize(s->A, s->L, &s->cm);
     s->factored = ok && s->cm.status == CHOLMOD_OK && s->L->minor == s->L->n;
     return s->factored;
@@ -171,7 +154,7 @@ bool ori__spd_solve(mech_spd *s, const double *b, double *x)
         if (n == 0) return true;
         if (LAPACKE_dpotrs(LAPACK_COL_MAJOR, 'U', n, 1, s->lu, n, x, n) != 0) return false;
     } else {
-        route_memory();
+        ori__suitesparse_route_memory();
         double *bb = s->b->x;
         for (int k = 0; k < n; ++k) bb[k] = b[k];
         if (!cholmod_solve2(CHOLMOD_A, s->L, s->b, NULL, &s->x, NULL, &s->y, &s->e, &s->cm)) return false;

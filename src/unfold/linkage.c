@@ -21,7 +21,7 @@
 #include <orikin/unfold.h>
 
 #include "../core/core_internal.h"
-#include <klu.h>
+#include "../core/suitesparse.h"
 
 #include "unfold_internal.h"
 
@@ -467,7 +467,7 @@ static void sys_create(const lk *L, lk_sys *S, int kcol)
     S->colptr[r++] = nz, S->rowind[nz++] = 2 * c1, S->rowind[nz++] = 2 * c1 + 1;
     S->colptr[r] = nz;
     S->x = ori__alloc(((size_t)nz + 1) * sizeof *S->x);
-    klu_defaults(&S->kc);
+    ori__klu_start(&S->kc);
     S->sym = klu_analyze(S->rows, S->colptr, S->rowind, &S->kc);
     S->num = NULL;
 }
