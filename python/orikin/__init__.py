@@ -14,7 +14,8 @@ orikin.InputError (bad input: the CLI's one-line message and the FOLD index), or
 the guide.
 """
 
-from ._api import (Actuation, Cancelled, CheckReport, Collision, CollisionEvent, CompliantFold, Contact, DofReport, Error,
+from ._api import (Actuation, Cancelled, CheckReport, Collision, CollisionEvent, CompliantFold, CompliantSimulation,
+                   Contact, DofReport, Error,
                    InputError, Layers, LayerState, LinkageMotion, Motion, Net, Pattern, Record, Regularization,
                    Report, Simulation, SolveError, State, StepResult, VertexReport, Violation, axiom, generate, load,
                    unfold, unfold_linkage)
@@ -23,7 +24,8 @@ from .design import DesignEnv, default_reward
 
 __version__ = version()
 
-__all__ = ["Actuation", "Cancelled", "CheckReport", "Collision", "CollisionEvent", "CompliantFold", "Contact", "DesignEnv",
+__all__ = ["Actuation", "Cancelled", "CheckReport", "Collision", "CollisionEvent", "CompliantFold", "CompliantSimulation",
+           "Contact", "DesignEnv",
            "DofReport", "Error", "InputError", "LayerState", "Layers", "LinkageMotion", "Motion", "Net", "Pattern",
            "Record", "Regularization", "Report", "Simulation", "SolveError", "State", "StepResult", "VertexReport",
            "Violation", "axiom", "default_reward", "generate", "load", "unfold", "unfold_linkage", "version"]

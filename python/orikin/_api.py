@@ -133,6 +133,13 @@ class Simulation(Report):
     currents stop), reached_target, time_to_target_s, peak_angular_velocity, energy_drift, ..."""
 
 
+class CompliantSimulation(Report):
+    """The device on compliant panels (`orikin simulate --model compliant`): loaded_rad (fold
+    angles under the full current), plastic_rotation_rad, currents (signed, A), max_strain,
+    latched_rad (the current off), current_fractions and angles (one row per load step, the
+    first current_on_frames with the current ramping up, then down), wires, vertices."""
+
+
 class Net(Report):
     """An unfolding (`orikin unfold`): pattern (the net as a crease pattern), pieces, faces,
     overlaps, refolded, max_refold_error, fold_order, distinct_nets, cuts, developed,
@@ -688,19 +695,45 @@ class Pattern:
             record.collide(clearance)
         return record
 
-    def simulate(self, *, fix=None, current: float = 0.0, duration: float, start=None, targets=None,
+    def simulate(self, *, fix=None, current: float = 0.0, duration: Optional[float] = None, start=None, targets=None,
                  schedule=None, dt: Optional[float] = None, pulse: Optional[float] = None, frames: int = 101,
                  stops: bool = True, settle: bool = True, current_off_at_target: bool = True,
                  auto_polarity: bool = True, field=None, current_limit=None, gravity=None, damping=None,
-                 meters_per_unit=None, materials=None, progress: Progress = None) -> Simulation:
+                 meters_per_unit=None, materials=None, progress: Progress = None,
+                 model: str = "rigid") -> Union[Simulation, "CompliantSimulation"]:
         """Folding dynamics with closed loops (`orikin simulate`): panels with mass, hinge
         moments, Lorentz actuation (current in A through every wire), gravity and damping,
         integrated for duration seconds from the flat sheet (or start: a State). The design comes
         from the FOLD fields (edges_orikin:hinge, faces_orikin:panel, orikin:actuation); field,
         current_limit, gravity, damping and meters_per_unit override them. schedule: the field
         schedule ([{edge, from_rad, field, fold}], e.g. Motion.actuate().schedule, which is what
-        the CLI optimises first); None: the file's. targets in degrees (None: +-180 by assignment)."""
+        the CLI optimises first); None: the file's. targets in degrees (None: +-180 by assignment).
+
+        model='compliant' (the CLI's --model compliant; docs/compliant.md): the panels bend and
+        stretch in the bar-and-hinge model with the file's panels, layered hinges and wires, and
+        the equilibria are followed as the current ramps from 0 to current and off again. It
+        takes fix, current, auto_polarity and the design overrides (field, current_limit, gravity,
+        meters_per_unit, materials) and returns a CompliantSimulation; the time options
+        (duration, dt, pulse, frames, stops, settle, damping, start, targets, schedule) are the
+        rigid model's."""
+        if model not in ("rigid", "compliant"):
+            raise _usage(f"--model is rigid or compliant, got '{model}'", "--model")
         fix_index = self.center_face() if fix is None else self.face(fix, "--fix")
+        if model == "compliant":
+            timed = (("--duration", duration is not None), ("--dt", dt is not None), ("--pulse", pulse is not None),
+                     ("--frames", frames != 101), ("--no-stops", not stops), ("settle", not settle),
+                     ("current_off_at_target", not current_off_at_target), ("--damping", damping is not None),
+                     ("--frame", start is not None), ("targets", targets is not None), ("schedule", schedule is not None))
+            for name, given in timed:
+                if given:
+                    raise _usage("--model compliant follows the equilibria as the current ramps up and off: "
+                                 f"{name} is the rigid model's", name)
+            d = _c.simulate_compliant(self._p, fix_index, float(current), bool(auto_polarity), field=field,
+                                      current_limit=current_limit, gravity=gravity, meters_per_unit=meters_per_unit,
+                                      materials=None if materials is None else os.fspath(materials))
+            return CompliantSimulation(d)
+        if duration is None:
+            raise _usage("missing --duration S", "--duration")
         start_angles, coords = (None, None)
         if start is not None:
             start_angles, coords = self._start(0, start)

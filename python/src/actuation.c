@@ -5,6 +5,8 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 // The overrides of the design the CLI's actuation options give (act_load), None = the file's.
 typedef struct design_opts {
@@ -419,8 +421,102 @@ done:
     return result;
 }
 
+// simulate_compliant(pattern, fix, current, auto_polarity, **design): the device on compliant
+// panels, as `orikin simulate --model compliant`: the equilibria as the current ramps from 0 to
+// current and off again. Angles in radians.
+static PyObject *py_simulate_compliant(PyObject *mod, PyObject *args, PyObject *kw)
+{
+    (void)mod;
+    static char *kwlist[] = {"pattern", "fix", "current", "auto_polarity", DESIGN_KW, NULL};
+    PyObject *pobj;
+    int fix, auto_polarity = 1;
+    double current = 0.0;
+    design_opts o = {NULL, NULL, NULL, NULL, NULL, NULL};
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O!i|dpOOOOOz", kwlist, &ori_py_PatternType, &pobj, &fix, &current,
+                                     &auto_polarity, DESIGN_ARGS(o)))
+        return NULL;
+    ori_py_pattern *pat = (ori_py_pattern *)pobj;
+    const char *src = ori_py_pattern_source(pat);
+    if (!ori_py_check_face(pat, "--fix", fix)) return NULL;
+    ori_materials *mats = NULL;
+    ori_design *design = make_design(pat, &o, &mats);
+    if (!design) return NULL;
+    int E = ori_pattern_edge_count(pat->p);
+    double *zeros = calloc((size_t)E + 1, sizeof(double));
+    ori_actuation act = ori_design_actuation(design);
+    ori_compliant_def d = ori_compliant_physical_def();
+    d.design = design;
+    d.fixed_face = fix;
+    d.field_t = act.schedule_count > 0 ? act.schedule[0].field_t : act.field_t;
+    d.current_a = current;
+    d.auto_polarity = auto_polarity;
+    d.gravity = -act.gravity_m_s2.z;
+    d.target_angles_rad = zeros; // the hinges are made flat: the wires fold them
+    d.keep_frames = true;
+    ori_compliant *c = NULL;
+    ori_error err;
+    PyObject *result = NULL;
+    ori_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = ori_compliant_create(pat->p, &d, &c, &err);
+    if (st == ORI_OK) st = ori_compliant_solve_static(c, &err);
+    Py_END_ALLOW_THREADS
+    if (st != ORI_OK) {
+        ori_py_raise(src, &err);
+        goto done;
+    }
+    double *loaded = malloc(sizeof(double) * ((size_t)E + 1)), *plastic = malloc(sizeof(double) * ((size_t)E + 1));
+    double *currents = malloc(sizeof(double) * ((size_t)E + 1)), *latched = malloc(sizeof(double) * ((size_t)E + 1));
+    for (int e = 0; e < E; ++e) {
+        loaded[e] = ori_compliant_fold_angle(c, e);
+        plastic[e] = ori_compliant_plastic_rotation(c, e);
+        currents[e] = ori_compliant_wire_current(c, e);
+    }
+    double strain = ori_compliant_max_strain(c);
+    int load_frames = ori_compliant_frame_count(c);
+    Py_BEGIN_ALLOW_THREADS
+    st = ori_compliant_set_fraction(c, 0.0, &err);
+    if (st == ORI_OK) st = ori_compliant_solve_static(c, &err);
+    Py_END_ALLOW_THREADS
+    if (st != ORI_OK) {
+        ori_py_raise(src, &err);
+    } else {
+        for (int e = 0; e < E; ++e) latched[e] = ori_compliant_fold_angle(c, e);
+        int F = ori_compliant_frame_count(c);
+        double *fr = malloc(sizeof(double) * (size_t)F), *ang = malloc(sizeof(double) * (size_t)F * (size_t)(E + 1));
+        for (int k = 0; k < F; ++k) {
+            fr[k] = ori_compliant_frame_fraction(c, k);
+            memcpy(ang + (size_t)k * (size_t)E, ori_compliant_frame_angles(c, k), sizeof(double) * (size_t)E);
+        }
+        npy_intp dims[2] = {F, E};
+        PyObject *angles = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+        if (angles) memcpy(PyArray_DATA((PyArrayObject *)angles), ang, sizeof(double) * (size_t)F * (size_t)E);
+        if (angles)
+            result = ori_py_dict("loaded_rad", ori_py_doubles(loaded, E), "plastic_rotation_rad", ori_py_doubles(plastic, E),
+                                 "currents", ori_py_doubles(currents, E), "max_strain", PyFloat_FromDouble(strain),
+                                 "latched_rad", ori_py_doubles(latched, E), "current_fractions", ori_py_doubles(fr, F),
+                                 "current_on_frames", PyLong_FromLong(load_frames), "angles", angles, "wires",
+                                 PyLong_FromLong(ori_compliant_wire_count(c)), "vertices",
+                                 PyLong_FromLong(ori_compliant_vertex_count(c)), NULL);
+        free(fr);
+        free(ang);
+    }
+    free(loaded);
+    free(plastic);
+    free(currents);
+    free(latched);
+done:
+    ori_compliant_destroy(c);
+    free(zeros);
+    ori_design_destroy(design);
+    ori_materials_destroy(mats);
+    return result;
+}
+
 #define KW (PyCFunction)(void (*)(void))
 PyMethodDef ori_py_actuation_functions[] = {
+    {"simulate_compliant", KW py_simulate_compliant, METH_VARARGS | METH_KEYWORDS,
+     "The device on compliant panels: equilibria as the current ramps up and off."},
     {"actuate", KW py_actuate, METH_VARARGS | METH_KEYWORDS, "Size hinges and actuation along a fold or sequence."},
     {"simulate", KW py_simulate, METH_VARARGS | METH_KEYWORDS, "Folding dynamics of a pattern with a design."},
     {NULL, NULL, 0, NULL},

@@ -85,3 +85,26 @@ def test_the_flap_folds_in_time_and_latches_where_the_cli_says():
 def test_actuation_needs_a_design():
     with pytest.raises(orikin.InputError):
         open_corner().fold(fix=4, drive=12, lock=[11], to=90).actuate()
+
+
+def test_the_flap_on_compliant_panels_is_the_clis():
+    # simulate --model compliant from Python: the same equilibria under 20 mA (gravity on, as
+    # the file asks), the same plastic rotation and latched angle
+    flap = orikin.Pattern.load(repo("examples/patterns/thesis-flap.fold"))
+    sim = flap.simulate(model="compliant", fix=0, current=0.02)
+    j = json.loads(cli("simulate examples/patterns/thesis-flap.fold --model compliant --fix 0 --current 0.02 --json").stdout)
+    assert isinstance(sim, orikin.CompliantSimulation) and sim.wires == j["wires"] == 1
+    for e in range(7):
+        assert math.degrees(sim.loaded_rad[e]) == pytest.approx(j["loaded"]["angles_deg"][e], abs=1e-9)
+        assert math.degrees(sim.plastic_rotation_rad[e]) == pytest.approx(j["loaded"]["plastic_rotation_deg"][e], abs=1e-9)
+        assert math.degrees(sim.latched_rad[e]) == pytest.approx(j["latched_angle_deg"][e], abs=1e-9)
+    assert sim.currents[0] == pytest.approx(j["loaded"]["currents"][0], rel=1e-15)
+    assert sim.max_strain == pytest.approx(j["loaded"]["max_strain"], rel=1e-12)
+    assert 60 < math.degrees(sim.loaded_rad[0]) < 90 and math.degrees(sim.latched_rad[0]) < math.degrees(sim.loaded_rad[0])
+    assert sim.angles.shape == (len(j["frames"]), 7) and len(sim.current_fractions) == len(j["frames"])
+    with pytest.raises(orikin.InputError, match="--duration is the rigid model's"):
+        flap.simulate(model="compliant", fix=0, current=0.02, duration=0.01)
+    with pytest.raises(orikin.InputError, match="--model is rigid or compliant"):
+        flap.simulate(model="springy", fix=0, current=0.02)
+    with pytest.raises(orikin.InputError, match="missing --duration"):
+        flap.simulate(fix=0, current=0.02)
