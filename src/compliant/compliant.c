@@ -1381,6 +1381,29 @@ static void restore(ori_compliant *c, const double *x, const double *ref)
     for (int h = 0; h < c->nhinge; ++h) ori__cmp_set_ref(&c->hinges[h], ref[h]);
 }
 
+// The tangent of the equilibrium path at c->x (fraction f): H dx/dt = −∂∇E/∂t, the load
+// parameter t moving the fraction by df and the gravity factor by dg per unit. ∇E is linear in
+// both (the rest angles, the wires' current and gravity), so ∂∇E/∂t is the difference of two
+// gradients; H is the last factorization (Newton's, one iterate before this equilibrium). False
+// when it cannot be solved (the secant predicts instead).
+static bool tangent_of(ori_compliant *c, double f, double df, double dg, double *ga, double *gb, double *rhs, double *sol,
+                       double *tangent)
+{
+    if (c->ndof == 0) return false;
+    double keep = c->gravity_factor;
+    ori__cmp_energy(c, c->x, f, ga);
+    c->gravity_factor = keep + dg;
+    ori__cmp_energy(c, c->x, f + df, gb);
+    c->gravity_factor = keep;
+    for (int v = 0; v < c->nv; ++v)
+        if (c->dof[v] >= 0)
+            for (int q = 0; q < 3; ++q) rhs[c->dof[v] + q] = -(gb[3 * v + q] - ga[3 * v + q]);
+    if (!ori__sls_solve(c->sls, rhs, sol)) return false;
+    for (int v = 0; v < c->nv; ++v)
+        for (int q = 0; q < 3; ++q) tangent[3 * v + q] = c->dof[v] >= 0 ? sol[c->dof[v] + q] : 0.0;
+    return true;
+}
+
 ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
 {
     ORI_ASSERT(c);
@@ -1403,14 +1426,18 @@ ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
     double tol = fmax(c->def.tolerance * c->load_scale, c->grad_floor);
     ori_status st = ORI_OK;
     double t = 0.0, dt = dt0, dt_prev = 0.0;
-    bool have_prev = false;
+    bool have_prev = false, have_tangent = false;
+    double *tangent = ori__calloc((size_t)n3, sizeof(double));
     while (t < 1.0) {
         double tn = fmin(1.0, t + dt);
         double f = f0 + (f1 - f0) * tn, gf = g0 + (1.0 - g0) * tn;
         memcpy(xs, c->x, sizeof(double) * (size_t)n3);
         for (int h = 0; h < c->nhinge; ++h) refs[h] = c->hinges[h].ref;
-        // secant predictor from the last two equilibria
-        if (have_prev && dt_prev > 0.0) {
+        // predictor: the tangent of the path at the last equilibrium, else the secant of the last two
+        if (have_tangent) {
+            for (int k = 0; k < 3 * c->nv; ++k) c->x[k] += (tn - t) * tangent[k];
+            accept_angles(c);
+        } else if (have_prev && dt_prev > 0.0) {
             double r = (tn - t) / dt_prev;
             for (int k = 0; k < 3 * c->nv; ++k) c->x[k] += r * (xs[k] - xprev[k]);
             accept_angles(c);
@@ -1424,6 +1451,7 @@ ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
             t = tn;
             c->fraction = f;
             ori__cmp_commit_fibres(c, c->x, f);
+            have_tangent = tangent_of(c, f, f1 - f0, 1.0 - g0, g, gt, rhs, sol, tangent);
             store_frame(c, !c->def.keep_frames);
             check_contacts(c, c->load_steps, f);
             dt = fmin(dt0, dt * 1.5);
@@ -1450,6 +1478,7 @@ ori_status ori_compliant_solve_static(ori_compliant *c, ori_error *error)
     ori__free(xs);
     ori__free(xprev);
     ori__free(refs);
+    ori__free(tangent);
     return st;
 }
 
