@@ -440,7 +440,10 @@ static PyObject *py_simulate_compliant(PyObject *mod, PyObject *args, PyObject *
     if (!ori_py_check_face(pat, "--fix", fix)) return NULL;
     ori_materials *mats = NULL;
     ori_design *design = make_design(pat, &o, &mats);
-    if (!design) return NULL;
+    if (!design) {
+        ori_materials_destroy(mats); // make_design leaves the table to its caller (found by fuzz_python)
+        return NULL;
+    }
     int E = ori_pattern_edge_count(pat->p);
     double *zeros = calloc((size_t)E + 1, sizeof(double));
     ori_actuation act = ori_design_actuation(design);
