@@ -258,6 +258,18 @@ ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad
     return p;
 }
 
+ori_pattern *test_generated(ori_tessellation kind, int rows, int cols)
+{
+    ori_generate_def g = ori_default_generate_def(kind);
+    g.rows = rows;
+    if (ori_tessellation_params(kind) & ORI_GEN_SIDES) g.sides = cols;
+    else g.cols = cols;
+    ori_pattern *p = NULL;
+    ori_error err;
+    cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
+    return p;
+}
+
 test_open_corner test_open_corner_load(void)
 {
     test_open_corner c;

@@ -86,6 +86,9 @@ bool test_vertex_flat_foldable(const ori_pattern *p, int vertex, char *why, size
 // classes (may be NULL) receives one ori_edge_class per edge (free with ori_buffer_free).
 // Fails the test on error.
 ori_pattern *test_miura(int rows, int cols, double a, double b, double gamma_rad, ori_edge_class **classes);
+// A generated tessellation of rows × cols (cols: sides for the Kresling), its other parameters
+// the defaults (ori_default_generate_def). Fails the test on error.
+ori_pattern *test_generated(ori_tessellation kind, int rows, int cols);
 // The zig-zag crease of the middle cell of test_miura(n, n, …) and the sign of its assignment.
 int test_miura_drive(const ori_pattern *p, int n, double *sign);
 

@@ -327,10 +327,7 @@ static void converge_to_rigid(const ori_pattern *p, double fraction, const int *
 
 Test(compliant, miura_converges_to_the_rigid_fold)
 {
-    ori_generate_def gd = ori_default_generate_def(ORI_TESS_MIURA);
-    ori_pattern *p = NULL;
-    ori_error err;
-    cr_assert_eq(ori_generate(&gd, &p, NULL, &err), ORI_OK, "%s", err.message);
+    ori_pattern *p = test_generated(ORI_TESS_MIURA, 4, 4);
     // drive: the crease of face 0 with the largest compliant angle is as good as any; take a fold of face 0
     int fe[8];
     int n = ori_pattern_face_edges(p, 0, fe, 8);
@@ -384,12 +381,8 @@ Test(compliant, explicit_on_two_threads_takes_the_same_steps_as_one)
     // A: bars and hinges by share, phase B: vertices by share) give the state of one thread to
     // roundoff (only the order of the sums differs); a wrong share or a race would show here. (That
     // the explicit solver settles on the static equilibrium is the test above.)
-    ori_generate_def gd = ori_default_generate_def(ORI_TESS_MIURA);
-    gd.rows = 40;
-    gd.cols = 40;
-    ori_pattern *p = NULL;
+    ori_pattern *p = test_generated(ORI_TESS_MIURA, 40, 40);
     ori_error err;
-    cr_assert_eq(ori_generate(&gd, &p, NULL, &err), ORI_OK, "%s", err.message);
     ori_compliant_def d = ori_default_compliant_def();
     d.fraction = 0.3;
     ori_compliant *c1 = make(p, &d);
@@ -435,10 +428,8 @@ static void on_step(double before, double after, void *user)
 
 Test(compliant, line_search_never_raises_the_energy)
 {
-    ori_generate_def gd = ori_default_generate_def(ORI_TESS_MIURA);
-    ori_pattern *p = NULL;
+    ori_pattern *p = test_generated(ORI_TESS_MIURA, 4, 4);
     ori_error err;
-    cr_assert_eq(ori_generate(&gd, &p, NULL, &err), ORI_OK, "%s", err.message);
     ori_compliant_def d = ori_default_compliant_def();
     d.fraction = 0.9;
     d.max_step_rad = 60 * DEG; // long load steps: the line search works

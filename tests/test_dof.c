@@ -12,16 +12,6 @@
 #include "support.h"
 #include <orikin/generate.h>
 
-static ori_pattern *generated(ori_tessellation kind, int rows, int cols)
-{
-    ori_generate_def g = ori_default_generate_def(kind);
-    g.rows = rows;
-    g.cols = cols;
-    ori_pattern *p = NULL;
-    ori_error err;
-    cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
-    return p;
-}
 
 static int interior_vertices(const ori_mechanism *m)
 {
@@ -47,7 +37,7 @@ Test(dof, miura_flat_and_nearby_dense_and_sparse, .timeout = 120)
     int sizes[3] = {4, 10, 40};
     for (int k = 0; k < 3; ++k) {
         int n = sizes[k];
-        ori_pattern *p = generated(ORI_TESS_MIURA, n, n);
+        ori_pattern *p = test_generated(ORI_TESS_MIURA, n, n);
         ori_mechanism *m = test_mechanism_of(p);
         ori_dof_def d = ori_default_dof_def();
         ori_dof_result r = dof_of(m, &d);
@@ -74,7 +64,7 @@ Test(dof, miura_flat_and_nearby_dense_and_sparse, .timeout = 120)
 // the certificate does not apply and the subspace iteration must agree with the SVD too.
 Test(dof, sparse_certificate_agrees_with_svd)
 {
-    ori_pattern *p = generated(ORI_TESS_MIURA, 6, 6);
+    ori_pattern *p = test_generated(ORI_TESS_MIURA, 6, 6);
     ori_mechanism *m = test_mechanism_of(p);
     int J = ori_mechanism_joint_count(m);
     int *col = malloc(sizeof(int) * (size_t)J);
@@ -108,7 +98,7 @@ Test(dof, sparse_certificate_agrees_with_svd)
 // independent, so the nearby DOF is creases − 3 × interior vertices (Yoshimura 4 × 4: 46 − 33).
 Test(dof, yoshimura_nearby_dof_is_creases_minus_equations)
 {
-    ori_pattern *p = generated(ORI_TESS_YOSHIMURA, 4, 4);
+    ori_pattern *p = test_generated(ORI_TESS_YOSHIMURA, 4, 4);
     ori_mechanism *m = test_mechanism_of(p);
     ori_dof_def d = ori_default_dof_def();
     ori_dof_result r = dof_of(m, &d);
@@ -179,7 +169,7 @@ static bool record_progress(double f, void *user)
 
 Test(dof, progress_reaches_one_and_cancels)
 {
-    ori_pattern *p = generated(ORI_TESS_MIURA, 6, 6);
+    ori_pattern *p = test_generated(ORI_TESS_MIURA, 6, 6);
     ori_mechanism *m = test_mechanism_of(p);
     ori_dof_def d = ori_default_dof_def();
     seen_progress s = {0, 0.0, true, 0};

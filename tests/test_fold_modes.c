@@ -15,15 +15,7 @@
 
 #define DEG (ORI_PI / 180.0)
 
-static ori_pattern *waterbomb(int n)
-{
-    ori_generate_def d = ori_default_generate_def(ORI_TESS_WATERBOMB);
-    d.rows = d.cols = n;
-    ori_pattern *p = NULL;
-    ori_error err;
-    cr_assert_eq(ori_generate(&d, &p, NULL, &err), ORI_OK);
-    return p;
-}
+static ori_pattern *waterbomb(int n) { return test_generated(ORI_TESS_WATERBOMB, n, n); }
 
 static ori_pattern *import_shared(const char *rel)
 {

@@ -829,10 +829,7 @@ Test(kinematics, sweep_exists_for_degree_four_vertices_from_any_drive_but_not_fo
     ori_mechanism_destroy(m);
     ori_pattern_destroy(p);
     // Yoshimura: degree-6 vertices, five or six undetermined creases for three equations.
-    ori_generate_def g = ori_default_generate_def(ORI_TESS_YOSHIMURA);
-    g.rows = g.cols = 3;
-    ori_error err;
-    cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
+    p = test_generated(ORI_TESS_YOSHIMURA, 3, 3);
     m = test_mechanism_of(p);
     col = malloc(sizeof(int) * (size_t)m->joint_count);
     int n = free_columns(m, 0, col);

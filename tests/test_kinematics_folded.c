@@ -385,11 +385,8 @@ Test(kinematics_folded, degree4_vertex_half_folded_folds_on_or_back_alike_with_b
 // at +180° outward.
 Test(kinematics_folded, waterbomb_base_folded_flat_unfolds_by_drives_and_stays_at_percent_0)
 {
-    ori_generate_def g = ori_default_generate_def(ORI_TESS_WATERBOMB);
-    g.rows = g.cols = 1;
-    ori_pattern *p = NULL;
+    ori_pattern *p = test_generated(ORI_TESS_WATERBOMB, 1, 1);
     ori_error err;
-    cr_assert_eq(ori_generate(&g, &p, NULL, &err), ORI_OK, "%s", err.message);
     ori_mechanism *m = test_mechanism_of(p);
     int E = ori_pattern_edge_count(p);
     ori_target_fold_def t = ori_default_target_fold_def();

@@ -518,12 +518,8 @@ Test(regularize, assignment_against_the_mode_is_refused)
 // mode), still exactly and with moves under 1e-4 of the sheet.
 Test(regularize, degree_six_vertices_stay_second_order)
 {
-    ori_generate_def g = ori_default_generate_def(ORI_TESS_WATERBOMB);
-    g.rows = 3;
-    g.cols = 4;
-    ori_pattern *w = NULL;
+    ori_pattern *w = test_generated(ORI_TESS_WATERBOMB, 3, 4);
     ori_error err;
-    cr_assert_eq(ori_generate(&g, &w, NULL, &err), ORI_OK, "%s", err.message);
     ori_pattern *q = rounded(w, 6e-5, 4, 2);
     cr_assert_gt(max_kawasaki(q), 1e-6);
     ori_regularize_def d = ori_default_regularize_def();

@@ -108,6 +108,15 @@ static json_t *cli_json(const char *args, int want_rc)
     return j;
 }
 
+// A request the server refuses with 400 and an error body containing text.
+static void expect_refused(studio *s, const char *method, const char *path, const char *body, const char *text)
+{
+    studio_response r = call(s, method, path, NULL, body);
+    cr_assert_eq(r.status, 400, "%s %s", path, body);
+    cr_assert(strstr(r.body, text), "%s %s: %s", path, body, r.body);
+    studio_response_free(&r);
+}
+
 // Equal JSON (numbers exactly), naming the first field that differs.
 static void assert_same(json_t *a, json_t *b, const char *where)
 {
@@ -643,17 +652,9 @@ Test(server, compliant_fold_equals_cli_json)
         json_decref(api);
         json_decref(cli);
     }
-    studio_response r = call(s, "POST", "/api/compliant", NULL, "{\"percent\": 120}");
-    cr_assert_eq(r.status, 400);
-    cr_assert(strstr(r.body, "--percent needs a number from 0 to 100, got '120'"), "%s", r.body);
-    studio_response_free(&r);
-    r = call(s, "POST", "/api/compliant", NULL, "{\"fix\": 99}");
-    cr_assert_eq(r.status, 400);
-    cr_assert(strstr(r.body, "fix: a face index"), "%s", r.body);
-    studio_response_free(&r);
-    r = call(s, "POST", "/api/compliant", NULL, "{\"percent\": 10, \"stiff\": 1}");
-    cr_assert_eq(r.status, 400);
-    studio_response_free(&r);
+    expect_refused(s, "POST", "/api/compliant", "{\"percent\": 120}", "--percent needs a number from 0 to 100, got '120'");
+    expect_refused(s, "POST", "/api/compliant", "{\"fix\": 99}", "fix: a face index");
+    expect_refused(s, "POST", "/api/compliant", "{\"percent\": 10, \"stiff\": 1}", "stiff");
     char *cli_out = NULL;
     cr_assert_eq(test_run_cli("fold examples/patterns/open-corner.fold --compliant --percent 120", &cli_out), 2);
     cr_assert(strstr(cli_out, "--percent needs a number from 0 to 100, got '120'"), "%s", cli_out);
@@ -2207,10 +2208,8 @@ Test(server, fold_lock_auto_equals_cli_json)
     json_decref(api);
     json_decref(cli);
     // a drive that leaves no freedom to lock away: the CLI's words
-    studio_response r = call(s, "POST", "/api/fold", NULL, "{\"fix\": 0, \"drive\": 8, \"to\": -60, \"lock\": \"nope\"}");
-    cr_assert_eq(r.status, 400);
-    cr_assert(strstr(r.body, "lock: \\\"auto\\\" or an array"), "%s", r.body);
-    studio_response_free(&r);
+    expect_refused(s, "POST", "/api/fold", "{\"fix\": 0, \"drive\": 8, \"to\": -60, \"lock\": \"nope\"}",
+                   "lock: \\\"auto\\\" or an array");
     studio_destroy(s);
 }
 

@@ -3,7 +3,6 @@
 // construction.
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "report.h"
@@ -85,10 +84,15 @@ ori_status cli_compliant_solve(const ori_pattern *p, const cli_compliant_request
     return ORI_OK;
 }
 
-static json_t *real_array(const double *v, int n, bool degrees)
+// [fn(c, 0), …, fn(c, n − 1)]: a per-edge or per-face result of the model (degrees: radians shown
+// in degrees).
+static json_t *result_array(const ori_compliant *c, int n, double (*fn)(const ori_compliant *, int), bool degrees)
 {
     json_t *a = json_array();
-    for (int i = 0; i < n; ++i) json_array_append_new(a, json_real(degrees ? ori_rad_to_deg_output(v[i]) : v[i]));
+    for (int i = 0; i < n; ++i) {
+        double v = fn(c, i);
+        json_array_append_new(a, json_real(degrees ? ori_rad_to_deg_output(v) : v));
+    }
     return a;
 }
 
@@ -134,24 +138,10 @@ json_t *cli_compliant_json(const char *file, const cli_compliant_request *r, con
         json_object_set_new(o, "load_steps", json_integer(ls));
     }
     int E = ori_compliant_edge_count(c);
-    double *ang = malloc(sizeof(double) * (size_t)(E + 1)), *str = malloc(sizeof(double) * (size_t)(E + 1));
-    for (int e = 0; e < E; ++e) {
-        ang[e] = ori_compliant_fold_angle(c, e);
-        str[e] = ori_compliant_edge_strain(c, e);
-    }
-    json_object_set_new(o, "fold_angles_deg", real_array(ang, E, true));
-    json_object_set_new(o, "strains", real_array(str, E, false));
-    free(ang);
-    free(str);
-    double *fe = malloc(sizeof(double) * (size_t)(NF + 1)), *fs = malloc(sizeof(double) * (size_t)(NF + 1));
-    for (int f = 0; f < NF; ++f) {
-        fe[f] = ori_compliant_face_energy(c, f);
-        fs[f] = ori_compliant_face_strain(c, f);
-    }
-    json_object_set_new(o, "face_energies", real_array(fe, NF, false));
-    json_object_set_new(o, "face_strains", real_array(fs, NF, false));
-    free(fe);
-    free(fs);
+    json_object_set_new(o, "fold_angles_deg", result_array(c, E, ori_compliant_fold_angle, true));
+    json_object_set_new(o, "strains", result_array(c, E, ori_compliant_edge_strain, false));
+    json_object_set_new(o, "face_energies", result_array(c, NF, ori_compliant_face_energy, false));
+    json_object_set_new(o, "face_strains", result_array(c, NF, ori_compliant_face_strain, false));
     json_object_set_new(o, "contacts", cli_compliant_contacts_json(c, "fraction"));
     json_object_set_new(o, "contacts_truncated", json_boolean(ori_compliant_contacts_truncated(c)));
     if (!reached) json_object_set_new(o, "reason", json_string(reason ? reason : ""));
