@@ -483,26 +483,6 @@ int cli_fold_modes_solve(cli_fold_modes *r)
     return rc;
 }
 
-int cli_fold_modes_resolve_step(cli_fold_modes *r, double step_deg)
-{
-    if (!(step_deg > 0.0)) return CLI_EXIT_OK;
-    cli_modes keep = r->x;
-    double keep_step = r->a.step_deg;
-    r->x.mf = NULL;
-    r->x.locks = NULL;
-    r->x.group = NULL;
-    r->a.step_deg = step_deg;
-    int rc = solve(r);
-    if (rc != CLI_EXIT_OK) { // keep the first solve
-        cli_modes_free(&r->x);
-        r->x = keep;
-        r->a.step_deg = keep_step;
-        return rc;
-    }
-    cli_modes_free(&keep);
-    return CLI_EXIT_OK;
-}
-
 const ori_multifold *cli_fold_modes_result(const cli_fold_modes *r) { return r->x.mf; }
 cli_kin *cli_fold_modes_kin(cli_fold_modes *r) { return &r->k; }
 int cli_fold_modes_fixed_face(const cli_fold_modes *r) { return r->a.fix; }
@@ -512,17 +492,6 @@ const int *cli_fold_modes_locks(const cli_fold_modes *r, int *count)
 {
     *count = r->x.nlocks;
     return r->x.locks;
-}
-
-double cli_fold_modes_span(const cli_fold_modes *r)
-{
-    const ori_multifold *mf = r->x.mf;
-    if (!mf || ori_multifold_frame_count(mf) == 0) return 0.0;
-    int E = ori_mechanism_edge_count(r->k.mech);
-    const double *a0 = ori_multifold_frame_angles(mf, 0), *goal = ori_multifold_goal(mf);
-    double span = 0.0;
-    for (int e = 0; e < E; ++e) span = fmax(span, fabs(goal[e] - a0[e]));
-    return ori_rad_to_deg(span);
 }
 
 void cli_fold_modes_label(const cli_fold_modes *r, char *buf, size_t size)

@@ -26,9 +26,6 @@ int cli_fold_modes_open(const char *cmd, int argc, char **argv, cli_fold_modes *
 // error and returns its exit code on failure; a fold that stops short is not a failure (see the
 // result's verdict).
 int cli_fold_modes_solve(cli_fold_modes *r);
-// Solve again with output frames every step_deg (largest crease change between frames); on
-// failure the first solve is kept and the exit code returned (after the message).
-int cli_fold_modes_resolve_step(cli_fold_modes *r, double step_deg);
 // The result (owned by r), the loaded pattern and mechanism (owned by r), the fixed face (and
 // whether it is the default), the creases held fixed (given and automatic; owned by r).
 const ori_multifold *cli_fold_modes_result(const cli_fold_modes *r);
@@ -36,8 +33,6 @@ cli_kin *cli_fold_modes_kin(cli_fold_modes *r);
 int cli_fold_modes_fixed_face(const cli_fold_modes *r);
 bool cli_fold_modes_fix_default(const cli_fold_modes *r);
 const int *cli_fold_modes_locks(const cli_fold_modes *r, int *count);
-// Largest change of any crease from the start to the goal (degrees).
-double cli_fold_modes_span(const cli_fold_modes *r);
 // What the fold is, for a picture's label: "toward the targets, 100 %", "creases 3,7 to 90,-90 deg",
 // followed by the verdict when it stopped short.
 void cli_fold_modes_label(const cli_fold_modes *r, char *buf, size_t size);

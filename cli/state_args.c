@@ -560,29 +560,6 @@ int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_
 
 // --- motions --------------------------------------------------------------------------------
 
-void cli_motion_free(cli_motion *m)
-{
-    free(m->times);
-    free(m->positions);
-    free(m->poses);
-    free(m->angles);
-    free(m->sources);
-    memset(m, 0, sizeof *m);
-}
-
-static void motion_alloc(cli_motion *m, int count, int V, int F, int E, bool poses, bool angles)
-{
-    m->count = count;
-    m->vertex_count = V;
-    m->face_count = F;
-    m->edge_count = E;
-    m->times = xcalloc((size_t)count, sizeof(double));
-    m->positions = xcalloc((size_t)count * (size_t)V, sizeof(ori_v3));
-    m->poses = poses ? xcalloc((size_t)count * (size_t)F, sizeof(ori_rigid)) : NULL;
-    m->angles = angles ? xcalloc((size_t)count * (size_t)E, sizeof(double)) : NULL;
-    m->sources = NULL;
-}
-
 // A FOLD file's states: after a crease-pattern frame 0, its folded frames; otherwise every frame.
 static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
@@ -599,7 +576,7 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
     int V = ori_pattern_vertex_count(s->pattern), E = ori_pattern_edge_count(s->pattern), F = ori_pattern_face_count(s->pattern);
     cli_motion stored;
     memset(&stored, 0, sizeof stored);
-    motion_alloc(&stored, n, V, F, E, s->mech != NULL, true);
+    cli_motion_alloc(&stored, n, V, F, E, s->mech != NULL, true);
     bool all_timed = true, all_angles = true;
     ori_build_def bd = ori_default_build_def();
     bd.check_planarity = false;
@@ -653,7 +630,7 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
         return CLI_EXIT_OK;
     }
     // Evenly spaced times, each showing the stored frame nearest to it.
-    motion_alloc(m, samples, V, F, E, stored.poses != NULL, stored.angles != NULL);
+    cli_motion_alloc(m, samples, V, F, E, stored.poses != NULL, stored.angles != NULL);
     m->duration = stored.duration;
     m->sources = xcalloc((size_t)samples, sizeof(int));
     int j = 0;
@@ -672,111 +649,38 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
 
 static int motion_of_fold(const char *cmd, cli_state *s, const cli_state_args *a, int samples, cli_motion *m)
 {
-    const ori_motion *mo = s->motion;
-    ori_motion *resolved = NULL;
-    double to = ori_deg_to_rad(s->fold.to_deg), from = s->start_drive_rad;
-    if (samples >= 2 && to != from) {
-        // Solve again with the output steps at the animation's frames: every frame exact.
-        ori_motion_def def;
-        int rc = cli_fold_def(cmd, &s->fold, &s->kin, &def);
-        if (rc != CLI_EXIT_OK) return rc;
-        def.step_rad = fabs(to - from) / (samples - 1);
-        ori_error err;
-        if (ori_motion_solve(s->mech, &def, &resolved, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
-        if (ori_motion_verdict_of(resolved) != ORI_MOTION_VALID) {
-            ori_motion_destroy(resolved);
-            return cli_input_fail(cmd, a->path, "the fold's motion at %d frames is not valid", samples);
-        }
-        mo = resolved;
-    }
-    int n = ori_motion_frame_count(mo);
-    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
-    motion_alloc(m, n, V, F, E, true, true);
-    for (int i = 0; i < n; ++i) {
-        double d = ori_motion_frame_drive(mo, i);
-        m->times[i] = to != from ? (d - from) / (to - from) : (double)i;
-        ori_motion_frame_vertices(mo, i, m->positions + (size_t)i * V);
-        ori_motion_frame_face_poses(mo, i, m->poses + (size_t)i * F);
-        memcpy(m->angles + (size_t)i * E, ori_motion_frame_angles(mo, i), sizeof(double) * (size_t)E);
-    }
-    m->duration = m->times[n - 1] - m->times[0];
-    ori_motion_destroy(resolved);
+    ori_motion_def def;
+    int rc = cli_fold_def(cmd, &s->fold, &s->kin, &def);
+    if (rc != CLI_EXIT_OK) return rc;
+    ori_error err;
+    if (cli_motion_of_fold(s->mech, &def, s->motion, s->start_drive_rad, samples, m, &err) != ORI_OK)
+        return cli_input_error(cmd, a->path, &err);
     return CLI_EXIT_OK;
 }
 
-// A fold in one of the modes: its frames, timed by their progress toward the goal (0 … 1); with
-// samples ≥ 2, solved again with frames as dense as the samples and shown evenly over the progress
-// (each sample the solved frame nearest to it).
+// A fold in one of the modes: its frames timed by their progress toward the goal (0 … 1), or
+// samples states at evenly spaced progress.
 static int motion_of_modes(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
-    (void)cmd;
-    if (samples >= 2) {
-        double span = cli_fold_modes_span(s->modes);
-        int rc = span > 0.0 ? cli_fold_modes_resolve_step(s->modes, span / (samples - 1)) : CLI_EXIT_OK;
-        if (rc != CLI_EXIT_OK) return rc;
-    }
-    const ori_multifold *mf = cli_fold_modes_result(s->modes);
-    int n = ori_multifold_frame_count(mf);
-    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
-    int count = samples >= 2 ? samples : n;
-    motion_alloc(m, count, V, F, E, true, true);
-    double p0 = ori_multifold_frame_progress(mf, 0), p1 = ori_multifold_frame_progress(mf, n - 1);
-    int j = 0;
-    for (int i = 0; i < count; ++i) {
-        int k = i;
-        double t = ori_multifold_frame_progress(mf, samples >= 2 ? 0 : i);
-        if (samples >= 2) {
-            t = p0 + (p1 - p0) * i / (samples - 1);
-            while (j + 1 < n && fabs(ori_multifold_frame_progress(mf, j + 1) - t) <= fabs(ori_multifold_frame_progress(mf, j) - t))
-                j++;
-            k = j;
-        }
-        m->times[i] = t;
-        ori_multifold_frame_vertices(mf, k, m->positions + (size_t)i * V);
-        memcpy(m->angles + (size_t)i * E, ori_multifold_frame_angles(mf, k), sizeof(double) * (size_t)E);
-        modes_poses(s, m->angles + (size_t)i * E, m->positions + (size_t)i * V, m->poses + (size_t)i * F);
-    }
-    m->duration = m->times[count - 1] - m->times[0];
-    return CLI_EXIT_OK;
+    int nlocks = 0;
+    const int *locks = cli_fold_modes_locks(s->modes, &nlocks);
+    cli_progress pr;
+    cli_progress_begin(&pr, cmd, "solving frames");
+    ori_error err;
+    ori_status st = cli_motion_of_multifold(s->mech, cli_fold_modes_result(s->modes), locks, nlocks,
+                                            cli_fold_modes_fixed_face(s->modes), samples, cli_progress_fn, &pr, m, &err);
+    cli_progress_end(&pr);
+    return st == ORI_OK ? CLI_EXIT_OK : cli_input_error(cmd, s->path, &err);
 }
 
 static int motion_of_sequence(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
-    const ori_record *r = s->record;
-    int V = ori_mechanism_vertex_count(s->mech), E = ori_mechanism_edge_count(s->mech), F = ori_mechanism_face_count(s->mech);
-    double duration = ori_record_duration(r);
-    if (samples < 2) {
-        int n = ori_record_frame_count(r);
-        motion_alloc(m, n, V, F, E, true, true);
-        for (int i = 0; i < n; ++i) {
-            m->times[i] = ori_record_frame_time(r, i);
-            memcpy(m->positions + (size_t)i * V, ori_record_frame_vertices(r, i), sizeof(ori_v3) * (size_t)V);
-            memcpy(m->angles + (size_t)i * E, ori_record_frame_angles(r, i), sizeof(double) * (size_t)E);
-            sequence_poses(s, ori_record_frame_fold(r, i), m->angles + (size_t)i * E, m->positions + (size_t)i * V,
-                           m->poses + (size_t)i * F);
-        }
-        m->duration = duration;
-        return CLI_EXIT_OK;
-    }
-    motion_alloc(m, samples, V, F, E, true, true);
-    m->duration = duration;
     cli_progress pr;
     cli_progress_begin(&pr, cmd, "solving frames");
-    for (int i = 0; i < samples; ++i) {
-        double t = i == samples - 1 ? duration : duration * i / (samples - 1);
-        int fold = 0;
-        ori_error err;
-        m->times[i] = t;
-        if (ori_record_at(r, t, m->angles + (size_t)i * E, m->positions + (size_t)i * V, NULL, &fold, NULL, &err) != ORI_OK) {
-            cli_progress_end(&pr);
-            cli_motion_free(m);
-            return cli_input_error(cmd, s->path, &err);
-        }
-        sequence_poses(s, fold, m->angles + (size_t)i * E, m->positions + (size_t)i * V, m->poses + (size_t)i * F);
-        cli_progress_update(&pr, (double)(i + 1) / samples);
-    }
+    ori_error err;
+    ori_status st = cli_motion_of_record(s->mech, s->seq, s->record, samples, cli_progress_fn, &pr, m, &err);
     cli_progress_end(&pr);
-    return CLI_EXIT_OK;
+    return st == ORI_OK ? CLI_EXIT_OK : cli_input_error(cmd, s->path, &err);
 }
 
 int cli_state_motion(const char *cmd, cli_state *s, int samples, cli_motion *m)

@@ -123,20 +123,9 @@ int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_
 // time (exact states for a fold or a sequence; the stored frame nearest in time for a FOLD file,
 // which holds nothing between its frames). Times in seconds: one second per fold (sequence time
 // T), a FOLD file's "orikin:time" when every frame has one, else its frames spread over one
-// second.
-typedef struct cli_motion {
-    int count, vertex_count, face_count, edge_count;
-    double *times;      // count
-    ori_v3 *positions;  // count × vertex_count
-    ori_rigid *poses;   // count × face_count, or NULL when some face is not rigid
-    double *angles;     // count × edge_count, or NULL
-    int *sources;       // count: the FOLD frame each one shows (a FOLD file's frames), or NULL
-    double duration;    // seconds
-} cli_motion;
-
+// second (cli_motion, report.h).
 // Build the motion of a loaded state (cli_state_load first). A FOLD file with a single state has
 // no motion: input error. Shows a progress bar on stderr when solving takes over a second.
 int cli_state_motion(const char *cmd, cli_state *s, int samples, cli_motion *m);
-void cli_motion_free(cli_motion *m);
 
 #endif

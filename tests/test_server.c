@@ -30,6 +30,7 @@ TestSuite(server, .init = test_leak_setup, .fini = test_leak_check);
 
 #define OPEN_CORNER "examples/patterns/open-corner.fold"
 #define OPEN_CORNER_SEQ "examples/open-corner.seq.json"
+#define WATERBOMB_BASE "tests/data/waterbomb-base.fold"
 
 // --- helpers -------------------------------------------------------------------------------
 
@@ -52,12 +53,12 @@ static studio *open_studio(const char *path) { return open_studio_def(path, STUD
 // Call the handler; query is "k=v&k=v" (no escapes in the tests).
 static studio_response call(studio *s, const char *method, const char *path, const char *query, const char *body)
 {
-    studio_arg args[8];
-    char q[256];
+    studio_arg args[16];
+    char q[768];
     int n = 0;
     if (query) {
         snprintf(q, sizeof q, "%s", query);
-        for (char *tok = strtok(q, "&"); tok && n < 8; tok = strtok(NULL, "&")) {
+        for (char *tok = strtok(q, "&"); tok && n < 16; tok = strtok(NULL, "&")) {
             char *eq = strchr(tok, '=');
             if (eq) *eq = '\0';
             args[n].key = tok;
@@ -274,9 +275,9 @@ typedef struct doc_example {
     char text[512];
 } doc_example;
 
-// Every "orikin fold" and "orikin sequence" example of README.md and docs/*.md (in code spans
-// and code lines; docs/cli.md is generated) whose FILE is in the repository.
-static int doc_examples(doc_example *ex, int cap)
+// Every "orikin CMD" example of README.md and docs/*.md (in code spans and code lines; docs/cli.md
+// is generated) whose FILE is in the repository, CMD one of commands (NULL-terminated).
+static int doc_examples(doc_example *ex, int cap, const char *const *commands)
 {
     cr_assert_eq(chdir(ORI_SOURCE_DIR), 0);
     glob_t g;
@@ -287,7 +288,10 @@ static int doc_examples(doc_example *ex, int cap)
         if (strcmp(file, "docs/cli.md") == 0) continue;
         char *text = test_read_text(file);
         for (const char *at = text; (at = strstr(at, "orikin ")) != NULL; at += 7) {
-            if (strncmp(at + 7, "fold ", 5) != 0 && strncmp(at + 7, "sequence ", 9) != 0) continue;
+            bool wanted = false;
+            for (const char *const *c = commands; *c && !wanted; ++c)
+                wanted = strncmp(at + 7, *c, strlen(*c)) == 0 && at[7 + strlen(*c)] == ' ';
+            if (!wanted) continue;
             size_t len = strcspn(at, "`\n#|&;>");
             if (len >= sizeof ex[0].text || count == cap) continue;
             doc_example *e = &ex[count];
@@ -313,32 +317,116 @@ static int doc_examples(doc_example *ex, int cap)
 }
 
 // A CLI number list ("3,5" or "90") as JSON: one number, or an array when there are several.
-static json_t *numbers_json(const char *v, bool integers)
+static json_t *single_or_array(json_t *a)
 {
-    json_t *a = json_array();
-    char buf[128];
-    snprintf(buf, sizeof buf, "%s", v);
-    for (char *t = strtok(buf, ","); t; t = strtok(NULL, ","))
-        json_array_append_new(a, integers ? json_integer(strtol(t, NULL, 10)) : json_real(strtod(t, NULL)));
     if (json_array_size(a) != 1) return a;
     json_t *one = json_incref(json_array_get(a, 0));
     json_decref(a);
     return one;
 }
 
+static json_t *numbers_json(const char *v)
+{
+    json_t *a = json_array();
+    char buf[128];
+    snprintf(buf, sizeof buf, "%s", v);
+    for (char *t = strtok(buf, ","); t; t = strtok(NULL, ",")) json_array_append_new(a, json_real(strtod(t, NULL)));
+    return single_or_array(a);
+}
+
+// A CLI face or crease list ("3,5", "Obj12", "11,@1,0.5") as the API takes it: an index as a
+// number, a name or a point "@x,y" as a string; one value, or an array when there are several.
+static json_t *specs_json(const char *v)
+{
+    json_t *a = json_array();
+    char buf[256], *save = NULL;
+    snprintf(buf, sizeof buf, "%s", v);
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        char *end;
+        long x = strtol(t, &end, 10);
+        if (t[0] == '@') {
+            const char *y = strtok_r(NULL, ",", &save);
+            char point[128];
+            snprintf(point, sizeof point, "%s,%s", t, y ? y : "");
+            json_array_append_new(a, json_string(point));
+        } else if (end != t && *end == '\0') {
+            json_array_append_new(a, json_integer(x));
+        } else {
+            json_array_append_new(a, json_string(t));
+        }
+    }
+    return single_or_array(a);
+}
+
+// A fold option of the CLI (t, with the next token v) into the body of POST /api/fold, whose
+// fields are named like the options: the tokens it takes (1: a flag, 2: with its value), 0 when t
+// is not a fold option.
+static int fold_option_json(json_t *body, const char *t, const char *v)
+{
+    if (strcmp(t, "--symmetric") == 0 || strcmp(t, "--no-collisions") == 0) {
+        json_object_set_new(body, t[2] == 's' ? "symmetric" : "no_collisions", json_true());
+        return 1;
+    }
+    static const char *const keys[] = {"fix", "drive", "lock", "to", "from", "step", "percent", "solver", "frame"};
+    if (strncmp(t, "--", 2) != 0 || !v || !*v) return 0;
+    const char *key = t + 2;
+    int k = 0;
+    while (k < 9 && strcmp(keys[k], key) != 0) k++;
+    if (k == 9) return 0;
+    json_t *val;
+    if (k == 0 || k == 1) val = specs_json(v);
+    else if (k == 2 && strcmp(v, "auto") == 0) val = json_string("auto");
+    else if (k == 2) {
+        val = specs_json(v);
+        if (!json_is_array(val)) {
+            json_t *one = json_array();
+            json_array_append_new(one, val);
+            val = one;
+        }
+    } else if (k == 7) val = json_string(v);
+    else if (k == 8) val = json_integer(strtol(v, NULL, 10));
+    else val = numbers_json(v);
+    json_object_set_new(body, key, val);
+    return 2;
+}
+
+// A compliant fold's option (orikin fold --compliant …) into the body of POST /api/compliant:
+// the tokens it takes, 0 when t is not one.
+static int compliant_option_json(json_t *body, const char *t, const char *v)
+{
+    if (strcmp(t, "--dynamic") == 0) {
+        json_object_set_new(body, "dynamic", json_true());
+        return 1;
+    }
+    static const char *const numbers[] = {"percent", "axial", "facet", "crease", "damping", "gravity"};
+    if (strncmp(t, "--", 2) != 0 || !v || !*v) return 0;
+    const char *key = t + 2;
+    for (int k = 0; k < 6; ++k)
+        if (strcmp(key, numbers[k]) == 0) {
+            json_object_set_new(body, key, json_real(strtod(v, NULL)));
+            return 2;
+        }
+    if (strcmp(key, "steps") == 0 || strcmp(key, "threads") == 0) json_object_set_new(body, key, json_integer(strtol(v, NULL, 10)));
+    else if (strcmp(key, "preset") == 0) json_object_set_new(body, key, json_string(v));
+    else if (strcmp(key, "fix") == 0) json_object_set_new(body, key, specs_json(v));
+    else return 0;
+    return 2;
+}
+
 // Every fold and sequence example of the documentation answers the same through the studio's API
 // as through the CLI's --json: the same verdict, stop and angles (numbers exactly), field for
-// field (issue 22). A fold's options become the API's fields; -o is the CLI's only (the API
-// answers in JSON). Compliant folds are not in the studio yet: counted, not compared.
+// field (issue 22). A fold's options become the API's fields (a compliant fold's those of POST
+// /api/compliant); -o is the CLI's only (the API answers in JSON).
 Test(server, the_docs_fold_and_sequence_examples_answer_the_same_in_the_studio)
 {
     static doc_example ex[64];
-    int n = doc_examples(ex, 64), folds = 0, sequences = 0, compliant = 0;
+    static const char *const commands[] = {"fold", "sequence", NULL};
+    int n = doc_examples(ex, 64, commands), folds = 0, sequences = 0, compliant = 0;
     for (int i = 0; i < n; ++i) {
         doc_example *e = &ex[i];
         char args[1024] = "";
         size_t w = 0;
-        bool seq = strcmp(e->tok[1], "sequence") == 0, skip = false;
+        bool seq = strcmp(e->tok[1], "sequence") == 0, is_compliant = false;
         json_t *body = json_object();
         for (int k = 1; k < e->n; ++k) {
             const char *t = e->tok[k], *v = k + 1 < e->n ? e->tok[k + 1] : "";
@@ -349,42 +437,22 @@ Test(server, the_docs_fold_and_sequence_examples_answer_the_same_in_the_studio)
             if (strcmp(t, "--json") == 0) continue;
             w += (size_t)snprintf(args + w, sizeof args - w, "%s ", t);
             if (k < 3 || seq) continue;
-            if (strcmp(t, "--compliant") == 0 || strcmp(t, "--all-frames") == 0) skip = true;
-            else if (strcmp(t, "--symmetric") == 0) json_object_set_new(body, "symmetric", json_true());
-            else if (strcmp(t, "--no-collisions") == 0) json_object_set_new(body, "no_collisions", json_true());
-            else if (t[0] == '-' && t[1] == '-' && k + 1 < e->n) {
-                const char *key = t + 2;
-                json_t *val = NULL;
-                if (strcmp(key, "fix") == 0 || strcmp(key, "frame") == 0) val = numbers_json(v, true);
-                else if (strcmp(key, "drive") == 0) val = numbers_json(v, true);
-                else if (strcmp(key, "lock") == 0) val = strcmp(v, "auto") == 0 ? json_string("auto") : json_array();
-                else if (strcmp(key, "to") == 0 || strcmp(key, "from") == 0 || strcmp(key, "step") == 0 ||
-                         strcmp(key, "percent") == 0)
-                    val = numbers_json(v, false);
-                else if (strcmp(key, "solver") == 0) val = json_string(v);
-                if (!val) cr_assert_fail("%s: %s: option %s has no API field in this test", e->where, e->text, t);
-                if (strcmp(key, "lock") == 0 && json_is_array(val)) {
-                    json_t *l = numbers_json(v, true);
-                    if (json_is_array(l)) json_array_extend(val, l);
-                    else json_array_append(val, l);
-                    json_decref(l);
-                }
-                json_object_set_new(body, key, val);
+            if (strcmp(t, "--compliant") == 0) {
+                is_compliant = true;
+                continue;
+            }
+            if (strcmp(t, "--all-frames") == 0) continue; // what -o writes, not the answer
+            int used = is_compliant ? compliant_option_json(body, t, v) : fold_option_json(body, t, v);
+            if (used == 0 && t[0] == '-') cr_assert_fail("%s: %s: option %s has no API field in this test", e->where, e->text, t);
+            if (used == 2) {
                 w += (size_t)snprintf(args + w, sizeof args - w, "%s ", v);
                 k++;
-            } else if (t[0] == '-') {
-                cr_assert_fail("%s: %s: option %s has no API field in this test", e->where, e->text, t);
             }
-        }
-        if (skip) {
-            compliant++;
-            json_decref(body);
-            continue;
         }
         snprintf(args + w, sizeof args - w, "--json");
         char *out = NULL;
         int rc = test_run_cli(args, &out);
-        cr_assert(rc == 0 || rc == 1, "orikin %s (%s): exit %d: %.300s", args, e->where, rc, out);
+        cr_assert(rc == 0 || rc == 1 || (is_compliant && rc == 5), "orikin %s (%s): exit %d: %.300s", args, e->where, rc, out);
         json_t *cli = parse(out, strlen(out));
         free(out);
         studio *s = open_studio(e->tok[2]);
@@ -394,9 +462,17 @@ Test(server, the_docs_fold_and_sequence_examples_answer_the_same_in_the_studio)
             sequences++;
         } else {
             char *b = json_dumps(body, JSON_COMPACT);
-            api = call_json(s, "POST", "/api/fold", NULL, b, 200);
+            api = call_json(s, "POST", is_compliant ? "/api/compliant" : "/api/fold", NULL, b, 200);
             free(b);
-            folds++;
+            if (is_compliant) { // (what the page draws, beside the CLI's answer)
+                cr_assert(json_is_array(json_object_get(api, "positions")), "%s: the bent sheet's vertices", e->text);
+                json_object_del(api, "positions");
+                json_object_del(api, "strain_colors");
+                json_object_del(api, "version");
+                compliant++;
+            } else {
+                folds++;
+            }
         }
         char what[1200];
         snprintf(what, sizeof what, "%.90s: orikin %.1000s", e->where, args);
@@ -410,7 +486,8 @@ Test(server, the_docs_fold_and_sequence_examples_answer_the_same_in_the_studio)
     // (the docs hold at least these: the open corner's folds, the issue-14 vertex, two sequences)
     cr_assert_geq(folds, 3, "%d fold examples found", folds);
     cr_assert_geq(sequences, 2, "%d sequence examples found", sequences);
-    cr_log_info("%d folds and %d sequences the same; %d compliant examples not compared", folds, sequences, compliant);
+    cr_assert_geq(compliant, 1, "%d compliant fold examples found", compliant);
+    cr_log_info("%d folds, %d compliant folds and %d sequences the same", folds, compliant, sequences);
 }
 
 Test(server, sequence_equals_cli_json)
@@ -1692,6 +1769,111 @@ static void assert_export_equals(studio *s, const char *query, const char *args,
     studio_response_free(&r);
 }
 
+// Every "orikin render", "orikin export" and "orikin animate" example of the documentation whose
+// file is in the repository gives the same bytes through GET /api/export (issue 22): its fold
+// options become POST /api/fold (the picture or mesh of the fold's last state, or with --animate
+// and animate its motion), --at T and --frame N name the state (a sequence's end without them),
+// its drawing options the query's fields, and -o's suffix the format. A texture is the CLI's only
+// (the studio draws without one): such an example is counted, not compared.
+Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_the_studio)
+{
+    static doc_example ex[64];
+    static const char *const commands[] = {"render", "export", "animate", NULL};
+    int n = doc_examples(ex, 64, commands), compared = 0, textured = 0, modes = 0;
+    char *dir = test_tmpdir();
+    for (int i = 0; i < n; ++i) {
+        doc_example *e = &ex[i];
+        const char *cmd = e->tok[1], *file = e->tok[2];
+        bool seq = strstr(file, ".seq.json") != NULL, animate = strcmp(cmd, "animate") == 0, skip = false;
+        char args[1024], query[512] = "", state[64] = "", ext[16] = "";
+        size_t w = (size_t)snprintf(args, sizeof args, "%s %s ", cmd, file), q = 0;
+        json_t *body = json_object();
+        for (int k = 3; k < e->n; ++k) {
+            const char *t = e->tok[k], *v = k + 1 < e->n ? e->tok[k + 1] : "";
+            char value[128];
+            snprintf(value, sizeof value, "%s", v);
+            if (value[0] == '\'' && strlen(value) >= 2) { // a shell-quoted colour
+                memmove(value, value + 1, strlen(value));
+                value[strlen(value) - 1] = '\0';
+            }
+            if (strcmp(t, "-o") == 0) {
+                const char *dot = strrchr(v, '.');
+                cr_assert(dot, "%s: %s: -o names a file with a suffix", e->where, e->text);
+                snprintf(ext, sizeof ext, "%s", dot + 1);
+                k++;
+                continue;
+            }
+            if (strcmp(t, "--texture") == 0) skip = true;
+            int used = seq ? 0 : fold_option_json(body, t, v);
+            if (used == 0) {
+                static const char *const valued[] = {"yaw", "pitch", "roll", "camera", "front", "back", "size", "view",
+                                                     "fps", "duration", "thickness", "texture", NULL};
+                static const char *const flags[] = {"perspective", "edges", "grid", "labels", NULL};
+                const char *key = t + 2;
+                for (int j = 0; valued[j] && !used; ++j)
+                    if (strcmp(key, valued[j]) == 0) {
+                        q += (size_t)snprintf(query + q, sizeof query - q, "&%s=%s", key, value);
+                        used = 2;
+                    }
+                for (int j = 0; flags[j] && !used; ++j)
+                    if (strcmp(key, flags[j]) == 0) {
+                        q += (size_t)snprintf(query + q, sizeof query - q, "&%s=1", key);
+                        used = 1;
+                    }
+                if (!used && strcmp(t, "--at") == 0) {
+                    snprintf(state, sizeof state, "&t=%s", v);
+                    used = 2;
+                } else if (!used && strcmp(t, "--animate") == 0) {
+                    animate = true;
+                    used = 1;
+                }
+            }
+            cr_assert(used, "%s: %s: option %s has no API field in this test", e->where, e->text, t);
+            w += (size_t)snprintf(args + w, sizeof args - w, "%s %s", t, used == 2 ? v : "");
+            w += (size_t)snprintf(args + w, sizeof args - w, " ");
+            k += used - 1;
+        }
+        cr_assert(ext[0], "%s: %s: the example writes a file (-o)", e->where, e->text);
+        if (skip) {
+            textured++;
+            json_decref(body);
+            continue;
+        }
+        bool fold = json_object_size(body) > 0 && !(json_object_size(body) == 1 && json_object_get(body, "frame"));
+        json_t *frame = json_object_get(body, "frame");
+        if (!fold && frame) snprintf(state, sizeof state, "&frame=%d", (int)json_integer_value(frame));
+        studio *s = open_studio(file);
+        if (fold) {
+            char *b = json_dumps(body, JSON_COMPACT);
+            json_t *answer = call_json(s, "POST", "/api/fold", NULL, b, 200);
+            free(b);
+            int frames = (int)json_array_size(json_object_get(answer, "frames"));
+            cr_assert_gt(frames, 0, "%s: %s: the fold has states", e->where, e->text);
+            if (!animate) snprintf(state, sizeof state, "&k=%d", frames - 1);
+            modes += json_object_get(answer, "mode") != NULL;
+            json_decref(answer);
+        } else if (seq && !state[0] && !animate) {
+            json_t *answer = call_json(s, "GET", "/api/sequence", NULL, NULL, 200);
+            snprintf(state, sizeof state, "&t=%.17g", json_number_value(json_object_get(answer, "duration")));
+            json_decref(answer);
+        }
+        const char *format = strcmp(ext, "svg") == 0 ? "svg-picture" : ext;
+        char full[768];
+        snprintf(full, sizeof full, "format=%s%s%s", format, animate ? (seq ? "&of=sequence" : "&of=fold") : state, query);
+        assert_export_equals(s, full, args, ext, dir);
+        cr_log_info("same file: %s: orikin %s / GET /api/export?%s", e->where, args, full);
+        compared++;
+        json_decref(body);
+        studio_destroy(s);
+    }
+    // (the docs hold at least these: the sequence's pictures, GLB and GIF; the open corner's fold
+    // picture and crease pattern; the waterbomb base toward its targets)
+    cr_assert_geq(compared, 8, "%d examples compared", compared);
+    cr_assert_geq(modes, 2, "%d examples of a fold toward the targets", modes);
+    cr_log_info("%d examples give the same files (%d of a fold mode); %d with a texture not compared", compared, modes, textured);
+    test_tmpdir_remove(dir);
+}
+
 // Pictures, meshes and animations of states and motions: byte for byte what orikin render,
 // export and animate write for the same state and options.
 Test(server, exports_equal_render_export_and_animate)
@@ -1738,6 +1920,23 @@ Test(server, exports_equal_render_export_and_animate)
     studio_response g = call(s, "GET", "/api/export", "format=gltf&of=fold", NULL);
     cr_assert_str_eq(g.filename, "open-corner-fold.gltf");
     studio_response_free(&g);
+    studio_destroy(s);
+    // a fold of several degrees of freedom (toward the targets, as the studio's slider folds):
+    // its last state and its whole motion, frames timed by their progress
+    s = open_studio(WATERBOMB_BASE);
+    json_t *mode = call_json(s, "POST", "/api/fold", NULL, "{\"percent\": 100}", 200);
+    int frames = (int)json_array_size(json_object_get(mode, "frames"));
+    cr_assert_geq(frames, 2, "the fold toward the targets records its states");
+    cr_assert_str_eq(json_string_value(json_object_get(mode, "verdict")), "reached");
+    json_decref(mode);
+    char last[64];
+    snprintf(last, sizeof last, "format=png&k=%d", frames - 1);
+#define MODE_ARGS WATERBOMB_BASE " --percent 100"
+    assert_export_equals(s, last, "render " MODE_ARGS, "png", dir);
+    assert_export_equals(s, "format=glb&of=fold", "export " MODE_ARGS " --animate", "glb", dir);
+    assert_export_equals(s, "format=gltf&of=fold", "export " MODE_ARGS " --animate", "gltf", dir);
+    assert_export_equals(s, "format=gif&of=fold&fps=4&duration=1&size=160x120", "animate " MODE_ARGS " --fps 4 --duration 1 --size 160x120", "gif", dir);
+#undef MODE_ARGS
     studio_destroy(s);
     test_tmpdir_remove(dir);
 }

@@ -14,7 +14,8 @@
 // cli_modes_solve, cli_modes_hint, cli_modes_shown_frames, cli_modes_creases,
 // cli_modes_against_assignment, cli_modes_json, cli_modes_free, cli_compliant_request_init,
 // cli_compliant_request_error, cli_compliant_def, cli_compliant_solve, cli_compliant_contacts_json,
-// cli_compliant_json.
+// cli_compliant_json, cli_motion_alloc, cli_motion_free, cli_motion_of_fold,
+// cli_motion_of_multifold, cli_motion_of_record.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -279,5 +280,42 @@ json_t *cli_compliant_contacts_json(const ori_compliant *c, const char *fraction
 // vertex, the studio's drawing).
 json_t *cli_compliant_json(const char *file, const cli_compliant_request *r, const ori_compliant *c, bool reached,
                            int explicit_steps, const char *reason, bool positions);
+
+// --- a motion as keyframes (orikin export --animate, orikin animate; GET /api/export of=fold|sequence)
+
+// A motion as frames: times (s), world vertices, fold angles and flat → world face poses of each.
+typedef struct cli_motion {
+    int count, vertex_count, face_count, edge_count;
+    double *times;      // count
+    ori_v3 *positions;  // count × vertex_count
+    ori_rigid *poses;   // count × face_count, or NULL when some face is not rigid
+    double *angles;     // count × edge_count, or NULL
+    int *sources;       // count: the FOLD frame each one shows (a FOLD file's frames), or NULL
+    double duration;    // seconds
+} cli_motion;
+
+// Allocate count zeroed frames (poses and angles only when asked); sources NULL, duration 0.
+void cli_motion_alloc(cli_motion *m, int count, int vertex_count, int face_count, int edge_count, bool poses,
+                      bool angles);
+// Release the frames (m zeroed).
+void cli_motion_free(cli_motion *m);
+// A single-drive fold solved on mech with def, its drive starting at from_rad: its output steps
+// (samples < 2) or, samples ≥ 2, solved again with samples steps evenly spaced in drive; times
+// (drive − from) / (to − from) (the frame index when to = from). ORI_ERR_NOT_CONVERGED (said in
+// *err) when the motion solved again is not valid; the solver's failure otherwise.
+ori_status cli_motion_of_fold(const ori_mechanism *mech, const ori_motion_def *def, const ori_motion *motion,
+                              double from_rad, int samples, cli_motion *m, ori_error *err);
+// A fold toward the targets or by several drives (locks: the fold's lock set): its frames timed by
+// their progress (0 … 1) when samples < 2, else samples states at evenly spaced progress, each
+// closed exactly (ori_multifold_at); the faces posed from fixed_face's pose in each state.
+// progress (may be NULL) sees the fraction of samples done.
+ori_status cli_motion_of_multifold(const ori_mechanism *mech, const ori_multifold *mf, const int *locks, int nlocks,
+                                   int fixed_face, int samples, ori_progress_fn *progress, void *user, cli_motion *m,
+                                   ori_error *err);
+// A sequence run: its recorded states (samples < 2) or samples states evenly spaced over its
+// duration, each restored exactly (ori_record_at); one second per fold; the faces posed from each
+// fold's fixed face.
+ori_status cli_motion_of_record(const ori_mechanism *mech, const ori_sequence *seq, const ori_record *r, int samples,
+                                ori_progress_fn *progress, void *user, cli_motion *m, ori_error *err);
 
 #endif

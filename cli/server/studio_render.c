@@ -290,59 +290,44 @@ static void export_mesh(studio *s, const studio_request *req, const studio_expor
 
 // --- motions ---------------------------------------------------------------------------------------
 
-// A motion as keyframes, as orikin export --animate and orikin animate take it (cli/state_args.c):
-// the state drawn when it is one picture (the motion's end), and every keyframe's time (s),
-// positions, angles and face poses.
+// A motion as keyframes, as orikin export --animate and orikin animate take it (the shared
+// cli_motion_of_* of report.h): the state drawn when it is one picture (the motion's end), and
+// the keyframes.
 typedef struct motion {
     studio_model *model;
-    int count, V, E, F;
-    double *times;
-    ori_v3 *positions;
-    double *angles;
-    ori_rigid *poses;
+    cli_motion k;
     ori_v3 *end_positions;
     double *end_angles;
 } motion;
 
-static void motion_alloc(motion *m, int count)
-{
-    m->count = count;
-    m->times = xcalloc((size_t)count, sizeof(double));
-    m->positions = xcalloc((size_t)count * (size_t)m->V, sizeof(ori_v3));
-    m->angles = xcalloc((size_t)count * (size_t)m->E, sizeof(double));
-    m->poses = xcalloc((size_t)count * (size_t)m->F, sizeof(ori_rigid));
-}
-
 static void motion_free(motion *m)
 {
     studio_model_unref(m->model);
-    free(m->times);
-    free(m->positions);
-    free(m->angles);
-    free(m->poses);
+    cli_motion_free(&m->k);
     free(m->end_positions);
     free(m->end_angles);
     memset(m, 0, sizeof *m);
 }
 
-static void sequence_poses(const ori_mechanism *mech, const ori_sequence *seq, int fold, const double *angles,
-                           const ori_v3 *pos, ori_rigid *poses)
-{
-    int f = ori_sequence_fold_at(seq, fold).fixed_face;
-    ori_rigid g = ori_rigid_identity();
-    ori_error err;
-    if (ori_mechanism_face_pose_from_coords(mech, f, pos, &g, &err) != ORI_OK) g = ori_rigid_identity();
-    ori_mechanism_face_poses(mech, angles, f, g, poses);
-}
-
 static void set_sizes(motion *m, studio_model *model)
 {
     m->model = studio_model_ref(model);
-    m->V = ori_mechanism_vertex_count(model->mech);
-    m->E = ori_mechanism_edge_count(model->mech);
-    m->F = ori_mechanism_face_count(model->mech);
-    m->end_positions = xcalloc((size_t)m->V, sizeof(ori_v3));
-    m->end_angles = xcalloc((size_t)m->E, sizeof(double));
+    m->end_positions = xcalloc((size_t)ori_mechanism_vertex_count(model->mech), sizeof(ori_v3));
+    m->end_angles = xcalloc((size_t)ori_mechanism_edge_count(model->mech), sizeof(double));
+}
+
+// The studio's limit on the frames a motion export solves.
+static bool within_work_limit(const studio_model *model, int samples, double work_limit, studio_response *out)
+{
+    const ori_mechanism *mech = model->mech;
+    double elements =
+        (double)(ori_mechanism_vertex_count(mech) + ori_mechanism_edge_count(mech) + ori_mechanism_face_count(mech));
+    if (samples >= 2 && samples * elements > work_limit) {
+        studio_fail(out, 400, "%d frames of %.0f elements are over the studio's limit of %.3g: fewer frames", samples,
+                    elements, work_limit);
+        return false;
+    }
+    return true;
 }
 
 // The sequence: its recorded states (samples = 0) or samples states evenly spaced in time, each
@@ -360,46 +345,15 @@ static bool sequence_motion(studio *s, int samples, double work_limit, motion *m
     bool ok = ori_record_verdict(q->record) == ORI_MOTION_VALID && ori_record_frame_count(q->record) > 0;
     if (!ok) studio_fail(out, 409, "of=sequence: fold %d of the sequence is %s", ori_record_failed_fold(q->record) + 1,
                          ori_motion_verdict_name(ori_record_verdict(q->record)));
-    const ori_record *r = q->record;
-    const ori_mechanism *mech = q->model->mech;
-    double duration = ori_record_duration(r);
-    ori_error err;
+    ok = ok && within_work_limit(q->model, samples, work_limit, out);
     if (ok) {
         set_sizes(m, q->model);
-        double elements = (double)(m->V + m->E + m->F);
-        if (samples >= 2 && samples * elements > work_limit) {
-            studio_fail(out, 400, "%d frames of %.0f elements are over the studio's limit of %.3g: fewer frames", samples,
-                        elements, work_limit);
-            ok = false;
-        }
-    }
-    if (ok) {
+        ori_error err;
         pthread_mutex_lock(&q->lock);
-        ori_status rs = ori_record_at(r, duration, m->end_angles, m->end_positions, NULL, NULL, NULL, &err);
-        if (rs == ORI_OK && samples < 2) {
-            int n = ori_record_frame_count(r);
-            motion_alloc(m, n);
-            for (int i = 0; i < n; ++i) {
-                m->times[i] = ori_record_frame_time(r, i);
-                memcpy(m->positions + (size_t)i * m->V, ori_record_frame_vertices(r, i), sizeof(ori_v3) * (size_t)m->V);
-                memcpy(m->angles + (size_t)i * m->E, ori_record_frame_angles(r, i), sizeof(double) * (size_t)m->E);
-                sequence_poses(mech, q->sequence, ori_record_frame_fold(r, i), m->angles + (size_t)i * m->E,
-                               m->positions + (size_t)i * m->V, m->poses + (size_t)i * m->F);
-            }
-        } else if (rs == ORI_OK) {
-            motion_alloc(m, samples);
-            for (int i = 0; i < samples && rs == ORI_OK; ++i) {
-                double t = i == samples - 1 ? duration : duration * i / (samples - 1);
-                int fold = 0;
-                m->times[i] = t;
-                rs = ori_record_at(r, t, m->angles + (size_t)i * m->E, m->positions + (size_t)i * m->V, NULL, &fold, NULL,
-                                   &err);
-                if (rs == ORI_OK)
-                    sequence_poses(mech, q->sequence, fold, m->angles + (size_t)i * m->E, m->positions + (size_t)i * m->V,
-                                   m->poses + (size_t)i * m->F);
-                studio_job_progress((double)(i + 1) / samples, s);
-            }
-        }
+        ori_status rs = ori_record_at(q->record, ori_record_duration(q->record), m->end_angles, m->end_positions, NULL,
+                                      NULL, NULL, &err);
+        if (rs == ORI_OK)
+            rs = cli_motion_of_record(q->model->mech, q->sequence, q->record, samples, studio_job_progress, s, &m->k, &err);
         pthread_mutex_unlock(&q->lock);
         if (rs != ORI_OK) {
             studio_fail_error(out, studio_status_of(rs), &err);
@@ -411,7 +365,8 @@ static bool sequence_motion(studio *s, int samples, double work_limit, motion *m
 }
 
 // The computed fold: its output steps (samples = 0), or solved again with samples steps evenly
-// spaced in drive; times (drive − from) / (to − from). Every step, as orikin export / animate
+// spaced in drive, times (drive − from) / (to − from); a fold mode's frames timed by their
+// progress, or samples states at evenly spaced progress. Every step, as orikin export / animate
 // take the fold.
 static bool fold_motion(studio *s, int samples, double work_limit, motion *m, studio_response *out)
 {
@@ -423,53 +378,39 @@ static bool fold_motion(studio *s, int samples, double work_limit, motion *m, st
         studio_fail(out, 409, "of=fold: no fold has been computed on this document");
         return false;
     }
-    bool ok = f->motion && ori_motion_verdict_of(f->motion) == ORI_MOTION_VALID && ori_motion_frame_count(f->motion) > 0;
-    if (!f->motion) // (its frames are viewed and collided as states: of=fold&k=…)
-        studio_fail(out, 409, "of=fold: a fold mode (percent, several drives, symmetric) is not exported as a motion by "
-                              "the studio yet: orikin fold … -o exports it");
-    else if (!ok) studio_fail(out, 409, "of=fold: the fold is %s", ori_motion_verdict_name(ori_motion_verdict_of(f->motion)));
     const ori_mechanism *mech = f->model->mech;
-    const ori_motion *mo = f->motion;
-    ori_motion *resolved = NULL;
-    double to = f->def.to_rad, from = f->start_drive_rad;
+    bool ok;
+    if (f->motion) {
+        ok = ori_motion_verdict_of(f->motion) == ORI_MOTION_VALID && ori_motion_frame_count(f->motion) > 0;
+        if (!ok) studio_fail(out, 409, "of=fold: the fold is %s", ori_motion_verdict_name(ori_motion_verdict_of(f->motion)));
+    } else {
+        ori_multifold_verdict v = ori_multifold_verdict_of(f->multi);
+        ok = (v == ORI_MULTIFOLD_REACHED || ori_multifold_frame_count(f->multi) >= 2) && v != ORI_MULTIFOLD_INVALID_ASSIGNMENT;
+        if (!ok) studio_fail(out, 409, "of=fold: the fold is %s: %s", ori_multifold_verdict_name(v), ori_multifold_reason(f->multi));
+    }
+    ok = ok && within_work_limit(f->model, samples, work_limit, out);
     if (ok) {
         set_sizes(m, f->model);
-        int last = ori_motion_frame_count(mo) - 1;
-        ori_motion_frame_vertices(mo, last, m->end_positions);
-        memcpy(m->end_angles, ori_motion_frame_angles(mo, last), sizeof(double) * (size_t)m->E);
-        double elements = (double)(m->V + m->E + m->F);
-        if (samples >= 2 && samples * elements > work_limit) {
-            studio_fail(out, 400, "%d frames of %.0f elements are over the studio's limit of %.3g: fewer frames", samples,
-                        elements, work_limit);
-            ok = false;
-        }
-    }
-    if (ok && samples >= 2 && to != from) {
-        ori_motion_def def = f->def;
-        def.step_rad = fabs(to - from) / (samples - 1);
         ori_error err;
-        ori_status rs = ori_motion_solve(mech, &def, &resolved, &err);
+        ori_status rs;
+        int E = ori_mechanism_edge_count(mech);
+        if (f->motion) {
+            int last = ori_motion_frame_count(f->motion) - 1;
+            ori_motion_frame_vertices(f->motion, last, m->end_positions);
+            memcpy(m->end_angles, ori_motion_frame_angles(f->motion, last), sizeof(double) * (size_t)E);
+            rs = cli_motion_of_fold(mech, &f->def, f->motion, f->start_drive_rad, samples, &m->k, &err);
+        } else {
+            int last = ori_multifold_frame_count(f->multi) - 1;
+            ori_multifold_frame_vertices(f->multi, last, m->end_positions);
+            memcpy(m->end_angles, ori_multifold_frame_angles(f->multi, last), sizeof(double) * (size_t)E);
+            rs = cli_motion_of_multifold(mech, f->multi, f->locks, f->def.locked_count, f->def.fixed_face, samples,
+                                         studio_job_progress, s, &m->k, &err);
+        }
         if (rs != ORI_OK) {
-            studio_fail_error(out, studio_status_of(rs), &err);
-            ok = false;
-        } else if (ori_motion_verdict_of(resolved) != ORI_MOTION_VALID) {
-            studio_fail(out, 400, "the fold's motion at %d frames is not valid", samples);
+            studio_fail_error(out, rs == ORI_ERR_NOT_CONVERGED ? 400 : studio_status_of(rs), &err);
             ok = false;
         }
-        mo = resolved;
     }
-    if (ok) {
-        int n = ori_motion_frame_count(mo);
-        motion_alloc(m, n);
-        for (int i = 0; i < n; ++i) {
-            double d = ori_motion_frame_drive(mo, i);
-            m->times[i] = to != from ? (d - from) / (to - from) : (double)i;
-            ori_motion_frame_vertices(mo, i, m->positions + (size_t)i * m->V);
-            ori_motion_frame_face_poses(mo, i, m->poses + (size_t)i * m->F);
-            memcpy(m->angles + (size_t)i * m->E, ori_motion_frame_angles(mo, i), sizeof(double) * (size_t)m->E);
-        }
-    }
-    ori_motion_destroy(resolved);
     studio_fold_unref(f);
     return ok;
 }
@@ -503,9 +444,9 @@ static void export_mesh_motion(studio *s, const studio_request *req, const studi
         void *data = NULL;
         size_t size = 0;
         def.format = (ori_mesh_format)f->render_format;
-        def.keyframe_count = m.count;
-        def.keyframe_times_s = m.times;
-        def.keyframe_poses = m.poses;
+        def.keyframe_count = m.k.count;
+        def.keyframe_times_s = m.k.times;
+        def.keyframe_poses = m.k.poses;
         ori_status rs = ori_mesh_create(&sv, &mesh, &err);
         if (rs == ORI_OK) rs = ori_mesh_export(mesh, &def, &data, &size, &err);
         if (rs != ORI_OK) fail_render(out, rs, &err);
@@ -526,8 +467,8 @@ static ori_status gif_frame(int index, ori_state_view *view, void *user, ori_err
     (void)error;
     const motion *m = ((const gif_frames *)user)->m;
     view->pattern = m->model->pattern;
-    view->positions = m->positions + (size_t)index * (size_t)m->V;
-    view->fold_angles_rad = m->angles + (size_t)index * (size_t)m->E;
+    view->positions = m->k.positions + (size_t)index * (size_t)m->k.vertex_count;
+    view->fold_angles_rad = m->k.angles + (size_t)index * (size_t)m->k.edge_count;
     return ORI_OK;
 }
 
@@ -571,11 +512,11 @@ static void export_gif(studio *s, const studio_request *req, const studio_export
         def.render = draw_def(&d);
         def.render.view = ORI_RENDER_3D;
         gif_frames gf = {&m};
-        def.frame_count = m.count;
+        def.frame_count = m.k.count;
         def.frame = gif_frame;
         def.user = &gf;
         // the frames span the motion evenly over the duration
-        def.fps = (m.count - 1) / duration;
+        def.fps = (m.k.count - 1) / duration;
         if (def.fps < 1.0) def.fps = 1.0;
         if (def.fps > 100.0) def.fps = 100.0;
         studio_job_phase(s, "animation: drawing frames");

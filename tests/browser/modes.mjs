@@ -3,7 +3,12 @@
 // must equal `orikin fold … --json` of the same options, and the request the page builds names
 // the options as the CLI does (fields named like its options). The modes the server refuses
 // (POST /api/fold answering 400) are skipped after the others ran, with its refusal as the reason.
-import { Skip, assert, cli, clickFace, idle, run } from './harness.mjs';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+import { ORIKIN, SOURCE, Skip, assert, cli, clickFace, idle, run } from './harness.mjs';
 
 const FILE = 'tests/data/waterbomb-base.fold';
 
@@ -60,6 +65,24 @@ await run('modes', FILE, async ({ page }) => {
     const fold = await page.evaluate(() => window.studio.fold());
     assert(fold && JSON.stringify(fold) === JSON.stringify(ref), `${c.name}: the page got exactly what orikin fold --json prints`);
     console.log(`${c.name}: ${ref.verdict}, ${(ref.frames || []).length} states, locked ${JSON.stringify(ref.locked)}: equal to orikin fold --json`);
+    // the mode's whole motion through the export menu: byte for byte orikin export --animate's;
+    // a fold against its assignment is not offered (orikin export refuses it)
+    const offered = await page.$$eval('#export-format option', (os) => os.map((o) => o.value));
+    if (ref.verdict === 'invalid assignment') {
+      assert(!offered.includes('glb:fold'), `${c.name}: a fold against its assignment is not offered as a motion`);
+      continue;
+    }
+    assert(offered.includes('glb:fold'), `${c.name}: the motion of the fold is offered: ${offered.join(' ')}`);
+    const [dl] = await Promise.all([page.waitForEvent('download'), page.selectOption('#export-format', 'glb:fold')]);
+    const glb = fs.readFileSync(await dl.path());
+    await idle(page);
+    const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'orikin-modes-'));
+    const glbRef = path.join(tmp, 'ref.glb');
+    execFileSync(ORIKIN, ['export', FILE, ...c.args, '--step', '10', '--animate', '--front', await page.inputValue('#color-front'),
+      '--back', await page.inputValue('#color-back'), '-o', glbRef], { cwd: SOURCE, stdio: ['ignore', 'ignore', 'ignore'] });
+    assert(dl.suggestedFilename() === 'waterbomb-base-fold.glb', `${c.name}: the motion's file is named: ${dl.suggestedFilename()}`);
+    assert(Buffer.compare(glb, fs.readFileSync(glbRef)) === 0, `${c.name}: the GLB animation is orikin export --animate's`);
+    fs.rmSync(tmp, { recursive: true });
   }
   if (refused.length) throw new Skip(`this studio's POST /api/fold does not take these fold modes yet: ${refused.join('; ')}`);
 }, { allowErrors: [/Failed to load resource: the server responded with a status of 400/] });

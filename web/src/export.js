@@ -2,7 +2,7 @@
 // state shown (the picture seen from the 3D view's camera, in its colours; the crease pattern
 // when the flat sheet is shown), or the motion of the sequence or the fold ("format" or
 // "format:of"). ctx: {state, $, api, v3, action, shownStateRef} (api and v3 read when used).
-import { exportGroups, exportParams as buildExportParams } from './requests.js';
+import { exportGroups, exportParams as buildExportParams, foldMotionExportable } from './requests.js';
 
 export function download(name, blob) {
   const a = document.createElement('a');
@@ -43,7 +43,7 @@ export function createExport(ctx) {
     sel.querySelectorAll('optgroup').forEach((g) => g.remove());
     const groups = exportGroups(state.session.export_formats, {
       sequence: !!(state.sequence && state.sequence.frames && state.sequence.frames.length),
-      fold: !!(state.fold && state.fold.frames.length),
+      fold: foldMotionExportable(state.fold),
     });
     for (const { label, options } of groups) {
       const g = document.createElement('optgroup');

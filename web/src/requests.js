@@ -41,6 +41,16 @@ export function sequenceJson(pattern, folds) {
   return { pattern, folds };
 }
 
+// Whether a computed fold (its POST /api/fold answer) can be exported as a motion, as the server
+// and `orikin export --animate` take it: a single-drive fold when valid; a fold mode (toward the
+// targets, several drives, symmetric) when it reached its goal or recorded a partial motion, never
+// against its assignment.
+export function foldMotionExportable(fold) {
+  if (!fold || !Array.isArray(fold.frames) || !fold.frames.length) return false;
+  if (!fold.mode) return fold.valid === true;
+  return fold.verdict !== 'invalid assignment' && (fold.verdict === 'reached' || fold.frames.length >= 2);
+}
+
 // The export menu's groups: [{label, options: [{value, label}]}]. Each format once for the
 // document, the pictures and the meshes; the motions only when there is one (the sequence's,
 // the fold's), so that a plain document lists glTF once.

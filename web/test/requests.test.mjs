@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import test from 'node:test';
-import { exportGroups, exportParams, foldBody, sequenceFold } from '../src/requests.js';
+import { exportGroups, exportParams, foldBody, foldMotionExportable, sequenceFold } from '../src/requests.js';
 
 test('a fold body: the fixed face is left out when none is chosen (the CLI default)', () => {
   const b = foldBody({ fix: -1, drive: 12, locks: new Set([11, 3]) }, { to: '90', step: '10', from: '', frame: 0 });
@@ -42,6 +42,18 @@ test('the export menu lists glTF once without a motion, and the motions only whe
   assert.deepEqual(seq[3].options.map((o) => o.value), ['gltf:sequence', 'glb:sequence', 'gif:sequence']);
   assert.equal(seq[3].options[0].label, 'glTF animation');
   assert.equal(exportGroups(FORMATS, { sequence: true, fold: true }).length, 5);
+});
+
+test('a fold is offered as a motion when the server exports it', () => {
+  const frames = [{}, {}, {}];
+  assert.equal(foldMotionExportable(null), false);
+  assert.equal(foldMotionExportable({ valid: true, verdict: 'valid', frames }), true);
+  assert.equal(foldMotionExportable({ valid: false, verdict: 'blocked', frames }), false);
+  assert.equal(foldMotionExportable({ mode: 'targets', valid: true, verdict: 'reached', frames }), true);
+  assert.equal(foldMotionExportable({ mode: 'targets', valid: false, verdict: 'stationary', frames }), true);
+  assert.equal(foldMotionExportable({ mode: 'targets', valid: false, verdict: 'stationary', frames: [{}] }), false);
+  assert.equal(foldMotionExportable({ mode: 'drives', valid: false, verdict: 'invalid assignment', frames }), false);
+  assert.equal(foldMotionExportable({ mode: 'drives', valid: true, verdict: 'reached', frames: [] }), false);
 });
 
 test('export parameters: a document has none, a picture of a state the camera, a mesh the colours', () => {
