@@ -50,7 +50,11 @@ static int parse(int argc, char **argv, collide_args *a)
             return cli_usage("collide", "one IN only");
         }
     }
-    return cli_state_finish("collide", &a->state);
+    rc = cli_state_finish("collide", &a->state);
+    if (rc == CLI_EXIT_OK && a->state.compliant)
+        return cli_usage("collide", "a compliant fold bends its faces, which collide checks as planar panels: orikin fold "
+                                    "--compliant warns of the faces that pass through each other at each load step");
+    return rc;
 }
 
 static void print_json(const collide_args *a, const cli_state *s, const ori_collider *c, const ori_collision_result *r,

@@ -71,6 +71,9 @@ static int run(int argc, char **argv)
         if (sa.has_at) return cli_usage(cmd, "--animate exports the whole sequence: --at picks one instant");
         if (sa.source == CLI_STATE_FRAME && sa.has_frame)
             return cli_usage(cmd, "--animate exports every frame of IN: --frame only starts a fold given with fold options");
+        if (sa.compliant)
+            return cli_usage(cmd, "--animate moves each face as a rigid node, and a compliant fold bends its faces: orikin "
+                                  "animate draws its motion; orikin fold --compliant --all-frames -o writes its states");
     }
     bool gltf = format == ORI_MESH_GLTF || format == ORI_MESH_GLB;
     if (color == 1 && !gltf) return cli_usage(cmd, "--color strain writes vertex colours (COLOR_0): use -o OUT.gltf or OUT.glb");
@@ -81,6 +84,7 @@ static int run(int argc, char **argv)
     cli_colors colors;
     memset(&colors, 0, sizeof colors);
     bool colored = color == 1;
+    if (color < 0 && gltf && !animate && st.compliant) colored = true; // (as a compliant fold's frame carries them)
     if (color < 0 && gltf && !animate && st.source == CLI_STATE_FRAME && st.doc) {
         const char *keys[2] = {"faces_orikin:strain", "edges_orikin:strain"};
         for (int k = 0; k < 2 && !colored; ++k) {

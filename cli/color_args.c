@@ -103,8 +103,21 @@ static int strain_of(const char *cmd, const char *path, const ori_pattern *p, co
     return CLI_EXIT_OK;
 }
 
+// The model's face strains of its recorded state k (malloc'd, face_count).
+static double *model_strains(const cli_state *st, int k)
+{
+    int F = ori_pattern_face_count(st->pattern);
+    double *v = malloc(sizeof(double) * (size_t)(F + 1));
+    memcpy(v, ori_compliant_frame_face_strains(st->compliant, k), sizeof(double) * (size_t)F);
+    return v;
+}
+
 static int strain_values(const char *cmd, const cli_state_args *a, const cli_state *st, cli_colors *out)
 {
+    if (st->compliant) {
+        out->face_values = model_strains(st, ori_compliant_frame_count(st->compliant) - 1);
+        return CLI_EXIT_OK;
+    }
     if (st->source != CLI_STATE_FRAME || !st->doc)
         return cli_input_fail(cmd, a->path, "--color strain needs a FOLD frame with strains (orikin fold FILE --compliant -o OUT.fold)");
     return strain_of(cmd, a->path, st->pattern, st->doc, a->frame, &out->face_values);
@@ -154,6 +167,7 @@ static int angle_values(const char *cmd, const cli_state_args *a, const cli_stat
         if (!st->has_flat) return cli_input_fail(cmd, a->path, "--color target-error needs the crease pattern's targets (frame 0)");
         int rc = fraction_of(cmd, a->path, st->source == CLI_STATE_FRAME ? st->doc : NULL, a->frame, &fraction);
         if (rc != CLI_EXIT_OK) return rc;
+        if (st->compliant) fraction = ori_compliant_fraction(st->compliant);
         target = malloc(sizeof(double) * (size_t)(E + 1));
         ori_target_angles_default(p, target);
     }
@@ -204,7 +218,14 @@ int cli_colors_motion(const char *cmd, const cli_state_args *a, const cli_state 
     bool from_frames = st->source == CLI_STATE_FRAME && st->doc && m->sources;
     size_t per = kind == CLI_COLOR_STRAIN ? (size_t)F : (size_t)E;
     double *all = malloc(sizeof(double) * (per * (size_t)m->count + 1));
-    if (kind == CLI_COLOR_STRAIN) {
+    if (kind == CLI_COLOR_STRAIN && st->compliant) {
+        for (int i = 0; i < m->count; ++i) {
+            double *v = model_strains(st, m->sources[i]);
+            memcpy(all + per * (size_t)i, v, sizeof(double) * per);
+            free(v);
+        }
+        out->face_values = all;
+    } else if (kind == CLI_COLOR_STRAIN) {
         if (!from_frames) {
             free(all);
             return cli_input_fail(cmd, a->path,
@@ -237,6 +258,7 @@ int cli_colors_motion(const char *cmd, const cli_state_args *a, const cli_state 
         for (int i = 0; i < m->count && rc == CLI_EXIT_OK; ++i) {
             double fraction = 1.0;
             if (error && from_frames) rc = fraction_of(cmd, a->path, st->doc, m->sources[i], &fraction);
+            if (error && st->compliant) fraction = ori_compliant_frame_fraction(st->compliant, m->sources[i]);
             if (rc == CLI_EXIT_OK) angle_of(p, m->angles + (size_t)i * (size_t)E, target, fraction, all + per * (size_t)i);
         }
         free(target);

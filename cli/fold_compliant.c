@@ -27,6 +27,54 @@ static int parse_positive(const char *cmd, const char *opt, const char *v, bool 
     return CLI_EXIT_OK;
 }
 
+int cli_compliant_option(const char *cmd, int argc, char **argv, int *i, cli_compliant_request *r, const char **fix,
+                         cli_seen *seen)
+{
+    const char *o = argv[*i], *v = NULL;
+    if (strcmp(o, "--compliant") == 0) return 1;
+    if (strcmp(o, "--dynamic") == 0) {
+        r->dynamic = true;
+        return 1;
+    }
+    static const char *const valued[] = {"--percent", "--fix",    "--preset", "--axial", "--facet",
+                                         "--crease",  "--damping", "--gravity", "--steps", "--threads"};
+    int k = 0;
+    while (k < 10 && strcmp(o, valued[k]) != 0) k++;
+    if (k == 10) return 0;
+    if (!(v = cli_option_once(cmd, argc, argv, i, seen))) return -CLI_EXIT_USAGE;
+    int rc = CLI_EXIT_OK;
+    if (strcmp(o, "--percent") == 0) {
+        if (!cli_parse_double(v, &r->percent) || !(r->percent >= 0.0 && r->percent <= 100.0))
+            rc = cli_usage(cmd, "--percent needs a number from 0 to 100, got '%s'", v);
+    } else if (strcmp(o, "--fix") == 0) {
+        *fix = v;
+    } else if (strcmp(o, "--preset") == 0) {
+        if (strcmp(v, "origami-simulator") == 0) r->physical = false;
+        else if (strcmp(v, "physical") == 0) r->physical = true;
+        else rc = cli_usage(cmd, "--preset is origami-simulator or physical, got '%s'", v);
+    } else if (strcmp(o, "--axial") == 0) {
+        rc = parse_positive(cmd, o, v, false, &r->axial);
+        r->has_axial = true;
+    } else if (strcmp(o, "--facet") == 0) {
+        rc = parse_positive(cmd, o, v, true, &r->facet);
+        r->has_facet = true;
+    } else if (strcmp(o, "--crease") == 0) {
+        rc = parse_positive(cmd, o, v, true, &r->crease);
+        r->has_crease = true;
+    } else if (strcmp(o, "--damping") == 0) {
+        rc = parse_positive(cmd, o, v, true, &r->damping);
+        r->has_damping = true;
+    } else if (strcmp(o, "--gravity") == 0) {
+        if (!cli_parse_double(v, &r->gravity) || !isfinite(r->gravity))
+            rc = cli_usage(cmd, "--gravity needs a number, got '%s'", v);
+    } else if (strcmp(o, "--steps") == 0) {
+        if (!cli_parse_int(v, &r->steps) || r->steps <= 0) rc = cli_usage(cmd, "--steps needs a positive integer, got '%s'", v);
+    } else if (!cli_parse_int(v, &r->threads) || r->threads < 1 || r->threads > 64) {
+        rc = cli_usage(cmd, "--threads needs an integer from 1 to 64, got '%s'", v);
+    }
+    return rc == CLI_EXIT_OK ? 1 : -rc;
+}
+
 static int parse(int argc, char **argv, compliant_args *a)
 {
     const char *cmd = "fold";
@@ -35,54 +83,15 @@ static int parse(int argc, char **argv, compliant_args *a)
     cli_input_init(&a->input);
     cli_seen seen = {0};
     for (int i = 1; i < argc; ++i) {
-        const char *o = argv[i], *v = NULL;
+        const char *o = argv[i];
         int r = cli_input_option(cmd, argc, argv, &i, &a->input, &seen);
+        if (r == 0) r = cli_compliant_option(cmd, argc, argv, &i, &a->r, &a->fix, &seen);
         if (r < 0) return -r;
         if (r > 0) continue;
-        if (strcmp(o, "--compliant") == 0) continue;
-        if (strcmp(o, "--dynamic") == 0) a->r.dynamic = true;
-        else if (strcmp(o, "--json") == 0) a->json = true;
+        if (strcmp(o, "--json") == 0) a->json = true;
         else if (strcmp(o, "--all-frames") == 0) a->r.all_frames = true;
-        else if (strcmp(o, "--percent") == 0 || strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0 ||
-                 strcmp(o, "--fix") == 0 || strcmp(o, "--preset") == 0 || strcmp(o, "--axial") == 0 ||
-                 strcmp(o, "--facet") == 0 || strcmp(o, "--crease") == 0 || strcmp(o, "--damping") == 0 ||
-                 strcmp(o, "--gravity") == 0 || strcmp(o, "--steps") == 0 || strcmp(o, "--threads") == 0) {
-            if (!(v = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
-            int rc = CLI_EXIT_OK;
-            if (strcmp(o, "--percent") == 0) {
-                if (!cli_parse_double(v, &a->r.percent) || !(a->r.percent >= 0.0 && a->r.percent <= 100.0))
-                    return cli_usage(cmd, "--percent needs a number from 0 to 100, got '%s'", v);
-            } else if (o[1] == 'o' || strcmp(o, "--output") == 0) {
-                a->out = v;
-            } else if (strcmp(o, "--fix") == 0) {
-                a->fix = v;
-            } else if (strcmp(o, "--preset") == 0) {
-                if (strcmp(v, "origami-simulator") == 0) a->r.physical = false;
-                else if (strcmp(v, "physical") == 0) a->r.physical = true;
-                else return cli_usage(cmd, "--preset is origami-simulator or physical, got '%s'", v);
-            } else if (strcmp(o, "--axial") == 0) {
-                rc = parse_positive(cmd, o, v, false, &a->r.axial);
-                a->r.has_axial = true;
-            } else if (strcmp(o, "--facet") == 0) {
-                rc = parse_positive(cmd, o, v, true, &a->r.facet);
-                a->r.has_facet = true;
-            } else if (strcmp(o, "--crease") == 0) {
-                rc = parse_positive(cmd, o, v, true, &a->r.crease);
-                a->r.has_crease = true;
-            } else if (strcmp(o, "--damping") == 0) {
-                rc = parse_positive(cmd, o, v, true, &a->r.damping);
-                a->r.has_damping = true;
-            } else if (strcmp(o, "--gravity") == 0) {
-                if (!cli_parse_double(v, &a->r.gravity) || !isfinite(a->r.gravity))
-                    return cli_usage(cmd, "--gravity needs a number, got '%s'", v);
-            } else if (strcmp(o, "--steps") == 0) {
-                if (!cli_parse_int(v, &a->r.steps) || a->r.steps <= 0)
-                    return cli_usage(cmd, "--steps needs a positive integer, got '%s'", v);
-            } else if (strcmp(o, "--threads") == 0) {
-                if (!cli_parse_int(v, &a->r.threads) || a->r.threads < 1 || a->r.threads > 64)
-                    return cli_usage(cmd, "--threads needs an integer from 1 to 64, got '%s'", v);
-            }
-            if (rc != CLI_EXIT_OK) return rc;
+        else if (strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0) {
+            if (!(a->out = cli_option_once(cmd, argc, argv, &i, &seen))) return CLI_EXIT_USAGE;
         } else if (o[0] == '-' && o[1]) {
             return cli_usage(cmd, "unknown option '%s' with --compliant (see orikin fold -h)", o);
         } else if (!a->path) {

@@ -8,6 +8,15 @@
 #include <orikin/compliant.h>
 #include <orikin/fold.h>
 
+#include "cli.h"
+#include "report.h"
+
+// Offer argv[*i] to the compliant fold's options (--compliant, --dynamic, --percent, --fix (its
+// spec in *fix, resolved by the caller), --preset, --axial, --facet, --crease, --damping,
+// --gravity, --steps, --threads) into r: 1 when taken (*i past its value), 0 when not one, minus
+// the exit code after printing a usage error.
+int cli_compliant_option(const char *cmd, int argc, char **argv, int *i, cli_compliant_request *r, const char **fix,
+                         cli_seen *seen);
 // Whether --compliant is given.
 bool cli_fold_compliant_wanted(int argc, char **argv);
 // Run the compliant fold (argv[0] = "fold").

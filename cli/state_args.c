@@ -8,12 +8,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fold_compliant.h"
 #include "fold_modes.h"
 #include "progress.h"
 
 // The fold options (with a value), those of the modes included; --symmetric takes none.
-static const char *const fold_options[] = {"--fix",  "--drive",  "--to",      "--from",  "--step",
-                                           "--lock", "--solver", "--linear", "--percent", "--ratio"};
+static const char *const fold_options[] = {"--fix",    "--drive",  "--to",     "--from",    "--step",
+                                           "--lock",   "--solver", "--linear", "--percent", "--ratio",
+                                           // a compliant fold's (--compliant)
+                                           "--preset", "--axial",  "--facet",  "--crease",  "--damping",
+                                           "--gravity", "--steps", "--threads"};
 
 void cli_state_args_init(cli_state_args *a)
 {
@@ -59,7 +63,7 @@ int cli_state_option(const char *cmd, int argc, char **argv, int *i, cli_state_a
         a->has_at = true;
         return 1;
     }
-    bool flag = strcmp(o, "--symmetric") == 0;
+    bool flag = strcmp(o, "--symmetric") == 0 || strcmp(o, "--compliant") == 0 || strcmp(o, "--dynamic") == 0;
     if (flag || is_fold_option(o)) {
         for (int k = 2; k < a->fold_argc; ++k) // options and values: a value never starts with "--"
             if (strcmp(a->fold_argv[k], o) == 0) {
@@ -143,6 +147,26 @@ int cli_state_finish(const char *cmd, cli_state_args *a)
     }
     a->fold_argc_all = n;
     int rc;
+    if (cli_fold_compliant_wanted(n, a->fold_argv)) {
+        // The compliant fold of `orikin fold --compliant` (fold_compliant.c), from the flat sheet.
+        if (a->has_frame) return cli_usage(cmd, "--compliant folds the flat sheet of frame 0: it takes no --frame");
+        cli_compliant_request_init(&a->compliant_req);
+        cli_seen seen = {0};
+        for (int i = 2; i < n; ++i) {
+            int r = cli_compliant_option(cmd, n, a->fold_argv, &i, &a->compliant_req, &a->compliant_fix, &seen);
+            if (r < 0) return -r;
+            if (r == 0)
+                return cli_usage(cmd, "%s is not an option of a compliant fold (--compliant takes --percent, --fix, "
+                                      "--dynamic, --preset, --axial, --facet, --crease, --damping, --gravity, --steps, "
+                                      "--threads)", a->fold_argv[i]);
+        }
+        char mistake[200];
+        if (cli_compliant_request_error(&a->compliant_req, mistake, sizeof mistake)) return cli_usage(cmd, "%s", mistake);
+        a->compliant_req.all_frames = true; // every load step: the motion of animate and export --animate
+        a->compliant = true;
+        a->source = CLI_STATE_FOLD;
+        return CLI_EXIT_OK;
+    }
     if (cli_fold_modes_wanted(n, a->fold_argv)) {
         // Toward the targets, several drives, --lock auto, --symmetric: `orikin fold`'s modes
         // (fold_modes.c), parsed here for the usage errors and again when loading.
@@ -164,6 +188,7 @@ int cli_state_finish(const char *cmd, cli_state_args *a)
 void cli_state_free(cli_state *s)
 {
     ori_motion_destroy(s->motion);
+    ori_compliant_destroy(s->compliant);
     ori_record_destroy(s->record);
     ori_sequence_destroy(s->seq);
     if (s->modes) {
@@ -422,6 +447,41 @@ static int load_modes(const char *cmd, const cli_state_args *a, cli_state *s)
     return CLI_EXIT_OK;
 }
 
+// A compliant fold (--compliant): the model's state at the end of its load steps (or where the
+// explicit solver stopped), every load step kept for the motion. Its faces bend: no face poses.
+static int load_compliant(const char *cmd, const cli_state_args *a, cli_state *s)
+{
+    cli_input in;
+    cli_input_init(&in);
+    int rc = cli_input_load(cmd, a->path, &in, &s->doc, &s->pattern);
+    if (rc != CLI_EXIT_OK) return rc;
+    s->has_flat = true;
+    s->frame_count = 1;
+    cli_compliant_request r = a->compliant_req;
+    if (a->compliant_fix && (rc = cli_spec_face(cmd, a->path, s->pattern, "--fix", a->compliant_fix, &r.fix)) != CLI_EXIT_OK)
+        return rc;
+    ori_error err, why;
+    bool reached = false;
+    int steps = 0;
+    cli_progress bar;
+    cli_progress_begin(&bar, cmd, r.dynamic ? "compliant fold: explicit dynamics" : "compliant fold: static equilibrium");
+    ori_status st = cli_compliant_solve(s->pattern, &r, &s->compliant, &reached, &steps, &why, &err);
+    cli_progress_end(&bar);
+    if (st != ORI_OK) return cli_input_error(cmd, a->path, &err);
+    double fraction = ori_compliant_fraction(s->compliant);
+    if (!reached)
+        fprintf(stderr, "orikin %s: note: %s: the compliant fold stops short (%s); showing where it stops, %.3g %% of the way\n",
+                cmd, a->path, why.message, 100.0 * fraction);
+    int V = ori_pattern_vertex_count(s->pattern), E = ori_pattern_edge_count(s->pattern);
+    s->positions = xcalloc((size_t)V, sizeof(ori_v3));
+    s->angles = xcalloc((size_t)E, sizeof(double));
+    memcpy(s->positions, ori_compliant_positions(s->compliant), sizeof(ori_v3) * (size_t)V);
+    for (int e = 0; e < E; ++e) s->angles[e] = ori_compliant_fold_angle(s->compliant, e);
+    s->folded = true;
+    snprintf(s->label, sizeof s->label, "compliant fold, %.6g %% of the way to the targets", 100.0 * fraction);
+    return CLI_EXIT_OK;
+}
+
 static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
 {
     int rc = cli_kin_load(cmd, a->fold.path, a->fold.frame, &s->kin);
@@ -532,7 +592,7 @@ int cli_state_load(const char *cmd, const cli_state_args *a, bool need_pose, cli
     s->args = a;
     int rc;
     switch (a->source) {
-    case CLI_STATE_FOLD: rc = a->modes ? load_modes(cmd, a, s) : load_fold(cmd, a, s); break;
+    case CLI_STATE_FOLD: rc = a->compliant ? load_compliant(cmd, a, s) : a->modes ? load_modes(cmd, a, s) : load_fold(cmd, a, s); break;
     case CLI_STATE_SEQUENCE: rc = load_sequence(cmd, a, s); break;
     case CLI_STATE_FRAME:
     default: rc = load_frame(cmd, a, need_pose, s); break;
@@ -546,7 +606,7 @@ int cli_state_collisions(const char *cmd, const cli_state *s, const cli_collide_
     memset(out, 0, sizeof *out);
     if (s->source == CLI_STATE_SEQUENCE)
         return cli_collide_record(cmd, s->path, o, s->pattern, s->record, out);
-    if (s->source != CLI_STATE_FOLD) return CLI_EXIT_OK;
+    if (s->source != CLI_STATE_FOLD || s->compliant) return CLI_EXIT_OK; // (the model warns of its own contacts)
     if (s->modes) {
         int nlocks;
         const int *locks = cli_fold_modes_locks(s->modes, &nlocks);
@@ -673,6 +733,38 @@ static int motion_of_modes(const char *cmd, cli_state *s, int samples, cli_motio
     return st == ORI_OK ? CLI_EXIT_OK : cli_input_error(cmd, s->path, &err);
 }
 
+// A compliant fold: the model's recorded states (its load steps, from the flat sheet) timed by
+// their fraction of the way (0 … 1), or samples states at evenly spaced fractions, each the
+// recorded state nearest to it (the model holds nothing between its steps); sources: the state's
+// index in the model. No face poses: the faces bend.
+static int motion_of_compliant(const char *cmd, cli_state *s, int samples, cli_motion *m)
+{
+    const ori_compliant *c = s->compliant;
+    int n = ori_compliant_frame_count(c);
+    if (n < 2)
+        return cli_input_fail(cmd, s->path, "the compliant fold recorded one state: nothing to animate (a static fold records "
+                                            "its load steps; --dynamic its end)");
+    int V = ori_pattern_vertex_count(s->pattern), E = ori_pattern_edge_count(s->pattern), F = ori_pattern_face_count(s->pattern);
+    int count = samples >= 2 ? samples : n;
+    cli_motion_alloc(m, count, V, F, E, false, true);
+    m->sources = xcalloc((size_t)count, sizeof(int));
+    double f0 = ori_compliant_frame_fraction(c, 0), f1 = ori_compliant_frame_fraction(c, n - 1);
+    int j = 0;
+    for (int i = 0; i < count; ++i) {
+        double t = samples >= 2 ? f0 + (f1 - f0) * i / (count - 1) : ori_compliant_frame_fraction(c, i);
+        if (samples >= 2)
+            while (j + 1 < n && fabs(ori_compliant_frame_fraction(c, j + 1) - t) <= fabs(ori_compliant_frame_fraction(c, j) - t))
+                j++;
+        int k = samples >= 2 ? j : i;
+        m->times[i] = t;
+        m->sources[i] = k;
+        memcpy(m->positions + (size_t)i * V, ori_compliant_frame_positions(c, k), sizeof(ori_v3) * (size_t)V);
+        memcpy(m->angles + (size_t)i * E, ori_compliant_frame_angles(c, k), sizeof(double) * (size_t)E);
+    }
+    m->duration = m->times[count - 1] - m->times[0];
+    return CLI_EXIT_OK;
+}
+
 static int motion_of_sequence(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
     cli_progress pr;
@@ -687,7 +779,10 @@ int cli_state_motion(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
     memset(m, 0, sizeof *m);
     switch (s->source) {
-    case CLI_STATE_FOLD: return s->modes ? motion_of_modes(cmd, s, samples, m) : motion_of_fold(cmd, s, s->args, samples, m);
+    case CLI_STATE_FOLD:
+        return s->compliant ? motion_of_compliant(cmd, s, samples, m)
+               : s->modes   ? motion_of_modes(cmd, s, samples, m)
+                            : motion_of_fold(cmd, s, s->args, samples, m);
     case CLI_STATE_SEQUENCE: return motion_of_sequence(cmd, s, samples, m);
     case CLI_STATE_FRAME:
     default: return motion_of_frames(cmd, s, samples, m);

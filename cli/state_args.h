@@ -35,7 +35,12 @@
     "                       the modes of orikin fold (patterns with several degrees of freedom):\n"          \
     "                       the state is where that fold ends (its goal, or where it stops short,\n"       \
     "                       said on stderr); --fix is optional everywhere (default: the face at\n"       \
-    "                       the sheet's centre, named on stderr)\n"
+    "                       the sheet's centre, named on stderr)\n"                                        \
+    "  --compliant [--percent P] [--dynamic] [--fix F] [--preset NAME] [--axial K] [--facet K]\n"         \
+    "              [--crease K] [--damping Z] [--gravity G] [--steps N] [--threads N]\n"               \
+    "                       the compliant fold of orikin fold --compliant (bending panels): the\n"      \
+    "                       state is its equilibrium, the motion its load steps (not a glTF\n"        \
+    "                       animation: the faces bend); --color strain from the model\n"
 
 // Where the state comes from.
 typedef enum cli_state_source {
@@ -58,6 +63,9 @@ typedef struct cli_state_args {
     int fold_argc_all;                        // fold_argc with --frame added (cli_state_finish)
     bool modes;                               // the fold options use a mode of `orikin fold` (fold_modes.h):
                                               // --percent, several drives, --ratio, --lock auto, --symmetric
+    bool compliant;                           // --compliant: the bar-and-hinge model's fold (fold_compliant.h)
+    cli_compliant_request compliant_req;      // its request (parsed by cli_state_finish)
+    const char *compliant_fix;                // its --fix, resolved when loading (NULL: the model's default)
 } cli_state_args;
 
 void cli_state_args_init(cli_state_args *a);
@@ -102,6 +110,7 @@ typedef struct cli_state {
     ori_motion *motion;
     double start_drive_rad;  // a fold: the driven crease's angle where the motion starts
     struct cli_fold_modes *modes; // a fold in one of the modes: its solve (owns pattern and mechanism), else NULL
+    ori_compliant *compliant;     // a compliant fold: the model with its load steps (or explicit end), else NULL
 } cli_state;
 
 // Load the chosen state. need_pose = false skips posing a crease-pattern frame (the crease view

@@ -447,3 +447,92 @@ Test(cli, a_command_with_several_outputs_writes_all_or_none)
     free(now), free(pic);
     test_tmpdir_remove(dir);
 }
+
+// The whole file's bytes (malloc'd; *n its size).
+static char *file_bytes(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    cr_assert_not_null(f, "%s was written", path);
+    fseek(f, 0, SEEK_END);
+    long size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *b = malloc((size_t)size + 1);
+    cr_assert_eq(fread(b, 1, (size_t)size, f), (size_t)size);
+    fclose(f);
+    *n = (size_t)size;
+    return b;
+}
+
+static void assert_same_file(const char *a, const char *b, const char *what)
+{
+    size_t na, nb;
+    char *x = file_bytes(a, &na), *y = file_bytes(b, &nb);
+    cr_assert(na == nb && memcmp(x, y, na) == 0, "%s: %s (%zu bytes) and %s (%zu bytes) differ", what, a, na, b, nb);
+    free(x);
+    free(y);
+}
+
+// --compliant is a state of render, export and animate as of fold (issue 23): the picture and the
+// mesh are, byte for byte, those of the frame `orikin fold --compliant -o` writes; animate draws
+// the load steps with one strain bar over them, as it draws the frames of --all-frames -o.
+Test(cli, a_compliant_fold_is_a_state_of_render_export_and_animate)
+{
+    char *dir = test_tmpdir();
+    char cmd[1024], *out = NULL;
+#define CORNER "examples/patterns/open-corner.fold --compliant --percent 40"
+    snprintf(cmd, sizeof cmd, "fold " CORNER " -o %s/bent.fold", dir);
+    cr_assert_eq(test_run_cli(cmd, &out), 0, "%s", out);
+    free(out);
+    snprintf(cmd, sizeof cmd, "fold " CORNER " --all-frames -o %s/steps.fold", dir);
+    cr_assert_eq(test_run_cli(cmd, &out), 0, "%s", out);
+    free(out);
+    static const char *const cases[][3] = {
+        {"render %s/bent.fold --frame 1 --color strain -o %s/a.png", "render " CORNER " --color strain -o %s/b.png", "png"},
+        {"render %s/bent.fold --frame 1 --yaw 30 -o %s/a.svg", "render " CORNER " --yaw 30 -o %s/b.svg", "svg"},
+        {"export %s/bent.fold --frame 1 -o %s/a.glb", "export " CORNER " -o %s/b.glb", "glb"},
+        {"export %s/bent.fold --frame 1 -o %s/a.stl", "export " CORNER " -o %s/b.stl", "stl"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        char a[512], b[512];
+        snprintf(cmd, sizeof cmd, cases[i][0], dir, dir);
+        cr_assert_eq(test_run_cli(cmd, &out), 0, "%s: %s", cmd, out);
+        free(out);
+        snprintf(cmd, sizeof cmd, cases[i][1], dir);
+        cr_assert_eq(test_run_cli(cmd, &out), 0, "%s: %s", cmd, out);
+        if (i == 2) cr_assert(strstr(out, "COLOR_0 by strain from 0 to 0.02378"), "a glTF of a compliant fold is coloured by strain: %s", out);
+        free(out);
+        snprintf(a, sizeof a, "%s/a.%s", dir, cases[i][2]);
+        snprintf(b, sizeof b, "%s/b.%s", dir, cases[i][2]);
+        assert_same_file(a, b, cmd);
+    }
+    // the motion: its load steps, one bar over all of them, as the frames written with --all-frames
+    char *written = NULL;
+    snprintf(cmd, sizeof cmd, "animate %s/steps.fold --color strain --fps 4 --duration 1 --size 80x60 -o %s/a.gif", dir, dir);
+    cr_assert_eq(test_run_cli(cmd, &written), 0, "%s", written);
+    snprintf(cmd, sizeof cmd, "animate " CORNER " --color strain --fps 4 --duration 1 --size 80x60 -o %s/b.gif", dir);
+    cr_assert_eq(test_run_cli(cmd, &out), 0, "%s", out);
+    const char *bar = "5 frames of ";
+    cr_assert(strstr(out, bar) && strstr(written, bar), "%s / %s", out, written);
+    const char *range = "strain of 5 faces from 0 to 0.02378 over the motion";
+    cr_assert(strstr(out, range) && strstr(written, range), "one bar over the load steps: %s / %s", out, written);
+    free(out);
+    free(written);
+    // what a compliant fold is not: a rigid node animation, planar panels to collide, a drive
+    static const char *const refused[][2] = {
+        {"export " CORNER " --animate -o %s/x.glb", "a compliant fold bends its faces"},
+        {"collide " CORNER, "a compliant fold bends its faces"},
+        {"render " CORNER " --drive 3 -o %s/x.png", "--drive is not an option of a compliant fold"},
+        {"render " CORNER " --frame 1 -o %s/x.png", "--compliant folds the flat sheet of frame 0"},
+    };
+    for (size_t i = 0; i < sizeof refused / sizeof refused[0]; ++i) {
+        snprintf(cmd, sizeof cmd, refused[i][0], dir);
+        cr_assert_eq(test_run_cli(cmd, &out), 2, "%s: %s", cmd, out);
+        cr_assert(strstr(out, refused[i][1]), "%s: %s", cmd, out);
+        free(out);
+        char x[512];
+        snprintf(x, sizeof x, "%s/x.glb", dir);
+        cr_assert_neq(access(x, F_OK), 0, "nothing written");
+    }
+#undef CORNER
+    test_tmpdir_remove(dir);
+}

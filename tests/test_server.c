@@ -1774,17 +1774,18 @@ static void assert_export_equals(studio *s, const char *query, const char *args,
 // options become POST /api/fold (the picture or mesh of the fold's last state, or with --animate
 // and animate its motion), --at T and --frame N name the state (a sequence's end without them),
 // its drawing options the query's fields, and -o's suffix the format. A texture is the CLI's only
-// (the studio draws without one): such an example is counted, not compared.
+// (the studio draws without one), and the studio exports no compliant state yet: such examples
+// are counted, not compared.
 Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_the_studio)
 {
     static doc_example ex[64];
     static const char *const commands[] = {"render", "export", "animate", NULL};
-    int n = doc_examples(ex, 64, commands), compared = 0, textured = 0, modes = 0;
+    int n = doc_examples(ex, 64, commands), compared = 0, textured = 0, modes = 0, compliants = 0;
     char *dir = test_tmpdir();
     for (int i = 0; i < n; ++i) {
         doc_example *e = &ex[i];
         const char *cmd = e->tok[1], *file = e->tok[2];
-        bool seq = strstr(file, ".seq.json") != NULL, animate = strcmp(cmd, "animate") == 0, skip = false;
+        bool seq = strstr(file, ".seq.json") != NULL, animate = strcmp(cmd, "animate") == 0, skip = false, compliant = false;
         char args[1024], query[512] = "", state[64] = "", ext[16] = "";
         size_t w = (size_t)snprintf(args, sizeof args, "%s %s ", cmd, file), q = 0;
         json_t *body = json_object();
@@ -1804,6 +1805,10 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
                 continue;
             }
             if (strcmp(t, "--texture") == 0) skip = true;
+            if (strcmp(t, "--compliant") == 0) { // (the studio exports no compliant state yet)
+                compliant = true;
+                break;
+            }
             int used = seq ? 0 : fold_option_json(body, t, v);
             if (used == 0) {
                 static const char *const valued[] = {"yaw", "pitch", "roll", "camera", "front", "back", "size", "view",
@@ -1833,12 +1838,12 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
             w += (size_t)snprintf(args + w, sizeof args - w, " ");
             k += used - 1;
         }
-        cr_assert(ext[0], "%s: %s: the example writes a file (-o)", e->where, e->text);
-        if (skip) {
-            textured++;
+        if (compliant || skip) {
+            compliant ? compliants++ : textured++;
             json_decref(body);
             continue;
         }
+        cr_assert(ext[0], "%s: %s: the example writes a file (-o)", e->where, e->text);
         bool fold = json_object_size(body) > 0 && !(json_object_size(body) == 1 && json_object_get(body, "frame"));
         json_t *frame = json_object_get(body, "frame");
         if (!fold && frame) snprintf(state, sizeof state, "&frame=%d", (int)json_integer_value(frame));
@@ -1870,7 +1875,8 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
     // picture and crease pattern; the waterbomb base toward its targets)
     cr_assert_geq(compared, 8, "%d examples compared", compared);
     cr_assert_geq(modes, 2, "%d examples of a fold toward the targets", modes);
-    cr_log_info("%d examples give the same files (%d of a fold mode); %d with a texture not compared", compared, modes, textured);
+    cr_log_info("%d examples give the same files (%d of a fold mode); not compared: %d with a texture, %d of a compliant "
+                "fold (the studio exports no compliant state yet)", compared, modes, textured, compliants);
     test_tmpdir_remove(dir);
 }
 
