@@ -481,6 +481,11 @@ static void import_warnings(const char *cmd, const char *path, const ori_pattern
                 "size (%.3g), within the width its lines are drawn with (%.3g): --gaps 0 keeps them apart\n",
                 cmd, path, s->gaps_closed, s->largest_gap_rel, s->largest_gap_rel / s->gap_rel * s->stroke_width,
                 s->stroke_width);
+    if (s->short_creases_merged > 0)
+        fprintf(stderr,
+                "orikin %s: %s: note: merged the ends of %d crease(s) shorter than the width its lines are drawn with "
+                "(%.3g): lines meeting a hair beside a vertex meet at it (--gaps 0 keeps them)\n",
+                cmd, path, s->short_creases_merged, s->stroke_width);
     if (s->clipped > 0)
         fprintf(stderr,
                 "orikin %s: %s: note: clipped the creases drawn past the border: %d crease piece(s) outside the sheet "

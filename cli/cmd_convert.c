@@ -14,6 +14,7 @@ static json_t *import_json(const ori_import_stats *s)
     json_object_set_new(o, "stroke_width", json_real(s->stroke_width));
     json_object_set_new(o, "gap_rel", json_real(s->gap_rel));
     json_object_set_new(o, "gaps_closed", json_integer(s->gaps_closed));
+    json_object_set_new(o, "short_creases_merged", json_integer(s->short_creases_merged));
     json_object_set_new(o, "largest_gap_rel", json_real(s->largest_gap_rel));
     json_object_set_new(o, "dangling", json_integer(s->dangling));
     json_object_set_new(o, "dangling_example", s->dangling_example >= 0 ? json_integer(s->dangling_example) : json_null());
@@ -159,6 +160,7 @@ const cli_command cli_cmd_convert = {
     "  --json             print {input, output, format, frame, vertices, edges, faces,\n"
     "                     edges_by_assignment, import: {segments, ignored_elements,\n"
     "                     unsupported_elements, stroke_width, gap_rel, gaps_closed,\n"
+    "                     short_creases_merged,\n"
     "                     largest_gap_rel, dangling, dangling_example, parts, part_example}}\n"
     "\n"
     "example: orikin convert birdBase.svg bird.fold\n",

@@ -128,6 +128,7 @@ typedef struct ori_import_stats {
     double healed_weld_rel;  ///< the weld tolerance the import used instead of def's to join a split sheet (def heal_splits; within the drawn line width), 0 when not
     int healed_sheets;       ///< the pieces the paper was in before (when healed)
     double split_tolerance_rel; ///< ori_import_file: the smallest weld tolerance (a doubling of def's, up to the line width) that joins the split pieces; 0 when none or not split
+    int short_creases_merged;   ///< creases shorter than the gap (the drawn line width) contracted: their two ends made one vertex
 } ori_import_stats;
 
 /// Read an SVG document (text of size bytes) into segments: stroke colour → assignment, stroke

@@ -525,6 +525,79 @@ static ori_segment *close_gaps(const ori_pattern *p, double gap, int *n, int *cl
     return segs;
 }
 
+static int uf_find(int *parent, int v)
+{
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+}
+
+// Creases shorter than gap, the drawn line width, between a vertex of three or more lines and a
+// pass-through vertex of two creases (lines that meet a hair beside a vertex, welded onto a
+// crease there, cut a sliver off it whose far end joins, say, a mountain to a valley on one
+// line): their ends touch on the page, so they are one vertex, where the lines meet. Shortest
+// first. Returns the segments of the result (NULL when none is contracted) with their count in
+// *n and the creases contracted in *contracted.
+static ori_segment *contract_short(const ori_pattern *p, double gap, int *n, int *contracted)
+{
+    *n = *contracted = 0;
+    int nv = p->vertex_count, ne = p->edge_count;
+    int *order = NULL, count = 0;
+    for (int e = 0; e < ne; ++e) {
+        const ori_edge *ed = &p->edges[e];
+        if (is_cut_or_boundary(ed->assignment)) continue;
+        if (ori_v2_norm(ori_v2_sub(ori__pattern_v2(p, ed->v[0]), ori__pattern_v2(p, ed->v[1]))) > gap) continue;
+        if (!order) order = ori__alloc(sizeof(int) * (size_t)ne);
+        order[count++] = e;
+    }
+    if (count == 0) return NULL;
+    int *deg = ori__alloc(sizeof(int) * (size_t)nv), *parent = ori__alloc(sizeof(int) * (size_t)nv);
+    char *on_border = ori__calloc((size_t)nv, 1);
+    ori_v2 *at = ori__alloc(sizeof(ori_v2) * (size_t)nv);
+    vertex_degrees(p, deg);
+    for (int v = 0; v < nv; ++v) parent[v] = v, at[v] = ori__pattern_v2(p, v);
+    for (int e = 0; e < ne; ++e)
+        if (is_cut_or_boundary(p->edges[e].assignment)) on_border[p->edges[e].v[0]] = on_border[p->edges[e].v[1]] = 1;
+    // shortest first (insertion sort: such creases are few)
+    for (int i = 1; i < count; ++i) {
+        int e = order[i], j = i;
+        double l = ori_v2_norm(ori_v2_sub(at[p->edges[e].v[0]], at[p->edges[e].v[1]]));
+        while (j > 0 && ori_v2_norm(ori_v2_sub(at[p->edges[order[j - 1]].v[0]], at[p->edges[order[j - 1]].v[1]])) > l) {
+            order[j] = order[j - 1];
+            j--;
+        }
+        order[j] = e;
+    }
+    for (int i = 0; i < count; ++i) {
+        int a = uf_find(parent, p->edges[order[i]].v[0]), b = uf_find(parent, p->edges[order[i]].v[1]);
+        if (a == b || ori_v2_norm(ori_v2_sub(at[a], at[b])) > gap) continue;
+        // only the sliver's pass-through end goes: a vertex of two creases (which no fold turns
+        // there), merged into a vertex of three or more lines
+        int from = deg[a] == 2 && !on_border[a] && deg[b] >= 3 ? a : deg[b] == 2 && !on_border[b] && deg[a] >= 3 ? b : -1;
+        if (from < 0) continue;
+        int into = from == a ? b : a;
+        parent[from] = into;
+        deg[into] += deg[from] - 2;
+        (*contracted)++;
+    }
+    ori_segment *segs = NULL;
+    if (*contracted > 0) {
+        segs = ori__alloc(sizeof(ori_segment) * (size_t)ne);
+        for (int e = 0; e < ne; ++e) {
+            const ori_edge *ed = &p->edges[e];
+            int a = uf_find(parent, ed->v[0]), b = uf_find(parent, ed->v[1]);
+            if (a == b) continue;
+            ori_segment sg = {at[a], at[b], ed->assignment, ed->fold_angle_rad};
+            segs[(*n)++] = sg;
+        }
+    }
+    ori__free(order);
+    ori__free(deg);
+    ori__free(parent);
+    ori__free(on_border);
+    ori__free(at);
+    return segs;
+}
+
 // Creases drawn past the border (a drawing's lines overshooting its outline) make faces outside
 // the sheet, joined to it only across the border: the sheet "falls apart" when folded. Faces
 // reached from outside the drawing across creases (not B or C edges) lie outside the sheet;
@@ -662,6 +735,7 @@ static void copy_planarised(ori_import_stats *dst, const ori_import_stats *src)
     dst->part_example = src->part_example;
     dst->clipped = src->clipped;
     dst->clipped_faces = src->clipped_faces;
+    dst->short_creases_merged = src->short_creases_merged;
     dst->sheets = src->sheets;
     dst->split_vertex = src->split_vertex;
 }
@@ -714,6 +788,23 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         st = n > 0 ? pipeline(fixed, n, def, weld, &p, error) : ori__fail(error, ORI_ERR_NOT_FOUND, "no crease lines in the drawing");
         ori__free(fixed);
     }
+    // Creases shorter than the drawn line width: their ends are one vertex on the page.
+    int contracted = 0;
+    if (st == ORI_OK && gap_rel * diag > weld) {
+        int n;
+        ori_segment *merged = contract_short(p, gap_rel * diag, &n, &contracted);
+        if (merged) {
+            ori_pattern *q = NULL;
+            ori_status sq = n > 0 ? pipeline(merged, n, def, weld, &q, NULL) : ORI_ERR_NOT_FOUND;
+            ori__free(merged);
+            if (sq == ORI_OK) { // (else the pattern as it was: contracting would break it)
+                ori_pattern_destroy(p);
+                p = q;
+            } else {
+                contracted = 0;
+            }
+        }
+    }
     // Creases drawn past the border: clipped at it (the faces outside the sheet are dropped).
     int clipped = 0, clipped_faces = 0;
     if (st == ORI_OK) {
@@ -745,6 +836,7 @@ static ori_status to_pattern(const ori_segment *segs, int count, const ori_impor
         stats->largest_gap_rel = largest / diag;
         stats->clipped = clipped;
         stats->clipped_faces = clipped_faces;
+        stats->short_creases_merged = contracted;
         diagnose(p, diag, stats);
         stats->split_tolerance_rel = 0.0;
         stats->healed_weld_rel = 0.0;
