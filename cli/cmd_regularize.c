@@ -114,7 +114,11 @@ static int run(int argc, char **argv)
                    "%.3g deg%s\n",
                    r.ties, r.parallels_kept ? ", parallel edges" : "", deg(r.equal_tolerance_rad),
                    r.sides_moved ? "; its corners and sides moved too (they missed them by that much)" : "");
-        if (rigid)
+        if (rigid && rigid_only) // (the mode relations need Kawasaki: every vertex is held to first order)
+            printf("  rigid: first- and second-order closure at all %d interior vertices (the assigned modes "
+                   "need Kawasaki); defect %.3g before, %.3g after\n",
+                   r.interior_vertices, r.rigid_before, r.rigid_after);
+        else if (rigid)
             printf("  rigid: %d degree-4 vertices in their assigned mode, %d to second order; defect %.3g before, "
                    "%.3g after\n",
                    r.mode_vertices, r.interior_vertices - r.mode_vertices, r.rigid_before, r.rigid_after);
