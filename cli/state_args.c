@@ -733,35 +733,11 @@ static int motion_of_modes(const char *cmd, cli_state *s, int samples, cli_motio
     return st == ORI_OK ? CLI_EXIT_OK : cli_input_error(cmd, s->path, &err);
 }
 
-// A compliant fold: the model's recorded states (its load steps, from the flat sheet) timed by
-// their fraction of the way (0 … 1), or samples states at evenly spaced fractions, each the
-// recorded state nearest to it (the model holds nothing between its steps); sources: the state's
-// index in the model. No face poses: the faces bend.
+// A compliant fold: its load steps (cli_motion_of_compliant).
 static int motion_of_compliant(const char *cmd, cli_state *s, int samples, cli_motion *m)
 {
-    const ori_compliant *c = s->compliant;
-    int n = ori_compliant_frame_count(c);
-    if (n < 2)
-        return cli_input_fail(cmd, s->path, "the compliant fold recorded one state: nothing to animate (a static fold records "
-                                            "its load steps; --dynamic its end)");
-    int V = ori_pattern_vertex_count(s->pattern), E = ori_pattern_edge_count(s->pattern), F = ori_pattern_face_count(s->pattern);
-    int count = samples >= 2 ? samples : n;
-    cli_motion_alloc(m, count, V, F, E, false, true);
-    m->sources = xcalloc((size_t)count, sizeof(int));
-    double f0 = ori_compliant_frame_fraction(c, 0), f1 = ori_compliant_frame_fraction(c, n - 1);
-    int j = 0;
-    for (int i = 0; i < count; ++i) {
-        double t = samples >= 2 ? f0 + (f1 - f0) * i / (count - 1) : ori_compliant_frame_fraction(c, i);
-        if (samples >= 2)
-            while (j + 1 < n && fabs(ori_compliant_frame_fraction(c, j + 1) - t) <= fabs(ori_compliant_frame_fraction(c, j) - t))
-                j++;
-        int k = samples >= 2 ? j : i;
-        m->times[i] = t;
-        m->sources[i] = k;
-        memcpy(m->positions + (size_t)i * V, ori_compliant_frame_positions(c, k), sizeof(ori_v3) * (size_t)V);
-        memcpy(m->angles + (size_t)i * E, ori_compliant_frame_angles(c, k), sizeof(double) * (size_t)E);
-    }
-    m->duration = m->times[count - 1] - m->times[0];
+    ori_error err;
+    if (cli_motion_of_compliant(s->compliant, samples, m, &err) != ORI_OK) return cli_input_fail(cmd, s->path, "%s", err.message);
     return CLI_EXIT_OK;
 }
 

@@ -729,6 +729,19 @@ Test(server, compliant_fold_equals_cli_json)
         json_decref(api);
         json_decref(cli);
     }
+    // the last compliant fold is a state and a motion of the export until the document changes
+    studio_response shot = call(s, "GET", "/api/export", "format=png&compliant=1&size=64x48", NULL);
+    cr_assert_eq(shot.status, 200, "%.300s", shot.body);
+    studio_response_free(&shot);
+    studio_response anim = call(s, "GET", "/api/export", "format=gif&of=compliant&fps=2&duration=1&size=64x48", NULL);
+    cr_assert_eq(anim.status, 200, "%.300s", anim.body);
+    cr_assert_str_eq(anim.filename, "open-corner-compliant.gif");
+    studio_response_free(&anim);
+    json_decref(call_json(s, "POST", "/api/new", NULL, "{\"square\": 1}", 200));
+    studio_response gone = call(s, "GET", "/api/export", "format=png&compliant=1", NULL);
+    cr_assert_eq(gone.status, 409, "a new document has no compliant fold: %d", gone.status);
+    studio_response_free(&gone);
+    json_decref(call_json(s, "POST", "/api/undo", NULL, NULL, 200));
     expect_refused(s, "POST", "/api/compliant", "{\"percent\": 120}", "--percent needs a number from 0 to 100, got '120'");
     expect_refused(s, "POST", "/api/compliant", "{\"fix\": 99}", "fix: a face index");
     expect_refused(s, "POST", "/api/compliant", "{\"percent\": 10, \"stiff\": 1}", "stiff");
@@ -846,6 +859,12 @@ Test(server, bad_requests_leave_the_document_unchanged)
         {"GET", "/api/export", "format=gif&of=sequence&fps=100", NULL, 400},
         {"GET", "/api/export", "format=gif&of=sequence&duration=0", NULL, 400},
         {"GET", "/api/export", "format=gif&of=sequence&view=cp", NULL, 400},
+        {"GET", "/api/export", "format=png&compliant=1", NULL, 409},
+        {"GET", "/api/export", "format=png&compliant=2", NULL, 400},
+        {"GET", "/api/export", "format=png&compliant=1&t=1", NULL, 400},
+        {"GET", "/api/export", "format=png&color=strain", NULL, 400},
+        {"GET", "/api/export", "format=glb&of=compliant", NULL, 400},
+        {"GET", "/api/export", "format=gif&of=compliant", NULL, 409},
         {"GET", "/api/export", "format=gif&of=sequence&t=1", NULL, 400},
         {"GET", "/api/check", "tolerance_deg=2", NULL, 400},
         {"GET", "/api/check", "tolerance_deg=x", NULL, 400},
@@ -1773,9 +1792,9 @@ static void assert_export_equals(studio *s, const char *query, const char *args,
 // file is in the repository gives the same bytes through GET /api/export (issue 22): its fold
 // options become POST /api/fold (the picture or mesh of the fold's last state, or with --animate
 // and animate its motion), --at T and --frame N name the state (a sequence's end without them),
-// its drawing options the query's fields, and -o's suffix the format. A texture is the CLI's only
-// (the studio draws without one), and the studio exports no compliant state yet: such examples
-// are counted, not compared.
+// its drawing options the query's fields, and -o's suffix the format; a compliant fold's options
+// become POST /api/compliant (its end compliant=1, its load steps of=compliant). A texture is the
+// CLI's only (the studio draws without one): such an example is counted, not compared.
 Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_the_studio)
 {
     static doc_example ex[64];
@@ -1805,11 +1824,18 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
                 continue;
             }
             if (strcmp(t, "--texture") == 0) skip = true;
-            if (strcmp(t, "--compliant") == 0) { // (the studio exports no compliant state yet)
+            if (strcmp(t, "--compliant") == 0) { // POST /api/compliant, then its state or motion
                 compliant = true;
-                break;
+                w += (size_t)snprintf(args + w, sizeof args - w, "%s ", t);
+                continue;
             }
-            int used = seq ? 0 : fold_option_json(body, t, v);
+            if (strcmp(t, "--color") == 0) {
+                q += (size_t)snprintf(query + q, sizeof query - q, "&color=%s", v);
+                w += (size_t)snprintf(args + w, sizeof args - w, "%s %s ", t, v);
+                k++;
+                continue;
+            }
+            int used = seq ? 0 : compliant ? compliant_option_json(body, t, v) : fold_option_json(body, t, v);
             if (used == 0) {
                 static const char *const valued[] = {"yaw", "pitch", "roll", "camera", "front", "back", "size", "view",
                                                      "fps", "duration", "thickness", "texture", NULL};
@@ -1838,8 +1864,8 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
             w += (size_t)snprintf(args + w, sizeof args - w, " ");
             k += used - 1;
         }
-        if (compliant || skip) {
-            compliant ? compliants++ : textured++;
+        if (skip) {
+            textured++;
             json_decref(body);
             continue;
         }
@@ -1848,7 +1874,13 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
         json_t *frame = json_object_get(body, "frame");
         if (!fold && frame) snprintf(state, sizeof state, "&frame=%d", (int)json_integer_value(frame));
         studio *s = open_studio(file);
-        if (fold) {
+        if (compliant) {
+            char *b = json_dumps(body, JSON_COMPACT);
+            json_decref(call_json(s, "POST", "/api/compliant", NULL, b, 200));
+            free(b);
+            snprintf(state, sizeof state, "&compliant=1");
+            compliants++;
+        } else if (fold) {
             char *b = json_dumps(body, JSON_COMPACT);
             json_t *answer = call_json(s, "POST", "/api/fold", NULL, b, 200);
             free(b);
@@ -1864,7 +1896,8 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
         }
         const char *format = strcmp(ext, "svg") == 0 ? "svg-picture" : ext;
         char full[768];
-        snprintf(full, sizeof full, "format=%s%s%s", format, animate ? (seq ? "&of=sequence" : "&of=fold") : state, query);
+        snprintf(full, sizeof full, "format=%s%s%s", format,
+                 animate ? (compliant ? "&of=compliant" : seq ? "&of=sequence" : "&of=fold") : state, query);
         assert_export_equals(s, full, args, ext, dir);
         cr_log_info("same file: %s: orikin %s / GET /api/export?%s", e->where, args, full);
         compared++;
@@ -1875,8 +1908,9 @@ Test(server, the_docs_render_export_and_animate_examples_give_the_same_files_in_
     // picture and crease pattern; the waterbomb base toward its targets)
     cr_assert_geq(compared, 8, "%d examples compared", compared);
     cr_assert_geq(modes, 2, "%d examples of a fold toward the targets", modes);
-    cr_log_info("%d examples give the same files (%d of a fold mode); not compared: %d with a texture, %d of a compliant "
-                "fold (the studio exports no compliant state yet)", compared, modes, textured, compliants);
+    cr_assert_geq(compliants, 3, "%d examples of a compliant fold", compliants);
+    cr_log_info("%d examples give the same files (%d of a fold mode, %d of a compliant fold); %d with a texture not "
+                "compared", compared, modes, compliants, textured);
     test_tmpdir_remove(dir);
 }
 

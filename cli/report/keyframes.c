@@ -129,6 +129,39 @@ ori_status cli_motion_of_multifold(const ori_mechanism *mech, const ori_multifol
     return ORI_OK;
 }
 
+ori_status cli_motion_of_compliant(const ori_compliant *c, int samples, cli_motion *m, ori_error *err)
+{
+    memset(m, 0, sizeof *m);
+    int n = ori_compliant_frame_count(c);
+    if (n < 2) {
+        ori_error_clear(err);
+        err->status = ORI_ERR_RANGE;
+        snprintf(err->message, sizeof err->message,
+                 "the compliant fold recorded one state: nothing to animate (a static fold records its load steps; "
+                 "--dynamic its end)");
+        return err->status;
+    }
+    int V = ori_compliant_vertex_count(c), E = ori_compliant_edge_count(c), F = ori_compliant_face_count(c);
+    int count = samples >= 2 ? samples : n;
+    cli_motion_alloc(m, count, V, F, E, false, true);
+    m->sources = zalloc((size_t)count, sizeof(int));
+    double f0 = ori_compliant_frame_fraction(c, 0), f1 = ori_compliant_frame_fraction(c, n - 1);
+    int j = 0;
+    for (int i = 0; i < count; ++i) {
+        double t = samples >= 2 ? f0 + (f1 - f0) * i / (count - 1) : ori_compliant_frame_fraction(c, i);
+        if (samples >= 2)
+            while (j + 1 < n && fabs(ori_compliant_frame_fraction(c, j + 1) - t) <= fabs(ori_compliant_frame_fraction(c, j) - t))
+                j++;
+        int k = samples >= 2 ? j : i;
+        m->times[i] = t;
+        m->sources[i] = k;
+        memcpy(frame_positions(m, i), ori_compliant_frame_positions(c, k), sizeof(ori_v3) * (size_t)V);
+        memcpy(frame_angles(m, i), ori_compliant_frame_angles(c, k), sizeof(double) * (size_t)E);
+    }
+    m->duration = m->times[count - 1] - m->times[0];
+    return ORI_OK;
+}
+
 ori_status cli_motion_of_record(const ori_mechanism *mech, const ori_sequence *seq, const ori_record *r, int samples,
                                 ori_progress_fn *progress, void *user, cli_motion *m, ori_error *err)
 {

@@ -15,7 +15,7 @@
 // cli_modes_against_assignment, cli_modes_json, cli_modes_free, cli_compliant_request_init,
 // cli_compliant_request_error, cli_compliant_def, cli_compliant_solve, cli_compliant_contacts_json,
 // cli_compliant_json, cli_motion_alloc, cli_motion_free, cli_motion_of_fold,
-// cli_motion_of_multifold, cli_motion_of_record.
+// cli_motion_of_multifold, cli_motion_of_compliant, cli_motion_of_record.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -312,6 +312,12 @@ ori_status cli_motion_of_fold(const ori_mechanism *mech, const ori_motion_def *d
 ori_status cli_motion_of_multifold(const ori_mechanism *mech, const ori_multifold *mf, const int *locks, int nlocks,
                                    int fixed_face, int samples, ori_progress_fn *progress, void *user, cli_motion *m,
                                    ori_error *err);
+// A compliant fold solved with its frames kept (cli_compliant_request all_frames): its recorded
+// states (the load steps, from the flat sheet) timed by their fraction of the way (0 … 1), or
+// samples states at evenly spaced fractions, each the recorded state nearest to it (the model
+// holds nothing between its steps); sources: the state's index in the model; no face poses (the
+// faces bend). ORI_ERR_RANGE (said in *err) when the model recorded fewer than two states.
+ori_status cli_motion_of_compliant(const ori_compliant *c, int samples, cli_motion *m, ori_error *err);
 // A sequence run: its recorded states (samples < 2) or samples states evenly spaced over its
 // duration, each restored exactly (ori_record_at); one second per fold; the faces posed from each
 // fold's fixed face.

@@ -3,6 +3,7 @@
 // plus the vertex positions the studio draws and the faces' strain colours. Body: {percent, dynamic, preset, axial, facet,
 // crease, damping, gravity, steps, threads, fix (a face index or name)}, each optional.
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "studio_internal.h"
@@ -75,6 +76,23 @@ static json_t *strain_colors(const ori_compliant *c)
     return json_pack("{s:o,s:f,s:f,s:o}", "faces", faces, "min", map.min, "max", map.max, "ticks", lab);
 }
 
+void studio_cfold_unref(studio_cfold *f)
+{
+    if (!f || atomic_fetch_sub(&f->refs, 1) != 1) return;
+    ori_compliant_destroy(f->c);
+    studio_model_unref(f->model);
+    free(f);
+}
+
+studio_cfold *studio_cfold_get(studio *s)
+{
+    pthread_mutex_lock(&s->lock);
+    studio_cfold *f = s->compliant;
+    if (f) atomic_fetch_add(&f->refs, 1);
+    pthread_mutex_unlock(&s->lock);
+    return f;
+}
+
 void studio_api_compliant(studio *s, const studio_request *req, studio_response *out)
 {
     json_t *o = studio_body_object(req, out);
@@ -97,6 +115,7 @@ void studio_api_compliant(studio *s, const studio_request *req, studio_response 
     ori_error err, why;
     bool reached = false;
     int steps = 0;
+    r.all_frames = true; // its load steps: the motion of=compliant exports (as render / animate --compliant)
     ori_status st = cli_compliant_solve(model->pattern, &r, &c, &reached, &steps, &why, &err);
     if (st != ORI_OK) {
         studio_fail_error(out, studio_status_of(st), &err);
@@ -105,6 +124,19 @@ void studio_api_compliant(studio *s, const studio_request *req, studio_response 
         json_object_set_new(j, "version", json_integer(version));
         json_object_set_new(j, "strain_colors", strain_colors(c));
         studio_respond_json(out, 200, j);
+        studio_cfold *f = calloc(1, sizeof *f);
+        atomic_init(&f->refs, 1);
+        f->model = studio_model_ref(model);
+        f->c = c;
+        c = NULL;
+        pthread_mutex_lock(&s->lock);
+        if (s->version == version) { // (unless the document changed meanwhile)
+            studio_cfold_unref(s->compliant);
+            s->compliant = f;
+            f = NULL;
+        }
+        pthread_mutex_unlock(&s->lock);
+        studio_cfold_unref(f);
     }
     ori_compliant_destroy(c);
     studio_model_unref(model);

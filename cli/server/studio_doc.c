@@ -51,6 +51,8 @@ void studio_drop_results(studio *s)
     s->seq = NULL;
     studio_fold_unref(s->fold);
     s->fold = NULL;
+    studio_cfold_unref(s->compliant);
+    s->compliant = NULL;
 }
 
 static void push_step(studio_step *stack, int *count, const studio_step *st)

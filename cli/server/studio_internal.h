@@ -128,6 +128,7 @@ struct studio {
     bool recovery;               // a journal of an earlier session waits for recover or discard
     studio_seq *seq;             // the last sequence run on the current document
     studio_fold *fold;           // the last fold computed on the current document
+    struct studio_cfold *compliant; // the last compliant fold solved on it (POST /api/compliant)
 
     pthread_mutex_t job_lock;    // the one long computation allowed at a time
     bool busy;
@@ -274,7 +275,19 @@ typedef enum studio_state_kind {
     STUDIO_STATE_TIME,      // t: the sequence at time T
     STUDIO_STATE_FOLD,      // k: state k of the computed fold
     STUDIO_STATE_CONTACT,   // contact: "fold" or "sequence"
+    STUDIO_STATE_COMPLIANT, // compliant=1: the end of the last compliant fold (GET /api/export)
 } studio_state_kind;
+
+// The last compliant fold solved on the document (POST /api/compliant), with its load steps: its
+// end is a state (compliant=1) and its steps a motion (of=compliant) of GET /api/export.
+typedef struct studio_cfold {
+    atomic_int refs;
+    studio_model *model;
+    ori_compliant *c;
+} studio_cfold;
+void studio_cfold_unref(studio_cfold *f);
+// The document's compliant fold (a reference: studio_cfold_unref), or NULL.
+studio_cfold *studio_cfold_get(studio *s);
 
 typedef struct studio_state_ref {
     studio_state_kind kind;

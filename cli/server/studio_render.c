@@ -203,12 +203,62 @@ static void fail_render(studio_response *out, ori_status st, const ori_error *er
     studio_fail_error(out, st == ORI_ERR_INTERNAL || st == ORI_ERR_NOMEM ? 500 : 400, err);
 }
 
+// Strain colours (render / animate --color strain of --compliant): the faces' largest strain in
+// the compliant model's recorded states sources[0 … n − 1], into values (n × face_count, malloc'd),
+// and the bar's range over all of them.
+static double *strain_values(const ori_compliant *c, const int *sources, int n, ori_value_map *map)
+{
+    int F = ori_compliant_face_count(c);
+    double *v = xcalloc((size_t)n * (size_t)F, sizeof(double));
+    map->min = INFINITY;
+    map->max = -INFINITY;
+    for (int i = 0; i < n; ++i) {
+        memcpy(v + (size_t)i * F, ori_compliant_frame_face_strains(c, sources[i]), sizeof(double) * (size_t)F);
+        for (int f = 0; f < F; ++f) {
+            map->min = fmin(map->min, v[(size_t)i * F + f]);
+            map->max = fmax(map->max, v[(size_t)i * F + f]);
+        }
+    }
+    if (!(map->min <= map->max)) map->min = map->max = 0.0;
+    map->face_values = v;
+    map->edge_values = NULL;
+    return v;
+}
+
+// color=strain: false after a 400 (another quantity, or a state that is not a compliant fold's).
+static bool strain_asked(const studio_request *req, bool compliant, bool *asked, studio_response *out)
+{
+    const char *v = studio_arg_get(req, "color");
+    *asked = v != NULL;
+    if (v && strcmp(v, "strain") != 0) {
+        studio_fail(out, 400, "color: strain (the faces of a compliant fold; fold-angle and target-error are the CLI's)");
+        return false;
+    }
+    if (v && !compliant) {
+        studio_fail(out, 400, "color=strain colours a compliant fold: compliant=1 or of=compliant");
+        return false;
+    }
+    return true;
+}
+
+// The map of the compliant fold's last recorded state (its end), values malloc'd into *values.
+static ori_value_map end_strains(const studio_cfold *cf, double **values)
+{
+    ori_value_map map;
+    int last = ori_compliant_frame_count(cf->c) - 1;
+    *values = strain_values(cf->c, &last, 1, &map);
+    return map;
+}
+
 // A picture of a state (orikin render IN [state] -o OUT.png|.svg|.pdf).
 static void export_picture(studio *s, const studio_request *req, const studio_export_format *f, studio_response *out)
 {
     draw_args d;
     studio_state_ref ref;
-    if (!parse_draw(req, &d, out) || !studio_state_ref_args(req, &ref, out)) return;
+    bool strain = false;
+    if (!parse_draw(req, &d, out) || !studio_state_ref_args(req, &ref, out) ||
+        !strain_asked(req, ref.kind == STUDIO_STATE_COMPLIANT, &strain, out))
+        return;
     if ((double)d.width * d.height > s->def.render_pixels) {
         studio_fail(out, 400, "size: %dx%d is over the studio's %.0f pixels: use a smaller size", d.width, d.height,
                     s->def.render_pixels);
@@ -239,14 +289,20 @@ static void export_picture(studio *s, const studio_request *req, const studio_ex
             ori_render_def def = draw_def(&d);
             def.view = view;
             def.format = (ori_image_format)f->render_format;
+            double *values = NULL;
+            studio_cfold *cf = strain ? studio_cfold_get(s) : NULL;
+            if (cf) def.values = end_strains(cf, &values);
             ori_state_view sv = {st.pattern, view == ORI_RENDER_CREASES ? NULL : st.positions, st.angles};
             void *data = NULL;
             size_t size = 0;
             ori_error err;
-            ori_status rs = ori_render_image(&sv, &def, &data, &size, &err);
-            if (rs != ORI_OK) fail_render(out, rs, &err);
+            ori_status rs = strain && !cf ? ORI_ERR_NOT_FOUND : ori_render_image(&sv, &def, &data, &size, &err);
+            if (strain && !cf) studio_fail(out, 409, "the compliant fold was replaced: solve it again");
+            else if (rs != ORI_OK) fail_render(out, rs, &err);
             else respond_file(s, f, "", data, size, out);
             ori_buffer_free(data);
+            free(values);
+            studio_cfold_unref(cf);
         }
         studio_state_free(&st);
     }
@@ -277,12 +333,21 @@ static void export_mesh(studio *s, const studio_request *req, const studio_expor
         size_t size = 0;
         def.format = (ori_mesh_format)f->render_format;
         def.thickness = thickness;
+        // a compliant fold's glTF carries its strain as vertex colours (as orikin export --compliant)
+        double *values = NULL;
+        studio_cfold *cf = ref.kind == STUDIO_STATE_COMPLIANT &&
+                                   (def.format == ORI_MESH_GLTF || def.format == ORI_MESH_GLB)
+                               ? studio_cfold_get(s)
+                               : NULL;
+        if (cf) def.values = end_strains(cf, &values);
         ori_status rs = ori_mesh_create(&sv, &mesh, &err);
         if (rs == ORI_OK) rs = ori_mesh_export(mesh, &def, &data, &size, &err);
         if (rs != ORI_OK) fail_render(out, rs, &err);
         else respond_file(s, f, "", data, size, out);
         ori_buffer_free(data);
         ori_mesh_destroy(mesh);
+        free(values);
+        studio_cfold_unref(cf);
         studio_state_free(&st);
     }
     studio_job_end(s);
@@ -298,11 +363,13 @@ typedef struct motion {
     cli_motion k;
     ori_v3 *end_positions;
     double *end_angles;
+    studio_cfold *compliant; // of=compliant: the fold (a reference), else NULL
 } motion;
 
 static void motion_free(motion *m)
 {
     studio_model_unref(m->model);
+    studio_cfold_unref(m->compliant);
     cli_motion_free(&m->k);
     free(m->end_positions);
     free(m->end_angles);
@@ -424,6 +491,25 @@ static bool load_motion(studio *s, bool of_sequence, int samples, motion *m, stu
     return ok;
 }
 
+// The compliant fold's load steps (of=compliant), as orikin animate --compliant takes them.
+static bool compliant_motion(studio *s, int samples, motion *m, studio_response *out)
+{
+    memset(m, 0, sizeof *m);
+    m->compliant = studio_cfold_get(s);
+    if (!m->compliant) {
+        studio_fail(out, 409, "of=compliant: no compliant fold has been solved on this document");
+        return false;
+    }
+    m->model = studio_model_ref(m->compliant->model);
+    ori_error err;
+    if (cli_motion_of_compliant(m->compliant->c, samples, &m->k, &err) != ORI_OK) {
+        studio_fail_error(out, 409, &err);
+        motion_free(m);
+        return false;
+    }
+    return true;
+}
+
 // The whole motion as a glTF animation (orikin export IN --animate -o OUT.gltf|.glb).
 static void export_mesh_motion(studio *s, const studio_request *req, const studio_export_format *f, bool of_sequence,
                                studio_response *out)
@@ -460,7 +546,19 @@ static void export_mesh_motion(studio *s, const studio_request *req, const studi
 
 typedef struct gif_frames {
     const motion *m;
+    double *values;  // color=strain: frame_count × face_count, else NULL
+    int face_count;
 } gif_frames;
+
+static ori_status gif_values(int index, const double **face_values, const double **edge_values, void *user,
+                             ori_error *error)
+{
+    (void)error;
+    const gif_frames *g = user;
+    *face_values = g->values + (size_t)index * (size_t)g->face_count;
+    *edge_values = NULL;
+    return ORI_OK;
+}
 
 static ori_status gif_frame(int index, ori_state_view *view, void *user, ori_error *error)
 {
@@ -474,7 +572,7 @@ static ori_status gif_frame(int index, ori_state_view *view, void *user, ori_err
 
 // The whole motion as an animated GIF (orikin animate IN -o OUT.gif).
 static void export_gif(studio *s, const studio_request *req, const studio_export_format *f, bool of_sequence,
-                       studio_response *out)
+                       bool of_compliant, studio_response *out)
 {
     draw_args d;
     double fps = 15.0, duration = 3.0;
@@ -505,16 +603,26 @@ static void export_gif(studio *s, const studio_request *req, const studio_export
                     d.width, d.height, s->def.animation_pixels);
         return;
     }
+    bool strain = false;
+    if (!strain_asked(req, of_compliant, &strain, out)) return;
     if (!studio_job_begin(s, "animation: solving frames", out)) return;
     motion m;
-    if (load_motion(s, of_sequence, frames, &m, out)) {
+    if (of_compliant ? compliant_motion(s, frames, &m, out) : load_motion(s, of_sequence, frames, &m, out)) {
         ori_gif_def def = ori_default_gif_def();
         def.render = draw_def(&d);
         def.render.view = ORI_RENDER_3D;
-        gif_frames gf = {&m};
+        gif_frames gf = {&m, NULL, 0};
         def.frame_count = m.k.count;
         def.frame = gif_frame;
         def.user = &gf;
+        ori_value_map map = {NULL, NULL, 0.0, 0.0};
+        if (strain) { // one bar over every frame's strains (as orikin animate --compliant --color strain)
+            gf.values = strain_values(m.compliant->c, m.k.sources, m.k.count, &map);
+            gf.face_count = ori_compliant_face_count(m.compliant->c);
+            def.frame_values = gif_values;
+            def.render.values.min = map.min;
+            def.render.values.max = map.max;
+        }
         // the frames span the motion evenly over the duration
         def.fps = (m.k.count - 1) / duration;
         if (def.fps < 1.0) def.fps = 1.0;
@@ -527,8 +635,9 @@ static void export_gif(studio *s, const studio_request *req, const studio_export
         ori_error err;
         ori_status rs = ori_gif_write(&def, &data, &size, &err);
         if (rs != ORI_OK) fail_render(out, rs, &err);
-        else respond_file(s, f, of_sequence ? "-sequence" : "-fold", data, size, out);
+        else respond_file(s, f, of_compliant ? "-compliant" : of_sequence ? "-sequence" : "-fold", data, size, out);
         ori_buffer_free(data);
+        free(gf.values);
         motion_free(&m);
     }
     studio_job_end(s);
@@ -538,11 +647,18 @@ void studio_export_render(studio *s, const studio_request *req, const studio_exp
 {
     const char *of = studio_arg_get(req, "of");
     bool motion_asked = of && strcmp(of, "state") != 0;
-    if (of && strcmp(of, "state") != 0 && strcmp(of, "sequence") != 0 && strcmp(of, "fold") != 0) {
-        studio_fail(out, 400, "of: state, sequence or fold");
+    if (of && strcmp(of, "state") != 0 && strcmp(of, "sequence") != 0 && strcmp(of, "fold") != 0 &&
+        strcmp(of, "compliant") != 0) {
+        studio_fail(out, 400, "of: state, sequence, fold or compliant");
         return;
     }
     bool of_sequence = motion_asked && strcmp(of, "sequence") == 0;
+    bool of_compliant = motion_asked && strcmp(of, "compliant") == 0;
+    if (of_compliant && f->kind != STUDIO_EXPORT_ANIMATION && f->motion) {
+        studio_fail(out, 400, "a glTF animation moves each face as a rigid node, and a compliant fold bends its faces: "
+                              "format=gif draws its motion");
+        return;
+    }
     if (motion_asked && !f->motion) {
         studio_fail(out, 400, "%s holds one state: of=sequence and of=fold are for gltf, glb and gif", f->name);
         return;
@@ -552,15 +668,15 @@ void studio_export_render(studio *s, const studio_request *req, const studio_exp
         return;
     }
     if (motion_asked) {
-        const char *keys[] = {"frame", "t", "k", "contact"};
-        for (int i = 0; i < 4; ++i)
+        const char *keys[] = {"frame", "t", "k", "contact", "compliant"};
+        for (int i = 0; i < 5; ++i)
             if (studio_arg_get(req, keys[i])) {
                 studio_fail(out, 400, "%s names one state: the motion of=%s has them all", keys[i], of);
                 return;
             }
     }
     if (f->kind == STUDIO_EXPORT_PICTURE) export_picture(s, req, f, out);
-    else if (f->kind == STUDIO_EXPORT_ANIMATION) export_gif(s, req, f, of_sequence, out);
+    else if (f->kind == STUDIO_EXPORT_ANIMATION) export_gif(s, req, f, of_sequence, of_compliant, out);
     else if (motion_asked) export_mesh_motion(s, req, f, of_sequence, out);
     else export_mesh(s, req, f, out);
 }

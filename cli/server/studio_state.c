@@ -52,11 +52,11 @@ static bool set_contact(const char *v, studio_state_ref *ref, studio_response *o
 bool studio_state_ref_args(const studio_request *req, studio_state_ref *ref, studio_response *out)
 {
     memset(ref, 0, sizeof *ref);
-    const char *keys[] = {"frame", "t", "k", "contact"};
+    const char *keys[] = {"frame", "t", "k", "contact", "compliant"};
     int given = 0;
-    for (int i = 0; i < 4; ++i) given += studio_arg_get(req, keys[i]) != NULL;
+    for (int i = 0; i < 5; ++i) given += studio_arg_get(req, keys[i]) != NULL;
     if (given > 1) {
-        studio_fail(out, 400, "name one state: frame, t, k or contact");
+        studio_fail(out, 400, "name one state: frame, t, k, contact or compliant");
         return false;
     }
     const char *v;
@@ -87,6 +87,12 @@ bool studio_state_ref_args(const studio_request *req, studio_state_ref *ref, stu
         ref->k = (int)x;
     } else if ((v = studio_arg_get(req, "contact"))) {
         return set_contact(v, ref, out);
+    } else if ((v = studio_arg_get(req, "compliant"))) {
+        if (strcmp(v, "1") != 0) {
+            studio_fail(out, 400, "compliant: 1 (the end of the last compliant fold)");
+            return false;
+        }
+        ref->kind = STUDIO_STATE_COMPLIANT;
     }
     return true;
 }
@@ -391,6 +397,29 @@ static bool load_contact(studio *s, bool of_sequence, studio_state *st, studio_r
     return ok;
 }
 
+// The end of the last compliant fold (its faces bend: no face poses).
+static bool load_compliant_state(studio *s, studio_state *st, studio_response *out)
+{
+    studio_cfold *f = studio_cfold_get(s);
+    if (!f) {
+        studio_fail(out, 409, "compliant=1: no compliant fold has been solved on this document");
+        return false;
+    }
+    const ori_pattern *p = f->model->pattern;
+    int V = ori_pattern_vertex_count(p), E = ori_pattern_edge_count(p);
+    st->model = studio_model_ref(f->model);
+    st->pattern = p;
+    st->has_flat = st->folded = true;
+    st->frame = -1;
+    st->positions = malloc(sizeof(ori_v3) * (size_t)(V + 1));
+    st->angles = malloc(sizeof(double) * (size_t)(E + 1));
+    memcpy(st->positions, ori_compliant_positions(f->c), sizeof(ori_v3) * (size_t)V);
+    for (int e = 0; e < E; ++e) st->angles[e] = ori_compliant_fold_angle(f->c, e);
+    snprintf(st->label, sizeof st->label, "compliant fold, %.6g %%", 100.0 * ori_compliant_fraction(f->c));
+    studio_cfold_unref(f);
+    return true;
+}
+
 bool studio_state_load(studio *s, const studio_state_ref *ref, bool need_pose, studio_state *st, studio_response *out)
 {
     memset(st, 0, sizeof *st);
@@ -399,6 +428,7 @@ bool studio_state_load(studio *s, const studio_state_ref *ref, bool need_pose, s
     case STUDIO_STATE_TIME: ok = load_time(s, ref->t, st, out); break;
     case STUDIO_STATE_FOLD: ok = load_fold_state(s, ref->k, st, out); break;
     case STUDIO_STATE_CONTACT: ok = load_contact(s, ref->contact_of_sequence, st, out); break;
+    case STUDIO_STATE_COMPLIANT: ok = load_compliant_state(s, st, out); break;
     case STUDIO_STATE_FRAME:
     default: ok = load_frame(s, ref->frame, need_pose, st, out); break;
     }
