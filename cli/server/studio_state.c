@@ -494,10 +494,16 @@ void studio_api_collide(studio *s, const studio_request *req, studio_response *o
 {
     json_t *o = studio_body_object(req, out);
     if (!o) return;
-    static const char *const keys[] = {"frame", "t", "k", "contact", "clearance", "cloud", NULL};
+    static const char *const keys[] = {"frame", "t", "k", "contact", "compliant", "clearance", "cloud", NULL};
     studio_state_ref ref;
     double clearance = 0.0, spacing = 0.0;
     bool has_cloud = false;
+    if (json_object_get(o, "compliant")) { // (as orikin collide FILE --compliant)
+        json_decref(o);
+        studio_fail(out, 400, "a compliant fold bends its faces, which collide checks as planar panels: the compliant "
+                              "fold itself warns of the faces that pass through each other (its contacts)");
+        return;
+    }
     bool ok = studio_check_keys(o, keys, out) && studio_state_ref_json(o, &ref, out) &&
               studio_get_number(o, "clearance", false, &clearance, NULL, out) &&
               studio_get_number(o, "cloud", false, &spacing, &has_cloud, out);

@@ -4,8 +4,11 @@
 // check box; the page's fold angles equal `orikin fold FILE --compliant --percent P --json` (to
 // 1e-9), its label gives the CLI's maximum strain, the 3D view shows the bent sheet (the
 // positions read back), and unticked the slider is the rigid fold again.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
-import { OUT, assert, cli, idle, run } from './harness.mjs';
+import { ORIKIN, OUT, SOURCE, assert, cli, idle, run } from './harness.mjs';
 
 const FILE = 'examples/patterns/non-flat-foldable-vertex.fold';
 
@@ -53,6 +56,25 @@ await run('compliant', FILE, async ({ page }) => {
   assert(near(colors[top], [0.993, 0.906, 0.144]), `the most strained face is yellow (${colors[top]})`);
   assert(near(colors[low], [0.267, 0.005, 0.329]), `the least strained face is dark blue (${colors[low]})`);
   await page.screenshot({ path: path.join(OUT, 'compliant-half.png') });
+
+  // the Export menu: the bent sheet's mesh is orikin export --compliant's, byte for byte (its
+  // strain as vertex colours), and its load steps are offered as a GIF (never a glTF of rigid nodes)
+  const offered = await page.$$eval('#export-format option', (os) => os.map((o) => o.value));
+  assert(offered.includes('gif:compliant') && !offered.includes('glb:compliant'), `the compliant motion is a GIF: ${offered.join(' ')}`);
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.selectOption('#export-format', 'glb')]);
+  const glb = readFileSync(await dl.path());
+  await idle(page);
+  const tmp = mkdtempSync(path.join(os.tmpdir(), 'orikin-compliant-'));
+  const glbRef = path.join(tmp, 'ref.glb');
+  execFileSync(ORIKIN, ['export', FILE, '--compliant', '--percent', String(p), '--front', await page.inputValue('#color-front'),
+    '--back', await page.inputValue('#color-back'), '-o', glbRef], { cwd: SOURCE, stdio: 'ignore' });
+  assert(Buffer.compare(glb, readFileSync(glbRef)) === 0, 'the GLB of the state shown is orikin export --compliant\'s');
+  const [gif] = await Promise.all([page.waitForEvent('download'), page.selectOption('#export-format', 'gif:compliant')]);
+  const gifBytes = readFileSync(await gif.path());
+  await idle(page);
+  assert(gif.suggestedFilename().endsWith('-compliant.gif') && gifBytes.subarray(0, 6).toString() === 'GIF89a' && gifBytes.length > 2000,
+    `a GIF of the load steps (${gif.suggestedFilename()}, ${gifBytes.length} bytes)`);
+  rmSync(tmp, { recursive: true });
 
   // unticked: the rigid fold again, at the same percent
   await page.locator('#whole-compliant').click();

@@ -50,6 +50,7 @@ export function createCollide(ctx) {
     if (state.shown === 'fold') return { k: state.foldK };
     if (state.shown === 'sequence' && state.shownT !== null) return { t: state.shownT };
     if (state.shown === 'contact') return { contact: state.contactOf };
+    if (state.shown === 'compliant') return { compliant: 1 };
     if (state.shown === 'frames') return ctx.replay.stateRef();
     return { frame: 0 };
   }

@@ -44,6 +44,7 @@ export function createExport(ctx) {
     const groups = exportGroups(state.session.export_formats, {
       sequence: !!(state.sequence && state.sequence.frames && state.sequence.frames.length),
       fold: foldMotionExportable(state.fold),
+      compliant: !!(state.compliant && state.compliant.load_steps > 0),
     });
     for (const { label, options } of groups) {
       const g = document.createElement('optgroup');

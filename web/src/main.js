@@ -36,6 +36,7 @@ const store = createStore({
   move: { edge: -1, points: [] },
   check: null,
   fold: null,
+  compliant: null,
   foldFrames: new Map(),
   foldK: 0,
   sequence: null,
@@ -538,7 +539,7 @@ async function start() {
   } });
   await action(async () => {
     // the Export menu follows what there is to export (store.js)
-    store.subscribe(['session', 'fold', 'sequence'], () => renderExportMenu());
+    store.subscribe(['session', 'fold', 'sequence', 'compliant'], () => renderExportMenu());
     await refresh(true);
     renderExportMenu();
     renderCollection();

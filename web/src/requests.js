@@ -54,13 +54,15 @@ export function foldMotionExportable(fold) {
 // The export menu's groups: [{label, options: [{value, label}]}]. Each format once for the
 // document, the pictures and the meshes; the motions only when there is one (the sequence's,
 // the fold's), so that a plain document lists glTF once.
-export function exportGroups(formats, { sequence = false, fold = false } = {}) {
+export function exportGroups(formats, { sequence = false, fold = false, compliant = false } = {}) {
   const groups = [
     ['crease pattern', (f) => f.kind === 'document', null, true],
     ['picture of the state shown', (f) => f.kind === 'picture', null, true],
     ['mesh of the state shown', (f) => f.kind === 'mesh', null, true],
     ['motion of the sequence', (f) => f.motion, 'sequence', sequence],
     ['motion of the fold', (f) => f.motion, 'fold', fold],
+    // (its faces bend: a GIF, never a glTF of rigid nodes)
+    ['motion of the compliant fold', (f) => f.kind === 'animation', 'compliant', compliant],
   ];
   const out = [];
   for (const [label, take, of, shown] of groups) {
@@ -82,6 +84,8 @@ export function exportParams({ format, kind, of, stateRef, flat, view, canvas, c
   if (!kind || kind === 'document') return params;
   if (of) params.of = of;
   else Object.assign(params, stateRef);
+  // a compliant fold is shown coloured by strain: so are its pictures and its motion
+  if ((kind === 'picture' && !flat && params.compliant) || (kind === 'animation' && of === 'compliant')) params.color = 'strain';
   if ((kind === 'picture' && !flat) || kind === 'animation') {
     params.eye = view.eye.map((x) => +x.toPrecision(12)).join(',');
     params.up = view.up.map((x) => +x.toPrecision(12)).join(',');

@@ -54,7 +54,7 @@ export function createWholeFold(ctx) {
     const body = { percent: p };
     if (state.spec.fix >= 0) body.fix = state.spec.fix;
     const r = await ctx.api.compute('compliant fold', () => ctx.api.post('compliant', body));
-    state.compliant = r;
+    ctx.store.set({ compliant: r }); // (the Export menu offers its motion)
     ctx.v3.setPositions(Float64Array.from(r.positions.flat()));
     ctx.v3.setFaceColors(r.strain_colors.faces); // as orikin render --color strain paints them
     state.shown = 'compliant';
@@ -74,7 +74,7 @@ export function createWholeFold(ctx) {
     $('whole-slider').value = '0';
     $('whole-value').textContent = '0 %';
     $('whole-label').textContent = '';
-    state.compliant = null;
+    ctx.store.set({ compliant: null });
   }
   return { fold, reset, running: () => whole.running, percent: () => whole.percent };
 }

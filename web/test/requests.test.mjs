@@ -42,6 +42,9 @@ test('the export menu lists glTF once without a motion, and the motions only whe
   assert.deepEqual(seq[3].options.map((o) => o.value), ['gltf:sequence', 'glb:sequence', 'gif:sequence']);
   assert.equal(seq[3].options[0].label, 'glTF animation');
   assert.equal(exportGroups(FORMATS, { sequence: true, fold: true }).length, 5);
+  const bent = exportGroups(FORMATS, { compliant: true });
+  assert.deepEqual(bent[3], { label: 'motion of the compliant fold', options: [{ value: 'gif:compliant', label: bent[3].options[0].label }] },
+    'a compliant fold moves as a GIF only (its faces bend)');
 });
 
 test('a fold is offered as a motion when the server exports it', () => {
@@ -64,6 +67,11 @@ test('export parameters: a document has none, a picture of a state the camera, a
     { format: 'png', t: 1.5, eye: '1,2,3', up: '0,0,1', perspective: 1, front: '#e8833a', back: '#f4efe6', grid: 1, size: '600x400' });
   assert.deepEqual(exportParams({ ...common, format: 'png', kind: 'picture', flat: true, stateRef: { frame: 0 } }), { format: 'png', frame: 0 });
   assert.deepEqual(exportParams({ ...common, format: 'obj', kind: 'mesh', stateRef: { k: 3 } }), { format: 'obj', k: 3, front: '#e8833a', back: '#f4efe6' });
+  const shot = exportParams({ ...common, format: 'png', kind: 'picture', stateRef: { compliant: 1 } });
+  assert.equal(shot.compliant, 1);
+  assert.equal(shot.color, 'strain', 'the compliant state is drawn coloured by strain, as the page shows it');
+  assert.equal(exportParams({ ...common, format: 'glb', kind: 'mesh', stateRef: { compliant: 1 } }).color, undefined);
+  assert.equal(exportParams({ ...common, format: 'gif', kind: 'animation', of: 'compliant' }).color, 'strain');
   const gif = exportParams({ ...common, format: 'gif', kind: 'animation', of: 'fold', canvas: { width: 1000, height: 500 } });
   assert.equal(gif.of, 'fold');
   assert.equal(gif.t, undefined);
