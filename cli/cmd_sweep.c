@@ -8,7 +8,7 @@ const cli_command cli_cmd_sweep = {
     "sweep",
     "parameter sweeps: fold, collide, actuate, simulate, layers per design point; SQLite, resumable",
     "usage: orikin sweep SPEC.json [-o OUT.db] [--shard I/N] [--commit N] [--csv FILE]\n"
-    "                    [--jsonl FILE] [--dry-run] [--quiet]\n"
+    "                    [--jsonl FILE] [--fold-files DIR] [--dry-run] [--quiet]\n"
     "       orikin sweep --merge OUT.db A.db B.db ... [--csv FILE] [--jsonl FILE]\n"
     "       orikin sweep --export DB.db [--csv FILE] [--jsonl FILE]\n"
     "\n"
@@ -35,6 +35,9 @@ const cli_command cli_cmd_sweep = {
     "  --commit N       points per transaction (default 16)\n"
     "  --csv FILE       afterwards, write the points as CSV (header line; - for stdout)\n"
     "  --jsonl FILE     afterwards, write the points as JSON Lines (one object per point)\n"
+    "  --fold-files DIR each point whose job folds also as DIR/point-INDEX.fold: the base with\n"
+    "                   the fold's last state appended as a folded frame (orikin:sweep_point,\n"
+    "                   orikin:parameters); DIR is made when missing\n"
     "  --dry-run        check the spec and print its point count, parameters and outputs\n"
     "  --quiet          no progress on stderr\n"
     "  --merge OUT.db   combine shard databases of one spec into OUT.db (refuses databases of\n"

@@ -199,6 +199,48 @@ Test(sweep, fold_and_layers_values_equal_orikin_fold_and_layers)
     test_tmpdir_remove(dir);
 }
 
+// --fold-files DIR: every point's fold as DIR/point-INDEX.fold, the base with the fold's last
+// state appended: its fold angles are those of orikin fold at the point's parameters (to 1e-9
+// degrees, the file's 17 digits), and it names its point and parameters.
+Test(sweep, fold_files_hold_each_points_folded_state)
+{
+    char *dir = test_tmpdir();
+    const char *spec = fmt("%s/corner.json", dir), *db = fmt("%s/corner.db", dir), *files = fmt("%s/points", dir);
+    write_text(spec, fmt("{\"base\": \"%s\", \"parameters\": [{\"name\": \"to\", \"values\": [30, 90, 150]}],"
+                         " \"job\": {\"fold\": {\"fix\": 4, \"drive\": 12, \"lock\": [11], \"to\": \"$to\"}}}",
+                         test_repo_path("examples/patterns/open-corner.fold")));
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --fold-files '%s' --quiet", spec, db, files), &out), 0, "%s", out);
+    free(out);
+    const double to[3] = {30, 90, 150};
+    for (int i = 0; i < 3; ++i) {
+        json_error_t je;
+        json_t *doc = json_load_file(fmt("%s/point-%d.fold", files, i), 0, &je);
+        cr_assert_not_null(doc, "point %d: %s", i, je.text);
+        json_t *frames = json_object_get(doc, "file_frames");
+        cr_assert_eq(json_array_size(frames), 1, "point %d: the base and one folded frame", i);
+        json_t *fr = json_array_get(frames, 0);
+        cr_assert_eq(json_integer_value(json_object_get(fr, "orikin:sweep_point")), i);
+        cr_assert_float_eq(json_number_value(json_object_get(json_object_get(fr, "orikin:parameters"), "to")), to[i], 0.0);
+        json_t *c = cli_json(fmt("fold examples/patterns/open-corner.fold --fix 4 --drive 12 --lock 11 --to %g --json", to[i]));
+        json_t *frs = json_object_get(c, "frames");
+        json_t *want = json_object_get(json_array_get(frs, json_array_size(frs) - 1), "fold_angles_deg");
+        json_t *got = json_object_get(fr, "edges_foldAngle");
+        cr_assert_eq(json_array_size(got), json_array_size(want), "point %d", i);
+        for (size_t e = 0; e < json_array_size(want); ++e)
+            cr_assert_float_eq(json_number_value(json_array_get(got, e)), json_number_value(json_array_get(want, e)), 1e-9,
+                               "point %d crease %zu", i, e);
+        json_decref(c);
+        json_decref(doc);
+    }
+    // not a directory: refused before anything is computed
+    write_text(fmt("%s/plain", dir), "x");
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s/b.db' --fold-files '%s/plain' --quiet", spec, dir, dir), &out), 3, "%s", out);
+    cr_assert(strstr(out, "not a directory"), "%s", out);
+    free(out);
+    test_tmpdir_remove(dir);
+}
+
 Test(sweep, fold_time_equals_orikin_simulate)
 {
     char *dir = test_tmpdir();
@@ -435,6 +477,16 @@ Test(sweep, mpi_databases_are_identical_for_1_2_3_ranks)
         // Written in point order in the same transactions: the same file, byte for byte.
         cr_assert(same_file(db, serial), "np %d: %s differs from the serial database", np, db);
     }
+    // The points' FOLD files are the same, byte for byte, whichever rank computed them.
+    char serial_files[600], mpi_files[600]; // (kept: fmt's ring is reused by the loop below)
+    snprintf(serial_files, sizeof serial_files, "%s/serial-files", dir);
+    snprintf(mpi_files, sizeof mpi_files, "%s/mpi-files", dir);
+    cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/mpi.json -o '%s/f1.db' --fold-files '%s' --quiet", dir, serial_files), &out), 0,
+                 "%s", out);
+    free(out);
+    cr_assert_eq(mpirun(2, fmt("tests/data/sweep/mpi.json -o '%s/f2.db' --fold-files '%s' --quiet", dir, mpi_files)), 0);
+    for (int i = 0; i < 36; ++i)
+        cr_assert(same_file(fmt("%s/point-%d.fold", serial_files, i), fmt("%s/point-%d.fold", mpi_files, i)), "point %d", i);
     // An MPI run resumes a serial one that stopped halfway (a shard's points are there).
     const char *half = fmt("%s/half.db", dir);
     cr_assert_eq(test_run_cli(fmt("sweep tests/data/sweep/mpi.json -o '%s' --quiet --shard 0/2", half), &out), 0, "%s", out);

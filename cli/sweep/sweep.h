@@ -86,6 +86,7 @@ typedef struct sweep_spec {
     uint64_t file_hash[2]; // of the base file's bytes (0 for a generated base)
     char hash[33];       // 128-bit hex of the canonical spec and the base file's bytes
     char *canonical;     // canonical spec text (sorted keys, compact, shortest numbers)
+    char *fold_dir;      // where the points' FOLD files go (--fold-files; not part of the spec), or NULL
 } sweep_spec;
 
 // Load and check a spec. On failure returns SWEEP_EXIT_INPUT with one line in err ("FIELD:
@@ -173,6 +174,7 @@ typedef struct sweep_args {
     char **inputs;
     int input_count;
     const char *export_db; // --export DB
+    const char *fold_dir;  // --fold-files DIR: each point's folded state as DIR/point-INDEX.fold
 } sweep_args;
 // Parse argv (argv[0] the command); prints a usage error and returns SWEEP_EXIT_USAGE, or 0.
 int sweep_parse_args(const char *prog, int argc, char **argv, sweep_args *a);

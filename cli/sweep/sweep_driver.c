@@ -5,9 +5,11 @@
 #include "sweep.h"
 #include "sweep_internal.h"
 
+#include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -48,7 +50,8 @@ int sweep_parse_args(const char *prog, int argc, char **argv, sweep_args *a)
     for (int i = 1; i < argc; ++i) {
         const char *o = argv[i];
         bool valued = strcmp(o, "-o") == 0 || strcmp(o, "--shard") == 0 || strcmp(o, "--commit") == 0 || strcmp(o, "--csv") == 0 ||
-                      strcmp(o, "--jsonl") == 0 || strcmp(o, "--merge") == 0 || strcmp(o, "--export") == 0;
+                      strcmp(o, "--jsonl") == 0 || strcmp(o, "--merge") == 0 || strcmp(o, "--export") == 0 ||
+                      strcmp(o, "--fold-files") == 0;
         if (valued) {
             for (int s = 0; s < nseen; ++s)
                 if (strcmp(seen[s], o) == 0) return usage(prog, "%s given twice", o);
@@ -60,6 +63,7 @@ int sweep_parse_args(const char *prog, int argc, char **argv, sweep_args *a)
             else if (strcmp(o, "--jsonl") == 0) a->jsonl = v;
             else if (strcmp(o, "--merge") == 0) a->merge_out = v;
             else if (strcmp(o, "--export") == 0) a->export_db = v;
+            else if (strcmp(o, "--fold-files") == 0) a->fold_dir = v;
             else if (strcmp(o, "--commit") == 0) {
                 char *end;
                 long c = strtol(v, &end, 10);
@@ -100,6 +104,7 @@ int sweep_parse_args(const char *prog, int argc, char **argv, sweep_args *a)
         a->db_path = a->db_default;
     }
     if (a->csv && a->jsonl && strcmp(a->csv, a->jsonl) == 0) return usage(prog, "--csv and --jsonl name the same file");
+    if (a->fold_dir && (a->merge_out || a->export_db)) return usage(prog, "--fold-files is for a run that computes points");
     return 0;
 }
 
@@ -229,6 +234,22 @@ int sweep_main(const char *prog, int argc, char **argv, const sweep_backend *bac
         fprintf(stderr, "%s: %s: %s\n", prog, a.spec_path, err);
         sweep_args_free(&a);
         return rc;
+    }
+    if (a.fold_dir) {
+        struct stat st;
+        if (stat(a.fold_dir, &st) != 0 && mkdir(a.fold_dir, 0777) != 0) {
+            fprintf(stderr, "%s: --fold-files %s: cannot create the directory: %s\n", prog, a.fold_dir, strerror(errno));
+            sweep_spec_free(spec);
+            sweep_args_free(&a);
+            return SWEEP_EXIT_INPUT;
+        }
+        if (stat(a.fold_dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+            fprintf(stderr, "%s: --fold-files %s: not a directory\n", prog, a.fold_dir);
+            sweep_spec_free(spec);
+            sweep_args_free(&a);
+            return SWEEP_EXIT_INPUT;
+        }
+        spec->fold_dir = strdup(a.fold_dir);
     }
     int64_t mine = 0;
     for (int64_t i = a.shard; i < spec->point_count; i += a.shards) mine++;

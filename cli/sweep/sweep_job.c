@@ -899,6 +899,68 @@ static void simulate(sweep_worker *w, const sweep_cfg *c, const ori_design *d, s
     free(targets);
 }
 
+// --fold-files: the base (frame 0 with the file's design data, or the generated pattern) with
+// the fold's last state appended as a folded frame, saved atomically as DIR/point-INDEX.fold, with
+// the point's index and parameter values. False with the reason in why.
+static bool write_fold_file(const sweep_worker *w, int64_t index, char *why, size_t n)
+{
+    const sweep_spec *spec = w->spec;
+    ori_error e;
+    ori_fold *doc = NULL;
+    if (w->doc) {
+        if (ori_fold_extract_frame(w->doc, 0, &doc, &e) != ORI_OK) {
+            fmt_error(why, n, "fold file", &e);
+            return false;
+        }
+    } else {
+        doc = ori_fold_create();
+        if (ori_fold_set_pattern(doc, 0, w->pattern, &e) != ORI_OK) {
+            fmt_error(why, n, "fold file", &e);
+            ori_fold_destroy(doc);
+            return false;
+        }
+    }
+    int V = ori_mechanism_vertex_count(w->mech), E = ori_mechanism_edge_count(w->mech);
+    ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
+    const double *angles;
+    if (w->motion) {
+        ori_motion_frame_vertices(w->motion, w->frames - 1, pos);
+        angles = ori_motion_frame_angles(w->motion, w->frames - 1);
+    } else {
+        ori_multifold_frame_vertices(w->multi, w->frames - 1, pos);
+        angles = ori_multifold_frame_angles(w->multi, w->frames - 1);
+    }
+    char title[96], num[32];
+    snprintf(title, sizeof title, "sweep point %lld: %s, %.6g of the way", (long long)index, w->verdict, w->reached);
+    int fr = ori_fold_append_state(doc, 0, V, pos, E, angles, title);
+    free(pos);
+    snprintf(num, sizeof num, "%lld", (long long)index);
+    ori_status st = fr < 0 ? ORI_ERR_INTERNAL : ori_fold_set_custom(doc, fr, "orikin:sweep_point", num, &e);
+    if (st == ORI_OK) {
+        sweep_value values[SWEEP_MAX_PARAMS];
+        int64_t sample = 0;
+        sweep_point_values(spec, index, values, &sample);
+        json_t *o = json_object();
+        for (int j = 0; j < spec->param_count; ++j)
+            json_object_set_new(o, spec->params[j].name,
+                                values[j].is_string ? json_string(values[j].string) : json_real(values[j].number));
+        char *text = json_dumps(o, JSON_COMPACT | JSON_SORT_KEYS | JSON_REAL_PRECISION(17));
+        json_decref(o);
+        st = ori_fold_set_custom(doc, fr, "orikin:parameters", text, &e);
+        free(text);
+    }
+    char path[4096];
+    snprintf(path, sizeof path, "%s/point-%lld.fold", spec->fold_dir, (long long)index);
+    if (st == ORI_OK) st = ori_fold_save_file(doc, path, &e);
+    ori_fold_destroy(doc);
+    if (st != ORI_OK) {
+        if (fr < 0) snprintf(why, n, "fold file: the state could not be appended");
+        else fmt_error(why, n, "fold file", &e);
+        return false;
+    }
+    return true;
+}
+
 void sweep_worker_run(sweep_worker *w, int64_t index, sweep_result *r)
 {
     memset(r, 0, sizeof *r);
@@ -951,6 +1013,10 @@ void sweep_worker_run(sweep_worker *w, int64_t index, sweep_result *r)
         if (want[SWEEP_OUT_FRAMES]) set(r, SWEEP_OUT_FRAMES, w->frames);
         if (c->collide && want[SWEEP_OUT_COLLIDES]) set(r, SWEEP_OUT_COLLIDES, w->collides);
         if (c->collide && want[SWEEP_OUT_MIN_CLEARANCE]) set(r, SWEEP_OUT_MIN_CLEARANCE, w->min_clearance);
+        if (w->spec->fold_dir && w->frames > 0 && !write_fold_file(w, index, why, sizeof why)) {
+            failed(r, why);
+            goto done;
+        }
     }
     if (!c->actuate && !c->simulate) goto done;
     ori_design *d = NULL;

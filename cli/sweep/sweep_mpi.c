@@ -118,7 +118,7 @@ static int master_run(void *ctxp, const sweep_spec *spec, const int64_t *todo, i
     return 0;
 }
 
-static void worker_loop(const char *spec_path)
+static void worker_loop(const char *spec_path, const char *fold_dir)
 {
     sweep_spec *spec = NULL;
     sweep_worker *w = NULL;
@@ -137,6 +137,7 @@ static void worker_loop(const char *spec_path)
             int ok = 0;
             if (!spec && spec_path && sweep_spec_load(spec_path, &spec, err, sizeof err) != 0)
                 fprintf(stderr, "orikin-sweep-mpi: %s: %s\n", spec_path, err);
+            if (spec && fold_dir && !spec->fold_dir) spec->fold_dir = strdup(fold_dir); // (rank 0 made it)
             if (spec && strcmp(spec->hash, hash) == 0) ok = 1;
             else if (spec)
                 fprintf(stderr, "orikin-sweep-mpi: %s: this rank reads another spec or base file (hash %s, rank 0 %s)\n", spec_path,
@@ -181,15 +182,16 @@ int main(int argc, char **argv)
         fflush(stdout);
     } else {
         // The spec path as rank 0 reads it (the first operand); errors are rank 0's to report.
-        const char *spec_path = NULL;
-        for (int i = 1; i < argc && !spec_path; ++i) {
+        const char *spec_path = NULL, *fold_dir = NULL;
+        for (int i = 1; i < argc; ++i) {
             const char *o = argv[i];
-            if (strcmp(o, "-o") == 0 || strcmp(o, "--shard") == 0 || strcmp(o, "--commit") == 0 || strcmp(o, "--csv") == 0 ||
-                strcmp(o, "--jsonl") == 0 || strcmp(o, "--merge") == 0 || strcmp(o, "--export") == 0)
+            if (strcmp(o, "--fold-files") == 0 && i + 1 < argc) fold_dir = argv[++i];
+            else if (strcmp(o, "-o") == 0 || strcmp(o, "--shard") == 0 || strcmp(o, "--commit") == 0 || strcmp(o, "--csv") == 0 ||
+                     strcmp(o, "--jsonl") == 0 || strcmp(o, "--merge") == 0 || strcmp(o, "--export") == 0)
                 ++i;
-            else if (o[0] != '-' || !o[1]) spec_path = o;
+            else if ((o[0] != '-' || !o[1]) && !spec_path) spec_path = o;
         }
-        worker_loop(spec_path);
+        worker_loop(spec_path, fold_dir);
     }
     MPI_Finalize();
     return rc;

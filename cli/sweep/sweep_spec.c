@@ -301,6 +301,7 @@ void sweep_spec_free(sweep_spec *spec)
     free(spec->path);
     free(spec->dir);
     ori_buffer_free(spec->canonical);
+    free(spec->fold_dir);
     free(spec);
 }
 
