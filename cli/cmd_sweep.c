@@ -6,7 +6,7 @@ static int run(int argc, char **argv) { return sweep_main("orikin sweep", argc, 
 
 const cli_command cli_cmd_sweep = {
     "sweep",
-    "parameter sweeps: fold, collide, actuate, simulate, layers per design point; SQLite, resumable",
+    "parameter sweeps: fold or sequence, collide, actuate, simulate, layers per design point; SQLite, resumable",
     "usage: orikin sweep SPEC.json [-o OUT.db] [--shard I/N] [--commit N] [--csv FILE]\n"
     "                    [--jsonl FILE] [--fold-files DIR] [--dry-run] [--quiet]\n"
     "       orikin sweep --merge OUT.db A.db B.db ... [--csv FILE] [--jsonl FILE]\n"
@@ -16,10 +16,11 @@ const cli_command cli_cmd_sweep = {
     "as {\"generate\": \"miura\", \"rows\": 10, \"cols\": 10}), the design (hinges, panels, field), the\n"
     "parameters (from/to/count ranges, lists of values, seeded uniform or normal draws, written\n"
     "\"$name\" where their value goes), the job each point runs (fold by a drive or toward the\n"
-    "targets, collide, actuate, simulate, layers) and the outputs kept (verdict, reached, frames,\n"
-    "collides, min_clearance, feasible, current_needed, mechanism_current, worst_edge, fold_time,\n"
-    "sim_reached, layer_count). Every point is computed by the library in this process and\n"
-    "stored as one row of table points in the SQLite database (idx, sample, the parameters,\n"
+    "targets, or a sequence of folds; collide, actuate, simulate, layers) and the outputs kept\n"
+    "(verdict, reached, frames, collides, min_clearance, feasible, current_needed,\n"
+    "mechanism_current, worst_edge, fold_time, sim_reached, layer_count). Every point is\n"
+    "computed by the library in this process and stored as one row of table points in the\n"
+    "SQLite database (idx, sample, the parameters,\n"
     "status ok | error, error, the outputs) with the spec's hash in table sweep. A point that\n"
     "fails records its error and the sweep goes on. The database is written in point order,\n"
     "N points per transaction: a run that is killed keeps what it committed, and running the\n"

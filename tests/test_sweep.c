@@ -241,6 +241,76 @@ Test(sweep, fold_files_hold_each_points_folded_state)
     test_tmpdir_remove(dir);
 }
 
+// job.sequence: the folds of a sequence file, with parameters, run on the base as orikin
+// sequence runs the same file: the same verdict, states and collision; its --fold-files state is
+// the sequence's last. A spec that mixes it with a fold or asks what it cannot give is refused.
+Test(sweep, a_sequence_job_equals_orikin_sequence)
+{
+    char *dir = test_tmpdir();
+    const char *corner = test_repo_path("examples/patterns/open-corner.fold");
+    const char *spec = fmt("%s/seq.json", dir), *db = fmt("%s/seq.db", dir);
+    char files[600];
+    snprintf(files, sizeof files, "%s/points", dir);
+    write_text(spec, fmt("{\"base\": \"%s\", \"parameters\": [{\"name\": \"a\", \"values\": [60, 180]},"
+                         " {\"name\": \"b\", \"values\": [90, 180]}],"
+                         " \"job\": {\"sequence\": {\"folds\": [{\"fix\": 4, \"drive\": 12, \"lock\": [11], \"to\": \"$a\", \"step\": 30},"
+                         " {\"fix\": 4, \"drive\": 11, \"lock\": [12], \"to\": \"$b\", \"step\": 30}]}, \"collide\": true}}",
+                         corner));
+    char *out = NULL;
+    cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s' --fold-files '%s' --quiet", spec, db, files), &out), 0, "%s", out);
+    free(out);
+    json_t *pts = points_of(db);
+    cr_assert_eq(json_array_size(pts), 4);
+    int collided = 0;
+    for (size_t i = 0; i < 4; ++i) {
+        json_t *p = json_array_get(pts, i);
+        const char *seq = fmt("%s/p%zu.seq.json", dir, i);
+        write_text(seq, fmt("{\"pattern\": \"%s\", \"folds\": [{\"fix\": 4, \"drive\": 12, \"lock\": [11], \"to\": %g, \"step\": 30},"
+                            " {\"fix\": 4, \"drive\": 11, \"lock\": [12], \"to\": %g, \"step\": 30}]}",
+                            corner, num(p, "a"), num(p, "b")));
+        json_t *c = cli_json(fmt("sequence '%s' --json", seq));
+        bool collides = !json_is_null(json_object_get(c, "collision"));
+        collided += collides;
+        cr_assert_str_eq(json_string_value(json_object_get(p, "verdict")), collides ? "collision" : json_string_value(json_object_get(c, "verdict")),
+                         "point %zu", i);
+        cr_assert_eq(json_integer_value(json_object_get(p, "collides")), collides, "point %zu", i);
+        if (!collides) {
+            cr_assert_eq((size_t)num(p, "frames"), json_array_size(json_object_get(c, "frames")), "point %zu", i);
+            // the folds done of the two (all of them when valid)
+            bool valid = strcmp(json_string_value(json_object_get(c, "verdict")), "valid") == 0;
+            cr_assert_float_eq(num(p, "reached"), valid ? 1.0 : num(c, "duration") / 2.0, 1e-15, "point %zu", i);
+            // its FOLD file holds the sequence's last state
+            json_error_t je;
+            json_t *doc = json_load_file(fmt("%s/point-%zu.fold", files, i), 0, &je);
+            cr_assert_not_null(doc, "%s", je.text);
+            json_t *got = json_object_get(json_array_get(json_object_get(doc, "file_frames"), 0), "edges_foldAngle");
+            json_t *frs = json_object_get(c, "frames");
+            json_t *want = json_object_get(json_array_get(frs, json_array_size(frs) - 1), "fold_angles_deg");
+            cr_assert_eq(json_array_size(got), json_array_size(want));
+            for (size_t e = 0; e < json_array_size(want); ++e)
+                cr_assert_float_eq(json_number_value(json_array_get(got, e)), json_number_value(json_array_get(want, e)), 1e-9,
+                                   "point %zu crease %zu", i, e);
+            json_decref(doc);
+        }
+        json_decref(c);
+    }
+    json_decref(pts);
+    // refused before anything runs, naming the field
+    static const char *const bad[][2] = {
+        {"\"job\": {\"fold\": {\"drive\": 12, \"to\": 90}, \"sequence\": {\"folds\": []}}", "job.sequence: one motion per point"},
+        {"\"job\": {\"sequence\": {\"folds\": [{\"drive\": 12, \"to\": 90}, {\"drive\": 11, \"to\": 400}]}}", "job.sequence.folds[1]"},
+        {"\"job\": {\"sequence\": {\"folds\": [{\"drive\": 12, \"to\": 90}]}, \"actuate\": true}", "job.actuate"},
+        {"\"job\": {\"sequence\": [1]}", "job.sequence: must be"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        write_text(spec, fmt("{\"base\": \"%s\", %s}", corner, bad[k][0]));
+        cr_assert_eq(test_run_cli(fmt("sweep '%s' -o '%s/bad.db' --quiet", spec, dir), &out), 3, "%s: %s", bad[k][0], out);
+        cr_assert(strstr(out, bad[k][1]), "%s: %s", bad[k][0], out);
+        free(out);
+    }
+    test_tmpdir_remove(dir);
+}
+
 Test(sweep, fold_time_equals_orikin_simulate)
 {
     char *dir = test_tmpdir();

@@ -59,6 +59,7 @@ typedef struct sweep_cfg {
     double fix_xy[2];
     int locks[SWEEP_MAX_LOCKS];
     int lock_count;
+    char *sequence;         // job.sequence: the folds as a sequence file's JSON, run on the base (malloc'd), or NULL
     char *fold_key;         // canonical text of base + fold + collide: points sharing it share the motion
     bool collide;
     double clearance;

@@ -323,12 +323,37 @@ int sweep_cfg_parse(const json_t *t, const char *dir, sweep_cfg *c, char *err, s
     if (!rc && design) rc = parse_design(design, c, err, n);
     if (!rc && !design) c->hinges_every = false;
     if (rc) return rc;
-    static const char *const keys[] = {"fold", "collide", "actuate", "simulate", "layers"};
+    static const char *const keys[] = {"fold", "sequence", "collide", "actuate", "simulate", "layers"};
     const char *bad;
-    if (!KEYS_OK(job, keys, &bad)) return sweep_fail(err, n, "job.%s: unknown stage (fold, collide, actuate, simulate, layers)", bad);
+    if (!KEYS_OK(job, keys, &bad))
+        return sweep_fail(err, n, "job.%s: unknown stage (fold, sequence, collide, actuate, simulate, layers)", bad);
     json_t *f = json_object_get(job, "fold");
     if (json_is_false(f) || json_is_null(f)) f = NULL;
     if (f && (rc = parse_fold(f, c, err, n))) return rc;
+    json_t *seq = json_object_get(job, "sequence");
+    if (json_is_false(seq) || json_is_null(seq)) seq = NULL;
+    if (seq) { // the folds of a sequence file, run on the base (docs/sequence.md)
+        if (f) return sweep_fail(err, n, "job.sequence: one motion per point: job.fold or job.sequence");
+        static const char *const qkeys[] = {"folds"};
+        if (!json_is_object(seq) || !json_is_array(json_object_get(seq, "folds")))
+            return sweep_fail(err, n, "job.sequence: must be {\"folds\": [...]} (the folds as in a SEQ.json, from the flat base)");
+        if (!KEYS_OK(seq, qkeys, &bad)) return sweep_fail(err, n, "job.sequence.%s: unknown field (folds)", bad);
+        json_t *whole = json_deep_copy(seq);
+        json_object_set_new(whole, "pattern", json_string("(the sweep's base)"));
+        c->sequence = json_dumps(whole, JSON_COMPACT | JSON_REAL_PRECISION(17));
+        json_decref(whole);
+        ori_sequence *probe = NULL;
+        ori_error e;
+        if (ori_sequence_parse(c->sequence, strlen(c->sequence), &probe, &e) != ORI_OK)
+        {
+            if (e.element >= 0 && strcmp(e.field, "folds") == 0)
+                return sweep_fail(err, n, "job.sequence.folds[%d]: %s", e.element, e.message);
+            return sweep_fail(err, n, "job.sequence%s%s: %s", e.field[0] ? "." : "", e.field, e.message);
+        }
+        ori_sequence_destroy(probe);
+        c->fold = true;
+        f = seq;
+    }
     json_t *col = json_object_get(job, "collide");
     int r;
     if (col && !json_is_false(col)) {
@@ -343,7 +368,7 @@ int sweep_cfg_parse(const json_t *t, const char *dir, sweep_cfg *c, char *err, s
     }
     json_t *act = json_object_get(job, "actuate");
     if (act && !json_is_false(act)) {
-        if (!c->fold || c->targets)
+        if (!c->fold || c->targets || c->sequence)
             return sweep_fail(err, n, "job.actuate: sizes the fold of a driven crease: needs job.fold with drive and to");
         c->actuate = true;
         if (json_is_object(act)) {
@@ -385,7 +410,8 @@ int sweep_cfg_parse(const json_t *t, const char *dir, sweep_cfg *c, char *err, s
     }
     if ((c->actuate || c->simulate) && !design)
         if (!c->base_is_file) return sweep_fail(err, n, "design: a generated pattern has no hinges: give design.unit and design.hinge");
-    if (c->wires == 1 && (!c->fold || c->targets))
+    if (c->simulate && c->sequence) return sweep_fail(err, n, "job.simulate: simulates one driven fold: use job.fold, not job.sequence");
+    if (c->wires == 1 && (!c->fold || c->targets || c->sequence))
         return sweep_fail(err, n, "design.wires: \"driven\" wires the fold's driven crease: needs job.fold with a drive");
     c->base_key = canonical(base, NULL, NULL);
     c->fold_key = canonical(base, f, col);
@@ -396,7 +422,8 @@ void sweep_cfg_free(sweep_cfg *c)
 {
     free(c->base_key);
     free(c->fold_key);
-    c->base_key = c->fold_key = NULL;
+    free(c->sequence);
+    c->base_key = c->fold_key = c->sequence = NULL;
 }
 
 // --- the worker -----------------------------------------------------------------------------
@@ -421,6 +448,8 @@ struct sweep_worker {
     int lock_count;
     ori_motion *motion;
     ori_multifold *multi;
+    ori_sequence *sequence; // job.sequence: the folds and their run
+    ori_record *record;
     char verdict[32];
     double reached;
     int frames;
@@ -439,8 +468,12 @@ static void drop_fold(sweep_worker *w)
 {
     ori_motion_destroy(w->motion);
     ori_multifold_destroy(w->multi);
+    ori_record_destroy(w->record);
+    ori_sequence_destroy(w->sequence);
     w->motion = NULL;
     w->multi = NULL;
+    w->record = NULL;
+    w->sequence = NULL;
     free(w->fold_key);
     w->fold_key = NULL;
 }
@@ -599,14 +632,14 @@ static ori_motion_def motion_def(const sweep_worker *w, const sweep_cfg *c)
 }
 
 // Least clearance over frames 0 … last (positions from get).
-static bool clearance_over(ori_collider *col, int last, void (*get)(const void *, int, ori_v3 *), const void *src, int V,
+static bool clearance_over(ori_collider *col, int last, void (*get)(const void *, int, int, ori_v3 *), const void *src, int V,
                            double *out, ori_error *e)
 {
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
     double m = INFINITY;
     bool ok = true;
     for (int f = 0; f <= last && ok; ++f) {
-        get(src, f, pos);
+        get(src, f, V, pos);
         ori_collision_result r;
         ok = ori_collider_check(col, pos, &r, e) == ORI_OK;
         if (ok) m = fmin(m, r.min_clearance);
@@ -616,8 +649,20 @@ static bool clearance_over(ori_collider *col, int last, void (*get)(const void *
     return ok;
 }
 
-static void motion_vertices(const void *mo, int f, ori_v3 *pos) { ori_motion_frame_vertices(mo, f, pos); }
-static void multi_vertices(const void *mf, int f, ori_v3 *pos) { ori_multifold_frame_vertices(mf, f, pos); }
+static void motion_vertices(const void *mo, int f, int V, ori_v3 *pos)
+{
+    (void)V;
+    ori_motion_frame_vertices(mo, f, pos);
+}
+static void multi_vertices(const void *mf, int f, int V, ori_v3 *pos)
+{
+    (void)V;
+    ori_multifold_frame_vertices(mf, f, pos);
+}
+static void record_vertices(const void *r, int f, int V, ori_v3 *pos)
+{
+    memcpy(pos, ori_record_frame_vertices(r, f), sizeof(ori_v3) * (size_t)V);
+}
 
 static void solve_fold(sweep_worker *w, const sweep_cfg *c)
 {
@@ -625,10 +670,25 @@ static void solve_fold(sweep_worker *w, const sweep_cfg *c)
     w->fold_error[0] = '\0';
     w->collides = false;
     w->min_clearance = INFINITY;
-    if (!resolve(w, c)) return;
     ori_error e;
     double start = 0.0, goal = 1.0;
-    if (!c->targets) {
+    if (c->sequence) { // job.sequence: its folds run on the base from the flat sheet
+        if (ori_sequence_parse(c->sequence, strlen(c->sequence), &w->sequence, &e) != ORI_OK ||
+            ori_sequence_resolve(w->sequence, w->pattern, &e) != ORI_OK ||
+            ori_sequence_run(w->sequence, w->mech, NULL, ori_rigid_identity(), &w->record, &e) != ORI_OK) {
+            fmt_error(w->fold_error, sizeof w->fold_error, "sequence", &e);
+            return;
+        }
+        ori_motion_verdict v = ori_record_verdict(w->record);
+        snprintf(w->verdict, sizeof w->verdict, "%s", ori_motion_verdict_name(v));
+        w->frames = ori_record_frame_count(w->record);
+        // the folds done (the failing one up to where it stopped), of all of them
+        w->reached = v == ORI_MOTION_VALID ? 1.0
+                     : w->frames > 0       ? ori_record_duration(w->record) / ori_sequence_fold_count(w->sequence)
+                                           : 0.0;
+    } else if (!resolve(w, c)) {
+        return;
+    } else if (!c->targets) {
         ori_motion_def d = motion_def(w, c);
         if (ori_motion_solve(w->mech, &d, &w->motion, &e) != ORI_OK) {
             fmt_error(w->fold_error, sizeof w->fold_error, "fold", &e);
@@ -668,7 +728,9 @@ static void solve_fold(sweep_worker *w, const sweep_cfg *c)
     ori_collision_motion_def md = ori_default_collision_motion_def();
     ori_collision_event ev;
     ori_status st;
-    if (w->motion) {
+    if (w->record) {
+        st = ori_collision_check_record(col, w->record, &md, &ev, &e);
+    } else if (w->motion) {
         ori_motion_def d = motion_def(w, c);
         st = ori_collision_check_motion(col, w->mech, &d, w->motion, &md, &ev, &e);
     } else {
@@ -677,13 +739,15 @@ static void solve_fold(sweep_worker *w, const sweep_cfg *c)
     if (st == ORI_OK && ev.collides) {
         w->collides = true;
         snprintf(w->verdict, sizeof w->verdict, "collision");
-        w->reached = w->motion ? (goal != start ? (ev.drive_rad - start) / (goal - start) : 0.0) : ev.drive_rad;
+        w->reached = w->record   ? ev.time / ori_sequence_fold_count(w->sequence)
+                     : w->motion ? (goal != start ? (ev.drive_rad - start) / (goal - start) : 0.0)
+                                 : ev.drive_rad;
         w->min_clearance = 0.0;
     } else if (st == ORI_OK && w->spec->outputs[SWEEP_OUT_MIN_CLEARANCE]) {
         int V = ori_pattern_vertex_count(w->pattern);
-        if (!clearance_over(col, w->frames - 1, w->motion ? motion_vertices : multi_vertices,
-                            w->motion ? (const void *)w->motion : (const void *)w->multi, V, &w->min_clearance, &e))
-            st = e.status;
+        void (*get)(const void *, int, int, ori_v3 *) = w->record ? record_vertices : w->motion ? motion_vertices : multi_vertices;
+        const void *src = w->record ? (const void *)w->record : w->motion ? (const void *)w->motion : (const void *)w->multi;
+        if (!clearance_over(col, w->frames - 1, get, src, V, &w->min_clearance, &e)) st = e.status;
     }
     if (st != ORI_OK) fmt_error(w->fold_error, sizeof w->fold_error, "collide", &e);
     ori_collider_destroy(col);
@@ -923,7 +987,10 @@ static bool write_fold_file(const sweep_worker *w, int64_t index, char *why, siz
     int V = ori_mechanism_vertex_count(w->mech), E = ori_mechanism_edge_count(w->mech);
     ori_v3 *pos = malloc(sizeof(ori_v3) * (size_t)(V + 1));
     const double *angles;
-    if (w->motion) {
+    if (w->record) {
+        memcpy(pos, ori_record_frame_vertices(w->record, w->frames - 1), sizeof(ori_v3) * (size_t)V);
+        angles = ori_record_frame_angles(w->record, w->frames - 1);
+    } else if (w->motion) {
         ori_motion_frame_vertices(w->motion, w->frames - 1, pos);
         angles = ori_motion_frame_angles(w->motion, w->frames - 1);
     } else {
@@ -975,6 +1042,7 @@ void sweep_worker_run(sweep_worker *w, int64_t index, sweep_result *r)
         char msg[SWEEP_ERROR_MAX + 8];
         snprintf(msg, sizeof msg, "spec: %s", why);
         failed(r, msg);
+        sweep_cfg_free(c);
         free(c);
         return;
     }

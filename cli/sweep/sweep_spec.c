@@ -211,9 +211,12 @@ static bool get_number(const json_t *v, double *out)
 }
 
 // The job runs the stage (present and not false).
+// Whether the job runs the stage; a sequence is the fold stage's motion (verdict, reached,
+// frames, collide).
 static bool stage(const json_t *job, const char *name)
 {
     const json_t *v = json_object_get(job, name);
+    if (strcmp(name, "fold") == 0 && !(v && !json_is_false(v) && !json_is_null(v))) v = json_object_get(job, "sequence");
     return v && !json_is_false(v) && !json_is_null(v);
 }
 
@@ -405,7 +408,7 @@ static int load(sweep_spec *spec, char *err, size_t n)
     }
     bool any = false;
     for (int o = 0; o < SWEEP_OUT_COUNT; ++o) any |= spec->outputs[o];
-    if (!any) return sweep_fail(err, n, "job: runs nothing (fold, collide, actuate, simulate or layers)");
+    if (!any) return sweep_fail(err, n, "job: runs nothing (fold, sequence, collide, actuate, simulate or layers)");
     // The job of every value of every parameter (the others at point 0) must parse: types and
     // shapes are checked before anything runs (values out of a stage's range fail that point).
     sweep_value values[SWEEP_MAX_PARAMS], base[SWEEP_MAX_PARAMS];
@@ -435,7 +438,7 @@ static int load(sweep_spec *spec, char *err, size_t n)
             char why[SWEEP_ERROR_MAX];
             rc = sweep_cfg_parse(t, spec->dir, &cfg, why, sizeof why);
             json_decref(t);
-            if (!rc) sweep_cfg_free(&cfg);
+            sweep_cfg_free(&cfg); // (a failed parse may hold some of its fields)
             if (rc) {
                 if (j < 0) return sweep_fail(err, n, "%s", why);
                 const sweep_param *p = &spec->params[j];
