@@ -118,9 +118,10 @@ static json_t *edge_array(const double *v, int n)
 int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, const ori_compliant *c, int E, bool all,
                                const char *title_format)
 {
-    int V = ori_compliant_vertex_count(c);
+    int V = ori_compliant_vertex_count(c), n = ori_compliant_frame_count(c);
+    bool timed = n > 0 && ori_compliant_frame_time(c, n - 1) > 0.0; // the explicit solver's time history
     ori_error err;
-    for (int k = 0; k < ori_compliant_frame_count(c); ++k) {
+    for (int k = 0; k < n; ++k) {
         if (k == 0 && ori_compliant_frame_count(c) > 1 && ori_compliant_frame_fraction(c, 0) == 0.0 && !all) continue;
         double f = ori_compliant_frame_fraction(c, k);
         char title[128];
@@ -129,6 +130,10 @@ int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, 
         char num[64];
         snprintf(num, sizeof num, "%.17g", f);
         ori_status st = ori_fold_set_custom(doc, fr, "orikin:fraction", num, &err);
+        if (st == ORI_OK && timed) { // (animate times the frames by it, as simulate's)
+            snprintf(num, sizeof num, "%.17g", ori_compliant_frame_time(c, k));
+            st = ori_fold_set_custom(doc, fr, "frame_time", num, &err);
+        }
         json_t *s = edge_array(ori_compliant_frame_strains(c, k), E);
         char *text = json_dumps(s, JSON_COMPACT);
         json_decref(s);

@@ -44,7 +44,7 @@ int cli_compliant_write_frames(const char *cmd, const char *out, ori_fold *doc, 
     "                  or physical (SI: 1 um silicon panels; lengths in metres)\n"                     \
     "  --axial K, --facet K, --crease K, --damping Z   the stiffnesses of the preset, replaced\n"      \
     "  --gravity G     acceleration along -z (model units or m/s^2); default 0\n"                       \
-    "  --all-frames    -o writes one frame per load step (default: the final state)\n"                \
+    "  --all-frames    -o writes every load step (--dynamic: the time history, with frame_time)\n"   \
     "  --json          print {file, model, solver, preset, percent, reached, reached_fraction,\n"       \
     "                  max_strain, energy, crease_error_deg, gradient_norm, load_scale, vertices,\n"  \
     "                  bars, hinges, steps | newton_iterations, load_steps, fold_angles_deg,\n"       \

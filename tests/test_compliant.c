@@ -375,6 +375,48 @@ Test(compliant, explicit_settles_on_the_static_equilibrium)
     ori_pattern_destroy(p);
 }
 
+// keep_frames with the explicit solver: its time history. The flat start at t = 0, frames evenly
+// spaced at a whole number of time steps, at most 257 (a run of 5,000 steps, 312 frames of 16
+// steps, is thinned once: a frame every 32 steps), the last at steps × dt and equal to the final
+// state; the same run
+// without keep_frames ends in the same state with one frame.
+Test(compliant, the_explicit_solver_keeps_its_time_history)
+{
+    ori_pattern *p = flap_pattern(ORI_ASSIGN_VALLEY);
+    ori_compliant_def d = ori_default_compliant_def();
+    d.fraction = 0.4;
+    d.gravity = 0.3;
+    d.fixed_face = face_containing(p, 0.5, 0.5);
+    d.keep_frames = true;
+    ori_compliant *c = make(p, &d);
+    d.keep_frames = false;
+    ori_compliant *one = make(p, &d);
+    ori_error err;
+    int steps = 0, steps1 = 0;
+    cr_assert_eq(ori_compliant_run_dynamic(c, 5000, 1e-300, &steps, &err), ORI_ERR_NOT_CONVERGED); // (never settles)
+    cr_assert_eq(ori_compliant_run_dynamic(one, 5000, 1e-300, &steps1, &err), ORI_ERR_NOT_CONVERGED);
+    cr_assert_eq(steps, 5000);
+    double dt = ori_compliant_time_step(c);
+    int n = ori_compliant_frame_count(c), V = ori_pattern_vertex_count(p);
+    cr_assert(n >= 3 && n <= 257, "%d frames", n);
+    cr_assert_eq(ori_compliant_frame_time(c, 0), 0.0);
+    for (int v = 0; v < V; ++v) cr_assert_eq(ori_compliant_frame_positions(c, 0)[v].z, 0.0, "the flat start");
+    double gap = ori_compliant_frame_time(c, 1);
+    cr_assert_float_eq(gap / dt, 32.0, 1e-9, "thinned once: a frame every 32 steps (%g)", gap / dt);
+    for (int k = 1; k < n - 1; ++k)
+        cr_assert_float_eq(ori_compliant_frame_time(c, k), k * gap, 1e-9 * gap * n, "frame %d", k);
+    cr_assert_float_eq(ori_compliant_frame_time(c, n - 1), 5000 * dt, 1e-12 * 5000 * dt);
+    cr_assert_eq(ori_compliant_frame_count(one), 1);
+    const ori_v3 *end = ori_compliant_frame_positions(c, n - 1), *x = ori_compliant_positions(c), *y = ori_compliant_positions(one);
+    for (int v = 0; v < V; ++v) {
+        cr_assert(end[v].x == x[v].x && end[v].y == x[v].y && end[v].z == x[v].z, "the last frame is the final state");
+        cr_assert(y[v].x == x[v].x && y[v].y == x[v].y && y[v].z == x[v].z, "keeping frames changes nothing");
+    }
+    ori_compliant_destroy(c);
+    ori_compliant_destroy(one);
+    ori_pattern_destroy(p);
+}
+
 Test(compliant, explicit_on_two_threads_takes_the_same_steps_as_one)
 {
     // A Miura 40 × 40 at 30 %, 2,000 explicit steps: the force sums shared by two threads (phase

@@ -43,10 +43,6 @@ bool cli_compliant_request_error(const cli_compliant_request *r, char *buf, size
         snprintf(buf, size, "--threads needs an integer from 1 to 64, got '%d'", r->threads);
         return true;
     }
-    if (r->dynamic && r->all_frames) {
-        snprintf(buf, size, "--all-frames is for the static solver's load steps, not --dynamic");
-        return true;
-    }
     return false;
 }
 

@@ -145,13 +145,15 @@ ori_status cli_motion_of_compliant(const ori_compliant *c, int samples, cli_moti
     int count = samples >= 2 ? samples : n;
     cli_motion_alloc(m, count, V, F, E, false, true);
     m->sources = zalloc((size_t)count, sizeof(int));
-    double f0 = ori_compliant_frame_fraction(c, 0), f1 = ori_compliant_frame_fraction(c, n - 1);
+    // timed by the fraction (load steps), or by the explicit time (a dynamic fold's history)
+    bool timed = ori_compliant_frame_time(c, n - 1) > 0.0;
+    double (*at)(const ori_compliant *, int) = timed ? ori_compliant_frame_time : ori_compliant_frame_fraction;
+    double f0 = at(c, 0), f1 = at(c, n - 1);
     int j = 0;
     for (int i = 0; i < count; ++i) {
-        double t = samples >= 2 ? f0 + (f1 - f0) * i / (count - 1) : ori_compliant_frame_fraction(c, i);
+        double t = samples >= 2 ? f0 + (f1 - f0) * i / (count - 1) : at(c, i);
         if (samples >= 2)
-            while (j + 1 < n && fabs(ori_compliant_frame_fraction(c, j + 1) - t) <= fabs(ori_compliant_frame_fraction(c, j) - t))
-                j++;
+            while (j + 1 < n && fabs(at(c, j + 1) - t) <= fabs(at(c, j) - t)) j++;
         int k = samples >= 2 ? j : i;
         m->times[i] = t;
         m->sources[i] = k;

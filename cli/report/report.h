@@ -313,7 +313,8 @@ ori_status cli_motion_of_multifold(const ori_mechanism *mech, const ori_multifol
                                    int fixed_face, int samples, ori_progress_fn *progress, void *user, cli_motion *m,
                                    ori_error *err);
 // A compliant fold solved with its frames kept (cli_compliant_request all_frames): its recorded
-// states (the load steps, from the flat sheet) timed by their fraction of the way (0 … 1), or
+// states (the load steps from the flat sheet, timed by their fraction of the way 0 … 1; or the
+// explicit solver's time history, timed by its time), or
 // samples states at evenly spaced fractions, each the recorded state nearest to it (the model
 // holds nothing between its steps); sources: the state's index in the model; no face poses (the
 // faces bend). ORI_ERR_RANGE (said in *err) when the model recorded fewer than two states.

@@ -60,7 +60,8 @@ typedef struct ori_compliant_def {
     bool auto_polarity;              ///< each wire's current is signed to turn its crease toward its assignment (valley +) at the flat state (default true)
     int threads;                     ///< threads of the explicit solver (1 … 64; default 1): fewer when a thread would get
                                      ///< under 4,096 bars and hinges; the result is the one thread's to roundoff
-    bool keep_frames;                ///< keep one frame per load step (else only the last)
+    bool keep_frames;                ///< keep one frame per load step (static), or the time history (explicit: the start, a frame
+                                     ///< every 16 steps, thinned by halves to at most 256, and the end); else only the last
     bool check_contacts;             ///< warn of faces passing through each other (after each load step; every 1024 explicit steps and at the end); default true
     int internal_value;              ///< set by the default functions; do not change
 } ori_compliant_def;
@@ -160,10 +161,12 @@ ORI_API int ori_compliant_contact_count(const ori_compliant *c);
 ORI_API void ori_compliant_contact(const ori_compliant *c, int k, int *face_a, int *face_b, int *step, double *fraction);
 ORI_API bool ori_compliant_contacts_truncated(const ori_compliant *c);
 
-/// Frames kept by the static solver (one per load step with keep_frames, else the last).
+/// Frames kept (keep_frames: one per load step, or the explicit time history; else the last).
 ORI_API int ori_compliant_frame_count(const ori_compliant *c);
 /// Frame k's fraction, positions (vertex_count), fold angles and strains (edge_count each); owned by c.
 ORI_API double ori_compliant_frame_fraction(const ori_compliant *c, int k);
+/// Frame k's explicit time (steps × ori_compliant_time_step, model time units; 0 for the static solver's frames).
+ORI_API double ori_compliant_frame_time(const ori_compliant *c, int k);
 ORI_API const ori_v3 *ori_compliant_frame_positions(const ori_compliant *c, int k);
 ORI_API const double *ori_compliant_frame_angles(const ori_compliant *c, int k);
 ORI_API const double *ori_compliant_frame_strains(const ori_compliant *c, int k);

@@ -524,7 +524,7 @@ class Pattern:
           gravity   acceleration along -z (model units or m/s^2); default 0
           steps     the explicit solver's step bound (> 0)
           threads   the explicit solver's threads (1 to 64; large sheets only share them)
-          all_frames  keep one frame per load step (the CLI's --all-frames; static only)
+          all_frames  keep one frame per load step, or with dynamic the time history (the CLI's --all-frames)
         A fold that does not reach its fraction is a result (fold.reached False, fold.reason:
         the CLI's exit 1, or 5 for dynamic); bad stiffnesses are orikin.InputError with the
         CLI's message.
@@ -647,8 +647,6 @@ class Pattern:
             raise _usage(f"--steps needs a positive integer, got '{steps}'", "--steps")
         if int(threads) != threads or not (1 <= threads <= 64):
             raise _usage(f"--threads needs an integer from 1 to 64, got '{threads}'", "--threads")
-        if dynamic and all_frames:
-            raise _usage("--all-frames is for the static solver's load steps, not --dynamic", "--all-frames")
         fix_index = -1 if fix is None else self.face(fix, "--fix")
         d = _c.compliant_fold(self._p, percent / 100.0, bool(dynamic), fix_index, preset == "physical",
                               None if axial is None else float(axial), None if facet is None else float(facet),
@@ -859,9 +857,9 @@ class CompliantFold(Report):
     hinges, triangles, steps and time_step (explicit), newton_iterations, factorizations,
     load_steps (static); arrays (copies): fold_angles (E, radians), strains (E, axial strain
     (L - L0)/L0 per edge), face_energies (F, the strain energy of each face's bars and facet
-    hinges), face_strains (F, its largest |strain|), positions (V, 3), frame_fractions (F), frame_positions (F, V, 3),
-    frame_angles and frame_strains (F, E): one frame per load step with all_frames, else the
-    final state; contacts: faces passing through each other during the fold, [{faces: (a, b),
+    hinges), face_strains (F, its largest |strain|), positions (V, 3), frame_fractions (F), frame_times (F:
+    the explicit time, 0 for load steps), frame_positions (F, V, 3), frame_angles and frame_strains (F, E):
+    one frame per load step (or the explicit time history) with all_frames, else the final state; contacts: faces passing through each other during the fold, [{faces: (a, b),
     step, fraction}] (the CLI's warnings), contacts_truncated."""
 
     __slots__ = ("pattern",)

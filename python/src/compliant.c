@@ -88,7 +88,7 @@ static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
     int it, fa, bt, ls;
     ori_compliant_stats(c, &it, &fa, &bt, &ls);
     npy_intp nf = F;
-    PyObject *fracs = PyArray_SimpleNew(1, &nf, NPY_DOUBLE);
+    PyObject *fracs = PyArray_SimpleNew(1, &nf, NPY_DOUBLE), *times = PyArray_SimpleNew(1, &nf, NPY_DOUBLE);
     double *fe = ang + E; // NF doubles after the angles
     for (int f = 0; f < NF; ++f) fe[f] = ori_compliant_face_energy(c, f);
     PyObject *face_energies = ori_py_doubles(fe, NF);
@@ -106,6 +106,8 @@ static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
     }
     if (fracs)
         for (int k = 0; k < F; ++k) ((double *)PyArray_DATA((PyArrayObject *)fracs))[k] = ori_compliant_frame_fraction(c, k);
+    if (times)
+        for (int k = 0; k < F; ++k) ((double *)PyArray_DATA((PyArrayObject *)times))[k] = ori_compliant_frame_time(c, k);
     bool reached = st == ORI_OK;
     PyObject *res = ori_py_dict(
         "solver", PyUnicode_FromString(dynamic ? "explicit" : "static"),
@@ -122,7 +124,7 @@ static PyObject *py_compliant_fold(PyObject *mod, PyObject *args, PyObject *kw)
         "backtracks", PyLong_FromLong(bt), "load_steps", PyLong_FromLong(ls),
         "fold_angles", ori_py_doubles(ang, E), "strains", ori_py_doubles(str, E),
         "positions", ori_py_points(ori_compliant_positions(c), V),
-        "frame_fractions", fracs, "frame_positions", frames_array(c, F, V, 0),
+        "frame_fractions", fracs, "frame_times", times, "frame_positions", frames_array(c, F, V, 0),
         "frame_angles", frames_array(c, F, E, 1), "frame_strains", frames_array(c, F, E, 2),
         "face_energies", face_energies, "face_strains", face_strains, "contacts", contacts,
         "contacts_truncated", PyBool_FromLong(ori_compliant_contacts_truncated(c)),

@@ -57,6 +57,23 @@ def test_dynamic_agrees_with_the_cli_json():
     np.testing.assert_allclose(f.fold_angles, s.fold_angles, rtol=0, atol=1e-5)
 
 
+def test_the_explicit_time_history(tmp_path):
+    # with all_frames the explicit solver keeps its history: the flat start, evenly spaced times
+    # (a multiple of the time step), the settled end; the CLI writes it as frame_time
+    p = open_corner()
+    f = p.fold(compliant=True, dynamic=True, percent=40, all_frames=True)
+    t = f.frame_times
+    assert 3 <= len(t) <= 257 and t[0] == 0.0
+    assert np.all(np.diff(t) > 0)
+    assert t[-1] == pytest.approx(f.steps * f.time_step, rel=1e-12)
+    np.testing.assert_array_equal(f.frame_angles[-1], f.fold_angles)
+    np.testing.assert_allclose(f.frame_positions[0][:, 2], 0.0, atol=0)  # the flat sheet
+    out = tmp_path / "dyn.fold"
+    cli(f"fold examples/patterns/open-corner.fold --compliant --dynamic --percent 40 --all-frames -o {out}")
+    frames = json.load(open(out))["file_frames"]
+    np.testing.assert_allclose([fr["frame_time"] for fr in frames], t, rtol=0, atol=0)
+
+
 def test_all_frames_and_options_reach_the_model():
     p = open_corner()
     f = p.fold(compliant=True, percent=40, all_frames=True, axial=200, facet=2, crease=0.7, fix=4)
@@ -130,9 +147,6 @@ def test_errors_are_the_clis(monkeypatch):
     with pytest.raises(orikin.InputError) as e:
         p.fold(compliant=True, drive=3)
     assert str(e.value) == cli_error(f"fold {src} --compliant --drive 3")
-    with pytest.raises(orikin.InputError) as e:
-        p.fold(compliant=True, dynamic=True, all_frames=True)
-    assert str(e.value) == cli_error(f"fold {src} --compliant --dynamic --all-frames")
     with pytest.raises(orikin.InputError) as e:
         p.fold(compliant=True, dynamic=True, threads=0)
     assert str(e.value) == cli_error(f"fold {src} --compliant --dynamic --threads 0")

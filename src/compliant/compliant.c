@@ -21,6 +21,10 @@
 // Armijo constant of the line search, and its largest number of halvings.
 #define CMP_ARMIJO 1e-4
 #define CMP_MAX_BACKTRACKS 60
+// The explicit time history (keep_frames): a frame every CMP_FIRST_FRAME_INTERVAL steps at first,
+// at most CMP_TIME_FRAMES of them (thinned by halves, the interval doubled).
+#define CMP_FIRST_FRAME_INTERVAL 16
+#define CMP_TIME_FRAMES 256
 // Relative energy change below which two energies are equal to roundoff (the line search then
 // accepts a step that lowers |∇E|, since the energy can no longer tell).
 #define CMP_ENERGY_ROUNDOFF 1e-13
@@ -85,16 +89,33 @@ void ori__cmp_set_trace(ori_compliant *c, ori__cmp_trace_fn *fn, void *user)
     c->trace_user = user;
 }
 
+static void free_frame(cmp_frame *f)
+{
+    ori__free(f->x);
+    ori__free(f->angles);
+    ori__free(f->strains);
+    ori__free(f->face_energy);
+    ori__free(f->face_strain);
+}
+
 static void free_frames(ori_compliant *c)
 {
-    for (int k = 0; k < c->nframes; ++k) {
-        ori__free(c->frames[k].x);
-        ori__free(c->frames[k].angles);
-        ori__free(c->frames[k].strains);
-        ori__free(c->frames[k].face_energy);
-        ori__free(c->frames[k].face_strain);
-    }
+    for (int k = 0; k < c->nframes; ++k) free_frame(&c->frames[k]);
     c->nframes = 0;
+}
+
+// The explicit time history keeps at most CMP_TIME_FRAMES frames: past that, every other frame
+// after the first goes and the interval between kept frames doubles (the frames stay evenly
+// spaced in time).
+static void thin_frames(ori_compliant *c)
+{
+    int w = 1;
+    for (int k = 1; k < c->nframes; ++k) {
+        if (k % 2 == 1) free_frame(&c->frames[k]);
+        else c->frames[w++] = c->frames[k];
+    }
+    c->nframes = w;
+    c->frame_interval *= 2;
 }
 
 void ori_compliant_destroy(ori_compliant *c)
@@ -954,6 +975,7 @@ static void store_frame(ori_compliant *c, bool replace_last)
     ORI__RESERVE(c->frames, c->cap_frames, c->nframes + 1);
     cmp_frame *f = &c->frames[c->nframes++];
     f->fraction = c->fraction;
+    f->time = c->time;
     f->x = ori__alloc(sizeof(ori_v3) * (size_t)(c->nv > 0 ? c->nv : 1));
     for (int v = 0; v < c->nv; ++v)
         f->x[v] = (ori_v3){c->x[3 * v] / c->unit, c->x[3 * v + 1] / c->unit, c->x[3 * v + 2] / c->unit};
@@ -1269,6 +1291,7 @@ static int relax(ori_compliant *c, double frac, int max_steps, double ftol, doub
     int k;
     cmp_pool pool;
     pool_start(&pool, c, frac, F);
+    double t0 = c->time;
     for (k = 0; k < max_steps; ++k) {
         bool finite;
         double vmax = pool_run(&pool, CMP_POOL_STEP, &finite);
@@ -1277,7 +1300,12 @@ static int relax(ori_compliant *c, double frac, int max_steps, double ftol, doub
             pool_stop(&pool);
             return k + 1;
         }
+        c->time = t0 + (k + 1) * dt;
         ori__cmp_commit_fibres(c, c->x, frac);
+        if (c->def.keep_frames && (k + 1) % c->frame_interval == 0) { // the time history
+            store_frame(c, false);
+            if (c->nframes > CMP_TIME_FRAMES) thin_frames(c);
+        }
         if (k % CMP_CONTACT_INTERVAL == CMP_CONTACT_INTERVAL - 1) check_contacts(c, k + 1, frac);
         if ((k & 15) == 15 && pool_run(&pool, CMP_POOL_CHECK, NULL) <= ftol && vmax <= vtol) {
             *settled = true;
@@ -1620,6 +1648,12 @@ double ori_compliant_frame_fraction(const ori_compliant *c, int k)
     return c->frames[k].fraction;
 }
 
+double ori_compliant_frame_time(const ori_compliant *c, int k)
+{
+    ORI_ASSERT(k >= 0 && k < c->nframes);
+    return c->frames[k].time;
+}
+
 const ori_v3 *ori_compliant_frame_positions(const ori_compliant *c, int k)
 {
     ORI_ASSERT(k >= 0 && k < c->nframes);
@@ -1649,11 +1683,14 @@ ori_status ori_compliant_run_dynamic(ori_compliant *c, int max_steps, double for
     c->gravity_factor = 1.0;
     double *F = ori__alloc(sizeof(double) * 3 * (size_t)(c->nv > 0 ? c->nv : 1));
     bool settled, diverged;
+    if (c->frame_interval < 1) c->frame_interval = CMP_FIRST_FRAME_INTERVAL;
+    c->fraction = c->def.fraction; // (the rest angles are set at once: every frame of the history is at it)
     int k = relax(c, c->def.fraction, max_steps, force_tolerance * c->load_scale, F, &settled, &diverged);
     ori__free(F);
     if (steps) *steps = k;
-    c->fraction = c->def.fraction;
-    store_frame(c, !c->def.keep_frames);
+    // the end (with the history, unless its last frame is the end already)
+    bool have_end = c->def.keep_frames && c->nframes > 0 && c->frames[c->nframes - 1].time == c->time;
+    if (!have_end) store_frame(c, !c->def.keep_frames);
     if (!diverged) check_contacts(c, k, c->fraction);
     if (diverged) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver diverged at step %d", k);
     if (!settled) return ori__fail(error, ORI_ERR_NOT_CONVERGED, "compliant: the explicit solver did not settle in %d steps", max_steps);

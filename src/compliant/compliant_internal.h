@@ -55,6 +55,7 @@ typedef struct cmp_wire {
 
 typedef struct cmp_frame {
     double fraction;
+    double time; // the explicit solver's time at the frame (0 for the static solver's)
     ori_v3 *x;
     double *angles, *strains;
     double *face_energy, *face_strain; // per pattern face
@@ -109,6 +110,8 @@ struct ori_compliant {
     void *trace_user;
     cmp_frame *frames;
     int nframes, cap_frames;
+    double time;        // explicit time run so far (steps × dt)
+    int frame_interval; // explicit steps between kept frames (keep_frames; doubled as they are thinned)
     // contact checks of the deformed sheet: the triangles as a pattern and its collider
     ori_pattern *tri_pattern;
     ori_collider *collider;
