@@ -1,6 +1,7 @@
 // Shared pieces of the actuation commands: options, input, design overrides, sizing.
 #include "actuation_args.h"
 #include "progress.h"
+#include "report.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -127,17 +128,6 @@ bool act_is_sequence(const char *path)
     return seq;
 }
 
-// The pattern path of a sequence, relative to the sequence file's directory.
-static char *resolve(const char *seq_path, const char *pattern)
-{
-    const char *slash = strrchr(seq_path, '/');
-    size_t dir = (pattern[0] == '/' || !slash) ? 0 : (size_t)(slash - seq_path) + 1;
-    char *p = malloc(dir + strlen(pattern) + 1);
-    memcpy(p, seq_path, dir);
-    strcpy(p + dir, pattern);
-    return p;
-}
-
 void act_free(act_input *in)
 {
     ori_design_destroy(in->design);
@@ -162,7 +152,7 @@ int act_load(const char *cmd, const char *path, const act_opts *o, act_input *in
             act_free(in);
             return rc;
         }
-        in->pattern_path = resolve(path, ori_sequence_pattern_path(in->seq));
+        in->pattern_path = cli_path_beside(path, ori_sequence_pattern_path(in->seq));
         frame = ori_sequence_frame(in->seq);
     } else {
         in->pattern_path = malloc(strlen(path) + 1);

@@ -18,17 +18,6 @@ typedef struct seq_args {
     const char *out;
 } seq_args;
 
-// The pattern path of the sequence, relative to the sequence file's directory.
-static char *resolve(const char *seq_path, const char *pattern)
-{
-    const char *slash = strrchr(seq_path, '/');
-    size_t dir = (pattern[0] == '/' || !slash) ? 0 : (size_t)(slash - seq_path) + 1;
-    char *p = malloc(dir + strlen(pattern) + 1);
-    memcpy(p, seq_path, dir);
-    strcpy(p + dir, pattern);
-    return p;
-}
-
 // Creases whose angle changes anywhere in the record (the table's columns).
 static int moving_creases(const ori_record *r, int edges, int *out, int cap)
 {
@@ -228,7 +217,7 @@ static int run(int argc, char **argv)
                              a.path, a.path);
         return cli_input_error("sequence", a.path, &err);
     }
-    char *pattern = resolve(a.path, ori_sequence_pattern_path(s));
+    char *pattern = cli_path_beside(a.path, ori_sequence_pattern_path(s));
     cli_kin k;
     int rc = cli_kin_load_sequence("sequence", a.path, pattern, ori_sequence_frame(s), &k);
     if (rc != CLI_EXIT_OK) {

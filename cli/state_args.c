@@ -219,22 +219,6 @@ ori_state_view cli_state_view(const cli_state *s)
 
 static void *xcalloc(size_t n, size_t size) { return calloc(n ? n : 1, size); }
 
-// Face poses from world positions (rigid fit of every face), or NULL when some face is not rigid.
-static ori_rigid *poses_from_positions(const ori_mechanism *m, const ori_v3 *pos)
-{
-    if (!m) return NULL;
-    int nf = ori_mechanism_face_count(m);
-    ori_rigid *p = xcalloc((size_t)nf, sizeof *p);
-    for (int f = 0; f < nf; ++f) {
-        ori_error err;
-        if (ori_mechanism_face_pose_from_coords(m, f, pos, &p[f], &err) != ORI_OK) {
-            free(p);
-            return NULL;
-        }
-    }
-    return p;
-}
-
 static bool same_topology(const ori_pattern *a, const ori_pattern *b)
 {
     return ori_pattern_vertex_count(a) == ori_pattern_vertex_count(b) && ori_pattern_edge_count(a) == ori_pattern_edge_count(b) &&
@@ -386,7 +370,7 @@ static int load_frame_pose(const char *cmd, const cli_state_args *a, bool need_p
         ori_mechanism_def md = ori_default_mechanism_def();
         md.pattern = p0;
         if (ori_mechanism_create(&md, &s->mech, &err) != ORI_OK) s->mech = NULL;
-        s->poses = poses_from_positions(s->mech, s->positions);
+        s->poses = cli_poses_from_positions(s->mech, s->positions);
     } else {
         if (pf) ori_pattern_destroy(p0);
         s->pattern = p;
@@ -399,11 +383,7 @@ static int load_frame_pose(const char *cmd, const cli_state_args *a, bool need_p
 // placed where the frame's positions have it.
 static void modes_poses(const cli_state *s, const double *angles, const ori_v3 *pos, ori_rigid *poses)
 {
-    int f = cli_fold_modes_fixed_face(s->modes);
-    ori_rigid g = ori_rigid_identity();
-    ori_error err;
-    if (ori_mechanism_face_pose_from_coords(s->mech, f, pos, &g, &err) != ORI_OK) g = ori_rigid_identity();
-    ori_mechanism_face_poses(s->mech, angles, f, g, poses);
+    cli_pose_faces(s->mech, cli_fold_modes_fixed_face(s->modes), angles, pos, poses);
 }
 
 // A fold in one of the modes (--percent, several drives, --lock auto, --symmetric): its last
@@ -519,33 +499,18 @@ static int load_fold(const char *cmd, const cli_state_args *a, cli_state *s)
     return CLI_EXIT_OK;
 }
 
-// The pattern path of a sequence, relative to the sequence file's folder.
-static char *resolve(const char *seq_path, const char *pattern)
-{
-    const char *slash = strrchr(seq_path, '/');
-    size_t dir = (pattern[0] == '/' || !slash) ? 0 : (size_t)(slash - seq_path) + 1;
-    char *p = malloc(dir + strlen(pattern) + 1);
-    memcpy(p, seq_path, dir);
-    strcpy(p + dir, pattern);
-    return p;
-}
-
 // Face poses of a sequence state: forward kinematics from the fixed face of its fold, placed
 // where the recorded positions have it.
 static void sequence_poses(const cli_state *s, int fold, const double *angles, const ori_v3 *pos, ori_rigid *poses)
 {
-    int f = ori_sequence_fold_at(s->seq, fold).fixed_face;
-    ori_rigid g = ori_rigid_identity();
-    ori_error err;
-    if (ori_mechanism_face_pose_from_coords(s->mech, f, pos, &g, &err) != ORI_OK) g = ori_rigid_identity();
-    ori_mechanism_face_poses(s->mech, angles, f, g, poses);
+    cli_pose_faces(s->mech, ori_sequence_fold_at(s->seq, fold).fixed_face, angles, pos, poses);
 }
 
 static int load_sequence(const char *cmd, const cli_state_args *a, cli_state *s)
 {
     ori_error err;
     if (ori_sequence_load_file(a->path, &s->seq, &err) != ORI_OK) return cli_input_error(cmd, a->path, &err);
-    s->pattern_path = resolve(a->path, ori_sequence_pattern_path(s->seq));
+    s->pattern_path = cli_path_beside(a->path, ori_sequence_pattern_path(s->seq));
     int rc = cli_kin_load_sequence(cmd, a->path, s->pattern_path, ori_sequence_frame(s->seq), &s->kin);
     if (rc != CLI_EXIT_OK) return rc;
     s->has_kin = true;
@@ -665,7 +630,7 @@ static int motion_of_frames(const char *cmd, cli_state *s, int samples, cli_moti
         else all_timed = false;
         ori_buffer_free(t);
         if (stored.poses) {
-            ori_rigid *pp = poses_from_positions(s->mech, stored.positions + (size_t)i * V);
+            ori_rigid *pp = cli_poses_from_positions(s->mech, stored.positions + (size_t)i * V);
             if (pp) {
                 memcpy(stored.poses + (size_t)i * F, pp, sizeof(ori_rigid) * (size_t)F);
                 free(pp);

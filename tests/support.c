@@ -107,19 +107,22 @@ void test_tmpdir_remove(char *dir)
     free(dir);
 }
 
-char *test_read_text(const char *path)
+char *test_read_file(const char *path, size_t *size)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return NULL;
     fseek(f, 0, SEEK_END);
     long n = ftell(f);
     fseek(f, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);
-    size_t got = fread(buf, 1, (size_t)n, f);
+    char *buf = malloc((size_t)(n > 0 ? n : 0) + 1);
+    size_t got = n > 0 ? fread(buf, 1, (size_t)n, f) : 0;
     buf[got] = '\0';
     fclose(f);
+    if (size) *size = got;
     return buf;
 }
+
+char *test_read_text(const char *path) { return test_read_file(path, NULL); }
 
 bool test_vertex_flat_foldable(const ori_pattern *p, int v, char *why, size_t why_size)
 {

@@ -42,6 +42,9 @@ json_t *test_run_cli_json(const char *args);
 
 // Read a whole file (malloc'd, NUL-terminated) or NULL.
 char *test_read_text(const char *path);
+// The file's bytes (malloc'd, NUL-terminated after them), their count in *size (may be NULL);
+// NULL when it cannot be read.
+char *test_read_file(const char *path, size_t *size);
 
 // Locate elements of a flat pattern by exact coordinates (fails the test when absent): the
 // edge joining (x0,y0)-(x1,y1), the vertex at (x,y), the face containing (x,y) strictly.

@@ -448,25 +448,11 @@ Test(cli, a_command_with_several_outputs_writes_all_or_none)
     test_tmpdir_remove(dir);
 }
 
-// The whole file's bytes (malloc'd; *n its size).
-static char *file_bytes(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    cr_assert_not_null(f, "%s was written", path);
-    fseek(f, 0, SEEK_END);
-    long size = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *b = malloc((size_t)size + 1);
-    cr_assert_eq(fread(b, 1, (size_t)size, f), (size_t)size);
-    fclose(f);
-    *n = (size_t)size;
-    return b;
-}
-
 static void assert_same_file(const char *a, const char *b, const char *what)
 {
     size_t na, nb;
-    char *x = file_bytes(a, &na), *y = file_bytes(b, &nb);
+    char *x = test_read_file(a, &na), *y = test_read_file(b, &nb);
+    cr_assert(x && y, "%s and %s were written", a, b);
     cr_assert(na == nb && memcmp(x, y, na) == 0, "%s: %s (%zu bytes) and %s (%zu bytes) differ", what, a, na, b, nb);
     free(x);
     free(y);

@@ -178,15 +178,8 @@ Test(export, obj_reads_back_to_the_posed_vertices)
 // "usemtl" of the OBJ (front, back; rim for a solid) is defined there with the colours asked for.
 static char *slurp(const char *path)
 {
-    FILE *f = fopen(path, "rb");
-    cr_assert_not_null(f, "%s", path);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *t = malloc((size_t)n + 1);
-    cr_assert_eq(fread(t, 1, (size_t)n, f), (size_t)n);
-    t[n] = '\0';
-    fclose(f);
+    char *t = test_read_file(path, NULL);
+    cr_assert_not_null(t, "%s", path);
     return t;
 }
 

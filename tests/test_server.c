@@ -1688,19 +1688,6 @@ Test(server, regularize_equals_cli)
     test_tmpdir_remove(dir);
 }
 
-static char *read_bytes(const char *path, size_t *size)
-{
-    FILE *f = fopen(path, "rb");
-    cr_assert_not_null(f, "%s", path);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);
-    *size = fread(buf, 1, (size_t)n, f);
-    fclose(f);
-    return buf;
-}
-
 // Blank a PDF's creation and modification dates ("(D:2026…)"): the only bytes that differ
 // between two runs.
 static void blank_pdf_dates(char *b, size_t n)
@@ -1756,7 +1743,8 @@ static void assert_export_equals(studio *s, const char *query, const char *args,
     cr_assert_eq(rc, 0, "orikin %s: %s", cmd, log);
     free(log);
     size_t n;
-    char *want = read_bytes(path, &n);
+    char *want = test_read_file(path, &n);
+    cr_assert_not_null(want, "%s", path);
     studio_response r = call(s, "GET", "/api/export", query, NULL);
     cr_assert_eq(r.status, 200, "%s: %d %.300s", query, r.status, r.body);
     if (strcmp(ext, "pdf") == 0) {

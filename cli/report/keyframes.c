@@ -43,16 +43,6 @@ static void alloc_for(cli_motion *m, const ori_mechanism *mech, int count)
                      ori_mechanism_edge_count(mech), true, true);
 }
 
-// Every face's pose in the state (angles, positions), from fixed_face's pose there.
-static void pose_faces(const ori_mechanism *mech, int fixed_face, const double *angles, const ori_v3 *positions,
-                       ori_rigid *poses)
-{
-    ori_rigid g = ori_rigid_identity();
-    ori_error err;
-    if (ori_mechanism_face_pose_from_coords(mech, fixed_face, positions, &g, &err) != ORI_OK) g = ori_rigid_identity();
-    ori_mechanism_face_poses(mech, angles, fixed_face, g, poses);
-}
-
 static double *frame_angles(cli_motion *m, int i) { return m->angles + (size_t)i * (size_t)m->edge_count; }
 static ori_v3 *frame_positions(cli_motion *m, int i) { return m->positions + (size_t)i * (size_t)m->vertex_count; }
 static ori_rigid *frame_poses(cli_motion *m, int i) { return m->poses + (size_t)i * (size_t)m->face_count; }
@@ -123,7 +113,7 @@ ori_status cli_motion_of_multifold(const ori_mechanism *mech, const ori_multifol
             }
             if (progress) progress((double)(i + 1) / count, user);
         }
-        pose_faces(mech, fixed_face, frame_angles(m, i), frame_positions(m, i), frame_poses(m, i));
+        cli_pose_faces(mech, fixed_face, frame_angles(m, i), frame_positions(m, i), frame_poses(m, i));
     }
     m->duration = m->times[count - 1] - m->times[0];
     return ORI_OK;
@@ -189,7 +179,7 @@ ori_status cli_motion_of_record(const ori_mechanism *mech, const ori_sequence *s
             }
             if (progress) progress((double)(i + 1) / count, user);
         }
-        pose_faces(mech, ori_sequence_fold_at(seq, fold).fixed_face, frame_angles(m, i), frame_positions(m, i),
+        cli_pose_faces(mech, ori_sequence_fold_at(seq, fold).fixed_face, frame_angles(m, i), frame_positions(m, i),
                    frame_poses(m, i));
     }
     return ORI_OK;

@@ -15,7 +15,8 @@
 // cli_modes_against_assignment, cli_modes_json, cli_modes_free, cli_compliant_request_init,
 // cli_compliant_request_error, cli_compliant_def, cli_compliant_solve, cli_compliant_contacts_json,
 // cli_compliant_json, cli_motion_alloc, cli_motion_free, cli_motion_of_fold,
-// cli_motion_of_multifold, cli_motion_of_compliant, cli_motion_of_record.
+// cli_motion_of_multifold, cli_motion_of_compliant, cli_motion_of_record, cli_path_beside,
+// cli_pose_faces, cli_poses_from_positions.
 #ifndef ORI_CLI_REPORT_H
 #define ORI_CLI_REPORT_H
 
@@ -280,6 +281,19 @@ json_t *cli_compliant_contacts_json(const ori_compliant *c, const char *fraction
 // vertex, the studio's drawing).
 json_t *cli_compliant_json(const char *file, const cli_compliant_request *r, const ori_compliant *c, bool reached,
                            int explicit_steps, const char *reason, bool positions);
+
+// --- small pieces both front ends need (common.c) -------------------------------------------
+
+// path read relative to the folder of file (as a sequence names its pattern): malloc'd; an
+// absolute path, or a file without a folder, gives path itself.
+char *cli_path_beside(const char *file, const char *path);
+// Every face's pose in a state (angles, positions) by forward kinematics from fixed_face, placed
+// where positions have it (its rigid fit; the identity when it has none); poses: face_count.
+void cli_pose_faces(const ori_mechanism *mech, int fixed_face, const double *angles, const ori_v3 *positions,
+                    ori_rigid *poses);
+// Every face's pose fitted to world positions: malloc'd (face_count), or NULL without a
+// mechanism or when some face is not a rigid copy of its reference.
+ori_rigid *cli_poses_from_positions(const ori_mechanism *mech, const ori_v3 *positions);
 
 // --- a motion as keyframes (orikin export --animate, orikin animate; GET /api/export of=fold|sequence)
 

@@ -239,16 +239,6 @@ static bool load_file(const char *path, ori_fold **doc, studio_model **model, ch
     return ok;
 }
 
-static char *resolve_relative(const char *base, const char *rel)
-{
-    const char *slash = strrchr(base, '/');
-    size_t dir = (rel[0] == '/' || !slash) ? 0 : (size_t)(slash - base) + 1;
-    char *p = malloc(dir + strlen(rel) + 1);
-    memcpy(p, base, dir);
-    strcpy(p + dir, rel);
-    return p;
-}
-
 static bool blank_sheet(double side, ori_fold **doc, studio_model **model, char *err, size_t err_size)
 {
     ori_v2 square[4] = {{0, 0}, {side, 0}, {side, side}, {0, side}};
@@ -285,7 +275,7 @@ int studio_create(const studio_def *def, studio **out, char *err, size_t err_siz
             error_line(line, sizeof line, &e);
             snprintf(err, err_size, "%s: %s", s->def.path, line);
         } else {
-            char *pattern = resolve_relative(s->def.path, ori_sequence_pattern_path(seq));
+            char *pattern = cli_path_beside(s->def.path, ori_sequence_pattern_path(seq));
             ok = load_file(pattern, &s->doc, &s->model, err, err_size);
             copy_string(s->file, sizeof s->file, pattern);
             studio_utf8_clean(s->file);

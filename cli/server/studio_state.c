@@ -156,22 +156,6 @@ static bool same_topology(const ori_pattern *a, const ori_pattern *b)
            ori_pattern_face_count(a) == ori_pattern_face_count(b);
 }
 
-// Face poses fitted to world positions (every face rigid), or NULL.
-static ori_rigid *poses_from_positions(const ori_mechanism *m, const ori_v3 *pos)
-{
-    if (!m) return NULL;
-    int nf = ori_mechanism_face_count(m);
-    ori_rigid *p = xcalloc((size_t)nf, sizeof *p);
-    for (int f = 0; f < nf; ++f) {
-        ori_error err;
-        if (ori_mechanism_face_pose_from_coords(m, f, pos, &p[f], &err) != ORI_OK) {
-            free(p);
-            return NULL;
-        }
-    }
-    return p;
-}
-
 // A document frame, as orikin render / export load it (cli/state_args.c): a crease-pattern
 // frame posed from its own fold angles (fixed face 0), a folded form as it is, drawn on frame
 // 0's crease pattern when it is a state of it.
@@ -265,7 +249,7 @@ static bool load_frame(studio *s, int frame, bool need_pose, studio_state *st, s
     if (pf && is_flat_pattern(p0) && same_topology(p0, pf)) {
         st->pattern = p0;
         st->has_flat = true;
-        st->poses = poses_from_positions(studio_model_mechanism(st->model, NULL), st->positions);
+        st->poses = cli_poses_from_positions(studio_model_mechanism(st->model, NULL), st->positions);
     } else {
         st->pattern = p;
     }
@@ -281,11 +265,7 @@ static bool load_frame(studio *s, int frame, bool need_pose, studio_state *st, s
 static void sequence_poses(const ori_mechanism *m, const ori_sequence *seq, int fold, const double *angles,
                            const ori_v3 *pos, ori_rigid *poses)
 {
-    int f = ori_sequence_fold_at(seq, fold).fixed_face;
-    ori_rigid g = ori_rigid_identity();
-    ori_error err;
-    if (ori_mechanism_face_pose_from_coords(m, f, pos, &g, &err) != ORI_OK) g = ori_rigid_identity();
-    ori_mechanism_face_poses(m, angles, f, g, poses);
+    cli_pose_faces(m, ori_sequence_fold_at(seq, fold).fixed_face, angles, pos, poses);
 }
 
 static void alloc_state(studio_state *st, const ori_mechanism *m)
