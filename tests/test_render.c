@@ -1873,3 +1873,40 @@ Test(render, cli_color_target_error_matches_the_fold_report)
     }
     test_tmpdir_remove(dir);
 }
+
+// The colour bar's labels are drawn stroke by stroke: a glyph draws its polylines and nothing
+// else (its table's zero padding once drew a dot at each glyph's corner, so "0.0238" read
+// "0..0238"). No path of the picture has a zero-length segment.
+Test(render, label_glyphs_draw_no_stray_dots)
+{
+    char *dir = test_tmpdir(), args[1024], *out = NULL;
+    snprintf(args, sizeof args, "render examples/patterns/open-corner.fold --compliant --percent 40 --color strain -o '%s/bar.svg'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    char path[600];
+    snprintf(path, sizeof path, "%s/bar.svg", dir);
+    char *svg = test_read_file(path, NULL);
+    cr_assert_not_null(svg);
+    int paths = 0, zero = 0;
+    for (char *d = strstr(svg, " d=\""); d; d = strstr(d, " d=\"")) {
+        d += 4;
+        paths++;
+        double cx = NAN, cy = NAN;
+        for (char *q = d; *q && *q != '"';) {
+            char op = *q;
+            if (op == 'M' || op == 'L') {
+                char *end;
+                double x = strtod(q + 1, &end), y = strtod(end, &end);
+                if (op == 'L' && x == cx && y == cy) zero++;
+                cx = x, cy = y;
+                q = end;
+            } else {
+                q++;
+            }
+        }
+    }
+    cr_assert_gt(paths, 10, "the picture has its faces, edges, bar and labels");
+    cr_assert_eq(zero, 0, "%d zero-length segments (stray dots)", zero);
+    free(svg);
+    test_tmpdir_remove(dir);
+}

@@ -247,7 +247,8 @@ static double line_width_of(const ori_render_def *def, double mean_edge)
 
 // Labels are drawn with a small built-in stroke font (digits, v, f, -): vector paths that look
 // the same on every machine, with no dependency on the system's fonts. Each glyph is polylines
-// in a box 0.5 wide and 1 high (y up), a point (-1, -1) ending a polyline.
+// in a box 0.5 wide and 1 high (y up), a point (-1, -1) ending a polyline; the entries after the
+// last one are padding (zeros), never drawn.
 typedef struct glyph {
     char c;
     float pts[24][2];
@@ -288,10 +289,11 @@ static void label_path(cairo_t *cr, double x, double y, const char *text, double
     for (size_t i = 0; i < n; ++i) {
         const glyph *g = glyph_of(text[i]);
         if (!g) continue;
+        int end = 23; // the last polyline's end: the zeros after it are padding (drawn, they were a
+        while (end > 0 && g->pts[end][0] >= 0) end--; // stray dot at the glyph's corner)
         bool pen = false;
-        for (int k = 0; k < 24; ++k) {
+        for (int k = 0; k <= end; ++k) {
             if (g->pts[k][0] < 0) {
-                if (!pen) break; // two ends in a row: the glyph is done
                 pen = false;
                 continue;
             }
