@@ -71,9 +71,6 @@ static int run(int argc, char **argv)
         if (sa.has_at) return cli_usage(cmd, "--animate exports the whole sequence: --at picks one instant");
         if (sa.source == CLI_STATE_FRAME && sa.has_frame)
             return cli_usage(cmd, "--animate exports every frame of IN: --frame only starts a fold given with fold options");
-        if (sa.compliant)
-            return cli_usage(cmd, "--animate moves each face as a rigid node, and a compliant fold bends its faces: orikin "
-                                  "animate draws its motion; orikin fold --compliant --all-frames -o writes its states");
     }
     bool gltf = format == ORI_MESH_GLTF || format == ORI_MESH_GLB;
     if (color == 1 && !gltf) return cli_usage(cmd, "--color strain writes vertex colours (COLOR_0): use -o OUT.gltf or OUT.glb");
@@ -112,24 +109,33 @@ static int run(int argc, char **argv)
     if (animate) {
         if ((rc = cli_state_motion(cmd, &st, 0, &m)) != CLI_EXIT_OK) goto done;
         poses = m.poses;
-        if (!poses) {
+        bool bends = st.compliant != NULL; // (its faces bend: no rigid face nodes)
+        if (!poses && !bends) {
             // A FOLD file without a crease pattern to fit against: each face's rigid motion from
-            // its position in the first frame.
+            // its position in the first frame; where a face is not rigid, the mesh morphs.
             poses = malloc(sizeof(ori_rigid) * (size_t)m.count * (size_t)m.face_count + 1);
-            for (int k = 0; k < m.count && rc == CLI_EXIT_OK; ++k)
-                for (int f = 0; f < m.face_count; ++f)
-                    if (ori_mesh_face_pose(mesh, f, m.positions + (size_t)k * m.vertex_count,
-                                           &poses[(size_t)k * m.face_count + f], &err) != ORI_OK) {
-                        char buf[512];
-                        ori_error_format(&err, buf, sizeof buf);
-                        rc = cli_input_fail(cmd, sa.path, "keyframe %d: %s: a glTF animation needs rigid faces", k, buf);
-                        break;
-                    }
-            if (rc != CLI_EXIT_OK) goto done;
+            for (int k = 0; k < m.count && !bends; ++k)
+                for (int f = 0; f < m.face_count && !bends; ++f)
+                    bends = ori_mesh_face_pose(mesh, f, m.positions + (size_t)k * m.vertex_count,
+                                               &poses[(size_t)k * m.face_count + f], &err) != ORI_OK;
         }
         def.keyframe_count = m.count;
         def.keyframe_times_s = m.times;
-        def.keyframe_poses = poses;
+        if (bends) {
+            // One mesh posed as the first keyframe, morphing to each of the others
+            if (poses != m.poses) free(poses);
+            poses = NULL;
+            ori_mesh_destroy(mesh);
+            mesh = NULL;
+            ori_state_view first = {sv.pattern, m.positions, m.angles ? m.angles : sv.fold_angles_rad};
+            if (ori_mesh_create(&first, &mesh, &err) != ORI_OK) {
+                rc = cli_input_error(cmd, sa.path, &err);
+                goto done;
+            }
+            def.keyframe_positions = m.positions;
+        } else {
+            def.keyframe_poses = poses;
+        }
     }
     def.format = format;
     def.thickness = thickness;
@@ -160,9 +166,13 @@ static int run(int argc, char **argv)
         json_object_set_new(o, "front_panels", thickness > 0.0 ? json_integer(thick.front) : json_null());
         json_object_set_new(o, "overlapping", thickness > 0.0 ? json_integer(thick.overlapping) : json_null());
         json_object_set_new(o, "keyframes", json_integer(animate ? m.count : 0));
+        json_object_set_new(o, "morph", json_boolean(def.keyframe_positions != NULL));
         json_object_set_new(o, "duration_s", animate ? json_real(m.times[m.count - 1] - m.times[0]) : json_null());
         json_object_set_new(o, "color", colored ? cli_colors_json(&colors) : json_null());
         cli_print_json(o);
+    } else if (animate && def.keyframe_positions) {
+        printf("wrote %s: one mesh of %d faces morphing through %d keyframes over %g s (the faces bend) (%s)\n", out,
+               ori_mesh_face_count(mesh), m.count, m.times[m.count - 1] - m.times[0], ori_mesh_format_name(format));
     } else if (animate) {
         printf("wrote %s: %d faces as nodes, %d keyframes over %g s (%s)\n", out, ori_mesh_face_count(mesh), m.count,
                m.times[m.count - 1] - m.times[0], ori_mesh_format_name(format));
@@ -209,8 +219,9 @@ const cli_command cli_cmd_export = {
     "the file names them (OBJ objects panel_K, STL solids orikin_thick_panel_K). --animate\n"
     "writes the whole motion (a fold's steps, a sequence's recorded states, or a FOLD file's\n"
     "frames) as a glTF animation: one node per face, rotation and translation keyframes from the\n"
-    "exact face poses, one second per fold. A glTF of a frame that carries strains (the frames\n"
-    "`orikin fold --compliant -o` writes) gets every vertex coloured by its face's strain\n"
+    "exact face poses, one second per fold; faces that bend (--compliant, or frames that are not\n"
+    "rigid) make one mesh morphing through the states. A glTF of a frame that carries strains\n"
+    "(the frames `orikin fold --compliant -o` writes) gets every vertex coloured by its face's strain\n"
     "(COLOR_0, viridis from the smallest to the largest, as render --color strain; white materials).\n"
     "\n",
     run,

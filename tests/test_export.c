@@ -1085,3 +1085,95 @@ Test(export, cli_compliant_frame_exports_strain_colours)
     free(t);
     test_tmpdir_remove(dir);
 }
+
+// A compliant fold's motion (its faces bend) exports as one mesh morphing through the load
+// steps: every vertex of keyframe k is the base POSITION plus target k − 1's displacement, equal
+// to the load step's vertex to float precision (1e-6 of the sheet); the weights animation has
+// keyframe k's target at 1 and the others at 0, at the load steps' times (their fractions).
+Test(export, a_compliant_motion_morphs_through_its_load_steps)
+{
+    char *dir = test_tmpdir(), args[1024], *out = NULL;
+    snprintf(args, sizeof args, "export examples/patterns/open-corner.fold --compliant --percent 40 --animate -o '%s/m.glb'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    cr_assert(strstr(out, "morphing through 9 keyframes"), "%s", out);
+    free(out);
+    snprintf(args, sizeof args, "fold examples/patterns/open-corner.fold --compliant --percent 40 --all-frames -o '%s/s.fold'", dir);
+    cr_assert_eq(test_run_cli(args, &out), 0, "%s", out);
+    free(out);
+    char path[600];
+    snprintf(path, sizeof path, "%s/s.fold", dir);
+    ori_fold *doc = NULL;
+    ori_error err;
+    cr_assert_eq(ori_fold_load_file(path, &doc, &err), ORI_OK, "%s", err.message);
+    int K = ori_fold_frame_count(doc) - 1; // the load steps after the crease pattern
+    cr_assert_eq(K, 9);
+    ori_v3 *frames[9];
+    for (int k = 0; k < K; ++k) frames[k] = NULL;
+    int V = 0;
+    for (int k = 0; k < K; ++k) {
+        ori_build_def bd = ori_default_build_def();
+        bd.check_planarity = false;
+        ori_pattern *p = NULL;
+        cr_assert_eq(ori_fold_get_pattern(doc, k + 1, &bd, &p, &err), ORI_OK, "%s", err.message);
+        V = ori_pattern_vertex_count(p);
+        frames[k] = malloc(sizeof(ori_v3) * (size_t)V);
+        for (int v = 0; v < V; ++v) frames[k][v] = ori_pattern_vertex(p, v);
+        ori_pattern_destroy(p);
+    }
+    char *data = NULL;
+    size_t size = 0;
+    snprintf(path, sizeof path, "%s/m.glb", dir);
+    cr_assert_eq(ori_file_read_all(path, 1 << 28, &data, &size, &err), ORI_OK, "%s", err.message);
+    gltf g = gltf_parse((unsigned char *)data, size);
+    json_t *mesh = json_array_get(json_object_get(g.root, "meshes"), 0);
+    cr_assert_eq(json_array_size(json_object_get(mesh, "weights")), (size_t)(K - 1));
+    json_t *prims = json_object_get(mesh, "primitives");
+    int checked = 0;
+    for (size_t pi = 0; pi < json_array_size(prims); ++pi) {
+        json_t *prim = json_array_get(prims, pi), *targets = json_object_get(prim, "targets");
+        cr_assert_eq(json_array_size(targets), (size_t)(K - 1));
+        int nv;
+        ori_v3 *base = positions_of(&g, prim, &nv, NULL);
+        json_t *fv = json_object_get(json_object_get(prim, "extras"), "fold_vertices");
+        for (int k = 0; k < K; ++k) {
+            double *d = NULL;
+            int nd = 0, nc = 0;
+            if (k > 0) {
+                d = accessor(&g, (int)json_integer_value(json_object_get(json_array_get(targets, (size_t)k - 1), "POSITION")), &nd, &nc);
+                cr_assert_eq(nd, nv);
+            }
+            for (int i = 0; i < nv; ++i) {
+                int v = (int)json_integer_value(json_array_get(fv, (size_t)i));
+                ori_v3 w = base[i];
+                if (d) w = ori_v3_add(w, ori_v3_make(d[3 * i], d[3 * i + 1], d[3 * i + 2]));
+                cr_assert_leq(ori_v3_norm(ori_v3_sub(w, frames[k][v])), 1e-6 * 2.83, "keyframe %d vertex %d", k, v);
+                checked++;
+            }
+            free(d);
+        }
+        free(base);
+    }
+    cr_assert_gt(checked, 0);
+    json_t *anim = json_array_get(json_object_get(g.root, "animations"), 0);
+    json_t *ch = json_array_get(json_object_get(anim, "channels"), 0);
+    cr_assert_str_eq(json_string_value(json_object_get(json_object_get(ch, "target"), "path")), "weights");
+    json_t *sm = json_array_get(json_object_get(anim, "samplers"), 0);
+    int nt, nc, nw;
+    double *t = accessor(&g, (int)json_integer_value(json_object_get(sm, "input")), &nt, &nc);
+    double *w = accessor(&g, (int)json_integer_value(json_object_get(sm, "output")), &nw, &nc);
+    cr_assert_eq(nt, K);
+    cr_assert_eq(nw, K * (K - 1));
+    for (int k = 0; k < K; ++k) {
+        char *fr = ori_fold_get_custom(doc, k + 1, "orikin:fraction");
+        cr_assert_float_eq(t[k], strtod(fr, NULL), 1e-6, "keyframe %d at its fraction", k);
+        ori_buffer_free(fr);
+        for (int j = 1; j < K; ++j) cr_assert_eq(w[k * (K - 1) + j - 1], j == k ? 1.0 : 0.0);
+    }
+    free(t);
+    free(w);
+    gltf_free(&g);
+    ori_buffer_free(data);
+    for (int k = 0; k < K; ++k) free(frames[k]);
+    ori_fold_destroy(doc);
+    test_tmpdir_remove(dir);
+}

@@ -863,7 +863,7 @@ Test(server, bad_requests_leave_the_document_unchanged)
         {"GET", "/api/export", "format=png&compliant=2", NULL, 400},
         {"GET", "/api/export", "format=png&compliant=1&t=1", NULL, 400},
         {"GET", "/api/export", "format=png&color=strain", NULL, 400},
-        {"GET", "/api/export", "format=glb&of=compliant", NULL, 400},
+        {"GET", "/api/export", "format=glb&of=compliant", NULL, 409},
         {"GET", "/api/export", "format=gif&of=compliant", NULL, 409},
         {"POST", "/api/collide", NULL, "{\"compliant\": 1}", 400},
         {"GET", "/api/export", "format=gif&of=sequence&t=1", NULL, 400},

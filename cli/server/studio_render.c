@@ -511,8 +511,10 @@ static bool compliant_motion(studio *s, int samples, motion *m, studio_response 
 }
 
 // The whole motion as a glTF animation (orikin export IN --animate -o OUT.gltf|.glb).
+static bool compliant_motion(studio *s, int samples, motion *m, studio_response *out);
+
 static void export_mesh_motion(studio *s, const studio_request *req, const studio_export_format *f, bool of_sequence,
-                               studio_response *out)
+                               bool of_compliant, studio_response *out)
 {
     ori_export_def def = ori_default_export_def();
     bool g;
@@ -523,8 +525,11 @@ static void export_mesh_motion(studio *s, const studio_request *req, const studi
     }
     if (!studio_job_begin(s, "animated mesh", out)) return;
     motion m;
-    if (load_motion(s, of_sequence, 0, &m, out)) {
-        ori_state_view sv = {m.model->pattern, m.end_positions, m.end_angles};
+    if (of_compliant ? compliant_motion(s, 0, &m, out) : load_motion(s, of_sequence, 0, &m, out)) {
+        // a compliant fold's faces bend: one mesh posed as its first state, morphing through the
+        // others (as orikin export --compliant --animate)
+        ori_state_view sv = of_compliant ? (ori_state_view){m.model->pattern, m.k.positions, m.k.angles}
+                                         : (ori_state_view){m.model->pattern, m.end_positions, m.end_angles};
         ori_mesh *mesh = NULL;
         ori_error err;
         void *data = NULL;
@@ -532,11 +537,12 @@ static void export_mesh_motion(studio *s, const studio_request *req, const studi
         def.format = (ori_mesh_format)f->render_format;
         def.keyframe_count = m.k.count;
         def.keyframe_times_s = m.k.times;
-        def.keyframe_poses = m.k.poses;
+        if (of_compliant) def.keyframe_positions = m.k.positions;
+        else def.keyframe_poses = m.k.poses;
         ori_status rs = ori_mesh_create(&sv, &mesh, &err);
         if (rs == ORI_OK) rs = ori_mesh_export(mesh, &def, &data, &size, &err);
         if (rs != ORI_OK) fail_render(out, rs, &err);
-        else respond_file(s, f, of_sequence ? "-sequence" : "-fold", data, size, out);
+        else respond_file(s, f, of_compliant ? "-compliant" : of_sequence ? "-sequence" : "-fold", data, size, out);
         ori_buffer_free(data);
         ori_mesh_destroy(mesh);
         motion_free(&m);
@@ -654,11 +660,7 @@ void studio_export_render(studio *s, const studio_request *req, const studio_exp
     }
     bool of_sequence = motion_asked && strcmp(of, "sequence") == 0;
     bool of_compliant = motion_asked && strcmp(of, "compliant") == 0;
-    if (of_compliant && f->kind != STUDIO_EXPORT_ANIMATION && f->motion) {
-        studio_fail(out, 400, "a glTF animation moves each face as a rigid node, and a compliant fold bends its faces: "
-                              "format=gif draws its motion");
-        return;
-    }
+
     if (motion_asked && !f->motion) {
         studio_fail(out, 400, "%s holds one state: of=sequence and of=fold are for gltf, glb and gif", f->name);
         return;
@@ -677,6 +679,6 @@ void studio_export_render(studio *s, const studio_request *req, const studio_exp
     }
     if (f->kind == STUDIO_EXPORT_PICTURE) export_picture(s, req, f, out);
     else if (f->kind == STUDIO_EXPORT_ANIMATION) export_gif(s, req, f, of_sequence, of_compliant, out);
-    else if (motion_asked) export_mesh_motion(s, req, f, of_sequence, out);
+    else if (motion_asked) export_mesh_motion(s, req, f, of_sequence, of_compliant, out);
     else export_mesh(s, req, f, out);
 }

@@ -291,9 +291,11 @@ typedef struct ori_export_def {
     ori_mesh_format format;
     double thickness;                ///< 0: a two-sided sheet; > 0: separate closed offset panel solids thickness thick (pattern units; docs/render.md)
     ori_rgb front, back, edge;       ///< materials: front side, back side, the solid's rims
-    int keyframe_count;              ///< glTF/GLB: 0 = the current pose; ≥ 1 = an animation, one node per face
+    int keyframe_count;              ///< glTF/GLB: 0 = the current pose; ≥ 1 = an animation, one node per face (or one morphing mesh: keyframe_positions)
     const double *keyframe_times_s;  ///< keyframe_count increasing times (seconds)
     const ori_rigid *keyframe_poses; ///< keyframe_count × face_count poses (keyframe-major) mapping reference positions (ori_mesh_reference_vertex) to world positions
+    const ori_v3 *keyframe_positions; ///< instead of keyframe_poses (NULL): keyframe_count × vertex_count world positions (keyframe-major), for faces that bend
+                                      ///< (a compliant fold): one mesh, posed as keyframe 0 (the mesh's own pose must be it), morphing to each keyframe (a morph target each after the first)
     const char *obj_mtllib;          ///< OBJ: the material library file its "mtllib" line names (NULL: none; ori_mesh_export_file sets it)
     const int *face_orders;          ///< thick panels: the state's FOLD faceOrders (face_order_count triples f, g, s as in ori_render_def) ranking panels stacked flat; borrowed; NULL: stacking along the fold tree
     int face_order_count;            ///< number of triples in face_orders

@@ -29,6 +29,7 @@ ori_export_def ori_default_export_def(void)
     d.keyframe_count = 0;
     d.keyframe_times_s = NULL;
     d.keyframe_poses = NULL;
+    d.keyframe_positions = NULL;
     d.obj_mtllib = NULL;
     d.face_orders = NULL;
     d.face_order_count = 0;
@@ -245,14 +246,19 @@ static ori_status check_def(const ori_mesh *m, const ori_export_def *def, ori_er
             return ori__fail(error, ORI_ERR_ARGUMENT, "only glTF and GLB hold animations");
         if (def->thickness > 0.0)
             return ori__fail(error, ORI_ERR_ARGUMENT, "a thick solid is not rigid per face: it cannot be animated by face nodes");
-        if (!def->keyframe_times_s || !def->keyframe_poses)
-            return ori__fail(error, ORI_ERR_ARGUMENT, "keyframes need times and poses");
+        if (!def->keyframe_times_s || !def->keyframe_poses == !def->keyframe_positions)
+            return ori__fail(error, ORI_ERR_ARGUMENT, "keyframes need times and either face poses or vertex positions");
         for (int k = 0; k < def->keyframe_count; ++k) {
             double tk = def->keyframe_times_s[k];
             if (!isfinite(tk) || (k > 0 && !(tk > def->keyframe_times_s[k - 1])))
                 return ori__fail(error, ORI_ERR_ARGUMENT, "keyframe times must be finite and increasing (keyframe %d)", k);
         }
-        for (size_t i = 0; i < (size_t)def->keyframe_count * (size_t)m->face_count; ++i) {
+        for (size_t i = 0; def->keyframe_positions && i < (size_t)def->keyframe_count * (size_t)m->vertex_count; ++i) {
+            ori_v3 x = def->keyframe_positions[i];
+            if (!ori__coord_ok(x.x) || !ori__coord_ok(x.y) || !ori__coord_ok(x.z))
+                return ori__fail(error, ORI_ERR_ARGUMENT, "keyframe position %zu is not finite", i);
+        }
+        for (size_t i = 0; def->keyframe_poses && i < (size_t)def->keyframe_count * (size_t)m->face_count; ++i) {
             ori_rigid g = def->keyframe_poses[i];
             for (int r = 0; r < 3; ++r)
                 for (int c = 0; c < 3; ++c)

@@ -1,5 +1,7 @@
 // glTF 2.0 and GLB: the posed sheet (or solid) as one mesh, or the whole motion as one node per
-// face with rotation and translation keyframes from the exact face poses.
+// face with rotation and translation keyframes from the exact face poses, or (faces that bend:
+// keyframe_positions) as one mesh with a morph target per keyframe after the first and a
+// weights animation that shows each keyframe in turn.
 //
 // glTF stores vertex positions as 32-bit floats. Each position is therefore written twice: as
 // POSITION (the float nearest to the coordinate, what every viewer uses) and as the
@@ -19,7 +21,19 @@
 enum { GL_FLOAT = 5126, GL_UNSIGNED_INT = 5125, GL_ARRAY_BUFFER = 34962, GL_ELEMENT_ARRAY_BUFFER = 34963 };
 
 // Buffer views, in the order they are laid out in the buffer.
-enum { VIEW_POS, VIEW_POS_LO, VIEW_NORMAL, VIEW_UV, VIEW_COLOR, VIEW_INDEX, VIEW_TIME, VIEW_ROTATION, VIEW_TRANSLATION, VIEW_COUNT };
+enum {
+    VIEW_POS, VIEW_POS_LO, VIEW_NORMAL, VIEW_UV, VIEW_COLOR, VIEW_INDEX, VIEW_TIME, VIEW_ROTATION, VIEW_TRANSLATION,
+    VIEW_MORPH,   // morph targets: position and normal displacements (vec3 each)
+    VIEW_WEIGHTS, // the weights animation's output
+    VIEW_COUNT
+};
+
+// A morph animation (keyframe_positions): the keyframes' vertex positions and face normals.
+typedef struct morph {
+    int K;
+    const ori_v3 *pos; // K × vertex_count
+    ori_v3 *normal;    // K × face_count, as the mesh computes its own (area-weighted, unit)
+} morph;
 
 typedef struct bytes {
     unsigned char *d;
@@ -72,6 +86,7 @@ typedef struct gl {
     ori__text meshes; // meshes
     int mesh_count;
     bool used_material[ORI__PART_COUNT];
+    const morph *mo; // a morph animation, or NULL
 } gl;
 
 static void real(ori__text *t, double x) { ori__text_real(t, x); }
@@ -159,7 +174,46 @@ static void primitive(gl *g, const ori__xpart *p, int part, bool has_uv, ori__te
     ori__text_printf(prim, "{\"attributes\":{\"POSITION\":%d,\"_POSITION_LO\":%d,\"NORMAL\":%d", a_pos, a_lo, a_n);
     if (a_uv >= 0) ori__text_printf(prim, ",\"TEXCOORD_0\":%d", a_uv);
     if (a_c >= 0) ori__text_printf(prim, ",\"COLOR_0\":%d", a_c);
-    ori__text_printf(prim, "},\"indices\":%d,\"material\":%d,\"mode\":4,\"extras\":{\"side\":\"%s\",\"fold_vertices\":[", a_i,
+    ori__text_puts(prim, "}");
+    const morph *mo = g->mo;
+    if (mo && mo->K > 1) {
+        // Keyframe k's target: each vertex's displacement from keyframe 0 (its pattern vertex's
+        // position) and its normal's (its face's, with the side's sign).
+        int *vface = ori__alloc(sizeof(int) * (size_t)p->vcount);
+        for (int v = 0; v < p->vcount; ++v) vface[v] = -1;
+        for (int t = 0; t < p->tcount; ++t)
+            for (int k = 0; k < 3; ++k) vface[p->tri[t][k]] = p->fold_face[t];
+        double side = part == ORI__PART_BACK ? -1.0 : 1.0;
+        int V = g->m->vertex_count, F = g->m->face_count;
+        ori__text_puts(prim, ",\"targets\":[");
+        for (int k = 1; k < mo->K; ++k) {
+            size_t off_tp = g->view[VIEW_MORPH].n;
+            float tmn[3] = {INFINITY, INFINITY, INFINITY}, tmx[3] = {-INFINITY, -INFINITY, -INFINITY};
+            for (int v = 0; v < p->vcount; ++v) {
+                ori_v3 a = mo->pos[(size_t)k * V + p->fold_vertex[v]], b = mo->pos[p->fold_vertex[v]];
+                float d[3] = {(float)(a.x - b.x), (float)(a.y - b.y), (float)(a.z - b.z)};
+                for (int q = 0; q < 3; ++q) {
+                    put_f32(&g->view[VIEW_MORPH], d[q]);
+                    if (d[q] < tmn[q]) tmn[q] = d[q];
+                    if (d[q] > tmx[q]) tmx[q] = d[q];
+                }
+            }
+            size_t off_tn = g->view[VIEW_MORPH].n;
+            for (int v = 0; v < p->vcount; ++v) {
+                int f = vface[v];
+                ori_v3 n = f >= 0 ? ori_v3_scale(mo->normal[(size_t)k * F + f], side) : p->nrm[v];
+                put_f32(&g->view[VIEW_MORPH], (float)(n.x - p->nrm[v].x));
+                put_f32(&g->view[VIEW_MORPH], (float)(n.y - p->nrm[v].y));
+                put_f32(&g->view[VIEW_MORPH], (float)(n.z - p->nrm[v].z));
+            }
+            int a_tp = accessor(g, VIEW_MORPH, off_tp, p->vcount, "VEC3", tmn, tmx, 3, GL_FLOAT);
+            int a_tn = accessor(g, VIEW_MORPH, off_tn, p->vcount, "VEC3", NULL, NULL, 3, GL_FLOAT);
+            ori__text_printf(prim, "%s{\"POSITION\":%d,\"NORMAL\":%d}", k > 1 ? "," : "", a_tp, a_tn);
+        }
+        ori__text_puts(prim, "]");
+        ori__free(vface);
+    }
+    ori__text_printf(prim, ",\"indices\":%d,\"material\":%d,\"mode\":4,\"extras\":{\"side\":\"%s\",\"fold_vertices\":[", a_i,
                      part, part == ORI__PART_FRONT ? "front" : part == ORI__PART_BACK ? "back" : "rim");
     for (int v = 0; v < p->vcount; ++v) {
         if (v) ori__text_puts(prim, ",");
@@ -187,7 +241,13 @@ static int mesh_of(gl *g, const ori__xmesh *x, const char *name)
         ori__text_json_string(&g->meshes, name, strlen(name));
         ori__text_puts(&g->meshes, ",\"primitives\":[");
         ori__text_put(&g->meshes, prim.data, prim.len);
-        ori__text_puts(&g->meshes, "]}");
+        ori__text_puts(&g->meshes, "]");
+        if (g->mo && g->mo->K > 1) { // the morph targets' default weights: keyframe 0
+            ori__text_puts(&g->meshes, ",\"weights\":[");
+            for (int k = 1; k < g->mo->K; ++k) ori__text_puts(&g->meshes, k > 1 ? ",0" : "0");
+            ori__text_puts(&g->meshes, "]");
+        }
+        ori__text_puts(&g->meshes, "}");
         idx = g->mesh_count++;
     }
     ori__free(prim.data);
@@ -296,12 +356,53 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
     ori__text_reserve(&nodes, 0);
     ori__text_reserve(&anim, 0);
     int K = def->keyframe_count, F = m->face_count;
+    bool morphing = K > 0 && def->keyframe_positions;
+    morph mo = {K, def->keyframe_positions, NULL};
+    if (morphing) {
+        mo.normal = ori__alloc(sizeof(ori_v3) * (size_t)K * (size_t)(F > 0 ? F : 1));
+        for (int k = 0; k < K; ++k)
+            for (int f = 0; f < F; ++f) {
+                const ori_v3 *x = mo.pos + (size_t)k * (size_t)m->vertex_count;
+                ori_v3 sum = {0, 0, 0};
+                for (int t = m->face_tri_start[f]; t < m->face_tri_start[f + 1]; ++t) {
+                    ori_v3 a = x[m->tris[t].v[0]], b = x[m->tris[t].v[1]], c = x[m->tris[t].v[2]];
+                    sum = ori_v3_add(sum, ori_v3_cross(ori_v3_sub(b, a), ori_v3_sub(c, a)));
+                }
+                mo.normal[(size_t)k * F + f] = ori_v3_normalize(sum);
+            }
+        g.mo = &mo;
+    }
     // The views that will hold data, numbered in layout order.
+    bool poses = K > 0 && !morphing;
     bool present[VIEW_COUNT] = {m->tri_count > 0, m->tri_count > 0, m->tri_count > 0, m->tri_count > 0 && m->has_flat,
-                                m->tri_count > 0 && def->values.face_values, m->tri_count > 0, K > 0, K > 0, K > 0};
+                                m->tri_count > 0 && def->values.face_values, m->tri_count > 0, K > 0, poses, poses,
+                                morphing && K > 1 && m->tri_count > 0, morphing};
     int nviews = 0;
     for (int v = 0; v < VIEW_COUNT; ++v) g.view_index[v] = present[v] ? nviews++ : -1;
-    if (K == 0) {
+    if (morphing) {
+        // Node 0 is the sheet, one mesh posed as keyframe 0; its weights animate: at keyframe k
+        // target k has weight 1 and the others 0 (between keyframes the two neighbours blend).
+        ori__xmesh x;
+        ori__xmesh_build(m, def, false, &x);
+        int mi = mesh_of(&g, &x, "sheet");
+        ori__xmesh_free(&x);
+        ori__text_puts(&nodes, "{\"name\":\"sheet\"");
+        if (mi >= 0) ori__text_printf(&nodes, ",\"mesh\":%d", mi);
+        ori__text_puts(&nodes, "}");
+        size_t off_t = g.view[VIEW_TIME].n, off_w = g.view[VIEW_WEIGHTS].n;
+        for (int k = 0; k < K; ++k) put_f32(&g.view[VIEW_TIME], (float)def->keyframe_times_s[k]);
+        for (int k = 0; k < K; ++k)
+            for (int j = 1; j < K; ++j) put_f32(&g.view[VIEW_WEIGHTS], j == k ? 1.0f : 0.0f);
+        if (K == 1) put_f32(&g.view[VIEW_WEIGHTS], 0.0f); // (a view is never empty)
+        float t0 = (float)def->keyframe_times_s[0], t1 = (float)def->keyframe_times_s[K - 1];
+        int a_time = accessor(&g, VIEW_TIME, off_t, K, "SCALAR", &t0, &t1, 1, GL_FLOAT);
+        if (mi >= 0 && K > 1) {
+            int a_w = accessor(&g, VIEW_WEIGHTS, off_w, K * (K - 1), "SCALAR", NULL, NULL, 1, GL_FLOAT);
+            ori__text_printf(&anim, "{\"name\":\"fold\",\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"weights\"}}],"
+                                    "\"samplers\":[{\"input\":%d,\"output\":%d,\"interpolation\":\"LINEAR\"}]}",
+                             a_time, a_w);
+        }
+    } else if (K == 0) {
         ori__xmesh x;
         ori__xmesh_build(m, def, false, &x);
         int mi = mesh_of(&g, &x, def->thickness > 0.0 ? "solid" : "sheet");
@@ -403,7 +504,7 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
     ori__text_puts(&j, "\"extras\":{\"orikin\":");
     ori__text_printf(&j, "{\"faces\":%d,\"vertices\":%d,\"thickness\":", F, m->vertex_count);
     real(&j, def->thickness);
-    ori__text_printf(&j, ",\"keyframes\":%d}},", K);
+    ori__text_printf(&j, ",\"keyframes\":%d%s}},", K, morphing ? ",\"morph\":true" : "");
     ori__text_puts(&j, "\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[");
     ori__text_put(&j, nodes.data, nodes.len);
     ori__text_puts(&j, "],\"meshes\":[");
@@ -430,9 +531,9 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
         ori__text_puts(&j, ",\"accessors\":[");
         ori__text_put(&j, g.acc.data, g.acc.len);
         ori__text_puts(&j, "],\"bufferViews\":[");
-        static const int stride[VIEW_COUNT] = {12, 12, 12, 8, 12, 0, 0, 0, 0};
+        static const int stride[VIEW_COUNT] = {12, 12, 12, 8, 12, 0, 0, 0, 0, 12, 0};
         static const int target[VIEW_COUNT] = {GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER, GL_ARRAY_BUFFER,
-                                               GL_ELEMENT_ARRAY_BUFFER, 0, 0, 0};
+                                               GL_ELEMENT_ARRAY_BUFFER, 0, 0, 0, GL_ARRAY_BUFFER, 0};
         bool first = true;
         for (int v = 0; v < VIEW_COUNT; ++v) {
             if (g.view_index[v] < 0) continue;
@@ -446,7 +547,7 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
         }
         ori__text_puts(&j, "]");
     }
-    if (K > 0) {
+    if (anim.len > 0) {
         ori__text_puts(&j, ",\"animations\":[");
         ori__text_put(&j, anim.data, anim.len);
         ori__text_puts(&j, "]");
@@ -500,4 +601,5 @@ void ori__gltf_write(const ori_mesh *m, const ori_export_def *def, bool binary, 
     ori__free(g.meshes.data);
     ori__free(nodes.data);
     ori__free(anim.data);
+    ori__free(mo.normal);
 }

@@ -1,7 +1,8 @@
 #!/bin/sh
 # glTF and GLB files written by `orikin export` pass the Khronos glTF validator (npm
 # gltf-validator) with no errors: a static sheet, a thick solid, a sequence's and a fold's
-# animation, a folded Miura-ori, a compliant fold's frame with strain vertex colours (COLOR_0). Skipped (exit 77) when node or node_modules is missing.
+# animation, a folded Miura-ori, a compliant fold's frame with strain vertex colours (COLOR_0),
+# a compliant fold's motion as morph targets. Skipped (exit 77) when node or node_modules is missing.
 #
 # usage: tests/gltf/run.sh ORIKIN ROOT
 set -u
@@ -37,6 +38,12 @@ export_to "$tmp/compliant.fold" --frame 1 -o "$tmp/compliant-strain.gltf"
 export_to "$tmp/compliant.fold" --frame 1 --thickness 0.05 -o "$tmp/compliant-strain-thick.glb"
 if ! grep -q '"COLOR_0"' "$tmp/compliant-strain.gltf"; then
     echo "FAIL: the compliant frame's glTF has no COLOR_0"
+    fail=1
+fi
+export_to examples/patterns/open-corner.fold --compliant --percent 40 --animate -o "$tmp/compliant-morph.glb"
+export_to examples/patterns/open-corner.fold --compliant --percent 40 --dynamic --animate -o "$tmp/compliant-morph.gltf"
+if ! grep -q '"targets"' "$tmp/compliant-morph.gltf"; then
+    echo "FAIL: the compliant motion's glTF has no morph targets"
     fail=1
 fi
 node tests/gltf/validate.js "$tmp"/*.gltf "$tmp"/*.glb || fail=1

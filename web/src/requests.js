@@ -61,8 +61,8 @@ export function exportGroups(formats, { sequence = false, fold = false, complian
     ['mesh of the state shown', (f) => f.kind === 'mesh', null, true],
     ['motion of the sequence', (f) => f.motion, 'sequence', sequence],
     ['motion of the fold', (f) => f.motion, 'fold', fold],
-    // (its faces bend: a GIF, never a glTF of rigid nodes)
-    ['motion of the compliant fold', (f) => f.kind === 'animation', 'compliant', compliant],
+    // (its faces bend: a glTF morphs through its states)
+    ['motion of the compliant fold', (f) => f.motion, 'compliant', compliant],
   ];
   const out = [];
   for (const [label, take, of, shown] of groups) {
