@@ -52,18 +52,16 @@ int cli_compliant_option(const char *cmd, int argc, char **argv, int *i, cli_com
         if (strcmp(v, "origami-simulator") == 0) r->physical = false;
         else if (strcmp(v, "physical") == 0) r->physical = true;
         else rc = cli_usage(cmd, "--preset is origami-simulator or physical, got '%s'", v);
-    } else if (strcmp(o, "--axial") == 0) {
-        rc = parse_positive(cmd, o, v, false, &r->axial);
-        r->has_axial = true;
-    } else if (strcmp(o, "--facet") == 0) {
-        rc = parse_positive(cmd, o, v, true, &r->facet);
-        r->has_facet = true;
-    } else if (strcmp(o, "--crease") == 0) {
-        rc = parse_positive(cmd, o, v, true, &r->crease);
-        r->has_crease = true;
-    } else if (strcmp(o, "--damping") == 0) {
-        rc = parse_positive(cmd, o, v, true, &r->damping);
-        r->has_damping = true;
+    } else if (k >= 3 && k <= 6) { // the preset's stiffnesses and damping, each replaced
+        struct {
+            double *value;
+            bool *given, zero_ok;
+        } const stiff[4] = {{&r->axial, &r->has_axial, false},
+                            {&r->facet, &r->has_facet, true},
+                            {&r->crease, &r->has_crease, true},
+                            {&r->damping, &r->has_damping, true}};
+        rc = parse_positive(cmd, o, v, stiff[k - 3].zero_ok, stiff[k - 3].value);
+        *stiff[k - 3].given = true;
     } else if (strcmp(o, "--gravity") == 0) {
         if (!cli_parse_double(v, &r->gravity) || !isfinite(r->gravity))
             rc = cli_usage(cmd, "--gravity needs a number, got '%s'", v);
